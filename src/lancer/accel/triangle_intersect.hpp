@@ -1,0 +1,41 @@
+// Ray/triangle intersection shared by every accelerator, so that they agree to the last bit.
+// Moller & Trumbore 1997, "Fast, Minimum Storage Ray/Triangle Intersection", on pre-gathered
+// vertex and edge vectors; edges and vertices count as inside (closed triangles: no cracks).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "lancer/math/ray.hpp"
+#include "lancer/mesh/mesh.hpp"
+
+namespace lancer {
+
+// One triangle ready for the test; quads become two (corners 0,1,2 and 0,2,3) with the same face.
+struct PackedTriangle {
+  Vec3 v0;
+  Vec3 edge1;  // v1 - v0
+  Vec3 edge2;  // v2 - v0
+  std::uint32_t face;
+};
+
+std::vector<PackedTriangle> packTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces);
+
+// Returns the ray parameter of the hit in (tMin, tMax), or a negative value when there is none.
+inline float intersectTriangle(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
+  const Vec3 p = cross(ray.direction, tri.edge2);
+  const float det = dot(tri.edge1, p);
+  if (det == 0.0f) return -1.0f;  // ray parallel to the triangle's plane (or degenerate triangle)
+  const float invDet = 1.0f / det;
+  const Vec3 s = ray.origin - tri.v0;
+  const float u = dot(s, p) * invDet;
+  if (!(u >= 0.0f && u <= 1.0f)) return -1.0f;
+  const Vec3 q = cross(s, tri.edge1);
+  const float v = dot(ray.direction, q) * invDet;
+  if (!(v >= 0.0f && u + v <= 1.0f)) return -1.0f;
+  const float t = dot(tri.edge2, q) * invDet;
+  return (t > tMin && t < tMax) ? t : -1.0f;
+}
+
+}  // namespace lancer

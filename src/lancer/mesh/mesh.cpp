@@ -1,0 +1,23 @@
+#include "lancer/mesh/mesh.hpp"
+
+namespace lancer {
+
+std::string Mesh::physicalName(std::int32_t tag) const {
+  const PhysicalGroup* best = nullptr;
+  for (const PhysicalGroup& group : physicalGroups) {
+    if (group.tag != tag) continue;
+    // A tag can be reused across dimensions; the surface (2D) group is the one faces belong to.
+    if (best == nullptr || group.dimension == 2) best = &group;
+  }
+  return best ? best->name : std::string();
+}
+
+Aabb faceBounds(const Mesh& mesh) {
+  Aabb box;
+  for (const MeshFace& face : mesh.faces) {
+    for (int c = 0; c < face.cornerCount(); ++c) box.extend(mesh.positions[face.vertex[c]]);
+  }
+  return box;
+}
+
+}  // namespace lancer

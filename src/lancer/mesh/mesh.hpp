@@ -1,0 +1,71 @@
+// The surface mesh as lancer renders it: vertices and triangle/quad faces, with the physical and
+// elementary tags gmsh attached, plus what the reader saw (format, counts) for `lancer info`.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "lancer/math/aabb.hpp"
+#include "lancer/math/vec3.hpp"
+
+namespace lancer {
+
+inline constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;
+
+// A face is a triangle (vertex[3] == kNoVertex) or a quad, vertices in the file's winding order.
+struct MeshFace {
+  std::uint32_t vertex[4] = {kNoVertex, kNoVertex, kNoVertex, kNoVertex};
+
+  bool isQuad() const { return vertex[3] != kNoVertex; }
+  int cornerCount() const { return isQuad() ? 4 : 3; }
+};
+
+// Bit i of a face's edge mask: the edge from corner i to corner (i+1) % n is an edge of the
+// original gmsh element (not one made by splitting a second-order element), so it is drawn by
+// element-edge rendering.
+inline constexpr std::uint8_t kAllEdges = 0x0F;
+
+struct PhysicalGroup {
+  int dimension = 0;
+  int tag = 0;
+  std::string name;  // empty when the file gives no $PhysicalNames entry
+};
+
+// What the reader saw, for `lancer info` and for warnings.
+struct MeshSourceInfo {
+  std::string path;
+  std::string formatVersion;  // "2.2", "4.0", "4.1"
+  bool binary = false;
+  std::uint64_t fileBytes = 0;
+  std::uint64_t nodeCount = 0;
+  std::map<int, std::uint64_t> elementsByType;     // gmsh element type -> count in the file
+  std::map<int, std::uint64_t> unrenderableByType;  // element types lancer could not turn into faces
+  std::uint64_t degenerateFacesDropped = 0;        // zero-area faces, removed with a warning
+  std::uint64_t volumeElements = 0;                // volume elements replaced by their skin
+  double loadSeconds = 0;
+};
+
+// Structure of arrays: the renderer streams positions and faces; tags are read once per hit.
+// Positions are float, relative to `origin` (double), so a part at x = 1e6 keeps float precision.
+struct Mesh {
+  Vec3d origin;
+  std::vector<Vec3> positions;
+  std::vector<MeshFace> faces;
+  std::vector<std::int32_t> facePhysicalTag;  // first physical group of the element, 0 if none
+  std::vector<std::int32_t> faceEntityTag;    // gmsh elementary entity
+  std::vector<std::uint8_t> faceEdgeMask;     // see kAllEdges
+  std::vector<PhysicalGroup> physicalGroups;
+  MeshSourceInfo source;
+
+  std::size_t faceCount() const { return faces.size(); }
+  Vec3d worldPosition(std::uint32_t vertex) const { return origin + toDouble(positions[vertex]); }
+  // Name of the physical group with this tag (surfaces first), or "" when unnamed.
+  std::string physicalName(std::int32_t tag) const;
+};
+
+// Bounding box of the vertices actually used by faces, in the mesh's local (origin-relative) frame.
+Aabb faceBounds(const Mesh& mesh);
+
+}  // namespace lancer

@@ -1,0 +1,100 @@
+// What a scene file says, checked and with defaults filled in, before any mesh is loaded:
+// render settings, camera, lights, materials and the mesh instances that use them.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lancer/math/vec3.hpp"
+#include "lancer/util/input_error.hpp"
+
+namespace lancer {
+
+enum class Projection { Perspective, Orthographic };
+enum class ShadingMode { Flat, Gouraud, Phong };
+enum class SamplerKind { Regular, Stratified, Adaptive };
+
+struct RenderSettings {
+  int width = 800;
+  int height = 600;
+  int samples = 1;   // samples per pixel, a perfect square for the regular grid
+  int maxDepth = 5;  // reflection/refraction recursion depth
+  SamplerKind sampler = SamplerKind::Regular;
+  ShadingMode shading = ShadingMode::Phong;
+  Vec3 background{0, 0, 0};
+  bool transparentBackground = false;  // background = "transparent": PNG with alpha
+  bool srgb = false;                   // encode output with the sRGB curve instead of the brief's linear
+  std::string output;                  // resolved against the scene file's folder; may be empty
+};
+
+struct CameraSettings {
+  Projection projection = Projection::Perspective;
+  // When the scene gives no position, the renderer frames the scene's bounding box from a 3/4 view.
+  std::optional<Vec3d> position;
+  std::optional<Vec3d> lookAt;  // default: centre of the scene's bounding box
+  Vec3d up{0, 1, 0};
+  double fovDegrees = 40;  // vertical, perspective
+  std::optional<double> viewHeight;  // world units, orthographic; default frames the scene
+};
+
+struct PointLight {
+  Vec3d position;
+  Vec3 intensity{1, 1, 1};
+  Vec3 attenuation{1, 0, 0};  // constant, linear, quadratic: att(d) = 1 / (c + l d + q d^2)
+};
+
+struct Material {
+  std::string name;
+  Vec3 ka{0.2f, 0.2f, 0.2f};
+  Vec3 kd{0.7f, 0.7f, 0.7f};
+  Vec3 ks{0.3f, 0.3f, 0.3f};
+  float shininess = 32;
+  Vec3 reflectivity{0, 0, 0};
+  float transparency = 0;
+  float ior = 1.5f;
+  bool fresnel = false;
+  Vec3 absorption{0, 0, 0};  // Beer-Lambert, per unit length inside transparent media
+};
+
+// `groups = { Floor = "matte", 7 = "glass" }`: a physical group, by name or tag, and its material.
+struct GroupMaterial {
+  std::string group;  // name, or the tag written as decimal digits
+  int material = 0;   // index into SceneDescription::materials
+  SourceLocation where;
+};
+
+struct MeshInstance {
+  std::string file;  // resolved against the scene file's folder
+  SourceLocation where;  // of the [[mesh]] table, for errors found when the mesh is loaded
+  int material = 0;  // index into SceneDescription::materials
+  std::optional<ShadingMode> shading;
+  float smoothAngleDegrees = 60;
+  Vec3d translate{0, 0, 0};
+  Vec3d rotateDegrees{0, 0, 0};  // about x, then y, then z
+  Vec3d scale{1, 1, 1};
+  std::vector<GroupMaterial> groupMaterials;
+};
+
+struct AnimationSettings {
+  int frames = 36;
+  double fps = 12;
+  int orbitLight = -1;  // -1: the camera orbits; k >= 0: light k orbits
+  Vec3d axis{0, 1, 0};
+  std::optional<Vec3d> center;  // default: centre of the scene's bounding box
+  double degrees = 360;
+};
+
+struct SceneDescription {
+  std::string path;  // the scene file, for messages
+  RenderSettings render;
+  CameraSettings camera;
+  Vec3 ambient{0.1f, 0.1f, 0.1f};
+  std::vector<PointLight> lights;
+  std::vector<Material> materials;  // materials[0] is always present: "default" when none is named
+  std::vector<MeshInstance> meshes;
+  std::optional<AnimationSettings> animation;
+};
+
+}  // namespace lancer
