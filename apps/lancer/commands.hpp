@@ -1,0 +1,20 @@
+// The subcommands of the lancer CLI. Each registers its options on the CLI11 app and sets the
+// runner that main() calls after parsing; runners return the process exit code.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace lancer::cli {
+
+using CommandRunner = std::function<int()>;
+
+// Exit codes, documented in the README and in `lancer --help`.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitInternalError = 1;
+inline constexpr int kExitBadInput = 2;
+
+void addInfoCommand(CLI::App& app, CommandRunner& runner);
+void addRenderCommand(CLI::App& app, CommandRunner& runner);
+
+}  // namespace lancer::cli
