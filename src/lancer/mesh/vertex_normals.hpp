@@ -1,0 +1,28 @@
+// Smooth vertex normals for Gouraud and Phong shading: the angle-weighted average of the normals of
+// the faces around a vertex, split where faces meet at a crease or a physical-group boundary.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "lancer/mesh/mesh.hpp"
+
+namespace lancer {
+
+struct CornerNormals {
+  std::vector<Vec3> normals;                           // unit vectors, shared by corners that agree
+  std::vector<std::array<std::uint32_t, 4>> faceCorner;  // per face, per corner: index into normals
+};
+
+// Geometric normal of a face (unit; for a quad, the normal of its diagonals' cross product, which is
+// the mean plane's normal for a non-planar quad). Zero for a degenerate face.
+Vec3 faceNormal(std::span<const Vec3> positions, const MeshFace& face);
+
+// Two faces sharing a vertex are smoothed together when the angle between their normals is at most
+// creaseAngleDegrees and they have the same physical tag (Thurmer & Wuthrich 1998 angle weights).
+CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                                   std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees);
+
+}  // namespace lancer

@@ -1,0 +1,68 @@
+#include "lancer/render/camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace lancer {
+namespace {
+
+constexpr double kDegrees = std::numbers::pi / 180.0;
+// Direction from the scene centre to the default camera: right, above, in front (a 3/4 view).
+constexpr Vec3d kThreeQuarterView{0.9, 0.65, 1.3};
+
+double fittingDistance(double radius, double fovDegrees, double aspect) {
+  // The tighter of the vertical and horizontal half-angles decides; 8% margin around the sphere.
+  const double halfVertical = 0.5 * fovDegrees * kDegrees;
+  const double halfHorizontal = std::atan(std::tan(halfVertical) * aspect);
+  return 1.08 * radius / std::sin(std::min(halfVertical, halfHorizontal));
+}
+
+}  // namespace
+
+Vec3d defaultCameraPosition(const Aabbd& worldBounds, double fovDegrees, double aspect) {
+  const double radius = std::max(0.5 * length(worldBounds.extent()), 1e-12);
+  return worldBounds.center() + normalize(kThreeQuarterView) * fittingDistance(radius, fovDegrees, aspect);
+}
+
+Camera::Camera(const CameraSettings& settings, const Vec3d& sceneOrigin, const Aabb& sceneBounds, int imageWidth,
+               int imageHeight)
+    : projection_(settings.projection) {
+  const double aspect = static_cast<double>(imageWidth) / imageHeight;
+  const Aabbd worldBounds{sceneOrigin + toDouble(sceneBounds.lower), sceneOrigin + toDouble(sceneBounds.upper)};
+  const Vec3d lookAt = settings.lookAt.value_or(worldBounds.empty() ? Vec3d{} : worldBounds.center());
+  const Vec3d position =
+      settings.position.value_or(defaultCameraPosition(worldBounds, settings.fovDegrees, aspect));
+
+  const Vec3d forward = normalize(lookAt - position);
+  Vec3d right = normalize(cross(forward, settings.up));
+  if (!(dot(right, right) > 0.5)) right = normalize(cross(forward, std::abs(forward.y) < 0.9 ? Vec3d{0, 1, 0} : Vec3d{1, 0, 0}));
+  const Vec3d up = cross(right, forward);
+  position_ = toFloat(position - sceneOrigin);
+  forward_ = toFloat(forward);
+  right_ = toFloat(right);
+  up_ = toFloat(up);
+
+  if (projection_ == Projection::Perspective) {
+    halfHeight_ = static_cast<float>(std::tan(0.5 * settings.fovDegrees * kDegrees));
+  } else {
+    // Default window: the bounding sphere's diameter with a margin, so the whole scene is in view.
+    const double radius = std::max(0.5 * length(worldBounds.extent()), 1e-12);
+    const double height = settings.viewHeight.value_or(2.16 * radius / std::min(1.0, aspect));
+    halfHeight_ = static_cast<float>(0.5 * height);
+  }
+  halfWidth_ = static_cast<float>(halfHeight_ * aspect);
+  invWidth_ = 1.0f / static_cast<float>(imageWidth);
+  invHeight_ = 1.0f / static_cast<float>(imageHeight);
+}
+
+Ray Camera::generateRay(float x, float y) const {
+  const float sx = (2.0f * x * invWidth_ - 1.0f) * halfWidth_;
+  const float sy = (1.0f - 2.0f * y * invHeight_) * halfHeight_;
+  if (projection_ == Projection::Perspective) {
+    return Ray(position_, normalize(forward_ + right_ * sx + up_ * sy));
+  }
+  return Ray(position_ + right_ * sx + up_ * sy, forward_);
+}
+
+}  // namespace lancer

@@ -1,0 +1,37 @@
+// Pinhole (perspective) and orthographic cameras: turn an image-plane position into a primary ray.
+// Right-handed: looking down -z with up = +y puts +x on the image's right.
+#pragma once
+
+#include "lancer/math/aabb.hpp"
+#include "lancer/math/ray.hpp"
+#include "lancer/scene/scene_description.hpp"
+
+namespace lancer {
+
+class Camera {
+ public:
+  // Builds the camera in scene space; missing position/look_at/view_height frame `sceneBounds`.
+  // `sceneOrigin` converts the settings' world coordinates to scene space.
+  Camera(const CameraSettings& settings, const Vec3d& sceneOrigin, const Aabb& sceneBounds, int imageWidth,
+         int imageHeight);
+
+  // (x, y) in pixels from the image's top-left corner; pixel centres are at half-integers.
+  Ray generateRay(float x, float y) const;
+
+  Projection projection() const { return projection_; }
+  const Vec3& position() const { return position_; }
+  const Vec3& forward() const { return forward_; }
+
+ private:
+  Projection projection_;
+  Vec3 position_;
+  Vec3 forward_, right_, up_;  // unit, orthogonal
+  float halfWidth_, halfHeight_;  // of the view window at distance 1 (perspective) or in world units
+  float invWidth_, invHeight_;
+};
+
+// The default 3/4 view used when a scene gives no camera position: from the front-right-above of
+// the scene's bounding box, far enough that its bounding sphere fits the field of view.
+Vec3d defaultCameraPosition(const Aabbd& worldBounds, double fovDegrees, double aspect);
+
+}  // namespace lancer

@@ -1,0 +1,31 @@
+// The brief's empirical lighting model (its equation 1), per RGB channel, for one point light:
+//   Is * att(d) * (kd * max(0, N.L) + ks * max(0, R.V)^n),   R = L mirrored about N,
+// with the specular term 0 when the light is behind the surface (N.L <= 0).
+#pragma once
+
+#include <cmath>
+
+#include "lancer/math/vec3.hpp"
+#include "lancer/scene/scene.hpp"
+
+namespace lancer {
+
+inline float lightAttenuation(const SceneLight& light, float distance) {
+  const float denominator =
+      light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
+  return denominator > 0.0f ? 1.0f / denominator : 1.0f;
+}
+
+// `normal` and `toViewer` are unit vectors; `toLight` is unit, `lightDistance` the distance to the light.
+inline Vec3 directLighting(const Material& material, const SceneLight& light, const Vec3& normal,
+                           const Vec3& toViewer, const Vec3& toLight, float lightDistance) {
+  const float cosTheta = dot(normal, toLight);
+  if (cosTheta <= 0.0f) return {0, 0, 0};
+  const Vec3 reflected = normal * (2.0f * cosTheta) - toLight;
+  const float cosAlpha = dot(reflected, toViewer);
+  const float specular = cosAlpha > 0.0f ? std::pow(cosAlpha, material.shininess) : 0.0f;
+  const Vec3 response = material.kd * cosTheta + material.ks * specular;
+  return light.intensity * response * lightAttenuation(light, lightDistance);
+}
+
+}  // namespace lancer

@@ -1,0 +1,28 @@
+// The shading data of the closest hit, built once per hit: position, normals turned towards the
+// viewer, and the interpolation weights of the face's corners (barycentric or bilinear).
+#pragma once
+
+#include <cstdint>
+
+#include "lancer/accel/hit.hpp"
+#include "lancer/math/ray.hpp"
+#include "lancer/scene/scene.hpp"
+
+namespace lancer {
+
+struct SurfacePoint {
+  Vec3 position;
+  Vec3 geometricNormal;  // unit, on the side the ray came from
+  Vec3 shadingNormal;    // unit, interpolated corner normals (flat: the geometric normal)
+  float cornerWeight[4];  // weights of the face's corners; 0 for the missing fourth of a triangle
+  float normalSign;       // +1 when the ray hit the side the file's winding faces, else -1
+  std::uint32_t face;
+};
+
+// Weights of the corners of `face` at point p on it: barycentric for a triangle, inverse-bilinear
+// (u, v) for a quad, so quads interpolate bilinearly as the element's own shape functions do.
+void faceCornerWeights(const Scene& scene, const MeshFace& face, const Vec3& p, float weights[4]);
+
+SurfacePoint makeSurfacePoint(const Scene& scene, const Ray& ray, const Hit& hit);
+
+}  // namespace lancer

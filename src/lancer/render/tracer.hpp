@@ -1,0 +1,44 @@
+// Whitted-style recursive ray tracing over a Scene and its accelerator: nearest hit, the local
+// lighting model with shadow rays, then mirror reflection and refraction up to a depth.
+#pragma once
+
+#include "lancer/accel/accelerator.hpp"
+#include "lancer/render/surface_point.hpp"
+#include "lancer/scene/scene.hpp"
+
+namespace lancer {
+
+struct TraceResult {
+  Vec3 color{0, 0, 0};
+  float alpha = 0;  // 1 when the ray hit geometry (directly or through reflections), for coverage
+};
+
+struct TraceCounters {
+  std::uint64_t rays = 0;  // primary + secondary + shadow
+};
+
+class Tracer {
+ public:
+  Tracer(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings);
+
+  // `parallelView`: the ray is an orthographic primary ray, so the viewer is at infinity along it.
+  TraceResult tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const;
+
+ private:
+  // `hitDistance` receives the distance to the nearest hit (infinity on a miss), for absorption.
+  Vec3 trace(const Ray& ray, int depth, float pathWeight, bool parallelView, TraceCounters& counters,
+             bool& hitSomething, float& hitDistance) const;
+  Vec3 shadeLocal(const Ray& ray, const SurfacePoint& surface, const Material& material, bool parallelView,
+                  TraceCounters& counters) const;
+  // Fraction of the light that reaches `from` (0 when blocked by an opaque face; transparent faces
+  // filter it by their transparency and tint).
+  Vec3 lightTransmission(const Vec3& from, const Vec3& lightPosition, TraceCounters& counters) const;
+
+  const Scene& scene_;
+  const Accelerator& accelerator_;
+  Vec3 background_;
+  int maxDepth_;
+  bool anyTransparent_ = false;
+};
+
+}  // namespace lancer

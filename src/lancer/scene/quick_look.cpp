@@ -1,0 +1,70 @@
+#include "lancer/scene/quick_look.hpp"
+
+#include <algorithm>
+#include <set>
+
+namespace lancer {
+namespace {
+
+// Okabe & Ito's colour-blind-safe palette (2008), without black, then a few muted extras.
+constexpr Vec3 kPalette[] = {
+    {0.00f, 0.45f, 0.70f},  // blue
+    {0.90f, 0.62f, 0.00f},  // orange
+    {0.00f, 0.62f, 0.45f},  // bluish green
+    {0.80f, 0.47f, 0.65f},  // reddish purple
+    {0.34f, 0.71f, 0.91f},  // sky blue
+    {0.84f, 0.37f, 0.00f},  // vermillion
+    {0.94f, 0.89f, 0.26f},  // yellow
+    {0.55f, 0.55f, 0.60f},  // grey
+};
+constexpr Vec3 kUngroupedColour{0.62f, 0.66f, 0.72f};  // light steel, for meshes without groups
+
+Material paintedMaterial(const std::string& name, const Vec3& colour) {
+  Material material;
+  material.name = name;
+  material.ka = colour;
+  material.kd = colour * 0.85f;
+  material.ks = {0.25f, 0.25f, 0.25f};
+  material.shininess = 40;
+  return material;
+}
+
+}  // namespace
+
+SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh) {
+  SceneDescription scene;
+  scene.path = meshPath;
+  scene.render.shading = ShadingMode::Phong;
+  scene.render.background = {0.96f, 0.96f, 0.97f};
+  scene.ambient = {0.15f, 0.15f, 0.15f};
+  scene.materials.push_back(paintedMaterial("default", kUngroupedColour));
+
+  MeshInstance instance;
+  instance.file = meshPath;
+  instance.where.file = meshPath;
+  instance.material = 0;
+  instance.smoothAngleDegrees = 40;
+  const std::set<std::int32_t> tags(mesh.facePhysicalTag.begin(), mesh.facePhysicalTag.end());
+  int colourIndex = 0;
+  for (std::int32_t tag : tags) {
+    // One group (or none) keeps the neutral colour; faces outside any group keep it too.
+    if (tags.size() == 1 || tag == 0) continue;
+    const std::string name = mesh.physicalName(tag);
+    scene.materials.push_back(paintedMaterial(name.empty() ? std::to_string(tag) : name,
+                                              kPalette[colourIndex++ % std::size(kPalette)]));
+    instance.groupMaterials.push_back(
+        {std::to_string(tag), static_cast<int>(scene.materials.size() - 1), instance.where});
+  }
+  scene.meshes.push_back(instance);
+
+  // Lights sit relative to the mesh's bounding sphere: a key light above, left and in front of the
+  // default 3/4 camera, a dimmer fill from the right, both far enough to light the whole part evenly.
+  const Aabb bounds = faceBounds(mesh);
+  const Vec3d centre = mesh.origin + toDouble(bounds.empty() ? Vec3{} : bounds.center());
+  const double radius = std::max(0.5 * static_cast<double>(length(bounds.extent())), 1e-12);
+  scene.lights.push_back({centre + normalize(Vec3d{-0.6, 1.4, 1.2}) * (6 * radius), {0.85f, 0.85f, 0.85f}, {1, 0, 0}});
+  scene.lights.push_back({centre + normalize(Vec3d{1.6, 0.3, 0.4}) * (6 * radius), {0.3f, 0.3f, 0.32f}, {1, 0, 0}});
+  return scene;
+}
+
+}  // namespace lancer

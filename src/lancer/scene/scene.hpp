@@ -1,0 +1,45 @@
+// The scene ready to render: every mesh instance transformed into one scene space (float, relative
+// to a double-precision origin), with per-face material and shading, smooth normals and lights.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lancer/math/aabb.hpp"
+#include "lancer/mesh/mesh.hpp"
+#include "lancer/mesh/vertex_normals.hpp"
+#include "lancer/scene/scene_description.hpp"
+
+namespace lancer {
+
+struct SceneLight {
+  Vec3 position;  // scene space
+  Vec3 intensity;
+  Vec3 attenuation;  // constant, linear, quadratic
+};
+
+struct Scene {
+  Vec3d origin;  // world = origin + scene-space position; keeps float precision far from 0
+  std::vector<Vec3> positions;
+  std::vector<MeshFace> faces;
+  std::vector<Vec3> faceNormals;  // geometric, unit, in the file's winding
+  CornerNormals cornerNormals;    // smooth normals per face corner
+  std::vector<std::uint32_t> faceMaterial;
+  std::vector<ShadingMode> faceShading;
+  std::vector<std::uint8_t> faceEdgeMask;
+  std::vector<Material> materials;
+  std::vector<SceneLight> lights;
+  Vec3 ambient{0, 0, 0};
+  Aabb bounds;  // scene space
+
+  Vec3 toSceneSpace(const Vec3d& world) const { return toFloat(world - origin); }
+};
+
+// Reads every mesh of the description (errors point at the [[mesh]] entry or into the mesh file).
+Scene buildScene(const SceneDescription& description);
+// Same, with the meshes already read: meshes[i] belongs to description.meshes[i].
+Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes);
+
+}  // namespace lancer

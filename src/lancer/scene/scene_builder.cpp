@@ -1,0 +1,157 @@
+// Turns a SceneDescription into a Scene: reads meshes, applies instance transforms in double
+// precision, recentres everything on one origin, resolves group materials, computes normals.
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "lancer/mesh/msh_reader.hpp"
+#include "lancer/scene/scene.hpp"
+
+namespace lancer {
+namespace {
+
+// Scale, then rotate about x, y, z (degrees), then translate: the order the scene file documents.
+struct InstanceTransform {
+  Vec3d scale;
+  double rotation[3][3];
+  Vec3d translate;
+
+  explicit InstanceTransform(const MeshInstance& instance) : scale(instance.scale), translate(instance.translate) {
+    const double k = std::numbers::pi / 180.0;
+    const double cx = std::cos(instance.rotateDegrees.x * k), sx = std::sin(instance.rotateDegrees.x * k);
+    const double cy = std::cos(instance.rotateDegrees.y * k), sy = std::sin(instance.rotateDegrees.y * k);
+    const double cz = std::cos(instance.rotateDegrees.z * k), sz = std::sin(instance.rotateDegrees.z * k);
+    // R = Rz * Ry * Rx
+    const double r[3][3] = {{cz * cy, cz * sy * sx - sz * cx, cz * sy * cx + sz * sx},
+                            {sz * cy, sz * sy * sx + cz * cx, sz * sy * cx - cz * sx},
+                            {-sy, cy * sx, cy * cx}};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) rotation[i][j] = r[i][j];
+  }
+
+  Vec3d apply(const Vec3d& p) const {
+    const Vec3d s = p * scale;
+    return Vec3d{rotation[0][0] * s.x + rotation[0][1] * s.y + rotation[0][2] * s.z,
+                 rotation[1][0] * s.x + rotation[1][1] * s.y + rotation[1][2] * s.z,
+                 rotation[2][0] * s.x + rotation[2][1] * s.y + rotation[2][2] * s.z} +
+           translate;
+  }
+};
+
+Mesh readInstanceMesh(const MeshInstance& instance) {
+  std::error_code error;
+  if (!std::filesystem::exists(instance.file, error))
+    throw InputError(instance.where, fmt::format("mesh file '{}' does not exist", instance.file));
+  return readMsh(instance.file);
+}
+
+// Material of each physical tag named in `groups`, checked against the mesh's groups.
+std::vector<std::pair<std::int32_t, std::uint32_t>> resolveGroupMaterials(const MeshInstance& instance,
+                                                                          const Mesh& mesh) {
+  std::vector<std::pair<std::int32_t, std::uint32_t>> result;
+  for (const GroupMaterial& entry : instance.groupMaterials) {
+    std::int32_t tag = 0;
+    const char* first = entry.group.data();
+    const char* last = first + entry.group.size();
+    const auto [end, ec] = std::from_chars(first, last, tag);
+    const bool isTag = ec == std::errc() && end == last;
+    bool found = false;
+    for (const PhysicalGroup& group : mesh.physicalGroups) {
+      if (isTag ? group.tag == tag : group.name == entry.group) {
+        tag = group.tag;
+        found = group.dimension == 2 || !found;
+        if (group.dimension == 2) break;
+      }
+    }
+    if (!found && isTag) {  // a tag used by faces but without a $PhysicalNames entry is fine too
+      for (std::int32_t faceTag : mesh.facePhysicalTag) found = found || faceTag == tag;
+    }
+    if (!found) {
+      std::string known;
+      for (const PhysicalGroup& group : mesh.physicalGroups)
+        known += fmt::format("{}{}", known.empty() ? "" : ", ",
+                             group.name.empty() ? std::to_string(group.tag) : group.name);
+      throw InputError(entry.where, fmt::format("mesh '{}' has no physical group '{}' (its groups: {})",
+                                                instance.file, entry.group, known.empty() ? "none" : known));
+    }
+    result.emplace_back(tag, static_cast<std::uint32_t>(entry.material));
+  }
+  return result;
+}
+
+}  // namespace
+
+Scene buildScene(const SceneDescription& description) {
+  std::vector<Mesh> meshes;
+  meshes.reserve(description.meshes.size());
+  for (const MeshInstance& instance : description.meshes) meshes.push_back(readInstanceMesh(instance));
+  return buildScene(description, std::move(meshes));
+}
+
+Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) {
+  Scene scene;
+  scene.materials = description.materials;
+  scene.ambient = description.ambient;
+
+  // One origin for the whole scene: the centre of all instances' world bounds, in double.
+  std::vector<InstanceTransform> transforms;
+  Aabbd worldBounds;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    transforms.emplace_back(description.meshes[i]);
+    for (const MeshFace& face : meshes[i].faces)
+      for (int c = 0; c < face.cornerCount(); ++c)
+        worldBounds.extend(transforms[i].apply(meshes[i].worldPosition(face.vertex[c])));
+  }
+  scene.origin = worldBounds.empty() ? Vec3d{} : worldBounds.center();
+
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    const MeshInstance& instance = description.meshes[i];
+    Mesh& mesh = meshes[i];
+    const auto groupMaterials = resolveGroupMaterials(instance, mesh);
+    const ShadingMode shading = instance.shading.value_or(description.render.shading);
+
+    std::vector<Vec3> positions(mesh.positions.size());
+    for (std::size_t v = 0; v < positions.size(); ++v)
+      positions[v] = toFloat(transforms[i].apply(mesh.worldPosition(static_cast<std::uint32_t>(v))) - scene.origin);
+    // A mirroring scale (odd number of negative factors) reverses the winding; keep normals outward.
+    const bool mirrored = instance.scale.x * instance.scale.y * instance.scale.z < 0;
+    if (mirrored) {
+      for (MeshFace& face : mesh.faces) std::swap(face.vertex[1], face.vertex[face.cornerCount() - 1]);
+    }
+    CornerNormals normals =
+        computeCornerNormals(positions, mesh.faces, mesh.facePhysicalTag, instance.smoothAngleDegrees);
+
+    const auto vertexBase = static_cast<std::uint32_t>(scene.positions.size());
+    const auto normalBase = static_cast<std::uint32_t>(scene.cornerNormals.normals.size());
+    for (const Vec3& p : positions) scene.bounds.extend(p);
+    scene.positions.insert(scene.positions.end(), positions.begin(), positions.end());
+    scene.cornerNormals.normals.insert(scene.cornerNormals.normals.end(), normals.normals.begin(),
+                                       normals.normals.end());
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+      MeshFace face = mesh.faces[f];
+      auto corners = normals.faceCorner[f];
+      for (int c = 0; c < face.cornerCount(); ++c) {
+        face.vertex[c] += vertexBase;
+        corners[c] += normalBase;
+      }
+      std::uint32_t material = static_cast<std::uint32_t>(instance.material);
+      for (const auto& [tag, groupMaterial] : groupMaterials)
+        if (mesh.facePhysicalTag[f] == tag) material = groupMaterial;
+      scene.faces.push_back(face);
+      scene.faceNormals.push_back(faceNormal(scene.positions, face));
+      scene.cornerNormals.faceCorner.push_back(corners);
+      scene.faceMaterial.push_back(material);
+      scene.faceShading.push_back(shading);
+      scene.faceEdgeMask.push_back(f < mesh.faceEdgeMask.size() ? mesh.faceEdgeMask[f] : kAllEdges);
+    }
+  }
+
+  for (const PointLight& light : description.lights)
+    scene.lights.push_back({scene.toSceneSpace(light.position), light.intensity, light.attenuation});
+  return scene;
+}
+
+}  // namespace lancer
