@@ -13,8 +13,10 @@ using CommandRunner = std::function<int()>;
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitInternalError = 1;
 inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitInterrupted = 130;  // Ctrl-C: 128 + SIGINT, as shells report it
 
 void addInfoCommand(CLI::App& app, CommandRunner& runner);
 void addRenderCommand(CLI::App& app, CommandRunner& runner);
+void addAnimateCommand(CLI::App& app, CommandRunner& runner);
 
 }  // namespace lancer::cli

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   CommandRunner runner;
   addInfoCommand(app, runner);
   addRenderCommand(app, runner);
+  addAnimateCommand(app, runner);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

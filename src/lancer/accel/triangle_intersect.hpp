@@ -23,18 +23,22 @@ struct PackedTriangle {
 std::vector<PackedTriangle> packTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces);
 
 // Returns the ray parameter of the hit in (tMin, tMax), or a negative value when there is none.
+// The barycentric tests compare against the determinant instead of dividing by it (the same
+// closed-triangle test in exact arithmetic), so the one division is paid only by actual hits.
 inline float intersectTriangle(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
   const Vec3 p = cross(ray.direction, tri.edge2);
   const float det = dot(tri.edge1, p);
   if (det == 0.0f) return -1.0f;  // ray parallel to the triangle's plane (or degenerate triangle)
-  const float invDet = 1.0f / det;
+  // u * det and v * det; flip signs for a negative determinant so that 0 <= u, v, u + v <= 1.
+  const float sign = det < 0.0f ? -1.0f : 1.0f;
+  const float absDet = det * sign;
   const Vec3 s = ray.origin - tri.v0;
-  const float u = dot(s, p) * invDet;
-  if (!(u >= 0.0f && u <= 1.0f)) return -1.0f;
+  const float uDet = dot(s, p) * sign;
+  if (!(uDet >= 0.0f && uDet <= absDet)) return -1.0f;
   const Vec3 q = cross(s, tri.edge1);
-  const float v = dot(ray.direction, q) * invDet;
-  if (!(v >= 0.0f && u + v <= 1.0f)) return -1.0f;
-  const float t = dot(tri.edge2, q) * invDet;
+  const float vDet = dot(ray.direction, q) * sign;
+  if (!(vDet >= 0.0f && uDet + vDet <= absDet)) return -1.0f;
+  const float t = dot(tri.edge2, q) / det;
   return (t > tMin && t < tMax) ? t : -1.0f;
 }
 

@@ -44,11 +44,17 @@ struct MeshSourceInfo {
   std::map<int, std::uint64_t> unrenderableByType;  // element types lancer could not turn into faces
   std::uint64_t degenerateFacesDropped = 0;        // zero-area faces, removed with a warning
   std::uint64_t volumeElements = 0;                // volume elements replaced by their skin
+  std::uint64_t skinFaces = 0;                     // faces that came from volume elements' skins
+  std::uint64_t skinFacesCoveredBySurfaces = 0;    // skin faces already present as surface elements
+  std::uint32_t partitionCount = 0;                // mesh partitions the file declares (0: none)
   double loadSeconds = 0;
 };
 
 // Structure of arrays: the renderer streams positions and faces; tags are read once per hit.
 // Positions are float, relative to `origin` (double), so a part at x = 1e6 keeps float precision.
+// Memory: 25 bytes per face (16 vertex indices, 4 + 4 tags, 1 edge mask) and 12 per vertex; a closed
+// triangle mesh has about half a vertex per triangle, so about 31 bytes per triangle
+// (bench/msh_load_bench.cpp reports it as bytes_per_face).
 struct Mesh {
   Vec3d origin;
   std::vector<Vec3> positions;

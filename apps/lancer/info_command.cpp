@@ -1,0 +1,173 @@
+// `lancer info FILE.msh [--json]`: what the reader made of a mesh file: format, counts as read and
+// as rendered, physical groups, bounding box, area, shells and their orientation, load time.
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <string>
+
+#include "commands.hpp"
+#include "lancer/mesh/mesh_stats.hpp"
+#include "lancer/mesh/msh_element_types.hpp"
+#include "lancer/mesh/msh_reader.hpp"
+
+namespace lancer::cli {
+namespace {
+
+constexpr std::size_t kShellsListed = 10;
+
+std::string jsonString(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (u < 0x20) {
+      out += fmt::format("\\u{:04x}", u);
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+std::string shellDescription(const MeshShell& shell) {
+  std::string text = fmt::format("{} faces, area {:.6g}, ", shell.faceCount, shell.area);
+  if (!shell.closed)
+    return text +
+           (shell.consistentlyOriented ? "open, consistently oriented" : "open, not consistently oriented");
+  if (!shell.consistentlyOriented) return text + "closed, NOT consistently oriented";
+  return text + fmt::format("closed, consistently oriented ({}, volume {:.6g})",
+                            shell.signedVolume >= 0 ? "normals point outward" : "normals point inward",
+                            std::abs(shell.signedVolume));
+}
+
+void printText(const Mesh& mesh, const MeshStats& stats) {
+  const MeshSourceInfo& source = mesh.source;
+  fmt::print("file:            {} ({} bytes)\n", source.path, source.fileBytes);
+  fmt::print("format:          MSH {} {}{}\n", source.formatVersion, source.binary ? "binary" : "ASCII",
+             source.partitionCount ? fmt::format(", {} partitions", source.partitionCount) : "");
+  fmt::print("nodes:           {}\n", source.nodeCount);
+  fmt::print("elements read:\n");
+  for (const auto& [type, count] : source.elementsByType)
+    fmt::print("  {:>10}  {} (type {})\n", count, mshElementTypeName(type), type);
+  fmt::print("faces rendered:  {} ({} triangles, {} quads)\n", mesh.faceCount(), stats.triangles,
+             stats.quads);
+  if (source.volumeElements)
+    fmt::print("volume skin:     {} faces from {} volume elements ({} already surface elements)\n",
+               source.skinFaces, source.volumeElements, source.skinFacesCoveredBySurfaces);
+  if (!source.unrenderableByType.empty()) {
+    fmt::print("not rendered:\n");
+    for (const auto& [type, count] : source.unrenderableByType)
+      fmt::print("  {:>10}  {} (type {}): lancer renders up to second order\n", count,
+                 mshElementTypeName(type), type);
+  }
+  if (source.degenerateFacesDropped)
+    fmt::print("warning: {} degenerate (zero-area) faces dropped\n", source.degenerateFacesDropped);
+  fmt::print("physical groups:\n");
+  for (const PhysicalGroup& group : mesh.physicalGroups) {
+    const auto faces = stats.facesByPhysicalTag.find(group.tag);
+    const std::uint64_t count =
+        group.dimension >= 2 && faces != stats.facesByPhysicalTag.end() ? faces->second : 0;
+    fmt::print("  dim {} tag {:<6} {:<24} {} faces\n", group.dimension, group.tag,
+               group.name.empty() ? "(unnamed)" : fmt::format("\"{}\"", group.name), count);
+  }
+  if (const auto none = stats.facesByPhysicalTag.find(0); none != stats.facesByPhysicalTag.end())
+    fmt::print("  (no physical group)                    {} faces\n", none->second);
+  if (mesh.faceCount()) {
+    const Aabbd& box = stats.worldBounds;
+    fmt::print("bounding box:    [{:.9g}, {:.9g}, {:.9g}] .. [{:.9g}, {:.9g}, {:.9g}]\n", box.lower.x,
+               box.lower.y, box.lower.z, box.upper.x, box.upper.y, box.upper.z);
+  }
+  fmt::print("surface area:    {:.9g}\n", stats.area);
+  std::size_t closed = 0, oriented = 0;
+  for (const MeshShell& shell : stats.shells) {
+    closed += shell.closed;
+    oriented += shell.closed && shell.consistentlyOriented;
+  }
+  fmt::print("shells:          {} ({} closed, {} closed and consistently oriented)\n", stats.shells.size(),
+             closed, oriented);
+  for (std::size_t s = 0; s < stats.shells.size() && s < kShellsListed; ++s)
+    fmt::print("  shell {}: {}\n", s + 1, shellDescription(stats.shells[s]));
+  if (stats.shells.size() > kShellsListed)
+    fmt::print("  ... and {} more\n", stats.shells.size() - kShellsListed);
+  fmt::print("load time:       {:.3f} ms\n", source.loadSeconds * 1e3);
+}
+
+template <typename Map>
+std::string jsonCounts(const Map& counts) {
+  std::string out = "{";
+  for (const auto& [type, count] : counts)
+    out += fmt::format("{}\"{}\": {}", out.size() > 1 ? ", " : "", type, count);
+  return out + "}";
+}
+
+void printJson(const Mesh& mesh, const MeshStats& stats) {
+  const MeshSourceInfo& source = mesh.source;
+  std::string out = "{\n";
+  out += fmt::format("  \"file\": {},\n  \"bytes\": {},\n", jsonString(source.path), source.fileBytes);
+  out += fmt::format(
+      "  \"format\": \"msh\",\n  \"version\": \"{}\",\n  \"binary\": {},\n  \"partitions\": {},\n",
+      source.formatVersion, source.binary, source.partitionCount);
+  out += fmt::format("  \"nodes\": {},\n", source.nodeCount);
+  out += fmt::format("  \"elementsByType\": {},\n", jsonCounts(source.elementsByType));
+  out += fmt::format("  \"unrenderableByType\": {},\n", jsonCounts(source.unrenderableByType));
+  out += fmt::format("  \"faces\": {{\"total\": {}, \"triangles\": {}, \"quads\": {}}},\n", mesh.faceCount(),
+                     stats.triangles, stats.quads);
+  out += fmt::format("  \"volumeElements\": {},\n  \"skinFaces\": {},\n  \"degenerateFacesDropped\": {},\n",
+                     source.volumeElements, source.skinFaces, source.degenerateFacesDropped);
+  out += "  \"physicalGroups\": [";
+  for (std::size_t i = 0; i < mesh.physicalGroups.size(); ++i) {
+    const PhysicalGroup& group = mesh.physicalGroups[i];
+    const auto faces = stats.facesByPhysicalTag.find(group.tag);
+    const std::uint64_t count =
+        group.dimension >= 2 && faces != stats.facesByPhysicalTag.end() ? faces->second : 0;
+    out += fmt::format("{}\n    {{\"dimension\": {}, \"tag\": {}, \"name\": {}, \"faces\": {}}}",
+                       i ? "," : "", group.dimension, group.tag, jsonString(group.name), count);
+  }
+  out += mesh.physicalGroups.empty() ? "],\n" : "\n  ],\n";
+  if (mesh.faceCount()) {
+    const Aabbd& box = stats.worldBounds;
+    out += fmt::format(
+        "  \"boundingBox\": {{\"min\": [{:.17g}, {:.17g}, {:.17g}], \"max\": [{:.17g}, {:.17g}, "
+        "{:.17g}]}},\n",
+        box.lower.x, box.lower.y, box.lower.z, box.upper.x, box.upper.y, box.upper.z);
+  } else {
+    out += "  \"boundingBox\": null,\n";
+  }
+  out += fmt::format("  \"area\": {:.17g},\n  \"shells\": [", stats.area);
+  for (std::size_t s = 0; s < stats.shells.size(); ++s) {
+    const MeshShell& shell = stats.shells[s];
+    out += fmt::format(
+        "{}\n    {{\"faces\": {}, \"area\": {:.17g}, \"closed\": {}, \"consistentlyOriented\": {}, "
+        "\"signedVolume\": {:.17g}}}",
+        s ? "," : "", shell.faceCount, shell.area, shell.closed, shell.consistentlyOriented,
+        shell.signedVolume);
+  }
+  out += stats.shells.empty() ? "],\n" : "\n  ],\n";
+  out += fmt::format("  \"loadSeconds\": {:.6f}\n}}\n", source.loadSeconds);
+  std::fputs(out.c_str(), stdout);
+}
+
+}  // namespace
+
+void addInfoCommand(CLI::App& app, CommandRunner& runner) {
+  struct Options {
+    std::string file;
+    bool json = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand("info", "Describe a gmsh .msh file as lancer reads it");
+  command->add_option("FILE", options->file, "the .msh file")->required();
+  command->add_flag("--json", options->json, "machine-readable output");
+  command->callback([&runner, options] {
+    runner = [options] {
+      const Mesh mesh = readMsh(options->file);
+      const MeshStats stats = computeMeshStats(mesh);
+      options->json ? printJson(mesh, stats) : printText(mesh, stats);
+      return kExitOk;
+    };
+  });
+}
+
+}  // namespace lancer::cli

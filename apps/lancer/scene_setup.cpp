@@ -1,0 +1,101 @@
+#include "scene_setup.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+
+#include "lancer/mesh/msh_reader.hpp"
+#include "lancer/scene/quick_look.hpp"
+#include "lancer/scene/scene_loader.hpp"
+
+namespace lancer::cli {
+namespace {
+
+std::atomic<bool> gInterrupted{false};
+extern "C" void onInterrupt(int) { gInterrupted.store(true); }
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool isMeshFile(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".msh";
+}
+
+ShadingMode shadingFromName(const std::string& name) {
+  return name == "flat" ? ShadingMode::Flat : (name == "gouraud" ? ShadingMode::Gouraud : ShadingMode::Phong);
+}
+
+SamplerKind samplerFromName(const std::string& name) {
+  return name == "stratified" ? SamplerKind::Stratified
+                              : (name == "adaptive" ? SamplerKind::Adaptive : SamplerKind::Regular);
+}
+
+}  // namespace
+
+void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
+  command.add_option("--width", overrides.width, "Image width in pixels")->check(CLI::Range(1, 32768));
+  command.add_option("--height", overrides.height, "Image height in pixels")->check(CLI::Range(1, 32768));
+  command.add_option("--samples", overrides.samples, "Samples per pixel (a perfect square for the regular grid)")
+      ->check(CLI::Range(1, 1024));
+  command.add_option("--sampler", overrides.sampler, "Anti-aliasing: regular, stratified or adaptive")
+      ->check(CLI::IsMember({"regular", "stratified", "adaptive"}));
+  command.add_option("--max-depth", overrides.maxDepth, "Reflection/refraction depth")->check(CLI::Range(0, 64));
+  command.add_option("--shading", overrides.shading, "Shading for every mesh: flat, gouraud or phong")
+      ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
+  command.add_option("--accel", overrides.accel, "Accelerator: kdtree-sah (default), kdtree-median or naive")
+      ->check(CLI::IsMember({"kdtree-sah", "kdtree-median", "naive"}));
+  command.add_option("--threads", overrides.threads, "Worker threads (default 0: all cores)")
+      ->check(CLI::Range(0, 1024));
+  command.add_flag("--srgb", overrides.srgb, "Encode the output with the sRGB curve instead of linear");
+  command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
+}
+
+PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides) {
+  const auto start = std::chrono::steady_clock::now();
+  SceneDescription description;
+  std::vector<Mesh> preloaded;
+  if (isMeshFile(input)) {
+    preloaded.push_back(readMsh(input));
+    description = quickLookScene(input, preloaded.front());
+  } else {
+    description = loadScene(input);
+  }
+  RenderSettings& settings = description.render;
+  if (overrides.width) settings.width = *overrides.width;
+  if (overrides.height) settings.height = *overrides.height;
+  if (overrides.maxDepth) settings.maxDepth = *overrides.maxDepth;
+  if (overrides.srgb) settings.srgb = true;
+  if (!overrides.sampler.empty()) settings.sampler = samplerFromName(overrides.sampler);
+  if (overrides.samples) settings.samples = *overrides.samples;
+  const int root = static_cast<int>(std::lround(std::sqrt(settings.samples)));
+  if (settings.sampler != SamplerKind::Adaptive && root * root != settings.samples)
+    throw InputError(SourceLocation{"--samples"},
+                     fmt::format("{} samples cannot form an n x n grid: use a perfect square (1, 4, 9, 16, ...)",
+                                 settings.samples));
+  if (!overrides.shading.empty()) {
+    settings.shading = shadingFromName(overrides.shading);
+    for (MeshInstance& mesh : description.meshes) mesh.shading.reset();
+  }
+  Scene scene = preloaded.empty() ? buildScene(description) : buildScene(description, std::move(preloaded));
+  const double loadSeconds = secondsSince(start);
+  const auto buildStart = std::chrono::steady_clock::now();
+  Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, parseAccelKind(overrides.accel));
+  return PreparedScene{std::move(description), std::move(scene), std::move(accelerator), loadSeconds,
+                       secondsSince(buildStart)};
+}
+
+const std::atomic<bool>& installInterruptHandler() {
+  std::signal(SIGINT, onInterrupt);
+  std::signal(SIGTERM, onInterrupt);
+  return gInterrupted;
+}
+
+bool showProgress(const SceneOverrides& overrides) { return !overrides.quiet && isatty(STDERR_FILENO); }
+
+}  // namespace lancer::cli

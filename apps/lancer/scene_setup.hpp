@@ -1,0 +1,46 @@
+// What `render` and `animate` share: command-line overrides of the scene's render settings, loading
+// a scene file or a bare mesh, building the accelerator once, Ctrl-C handling and progress lines.
+#pragma once
+
+#include <atomic>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "lancer/accel/accelerator.hpp"
+#include "lancer/scene/scene.hpp"
+
+namespace lancer::cli {
+
+struct SceneOverrides {
+  std::optional<int> width, height, samples, maxDepth;
+  std::string shading;
+  std::string sampler;
+  std::string accel = "kdtree-sah";
+  int threads = 0;
+  bool srgb = false;
+  bool quiet = false;
+};
+
+void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides);
+
+struct PreparedScene {
+  SceneDescription description;
+  Scene scene;
+  Accelerator accelerator;
+  double loadSeconds = 0;
+  double buildSeconds = 0;
+};
+
+// Reads a scene file (.toml) or builds the quick-look scene of a mesh (.msh), applies the
+// overrides, loads the meshes and builds the accelerator.
+PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides);
+
+// Ctrl-C and SIGTERM set the flag instead of killing the process, so outputs stay untouched.
+const std::atomic<bool>& installInterruptHandler();
+
+// True when progress lines should go to stderr (a terminal, and not --quiet).
+bool showProgress(const SceneOverrides& overrides);
+
+}  // namespace lancer::cli

@@ -1,0 +1,263 @@
+// What the accelerator benchmarks share: the gmsh meshes they load, the ray sets of issue 4
+// (1024x1024 pinhole primary rays framing the mesh, shadow rays to one light, incoherent rays in
+// the bounding box) and a runner that traces a ray set on N threads in chunks, like the renderer.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "lancer/accel/kd_tree.hpp"
+#include "lancer/math/ray.hpp"
+#include "lancer/mesh/msh_reader.hpp"
+
+namespace lancer::bench {
+
+// Mesh names from LANCER_BENCH_MESHES ("10k,100k"), loaded from bench/data/bracket_<name>.msh
+// (bench/run_accel_bench.sh makes them with gmsh from bench/geo/).
+inline std::vector<std::string> meshNames() {
+  const char* env = std::getenv("LANCER_BENCH_MESHES");
+  std::stringstream list(env && *env ? env : "10k,100k,1m,4m");
+  std::vector<std::string> names;
+  for (std::string name; std::getline(list, name, ',');) names.push_back(name);
+  return names;
+}
+
+inline std::string meshPath(const std::string& name) {
+  const char* dir = std::getenv("LANCER_BENCH_DATA");
+  return std::string(dir ? dir : LANCER_BENCH_DATA_DIR) + "/bracket_" + name + ".msh";
+}
+
+struct RaySet {
+  std::vector<Ray> rays;
+  std::vector<float> tMax;  // per ray (shadow rays stop at the light)
+  float tMin = 0.0f;
+  bool anyHit = false;
+};
+
+inline int benchThreads() {
+  const char* env = std::getenv("LANCER_BENCH_THREADS");
+  return env ? std::max(1, std::atoi(env)) : 2;
+}
+
+// Primary rays of a pinhole camera on the diagonal (1, -1.6, 0.9) of the box, framing its bounding
+// sphere, in 8x8-pixel tiles (the renderer's order: neighbouring rays traced together).
+inline RaySet primaryRays(const Aabb& box, int width = 1024, int height = 1024) {
+  const Vec3 center = box.center();
+  const float radius = 0.5f * length(box.extent());
+  const Vec3 forward = normalize(Vec3{-1.0f, 1.6f, -0.9f});
+  const float fov = 40.0f * 3.14159265f / 180.0f;
+  const float distance = radius / std::sin(0.5f * fov);
+  const Vec3 eye = center - forward * distance;
+  const Vec3 right = normalize(cross(forward, Vec3{0, 0, 1}));
+  const Vec3 up = cross(right, forward);
+  const float scale = std::tan(0.5f * fov);
+  RaySet set;
+  for (int ty = 0; ty < height; ty += 8) {
+    for (int tx = 0; tx < width; tx += 8) {
+      for (int y = ty; y < std::min(ty + 8, height); ++y) {
+        for (int x = tx; x < std::min(tx + 8, width); ++x) {
+          const float sx = (2.0f * (float(x) + 0.5f) / float(width) - 1.0f) * scale;
+          const float sy = (1.0f - 2.0f * (float(y) + 0.5f) / float(height)) * scale;
+          set.rays.emplace_back(eye, normalize(forward + right * sx + up * sy));
+        }
+      }
+    }
+  }
+  set.tMax.assign(set.rays.size(), std::numeric_limits<float>::infinity());
+  return set;
+}
+
+// Shadow rays from the primary hits towards one point light above and in front of the part.
+inline RaySet shadowRays(const Aabb& box, const RaySet& primary, const KdTree& tree) {
+  const Vec3 light = box.center() + Vec3{-0.6f, -1.0f, 1.4f} * length(box.extent());
+  const float offset = 1e-4f * length(box.extent());
+  RaySet set;
+  set.anyHit = true;
+  for (const Ray& ray : primary.rays) {
+    Hit hit;
+    if (!tree.intersect(ray, 0.0f, std::numeric_limits<float>::infinity(), hit)) continue;
+    const Vec3 p = ray.at(hit.t);
+    const Vec3 toLight = light - p;
+    const float distance = length(toLight);
+    const Vec3 dir = toLight * (1.0f / distance);
+    set.rays.emplace_back(p + dir * offset, dir);
+    set.tMax.push_back(distance - 2.0f * offset);
+  }
+  return set;
+}
+
+// Random origins and directions inside the box: incoherent rays, closest hit.
+inline RaySet incoherentRays(const Aabb& box, std::size_t count = 1u << 18) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::normal_distribution<float> n(0.0f, 1.0f);
+  RaySet set;
+  const Vec3 e = box.extent();
+  for (std::size_t i = 0; i < count; ++i) {
+    const Vec3 o{box.lower.x + u(rng) * e.x, box.lower.y + u(rng) * e.y, box.lower.z + u(rng) * e.z};
+    set.rays.emplace_back(o, normalize(Vec3{n(rng), n(rng), n(rng)}));
+  }
+  set.tMax.assign(set.rays.size(), std::numeric_limits<float>::infinity());
+  return set;
+}
+
+// Runs trace(begin, end) over [0, count) in chunks of 4096 on `threads` threads; returns seconds.
+template <typename Trace>
+double runChunked(std::size_t count, int threads, Trace&& trace) {
+  constexpr std::size_t kChunk = 4096;
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t begin; (begin = next.fetch_add(kChunk)) < count;) trace(begin, std::min(count, begin + kChunk));
+  };
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace lancer::bench
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <mutex>
+
+namespace lancer::bench {
+
+// One loaded mesh with its lazily built lancer trees and ray sets, shared by all benchmarks.
+struct MeshContext {
+  std::string name;
+  Mesh mesh;
+  Aabb box;
+  std::map<std::string, std::unique_ptr<KdTree>> trees;  // by kind, built with 2 threads
+  std::unique_ptr<RaySet> primary, shadow, incoherent;
+
+  const KdTree& tree(const std::string& kind) {
+    std::unique_ptr<KdTree>& slot = trees[kind];
+    if (!slot) {
+      KdBuildOptions options;
+      options.threads = 2;
+      slot = std::make_unique<KdTree>(kind == "kdtree-median" ? KdTree::buildMedian(mesh.positions, mesh.faces, options)
+                                                              : KdTree::buildSah(mesh.positions, mesh.faces, options));
+    }
+    return *slot;
+  }
+  const RaySet& rays(const std::string& kind) {
+    if (kind == "primary") {
+      if (!primary) primary = std::make_unique<RaySet>(primaryRays(box));
+      return *primary;
+    }
+    if (kind == "shadow") {
+      if (!shadow) shadow = std::make_unique<RaySet>(shadowRays(box, rays("primary"), tree("kdtree-sah")));
+      return *shadow;
+    }
+    if (!incoherent) incoherent = std::make_unique<RaySet>(incoherentRays(box));
+    return *incoherent;
+  }
+};
+
+inline MeshContext& meshContext(const std::string& name) {
+  static std::map<std::string, std::unique_ptr<MeshContext>> cache;
+  std::unique_ptr<MeshContext>& slot = cache[name];
+  if (!slot) {
+    // Only one mesh in memory at a time: the benchmarks run mesh by mesh.
+    cache.clear();
+    std::unique_ptr<MeshContext>& fresh = cache[name];
+    fresh = std::make_unique<MeshContext>();
+    fresh->name = name;
+    fresh->mesh = readMsh(meshPath(name));
+    fresh->box = faceBounds(fresh->mesh);
+    return *fresh;
+  }
+  return *slot;
+}
+
+inline const char* const kRayKinds[] = {"primary", "shadow", "incoherent"};
+
+// Traces `set` with `intersect(ray, tMin, tMax) -> bool` on `threads` threads; reports Mrays/s
+// and the hit fraction (equal between accelerators: a cheap check that they trace the same thing).
+template <typename Query>
+void traceBenchmark(benchmark::State& state, const RaySet& set, int threads, Query&& query) {
+  double seconds = 0;
+  std::atomic<std::uint64_t> hits{0};
+  for (auto _ : state) {
+    hits = 0;
+    const double s = runChunked(set.rays.size(), threads, [&](std::size_t begin, std::size_t end) {
+      std::uint64_t local = 0;
+      for (std::size_t i = begin; i < end; ++i) local += query(set.rays[i], set.tMin, set.tMax[i]);
+      hits += local;
+    });
+    state.SetIterationTime(s);
+    seconds += s;
+  }
+  const double rays = double(set.rays.size()) * double(state.iterations());
+  state.counters["Mrays_per_s"] = rays / seconds * 1e-6;
+  state.counters["hit_fraction"] = double(hits) / double(set.rays.size());
+  state.counters["rays"] = double(set.rays.size());
+}
+
+inline void registerLancer(const std::string& kind, const std::string& mesh) {
+  {
+    for (int threads : {1, 2}) {
+      benchmark::RegisterBenchmark(("build/" + kind + "/" + mesh + "/threads:" + std::to_string(threads)).c_str(),
+                                   [=](benchmark::State& state) {
+                                     MeshContext& ctx = meshContext(mesh);
+                                     KdBuildOptions options;
+                                     options.threads = threads;
+                                     AccelStats stats;
+                                     for (auto _ : state) {
+                                       KdTree tree = kind == "kdtree-median"
+                                                         ? KdTree::buildMedian(ctx.mesh.positions, ctx.mesh.faces, options)
+                                                         : KdTree::buildSah(ctx.mesh.positions, ctx.mesh.faces, options);
+                                       stats = tree.stats();
+                                       state.SetIterationTime(stats.buildSeconds);
+                                     }
+                                     state.counters["Mtris_per_s"] = stats.buildMillionTrianglesPerSecond();
+                                     state.counters["triangles"] = double(stats.triangles);
+                                     state.counters["bytes_per_tri"] = stats.bytesPerTriangle();
+                                     state.counters["nodes"] = double(stats.nodes);
+                                     state.counters["leaves"] = double(stats.leaves);
+                                     state.counters["depth"] = double(stats.depth);
+                                     state.counters["tris_per_leaf"] = stats.meanTrianglesPerLeaf;
+                                     state.counters["sah_cost"] = stats.sahCost;
+                                   })
+          ->UseManualTime()->Iterations(1)->Repetitions(3)->Unit(benchmark::kMillisecond);
+    }
+    for (const char* rayKind : kRayKinds) {
+      for (int threads : {1, 2}) {
+        const std::string rk = rayKind;
+        benchmark::RegisterBenchmark(("trace/" + kind + "/" + mesh + "/" + rk + "/threads:" + std::to_string(threads)).c_str(),
+                                     [=](benchmark::State& state) {
+                                       MeshContext& ctx = meshContext(mesh);
+                                       const KdTree& tree = ctx.tree(kind);
+                                       const RaySet& set = ctx.rays(rk);
+                                       if (set.anyHit) {
+                                         traceBenchmark(state, set, threads, [&](const Ray& r, float t0, float t1) {
+                                           return tree.occluded(r, t0, t1);
+                                         });
+                                       } else {
+                                         traceBenchmark(state, set, threads, [&](const Ray& r, float t0, float t1) {
+                                           Hit hit;
+                                           return tree.intersect(r, t0, t1, hit);
+                                         });
+                                       }
+                                     })
+            ->UseManualTime()->Iterations(1)->Repetitions(3)->Unit(benchmark::kMillisecond);
+      }
+    }
+  }
+}
+
+}  // namespace lancer::bench

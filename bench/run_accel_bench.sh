@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# Makes the bench meshes that are missing (gmsh, from bench/geo/), runs the accelerator benchmarks
+# and prints issue 4's tables: build time and throughput, bytes per triangle, and ray throughput
+# for primary, shadow and incoherent rays on 1 and 2 threads, with lancer/Embree ratios from the
+# same run.
+#   bench/run_accel_bench.sh [build-dir] [meshes]    e.g. bench/run_accel_bench.sh build-accel 10k,100k
+# Tables show medians of 3 repetitions. Timings are wall-clock: run on an idle machine.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+build=${1:-build}
+meshes=${2:-10k,100k,1m,4m}
+mkdir -p "$here/data"
+for mesh in ${meshes//,/ }; do
+  out="$here/data/bracket_$mesh.msh"
+  if [[ ! -f "$out" ]]; then
+    echo "making $out with gmsh..." >&2
+    gmsh -2 "$here/geo/bracket_$mesh.geo" -o "$out" > "$here/data/bracket_$mesh.log" 2>&1
+  fi
+done
+
+results=$(mktemp -d)
+echo "CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2) x $(nproc); load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+# One process per mesh (only one mesh in memory), repetitions randomly interleaved so that lancer
+# and Embree see the same swings in machine load.
+for mesh in ${meshes//,/ }; do
+  export LANCER_BENCH_MESHES=$mesh
+  for program in embree_compare_bench kd_tree_bench; do
+    binary="$build/bench/$program"
+    if [[ ! -x "$binary" ]]; then
+      echo "($program not built: skipped)" >&2
+      continue
+    fi
+    filter='.'
+    # The Embree program already runs lancer's SAH tree side by side; kd_tree_bench adds the median.
+    [[ $program == kd_tree_bench && -x "$build/bench/embree_compare_bench" ]] && filter='kdtree-median'
+    echo "running $program on $mesh..." >&2
+    "$binary" --benchmark_filter="$filter" --benchmark_enable_random_interleaving=true \
+      --benchmark_out="$results/$program-$mesh.json" --benchmark_out_format=json \
+      --benchmark_report_aggregates_only=true > "$results/$program-$mesh.log" 2>&1 || { cat "$results/$program-$mesh.log"; exit 1; }
+  done
+done
+echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
+
+python3 - "$results" <<'PY'
+import json, sys, glob
+rows = {}
+for path in glob.glob(sys.argv[1] + "/*.json"):
+    for b in json.load(open(path))["benchmarks"]:
+        if b.get("aggregate_name") != "median":
+            continue
+        rows[b["run_name"].split("/iterations")[0]] = b
+
+def get(name, key):
+    b = rows.get(name)
+    return None if b is None else b.get(key)
+
+def fmt(v, spec="{:.2f}"):
+    return "-" if v is None else spec.format(v)
+
+def ratio(a, b):
+    return None if a is None or b is None or b == 0 else a / b
+
+def per_cpu_second(name, amount):
+    # Rays per second of the calling thread's CPU time: on a shared machine this is far steadier
+    # than wall time. Only for 1-thread traces (Embree builds on its own threads even then).
+    cpu = get(name, "cpu_time")  # milliseconds (the benchmarks' unit)
+    return None if cpu is None or amount is None else amount / (cpu * 1e-3) * 1e-6
+
+def size(m):
+    return float(m[:-1]) * (1e3 if m[-1] == "k" else 1e6)
+
+meshes = sorted({n.split("/")[2] for n in rows}, key=size)
+accels = ["kdtree-sah", "kdtree-median", "embree-high"]
+
+print("\n## Build (medians of 3; Mtris/s = triangles / wall seconds)")
+print("| mesh | triangles | accel | threads | build s | Mtris/s | bytes/tri | nodes | depth | tris/leaf | SAH cost | SAH/Embree |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+for m in meshes:
+    for a in accels:
+        for t in (1, 2):
+            n = f"build/{a}/{m}/threads:{t}"
+            if n not in rows: continue
+            b = rows[n]
+            r = ratio(b.get("Mtris_per_s"), get(f"build/embree-high/{m}/threads:{t}", "Mtris_per_s")) if a == "kdtree-sah" else None
+            print(f"| {m} | {int(b['triangles'])} | {a} | {t} | {b['real_time']/1e3:.3f} | {b['Mtris_per_s']:.2f} | {b['bytes_per_tri']:.1f} | "
+                  f"{fmt(b.get('nodes'), '{:.0f}')} | {fmt(b.get('depth'), '{:.0f}')} | {fmt(b.get('tris_per_leaf'))} | {fmt(b.get('sah_cost'), '{:.1f}')} | {fmt(r)} |")
+
+print("\n## Ray throughput, Mrays/s wall (medians of 3), lancer SAH / Embree; 1-thread rows also per CPU-second")
+print("| mesh | rays | threads | kdtree-sah | kdtree-median | embree-high | SAH/Embree (wall) | SAH cpu | Embree cpu | SAH/Embree (cpu) | hit fraction sah, embree |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
+for m in meshes:
+    for rk in ("primary", "shadow", "incoherent"):
+        for t in (1, 2):
+            names = {a: f"trace/{a}/{m}/{rk}/threads:{t}" for a in accels}
+            v = {a: get(names[a], "Mrays_per_s") for a in accels}
+            h = [get(names[a], "hit_fraction") for a in ("kdtree-sah", "embree-high")]
+            cs = per_cpu_second(names["kdtree-sah"], get(names["kdtree-sah"], "rays")) if t == 1 else None
+            ce = per_cpu_second(names["embree-high"], get(names["embree-high"], "rays")) if t == 1 else None
+            print(f"| {m} | {rk} | {t} | {fmt(v['kdtree-sah'])} | {fmt(v['kdtree-median'])} | {fmt(v['embree-high'])} | "
+                  f"{fmt(ratio(v['kdtree-sah'], v['embree-high']))} | {fmt(cs)} | {fmt(ce)} | {fmt(ratio(cs, ce))} | {fmt(h[0], '{:.4f}')}, {fmt(h[1], '{:.4f}')} |")
+PY
+rm -rf "$results"

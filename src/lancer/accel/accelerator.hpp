@@ -1,0 +1,51 @@
+// The accelerator the renderer holds: one of the kd-tree builds or the brute-force reference,
+// chosen by name (`--accel`), behind one value type with no virtual call per ray.
+#pragma once
+
+#include <span>
+#include <string_view>
+#include <variant>
+
+#include "lancer/accel/hit.hpp"
+#include "lancer/accel/kd_tree.hpp"
+#include "lancer/accel/kd_tree_stats.hpp"
+#include "lancer/accel/naive_accel.hpp"
+
+namespace lancer {
+
+enum class AccelKind { KdTreeSah, KdTreeMedian, Naive };
+
+// "kdtree-sah", "kdtree-median" or "naive"; throws std::invalid_argument naming the choices
+// otherwise (the CLI turns it into its usage error).
+AccelKind parseAccelKind(std::string_view name);
+std::string_view accelKindName(AccelKind kind);
+
+class Accelerator {
+ public:
+  static Accelerator build(std::span<const Vec3> positions, std::span<const MeshFace> faces, AccelKind kind,
+                           const KdBuildOptions& options = {});
+
+  // Closest hit with t in (tMin, tMax), ties to the lower face; false (hit untouched) when none.
+  bool intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
+    if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(ray, tMin, tMax, hit);
+    return std::get<NaiveAccel>(impl_).intersect(ray, tMin, tMax, hit);
+  }
+  // Any hit with t in (tMin, tMax).
+  bool occluded(const Ray& ray, float tMin, float tMax) const {
+    if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(ray, tMin, tMax);
+    return std::get<NaiveAccel>(impl_).occluded(ray, tMin, tMax);
+  }
+
+  AccelKind kind() const { return kind_; }
+  AccelStats stats() const { return stats_; }
+
+ private:
+  Accelerator(std::variant<KdTree, NaiveAccel> impl, AccelKind kind, AccelStats stats)
+      : impl_(std::move(impl)), kind_(kind), stats_(std::move(stats)) {}
+
+  std::variant<KdTree, NaiveAccel> impl_;
+  AccelKind kind_;
+  AccelStats stats_;
+};
+
+}  // namespace lancer

@@ -1,0 +1,73 @@
+// What the two kd-tree builders share: the gathered triangles they read, the temporary tree they
+// write (in per-thread arenas), and the assembler that lays that tree out as the final KdTree.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <mutex>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "lancer/accel/kd_tree.hpp"
+
+namespace lancer {
+
+// The triangles to build over, with their exact corners (the builders clip and bound these).
+struct KdBuildInput {
+  std::vector<PackedTriangle> triangles;         // tree triangles, index = build triangle id
+  std::vector<std::array<Vec3, 3>> corners;      // parallel to triangles
+  std::vector<PackedTriangle> slivers;           // kept out of the tree, see KdTree::slivers_
+  Aabb bounds;                                   // of the tree triangles
+  std::uint64_t faceCount = 0;
+};
+KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces);
+
+// Deepest level the options allow for this many triangles.
+int resolveMaxDepth(const KdBuildOptions& options, std::size_t triangleCount);
+int resolveThreads(const KdBuildOptions& options);
+
+struct BuildArena;
+
+// A node of the temporary tree; a leaf when axis < 0.
+struct BuildNode {
+  int axis = -1;
+  float split = 0;
+  BuildNode* child[2] = {nullptr, nullptr};
+  const BuildArena* arena = nullptr;  // leaf: holder of its triangle ids
+  std::uint32_t first = 0;            // leaf: range in arena->leafTriangles
+  std::uint32_t count = 0;
+};
+
+// One build thread's output; deque keeps node addresses stable while it grows.
+struct BuildArena {
+  std::deque<BuildNode> nodes;
+  std::vector<std::uint32_t> leafTriangles;
+
+  BuildNode* leaf(std::span<const std::uint32_t> triangles);
+  BuildNode* inner(int axis, float split, BuildNode* left, BuildNode* right);
+};
+
+// Arenas for any number of threads; create() is the only call that needs the lock.
+class BuildArenas {
+ public:
+  BuildArena& create() {
+    std::lock_guard lock(mutex_);
+    return arenas_.emplace_back();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::deque<BuildArena> arenas_;
+};
+
+// Lays the temporary tree out as sibling-paired 8-byte nodes, renumbers triangles in the order
+// the leaves first use them (neighbours in space become neighbours in memory) and fills stats.
+class KdTreeAssembler {
+ public:
+  static KdTree assemble(const BuildNode& root, KdBuildInput&& input, const KdBuildOptions& options,
+                         std::string kind, double buildSeconds);
+};
+
+}  // namespace lancer

@@ -1,0 +1,91 @@
+// The brief's kd-tree: split the longest side of the cell at its middle and send each triangle to
+// every child its bounding box touches, until a cell holds few enough triangles.
+#include <algorithm>
+#include <chrono>
+#include <future>
+
+#include "lancer/accel/kd_tree.hpp"
+#include "lancer/accel/kd_tree_build.hpp"
+
+namespace lancer {
+
+namespace {
+
+class MedianBuilder {
+ public:
+  MedianBuilder(const KdBuildInput& input, const KdBuildOptions& options, BuildArenas& arenas)
+      : arenas_(arenas), maxDepth_(resolveMaxDepth(options, input.triangles.size())),
+        leafSize_(static_cast<std::uint32_t>(std::max(1, options.medianLeafSize))) {
+    bounds_.reserve(input.triangles.size());
+    for (const std::array<Vec3, 3>& c : input.corners) {
+      Aabb box;
+      for (const Vec3& v : c) box.extend(v);
+      bounds_.push_back(box);
+    }
+    forkDepth_ = resolveThreads(options) > 1 ? 3 : 0;
+  }
+
+  BuildNode* buildRoot(const Aabb& box) {
+    std::vector<std::uint32_t> all(bounds_.size());
+    for (std::uint32_t t = 0; t < all.size(); ++t) all[t] = t;
+    return build(all, box, 0, 0, arenas_.create());
+  }
+
+ private:
+  // badSplits counts splits on the path that left both children with most of the triangles (big
+  // triangles spanning the cell); after kMaxBadSplits of them the cell becomes a leaf (pbrt-v3's
+  // "bad refines"), else a soup of large triangles would split down to the depth limit.
+  BuildNode* build(std::vector<std::uint32_t>& triangles, const Aabb& box, int depth, int badSplits,
+                   BuildArena& arena) {
+    if (triangles.size() <= leafSize_ || depth >= maxDepth_) return arena.leaf(triangles);
+    const int axis = box.longestAxis();
+    const float split = 0.5f * (box.lower[axis] + box.upper[axis]);
+    if (!(split > box.lower[axis] && split < box.upper[axis])) return arena.leaf(triangles);
+    std::vector<std::uint32_t> left, right;
+    for (std::uint32_t t : triangles) {
+      if (bounds_[t].lower[axis] <= split) left.push_back(t);
+      if (bounds_[t].upper[axis] >= split) right.push_back(t);
+    }
+    if (10 * std::min(left.size(), right.size()) > 9 * triangles.size() && ++badSplits > kMaxBadSplits) {
+      return arena.leaf(triangles);
+    }
+    std::vector<std::uint32_t>().swap(triangles);
+    Aabb leftBox = box, rightBox = box;
+    leftBox.upper[axis] = split;
+    rightBox.lower[axis] = split;
+    BuildNode *leftNode, *rightNode;
+    if (depth < forkDepth_) {
+      auto task = std::async(std::launch::async, [&] { return build(left, leftBox, depth + 1, badSplits, arenas_.create()); });
+      rightNode = build(right, rightBox, depth + 1, badSplits, arena);
+      leftNode = task.get();
+    } else {
+      leftNode = build(left, leftBox, depth + 1, badSplits, arena);
+      rightNode = build(right, rightBox, depth + 1, badSplits, arena);
+    }
+    return arena.inner(axis, split, leftNode, rightNode);
+  }
+
+  static constexpr int kMaxBadSplits = 3;
+
+  BuildArenas& arenas_;
+  std::vector<Aabb> bounds_;
+  int maxDepth_;
+  std::uint32_t leafSize_;
+  int forkDepth_ = 0;
+};
+
+}  // namespace
+
+KdTree KdTree::buildMedian(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                           const KdBuildOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  KdBuildInput input = gatherTriangles(positions, faces);
+  BuildArenas arenas;
+  MedianBuilder builder(input, options, arenas);
+  const BuildNode* root = builder.buildRoot(input.bounds);
+  KdTree tree = KdTreeAssembler::assemble(*root, std::move(input), options, "kdtree-median", 0.0);
+  tree.stats_.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return tree;
+}
+
+}  // namespace lancer

@@ -1,0 +1,321 @@
+// SAH kd-tree build in O(N log N): Wald & Havran 2006, "On building fast kd-trees for ray tracing,
+// and on doing that in O(N log N)". Per-axis event lists are sorted once at the root; every split
+// sweeps them to find the best plane (section 4.2), classifies triangles as left, right or both,
+// and splits the sorted lists in linear time, clipping only the straddlers (section 4.3).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <future>
+#include <limits>
+#include <utility>
+
+#include "lancer/accel/kd_tree.hpp"
+#include "lancer/accel/kd_tree_build.hpp"
+#include "lancer/accel/kd_tree_clip.hpp"
+
+namespace lancer {
+
+namespace {
+
+// Event types in sweep order: at equal positions, ends before planars before starts.
+enum : std::uint32_t { kEnd = 0, kPlanar = 1, kStart = 2 };
+
+struct Event {
+  float pos;
+  std::uint32_t code;  // triangle << 2 | type
+
+  std::uint32_t triangle() const { return code >> 2; }
+  std::uint32_t type() const { return code & 3u; }
+};
+
+bool eventBefore(const Event& a, const Event& b) {
+  return a.pos < b.pos || (a.pos == b.pos && a.type() < b.type());
+}
+
+using EventLists = std::array<std::vector<Event>, 3>;
+
+// Order-preserving map of a float (never -0, never NaN) and an event type to an integer key.
+std::uint64_t sortKey(const Event& e) {
+  const auto bits = std::bit_cast<std::uint32_t>(e.pos);
+  const std::uint32_t ordered = (bits & 0x80000000u) ? ~bits : bits | 0x80000000u;
+  return (std::uint64_t(ordered) << 2) | e.type();
+}
+
+// LSD radix sort on the 34-bit (position, type) key: the root's lists hold millions of events.
+void radixSortEvents(std::vector<Event>& events) {
+  constexpr int kBits = 12, kPasses = 3;  // 36 bits >= 34
+  constexpr std::size_t kBuckets = std::size_t(1) << kBits;
+  std::vector<Event> buffer(events.size());
+  std::vector<std::size_t> count(kBuckets);
+  for (int pass = 0; pass < kPasses; ++pass) {
+    const int shift = pass * kBits;
+    std::fill(count.begin(), count.end(), 0);
+    for (const Event& e : events) ++count[(sortKey(e) >> shift) & (kBuckets - 1)];
+    std::size_t sum = 0;
+    for (std::size_t& c : count) sum += std::exchange(c, sum);
+    for (const Event& e : events) buffer[count[(sortKey(e) >> shift) & (kBuckets - 1)]++] = e;
+    events.swap(buffer);
+  }
+}
+
+void sortEvents(std::vector<Event>& events) {
+  if (events.size() > 4096) {
+    radixSortEvents(events);
+  } else {
+    std::sort(events.begin(), events.end(), eventBefore);
+  }
+}
+
+void addEvents(std::uint32_t triangle, const Aabb& box, EventLists& lists) {
+  for (int axis = 0; axis < 3; ++axis) {
+    // + 0.0f turns -0 into +0, so equal positions have equal sort keys.
+    const float lo = box.lower[axis] + 0.0f, hi = box.upper[axis] + 0.0f;
+    if (lo == hi) {
+      lists[axis].push_back({lo, triangle << 2 | kPlanar});
+    } else {
+      lists[axis].push_back({lo, triangle << 2 | kStart});
+      lists[axis].push_back({hi, triangle << 2 | kEnd});
+    }
+  }
+}
+
+struct SplitPlane {
+  int axis = -1;
+  float pos = 0;
+  bool planarLeft = false;
+  float cost = 0;
+};
+
+enum Side : std::uint8_t { kBoth = 0, kLeftOnly = 1, kRightOnly = 2 };
+
+class SahBuilder {
+ public:
+  SahBuilder(const KdBuildInput& input, const KdBuildOptions& options, BuildArenas& arenas)
+      : input_(input), options_(options), arenas_(arenas),
+        maxDepth_(resolveMaxDepth(options, input.triangles.size())) {
+    // A few more tasks than threads balance uneven subtrees; each task below this depth forks.
+    const int threads = resolveThreads(options);
+    forkDepth_ = threads > 1 ? std::min(6, 2 + static_cast<int>(std::log2(double(threads)))) : 0;
+  }
+
+  BuildNode* buildRoot() {
+    EventLists events;
+    const std::size_t n = input_.triangles.size();
+    auto makeAxis = [&](int axis) {
+      std::vector<Event>& list = events[axis];
+      list.reserve(2 * n);
+      for (std::uint32_t t = 0; t < n; ++t) {
+        const std::array<Vec3, 3>& c = input_.corners[t];
+        const float lo = std::min({c[0][axis], c[1][axis], c[2][axis]}) + 0.0f;
+        const float hi = std::max({c[0][axis], c[1][axis], c[2][axis]}) + 0.0f;
+        if (lo == hi) {
+          list.push_back({lo, t << 2 | kPlanar});
+        } else {
+          list.push_back({lo, t << 2 | kStart});
+          list.push_back({hi, t << 2 | kEnd});
+        }
+      }
+      sortEvents(list);
+    };
+    if (forkDepth_ > 0) {
+      auto x = std::async(std::launch::async, makeAxis, 0);
+      auto y = std::async(std::launch::async, makeAxis, 1);
+      makeAxis(2);
+      x.get();
+      y.get();
+    } else {
+      for (int axis = 0; axis < 3; ++axis) makeAxis(axis);
+    }
+    return buildTask(std::move(events), static_cast<std::uint32_t>(n), input_.bounds, 0);
+  }
+
+ private:
+  // A subtree built by one thread, with its own arena and classification scratch.
+  BuildNode* buildTask(EventLists events, std::uint32_t count, const Aabb& box, int depth) {
+    BuildArena& arena = arenas_.create();
+    std::vector<std::uint8_t> side(input_.triangles.size(), kBoth);
+    return build(events, count, box, depth, arena, side);
+  }
+
+  BuildNode* build(EventLists& events, std::uint32_t count, const Aabb& box, int depth, BuildArena& arena,
+                   std::vector<std::uint8_t>& side) {
+    const SplitPlane plane = depth < maxDepth_ && count > 0 ? findPlane(events, count, box) : SplitPlane{};
+    if (plane.axis < 0 || plane.cost >= options_.intersectionCost * float(count)) {
+      return makeLeaf(events, arena);
+    }
+    Aabb leftBox = box, rightBox = box;
+    leftBox.upper[plane.axis] = plane.pos;
+    rightBox.lower[plane.axis] = plane.pos;
+    EventLists left, right;
+    std::uint32_t leftCount = 0, rightCount = 0;
+    splitEvents(events, plane, leftBox, rightBox, side, left, right, leftCount, rightCount);
+    for (std::vector<Event>& list : events) std::vector<Event>().swap(list);  // free before recursing
+
+    BuildNode *leftNode, *rightNode;
+    if (depth < forkDepth_) {
+      auto task = std::async(std::launch::async, [&] { return buildTask(std::move(left), leftCount, leftBox, depth + 1); });
+      rightNode = build(right, rightCount, rightBox, depth + 1, arena, side);
+      leftNode = task.get();
+    } else {
+      leftNode = build(left, leftCount, leftBox, depth + 1, arena, side);
+      rightNode = build(right, rightCount, rightBox, depth + 1, arena, side);
+    }
+    return arena.inner(plane.axis, plane.pos, leftNode, rightNode);
+  }
+
+  BuildNode* makeLeaf(const EventLists& events, BuildArena& arena) const {
+    // Each triangle has exactly one start or planar event per axis.
+    std::vector<std::uint32_t> triangles;
+    for (const Event& e : events[0]) {
+      if (e.type() != kEnd) triangles.push_back(e.triangle());
+    }
+    std::sort(triangles.begin(), triangles.end());
+    return arena.leaf(triangles);
+  }
+
+  // Section 4.2: one sweep per axis over the sorted events; planar triangles at the plane are
+  // tried on each side.
+  SplitPlane findPlane(const EventLists& events, std::uint32_t count, const Aabb& box) const {
+    SplitPlane best;
+    best.cost = std::numeric_limits<float>::infinity();
+    const Vec3 extent = box.extent();
+    const float area = box.surfaceArea();
+    if (!(area > 0.0f)) return best;
+    const float invArea = 1.0f / area;
+    const float kt = options_.traversalCost, ki = options_.intersectionCost;
+    for (int axis = 0; axis < 3; ++axis) {
+      const float lo = box.lower[axis], hi = box.upper[axis];
+      if (!(hi > lo)) continue;
+      const float a = extent[(axis + 1) % 3], b = extent[(axis + 2) % 3];
+      const float capArea = a * b, girth = a + b;
+      const std::vector<Event>& list = events[axis];
+      std::uint32_t nl = 0, nr = count;
+      std::size_t i = 0;
+      while (i < list.size()) {
+        const float p = list[i].pos;
+        std::uint32_t ends = 0, planars = 0, starts = 0;
+        for (; i < list.size() && list[i].pos == p; ++i) {
+          const std::uint32_t type = list[i].type();
+          ends += type == kEnd;
+          planars += type == kPlanar;
+          starts += type == kStart;
+        }
+        nr -= planars + ends;
+        if (planars > 0 && (p == lo || p == hi)) {
+          // Triangles lying in a face of the cell: isolate them in a flat cell (section 4.1) so
+          // that the rest of the cell, which keeps its volume, no longer holds them. On CAD
+          // parts this wraps the big axis-aligned faces tightly.
+          const float flat = 2.0f * capArea * invArea;
+          const float c = p == lo ? kt + ki * (flat * float(planars) + float(nr))
+                                  : kt + ki * (float(nl) + flat * float(planars));
+          const bool rest = p == lo ? nr > 0 : nl > 0;
+          const float cost = rest ? c : c * options_.emptySpaceFactor;
+          if (cost < best.cost) best = {axis, p, p == lo, cost};
+        } else if (p > lo && p < hi) {
+          const float pl = 2.0f * (capArea + (p - lo) * girth) * invArea;
+          const float pr = 2.0f * (capArea + (hi - p) * girth) * invArea;
+          // The empty-space bonus only for a real slab of empty space: granted for any sliver, it
+          // makes every cell of 3+ triangles shave thin slices off itself down to the depth limit.
+          const bool wideLeft = p - lo >= options_.emptySpaceMinFraction * (hi - lo);
+          const bool wideRight = hi - p >= options_.emptySpaceMinFraction * (hi - lo);
+          auto cost = [&](std::uint32_t cl, std::uint32_t cr) {
+            const float c = kt + ki * (pl * float(cl) + pr * float(cr));
+            return ((cl == 0 && wideLeft) || (cr == 0 && wideRight)) ? c * options_.emptySpaceFactor : c;
+          };
+          const float planarLeftCost = cost(nl + planars, nr);
+          const float planarRightCost = cost(nl, nr + planars);
+          if (planarLeftCost < best.cost) best = {axis, p, true, planarLeftCost};
+          if (planarRightCost < best.cost) best = {axis, p, false, planarRightCost};
+        }
+        nl += starts + planars;
+      }
+    }
+    return best;
+  }
+
+  // Section 4.3: classify, keep the sorted order of one-sided events, clip the straddlers and
+  // merge their fresh (sorted) events in.
+  void splitEvents(const EventLists& events, const SplitPlane& plane, const Aabb& leftBox, const Aabb& rightBox,
+                   std::vector<std::uint8_t>& side, EventLists& left, EventLists& right, std::uint32_t& leftCount,
+                   std::uint32_t& rightCount) const {
+    const int k = plane.axis;
+    const float p = plane.pos;
+    for (const Event& e : events[k]) {
+      const std::uint32_t type = e.type();
+      if (type == kEnd && e.pos <= p) {
+        side[e.triangle()] = kLeftOnly;
+      } else if (type == kStart && e.pos >= p) {
+        side[e.triangle()] = kRightOnly;
+      } else if (type == kPlanar) {
+        side[e.triangle()] = (e.pos < p || (e.pos == p && plane.planarLeft)) ? kLeftOnly : kRightOnly;
+      }
+    }
+    std::vector<std::uint32_t> straddlers;
+    leftCount = rightCount = 0;
+    for (const Event& e : events[k]) {
+      if (e.type() == kEnd) continue;
+      const std::uint8_t s = side[e.triangle()];
+      leftCount += s == kLeftOnly;
+      rightCount += s == kRightOnly;
+      if (s == kBoth) straddlers.push_back(e.triangle());
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      left[axis].reserve(events[axis].size() / 2 + 2 * straddlers.size());
+      right[axis].reserve(events[axis].size() / 2 + 2 * straddlers.size());
+      for (const Event& e : events[axis]) {
+        const std::uint8_t s = side[e.triangle()];
+        if (s == kLeftOnly) left[axis].push_back(e);
+        else if (s == kRightOnly) right[axis].push_back(e);
+      }
+    }
+    EventLists newLeft, newRight;
+    for (std::uint32_t t : straddlers) {
+      const Aabb l = clippedTriangleBounds(input_.corners[t], leftBox);
+      if (!l.empty()) {
+        addEvents(t, l, newLeft);
+        ++leftCount;
+      }
+      const Aabb r = clippedTriangleBounds(input_.corners[t], rightBox);
+      if (!r.empty()) {
+        addEvents(t, r, newRight);
+        ++rightCount;
+      }
+    }
+    for (const Event& e : events[k]) side[e.triangle()] = kBoth;  // scratch clean for the next node
+    for (int axis = 0; axis < 3; ++axis) {
+      mergeSorted(left[axis], newLeft[axis]);
+      mergeSorted(right[axis], newRight[axis]);
+    }
+  }
+
+  static void mergeSorted(std::vector<Event>& list, std::vector<Event>& fresh) {
+    if (fresh.empty()) return;
+    sortEvents(fresh);
+    const auto middle = static_cast<std::ptrdiff_t>(list.size());
+    list.insert(list.end(), fresh.begin(), fresh.end());
+    std::inplace_merge(list.begin(), list.begin() + middle, list.end(), eventBefore);
+  }
+
+  const KdBuildInput& input_;
+  const KdBuildOptions& options_;
+  BuildArenas& arenas_;
+  int maxDepth_;
+  int forkDepth_ = 0;
+};
+
+}  // namespace
+
+KdTree KdTree::buildSah(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                        const KdBuildOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  KdBuildInput input = gatherTriangles(positions, faces);
+  BuildArenas arenas;
+  SahBuilder builder(input, options, arenas);
+  const BuildNode* root = builder.buildRoot();
+  // The layout pass is part of the build the user waits for, so it is inside the timing.
+  KdTree tree = KdTreeAssembler::assemble(*root, std::move(input), options, "kdtree-sah", 0.0);
+  tree.stats_.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return tree;
+}
+
+}  // namespace lancer

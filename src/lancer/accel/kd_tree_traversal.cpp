@@ -1,0 +1,166 @@
+// Front-to-back kd-tree traversal with a fixed stack (pbrt-v3 section 4.4.4, Havran's thesis
+// appendix C). Exactness: triangle hits are accepted wherever they lie, not just inside the current
+// cell, a ray within a thin band of a split plane visits both sides, and cells are pruned only when
+// clearly beyond the best hit, so a hit on or near a split plane (a ray through a shared edge lying
+// in the plane) reaches the same tie-break as the brute-force loop.
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <iterator>
+#include <limits>
+
+#include "lancer/accel/kd_tree.hpp"
+
+namespace lancer {
+
+#ifdef LANCER_KD_COUNTERS
+thread_local KdTraversalCounters kdCounters;
+KdTraversalCounters& kdTraversalCounters() { return kdCounters; }
+#define LANCER_KD_COUNT(field) ++kdCounters.field
+#else
+#define LANCER_KD_COUNT(field) ((void)0)
+#endif
+
+namespace {
+
+// Relative slack of the cell decisions, against the rounding of split distances and triangle hits.
+constexpr float kSlack = 1e-6f;
+
+// Half-width of the band around a split plane within which a ray counts as on both sides,
+// relative to the largest coordinate involved: Moller-Trumbore accepts hits a few ulps outside a
+// triangle (closed edges plus rounding), so a triangle that ends exactly at a plane can be hit by a
+// ray that runs a hair beyond it, in the neighbouring cell.
+constexpr float kPlaneSlack = 4e-6f;
+
+// Recently tested triangles, direct-mapped by index: neighbouring leaves share triangles.
+constexpr std::uint32_t kMailboxSize = 8;
+
+struct StackEntry {
+  std::uint32_t node;
+  float tEnter, tExit;
+};
+
+// The next float up: the closest hit found so far still accepts an equal-t hit on a lower face.
+inline float nextUp(float t) {
+  if (!(t < std::numeric_limits<float>::infinity())) return t;
+  if (t == 0.0f) return std::numeric_limits<float>::denorm_min();
+  const auto bits = std::bit_cast<std::uint32_t>(t);
+  return std::bit_cast<float>(t > 0.0f ? bits + 1 : bits - 1);
+}
+
+// Closest-hit bookkeeping identical to NaiveAccel::intersect.
+struct ClosestHit {
+  Hit best;
+  float upper;  // triangles are tested on (tMin, upper): t <= best.t once something was hit
+
+  bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
+    const float t = intersectTriangle(tri, ray, tMin, upper);
+    if (t >= 0.0f && t < tMax && closerThan(t, tri.face, best)) {
+      best.t = t;
+      best.face = tri.face;
+      upper = nextUp(t);
+    }
+    return false;
+  }
+};
+
+struct AnyHit {
+  bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) const {
+    return intersectTriangle(tri, ray, tMin, tMax) >= 0.0f;
+  }
+};
+
+// Walks the tree; Query::test returns true to stop (any hit). `bound` reads the current pruning
+// distance: the closest hit so far, or tMax for any-hit.
+template <typename Query, typename Bound>
+bool walk(std::span<const KdNode> nodes, std::span<const std::uint32_t> leafTriangles,
+          std::span<const PackedTriangle> triangles, const Aabb& bounds, float magnitude, const Ray& ray, float tMin,
+          float tMax, Query& query, Bound bound) {
+  float tEnter, tExit;
+  if (!intersectAabb(bounds, ray, tMin, tMax, tEnter, tExit)) return false;
+  const float eps = kSlack * std::max(std::abs(tEnter), std::abs(tExit));
+  // Indexable copies: Vec3's operator[] is a select chain, too slow for the inner loop.
+  const float origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+  const float invDirection[3] = {ray.invDirection.x, ray.invDirection.y, ray.invDirection.z};
+  // Half-width of the band around each split plane that counts as on both sides (kPlaneSlack),
+  // signed along the ray so that the ray is inside the band for t in [tNear, tFar] below.
+  const float band = kPlaneSlack * std::max(magnitude, maxComponent(abs(ray.origin)));
+  const float signedBand[3] = {invDirection[0] < 0.0f ? -band : band, invDirection[1] < 0.0f ? -band : band,
+                               invDirection[2] < 0.0f ? -band : band};
+  StackEntry stack[KdTree::kMaxDepth + 2];  // one push per level at most
+  std::uint32_t mailbox[kMailboxSize];
+  std::fill(std::begin(mailbox), std::end(mailbox), 0xFFFFFFFFu);
+  int top = 0;
+  const KdNode* base = nodes.data();
+  const KdNode* node = base;
+  while (true) {
+    while (!node->isLeaf()) {
+      LANCER_KD_COUNT(innerNodes);
+      const int axis = node->axis();
+      const float split = node->split();
+      // The ray enters the band around the plane at tNear and leaves it at tFar: the first child
+      // (the side it starts on) holds t < tFar, the second t > tNear. A ray inside the band and
+      // parallel to the plane gets infinite or NaN values, which fail every test below and so
+      // visit both children over the whole span.
+      const float tNear = (split - signedBand[axis] - origin[axis]) * invDirection[axis];
+      const float tFar = (split + signedBand[axis] - origin[axis]) * invDirection[axis];
+      const std::uint32_t firstIsRight = invDirection[axis] < 0.0f ? 1u : 0u;
+      const KdNode* first = base + node->firstChild() + firstIsRight;
+      const KdNode* second = base + node->firstChild() + (firstIsRight ^ 1u);
+      if (tNear > tExit + eps) {
+        node = first;
+      } else if (tFar < tEnter - eps) {
+        node = second;
+      } else {
+        stack[top++] = {static_cast<std::uint32_t>(second - base), tNear > tEnter ? tNear : tEnter, tExit};
+        node = first;
+        tExit = tFar < tExit ? tFar : tExit;
+      }
+    }
+    const std::uint32_t count = node->triangleCount();
+    LANCER_KD_COUNT(leaves);
+    const std::uint32_t* index = count == 1 ? &node->payload : leafTriangles.data() + node->payload;
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const std::uint32_t triangle = index[i];
+      // Mailbox (Amanatides & Woo 1987; Havran's thesis 5.2): a triangle split into several leaves
+      // is tested once per ray. Skipping a repeat is exact: the same test gives the same answer,
+      // and the accepted bound has only shrunk since.
+      std::uint32_t& slot = mailbox[triangle & (kMailboxSize - 1)];
+      if (slot == triangle) continue;
+      slot = triangle;
+      LANCER_KD_COUNT(triangleTests);
+      if (query.test(triangles[triangle], ray, tMin, tMax)) return true;
+    }
+    // Cells further than the best hit (plus slack) cannot hold a closer or tied hit.
+    do {
+      if (top == 0) return false;
+      --top;
+      node = base + stack[top].node;
+      tEnter = stack[top].tEnter;
+      tExit = stack[top].tExit;
+    } while (tEnter > bound() + eps);
+  }
+}
+
+}  // namespace
+
+bool KdTree::intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
+  LANCER_KD_COUNT(rays);
+  ClosestHit query{Hit{tMax, Hit{}.face}, tMax};
+  for (const PackedTriangle& tri : slivers_) query.test(tri, ray, tMin, tMax);
+  walk(nodes_, leafTriangles_, triangles_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return query.best.t; });
+  if (!query.best.valid()) return false;
+  hit = query.best;
+  return true;
+}
+
+bool KdTree::occluded(const Ray& ray, float tMin, float tMax) const {
+  LANCER_KD_COUNT(rays);
+  AnyHit query;
+  for (const PackedTriangle& tri : slivers_) {
+    if (query.test(tri, ray, tMin, tMax)) return true;
+  }
+  return walk(nodes_, leafTriangles_, triangles_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return tMax; });
+}
+
+}  // namespace lancer

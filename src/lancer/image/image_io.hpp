@@ -1,0 +1,49 @@
+// Reading and writing still images: PNG (libpng), BMP and PPM (written by lancer), and a single-frame
+// GIF; the format follows the file extension. Every write is atomic (see atomic_file.hpp).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lancer/image/gif_writer.hpp"
+#include "lancer/image/image.hpp"
+#include "lancer/image/pixel_encoding.hpp"
+
+namespace lancer {
+
+enum class ImageFormat { Png, Bmp, Ppm, Gif };
+
+// "Auto" stores alpha only when some pixel is not opaque; PNG is the only format with alpha.
+enum class AlphaChannel { Auto, Always, Never };
+
+struct ImageWriteOptions {
+  TransferCurve curve = TransferCurve::Linear;
+  AlphaChannel alpha = AlphaChannel::Auto;
+  Dither dither = Dither::Ordered;  // .gif only (256 colours; see GifOptions)
+};
+
+// The extensions writeImage accepts, for messages and --help: ".png, .bmp, .ppm, .gif".
+inline constexpr const char* kImageExtensions = ".png, .bmp, .ppm, .gif";
+
+// By extension, case-insensitive. Throws InputError naming the file and the supported extensions.
+ImageFormat imageFormatFromPath(const std::string& path);
+
+// Writes `image` in the format its extension names; throws InputError on a bad path or I/O failure.
+void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options = {});
+
+void writePng(const std::string& path, const Image& image, const ImageWriteOptions& options = {});
+void writeBmp(const std::string& path, const Image& image, TransferCurve curve = TransferCurve::Linear);
+void writePpm(const std::string& path, const Image& image, TransferCurve curve = TransferCurve::Linear);
+
+// The complete files in memory (what writeBmp / writePpm store).
+// BMP: 24-bit BI_RGB, bottom-up rows of BGR padded to 4 bytes; alpha is dropped.
+std::vector<std::uint8_t> encodeBmp(const Image& image, TransferCurve curve = TransferCurve::Linear);
+// PPM: binary P6, maxval 255; alpha is dropped.
+std::vector<std::uint8_t> encodePpm(const Image& image, TransferCurve curve = TransferCurve::Linear);
+
+// Any PNG (palette, grey, 16-bit, interlaced) as 8-bit RGBA decoded with `curve`.
+// Throws InputError for unreadable, non-PNG, corrupt or oversized (> 2^26 pixels) files.
+Image readPng(const std::string& path, TransferCurve curve = TransferCurve::Linear);
+
+}  // namespace lancer

@@ -1,0 +1,31 @@
+// Turning linear float intensities into 8-bit file values and back: the brief's linear mapping
+// round(255 * clamp(I, 0, 1)) by default, or the sRGB transfer curve (IEC 61966-2-1) as an option.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "lancer/image/image.hpp"
+
+namespace lancer {
+
+enum class TransferCurve {
+  Linear,  // value = round(255 * clamp(I, 0, 1)), as the brief asks
+  Srgb,    // value = round(255 * srgb(clamp(I, 0, 1))): brighter mid-tones, what monitors expect
+};
+
+// IEC 61966-2-1 piecewise curve, on [0, 1].
+float srgbFromLinear(float linear);
+float linearFromSrgb(float encoded);
+
+// NaN encodes as 0, +inf as 255. Alpha is always encoded with the Linear curve.
+std::uint8_t encode8(float value, TransferCurve curve = TransferCurve::Linear);
+float decode8(std::uint8_t value, TransferCurve curve = TransferCurve::Linear);
+
+// One row as interleaved 8-bit samples: channels is 3 (RGB) or 4 (RGBA); out holds width * channels.
+void encodeRow8(std::span<const Rgba> row, TransferCurve curve, int channels, std::uint8_t* out);
+// The whole image, rows top to bottom, no padding.
+std::vector<std::uint8_t> encodeImage8(const Image& image, TransferCurve curve, int channels);
+
+}  // namespace lancer

@@ -1,0 +1,171 @@
+// PNG through libpng. libpng reports errors by longjmp, so the functions that call it hold only
+// trivially destructible locals between setjmp and the last libpng call; the C++ side (exceptions,
+// vectors) stays in the callers.
+#include <fmt/format.h>
+#include <png.h>
+
+#include <cerrno>
+#include <csetjmp>
+#include <cstring>
+#include <memory>
+
+#include "lancer/image/atomic_file.hpp"
+#include "lancer/image/image_io.hpp"
+#include "lancer/util/input_error.hpp"
+
+namespace lancer {
+namespace {
+
+// readPng refuses more pixels than this: a tiny PNG can claim 65535x65535, 64 GiB as float RGBA.
+constexpr std::uint64_t kMaxReadPixels = std::uint64_t{1} << 26;
+
+struct PngErrorText {
+  char text[256] = {};
+};
+
+// Our own handlers: libpng's defaults print to stderr, and the library never prints.
+void onPngError(png_structp png, png_const_charp message) {
+  auto* error = static_cast<PngErrorText*>(png_get_error_ptr(png));
+  if (error != nullptr && message != nullptr) {
+    std::strncpy(error->text, message, sizeof(error->text) - 1);
+  }
+  png_longjmp(png, 1);
+}
+void onPngWarning(png_structp, png_const_charp) {}
+
+void onPngWrite(png_structp png, png_bytep data, png_size_t size) {
+  auto* file = static_cast<AtomicFileWriter*>(png_get_io_ptr(png));
+  if (!file->write(data, size)) png_error(png, "write failed");
+}
+void onPngFlush(png_structp) {}
+
+// Returns false with error->text set when libpng fails (a failed write leaves the reason in `file`).
+bool encodePng(AtomicFileWriter* file, int width, int height, int channels, bool srgbChunk,
+               const std::uint8_t* samples, PngErrorText* error) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, error, onPngError, onPngWarning);
+  if (png == nullptr) return false;
+  png_infop info = png_create_info_struct(png);
+  if (info == nullptr) {
+    png_destroy_write_struct(&png, nullptr);
+    return false;
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_set_write_fn(png, file, onPngWrite, onPngFlush);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
+               channels == 4 ? PNG_COLOR_TYPE_RGBA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  if (srgbChunk) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_write_info(png, info);
+  const std::size_t stride = static_cast<std::size_t>(width) * static_cast<std::size_t>(channels);
+  for (int y = 0; y < height; ++y) {
+    png_write_row(png, samples + stride * static_cast<std::size_t>(y));
+  }
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return true;
+}
+
+struct PngSize {
+  png_uint_32 width = 0, height = 0;
+};
+
+// Decodes to 8-bit RGBA in `pixels`. Returns false with error->text on failure.
+bool decodePng(std::FILE* stream, std::vector<std::uint8_t>* pixels, PngSize* size, PngErrorText* error) {
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, error, onPngError, onPngWarning);
+  if (png == nullptr) return false;
+  png_infop info = png_create_info_struct(png);
+  if (info == nullptr) {
+    png_destroy_read_struct(&png, nullptr, nullptr);
+    return false;
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return false;
+  }
+  png_init_io(png, stream);
+  png_set_user_limits(png, kMaxImageSide, kMaxImageSide);
+  png_read_info(png, info);
+  size->width = png_get_image_width(png, info);
+  size->height = png_get_image_height(png, info);
+  if (static_cast<std::uint64_t>(size->width) * size->height > kMaxReadPixels) {
+    std::snprintf(error->text, sizeof(error->text), "image too large: %ux%u pixels (at most %llu)",
+                  size->width, size->height, static_cast<unsigned long long>(kMaxReadPixels));
+    png_destroy_read_struct(&png, &info, nullptr);
+    return false;
+  }
+  png_set_expand(png);  // palette -> RGB, grey < 8 bits -> 8 bits, tRNS -> alpha
+  png_set_strip_16(png);
+  png_set_gray_to_rgb(png);
+  png_set_add_alpha(png, 0xff, PNG_FILLER_AFTER);
+  const int passes = png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  const std::size_t stride = static_cast<std::size_t>(size->width) * 4;
+  if (png_get_rowbytes(png, info) != stride) png_error(png, "unexpected row layout after transforms");
+  pixels->resize(stride * size->height);
+  for (int pass = 0; pass < passes; ++pass) {
+    for (png_uint_32 y = 0; y < size->height; ++y) {
+      png_read_row(png, pixels->data() + stride * y, nullptr);
+    }
+  }
+  png_read_end(png, nullptr);
+  png_destroy_read_struct(&png, &info, nullptr);
+  return true;
+}
+
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+
+}  // namespace
+
+void writePng(const std::string& path, const Image& image, const ImageWriteOptions& options) {
+  if (image.empty()) throw InputError(SourceLocation{path}, "cannot write an empty (0-pixel) PNG");
+  const bool alpha = options.alpha == AlphaChannel::Always ||
+                     (options.alpha == AlphaChannel::Auto && image.hasTransparency());
+  const int channels = alpha ? 4 : 3;
+  const std::vector<std::uint8_t> samples = encodeImage8(image, options.curve, channels);
+  AtomicFileWriter file(path);
+  PngErrorText error;
+  const bool ok = encodePng(&file, image.width(), image.height(), channels,
+                            options.curve == TransferCurve::Srgb, samples.data(), &error);
+  if (!ok && !file.failed()) {
+    file.discard();
+    throw InputError(SourceLocation{path}, fmt::format("PNG encoding failed: {}", error.text));
+  }
+  file.commit();  // reports a failed write with its reason
+}
+
+Image readPng(const std::string& path, TransferCurve curve) {
+  std::unique_ptr<std::FILE, FileCloser> stream(std::fopen(path.c_str(), "rb"));
+  if (!stream) {
+    throw InputError(SourceLocation{path}, fmt::format("cannot open the file: {}", std::strerror(errno)));
+  }
+  png_byte signature[8] = {};
+  errno = 0;
+  const std::size_t got = std::fread(signature, 1, sizeof signature, stream.get());
+  if (got != sizeof signature && std::ferror(stream.get())) {  // e.g. a folder
+    throw InputError(SourceLocation{path}, fmt::format("cannot read the file: {}", std::strerror(errno)));
+  }
+  if (got != sizeof signature || png_sig_cmp(signature, 0, sizeof signature) != 0) {
+    throw InputError(SourceLocation{path, 0, 0, 0}, "not a PNG file (the 8-byte PNG signature is missing)");
+  }
+  std::rewind(stream.get());
+  std::vector<std::uint8_t> pixels;
+  PngSize size;
+  PngErrorText error;
+  if (!decodePng(stream.get(), &pixels, &size, &error)) {
+    throw InputError(SourceLocation{path}, fmt::format("unreadable PNG: {}", error.text));
+  }
+  Image image(static_cast<int>(size.width), static_cast<int>(size.height));
+  const std::uint8_t* p = pixels.data();
+  for (Rgba& pixel : image.pixels()) {
+    pixel = {decode8(p[0], curve), decode8(p[1], curve), decode8(p[2], curve), decode8(p[3])};
+    p += 4;
+  }
+  return image;
+}
+
+}  // namespace lancer

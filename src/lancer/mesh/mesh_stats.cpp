@@ -1,0 +1,118 @@
+#include "lancer/mesh/mesh_stats.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace lancer {
+namespace {
+
+// One directed edge of one face; sorting by key brings the faces that share an edge together.
+struct FaceEdge {
+  std::uint64_t key;  // (smaller vertex << 32) | larger vertex
+  std::uint32_t face;
+  bool forward;  // traversed from the smaller vertex to the larger
+  bool operator<(const FaceEdge& other) const { return key < other.key; }
+};
+
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a), b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<std::uint32_t> parent_;
+};
+
+Vec3d localPosition(const Mesh& mesh, std::uint32_t vertex) { return toDouble(mesh.positions[vertex]); }
+
+// Signed volume of the cone from the origin over the face (triangles fanned from corner 0).
+double coneVolume(const Mesh& mesh, const MeshFace& face) {
+  const Vec3d a = localPosition(mesh, face.vertex[0]);
+  double volume = 0;
+  for (int c = 1; c + 1 < face.cornerCount(); ++c)
+    volume +=
+        dot(a, cross(localPosition(mesh, face.vertex[c]), localPosition(mesh, face.vertex[c + 1]))) / 6.0;
+  return volume;
+}
+
+}  // namespace
+
+double faceArea(const Mesh& mesh, std::size_t f) {
+  const MeshFace& face = mesh.faces[f];
+  const Vec3d a = localPosition(mesh, face.vertex[0]);
+  const Vec3d b = localPosition(mesh, face.vertex[1]);
+  const Vec3d c = localPosition(mesh, face.vertex[2]);
+  if (!face.isQuad()) return 0.5 * length(cross(b - a, c - a));
+  const Vec3d d = localPosition(mesh, face.vertex[3]);
+  return 0.5 * length(cross(c - a, d - b));
+}
+
+MeshStats computeMeshStats(const Mesh& mesh) {
+  MeshStats stats;
+  const std::size_t faceCount = mesh.faces.size();
+  std::vector<FaceEdge> edges;
+  edges.reserve(faceCount * 4);
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    const MeshFace& face = mesh.faces[f];
+    face.isQuad() ? ++stats.quads : ++stats.triangles;
+    stats.area += faceArea(mesh, f);
+    ++stats.facesByPhysicalTag[mesh.facePhysicalTag[f]];
+    const int n = face.cornerCount();
+    for (int c = 0; c < n; ++c) {
+      const std::uint32_t a = face.vertex[c];
+      const std::uint32_t b = face.vertex[(c + 1) % n];
+      const std::uint64_t lo = std::min(a, b), hi = std::max(a, b);
+      edges.push_back({(lo << 32) | hi, static_cast<std::uint32_t>(f), a < b});
+      stats.worldBounds.extend(mesh.worldPosition(a));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+
+  // Faces sharing an edge belong to one shell; an edge decides closedness and orientation.
+  DisjointSets sets(faceCount);
+  std::vector<std::uint8_t> edgeOpen(faceCount, 0), edgeMisoriented(faceCount, 0);
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+    for (std::size_t k = i + 1; k < j; ++k) sets.unite(edges[i].face, edges[k].face);
+    if (j - i != 2) edgeOpen[edges[i].face] = 1;
+    if (j - i > 2 || (j - i == 2 && edges[i].forward == edges[i + 1].forward))
+      edgeMisoriented[edges[i].face] = 1;
+    i = j;
+  }
+  std::map<std::uint32_t, std::size_t> shellOfRoot;
+  std::vector<MeshShell> shells;
+  std::vector<std::uint8_t> anyOpen, anyMisoriented;
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    const std::uint32_t root = sets.find(static_cast<std::uint32_t>(f));
+    auto [it, inserted] = shellOfRoot.emplace(root, shells.size());
+    if (inserted) {
+      shells.emplace_back();
+      anyOpen.push_back(0);
+      anyMisoriented.push_back(0);
+    }
+    MeshShell& shell = shells[it->second];
+    ++shell.faceCount;
+    shell.area += faceArea(mesh, f);
+    shell.signedVolume += coneVolume(mesh, mesh.faces[f]);
+    anyOpen[it->second] |= edgeOpen[f];
+    anyMisoriented[it->second] |= edgeMisoriented[f];
+  }
+  for (std::size_t s = 0; s < shells.size(); ++s) {
+    shells[s].closed = !anyOpen[s];
+    shells[s].consistentlyOriented = !anyMisoriented[s];
+  }
+  std::stable_sort(shells.begin(), shells.end(),
+                   [](const MeshShell& a, const MeshShell& b) { return a.faceCount > b.faceCount; });
+  stats.shells = std::move(shells);
+  return stats;
+}
+
+}  // namespace lancer

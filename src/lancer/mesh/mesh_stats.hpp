@@ -1,0 +1,38 @@
+// Whole-mesh facts for `lancer info` and for tests: bounding box, surface area, face counts per
+// physical group, and the shells (edge-connected face sets) with their closedness and orientation.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <vector>
+
+#include "lancer/mesh/mesh.hpp"
+
+namespace lancer {
+
+struct MeshShell {
+  std::uint64_t faceCount = 0;
+  double area = 0;
+  // Every edge is shared by exactly two of the shell's faces.
+  bool closed = false;
+  // Every edge shared by two faces is traversed in opposite directions by them (and none by more).
+  bool consistentlyOriented = false;
+  // Volume enclosed, by the divergence theorem: > 0 when a closed, oriented shell's faces point out.
+  double signedVolume = 0;
+};
+
+struct MeshStats {
+  Aabbd worldBounds;
+  double area = 0;
+  std::uint64_t triangles = 0;
+  std::uint64_t quads = 0;
+  std::map<std::int32_t, std::uint64_t> facesByPhysicalTag;
+  std::vector<MeshShell> shells;  // largest first
+};
+
+// Area of one face in the mesh's local frame (a quad: half the cross product of its diagonals).
+double faceArea(const Mesh& mesh, std::size_t face);
+
+MeshStats computeMeshStats(const Mesh& mesh);
+
+}  // namespace lancer

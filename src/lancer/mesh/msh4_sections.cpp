@@ -1,0 +1,286 @@
+// $Entities, $PartitionedEntities, $Nodes and $Elements of MSH 4.1 (ASCII and binary) and 4.0 (ASCII;
+// the reader refuses 4.0 binary, which gmsh no longer writes). Layouts from the gmsh manual, "MSH file
+// format".
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "lancer/mesh/msh_sections.hpp"
+
+namespace lancer {
+namespace {
+
+// The three value kinds of MSH 4, read as text or as raw binary (size_t, int, double).
+class Msh4Values {
+ public:
+  explicit Msh4Values(MshReadState& state) : cursor_(state.cursor), binary_(state.binary) {}
+
+  std::uint64_t size(const char* what) {
+    return binary_ ? cursor_.readRaw<std::uint64_t>(what) : cursor_.readCount(what);
+  }
+  std::int32_t integer(const char* what) {
+    return binary_ ? cursor_.readRaw<std::int32_t>(what) : cursor_.readInt32(what);
+  }
+  double real(const char* what) { return binary_ ? cursor_.readRaw<double>(what) : cursor_.readDouble(what); }
+  // Checks that count values of at least valueBytes (binary) or one token (text) can follow.
+  void requireValues(std::uint64_t count, std::uint64_t binaryBytes, std::uint64_t textNumbers,
+                     const char* what) {
+    cursor_.requireBytes(count, binary_ ? binaryBytes : textNumbers * kMinTextNumberBytes, what);
+  }
+  // Binary data starts after the newline that ends the section's name.
+  void beginSection() {
+    if (binary_) cursor_.skipLine();
+  }
+  const char* here() {
+    if (!binary_) cursor_.skipWhitespace();
+    return cursor_.position();
+  }
+  bool binary() const { return binary_; }
+
+ private:
+  MshCursor& cursor_;
+  bool binary_;
+};
+
+std::int32_t readTagList(Msh4Values& values, const char* what) {
+  const std::uint64_t count = values.size(what);
+  values.requireValues(count, 4, 1, what);
+  std::int32_t first = 0;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const std::int32_t tag = values.integer(what);
+    if (i == 0) first = tag;
+  }
+  return first;
+}
+
+// The hot loop for the common binary blocks (3-node triangles, 4-node quads): fixed-size records
+// of size_t element tag and node tags, already checked to fit in the file.
+template <int kNodes>
+void readBinaryElements(MshReadState& state, int type, std::uint64_t count) {
+  MshCursor& cursor = state.cursor;
+  const MshNodeTable& nodes = state.assembler.nodes;
+  constexpr std::size_t kRecordBytes = 8 * (kNodes + 1);
+  const char* data = cursor.advance(count * kRecordBytes);
+  for (std::uint64_t e = 0; e < count; ++e) {
+    std::uint64_t record[kNodes + 1];
+    std::memcpy(record, data + e * kRecordBytes, kRecordBytes);
+    std::uint32_t nodeIndex[kNodes];
+    for (int n = 0; n < kNodes; ++n) {
+      nodeIndex[n] = nodes.find(record[n + 1]);
+      if (nodeIndex[n] == kNoVertex)
+        failMissingNode(state, data + e * kRecordBytes, record[0], type, record[n + 1]);
+    }
+    state.assembler.addElement(type, nodeIndex);
+  }
+}
+
+}  // namespace
+
+void readMsh4Entities(MshReadState& state, bool partitioned) {
+  Msh4Values values(state);
+  values.beginSection();
+  if (partitioned) {
+    const std::uint64_t partitions = values.size("the number of partitions");
+    state.source.partitionCount = static_cast<std::uint32_t>(std::min<std::uint64_t>(partitions, UINT32_MAX));
+    const std::uint64_t ghosts = values.size("the number of ghost entities");
+    values.requireValues(ghosts, 8, 2, "the ghost entity list");
+    for (std::uint64_t i = 0; i < ghosts; ++i) {
+      values.integer("a ghost entity tag");
+      values.integer("a ghost entity's partition");
+    }
+  }
+  std::uint64_t counts[4];
+  for (auto& count : counts) count = values.size("the number of entities of a dimension");
+  for (int dimension = 0; dimension < 4; ++dimension) {
+    values.requireValues(counts[dimension], 4 + 24 + 8, 5,
+                         partitioned ? "$PartitionedEntities" : "$Entities");
+    for (std::uint64_t i = 0; i < counts[dimension]; ++i) {
+      const std::int32_t tag = values.integer("an entity tag");
+      MshEntity entity{0, tag};
+      int parentDimension = -1;
+      std::int32_t parentTag = 0;
+      if (partitioned) {
+        parentDimension = values.integer("the parent entity's dimension");
+        parentTag = values.integer("the parent entity's tag");
+        readTagList(values, "the entity's partitions");
+      }
+      // MSH 4.1 gives a point its coordinates, 4.0 and all other entities a bounding box.
+      const int coordinates = (dimension == 0 && state.minor == 1) ? 3 : 6;
+      for (int k = 0; k < coordinates; ++k) values.real("an entity's bounding box");
+      entity.physical = readTagList(values, "the entity's physical groups");
+      if (dimension > 0) readTagList(values, "the entity's bounding entities");
+      if (partitioned) {
+        const auto parent = state.entities.find(mshEntityKey(parentDimension, parentTag));
+        if (entity.physical == 0 && parent != state.entities.end()) entity.physical = parent->second.physical;
+        if (parentDimension == dimension) entity.geometric = parentTag;
+        state.partitionedEntities[mshEntityKey(dimension, tag)] = entity;
+      } else {
+        state.entities[mshEntityKey(dimension, tag)] = entity;
+      }
+    }
+  }
+  state.cursor.expectToken(partitioned ? "$EndPartitionedEntities" : "$EndEntities", "after the entities");
+}
+
+void readMsh4Nodes(MshReadState& state) {
+  MshCursor& cursor = state.cursor;
+  Msh4Values values(state);
+  values.beginSection();
+  const char* headerAt = values.here();
+  const std::uint64_t blocks = values.size("the number of node blocks");
+  const std::uint64_t count = values.size("the number of nodes");
+  if (state.minor == 1) {
+    values.size("the smallest node tag");
+    values.size("the largest node tag");
+  }
+  values.requireValues(blocks, 20, 4, "$Nodes (blocks)");
+  values.requireValues(count, 8 + 24, 4, "$Nodes");
+  MshNodeTable& nodes = state.assembler.nodes;
+  nodes.reserve(count);
+  for (std::uint64_t b = 0; b < blocks; ++b) {
+    const char* blockAt = values.here();
+    int dimension = values.integer("a node block's entity dimension");
+    int tag = values.integer("a node block's entity tag");
+    if (state.minor == 0) std::swap(dimension, tag);
+    const int parametric = values.integer("a node block's parametric flag");
+    const std::uint64_t inBlock = values.size("the number of nodes in a block");
+    if (inBlock > count - std::min(count, nodes.taggedCount()))
+      cursor.failAt(blockAt,
+                    fmt::format("node blocks hold more than the {} nodes the $Nodes header declares", count));
+    // Parametric nodes carry one extra coordinate per dimension of their entity.
+    const int extra = parametric ? std::clamp(dimension, 0, 3) : 0;
+    const int perNode = 3 + extra;
+    values.requireValues(inBlock, 8 + 8 * static_cast<std::uint64_t>(perNode), 1 + perNode, "the node block");
+    if (state.binary) {
+      // MSH 4.1 binary: all the block's tags, then all its coordinates.
+      std::vector<std::uint64_t>& tags = nodes.tags();
+      const std::size_t first = tags.size();
+      tags.resize(first + inBlock);
+      cursor.copyRaw(tags.data() + first, inBlock);
+      std::vector<Vec3d>& coords = nodes.coords();
+      coords.resize(first + inBlock);
+      const char* coordsAt = cursor.position();
+      if (extra == 0) {
+        cursor.copyRaw(reinterpret_cast<double*>(coords.data() + first), 3 * inBlock);
+      } else {
+        for (std::uint64_t i = 0; i < inBlock; ++i) {
+          cursor.copyRaw(reinterpret_cast<double*>(&coords[first + i]), 3);
+          cursor.advance(8 * static_cast<std::uint64_t>(extra));
+        }
+      }
+      for (std::uint64_t i = 0; i < inBlock; ++i)
+        checkFinite(state, coords[first + i], tags[first + i],
+                    coordsAt + i * 8 * static_cast<std::uint64_t>(perNode));
+    } else if (state.minor == 1) {
+      std::vector<std::uint64_t>& tags = nodes.tags();
+      const std::size_t first = tags.size();
+      for (std::uint64_t i = 0; i < inBlock; ++i) tags.push_back(cursor.readCount("a node tag"));
+      std::vector<Vec3d>& coords = nodes.coords();
+      for (std::uint64_t i = 0; i < inBlock; ++i) {
+        const char* at = values.here();
+        Vec3d p;
+        p.x = cursor.readDouble("the node's x coordinate");
+        p.y = cursor.readDouble("the node's y coordinate");
+        p.z = cursor.readDouble("the node's z coordinate");
+        for (int k = 0; k < extra; ++k) cursor.readDouble("a parametric coordinate");
+        checkFinite(state, p, tags[first + i], at);
+        coords.push_back(p);
+      }
+    } else {
+      for (std::uint64_t i = 0; i < inBlock; ++i) {
+        const char* at = values.here();
+        const std::uint64_t nodeTag = cursor.readCount("a node tag");
+        Vec3d p;
+        p.x = cursor.readDouble("the node's x coordinate");
+        p.y = cursor.readDouble("the node's y coordinate");
+        p.z = cursor.readDouble("the node's z coordinate");
+        for (int k = 0; k < extra; ++k) cursor.readDouble("a parametric coordinate");
+        checkFinite(state, p, nodeTag, at);
+        nodes.add(nodeTag, p);
+      }
+    }
+  }
+  if (nodes.taggedCount() != count)
+    cursor.failAt(headerAt, fmt::format("the $Nodes header declares {} nodes, but its blocks hold {}", count,
+                                        nodes.taggedCount()));
+  cursor.expectToken("$EndNodes", fmt::format("after the {} nodes $Nodes declares", count).c_str());
+}
+
+void readMsh4Elements(MshReadState& state) {
+  MshCursor& cursor = state.cursor;
+  Msh4Values values(state);
+  values.beginSection();
+  const char* headerAt = values.here();
+  const std::uint64_t blocks = values.size("the number of element blocks");
+  const std::uint64_t count = values.size("the number of elements");
+  if (state.minor == 1) {
+    values.size("the smallest element tag");
+    values.size("the largest element tag");
+  }
+  values.requireValues(blocks, 20, 4, "$Elements (blocks)");
+  values.requireValues(count, 16, 2, "$Elements");
+  state.assembler.reserveFaces(count);
+  const MshNodeTable& nodes = state.assembler.nodes;
+  const auto& entities = state.partitionedEntities.empty() ? state.entities : state.partitionedEntities;
+  std::uint32_t nodeIndex[kMaxMshElementNodes];
+  std::uint64_t record[kMaxMshElementNodes + 1];
+  std::uint64_t read = 0;
+  for (std::uint64_t b = 0; b < blocks; ++b) {
+    const char* blockAt = values.here();
+    int dimension = values.integer("an element block's entity dimension");
+    int tag = values.integer("an element block's entity tag");
+    if (state.minor == 0) std::swap(dimension, tag);
+    const int type = values.integer("an element block's element type");
+    const std::uint64_t inBlock = values.size("the number of elements in a block");
+    const MshElementType info = requireKnownType(state, type, blockAt);
+    if (inBlock > count - read)
+      cursor.failAt(
+          blockAt,
+          fmt::format("element blocks hold more than the {} elements the $Elements header declares", count));
+    read += inBlock;
+    const auto perElement = static_cast<std::uint64_t>(info.nodeCount) + 1;
+    values.requireValues(inBlock, 8 * perElement, perElement, "the element block");
+    const auto entity = entities.find(mshEntityKey(dimension, tag));
+    const MshEntity group = entity != entities.end() ? entity->second : MshEntity{0, tag};
+    state.assembler.setGroup(info.dimension, group.physical, group.geometric);
+    const bool keep = info.role == MshElementRole::kSurface || info.role == MshElementRole::kVolume;
+    if (!keep && state.binary) {
+      for (std::uint64_t e = 0; e < inBlock; ++e) state.assembler.countElement(type);
+      cursor.advance(8 * perElement * inBlock);
+      continue;
+    }
+    if (state.binary && type == 2) {
+      readBinaryElements<3>(state, type, inBlock);
+      continue;
+    }
+    if (state.binary && type == 3) {
+      readBinaryElements<4>(state, type, inBlock);
+      continue;
+    }
+    for (std::uint64_t e = 0; e < inBlock; ++e) {
+      const char* at = values.here();
+      if (state.binary) {
+        cursor.copyRaw(record, perElement);
+      } else {
+        for (std::uint64_t k = 0; k < perElement; ++k)
+          record[k] = cursor.readCount("an element's tag or node");
+      }
+      if (!keep) {
+        state.assembler.countElement(type);
+        continue;
+      }
+      for (int n = 0; n < info.nodeCount; ++n) {
+        nodeIndex[n] = nodes.find(record[n + 1]);
+        if (nodeIndex[n] == kNoVertex) failMissingNode(state, at, record[0], type, record[n + 1]);
+      }
+      state.assembler.addElement(type, nodeIndex);
+    }
+  }
+  if (read != count)
+    cursor.failAt(headerAt, fmt::format("the $Elements header declares {} elements, but its blocks hold {}",
+                                        count, read));
+  cursor.expectToken("$EndElements", fmt::format("after the {} elements $Elements declares", count).c_str());
+}
+
+}  // namespace lancer

@@ -1,0 +1,79 @@
+#include "lancer/mesh/msh_cursor.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace lancer {
+namespace {
+
+// What the user sees of a bad token: at most 32 printable characters.
+std::string quoteToken(std::string_view token) {
+  std::string shown;
+  for (char c : token.substr(0, 32)) {
+    const auto u = static_cast<unsigned char>(c);
+    shown += (u >= 32 && u < 127) ? c : '?';
+  }
+  if (token.size() > 32) shown += "...";
+  return "'" + shown + "'";
+}
+
+}  // namespace
+
+SourceLocation MshCursor::locate(const char* at) const {
+  at = std::clamp(at, begin_, end_);
+  SourceLocation location{file_};
+  if (binaryLocations_) {
+    location.byteOffset = at - begin_;
+    return location;
+  }
+  // Lines are counted only when an error is reported, so the parser never tracks them.
+  location.line = 1 + std::count(begin_, at, '\n');
+  const char* lineStart = at;
+  while (lineStart > begin_ && lineStart[-1] != '\n') --lineStart;
+  location.column = 1 + (at - lineStart);
+  return location;
+}
+
+void MshCursor::failAt(const char* at, const std::string& message) const {
+  throw InputError(locate(at), message);
+}
+
+void MshCursor::failFile(const std::string& message) const {
+  throw InputError(SourceLocation{file_}, message);
+}
+
+void MshCursor::expectToken(std::string_view expected, const char* context) {
+  skipWhitespace();
+  const char* start = pos_;
+  const std::string_view found = token();
+  if (found == expected) return;
+  if (found.empty())
+    failAt(start, fmt::format("expected {} {}, found the end of the file (the file looks truncated)",
+                              expected, context));
+  failAt(start, fmt::format("expected {} {}, found {}", expected, context, quoteToken(found)));
+}
+
+void MshCursor::failNumber(const char* what, bool outOfRange, const char* kind) const {
+  MshCursor copy = *this;
+  copy.skipWhitespace();
+  const char* start = copy.pos_;
+  const std::string_view found = copy.token();
+  if (found.empty())
+    failAt(start,
+           fmt::format("expected {} ({}), found the end of the file (the file looks truncated)", what, kind));
+  if (outOfRange) failAt(start, fmt::format("{} {} is out of range", what, quoteToken(found)));
+  failAt(start, fmt::format("expected {} ({}), found {}", what, kind, quoteToken(found)));
+}
+
+void MshCursor::failTooFew(std::uint64_t count, std::uint64_t itemBytes, const char* what) const {
+  if (count == 1)
+    fail(fmt::format("{} needs {} bytes, but only {} remain (the file looks truncated)", what, itemBytes,
+                     remaining()));
+  fail(
+      fmt::format("{} declares {} entries of at least {} bytes each, but only {} bytes remain in the file "
+                  "(truncated file or a corrupt count)",
+                  what, count, itemBytes, remaining()));
+}
+
+}  // namespace lancer

@@ -1,0 +1,211 @@
+#include "lancer/mesh/msh_mesh_assembler.hpp"
+
+#include "lancer/mesh/msh_huge_pages.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lancer {
+namespace {
+
+// Twice the area of a face, in double from the float positions (the vector area of a quad's diagonals).
+double twiceArea(const std::vector<Vec3>& p, const MeshFace& face) {
+  const Vec3d a = toDouble(p[face.vertex[0]]);
+  const Vec3d b = toDouble(p[face.vertex[1]]);
+  const Vec3d c = toDouble(p[face.vertex[2]]);
+  if (!face.isQuad()) return length(cross(b - a, c - a));
+  const Vec3d d = toDouble(p[face.vertex[3]]);
+  return length(cross(c - a, d - b));
+}
+
+double longestEdgeSquared(const std::vector<Vec3>& p, const MeshFace& face) {
+  double longest = 0;
+  const int n = face.cornerCount();
+  for (int i = 0; i < n; ++i) {
+    const Vec3d e = toDouble(p[face.vertex[(i + 1) % n]]) - toDouble(p[face.vertex[i]]);
+    longest = std::max(longest, dot(e, e));
+  }
+  return longest;
+}
+
+}  // namespace
+
+void MshMeshAssembler::reserveFaces(std::size_t count) {
+  faces_.reserve(count);
+  facePhysical_.reserve(count);
+  faceEntity_.reserve(count);
+  faceEdgeMask_.reserve(count);
+  adviseHugePages(faces_);
+  adviseHugePages(facePhysical_);
+  adviseHugePages(faceEntity_);
+}
+
+void MshMeshAssembler::changeGroup(int dimension, std::int32_t physical, std::int32_t entity) {
+  dimension_ = dimension;
+  physical_ = physical;
+  entity_ = entity;
+  if (physical != 0 && dimension >= 2) physicalsSeen_.insert({dimension, physical});
+  groups_.push_back({physical, entity});
+  group_ = static_cast<std::uint32_t>(groups_.size() - 1);
+}
+
+// Mid-edge nodes split a 6-node triangle into four (corner triangles keep the two halves of the
+// original edges they touch; the centre triangle has no original edge).
+void MshMeshAssembler::addSplitTriangle(const std::uint32_t* corner, const std::uint32_t* mid) {
+  addTriangle(corner[0], mid[0], mid[2], 0b101);
+  addTriangle(mid[0], corner[1], mid[1], 0b011);
+  addTriangle(mid[2], mid[1], corner[2], 0b110);
+  addTriangle(mid[0], mid[1], mid[2], 0);
+}
+
+// A 9- or 8-node quad becomes four quads through its edge nodes and centre.
+void MshMeshAssembler::addSplitQuad(const std::uint32_t* corner, const std::uint32_t* mid,
+                                    std::uint32_t centre) {
+  addQuad(corner[0], mid[0], centre, mid[3], 0b1001);
+  addQuad(mid[0], corner[1], mid[1], centre, 0b0011);
+  addQuad(centre, mid[1], corner[2], mid[2], 0b0110);
+  addQuad(mid[3], centre, mid[2], corner[3], 0b1100);
+}
+
+// The centre of an 8-node (serendipity) quad: its shape functions there are -1/4 per corner and 1/2
+// per edge node.
+Vec3d MshMeshAssembler::serendipityCentre(const std::uint32_t* corner, const std::uint32_t* mid) const {
+  const auto& p = nodes.coords();
+  Vec3d centre{};
+  for (int i = 0; i < 4; ++i) centre += p[corner[i]] * -0.25 + p[mid[i]] * 0.5;
+  return centre;
+}
+
+void MshMeshAssembler::addOtherElement(int type, const std::uint32_t* n) {
+  switch (type) {
+    case 9:
+      secondOrderSurfaceKeys_.push_back(mshFaceKey(n, 3));
+      addSplitTriangle(n, n + 3);
+      return;
+    case 10:
+      secondOrderSurfaceKeys_.push_back(mshFaceKey(n, 4));
+      addSplitQuad(n, n + 4, n[8]);
+      return;
+    case 16:
+      secondOrderSurfaceKeys_.push_back(mshFaceKey(n, 4));
+      addSplitQuad(n, n + 4, nodes.addDerived(serendipityCentre(n, n + 4)));
+      return;
+    default:
+      appendVolumeElementFaces(type, n, group_, volumeFaces_);
+      return;
+  }
+}
+
+void MshMeshAssembler::appendSkin(MeshSourceInfo& source) {
+  if (volumeFaces_.empty()) return;
+  std::vector<MshFaceKey> surfaceKeys = secondOrderSurfaceKeys_;
+  surfaceKeys.reserve(surfaceKeys.size() + faces_.size());
+  for (const MeshFace& face : faces_) surfaceKeys.push_back(mshFaceKey(face.vertex, face.cornerCount()));
+  std::sort(surfaceKeys.begin(), surfaceKeys.end());
+  std::uint64_t covered = 0;
+  const std::vector<std::uint32_t> skin = findSkinFaces(volumeFaces_, surfaceKeys, covered);
+  source.skinFaces = skin.size();
+  source.skinFacesCoveredBySurfaces = covered;
+  for (std::uint32_t index : skin) {
+    const MshVolumeFace& face = volumeFaces_[index];
+    physical_ = groups_[face.group].first;
+    entity_ = groups_[face.group].second;
+    if (face.mid[0] != kNoVertex && face.corner[3] == kNoVertex) {
+      addSplitTriangle(face.corner, face.mid);
+    } else if (face.mid[0] != kNoVertex) {
+      const std::uint32_t centre =
+          face.centre != kNoVertex ? face.centre : nodes.addDerived(serendipityCentre(face.corner, face.mid));
+      addSplitQuad(face.corner, face.mid, centre);
+    } else if (face.corner[3] == kNoVertex) {
+      addTriangle(face.corner[0], face.corner[1], face.corner[2], 0b111);
+    } else {
+      addQuad(face.corner[0], face.corner[1], face.corner[2], face.corner[3], kAllEdges);
+    }
+  }
+  volumeFaces_ = {};
+}
+
+Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> namedGroups) {
+  for (int type = 1; type <= kMaxMshElementType; ++type) {
+    const std::uint64_t count = countByType_[static_cast<std::size_t>(type)];
+    if (count == 0) continue;
+    source.elementsByType[type] = count;
+    const MshElementRole role = mshElementType(type).role;
+    if (role == MshElementRole::kUnrenderable) source.unrenderableByType[type] = count;
+    if (role == MshElementRole::kVolume) source.volumeElements += count;
+  }
+  appendSkin(source);
+
+  // Keep the nodes that faces use, in file order, recentred on their bounding box as float. The
+  // passes over nodes are sequential; only the marking and the face pass below read at random.
+  const auto& coords = nodes.coords();
+  std::vector<std::uint8_t> usedNode(coords.size(), 0);
+  for (const MeshFace& face : faces_)
+    for (int c = 0; c < face.cornerCount(); ++c) usedNode[face.vertex[c]] = 1;
+  std::vector<std::uint32_t> remap;
+  remap.reserve(coords.size());
+  adviseHugePages(remap);
+  Aabbd box;
+  std::uint32_t usedCount = 0;
+  for (std::size_t i = 0; i < coords.size(); ++i) {
+    remap.push_back(usedNode[i] ? usedCount : kNoVertex);
+    if (usedNode[i]) {
+      ++usedCount;
+      box.extend(coords[i]);
+    }
+  }
+  Mesh mesh;
+  mesh.origin = box.empty() ? Vec3d{} : box.center();
+  mesh.positions.reserve(usedCount);
+  adviseHugePages(mesh.positions);
+  for (std::size_t i = 0; i < coords.size(); ++i)
+    if (usedNode[i]) mesh.positions.push_back(toFloat(coords[i] - mesh.origin));
+
+  // Drop the faces that are degenerate as the renderer will see them (float positions): zero area up
+  // to rounding, i.e. a height below 1e-12 of the longest edge.
+  const bool identity = usedCount == coords.size();
+  const std::vector<Vec3>& positions = mesh.positions;
+  constexpr std::size_t kPrefetchDistance = 16;  // faces ahead: the position reads are random
+  std::size_t kept = 0;
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    if (f + kPrefetchDistance < faces_.size()) {
+      const MeshFace& ahead = faces_[f + kPrefetchDistance];
+      for (int c = 0; c < 3; ++c)
+        __builtin_prefetch(identity ? static_cast<const void*>(&positions[ahead.vertex[c]])
+                                    : static_cast<const void*>(&remap[ahead.vertex[c]]));
+    }
+    MeshFace face = faces_[f];
+    if (!identity)
+      for (int c = 0; c < face.cornerCount(); ++c) face.vertex[c] = remap[face.vertex[c]];
+    if (!(twiceArea(positions, face) > 1e-12 * longestEdgeSquared(positions, face))) continue;
+    faces_[kept] = face;
+    facePhysical_[kept] = facePhysical_[f];
+    faceEntity_[kept] = faceEntity_[f];
+    faceEdgeMask_[kept] = faceEdgeMask_[f];
+    ++kept;
+  }
+  source.degenerateFacesDropped = faces_.size() - kept;
+  faces_.resize(kept);
+  facePhysical_.resize(kept);
+  faceEntity_.resize(kept);
+  faceEdgeMask_.resize(kept);
+  mesh.faces = std::move(faces_);
+  mesh.facePhysicalTag = std::move(facePhysical_);
+  mesh.faceEntityTag = std::move(faceEntity_);
+  mesh.faceEdgeMask = std::move(faceEdgeMask_);
+
+  // Named groups first, then the unnamed physical tags that surface and volume elements carry.
+  std::set<std::pair<int, std::int32_t>> named;
+  for (const PhysicalGroup& group : namedGroups) named.insert({group.dimension, group.tag});
+  for (const auto& [dimension, tag] : physicalsSeen_) {
+    if (!named.count({dimension, tag})) namedGroups.push_back({dimension, tag, ""});
+  }
+  std::sort(namedGroups.begin(), namedGroups.end(), [](const PhysicalGroup& a, const PhysicalGroup& b) {
+    return a.dimension != b.dimension ? a.dimension < b.dimension : a.tag < b.tag;
+  });
+  mesh.physicalGroups = std::move(namedGroups);
+  mesh.source = std::move(source);
+  return mesh;
+}
+
+}  // namespace lancer

@@ -1,0 +1,85 @@
+// Builds a Mesh from the nodes and elements a .msh parser reads: splits second-order faces, turns
+// volume elements into their skin, drops degenerate faces, keeps only the nodes faces use and
+// recentres them on the bounding-box centre as float. Independent of the MSH version.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "lancer/mesh/mesh.hpp"
+#include "lancer/mesh/msh_element_types.hpp"
+#include "lancer/mesh/msh_node_table.hpp"
+#include "lancer/mesh/msh_volume_skin.hpp"
+
+namespace lancer {
+
+class MshMeshAssembler {
+ public:
+  MshNodeTable nodes;
+
+  void reserveFaces(std::size_t count);
+  // The physical and elementary tags of the elements that follow; dimension is the elements'.
+  void setGroup(int dimension, std::int32_t physical, std::int32_t entity) {
+    if (physical == physical_ && entity == entity_ && dimension == dimension_) return;
+    changeGroup(dimension, physical, entity);
+  }
+  // nodeIndex: the element's nodes as indices into `nodes`, mshElementType(type).nodeCount of them.
+  void addElement(int type, const std::uint32_t* nodeIndex) {
+    ++countByType_[static_cast<std::size_t>(type)];
+    switch (type) {
+      case 2:
+        addTriangle(nodeIndex[0], nodeIndex[1], nodeIndex[2], 0b111);
+        break;
+      case 3:
+        addQuad(nodeIndex[0], nodeIndex[1], nodeIndex[2], nodeIndex[3], kAllEdges);
+        break;
+      default:
+        addOtherElement(type, nodeIndex);
+        break;
+    }
+  }
+  // Counts an element that is not read node by node (the caller skipped its nodes).
+  void countElement(int type) { ++countByType_[static_cast<std::size_t>(type)]; }
+
+  // partitions: number of mesh partitions the file declares (0 when not partitioned).
+  Mesh finish(MeshSourceInfo source, std::vector<PhysicalGroup> namedGroups);
+
+ private:
+  void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint8_t edgeMask) {
+    faces_.push_back(MeshFace{{a, b, c, kNoVertex}});
+    facePhysical_.push_back(physical_);
+    faceEntity_.push_back(entity_);
+    faceEdgeMask_.push_back(edgeMask);
+  }
+  void addQuad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, std::uint8_t edgeMask) {
+    faces_.push_back(MeshFace{{a, b, c, d}});
+    facePhysical_.push_back(physical_);
+    faceEntity_.push_back(entity_);
+    faceEdgeMask_.push_back(edgeMask);
+  }
+  void addOtherElement(int type, const std::uint32_t* nodeIndex);
+  Vec3d serendipityCentre(const std::uint32_t* corner, const std::uint32_t* mid) const;
+  void addSplitTriangle(const std::uint32_t* corner, const std::uint32_t* mid);
+  void addSplitQuad(const std::uint32_t* corner, const std::uint32_t* mid, std::uint32_t centre);
+  void changeGroup(int dimension, std::int32_t physical, std::int32_t entity);
+  void appendSkin(MeshSourceInfo& source);
+
+  std::vector<MeshFace> faces_;
+  std::vector<std::int32_t> facePhysical_;
+  std::vector<std::int32_t> faceEntity_;
+  std::vector<std::uint8_t> faceEdgeMask_;
+  std::vector<MshVolumeFace> volumeFaces_;
+  std::vector<MshFaceKey> secondOrderSurfaceKeys_;  // corners of split surface elements, for the skin
+  std::vector<std::pair<std::int32_t, std::int32_t>> groups_;  // (physical, entity) of volume faces
+  std::set<std::pair<int, std::int32_t>> physicalsSeen_;       // (dimension, physical tag)
+  std::array<std::uint64_t, kMaxMshElementType + 1> countByType_{};
+  int dimension_ = -1;
+  std::int32_t physical_ = 0;
+  std::int32_t entity_ = 0;
+  std::uint32_t group_ = 0;
+};
+
+}  // namespace lancer

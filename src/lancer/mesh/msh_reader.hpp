@@ -1,0 +1,19 @@
+// Reads gmsh .msh files (MSH 2.2, 4.0 and 4.1; ASCII and binary) into a Mesh: surface elements as
+// faces, volume elements as their skin. Bad input throws InputError pointing into the file.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "lancer/mesh/mesh.hpp"
+#include "lancer/util/input_error.hpp"
+
+namespace lancer {
+
+// Memory-maps and reads the file; source.loadSeconds holds the time it took.
+Mesh readMsh(const std::string& path);
+
+// The same from bytes in memory (tests, fuzzing); nameForErrors is the file name errors show.
+Mesh readMshFromMemory(std::span<const char> bytes, const std::string& nameForErrors);
+
+}  // namespace lancer

@@ -1,0 +1,61 @@
+// Internal to the .msh reader: the state shared by the section parsers and the parsers of the
+// sections whose layout depends on the MSH version (msh2_sections.cpp, msh4_sections.cpp).
+#pragma once
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "lancer/mesh/mesh.hpp"
+#include "lancer/mesh/msh_cursor.hpp"
+#include "lancer/mesh/msh_mesh_assembler.hpp"
+
+namespace lancer {
+
+// What an MSH 4 element block's entity contributes to its faces.
+struct MshEntity {
+  std::int32_t physical = 0;   // first physical group, 0 if none
+  std::int32_t geometric = 0;  // the model entity's tag (the parent, for a partitioned entity)
+};
+
+struct MshReadState {
+  MshReadState(MshCursor& c, MshMeshAssembler& a, MeshSourceInfo& s) : cursor(c), assembler(a), source(s) {}
+
+  MshCursor& cursor;
+  MshMeshAssembler& assembler;
+  MeshSourceInfo& source;
+  int major = 0;  // 2 or 4
+  int minor = 0;  // 4.0 or 4.1
+  bool binary = false;
+  std::vector<PhysicalGroup> namedGroups;
+  std::unordered_map<std::uint64_t, MshEntity> entities;             // key: mshEntityKey(dim, tag)
+  std::unordered_map<std::uint64_t, MshEntity> partitionedEntities;  // $PartitionedEntities
+  bool nodesRead = false;
+  bool elementsRead = false;
+};
+
+inline std::uint64_t mshEntityKey(int dimension, std::int32_t tag) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(dimension)) << 32) |
+         static_cast<std::uint32_t>(tag);
+}
+
+// Fewest bytes an ASCII number takes (one digit and one separator), for the count checks.
+inline constexpr std::uint64_t kMinTextNumberBytes = 2;
+
+void readMsh2Nodes(MshReadState& state);
+void readMsh2Elements(MshReadState& state);
+void readMsh4Entities(MshReadState& state, bool partitioned);
+void readMsh4Nodes(MshReadState& state);
+void readMsh4Elements(MshReadState& state);
+
+// Shared by both versions: builds the node lookup after $Nodes, refusing duplicated tags.
+void finishNodes(MshReadState& state, const char* sectionStart);
+// Refuses a non-finite coordinate; `at` is where the node's record starts.
+void checkFinite(const MshReadState& state, const Vec3d& p, std::uint64_t tag, const char* at);
+// The error for an element naming a node that $Nodes does not define.
+[[noreturn]] void failMissingNode(const MshReadState& state, const char* at, std::uint64_t elementTag,
+                                  int type, std::uint64_t nodeTag);
+// Refuses element types whose node count lancer does not know.
+MshElementType requireKnownType(const MshReadState& state, int type, const char* at);
+
+}  // namespace lancer

@@ -1,0 +1,128 @@
+#include "lancer/mesh/msh_volume_skin.hpp"
+
+#include <algorithm>
+
+namespace lancer {
+namespace {
+
+// Face tables in gmsh's reference-element node order ("Node ordering" in the gmsh manual), each
+// face listed counter-clockwise seen from outside. -1 ends a triangle.
+constexpr int kTetFaces[4][4] = {{0, 2, 1, -1}, {0, 1, 3, -1}, {0, 3, 2, -1}, {1, 2, 3, -1}};
+// Edge nodes of the 10-node tetrahedron's faces, in the same order (4: 0-1, 5: 1-2, 6: 2-0,
+// 7: 3-0, 8: 3-2, 9: 3-1).
+constexpr int kTet10FaceMids[4][3] = {{6, 5, 4}, {4, 9, 7}, {7, 8, 6}, {5, 8, 9}};
+constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                 {2, 3, 7, 6}, {0, 4, 7, 3}, {1, 2, 6, 5}};
+// Edge nodes of the 20- and 27-node hexahedron's faces, in the faces' corner order (8: 0-1, 9: 0-3,
+// 10: 0-4, 11: 1-2, 12: 1-5, 13: 2-3, 14: 2-6, 15: 3-7, 16: 4-5, 17: 4-7, 18: 5-6, 19: 6-7), and the
+// 27-node hexahedron's face nodes (20-25).
+constexpr int kHex20FaceMids[6][4] = {{9, 13, 11, 8},   {16, 18, 19, 17}, {8, 12, 16, 10},
+                                      {13, 15, 19, 14}, {10, 17, 15, 9},  {11, 14, 18, 12}};
+constexpr int kHex27FaceCentres[6] = {20, 25, 21, 24, 22, 23};
+constexpr int kPrismFaces[5][4] = {{0, 2, 1, -1}, {3, 4, 5, -1}, {0, 1, 4, 3}, {0, 3, 5, 2}, {1, 2, 5, 4}};
+constexpr int kPyramidFaces[5][4] = {
+    {0, 3, 2, 1}, {0, 1, 4, -1}, {1, 2, 4, -1}, {2, 3, 4, -1}, {3, 0, 4, -1}};
+
+template <std::size_t N>
+void appendFaces(const int (&table)[N][4], const std::uint32_t* nodes, std::uint32_t group,
+                 std::vector<MshVolumeFace>& faces) {
+  for (const auto& local : table) {
+    MshVolumeFace face{{kNoVertex, kNoVertex, kNoVertex, kNoVertex},
+                       {kNoVertex, kNoVertex, kNoVertex, kNoVertex},
+                       kNoVertex,
+                       group};
+    for (int c = 0; c < 4 && local[c] >= 0; ++c) face.corner[c] = nodes[local[c]];
+    faces.push_back(face);
+  }
+}
+
+struct KeyedFace {
+  MshFaceKey key;
+  std::uint32_t face;
+  bool operator<(const KeyedFace& other) const { return key < other.key; }
+};
+
+}  // namespace
+
+MshFaceKey mshFaceKey(const std::uint32_t* corners, int cornerCount) {
+  MshFaceKey key{kNoVertex, kNoVertex, kNoVertex, kNoVertex};
+  // Insertion sort of at most four values (std::sort trips a false -Warray-bounds in g++ 12 here).
+  for (int i = 0; i < cornerCount; ++i) {
+    std::uint32_t value = corners[i];
+    int j = i;
+    for (; j > 0 && key[static_cast<std::size_t>(j - 1)] > value; --j)
+      key[static_cast<std::size_t>(j)] = key[static_cast<std::size_t>(j - 1)];
+    key[static_cast<std::size_t>(j)] = value;
+  }
+  return key;
+}
+
+void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_t group,
+                              std::vector<MshVolumeFace>& faces) {
+  switch (type) {
+    case 4:
+      appendFaces(kTetFaces, nodes, group, faces);
+      break;
+    case 11:
+      appendFaces(kTetFaces, nodes, group, faces);
+      for (int f = 0; f < 4; ++f) {
+        MshVolumeFace& face = faces[faces.size() - 4 + static_cast<std::size_t>(f)];
+        for (int e = 0; e < 3; ++e) face.mid[e] = nodes[kTet10FaceMids[f][e]];
+      }
+      break;
+    case 5:
+      appendFaces(kHexFaces, nodes, group, faces);
+      break;
+    case 12:
+    case 17:
+      appendFaces(kHexFaces, nodes, group, faces);
+      for (int f = 0; f < 6; ++f) {
+        MshVolumeFace& face = faces[faces.size() - 6 + static_cast<std::size_t>(f)];
+        for (int e = 0; e < 4; ++e) face.mid[e] = nodes[kHex20FaceMids[f][e]];
+        if (type == 12) face.centre = nodes[kHex27FaceCentres[f]];
+      }
+      break;
+    case 6:
+    case 13:
+    case 18:
+      appendFaces(kPrismFaces, nodes, group, faces);
+      break;
+    case 7:
+    case 14:
+    case 19:
+      appendFaces(kPyramidFaces, nodes, group, faces);
+      break;
+    default:
+      break;
+  }
+}
+
+std::vector<std::uint32_t> findSkinFaces(std::span<const MshVolumeFace> faces,
+                                         std::span<const MshFaceKey> surfaceKeys,
+                                         std::uint64_t& coveredBySurface) {
+  // Sorting the keys brings the two copies of every interior face together.
+  std::vector<KeyedFace> keyed(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const int corners = faces[i].corner[3] == kNoVertex ? 3 : 4;
+    keyed[i] = {mshFaceKey(faces[i].corner, corners), static_cast<std::uint32_t>(i)};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::uint32_t> skin;
+  coveredBySurface = 0;
+  for (std::size_t i = 0; i < keyed.size();) {
+    std::size_t j = i + 1;
+    while (j < keyed.size() && keyed[j].key == keyed[i].key) ++j;
+    if (j == i + 1) {
+      if (std::binary_search(surfaceKeys.begin(), surfaceKeys.end(), keyed[i].key)) {
+        ++coveredBySurface;
+      } else {
+        skin.push_back(keyed[i].face);
+      }
+    }
+    i = j;
+  }
+  std::sort(skin.begin(), skin.end());
+  return skin;
+}
+
+}  // namespace lancer

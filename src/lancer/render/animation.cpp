@@ -1,0 +1,92 @@
+#include "lancer/render/animation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+namespace lancer {
+
+double orbitAngleDegrees(const AnimationSettings& animation, int frame) {
+  const double turns = animation.degrees / 360.0;
+  const bool fullTurn = animation.degrees != 0 && std::abs(turns - std::round(turns)) < 1e-12;
+  const int steps = fullTurn ? animation.frames : std::max(animation.frames - 1, 1);
+  return animation.degrees * static_cast<double>(frame) / static_cast<double>(steps);
+}
+
+Vec3d rotateAbout(const Vec3d& p, const Vec3d& center, const Vec3d& axis, double degrees) {
+  const Vec3d k = normalize(axis);
+  const Vec3d v = p - center;
+  const double angle = degrees * std::numbers::pi / 180.0;
+  const double c = std::cos(angle), s = std::sin(angle);
+  return center + v * c + cross(k, v) * s + k * (dot(k, v) * (1 - c));
+}
+
+Vec3d orbitCenter(const AnimationSettings& animation, const Scene& scene) {
+  if (animation.center) return *animation.center;
+  return scene.origin + toDouble(scene.bounds.empty() ? Vec3{} : scene.bounds.center());
+}
+
+CameraSettings orbitCamera(const CameraSettings& camera, const AnimationSettings& animation, const Scene& scene,
+                           int imageWidth, int imageHeight, int frame) {
+  const Aabbd worldBounds{scene.origin + toDouble(scene.bounds.lower), scene.origin + toDouble(scene.bounds.upper)};
+  CameraSettings result = camera;
+  const Vec3d sceneCentre = worldBounds.empty() ? Vec3d{} : worldBounds.center();
+  const Vec3d position = camera.position.value_or(
+      defaultCameraPosition(worldBounds, camera.fovDegrees, static_cast<double>(imageWidth) / imageHeight));
+  const Vec3d lookAt = camera.lookAt.value_or(sceneCentre);
+  const Vec3d centre = orbitCenter(animation, scene);
+  const double degrees = orbitAngleDegrees(animation, frame);
+  result.position = rotateAbout(position, centre, animation.axis, degrees);
+  result.lookAt = rotateAbout(lookAt, centre, animation.axis, degrees);
+  result.up = rotateAbout(camera.up, Vec3d{}, animation.axis, degrees);
+  return result;
+}
+
+AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator, const SceneDescription& description,
+                               const AnimationSettings& animation, const RenderOptions& options,
+                               const std::function<void(int frame, const Image&)>& onFrame,
+                               const std::function<void(const AnimationProgress&)>& onProgress) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const RenderSettings& settings = description.render;
+  AnimationStats stats;
+  const bool lightOrbit = animation.orbitLight >= 0;
+  const SceneLight originalLight = lightOrbit ? scene.lights.at(static_cast<std::size_t>(animation.orbitLight))
+                                              : SceneLight{};
+  const Vec3d centre = orbitCenter(animation, scene);
+  for (int frame = 0; frame < animation.frames; ++frame) {
+    CameraSettings cameraSettings = description.camera;
+    if (lightOrbit) {
+      const Vec3d lightWorld = scene.origin + toDouble(originalLight.position);
+      scene.lights[static_cast<std::size_t>(animation.orbitLight)].position = scene.toSceneSpace(
+          rotateAbout(lightWorld, centre, animation.axis, orbitAngleDegrees(animation, frame)));
+    } else {
+      cameraSettings = orbitCamera(description.camera, animation, scene, settings.width, settings.height, frame);
+    }
+    const Camera camera(cameraSettings, scene.origin, scene.bounds, settings.width, settings.height);
+    RenderOptions frameOptions = options;
+    if (onProgress) {
+      frameOptions.onProgress = [&](const RenderProgress& progress) {
+        AnimationProgress p;
+        p.frame = frame;
+        p.frames = animation.frames;
+        p.frameProgress = progress;
+        p.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        onProgress(p);
+      };
+    }
+    RenderStats frameStats;
+    const Image image = renderImage(scene, accelerator, camera, settings, frameOptions, &frameStats);
+    stats.rays += frameStats.rays;
+    if (frameStats.cancelled || (options.cancel != nullptr && options.cancel->load())) {
+      stats.cancelled = true;
+      break;
+    }
+    onFrame(frame, image);
+  }
+  if (lightOrbit) scene.lights[static_cast<std::size_t>(animation.orbitLight)] = originalLight;
+  stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return stats;
+}
+
+}  // namespace lancer

@@ -1,0 +1,426 @@
+#include "lancer/scene/scene_loader.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "lancer/scene/suggest.hpp"
+#include "lancer/scene/toml_table_reader.hpp"
+
+namespace lancer {
+namespace {
+
+constexpr std::array<std::string_view, 7> kSceneTables = {"render",   "camera", "ambient",  "light",
+                                                          "material", "mesh",   "animation"};
+constexpr std::array<std::string_view, 9> kRenderKeys = {
+    "width", "height", "samples", "max_depth", "sampler", "shading", "background", "output", "srgb"};
+constexpr std::array<std::string_view, 6> kCameraKeys = {"projection", "position", "look_at",
+                                                         "up",         "fov",      "view_height"};
+constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
+constexpr std::array<std::string_view, 3> kLightKeys = {"position", "intensity", "attenuation"};
+constexpr std::array<std::string_view, 9> kMaterialKeys = {
+    "ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "fresnel", "absorption"};
+constexpr std::array<std::string_view, 8> kMeshKeys = {"file",      "material", "shading", "smooth_angle",
+                                                       "translate", "rotate",   "scale",   "groups"};
+constexpr std::array<std::string_view, 6> kAnimationKeys = {"frames", "fps",    "orbit",
+                                                            "axis",   "center", "degrees"};
+
+constexpr std::array<std::string_view, 3> kShadingNames = {"flat", "gouraud", "phong"};
+constexpr std::array<std::string_view, 2> kProjectionNames = {"perspective", "orthographic"};
+constexpr std::array<std::string_view, 3> kSamplerNames = {"regular", "stratified", "adaptive"};
+
+constexpr std::int64_t kMaxImageSide = 32768;
+constexpr std::int64_t kMaxSamples = 1024;
+constexpr std::int64_t kMaxDepth = 64;
+constexpr std::int64_t kMaxFrames = 10000;
+
+// State shared by the section readers: the file for messages and the folder paths are relative to.
+struct SceneFile {
+  std::string path;
+  std::filesystem::path folder;
+
+  std::string resolve(const std::string& relative) const {
+    const std::filesystem::path value(relative);
+    if (value.is_absolute()) return relative;
+    return (folder / value).lexically_normal().string();
+  }
+  [[noreturn]] void fail(const toml::node& node, const std::string& message) const {
+    throw InputError(locate(path, node.source()), message);
+  }
+};
+
+bool isPerfectSquare(std::int64_t n) {
+  const auto root = static_cast<std::int64_t>(std::llround(std::sqrt(static_cast<double>(n))));
+  return root * root == n;
+}
+
+std::string formatVector(const Vec3d& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }
+
+// `[render]`, `[camera]`, ... : a table if present, nullptr if absent.
+const toml::table* sectionTable(const SceneFile& file, const toml::table& root, std::string_view name) {
+  const toml::node* node = root.get(name);
+  if (!node) return nullptr;
+  if (const auto* table = node->as_table()) return table;
+  file.fail(*node,
+            fmt::format("{} must be a table written [{}], found {}", name, name, describeValue(*node)));
+}
+
+// `[[light]]`, `[[mesh]]`: the elements of an array of tables (empty if absent).
+std::vector<const toml::table*> tableArray(const SceneFile& file, const toml::table& root,
+                                           std::string_view name) {
+  std::vector<const toml::table*> tables;
+  const toml::node* node = root.get(name);
+  if (!node) return tables;
+  const auto* array = node->as_array();
+  if (!array)
+    file.fail(*node, fmt::format("{} must be an array of tables: write [[{}]] for each one, not {}", name,
+                                 name, node->is_table() ? fmt::format("[{}]", name) : describeValue(*node)));
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const toml::node& element = *array->get(i);
+    if (!element.is_table())
+      file.fail(element, fmt::format("{}[{}] must be a table written [[{}]], found {}", name, i, name,
+                                     describeValue(element)));
+    tables.push_back(element.as_table());
+  }
+  return tables;
+}
+
+void readBackground(const TomlTableReader& reader, RenderSettings& render) {
+  const toml::node* node = reader.find("background");
+  if (!node) return;
+  if (const auto* text = node->as_string()) {
+    constexpr std::array<std::string_view, 1> kWords = {"transparent"};
+    if (text->get() != kWords[0])
+      reader.fail(*node, fmt::format("render.background must be [r, g, b] or \"transparent\", found \"{}\"{}",
+                                     text->get(), didYouMean(text->get(), kWords)));
+    render.transparentBackground = true;
+    return;
+  }
+  if (!node->is_array())
+    reader.fail(*node, fmt::format("render.background must be [r, g, b] or \"transparent\", found {}",
+                                   describeValue(*node)));
+  render.background = toFloat(*reader.vector("background", Triple::Rgb, NumberRange::atLeast(0)));
+}
+
+RenderSettings readRender(const SceneFile& file, const toml::table& table) {
+  const TomlTableReader reader(table, "render", file.path, kRenderKeys);
+  RenderSettings render;
+  if (auto width = reader.integer("width", 1, kMaxImageSide)) render.width = static_cast<int>(*width);
+  if (auto height = reader.integer("height", 1, kMaxImageSide)) render.height = static_cast<int>(*height);
+  if (auto sampler = reader.choice("sampler", kSamplerNames))
+    render.sampler = static_cast<SamplerKind>(*sampler);
+  if (auto samples = reader.integer("samples", 1, kMaxSamples)) {
+    // The regular and the stratified sampler both lay an n x n grid over the pixel.
+    if (render.sampler != SamplerKind::Adaptive && !isPerfectSquare(*samples)) {
+      const auto below = static_cast<std::int64_t>(std::floor(std::sqrt(static_cast<double>(*samples))));
+      reader.fail(
+          *reader.find("samples"),
+          fmt::format("render.samples must be a perfect square (n x n sub-pixel grid) for the {} sampler, "
+                      "found {}; use {} or {}, or sampler = \"adaptive\"",
+                      kSamplerNames[static_cast<std::size_t>(render.sampler)], *samples, below * below,
+                      (below + 1) * (below + 1)));
+    }
+    render.samples = static_cast<int>(*samples);
+  }
+  if (auto depth = reader.integer("max_depth", 0, kMaxDepth)) render.maxDepth = static_cast<int>(*depth);
+  if (auto shading = reader.choice("shading", kShadingNames))
+    render.shading = static_cast<ShadingMode>(*shading);
+  readBackground(reader, render);
+  if (auto output = reader.nonEmptyString("output")) render.output = file.resolve(*output);
+  if (auto srgb = reader.boolean("srgb")) render.srgb = *srgb;
+  return render;
+}
+
+// A camera needs a direction (position != look_at) and an up that is not along it.
+void checkCameraFrame(const TomlTableReader& reader, const CameraSettings& camera) {
+  const Vec3d up = camera.up;
+  if (length(up) == 0) reader.fail(*reader.find("up"), "camera.up must not be [0, 0, 0]; use e.g. [0, 1, 0]");
+  if (!camera.position || !camera.lookAt) return;
+  const Vec3d view = *camera.lookAt - *camera.position;
+  if (length(view) == 0)
+    reader.fail(*reader.find("look_at"),
+                fmt::format("camera.look_at is the same point as camera.position {}; the camera needs a "
+                            "direction to look in",
+                            formatVector(*camera.position)));
+  constexpr double kMinSine = 1e-6;
+  if (!reader.find("up") || length(cross(normalize(up), normalize(view))) >= kMinSine) return;
+  // Offer the coordinate axis least aligned with the line of sight.
+  const Vec3d direction = abs(normalize(view));
+  const Vec3d suggestion = direction.y <= direction.x && direction.y <= direction.z ? Vec3d{0, 1, 0}
+                           : direction.z <= direction.x                             ? Vec3d{0, 0, 1}
+                                                                                    : Vec3d{1, 0, 0};
+  reader.fail(
+      *reader.find("up"),
+      fmt::format("camera.up {} is parallel to the view direction (look_at - position = {}); choose an up "
+                  "across the line of sight, e.g. up = {}",
+                  formatVector(up), formatVector(view), formatVector(suggestion)));
+}
+
+CameraSettings readCamera(const SceneFile& file, const toml::table& table) {
+  const TomlTableReader reader(table, "camera", file.path, kCameraKeys);
+  CameraSettings camera;
+  if (auto projection = reader.choice("projection", kProjectionNames))
+    camera.projection = static_cast<Projection>(*projection);
+  camera.position = reader.vector("position", Triple::Xyz);
+  camera.lookAt = reader.vector("look_at", Triple::Xyz);
+  if (auto up = reader.vector("up", Triple::Xyz)) camera.up = *up;
+  if (auto fov = reader.number("fov", NumberRange::strictlyBetween(0, 180))) camera.fovDegrees = *fov;
+  camera.viewHeight = reader.number("view_height", NumberRange::above(0));
+  checkCameraFrame(reader, camera);
+  return camera;
+}
+
+PointLight readLight(const SceneFile& file, const toml::table& table, std::size_t index) {
+  const TomlTableReader reader(table, fmt::format("light[{}]", index), file.path, kLightKeys);
+  PointLight light;
+  const std::optional<Vec3d> position = reader.vector("position", Triple::Xyz);
+  if (!position) reader.failMissing("position", "position = [x, y, z]");
+  light.position = *position;
+  if (auto intensity = reader.vector("intensity", Triple::Rgb, NumberRange::atLeast(0)))
+    light.intensity = toFloat(*intensity);
+  if (auto attenuation = reader.vector("attenuation", Triple::Xyz, NumberRange::atLeast(0))) {
+    if (*attenuation == Vec3d{0, 0, 0})
+      reader.fail(
+          *reader.find("attenuation"),
+          fmt::format("{} must not be [0, 0, 0]: att(d) = 1 / (c + l d + q d^2) would divide by zero; "
+                      "use [1, 0, 0] for no attenuation",
+                      reader.qualified("attenuation")));
+    light.attenuation = toFloat(*attenuation);
+  }
+  return light;
+}
+
+Material readMaterial(const SceneFile& file, const toml::table& table, const std::string& name) {
+  const TomlTableReader reader(table, fmt::format("material.{}", name), file.path, kMaterialKeys);
+  const NumberRange unit = NumberRange::between(0, 1);
+  Material material = defaultMaterial();
+  material.name = name;
+  if (auto ka = reader.vector("ka", Triple::Rgb, unit)) material.ka = toFloat(*ka);
+  if (auto kd = reader.vector("kd", Triple::Rgb, unit)) material.kd = toFloat(*kd);
+  if (auto ks = reader.vector("ks", Triple::Rgb, unit)) material.ks = toFloat(*ks);
+  if (auto shininess = reader.number("shininess", NumberRange::atLeast(0)))
+    material.shininess = static_cast<float>(*shininess);
+  if (auto reflectivity = reader.numberOrVector("reflectivity", Triple::Rgb, unit))
+    material.reflectivity = toFloat(*reflectivity);
+  if (auto transparency = reader.number("transparency", unit))
+    material.transparency = static_cast<float>(*transparency);
+  if (auto ior = reader.number("ior", NumberRange::above(0))) material.ior = static_cast<float>(*ior);
+  if (auto fresnel = reader.boolean("fresnel")) material.fresnel = *fresnel;
+  if (auto absorption = reader.vector("absorption", Triple::Rgb, NumberRange::atLeast(0)))
+    material.absorption = toFloat(*absorption);
+  return material;
+}
+
+// materials[0] is "default" (the built-in one unless the file defines its own); then the file's
+// materials in the order they appear.
+std::vector<Material> readMaterials(const SceneFile& file, const toml::table& root) {
+  std::vector<Material> materials = {defaultMaterial()};
+  const toml::table* section = sectionTable(file, root, "material");
+  if (!section) return materials;
+  std::vector<std::pair<const toml::key*, const toml::node*>> entries;
+  for (const auto& [key, value] : *section) entries.emplace_back(&key, &value);
+  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+    const toml::source_position &pa = a.first->source().begin, &pb = b.first->source().begin;
+    return pa.line < pb.line || (pa.line == pb.line && pa.column < pb.column);
+  });
+  for (const auto& [key, value] : entries) {
+    const auto* table = value->as_table();
+    if (!table)
+      file.fail(*value,
+                fmt::format("material.{} must be a table of material keys (ka, kd, ks, shininess, ...), "
+                            "found {}; each material is a section [material.NAME]",
+                            key->str(), describeValue(*value)));
+    Material material = readMaterial(file, *table, std::string(key->str()));
+    if (material.name == "default")
+      materials[0] = std::move(material);
+    else
+      materials.push_back(std::move(material));
+  }
+  return materials;
+}
+
+int materialIndex(const SceneFile& file, const toml::node& node, const std::string& what,
+                  const std::vector<Material>& materials) {
+  const auto* text = node.as_string();
+  if (!text)
+    file.fail(node,
+              fmt::format("{} must be a material name (a string), found {}", what, describeValue(node)));
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    if (materials[i].name == text->get()) return static_cast<int>(i);
+    names.push_back(materials[i].name);
+  }
+  std::string defined;
+  for (const std::string& name : names) defined += (defined.empty() ? "" : ", ") + name;
+  file.fail(node, fmt::format("{} names material '{}', which is not defined{}; defined materials: {}", what,
+                              text->get(), didYouMean(text->get(), names), defined));
+}
+
+std::vector<GroupMaterial> readGroupMaterials(const SceneFile& file, const TomlTableReader& mesh,
+                                              const std::vector<Material>& materials) {
+  std::vector<GroupMaterial> groups;
+  const toml::node* node = mesh.find("groups");
+  if (!node) return groups;
+  const auto* table = node->as_table();
+  if (!table)
+    mesh.fail(*node, fmt::format("{} must be a table of group = \"material\", e.g. {{ Floor = \"matte\", 7 = "
+                                 "\"glass\" }}, found {}",
+                                 mesh.qualified("groups"), describeValue(*node)));
+  for (const auto& [key, value] : *table) {
+    const SourceLocation where = locate(file.path, key.source());
+    if (key.str().empty())
+      throw InputError(where, fmt::format("{} has an empty group name; use a physical group's name or tag",
+                                          mesh.qualified("groups")));
+    const std::string what = fmt::format("{}.{}", mesh.qualified("groups"), key.str());
+    groups.push_back(
+        GroupMaterial{std::string(key.str()), materialIndex(file, value, what, materials), where});
+  }
+  std::sort(groups.begin(), groups.end(), [](const GroupMaterial& a, const GroupMaterial& b) {
+    return a.where.line < b.where.line || (a.where.line == b.where.line && a.where.column < b.where.column);
+  });
+  return groups;
+}
+
+MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size_t index,
+                      const std::vector<Material>& materials) {
+  const TomlTableReader reader(table, fmt::format("mesh[{}]", index), file.path, kMeshKeys);
+  MeshInstance mesh;
+  mesh.where = reader.location(table);
+  const std::optional<std::string> path = reader.nonEmptyString("file");
+  if (!path) reader.failMissing("file", "file = \"part.msh\" (a gmsh mesh, relative to the scene file)");
+  mesh.file = file.resolve(*path);
+  if (const toml::node* material = reader.find("material"))
+    mesh.material = materialIndex(file, *material, reader.qualified("material"), materials);
+  if (auto shading = reader.choice("shading", kShadingNames))
+    mesh.shading = static_cast<ShadingMode>(*shading);
+  if (auto angle = reader.number("smooth_angle", NumberRange::between(0, 180)))
+    mesh.smoothAngleDegrees = static_cast<float>(*angle);
+  if (auto translate = reader.vector("translate", Triple::Xyz)) mesh.translate = *translate;
+  if (auto rotate = reader.vector("rotate", Triple::Xyz)) mesh.rotateDegrees = *rotate;
+  if (auto scale = reader.numberOrVector("scale", Triple::Xyz, NumberRange::nonZeroNumber()))
+    mesh.scale = *scale;
+  mesh.groupMaterials = readGroupMaterials(file, reader, materials);
+  return mesh;
+}
+
+// K of "light:K", K written in decimal digits only.
+std::optional<int> orbitLightIndex(std::string_view text) {
+  constexpr std::string_view kPrefix = "light:";
+  if (!text.starts_with(kPrefix)) return std::nullopt;
+  const std::string_view digits = text.substr(kPrefix.size());
+  const char* last = digits.data() + digits.size();
+  int index = 0;
+  const auto [end, error] = std::from_chars(digits.data(), last, index);
+  if (digits.empty() || digits.front() == '-' || error != std::errc() || end != last) return std::nullopt;
+  return index;
+}
+
+// "camera" -> -1, "light:K" -> K, checked against the number of [[light]] tables.
+int readOrbit(const TomlTableReader& reader, std::size_t lightCount) {
+  const toml::node* node = reader.find("orbit");
+  const std::string text = *reader.string("orbit");
+  if (text == "camera") return -1;
+  const std::optional<int> index = orbitLightIndex(text);
+  if (!index)
+    reader.fail(*node,
+                fmt::format("animation.orbit must be \"camera\" or \"light:K\" (K the index of a [[light]], "
+                            "from 0), found \"{}\"",
+                            text));
+  if (static_cast<std::size_t>(*index) >= lightCount)
+    reader.fail(*node, fmt::format("animation.orbit names light {}, but the scene has {}", *index,
+                                   lightCount == 0   ? std::string("no [[light]]")
+                                   : lightCount == 1 ? std::string("1 light (use \"light:0\")")
+                                                     : fmt::format("{} lights (light:0 to light:{})",
+                                                                   lightCount, lightCount - 1)));
+  return *index;
+}
+
+AnimationSettings readAnimation(const SceneFile& file, const toml::table& table, std::size_t lightCount) {
+  const TomlTableReader reader(table, "animation", file.path, kAnimationKeys);
+  AnimationSettings animation;
+  if (auto frames = reader.integer("frames", 1, kMaxFrames)) animation.frames = static_cast<int>(*frames);
+  if (auto fps = reader.number("fps", NumberRange::above(0))) animation.fps = *fps;
+  if (reader.find("orbit")) animation.orbitLight = readOrbit(reader, lightCount);
+  if (auto axis = reader.vector("axis", Triple::Xyz)) {
+    if (length(*axis) == 0)
+      reader.fail(*reader.find("axis"),
+                  "animation.axis must not be [0, 0, 0]; give the direction to orbit "
+                  "about, e.g. [0, 1, 0]");
+    animation.axis = *axis;
+  }
+  animation.center = reader.vector("center", Triple::Xyz);
+  if (auto degrees = reader.number("degrees")) animation.degrees = *degrees;
+  return animation;
+}
+
+toml::table parseToml(std::string_view text, const std::string& path) {
+  try {
+    return toml::parse(text, std::string_view(path));
+  } catch (const toml::parse_error& error) {
+    throw InputError(locate(path, error.source()), std::string(error.description()));
+  }
+}
+
+}  // namespace
+
+Material defaultMaterial() {
+  Material material;
+  material.name = "default";
+  material.ka = {0.2f, 0.2f, 0.2f};
+  material.kd = {0.7f, 0.7f, 0.7f};
+  material.ks = {0.3f, 0.3f, 0.3f};
+  material.shininess = 32;
+  return material;
+}
+
+SceneDescription parseScene(std::string_view text, const std::string& path) {
+  const toml::table root = parseToml(text, path);
+  const SceneFile file{path, std::filesystem::path(path).parent_path()};
+  const TomlTableReader document(root, "", path, kSceneTables);
+
+  SceneDescription scene;
+  scene.path = path;
+  if (const toml::table* render = sectionTable(file, root, "render"))
+    scene.render = readRender(file, *render);
+  if (const toml::table* camera = sectionTable(file, root, "camera"))
+    scene.camera = readCamera(file, *camera);
+  if (const toml::table* ambient = sectionTable(file, root, "ambient")) {
+    const TomlTableReader reader(*ambient, "ambient", path, kAmbientKeys);
+    if (auto intensity = reader.vector("intensity", Triple::Rgb, NumberRange::atLeast(0)))
+      scene.ambient = toFloat(*intensity);
+  }
+  const std::vector<const toml::table*> lights = tableArray(file, root, "light");
+  for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(readLight(file, *lights[i], i));
+  scene.materials = readMaterials(file, root);
+  const std::vector<const toml::table*> meshes = tableArray(file, root, "mesh");
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+    scene.meshes.push_back(readMesh(file, *meshes[i], i, scene.materials));
+  if (const toml::table* animation = sectionTable(file, root, "animation"))
+    scene.animation = readAnimation(file, *animation, scene.lights.size());
+  return scene;
+}
+
+SceneDescription loadScene(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw InputError(SourceLocation{path},
+                     fmt::format("cannot open '{}': it is a directory, not a scene file", path));
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw InputError(SourceLocation{path}, fmt::format("cannot open '{}': {}", path, std::strerror(errno)));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad())
+    throw InputError(SourceLocation{path}, fmt::format("cannot read '{}': {}", path, std::strerror(errno)));
+  return parseScene(text.str(), path);
+}
+
+}  // namespace lancer

@@ -1,0 +1,152 @@
+// Property: on thousands of random and adversarial rays, both kd-tree builds answer exactly as the
+// brute-force reference: same hit or miss, same face, same t (to 1e-6 relative), same occlusion.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "accel/accel_test_geometry.hpp"
+#include "lancer/accel/accelerator.hpp"
+#include "lancer/accel/naive_accel.hpp"
+#include "lancer/mesh/msh_reader.hpp"
+
+namespace lancer {
+namespace {
+
+using test::Soup;
+
+struct BuildCase {
+  std::string name;
+  std::function<KdTree(const Soup&)> build;
+};
+
+std::vector<BuildCase> buildCases() {
+  auto sah = [](KdBuildOptions o) {
+    return [o](const Soup& s) { return KdTree::buildSah(s.positions, s.faces, o); };
+  };
+  auto median = [](KdBuildOptions o) {
+    return [o](const Soup& s) { return KdTree::buildMedian(s.positions, s.faces, o); };
+  };
+  KdBuildOptions serial;
+  serial.threads = 1;
+  KdBuildOptions parallel;
+  parallel.threads = 2;
+  KdBuildOptions cheapTraversal = serial;  // deep trees: many more split planes to trip over
+  cheapTraversal.traversalCost = 0.1f;
+  KdBuildOptions shallow = serial;
+  shallow.maxDepth = 4;
+  KdBuildOptions tinyLeaves = parallel;
+  tinyLeaves.medianLeafSize = 1;
+  return {{"sah", sah(serial)},           {"sah-2-threads", sah(parallel)}, {"sah-deep", sah(cheapTraversal)},
+          {"sah-shallow", sah(shallow)},  {"median", median(serial)},      {"median-leaf-1", median(tinyLeaves)}};
+}
+
+std::string describe(const test::TestRay& r) {
+  std::ostringstream out;
+  out.precision(9);
+  out << "origin (" << r.ray.origin.x << ", " << r.ray.origin.y << ", " << r.ray.origin.z << ") direction ("
+      << r.ray.direction.x << ", " << r.ray.direction.y << ", " << r.ray.direction.z << ") t in (" << r.tMin << ", "
+      << r.tMax << ")";
+  return out.str();
+}
+
+void expectSameAnswers(const Soup& soup, int rayCount, std::uint32_t seed) {
+  const NaiveAccel naive(soup.positions, soup.faces);
+  for (const BuildCase& build : buildCases()) {
+    SCOPED_TRACE(build.name);
+    const KdTree tree = build.build(soup);
+    std::mt19937 rng(seed);
+    const std::vector<test::TestRay> rays = test::adversarialRays(soup, tree, rng, rayCount);
+    int failures = 0, hits = 0;
+    for (const test::TestRay& r : rays) {
+      Hit expected, actual;
+      const bool expectHit = naive.intersect(r.ray, r.tMin, r.tMax, expected);
+      const bool gotHit = tree.intersect(r.ray, r.tMin, r.tMax, actual);
+      hits += expectHit;
+      bool same = expectHit == gotHit;
+      if (same && expectHit) {
+        same = expected.face == actual.face && std::abs(expected.t - actual.t) <= 1e-6f * std::abs(expected.t);
+      }
+      const bool expectOccluded = naive.occluded(r.ray, r.tMin, r.tMax);
+      const bool gotOccluded = tree.occluded(r.ray, r.tMin, r.tMax);
+      if ((!same || expectOccluded != gotOccluded) && ++failures <= 5) {
+        ADD_FAILURE() << describe(r) << "\n  naive: " << (expectHit ? "face " + std::to_string(expected.face) : "miss")
+                      << " t " << expected.t << " occluded " << expectOccluded << "\n  kd:    "
+                      << (gotHit ? "face " + std::to_string(actual.face) : "miss") << " t " << actual.t
+                      << " occluded " << gotOccluded;
+      }
+    }
+    EXPECT_EQ(failures, 0) << "of " << rays.size() << " rays";
+    EXPECT_GT(hits, static_cast<int>(rays.size()) / 10) << "the rays should mostly hit something";
+  }
+}
+
+TEST(KdTreeProperty, RandomSoupMatchesBruteForce) {
+  std::mt19937 rng(1);
+  expectSameAnswers(test::randomSoup(rng, 1500), 4000, 11);
+}
+
+TEST(KdTreeProperty, GridBoxWithVerticesOnSplitPlanesMatchesBruteForce) {
+  expectSameAnswers(test::gridBox(12), 8000, 12);
+}
+
+TEST(KdTreeProperty, TessellatedSphereMatchesBruteForce) {
+  expectSameAnswers(test::sphere(40, 60), 6000, 13);
+}
+
+TEST(KdTreeProperty, DegenerateAndCoplanarFacesMatchBruteForce) {
+  std::mt19937 rng(4);
+  Soup soup = test::adversarialSoup(rng);
+  // Embed them in a grid so the tree has planes through the coincident faces.
+  const Soup grid = test::gridBox(4);
+  for (MeshFace f : grid.faces) {
+    for (std::uint32_t& v : f.vertex) {
+      if (v != kNoVertex) v += static_cast<std::uint32_t>(soup.positions.size());
+    }
+    soup.faces.push_back(f);
+  }
+  for (const Vec3& p : grid.positions) soup.positions.push_back(p * 0.25f);
+  expectSameAnswers(soup, 8000, 14);
+}
+
+// gmsh-made fixtures (tests/data/accel, from scripts/make_accel_fixtures.sh) through the real reader.
+Soup loadFixture(const std::string& name) {
+  const Mesh mesh = readMsh(std::string(LANCER_TEST_DATA_DIR) + "/accel/" + name);
+  return Soup{mesh.positions, mesh.faces};
+}
+
+TEST(KdTreeProperty, GmshHoledBlockMatchesBruteForce) {
+  const Soup soup = loadFixture("holed_block.msh");
+  ASSERT_GT(soup.faces.size(), 1000u);
+  expectSameAnswers(soup, 5000, 15);
+}
+
+TEST(KdTreeProperty, GmshQuadBoxMatchesBruteForce) {
+  const Soup soup = loadFixture("quad_box.msh");
+  ASSERT_TRUE(std::any_of(soup.faces.begin(), soup.faces.end(), [](const MeshFace& f) { return f.isQuad(); }));
+  expectSameAnswers(soup, 5000, 16);
+}
+
+TEST(KdTreeProperty, AcceleratorDispatchMatchesBruteForce) {
+  const Soup soup = test::sphere(12, 16);
+  const NaiveAccel naive(soup.positions, soup.faces);
+  for (AccelKind kind : {AccelKind::KdTreeSah, AccelKind::KdTreeMedian, AccelKind::Naive}) {
+    const Accelerator accel = Accelerator::build(soup.positions, soup.faces, kind);
+    std::mt19937 rng(5);
+    for (int i = 0; i < 2000; ++i) {
+      const Ray ray(test::randomPoint(rng, {-1, -1, -1}, {2, 2, 2}), test::randomDirection(rng));
+      Hit expected, actual;
+      ASSERT_EQ(naive.intersect(ray, 0.0f, 1e30f, expected), accel.intersect(ray, 0.0f, 1e30f, actual));
+      EXPECT_EQ(expected.face, actual.face);
+      EXPECT_EQ(expected.t, actual.t);
+      EXPECT_EQ(naive.occluded(ray, 0.0f, 1.0f), accel.occluded(ray, 0.0f, 1.0f));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace lancer

@@ -1,0 +1,96 @@
+// `lancer info` through the built CLI: text and --json output for a fixture, and exit code 2 with a
+// one-line compiler-style message for a broken file.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <string>
+
+#include "mesh/msh_test_util.hpp"
+
+namespace lancer {
+namespace {
+
+struct CommandResult {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+
+CommandResult runCli(const std::string& arguments) {
+  const std::string command = std::string("'") + LANCER_CLI_PATH + "' " + arguments + " 2>&1";
+  CommandResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  char buffer[4096];
+  std::size_t got;
+  while ((got = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, got);
+  const int status = pclose(pipe);
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(InfoCli, TextReport) {
+  const CommandResult result = runCli("info '" + test::mshFixture("square_tri6_v41_bin.msh") + "'");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const std::string& out = result.output;
+  EXPECT_TRUE(contains(out, "format:          MSH 4.1 binary")) << out;
+  EXPECT_TRUE(contains(out, "nodes:           81")) << out;
+  EXPECT_TRUE(contains(out, "32  6-node triangle (type 9)")) << out;
+  EXPECT_TRUE(contains(out, "16  3-node line (type 8)")) << out;
+  EXPECT_TRUE(contains(out, "faces rendered:  128 (128 triangles, 0 quads)")) << out;
+  EXPECT_TRUE(contains(out, "dim 2 tag 1      \"plate\"                  128 faces")) << out;
+  EXPECT_TRUE(contains(out, "bounding box:    [0, 0, 0] .. [1, 1, 0]")) << out;
+  EXPECT_TRUE(contains(out, "surface area:    1\n")) << out;
+  EXPECT_TRUE(contains(out, "shells:          1 (0 closed, 0 closed and consistently oriented)")) << out;
+  EXPECT_TRUE(contains(out, "load time:")) << out;
+}
+
+TEST(InfoCli, TextReportOfAClosedSkinAndUnrenderableElements) {
+  const CommandResult skin = runCli("info '" + test::mshFixture("cube_hex8_v22_bin.msh") + "'");
+  ASSERT_EQ(skin.exitCode, 0) << skin.output;
+  EXPECT_TRUE(contains(skin.output, "volume skin:     54 faces from 27 volume elements")) << skin.output;
+  EXPECT_TRUE(contains(skin.output, "closed, consistently oriented (normals point outward, volume 1)"))
+      << skin.output;
+  const CommandResult cubic = runCli("info '" + test::mshFixture("square_tri10_v41_ascii.msh") + "'");
+  ASSERT_EQ(cubic.exitCode, 0) << cubic.output;
+  EXPECT_TRUE(contains(cubic.output, "not rendered:\n          32  10-node triangle (type 21)"))
+      << cubic.output;
+}
+
+TEST(InfoCli, JsonReport) {
+  const CommandResult result = runCli("info --json '" + test::mshFixture("square_quad4_v22_ascii.msh") + "'");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const std::string& out = result.output;
+  EXPECT_EQ(out.front(), '{');
+  EXPECT_TRUE(contains(out, "\"version\": \"2.2\",\n  \"binary\": false,")) << out;
+  EXPECT_TRUE(contains(out, "\"nodes\": 25,")) << out;
+  EXPECT_TRUE(contains(out, "\"elementsByType\": {\"1\": 16, \"3\": 16},")) << out;
+  EXPECT_TRUE(contains(out, "\"faces\": {\"total\": 16, \"triangles\": 0, \"quads\": 16},")) << out;
+  EXPECT_TRUE(contains(out, "{\"dimension\": 2, \"tag\": 1, \"name\": \"plate\", \"faces\": 16}")) << out;
+  EXPECT_TRUE(contains(out, "\"boundingBox\": {\"min\": [0, 0, 0], \"max\": [1, 1, 0]},")) << out;
+  EXPECT_TRUE(contains(out, "\"area\": 1,")) << out;
+  EXPECT_TRUE(contains(out, "\"closed\": false, \"consistentlyOriented\": true")) << out;
+  EXPECT_TRUE(contains(out, "\"loadSeconds\": ")) << out;
+}
+
+TEST(InfoCli, BrokenFileExitsWithCodeTwoAndOneLine) {
+  const std::string path = test::mshFixture("broken/missing_node_v41.msh");
+  const CommandResult result = runCli("info '" + path + "'");
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_EQ(
+      result.output,
+      path + ":107:1: error: element 17 (3-node triangle) uses node 9001, which $Nodes does not define\n");
+}
+
+TEST(InfoCli, MissingFileExitsWithCodeTwo) {
+  const CommandResult result = runCli("info /nonexistent/part.msh");
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_EQ(result.output, "/nonexistent/part.msh: error: cannot open the file: No such file or directory\n");
+}
+
+}  // namespace
+}  // namespace lancer

@@ -1,0 +1,60 @@
+#include "lancer/mesh/vertex_normals.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace lancer {
+namespace {
+
+// A unit cube of 6 quads, outward winding.
+void makeCube(std::vector<Vec3>& positions, std::vector<MeshFace>& faces) {
+  positions.clear();
+  for (int i = 0; i < 8; ++i) positions.push_back({float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)});
+  const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  faces.clear();
+  for (const auto& q : quads) faces.push_back({{q[0], q[1], q[2], q[3]}});
+}
+
+TEST(VertexNormals, CubeKeepsSharpEdgesBelowCreaseAngle) {
+  std::vector<Vec3> positions;
+  std::vector<MeshFace> faces;
+  makeCube(positions, faces);
+  const std::vector<std::int32_t> tags(faces.size(), 0);
+  const CornerNormals normals = computeCornerNormals(positions, faces, tags, 60.0f);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const Vec3 n = faceNormal(positions, faces[f]);
+    for (int c = 0; c < 4; ++c) {
+      const Vec3 corner = normals.normals[normals.faceCorner[f][c]];
+      EXPECT_NEAR(dot(corner, n), 1.0f, 1e-6f);
+    }
+  }
+  EXPECT_EQ(normals.normals.size(), 24u);  // 8 corners x 3 faces each
+}
+
+TEST(VertexNormals, CubeSmoothedAboveCreaseAngle) {
+  std::vector<Vec3> positions;
+  std::vector<MeshFace> faces;
+  makeCube(positions, faces);
+  const std::vector<std::int32_t> tags(faces.size(), 0);
+  const CornerNormals normals = computeCornerNormals(positions, faces, tags, 95.0f);
+  // Each cube corner gets the diagonal direction, shared by its three faces.
+  EXPECT_EQ(normals.normals.size(), 8u);
+  const Vec3 corner7 = normals.normals[normals.faceCorner[1][2]];  // vertex 7 = (1,1,1)
+  EXPECT_NEAR(dot(corner7, normalize(Vec3{1, 1, 1})), 1.0f, 1e-6f);
+}
+
+TEST(VertexNormals, PhysicalGroupBoundaryStaysSharp) {
+  // Two coplanar-ish triangles folded by 10 degrees, in different physical groups.
+  const float fold = 10.0f * 3.14159265f / 180.0f;
+  std::vector<Vec3> positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-std::cos(fold), 0, std::sin(fold)}};
+  std::vector<MeshFace> faces = {{{0, 1, 2, kNoVertex}}, {{0, 2, 3, kNoVertex}}};
+  const CornerNormals same = computeCornerNormals(positions, faces, std::vector<std::int32_t>{1, 1}, 60.0f);
+  EXPECT_EQ(same.faceCorner[0][0], same.faceCorner[1][0]);  // smoothed across the fold
+  const CornerNormals split = computeCornerNormals(positions, faces, std::vector<std::int32_t>{1, 2}, 60.0f);
+  EXPECT_NE(split.faceCorner[0][0], split.faceCorner[1][0]);
+  EXPECT_NEAR(dot(split.normals[split.faceCorner[0][0]], Vec3{0, 0, 1}), 1.0f, 1e-6f);
+}
+
+}  // namespace
+}  // namespace lancer
