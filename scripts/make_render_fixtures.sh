@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Regenerates, with the real gmsh, the meshes of the render tests (tests/data/render) and of the
+# bundled examples (examples/meshes) from their committed .geo files. Needs gmsh (apt-get install
+# gmsh); lancer's build and tests do not.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+command -v gmsh >/dev/null || { echo "make_render_fixtures: gmsh is not installed" >&2; exit 1; }
+mesh() {  # mesh GEO_WITHOUT_EXTENSION: 2D mesh, MSH 4.1 binary, beside the .geo
+  gmsh "$1.geo" -2 -format msh41 -bin -o "$1.msh" >/dev/null
+  rm -f "$1.geo_unrolled"
+}
+for geo in tests/data/render/*.geo; do mesh "${geo%.geo}"; done
+for name in bracket floor sphere; do mesh "examples/meshes/$name"; done

@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Regenerates every golden image from the current renderer. Only run it when a change of picture is
+# intended, look at the new PNGs, and give the reason in the commit message.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cmake --build build -j"$(nproc)"
+LANCER_UPDATE_GOLDEN=1 ctest --test-dir build -L golden --output-on-failure "$@"
+git status --short -- '*.png'
