@@ -36,7 +36,7 @@ SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh) {
   scene.path = meshPath;
   scene.render.shading = ShadingMode::Phong;
   scene.render.background = {0.96f, 0.96f, 0.97f};
-  scene.ambient = {0.15f, 0.15f, 0.15f};
+  scene.ambient = {0.2f, 0.2f, 0.2f};
   scene.materials.push_back(paintedMaterial("default", kUngroupedColour));
 
   MeshInstance instance;
@@ -62,8 +62,8 @@ SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh) {
   const Aabb bounds = faceBounds(mesh);
   const Vec3d centre = mesh.origin + toDouble(bounds.empty() ? Vec3{} : bounds.center());
   const double radius = std::max(0.5 * static_cast<double>(length(bounds.extent())), 1e-12);
-  scene.lights.push_back({centre + normalize(Vec3d{-0.6, 1.4, 1.2}) * (6 * radius), {0.85f, 0.85f, 0.85f}, {1, 0, 0}});
-  scene.lights.push_back({centre + normalize(Vec3d{1.6, 0.3, 0.4}) * (6 * radius), {0.3f, 0.3f, 0.32f}, {1, 0, 0}});
+  scene.lights.push_back({centre + normalize(Vec3d{-0.5, 1.8, 0.9}) * (6 * radius), {0.9f, 0.9f, 0.9f}, {1, 0, 0}});
+  scene.lights.push_back({centre + normalize(Vec3d{1.5, 0.3, 0.5}) * (6 * radius), {0.35f, 0.35f, 0.37f}, {1, 0, 0}});
   return scene;
 }
 
