@@ -90,7 +90,7 @@ TEST(SceneLoader, FullSceneSetsEveryField) {
   expectVec(steel.absorption, 0.5f, 0.25f, 0);
   const Material& glass = scene.materials[2];
   EXPECT_EQ(glass.name, "glass");
-  expectVec(glass.reflectivity, 0.5f, 0.5f, 0.5f);  // a number means the same for every channel
+  expectVec(glass.reflectivity, 0.1f, 0.1f, 0.1f);  // a number means the same for every channel
   EXPECT_FLOAT_EQ(glass.transparency, 0.9f);
   expectVec(glass.kd, 0.7f, 0.7f, 0.7f);  // keys it leaves out keep the default material's values
   EXPECT_FLOAT_EQ(glass.ior, 1.5f);

@@ -6,14 +6,6 @@
 namespace lancer {
 namespace {
 
-// One directed edge of one face; sorting by key brings the faces that share an edge together.
-struct FaceEdge {
-  std::uint64_t key;  // (smaller vertex << 32) | larger vertex
-  std::uint32_t face;
-  bool forward;  // traversed from the smaller vertex to the larger
-  bool operator<(const FaceEdge& other) const { return key < other.key; }
-};
-
 class DisjointSets {
  public:
   explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
@@ -54,28 +46,24 @@ double faceArea(const Mesh& mesh, std::size_t f) {
   return 0.5 * length(cross(c - a, d - b));
 }
 
-MeshStats computeMeshStats(const Mesh& mesh) {
-  MeshStats stats;
-  const std::size_t faceCount = mesh.faces.size();
-  std::vector<FaceEdge> edges;
-  edges.reserve(faceCount * 4);
+FaceShells findFaceShells(const std::vector<MeshFace>& faces) {
+  FaceShells result;
+  const std::size_t faceCount = faces.size();
+  result.edges.reserve(faceCount * 4);
   for (std::size_t f = 0; f < faceCount; ++f) {
-    const MeshFace& face = mesh.faces[f];
-    face.isQuad() ? ++stats.quads : ++stats.triangles;
-    stats.area += faceArea(mesh, f);
-    ++stats.facesByPhysicalTag[mesh.facePhysicalTag[f]];
+    const MeshFace& face = faces[f];
     const int n = face.cornerCount();
     for (int c = 0; c < n; ++c) {
       const std::uint32_t a = face.vertex[c];
       const std::uint32_t b = face.vertex[(c + 1) % n];
       const std::uint64_t lo = std::min(a, b), hi = std::max(a, b);
-      edges.push_back({(lo << 32) | hi, static_cast<std::uint32_t>(f), a < b});
-      stats.worldBounds.extend(mesh.worldPosition(a));
+      result.edges.push_back({(lo << 32) | hi, static_cast<std::uint32_t>(f), a < b});
     }
   }
-  std::sort(edges.begin(), edges.end());
+  std::sort(result.edges.begin(), result.edges.end());
 
   // Faces sharing an edge belong to one shell; an edge decides closedness and orientation.
+  const std::vector<FaceEdge>& edges = result.edges;
   DisjointSets sets(faceCount);
   std::vector<std::uint8_t> edgeOpen(faceCount, 0), edgeMisoriented(faceCount, 0);
   for (std::size_t i = 0; i < edges.size();) {
@@ -87,27 +75,43 @@ MeshStats computeMeshStats(const Mesh& mesh) {
       edgeMisoriented[edges[i].face] = 1;
     i = j;
   }
-  std::map<std::uint32_t, std::size_t> shellOfRoot;
-  std::vector<MeshShell> shells;
-  std::vector<std::uint8_t> anyOpen, anyMisoriented;
+  std::map<std::uint32_t, std::uint32_t> shellOfRoot;
+  result.shellOfFace.resize(faceCount);
   for (std::size_t f = 0; f < faceCount; ++f) {
     const std::uint32_t root = sets.find(static_cast<std::uint32_t>(f));
-    auto [it, inserted] = shellOfRoot.emplace(root, shells.size());
+    auto [it, inserted] = shellOfRoot.emplace(root, static_cast<std::uint32_t>(result.closed.size()));
     if (inserted) {
-      shells.emplace_back();
-      anyOpen.push_back(0);
-      anyMisoriented.push_back(0);
+      result.closed.push_back(1);
+      result.consistent.push_back(1);
     }
-    MeshShell& shell = shells[it->second];
+    result.shellOfFace[f] = it->second;
+    if (edgeOpen[f]) result.closed[it->second] = 0;
+    if (edgeMisoriented[f]) result.consistent[it->second] = 0;
+  }
+  return result;
+}
+
+MeshStats computeMeshStats(const Mesh& mesh) {
+  MeshStats stats;
+  const std::size_t faceCount = mesh.faces.size();
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    const MeshFace& face = mesh.faces[f];
+    face.isQuad() ? ++stats.quads : ++stats.triangles;
+    stats.area += faceArea(mesh, f);
+    ++stats.facesByPhysicalTag[mesh.facePhysicalTag[f]];
+    for (int c = 0; c < face.cornerCount(); ++c) stats.worldBounds.extend(mesh.worldPosition(face.vertex[c]));
+  }
+  const FaceShells faceShells = findFaceShells(mesh.faces);
+  std::vector<MeshShell> shells(faceShells.shellCount());
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    MeshShell& shell = shells[faceShells.shellOfFace[f]];
     ++shell.faceCount;
     shell.area += faceArea(mesh, f);
     shell.signedVolume += coneVolume(mesh, mesh.faces[f]);
-    anyOpen[it->second] |= edgeOpen[f];
-    anyMisoriented[it->second] |= edgeMisoriented[f];
   }
   for (std::size_t s = 0; s < shells.size(); ++s) {
-    shells[s].closed = !anyOpen[s];
-    shells[s].consistentlyOriented = !anyMisoriented[s];
+    shells[s].closed = faceShells.closed[s] != 0;
+    shells[s].consistentlyOriented = faceShells.consistent[s] != 0;
   }
   std::stable_sort(shells.begin(), shells.end(),
                    [](const MeshShell& a, const MeshShell& b) { return a.faceCount > b.faceCount; });

@@ -2,9 +2,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <thread>
 #include <vector>
 
+#include "lancer/render/adaptive_sampler.hpp"
 #include "lancer/render/pixel_sampler.hpp"
 
 namespace lancer {
@@ -22,6 +24,8 @@ int resolveThreadCount(int requested) {
 
 Rgba renderPixel(const Tracer& tracer, const Camera& camera, const RenderSettings& settings, int x, int y,
                  TraceCounters& counters, std::uint64_t& samplesTraced) {
+  if (settings.sampler == SamplerKind::Adaptive)
+    return AdaptiveSampler(tracer, camera, settings).renderPixel(x, y, counters, samplesTraced);
   const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(settings.samples)))));
   const bool parallelView = camera.projection() == Projection::Orthographic;
   Vec3 sum{0, 0, 0};
@@ -59,6 +63,8 @@ Image renderImage(const Scene& scene, const Accelerator& accelerator, const Came
   std::atomic<int> workersRunning{0};
 
   auto worker = [&] {
+    std::optional<AdaptiveSampler> adaptive;
+    if (settings.sampler == SamplerKind::Adaptive) adaptive.emplace(tracer, camera, settings);
     for (;;) {
       if (options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed)) break;
       const int tile = nextTile.fetch_add(1, std::memory_order_relaxed);
@@ -67,8 +73,13 @@ Image renderImage(const Scene& scene, const Accelerator& accelerator, const Came
       const int x1 = std::min(x0 + kTileSize, settings.width), y1 = std::min(y0 + kTileSize, settings.height);
       TraceCounters counters;
       std::uint64_t samples = 0;
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) image.at(x, y) = renderPixel(tracer, camera, settings, x, y, counters, samples);
+      if (adaptive) {
+        adaptive->renderTile(x0, y0, x1, y1, image, counters, samples);
+      } else {
+        for (int y = y0; y < y1; ++y)
+          for (int x = x0; x < x1; ++x)
+            image.at(x, y) = renderPixel(tracer, camera, settings, x, y, counters, samples);
+      }
       raysTraced.fetch_add(counters.rays, std::memory_order_relaxed);
       samplesTraced.fetch_add(samples, std::memory_order_relaxed);
       pixelsDone.fetch_add(static_cast<std::uint64_t>((x1 - x0) * (y1 - y0)), std::memory_order_relaxed);

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "lancer/render/lighting.hpp"
+#include "lancer/render/optics.hpp"
 #include "lancer/render/ray_offset.hpp"
 
 namespace lancer {
@@ -15,28 +16,6 @@ constexpr float kMinPathWeight = 1.0f / 512.0f;
 // Transparent surfaces a shadow ray may cross before the light counts as blocked.
 constexpr int kMaxShadowCrossings = 16;
 
-Vec3 reflect(const Vec3& direction, const Vec3& normal) { return direction - normal * (2.0f * dot(direction, normal)); }
-
-// Snell's law; `normal` faces the incoming side, eta = n_incoming / n_transmitted. False on total
-// internal reflection.
-bool refract(const Vec3& direction, const Vec3& normal, float eta, Vec3& transmitted) {
-  const float cosIncident = -dot(direction, normal);
-  const float k = 1.0f - eta * eta * (1.0f - cosIncident * cosIncident);
-  if (k < 0.0f) return false;
-  transmitted = normalize(direction * eta + normal * (eta * cosIncident - std::sqrt(k)));
-  return true;
-}
-
-// Exact unpolarised dielectric Fresnel reflectance (Born & Wolf), cosIncident in [0, 1].
-float dielectricFresnel(float cosIncident, float eta) {
-  const float sin2Transmitted = eta * eta * (1.0f - cosIncident * cosIncident);
-  if (sin2Transmitted >= 1.0f) return 1.0f;
-  const float cosTransmitted = std::sqrt(1.0f - sin2Transmitted);
-  const float rs = (eta * cosIncident - cosTransmitted) / (eta * cosIncident + cosTransmitted);
-  const float rp = (cosIncident - eta * cosTransmitted) / (cosIncident + eta * cosTransmitted);
-  return 0.5f * (rs * rs + rp * rp);
-}
-
 // Tint of the light that passes through a transparent surface: its diffuse colour at full
 // brightness (white when it has none), so a blue glass casts a blue shadow.
 Vec3 transmissionTint(const Material& material) {
@@ -44,13 +23,28 @@ Vec3 transmissionTint(const Material& material) {
   return brightest > 0.0f ? material.kd * (1.0f / brightest) : Vec3{1, 1, 1};
 }
 
-Vec3 expNegative(const Vec3& v) { return {std::exp(-v.x), std::exp(-v.y), std::exp(-v.z)}; }
-
 }  // namespace
+
+EnergySplit energySplit(const Material& material) {
+  EnergySplit split;
+  split.reflect = max(material.reflectivity, Vec3{0, 0, 0});
+  split.transmit = std::max(material.transparency, 0.0f);
+  const float largest = maxComponent(split.reflect + Vec3{1, 1, 1} * split.transmit);
+  if (largest > 1.0f) {
+    split.reflect = split.reflect * (1.0f / largest);
+    split.transmit /= largest;
+  }
+  split.local = max(Vec3{1, 1, 1} - split.reflect - Vec3{1, 1, 1} * split.transmit, Vec3{0, 0, 0});
+  split.recursive = maxComponent(split.reflect) > 0.0f || split.transmit > 0.0f;
+  return split;
+}
 
 Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings)
     : scene_(scene), accelerator_(accelerator), background_(settings.background), maxDepth_(settings.maxDepth) {
-  for (const Material& material : scene.materials) anyTransparent_ = anyTransparent_ || material.transparency > 0;
+  for (const Material& material : scene.materials) {
+    anyTransparent_ = anyTransparent_ || material.transparency > 0;
+    splits_.push_back(energySplit(material));
+  }
 }
 
 TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const {
@@ -69,6 +63,9 @@ Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, Trac
   }
   Vec3 transmission{1, 1, 1};
   Vec3 origin = from;
+  // Inside a transparent solid the light is also absorbed (Beer-Lambert) between entry and exit.
+  Vec3 insideAbsorption{0, 0, 0};
+  Vec3 entryPoint{0, 0, 0};
   for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
     ++counters.rays;
     const Ray ray(origin, lightPosition - origin);
@@ -76,10 +73,21 @@ Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, Trac
     if (!accelerator_.intersect(ray, 0.0f, 1.0f, hit)) return transmission;
     const Material& material = scene_.materials[scene_.faceMaterial[hit.face]];
     if (material.transparency <= 0.0f) return {0, 0, 0};
-    transmission *= transmissionTint(material) * material.transparency;
-    if (maxComponent(transmission) < kMinPathWeight) return {0, 0, 0};
+    const Vec3 point = ray.at(hit.t);
     const Vec3 normal = scene_.faceNormals[hit.face];
-    origin = offsetRayOrigin(ray.at(hit.t), dot(normal, ray.direction) > 0 ? normal : -normal);
+    const bool leaving = dot(normal, ray.direction) > 0;
+    if (scene_.faceBoundsSolid[hit.face]) {
+      if (!leaving) {
+        insideAbsorption = material.absorption;
+        entryPoint = point;
+      } else if (maxComponent(insideAbsorption) > 0.0f) {
+        transmission *= beerLambert(insideAbsorption, length(point - entryPoint));
+        insideAbsorption = {0, 0, 0};
+      }
+    }
+    transmission *= transmissionTint(material) * splits_[scene_.faceMaterial[hit.face]].transmit;
+    if (maxComponent(transmission) < kMinPathWeight) return {0, 0, 0};
+    origin = offsetRayOrigin(point, leaving ? normal : -normal);
   }
   return {0, 0, 0};
 }
@@ -122,6 +130,13 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
   return color;
 }
 
+// The ray tree of the brief, depth first. At each hit the light leaving towards the viewer is
+//   local * split.local + reflected * reflectWeight + transmitted * transmitWeight,
+// where reflectWeight + transmitWeight = split.reflect + split.transmit (Fresnel and total internal
+// reflection only move weight from transmission to reflection) and split.local = 1 - both. A branch
+// that is not traced (depth limit, or a path weight below 1/512) takes the local colour instead, so
+// every node is a weighted mean of non-negative terms with weights summing to 1: light can only be
+// lost (absorption), never created, and depth 0 is exactly the local model.
 Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, bool parallelView, TraceCounters& counters,
                    bool& hitSomething, float& hitDistance) const {
   ++counters.rays;
@@ -131,61 +146,70 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, bool parallelVie
     return background_;
   }
   hitSomething = true;
-  hitDistance = hit.t;
+  hitDistance = hit.t * length(ray.direction);
   const SurfacePoint surface = makeSurfacePoint(scene_, ray, hit);
-  const Material& material = scene_.materials[scene_.faceMaterial[hit.face]];
+  const std::uint32_t materialIndex = scene_.faceMaterial[hit.face];
+  const Material& material = scene_.materials[materialIndex];
+  const EnergySplit& split = splits_[materialIndex];
   const Vec3 local = shadeLocal(ray, surface, material, parallelView, counters);
-  if (depth >= maxDepth_ || (maxComponent(material.reflectivity) <= 0.0f && material.transparency <= 0.0f))
-    return local;
+  if (depth >= maxDepth_ || !split.recursive) return local;
 
-  // Energy split: of the light leaving this point, a share `reflectivity` is mirror reflection,
-  // `transparency` is transmission (split further by Fresnel when asked, and sent back as
-  // reflection on total internal reflection) and the rest, 1 - reflectivity - transparency, is the
-  // local model. The weights are non-negative and sum to at most 1, so recursion adds no energy.
   const Vec3 direction = normalize(ray.direction);
-  Vec3 normal = surface.shadingNormal;
-  Vec3 reflectWeight = material.reflectivity;
-  float transmitWeight = material.transparency;
-  const Vec3 localWeight = max(Vec3{1, 1, 1} - reflectWeight - Vec3{1, 1, 1} * transmitWeight, Vec3{0, 0, 0});
-
-  Vec3 transmittedDirection;
-  bool transmits = false;
+  const bool solid = scene_.faceBoundsSolid[hit.face] != 0;
+  // Closed shells face outward (oriented at load), so the side hit says whether the ray enters.
+  const bool entering = surface.normalSign > 0.0f;
+  Vec3 reflectWeight = split.reflect;
+  float transmitWeight = split.transmit;
+  Vec3 transmittedDirection = direction;  // an open surface is a thin sheet: no net bending
   if (transmitWeight > 0.0f) {
-    const bool entering = surface.normalSign > 0.0f;  // hit the outside of an outward-oriented shell
     const float eta = entering ? 1.0f / material.ior : material.ior;
-    if (refract(direction, normal, eta, transmittedDirection) ||
-        refract(direction, surface.geometricNormal, eta, transmittedDirection)) {
-      transmits = true;
-      if (material.fresnel) {
-        const float fresnel = dielectricFresnel(std::clamp(-dot(direction, normal), 0.0f, 1.0f), eta);
-        reflectWeight += Vec3{1, 1, 1} * (transmitWeight * fresnel);
-        transmitWeight *= 1.0f - fresnel;
+    Vec3 normal = surface.shadingNormal;
+    bool transmits = true;
+    if (solid) {
+      transmits = refract(direction, normal, eta, transmittedDirection);
+      // An interpolated normal can send the ray back out of the geometric surface: use the true one.
+      if (transmits && dot(transmittedDirection, surface.geometricNormal) >= 0.0f) {
+        normal = surface.geometricNormal;
+        transmits = refract(direction, normal, eta, transmittedDirection);
       }
-    } else {  // total internal reflection: everything transmitted is reflected instead
+    }
+    if (!transmits) {  // total internal reflection: everything transmitted is reflected instead
       reflectWeight += Vec3{1, 1, 1} * transmitWeight;
       transmitWeight = 0.0f;
+    } else if (material.fresnel) {
+      const float fresnel = dielectricFresnel(-dot(direction, normal), solid ? eta : 1.0f / material.ior);
+      reflectWeight += Vec3{1, 1, 1} * (transmitWeight * fresnel);
+      transmitWeight *= 1.0f - fresnel;
     }
   }
 
-  Vec3 color = local * localWeight;
-  if (pathWeight * maxComponent(reflectWeight) >= kMinPathWeight) {
-    Vec3 reflected = reflect(direction, normal);
+  Vec3 color = local * split.local;
+  const float reflectPathWeight = pathWeight * maxComponent(reflectWeight);
+  if (reflectPathWeight >= kMinPathWeight) {
+    Vec3 reflected = reflect(direction, surface.shadingNormal);
     if (dot(reflected, surface.geometricNormal) <= 0.0f) reflected = reflect(direction, surface.geometricNormal);
     float distance = 0;
     const Ray reflectedRay(offsetRayOrigin(surface.position, surface.geometricNormal), reflected);
-    color += trace(reflectedRay, depth + 1, pathWeight * maxComponent(reflectWeight), false, counters,
-                   hitSomething, distance) *
-             reflectWeight;
+    Vec3 radiance = trace(reflectedRay, depth + 1, reflectPathWeight, false, counters, hitSomething, distance);
+    // Reflected off the inside of a solid: the ray stays in its medium (Beer-Lambert).
+    if (solid && !entering && maxComponent(material.absorption) > 0.0f)
+      radiance *= std::isfinite(distance) ? beerLambert(material.absorption, distance) : Vec3{0, 0, 0};
+    color += radiance * reflectWeight;
+  } else {
+    color += local * reflectWeight;
   }
-  if (transmits && pathWeight * transmitWeight >= kMinPathWeight) {
+  const float transmitPathWeight = pathWeight * transmitWeight;
+  if (transmitPathWeight >= kMinPathWeight) {
     float distance = 0;
     const Ray transmittedRay(offsetRayOrigin(surface.position, -surface.geometricNormal), transmittedDirection);
-    Vec3 transmitted = trace(transmittedRay, depth + 1, pathWeight * transmitWeight, false, counters,
-                             hitSomething, distance);
-    // Beer-Lambert absorption along the segment inside the medium (entering an outward shell).
-    if (surface.normalSign > 0.0f && maxComponent(material.absorption) > 0.0f)
-      transmitted *= std::isfinite(distance) ? expNegative(material.absorption * distance) : Vec3{0, 0, 0};
-    color += transmitted * transmitWeight;
+    Vec3 radiance =
+        trace(transmittedRay, depth + 1, transmitPathWeight, false, counters, hitSomething, distance);
+    // Entering a solid: absorbed along the segment inside, up to the next surface.
+    if (solid && entering && maxComponent(material.absorption) > 0.0f)
+      radiance *= std::isfinite(distance) ? beerLambert(material.absorption, distance) : Vec3{0, 0, 0};
+    color += radiance * transmitWeight;
+  } else {
+    color += local * transmitWeight;
   }
   return color;
 }

@@ -2,6 +2,8 @@
 // lighting model with shadow rays, then mirror reflection and refraction up to a depth.
 #pragma once
 
+#include <vector>
+
 #include "lancer/accel/accelerator.hpp"
 #include "lancer/render/surface_point.hpp"
 #include "lancer/scene/scene.hpp"
@@ -17,6 +19,19 @@ struct TraceCounters {
   std::uint64_t rays = 0;  // primary + secondary + shadow
 };
 
+// How a material shares the light leaving a point (see Tracer::trace): non-negative, and
+// reflect + transmit + local = 1 per channel, so recursion cannot create energy.
+struct EnergySplit {
+  Vec3 reflect{0, 0, 0};
+  float transmit = 0;
+  Vec3 local{1, 1, 1};
+  bool recursive = false;  // reflects or transmits anything
+};
+
+// A material's reflectivity and transparency as weights; scaled down together when their sum
+// exceeds 1 in some channel (the scene loader rejects such materials; scenes built in code may not).
+EnergySplit energySplit(const Material& material);
+
 class Tracer {
  public:
   Tracer(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings);
@@ -31,7 +46,7 @@ class Tracer {
   Vec3 shadeLocal(const Ray& ray, const SurfacePoint& surface, const Material& material, bool parallelView,
                   TraceCounters& counters) const;
   // Fraction of the light that reaches `from` (0 when blocked by an opaque face; transparent faces
-  // filter it by their transparency and tint).
+  // filter it by their transparency and tint, solids also by their absorption).
   Vec3 lightTransmission(const Vec3& from, const Vec3& lightPosition, TraceCounters& counters) const;
 
   const Scene& scene_;
@@ -39,6 +54,7 @@ class Tracer {
   Vec3 background_;
   int maxDepth_;
   bool anyTransparent_ = false;
+  std::vector<EnergySplit> splits_;  // per material
 };
 
 }  // namespace lancer

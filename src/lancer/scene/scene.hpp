@@ -24,11 +24,14 @@ struct Scene {
   Vec3d origin;  // world = origin + scene-space position; keeps float precision far from 0
   std::vector<Vec3> positions;
   std::vector<MeshFace> faces;
-  std::vector<Vec3> faceNormals;  // geometric, unit, in the file's winding
+  std::vector<Vec3> faceNormals;  // geometric, unit; outward on closed shells, else the file's winding
   CornerNormals cornerNormals;    // smooth normals per face corner
   std::vector<std::uint32_t> faceMaterial;
   std::vector<ShadingMode> faceShading;
   std::vector<std::uint8_t> faceEdgeMask;
+  // 1 when the face belongs to a closed, outward-oriented shell (it bounds a solid: refraction
+  // enters and leaves it); 0 for open surfaces, which transparency treats as thin sheets.
+  std::vector<std::uint8_t> faceBoundsSolid;
   std::vector<Material> materials;
   std::vector<SceneLight> lights;
   Vec3 ambient{0, 0, 0};

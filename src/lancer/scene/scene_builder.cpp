@@ -1,5 +1,6 @@
 // Turns a SceneDescription into a Scene: reads meshes, applies instance transforms in double
-// precision, recentres everything on one origin, resolves group materials, computes normals.
+// precision, recentres everything on one origin, orients closed shells outward, resolves group
+// materials, computes normals.
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -8,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "lancer/mesh/msh_reader.hpp"
+#include "lancer/mesh/shell_orientation.hpp"
 #include "lancer/scene/scene.hpp"
 
 namespace lancer {
@@ -116,11 +118,16 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     std::vector<Vec3> positions(mesh.positions.size());
     for (std::size_t v = 0; v < positions.size(); ++v)
       positions[v] = toFloat(transforms[i].apply(mesh.worldPosition(static_cast<std::uint32_t>(v))) - scene.origin);
-    // A mirroring scale (odd number of negative factors) reverses the winding; keep normals outward.
+    std::vector<std::uint8_t> edgeMasks = mesh.faceEdgeMask;
+    edgeMasks.resize(mesh.faces.size(), kAllEdges);
+    // A mirroring scale (odd number of negative factors) reverses the winding; keep the file's
+    // intent for open surfaces (closed shells are oriented below whatever their winding).
     const bool mirrored = instance.scale.x * instance.scale.y * instance.scale.z < 0;
     if (mirrored) {
-      for (MeshFace& face : mesh.faces) std::swap(face.vertex[1], face.vertex[face.cornerCount() - 1]);
+      for (std::size_t f = 0; f < mesh.faces.size(); ++f) reverseWinding(mesh.faces[f], edgeMasks[f]);
     }
+    // Refraction tells entering from leaving by the side a ray hits, so solids must face outward.
+    const ShellOrientationReport orientation = orientClosedShellsOutward(positions, mesh.faces, edgeMasks);
     CornerNormals normals =
         computeCornerNormals(positions, mesh.faces, mesh.facePhysicalTag, instance.smoothAngleDegrees);
 
@@ -145,7 +152,8 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
       scene.cornerNormals.faceCorner.push_back(corners);
       scene.faceMaterial.push_back(material);
       scene.faceShading.push_back(shading);
-      scene.faceEdgeMask.push_back(f < mesh.faceEdgeMask.size() ? mesh.faceEdgeMask[f] : kAllEdges);
+      scene.faceEdgeMask.push_back(edgeMasks[f]);
+      scene.faceBoundsSolid.push_back(orientation.faceBoundsSolid[f]);
     }
   }
 

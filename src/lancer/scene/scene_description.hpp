@@ -22,6 +22,9 @@ struct RenderSettings {
   int samples = 1;   // samples per pixel, a perfect square for the regular grid
   int maxDepth = 5;  // reflection/refraction recursion depth
   SamplerKind sampler = SamplerKind::Regular;
+  // Adaptive sampler: a square of the pixel is split when two of its corner samples differ by more
+  // than this in some channel (linear radiance, 1 = full scale).
+  float adaptiveThreshold = 0.05f;
   ShadingMode shading = ShadingMode::Phong;
   Vec3 background{0, 0, 0};
   bool transparentBackground = false;  // background = "transparent": PNG with alpha

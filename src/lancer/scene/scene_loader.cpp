@@ -20,8 +20,9 @@ namespace {
 
 constexpr std::array<std::string_view, 7> kSceneTables = {"render",   "camera", "ambient",  "light",
                                                           "material", "mesh",   "animation"};
-constexpr std::array<std::string_view, 9> kRenderKeys = {
-    "width", "height", "samples", "max_depth", "sampler", "shading", "background", "output", "srgb"};
+constexpr std::array<std::string_view, 10> kRenderKeys = {
+    "width",   "height",     "samples", "max_depth", "sampler",
+    "shading", "background", "output",  "srgb",      "adaptive_threshold"};
 constexpr std::array<std::string_view, 6> kCameraKeys = {"projection", "position", "look_at",
                                                          "up",         "fov",      "view_height"};
 constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
@@ -131,6 +132,8 @@ RenderSettings readRender(const SceneFile& file, const toml::table& table) {
     render.samples = static_cast<int>(*samples);
   }
   if (auto depth = reader.integer("max_depth", 0, kMaxDepth)) render.maxDepth = static_cast<int>(*depth);
+  if (auto threshold = reader.number("adaptive_threshold", NumberRange::above(0)))
+    render.adaptiveThreshold = static_cast<float>(*threshold);
   if (auto shading = reader.choice("shading", kShadingNames))
     render.shading = static_cast<ShadingMode>(*shading);
   readBackground(reader, render);
@@ -216,6 +219,15 @@ Material readMaterial(const SceneFile& file, const toml::table& table, const std
   if (auto fresnel = reader.boolean("fresnel")) material.fresnel = *fresnel;
   if (auto absorption = reader.vector("absorption", Triple::Rgb, NumberRange::atLeast(0)))
     material.absorption = toFloat(*absorption);
+  // Reflected, transmitted and local light share what leaves a point; more than all of it would
+  // let each bounce add light (the tracer's energy split, tracer.cpp).
+  const float shared = maxComponent(material.reflectivity) + material.transparency;
+  if (shared > 1.0f + 1e-6f)
+    reader.fail(*(reader.find("transparency") ? reader.find("transparency") : reader.find("reflectivity")),
+                fmt::format("material.{}: reflectivity + transparency must not exceed 1 in any channel (found "
+                            "{:g} + {:g}): they share the light leaving the surface with the local colour; "
+                            "lower one of them",
+                            name, maxComponent(material.reflectivity), material.transparency));
   return material;
 }
 

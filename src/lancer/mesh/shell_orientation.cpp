@@ -1,0 +1,133 @@
+#include "lancer/mesh/shell_orientation.hpp"
+
+#include <algorithm>
+
+#include "lancer/mesh/mesh_stats.hpp"
+
+namespace lancer {
+namespace {
+
+// Faces joined by a manifold edge, and whether they traverse it in the same direction (then one of
+// them must be flipped for the pair to agree).
+struct FaceLink {
+  std::uint32_t neighbour;
+  bool sameDirection;
+};
+
+// Compressed adjacency: links of face f are links[first[f] .. first[f + 1]).
+struct FaceLinks {
+  std::vector<std::uint32_t> first;
+  std::vector<FaceLink> links;
+};
+
+FaceLinks manifoldLinks(const std::vector<FaceEdge>& edges, std::size_t faceCount) {
+  FaceLinks result;
+  result.first.assign(faceCount + 1, 0);
+  auto forEachManifoldEdge = [&](auto&& visit) {
+    for (std::size_t i = 0; i < edges.size();) {
+      std::size_t j = i + 1;
+      while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+      if (j - i == 2 && edges[i].face != edges[i + 1].face) visit(edges[i], edges[i + 1]);
+      i = j;
+    }
+  };
+  forEachManifoldEdge([&](const FaceEdge& a, const FaceEdge& b) {
+    ++result.first[a.face + 1];
+    ++result.first[b.face + 1];
+  });
+  for (std::size_t f = 0; f < faceCount; ++f) result.first[f + 1] += result.first[f];
+  result.links.resize(result.first[faceCount]);
+  std::vector<std::uint32_t> fill(result.first.begin(), result.first.end() - 1);
+  forEachManifoldEdge([&](const FaceEdge& a, const FaceEdge& b) {
+    const bool same = a.forward == b.forward;
+    result.links[fill[a.face]++] = {b.face, same};
+    result.links[fill[b.face]++] = {a.face, same};
+  });
+  return result;
+}
+
+// Six times the signed volume of the cone from the origin over the face (fanned from corner 0), in
+// double: a shell of a million small faces still sums to the right sign.
+double coneVolume6(std::span<const Vec3> positions, const MeshFace& face) {
+  const Vec3d a = toDouble(positions[face.vertex[0]]);
+  double volume = 0;
+  for (int c = 1; c + 1 < face.cornerCount(); ++c)
+    volume += dot(a, cross(toDouble(positions[face.vertex[c]]), toDouble(positions[face.vertex[c + 1]])));
+  return volume;
+}
+
+}  // namespace
+
+void reverseWinding(MeshFace& face, std::uint8_t& edgeMask) {
+  // (v0, v1, ..., v{n-1}) becomes (v0, v{n-1}, ..., v1): new edge i is old edge n-1-i, reversed.
+  const int n = face.cornerCount();
+  std::reverse(face.vertex + 1, face.vertex + n);
+  std::uint8_t mask = 0;
+  for (int i = 0; i < n; ++i)
+    if (edgeMask & (1u << (n - 1 - i))) mask |= static_cast<std::uint8_t>(1u << i);
+  edgeMask = static_cast<std::uint8_t>(mask | (edgeMask & ~((1u << n) - 1u)));
+}
+
+ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions, std::vector<MeshFace>& faces,
+                                                 std::vector<std::uint8_t>& edgeMasks) {
+  ShellOrientationReport report;
+  const std::size_t faceCount = faces.size();
+  report.faceBoundsSolid.assign(faceCount, 0);
+  if (faceCount == 0) return report;
+  const FaceShells shells = findFaceShells(faces);
+  report.shells = shells.shellCount();
+
+  // Breadth-first over each closed shell: flip[f] says whether face f must be reversed to agree
+  // with the shell's first face. A contradiction means the shell cannot be oriented.
+  const FaceLinks links = manifoldLinks(shells.edges, faceCount);
+  std::vector<std::uint8_t> flip(faceCount, 0), visited(faceCount, 0);
+  std::vector<std::uint8_t> orientable(shells.shellCount(), 1);
+  std::vector<double> volume6(shells.shellCount(), 0.0);
+  std::vector<std::uint32_t> queue;
+  queue.reserve(faceCount);
+  for (std::size_t start = 0; start < faceCount; ++start) {
+    const std::uint32_t shell = shells.shellOfFace[start];
+    if (visited[start] || !shells.closed[shell]) continue;
+    visited[start] = 1;
+    queue.assign(1, static_cast<std::uint32_t>(start));
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const std::uint32_t f = queue[head];
+      for (std::uint32_t k = links.first[f]; k < links.first[f + 1]; ++k) {
+        const FaceLink& link = links.links[k];
+        const std::uint8_t wanted = static_cast<std::uint8_t>(flip[f] ^ (link.sameDirection ? 1 : 0));
+        if (!visited[link.neighbour]) {
+          visited[link.neighbour] = 1;
+          flip[link.neighbour] = wanted;
+          queue.push_back(link.neighbour);
+        } else if (flip[link.neighbour] != wanted) {
+          orientable[shell] = 0;
+        }
+      }
+    }
+  }
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    const std::uint32_t shell = shells.shellOfFace[f];
+    if (!shells.closed[shell]) continue;
+    const double v = coneVolume6(positions, faces[f]);
+    volume6[shell] += flip[f] ? -v : v;
+  }
+
+  std::uint8_t unusedMask = kAllEdges;
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    const std::uint32_t shell = shells.shellOfFace[f];
+    if (!shells.closed[shell] || !orientable[shell]) continue;
+    report.faceBoundsSolid[f] = 1;
+    const bool reverse = (flip[f] != 0) != (volume6[shell] < 0.0);
+    if (!reverse) continue;
+    reverseWinding(faces[f], edgeMasks.empty() ? unusedMask : edgeMasks[f]);
+    ++report.flippedFaces;
+  }
+  for (std::size_t s = 0; s < shells.shellCount(); ++s) {
+    if (!shells.closed[s]) continue;
+    ++report.closedShells;
+    if (!orientable[s]) ++report.unorientableShells;
+  }
+  return report;
+}
+
+}  // namespace lancer

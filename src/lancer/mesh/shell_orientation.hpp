@@ -1,0 +1,36 @@
+// Orients every closed shell of a surface mesh outward, whatever winding the file used: refraction
+// decides "entering" or "leaving" a solid from the side a ray hits, so it needs outward normals.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "lancer/mesh/mesh.hpp"
+
+namespace lancer {
+
+struct ShellOrientationReport {
+  std::uint64_t shells = 0;
+  std::uint64_t closedShells = 0;
+  std::uint64_t flippedFaces = 0;
+  // Closed shells with no consistent orientation (a non-orientable or non-manifold surface); their
+  // faces keep the file's winding and are treated as open (two-sided, thin).
+  std::uint64_t unorientableShells = 0;
+  // Per face: 1 when it belongs to a closed, consistently oriented shell (it bounds a solid).
+  std::vector<std::uint8_t> faceBoundsSolid;
+};
+
+// Reverses a face's winding (corner 0 stays first) and remaps its edge mask to the new edge order.
+void reverseWinding(MeshFace& face, std::uint8_t& edgeMask);
+
+// For each shell (faces joined through shared edges, see findFaceShells): when every edge is shared
+// by exactly two faces, the orientation of one face is propagated across shared edges to the whole
+// shell, and the shell is flipped as a whole when its signed volume (divergence theorem) is negative.
+// Open shells keep the file's winding: they are rendered two-sided. `positions` are the vertices the
+// faces index (any frame: the sign of the volume does not depend on translation).
+// `edgeMasks`, when not empty, holds one mask per face and is kept in step with the faces.
+ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions, std::vector<MeshFace>& faces,
+                                                 std::vector<std::uint8_t>& edgeMasks);
+
+}  // namespace lancer
