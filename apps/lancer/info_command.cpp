@@ -6,6 +6,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "info_accel.hpp"
 #include "lancer/mesh/mesh_stats.hpp"
 #include "lancer/mesh/msh_element_types.hpp"
 #include "lancer/mesh/msh_reader.hpp"
@@ -102,7 +103,7 @@ std::string jsonCounts(const Map& counts) {
   return out + "}";
 }
 
-void printJson(const Mesh& mesh, const MeshStats& stats) {
+void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& accelMember) {
   const MeshSourceInfo& source = mesh.source;
   std::string out = "{\n";
   out += fmt::format("  \"file\": {},\n  \"bytes\": {},\n", jsonString(source.path), source.fileBytes);
@@ -145,6 +146,7 @@ void printJson(const Mesh& mesh, const MeshStats& stats) {
         shell.signedVolume);
   }
   out += stats.shells.empty() ? "],\n" : "\n  ],\n";
+  if (!accelMember.empty()) out += accelMember + ",\n";
   out += fmt::format("  \"loadSeconds\": {:.6f}\n}}\n", source.loadSeconds);
   std::fputs(out.c_str(), stdout);
 }
@@ -155,16 +157,27 @@ void addInfoCommand(CLI::App& app, CommandRunner& runner) {
   struct Options {
     std::string file;
     bool json = false;
+    std::string accel;  // empty: no accelerator section
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("info", "Describe a gmsh .msh file as lancer reads it");
   command->add_option("FILE", options->file, "the .msh file")->required();
   command->add_flag("--json", options->json, "machine-readable output");
+  command->add_option("--accel", options->accel, "also build an accelerator (default kdtree-sah) and report its statistics")
+      ->expected(0, 1)
+      ->default_str("kdtree-sah")
+      ->check(CLI::IsMember({"kdtree-sah", "kdtree-median", "naive"}));
   command->callback([&runner, options] {
     runner = [options] {
       const Mesh mesh = readMsh(options->file);
       const MeshStats stats = computeMeshStats(mesh);
-      options->json ? printJson(mesh, stats) : printText(mesh, stats);
+      if (options->json) {
+        printJson(mesh, stats,
+                  options->accel.empty() ? "" : accelStatsJson(buildAccelStats(mesh, parseAccelKind(options->accel))));
+      } else {
+        printText(mesh, stats);
+        if (!options->accel.empty()) std::fputs(accelStatsText(buildAccelStats(mesh, parseAccelKind(options->accel))).c_str(), stdout);
+      }
       return kExitOk;
     };
   });
