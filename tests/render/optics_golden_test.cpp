@@ -1,0 +1,35 @@
+// Golden images of the optics: a mirror ball and a glass ball (Fresnel, absorption, adaptive
+// anti-aliasing) over a checkerboard of quads; gmsh meshes from tests/data/optics/*.geo
+// (scripts/make_optics_fixtures.sh). Regenerate the images with scripts/update_golden.sh.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "lancer/scene/scene_loader.hpp"
+#include "support/golden.hpp"
+#include "support/test_scenes.hpp"
+
+namespace lancer {
+namespace {
+
+// 8-bit PSNR floor: a one-step difference everywhere stays far above it; a reflection or a
+// refraction that moves (wrong normal, wrong index, inward shell) falls far below.
+constexpr double kMinPsnrDb = 38.0;
+
+const std::string kDataDir = LANCER_TEST_DATA_DIR "/optics/";
+
+Image renderSceneFile(const std::string& sceneFile) {
+  const SceneDescription description = loadScene(kDataDir + sceneFile);
+  return test::renderScene(description, buildScene(description));
+}
+
+TEST(OpticsGolden, MirrorBallOverCheckerboard) {
+  test::expectImageNear(renderSceneFile("mirror_ball.toml"), kDataDir + "golden/mirror_ball.png", kMinPsnrDb);
+}
+
+TEST(OpticsGolden, GlassBallOverCheckerboard) {
+  test::expectImageNear(renderSceneFile("glass_ball.toml"), kDataDir + "golden/glass_ball.png", kMinPsnrDb);
+}
+
+}  // namespace
+}  // namespace lancer
