@@ -63,6 +63,10 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
       fmt::print("  {:>10}  {} (type {}): lancer renders up to second order\n", count,
                  mshElementTypeName(type), type);
   }
+  if (source.duplicateElementsSkipped)
+    fmt::print("copies skipped:  {} (MSH 2 repeats an element for each further physical group; the first "
+               "copy is kept)\n",
+               source.duplicateElementsSkipped);
   if (source.degenerateFacesDropped)
     fmt::print("warning: {} degenerate (zero-area) faces dropped\n", source.degenerateFacesDropped);
   fmt::print("physical groups:\n");
@@ -117,6 +121,7 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
                      stats.triangles, stats.quads);
   out += fmt::format("  \"volumeElements\": {},\n  \"skinFaces\": {},\n  \"degenerateFacesDropped\": {},\n",
                      source.volumeElements, source.skinFaces, source.degenerateFacesDropped);
+  out += fmt::format("  \"duplicateElementsSkipped\": {},\n", source.duplicateElementsSkipped);
   out += "  \"physicalGroups\": [";
   for (std::size_t i = 0; i < mesh.physicalGroups.size(); ++i) {
     const PhysicalGroup& group = mesh.physicalGroups[i];

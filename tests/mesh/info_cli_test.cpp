@@ -70,6 +70,8 @@ TEST(InfoCli, JsonReport) {
   EXPECT_TRUE(contains(out, "\"nodes\": 25,")) << out;
   EXPECT_TRUE(contains(out, "\"elementsByType\": {\"1\": 16, \"3\": 16},")) << out;
   EXPECT_TRUE(contains(out, "\"faces\": {\"total\": 16, \"triangles\": 0, \"quads\": 16},")) << out;
+  // gmsh writes each quad once per physical group ("plate", "everything"): 16 second copies skipped.
+  EXPECT_TRUE(contains(out, "\"duplicateElementsSkipped\": 16,")) << out;
   EXPECT_TRUE(contains(out, "{\"dimension\": 2, \"tag\": 1, \"name\": \"plate\", \"faces\": 16}")) << out;
   EXPECT_TRUE(contains(out, "\"boundingBox\": {\"min\": [0, 0, 0], \"max\": [1, 1, 0]},")) << out;
   EXPECT_TRUE(contains(out, "\"area\": 1,")) << out;
@@ -84,6 +86,13 @@ TEST(InfoCli, BrokenFileExitsWithCodeTwoAndOneLine) {
   EXPECT_EQ(
       result.output,
       path + ":107:1: error: element 17 (3-node triangle) uses node 9001, which $Nodes does not define\n");
+}
+
+TEST(InfoCli, DirectoryExitsWithCodeTwo) {
+  const std::string path = test::mshFixture("broken");
+  const CommandResult result = runCli("info '" + path + "'");
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_EQ(result.output, path + ": error: is a directory, not a .msh file\n");
 }
 
 TEST(InfoCli, MissingFileExitsWithCodeTwo) {

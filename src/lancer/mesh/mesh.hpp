@@ -43,6 +43,7 @@ struct MeshSourceInfo {
   std::map<int, std::uint64_t> elementsByType;     // gmsh element type -> count in the file
   std::map<int, std::uint64_t> unrenderableByType;  // element types lancer could not turn into faces
   std::uint64_t degenerateFacesDropped = 0;        // zero-area faces, removed with a warning
+  std::uint64_t duplicateElementsSkipped = 0;      // MSH 2 copies of an element in further physical groups
   std::uint64_t volumeElements = 0;                // volume elements replaced by their skin
   std::uint64_t skinFaces = 0;                     // faces that came from volume elements' skins
   std::uint64_t skinFacesCoveredBySurfaces = 0;    // skin faces already present as surface elements

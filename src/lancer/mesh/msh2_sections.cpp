@@ -52,7 +52,10 @@ class Msh2ElementSink {
     const bool repeat =
         element.type == previousType_ && element.entity == previousEntity_ &&
         std::equal(nodeTags, nodeTags + nodeCount, previousNodes_.begin(), previousNodes_.end());
-    if (!seen_.insert(element.tag) || repeat) return;
+    if (!seen_.insert(element.tag) || repeat) {
+      ++state_.source.duplicateElementsSkipped;
+      return;
+    }
     previousType_ = element.type;
     previousEntity_ = element.entity;
     previousNodes_.assign(nodeTags, nodeTags + nodeCount);
