@@ -14,6 +14,8 @@ double orbitAngleDegrees(const AnimationSettings& animation, int frame) {
 }
 
 Vec3d rotateAbout(const Vec3d& p, const Vec3d& center, const Vec3d& axis, double degrees) {
+  // (p - center) + center is not always p in floating point: frame 0 must be the unmoved scene, bit for bit.
+  if (degrees == 0) return p;
   const Vec3d k = normalize(axis);
   const Vec3d v = p - center;
   const double angle = degrees * std::numbers::pi / 180.0;
@@ -26,9 +28,10 @@ Vec3d orbitCenter(const AnimationSettings& animation, const Scene& scene) {
   return scene.origin + toDouble(scene.bounds.empty() ? Vec3{} : scene.bounds.center());
 }
 
-CameraSettings orbitCamera(const CameraSettings& camera, const AnimationSettings& animation, const Scene& scene,
-                           int imageWidth, int imageHeight, int frame) {
-  const Aabbd worldBounds{scene.origin + toDouble(scene.bounds.lower), scene.origin + toDouble(scene.bounds.upper)};
+CameraSettings orbitCamera(const CameraSettings& camera, const AnimationSettings& animation,
+                           const Scene& scene, int imageWidth, int imageHeight, int frame) {
+  const Aabbd worldBounds{scene.origin + toDouble(scene.bounds.lower),
+                          scene.origin + toDouble(scene.bounds.upper)};
   CameraSettings result = camera;
   const Vec3d sceneCentre = worldBounds.empty() ? Vec3d{} : worldBounds.center();
   const Vec3d position = camera.position.value_or(
@@ -42,8 +45,9 @@ CameraSettings orbitCamera(const CameraSettings& camera, const AnimationSettings
   return result;
 }
 
-AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator, const SceneDescription& description,
-                               const AnimationSettings& animation, const RenderOptions& options,
+AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
+                               const SceneDescription& description, const AnimationSettings& animation,
+                               const RenderOptions& options,
                                const std::function<void(int frame, const Image&)>& onFrame,
                                const std::function<void(const AnimationProgress&)>& onProgress) {
   using Clock = std::chrono::steady_clock;
@@ -51,17 +55,22 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator, con
   const RenderSettings& settings = description.render;
   AnimationStats stats;
   const bool lightOrbit = animation.orbitLight >= 0;
-  const SceneLight originalLight = lightOrbit ? scene.lights.at(static_cast<std::size_t>(animation.orbitLight))
-                                              : SceneLight{};
+  const SceneLight originalLight =
+      lightOrbit ? scene.lights.at(static_cast<std::size_t>(animation.orbitLight)) : SceneLight{};
   const Vec3d centre = orbitCenter(animation, scene);
   for (int frame = 0; frame < animation.frames; ++frame) {
     CameraSettings cameraSettings = description.camera;
     if (lightOrbit) {
-      const Vec3d lightWorld = scene.origin + toDouble(originalLight.position);
-      scene.lights[static_cast<std::size_t>(animation.orbitLight)].position = scene.toSceneSpace(
-          rotateAbout(lightWorld, centre, animation.axis, orbitAngleDegrees(animation, frame)));
+      // Scene space and back is not exact, so the unturned light keeps its own coordinates.
+      const double degrees = orbitAngleDegrees(animation, frame);
+      SceneLight& light = scene.lights[static_cast<std::size_t>(animation.orbitLight)];
+      light = originalLight;
+      if (degrees != 0)
+        light.position = scene.toSceneSpace(
+            rotateAbout(scene.origin + toDouble(originalLight.position), centre, animation.axis, degrees));
     } else {
-      cameraSettings = orbitCamera(description.camera, animation, scene, settings.width, settings.height, frame);
+      cameraSettings =
+          orbitCamera(description.camera, animation, scene, settings.width, settings.height, frame);
     }
     const Camera camera(cameraSettings, scene.origin, scene.bounds, settings.width, settings.height);
     RenderOptions frameOptions = options;

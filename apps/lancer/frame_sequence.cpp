@@ -1,0 +1,62 @@
+#include "frame_sequence.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "lancer/util/input_error.hpp"
+
+namespace lancer::cli {
+
+std::string FramePattern::name(int frame) const {
+  return fmt::format("{}{:0{}d}{}", prefix, frame, width, suffix);
+}
+
+std::optional<FramePattern> parseFramePattern(const std::string& path) {
+  const std::size_t percent = path.find('%');
+  if (percent == std::string::npos) return std::nullopt;
+  FramePattern pattern;
+  pattern.prefix = path.substr(0, percent);
+  std::size_t i = percent + 1;
+  const std::size_t digitsStart = i;
+  while (i < path.size() && std::isdigit(static_cast<unsigned char>(path[i]))) ++i;
+  if (i >= path.size() || path[i] != 'd' || (i > digitsStart && path[digitsStart] != '0') ||
+      i - digitsStart > 2)
+    throw InputError(SourceLocation{path},
+                     "a frame-sequence name needs one %d or %0Nd (e.g. frame_%04d.png)");
+  if (i > digitsStart) pattern.width = std::stoi(path.substr(digitsStart, i - digitsStart));
+  pattern.suffix = path.substr(i + 1);
+  if (pattern.suffix.find('%') != std::string::npos)
+    throw InputError(SourceLocation{path}, "a frame-sequence name may hold only one %d");
+  return pattern;
+}
+
+StagedFrames::~StagedFrames() {
+  for (const auto& [hidden, target] : staged_) std::remove(hidden.c_str());
+}
+
+void StagedFrames::write(const std::string& target, const Image& image, const ImageWriteOptions& options) {
+  const std::filesystem::path path(target);
+  // The hidden name keeps the extension, which selects the format.
+  const std::string hidden =
+      (path.parent_path() / fmt::format(".lancer-{}-{}", ::getpid(), path.filename().string())).string();
+  writeImage(hidden, image, options);
+  staged_.emplace_back(hidden, target);
+}
+
+void StagedFrames::publish() {
+  for (auto it = staged_.begin(); it != staged_.end(); it = staged_.erase(it)) {
+    if (std::rename(it->first.c_str(), it->second.c_str()) != 0)
+      throw InputError(
+          SourceLocation{it->second},
+          fmt::format("cannot rename {} into place: {}; this frame and the later ones were not written",
+                      it->first, std::strerror(errno)));
+  }
+}
+
+}  // namespace lancer::cli
