@@ -8,24 +8,31 @@
 namespace lancer {
 namespace {
 
-// Twice the area of a face, in double from the float positions (the vector area of a quad's diagonals).
-double twiceArea(const std::vector<Vec3>& p, const MeshFace& face) {
+// A face is degenerate as the renderer will see it (float positions) when its area is zero up to
+// rounding: twice its area below 1e-12 times its longest edge squared. Both sides are compared
+// squared, in double: no square root, no division, once per face of a million-face load.
+inline double maxOf(double a, double b) { return a > b ? a : b; }
+
+bool isDegenerateTriangle(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  const Vec3d ab = b - a, bc = c - b, ca = a - c;
+  const Vec3d normal = cross(ab, bc);  // = (b - a) x (c - a): twice the vector area
+  const double longest = maxOf(maxOf(dot(ab, ab), dot(bc, bc)), dot(ca, ca));
+  return !(dot(normal, normal) > 1e-24 * longest * longest);  // NaN counts as degenerate
+}
+
+bool isDegenerateQuad(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& d) {
+  const Vec3d ab = b - a, bc = c - b, cd = d - c, da = a - d;
+  const Vec3d normal = cross(c - a, d - b);  // twice the vector area of the quad (its diagonals)
+  const double longest = maxOf(maxOf(dot(ab, ab), dot(bc, bc)), maxOf(dot(cd, cd), dot(da, da)));
+  return !(dot(normal, normal) > 1e-24 * longest * longest);
+}
+
+bool isDegenerate(const Vec3* p, const MeshFace& face) {
   const Vec3d a = toDouble(p[face.vertex[0]]);
   const Vec3d b = toDouble(p[face.vertex[1]]);
   const Vec3d c = toDouble(p[face.vertex[2]]);
-  if (!face.isQuad()) return length(cross(b - a, c - a));
-  const Vec3d d = toDouble(p[face.vertex[3]]);
-  return length(cross(c - a, d - b));
-}
-
-double longestEdgeSquared(const std::vector<Vec3>& p, const MeshFace& face) {
-  double longest = 0;
-  const int n = face.cornerCount();
-  for (int i = 0; i < n; ++i) {
-    const Vec3d e = toDouble(p[face.vertex[(i + 1) % n]]) - toDouble(p[face.vertex[i]]);
-    longest = std::max(longest, dot(e, e));
-  }
-  return longest;
+  if (!face.isQuad()) return isDegenerateTriangle(a, b, c);
+  return isDegenerateQuad(a, b, c, toDouble(p[face.vertex[3]]));
 }
 
 }  // namespace
@@ -142,28 +149,31 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   std::vector<std::uint8_t> usedNode(coords.size(), 0);
   for (const MeshFace& face : faces_)
     for (int c = 0; c < face.cornerCount(); ++c) usedNode[face.vertex[c]] = 1;
-  std::vector<std::uint32_t> remap;
-  remap.reserve(coords.size());
-  adviseHugePages(remap);
   Aabbd box;
   std::uint32_t usedCount = 0;
   for (std::size_t i = 0; i < coords.size(); ++i) {
-    remap.push_back(usedNode[i] ? usedCount : kNoVertex);
     if (usedNode[i]) {
       ++usedCount;
       box.extend(coords[i]);
     }
+  }
+  // Usually every node is used and indices stay as they are; otherwise faces are renumbered.
+  const bool identity = usedCount == coords.size();
+  std::vector<std::uint32_t> remap;  // file-order index -> mesh vertex; empty for the identity
+  if (!identity) {
+    remap.reserve(coords.size());
+    adviseHugePages(remap);
+    std::uint32_t next = 0;
+    for (std::size_t i = 0; i < coords.size(); ++i) remap.push_back(usedNode[i] ? next++ : kNoVertex);
   }
   Mesh mesh;
   mesh.origin = box.empty() ? Vec3d{} : box.center();
   mesh.positions.reserve(usedCount);
   adviseHugePages(mesh.positions);
   for (std::size_t i = 0; i < coords.size(); ++i)
-    if (usedNode[i]) mesh.positions.push_back(toFloat(coords[i] - mesh.origin));
+    if (identity || usedNode[i]) mesh.positions.push_back(toFloat(coords[i] - mesh.origin));
 
-  // Drop the faces that are degenerate as the renderer will see them (float positions): zero area up
-  // to rounding, i.e. a height below 1e-12 of the longest edge.
-  const bool identity = usedCount == coords.size();
+  // Drop the faces that are degenerate as the renderer will see them (isDegenerate above).
   const std::vector<Vec3>& positions = mesh.positions;
   constexpr std::size_t kPrefetchDistance = 16;  // faces ahead: the position reads are random
   std::size_t kept = 0;
@@ -177,11 +187,13 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
     MeshFace face = faces_[f];
     if (!identity)
       for (int c = 0; c < face.cornerCount(); ++c) face.vertex[c] = remap[face.vertex[c]];
-    if (!(twiceArea(positions, face) > 1e-12 * longestEdgeSquared(positions, face))) continue;
-    faces_[kept] = face;
-    facePhysical_[kept] = facePhysical_[f];
-    faceEntity_[kept] = faceEntity_[f];
-    faceEdgeMask_[kept] = faceEdgeMask_[f];
+    if (isDegenerate(positions.data(), face)) continue;
+    if (kept != f || !identity) {  // until the first drop, nothing moves
+      faces_[kept] = face;
+      facePhysical_[kept] = facePhysical_[f];
+      faceEntity_[kept] = faceEntity_[f];
+      faceEdgeMask_[kept] = faceEdgeMask_[f];
+    }
     ++kept;
   }
   source.degenerateFacesDropped = faces_.size() - kept;
