@@ -192,6 +192,10 @@ template <typename Query>
 void traceBenchmark(benchmark::State& state, const RaySet& set, int threads, Query&& query) {
   double seconds = 0;
   std::atomic<std::uint64_t> hits{0};
+#ifdef LANCER_KD_COUNTERS
+  // Profiling builds (-DLANCER_KD_COUNTERS): work per ray of the calling thread (all of it at 1 thread).
+  kdTraversalCounters() = {};
+#endif
   for (auto _ : state) {
     hits = 0;
     const double s = runChunked(set.rays.size(), threads, [&](std::size_t begin, std::size_t end) {
@@ -206,6 +210,14 @@ void traceBenchmark(benchmark::State& state, const RaySet& set, int threads, Que
   state.counters["Mrays_per_s"] = rays / seconds * 1e-6;
   state.counters["hit_fraction"] = double(hits) / double(set.rays.size());
   state.counters["rays"] = double(set.rays.size());
+#ifdef LANCER_KD_COUNTERS
+  const KdTraversalCounters& c = kdTraversalCounters();
+  if (threads == 1 && c.rays > 0) {
+    state.counters["inner_per_ray"] = double(c.innerNodes) / double(c.rays);
+    state.counters["leaves_per_ray"] = double(c.leaves) / double(c.rays);
+    state.counters["tests_per_ray"] = double(c.triangleTests) / double(c.rays);
+  }
+#endif
 }
 
 inline void registerLancer(const std::string& kind, const std::string& mesh) {

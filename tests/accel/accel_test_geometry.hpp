@@ -161,8 +161,13 @@ inline std::vector<TestRay> adversarialRays(const Soup& soup, const KdTree& tree
   std::uniform_int_distribution<std::uint32_t> anyFace(0, static_cast<std::uint32_t>(soup.faces.size() - 1));
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   std::vector<float> splits[3];
-  for (const KdNode& node : tree.nodes()) {
-    if (!node.isLeaf()) splits[node.axis()].push_back(node.split());
+  for (std::vector<std::uint32_t> stack{0}; !stack.empty();) {
+    const KdNode node = tree.layout()[stack.back()];
+    stack.pop_back();
+    if (node.isLeaf()) continue;
+    splits[node.axis()].push_back(node.split());
+    stack.push_back(node.firstChild());
+    stack.push_back(node.firstChild() + 1);
   }
   auto pickSplit = [&](int axis, float fallback) {
     if (splits[axis].empty()) return fallback;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <random>
+#include <set>
 #include <stdexcept>
 
 #include "accel/accel_test_geometry.hpp"
@@ -70,8 +71,8 @@ TEST(KdTree, LayoutInvariants) {
   std::mt19937 rng(3);
   const Soup soup = test::randomSoup(rng, 2000);
   for (const KdTree& tree : {KdTree::buildSah(soup.positions, soup.faces), KdTree::buildMedian(soup.positions, soup.faces)}) {
-    const auto nodes = tree.nodes();
-    std::vector<int> seen(tree.triangles().size());
+    const auto nodes = tree.layout();
+    std::set<std::uint32_t> seen;
     std::uint64_t leaves = 0, inner = 0;
     std::vector<std::uint32_t> stack{0};
     while (!stack.empty()) {
@@ -79,9 +80,10 @@ TEST(KdTree, LayoutInvariants) {
       stack.pop_back();
       if (node.isLeaf()) {
         ++leaves;
-        if (node.triangleCount() == 1) ++seen.at(node.payload);
-        if (node.triangleCount() > 1) {
-          for (std::uint32_t k = 0; k < node.triangleCount(); ++k) ++seen.at(tree.leafTriangles()[node.payload + k]);
+        for (std::uint32_t offset : tree.leafTriangles(node)) {
+          ASSERT_LE(offset + KdTree::kTriangleWords, nodes.size());
+          ASSERT_LT(tree.triangleAt(offset).face, soup.faces.size());
+          seen.insert(offset);
         }
       } else {
         ++inner;
@@ -93,7 +95,11 @@ TEST(KdTree, LayoutInvariants) {
     }
     EXPECT_EQ(inner + leaves, tree.stats().nodes);
     EXPECT_EQ(leaves, tree.stats().leaves);
-    EXPECT_EQ(std::count(seen.begin(), seen.end(), 0), 0) << "every triangle is in some leaf";
+    EXPECT_EQ(seen.size() + tree.slivers().size(), tree.stats().triangles) << "every triangle is in some leaf";
+    std::set<std::uint32_t> faces;
+    for (std::uint32_t offset : seen) faces.insert(tree.triangleAt(offset).face);
+    for (const PackedTriangle& t : tree.slivers()) faces.insert(t.face);
+    EXPECT_EQ(faces.size(), soup.faces.size()) << "every face is in the tree";
     EXPECT_LE(tree.stats().depth, static_cast<std::uint64_t>(KdTree::kMaxDepth));
   }
 }
@@ -108,8 +114,7 @@ TEST(KdTree, StatsDescribeTheTree) {
   EXPECT_GT(s.depth, 5u);
   EXPECT_GT(s.meanTrianglesPerLeaf, 0.9);
   EXPECT_GT(s.sahCost, 0.0);
-  EXPECT_EQ(s.bytes, tree.nodes().size() * sizeof(KdNode) + tree.leafTriangles().size() * sizeof(std::uint32_t) +
-                     (tree.triangles().size() + tree.slivers().size()) * sizeof(PackedTriangle));
+  EXPECT_EQ(s.bytes, tree.layout().size() * sizeof(KdNode) + tree.slivers().size() * sizeof(PackedTriangle));
   EXPECT_LE(s.bytesPerTriangle(), 80.0) << "the bench meshes take under 64; a UV sphere is less kind";
   EXPECT_GE(s.buildSeconds, 0.0);
   // The SAH tree beats the median tree on its own cost model.

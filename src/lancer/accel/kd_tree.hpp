@@ -60,18 +60,34 @@ class KdTree {
   const AccelStats& stats() const { return stats_; }
   const Aabb& bounds() const { return bounds_; }
 
-  // The layout, read by the builders' shared finishing step and by tests.
-  std::span<const KdNode> nodes() const { return nodes_; }
-  std::span<const std::uint32_t> leafTriangles() const { return leafTriangles_; }
-  std::span<const PackedTriangle> triangles() const { return triangles_; }
+  // The layout, for tests: one stream of 8-byte words holding the nodes, the leaves' triangle
+  // lists and the triangles themselves (see layout_). Only entries reached from the root at 0
+  // are nodes; walk it with the accessors below.
+  std::span<const KdNode> layout() const { return layout_; }
+  // A leaf's triangles, as word offsets into the layout.
+  std::span<const std::uint32_t> leafTriangles(const KdNode& leaf) const {
+    if (leaf.triangleCount() <= 1) return {&leaf.payload, leaf.triangleCount()};
+    return {reinterpret_cast<const std::uint32_t*>(layout_.data() + leaf.payload), leaf.triangleCount()};
+  }
+  const PackedTriangle& triangleAt(std::uint32_t offset) const {
+    return *reinterpret_cast<const PackedTriangle*>(layout_.data() + offset);
+  }
   std::span<const PackedTriangle> slivers() const { return slivers_; }
+
+  // Words a triangle takes in the layout.
+  static constexpr std::uint32_t kTriangleWords = sizeof(PackedTriangle) / sizeof(KdNode);
+  static_assert(sizeof(PackedTriangle) % sizeof(KdNode) == 0 && alignof(PackedTriangle) <= alignof(KdNode));
 
  private:
   friend class KdTreeAssembler;
 
-  std::vector<KdNode> nodes_;                 // root at 0, a pad, then children in adjacent pairs
-  std::vector<std::uint32_t> leafTriangles_;  // triangle indices of the leaves with 2+ triangles
-  std::vector<PackedTriangle> triangles_;     // in the order the leaves first reference them
+  // Depth first from the root at 0 (then a pad): each inner node's child pair (16-byte aligned),
+  // followed at once by what its leaf children hold: the list of a leaf of 2+ triangles (32-bit
+  // word offsets, padded to whole words) and every triangle not already placed by an earlier leaf.
+  // A ray that reaches a leaf so finds its list and most of its triangles in the cache lines
+  // next to the node, instead of paying three dependent misses in three separate arrays. The
+  // triangles are read in place (trivially copyable data written by memcpy, never modified).
+  std::vector<KdNode> layout_;
   // Near-degenerate triangles, whose Moller-Trumbore hits can land far from the triangle: tested
   // for every ray (outside the tree) so answers still equal brute force. Empty for sane meshes.
   std::vector<PackedTriangle> slivers_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -87,56 +88,83 @@ BuildNode* BuildArena::inner(int axis, float split, BuildNode* left, BuildNode* 
 namespace {
 
 struct Layout {
-  std::vector<KdNode> nodes;
-  std::vector<std::uint32_t> leafTriangles;
-  std::vector<std::uint32_t> newIndex;  // build triangle id -> final index, or kUnset
-  std::vector<std::uint32_t> order;     // final index -> build triangle id
+  std::vector<KdNode> words;                 // the tree's layout_ stream
+  std::vector<std::uint32_t> triangleWord;   // build triangle id -> word offset, or kUnset
+  const std::vector<PackedTriangle>* triangles = nullptr;
   AccelStats stats;
   double rootArea = 0;
   float traversalCost = 0, intersectionCost = 0;
 
   static constexpr std::uint32_t kUnset = 0xFFFFFFFFu;
 
-  std::uint32_t renumber(std::uint32_t triangle) {
-    if (newIndex[triangle] == kUnset) {
-      newIndex[triangle] = static_cast<std::uint32_t>(order.size());
-      order.push_back(triangle);
+  std::uint32_t allocate(std::size_t count) {
+    const std::size_t at = words.size();
+    if (at + count > KdNode::kMaxIndex) {
+      throw std::length_error("kd-tree: layout over " + std::to_string(KdNode::kMaxIndex) + " words");
     }
-    return newIndex[triangle];
+    words.resize(at + count);
+    return static_cast<std::uint32_t>(at);
+  }
+
+  // Child pairs start at even words, so a pair never straddles a 16-byte block (nor a cache line).
+  std::uint32_t allocatePair() {
+    if (words.size() % 2) allocate(1);
+    return allocate(2);
+  }
+
+  // The triangle's offset, writing it at the end of the stream the first time a leaf uses it.
+  std::uint32_t placeTriangle(std::uint32_t triangle) {
+    if (triangleWord[triangle] == kUnset) {
+      const std::uint32_t at = allocate(KdTree::kTriangleWords);
+      std::memcpy(static_cast<void*>(words.data() + at), &(*triangles)[triangle], sizeof(PackedTriangle));
+      triangleWord[triangle] = at;
+    }
+    return triangleWord[triangle];
+  }
+
+  void placeLeaf(std::uint32_t index, const BuildNode& node) {
+    const std::uint32_t* tris = node.arena->leafTriangles.data() + node.first;
+    if (node.count == 0) {
+      ++stats.emptyLeaves;
+      words[index] = KdNode::leaf(0, 0);
+    } else if (node.count == 1) {
+      const std::uint32_t offset = placeTriangle(tris[0]);
+      words[index] = KdNode::leaf(offset, 1);
+    } else {
+      const std::uint32_t list = allocate((node.count + 1) / 2);
+      for (std::uint32_t i = 0; i < node.count; ++i) {
+        const std::uint32_t offset = placeTriangle(tris[i]);  // may grow `words`: index afresh
+        std::memcpy(reinterpret_cast<char*>(words.data() + list) + i * sizeof(std::uint32_t), &offset, sizeof offset);
+      }
+      words[index] = KdNode::leaf(list, node.count);
+    }
   }
 
   void place(std::uint32_t index, const BuildNode& node, const Aabb& box, std::uint64_t depth) {
     ++stats.nodes;
     const double area = rootArea > 0 ? double(box.surfaceArea()) / rootArea : 0.0;
     if (node.axis < 0) {
-      const std::uint32_t* tris = node.arena->leafTriangles.data() + node.first;
       ++stats.leaves;
       stats.depth = std::max(stats.depth, depth);
       stats.triangleReferences += node.count;
       stats.sahCost += intersectionCost * double(node.count) * area;
-      if (node.count == 0) {
-        ++stats.emptyLeaves;
-        nodes[index] = KdNode::leaf(0, 0);
-      } else if (node.count == 1) {
-        nodes[index] = KdNode::leaf(renumber(tris[0]), 1);
-      } else {
-        nodes[index] = KdNode::leaf(static_cast<std::uint32_t>(leafTriangles.size()), node.count);
-        for (std::uint32_t i = 0; i < node.count; ++i) leafTriangles.push_back(renumber(tris[i]));
-      }
+      placeLeaf(index, node);
       return;
     }
     stats.sahCost += traversalCost * area;
-    // Depth-first: a left child's pair follows its parent's. (Grouping a pair with its children's
-    // pairs in 64-byte lines, so a ray descends two levels per cache miss, measured no faster on
-    // the 1M bracket, within noise, so it is not done.)
-    const auto children = static_cast<std::uint32_t>(nodes.size());
-    nodes.resize(nodes.size() + 2);
-    nodes[index] = KdNode::inner(node.axis, node.split, children);
-    Aabb left = box, right = box;
-    left.upper[node.axis] = node.split;
-    right.lower[node.axis] = node.split;
-    place(children, *node.child[0], left, depth + 1);
-    place(children + 1, *node.child[1], right, depth + 1);
+    // Depth-first, leaf children first: their lists and triangles land right after the pair.
+    // (Grouping a pair with its children's pairs in 64-byte lines, so a ray descends two levels per
+    // cache miss, measured no faster on the 1M bracket, within noise, so it is not done.)
+    const std::uint32_t children = allocatePair();
+    words[index] = KdNode::inner(node.axis, node.split, children);
+    Aabb childBox[2] = {box, box};
+    childBox[0].upper[node.axis] = node.split;
+    childBox[1].lower[node.axis] = node.split;
+    for (int leafPass : {1, 0}) {
+      for (int k = 0; k < 2; ++k) {
+        if ((node.child[k]->axis < 0) == bool(leafPass)) place(children + k, *node.child[k], childBox[k], depth + 1);
+      }
+    }
   }
 };
 
@@ -157,26 +185,24 @@ Aabb paddedBounds(const Aabb& box) {
 KdTree KdTreeAssembler::assemble(const BuildNode& root, KdBuildInput&& input, const KdBuildOptions& options,
                                  std::string kind, double buildSeconds) {
   Layout layout;
-  layout.newIndex.assign(input.triangles.size(), Layout::kUnset);
-  layout.order.reserve(input.triangles.size());
+  layout.triangleWord.assign(input.triangles.size(), Layout::kUnset);
+  layout.triangles = &input.triangles;
   layout.rootArea = input.bounds.surfaceArea();
   layout.traversalCost = options.traversalCost;
   layout.intersectionCost = options.intersectionCost;
-  // Root alone at 0, a pad at 1, then sibling pairs at even indices: a pair shares a 16-byte block.
-  layout.nodes.resize(2);
-  layout.nodes[1] = KdNode::leaf(0, 0);
+  // Up to 8 words of nodes and lists per triangle reference plus the triangles: one allocation.
+  layout.words.reserve(input.triangles.size() * (KdTree::kTriangleWords + 4) + 16);
+  // Root alone at 0, a pad at 1, then sibling pairs at even words.
+  layout.allocate(2);
+  layout.words[1] = KdNode::leaf(0, 0);
   layout.place(0, root, input.bounds, 0);
 
   KdTree tree;
-  tree.triangles_.reserve(layout.order.size());
-  for (std::uint32_t id : layout.order) tree.triangles_.push_back(input.triangles[id]);
-  tree.nodes_ = std::move(layout.nodes);
-  tree.leafTriangles_ = std::move(layout.leafTriangles);
+  tree.layout_ = std::move(layout.words);
+  tree.layout_.shrink_to_fit();
   tree.slivers_ = std::move(input.slivers);
   tree.bounds_ = paddedBounds(input.bounds);
   if (!input.bounds.empty()) tree.magnitude_ = std::max(maxComponent(abs(input.bounds.lower)), maxComponent(abs(input.bounds.upper)));
-  tree.nodes_.shrink_to_fit();
-  tree.leafTriangles_.shrink_to_fit();
 
   AccelStats& stats = tree.stats_;
   stats = layout.stats;
@@ -186,8 +212,7 @@ KdTree KdTreeAssembler::assemble(const BuildNode& root, KdBuildInput&& input, co
   const std::uint64_t filled = stats.leaves - stats.emptyLeaves;
   stats.meanTrianglesPerLeaf = filled ? double(stats.triangleReferences) / double(filled) : 0.0;
   stats.buildSeconds = buildSeconds;
-  stats.bytes = tree.nodes_.capacity() * sizeof(KdNode) + tree.leafTriangles_.capacity() * sizeof(std::uint32_t) +
-                (tree.triangles_.capacity() + tree.slivers_.capacity()) * sizeof(PackedTriangle);
+  stats.bytes = tree.layout_.capacity() * sizeof(KdNode) + tree.slivers_.capacity() * sizeof(PackedTriangle);
   return tree;
 }
 

@@ -73,8 +73,7 @@ struct AnyHit {
 // Walks the tree; Query::test returns true to stop (any hit). `bound` reads the current pruning
 // distance: the closest hit so far, or tMax for any-hit.
 template <typename Query, typename Bound>
-bool walk(std::span<const KdNode> nodes, std::span<const std::uint32_t> leafTriangles,
-          std::span<const PackedTriangle> triangles, const Aabb& bounds, float magnitude, const Ray& ray, float tMin,
+bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, const Ray& ray, float tMin,
           float tMax, Query& query, Bound bound) {
   float tEnter, tExit;
   if (!intersectAabb(bounds, ray, tMin, tMax, tEnter, tExit)) return false;
@@ -91,7 +90,7 @@ bool walk(std::span<const KdNode> nodes, std::span<const std::uint32_t> leafTria
   std::uint32_t mailbox[kMailboxSize];
   std::fill(std::begin(mailbox), std::end(mailbox), 0xFFFFFFFFu);
   int top = 0;
-  const KdNode* base = nodes.data();
+  const KdNode* base = layout.data();
   const KdNode* node = base;
   while (true) {
     while (!node->isLeaf()) {
@@ -113,13 +112,24 @@ bool walk(std::span<const KdNode> nodes, std::span<const std::uint32_t> leafTria
         node = second;
       } else {
         stack[top++] = {static_cast<std::uint32_t>(second - base), tNear > tEnter ? tNear : tEnter, tExit};
+        // The far child's children lie far away in memory (depth-first layout): start their fetch
+        // now, so the miss overlaps the near subtree's work instead of stalling the pop.
+        if (!second->isLeaf()) __builtin_prefetch(base + second->firstChild());
         node = first;
         tExit = tFar < tExit ? tFar : tExit;
       }
     }
     const std::uint32_t count = node->triangleCount();
     LANCER_KD_COUNT(leaves);
-    const std::uint32_t* index = count == 1 ? &node->payload : leafTriangles.data() + node->payload;
+    // Word offsets of the leaf's triangles: in the node itself for one, else a list in the layout.
+    const std::uint32_t* index =
+        count == 1 ? &node->payload : reinterpret_cast<const std::uint32_t*>(base + node->payload);
+    // Fetch all of the leaf's triangles at once (independent misses overlap) before testing them.
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const char* tri = reinterpret_cast<const char*>(base + index[i]);
+      __builtin_prefetch(tri);
+      __builtin_prefetch(tri + sizeof(PackedTriangle) - 1);
+    }
     for (std::uint32_t i = 0; i < count; ++i) {
       const std::uint32_t triangle = index[i];
       // Mailbox (Amanatides & Woo 1987; Havran's thesis 5.2): a triangle split into several leaves
@@ -129,7 +139,7 @@ bool walk(std::span<const KdNode> nodes, std::span<const std::uint32_t> leafTria
       if (slot == triangle) continue;
       slot = triangle;
       LANCER_KD_COUNT(triangleTests);
-      if (query.test(triangles[triangle], ray, tMin, tMax)) return true;
+      if (query.test(*reinterpret_cast<const PackedTriangle*>(base + triangle), ray, tMin, tMax)) return true;
     }
     // Cells further than the best hit (plus slack) cannot hold a closer or tied hit.
     do {
@@ -148,7 +158,7 @@ bool KdTree::intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
   LANCER_KD_COUNT(rays);
   ClosestHit query{Hit{tMax, Hit{}.face}, tMax};
   for (const PackedTriangle& tri : slivers_) query.test(tri, ray, tMin, tMax);
-  walk(nodes_, leafTriangles_, triangles_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return query.best.t; });
+  walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return query.best.t; });
   if (!query.best.valid()) return false;
   hit = query.best;
   return true;
@@ -160,7 +170,7 @@ bool KdTree::occluded(const Ray& ray, float tMin, float tMax) const {
   for (const PackedTriangle& tri : slivers_) {
     if (query.test(tri, ray, tMin, tMax)) return true;
   }
-  return walk(nodes_, leafTriangles_, triangles_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return tMax; });
+  return walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return tMax; });
 }
 
 }  // namespace lancer
