@@ -31,5 +31,17 @@ TEST(OpticsGolden, GlassBallOverCheckerboard) {
   test::expectImageNear(renderSceneFile("glass_ball.toml"), kDataDir + "golden/glass_ball.png", kMinPsnrDb);
 }
 
+TEST(OpticsGolden, ExampleSceneBuildsWithItsSolidsOriented) {
+  // examples/glass_and_mirror.toml (the README's picture): three balls and a block are solids,
+  // the checkerboard is an open surface.
+  const SceneDescription description = loadScene(LANCER_SOURCE_DIR "/examples/glass_and_mirror.toml");
+  const Scene scene = buildScene(description);
+  std::size_t solidFaces = 0;
+  for (std::uint8_t solid : scene.faceBoundsSolid) solidFaces += solid;
+  const std::size_t floorFaces = 400;  // 10 x 10 squares of 2 x 2 quads
+  EXPECT_EQ(solidFaces, scene.faces.size() - floorFaces);
+  EXPECT_EQ(description.render.sampler, SamplerKind::Adaptive);
+}
+
 }  // namespace
 }  // namespace lancer
