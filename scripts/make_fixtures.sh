@@ -80,18 +80,21 @@ for spec in "msh41 ascii" "msh41 bin" "msh22 ascii" "msh22 bin"; do
   mesh sparse_tags two_plates 2 $spec -setnumber Mesh.Renumber 0
 done
 
-# Post-processing data ($InterpolationScheme, $NodeData) after the mesh, as gmsh's Save View writes it.
-for spec in "4.1 1 v41_bin" "2.2 0 v22_ascii"; do
-  read -r version binary suffix <<<"$spec"
+# Post-processing data ($InterpolationScheme, $NodeData or $ElementData) after the mesh, as gmsh's
+# Save View writes it.
+for spec in "nodedata NodeData 4.1 1 v41_bin" "nodedata NodeData 2.2 0 v22_ascii" \
+            "elementdata ElementData 4.1 0 v41_ascii" "elementdata ElementData 2.2 1 v22_bin"; do
+  read -r name type version binary suffix <<<"$spec"
   cat >"$out/nodedata.geo" <<GEO
 Include "../geo/square.geo";
 Mesh 2;
 Plugin(NewView).NumComp = 1;
+Plugin(NewView).Type = "$type";
 Plugin(NewView).Run;
 PostProcessing.SaveMesh = 1;
 Mesh.MshFileVersion = $version;
 Mesh.Binary = $binary;
-Save View[0] "nodedata_$suffix.msh";
+Save View[0] "${name}_$suffix.msh";
 GEO
   (cd "$out" && quiet gmsh nodedata.geo -0 -o nodedata.geo_unrolled)
   rm -f "$out/nodedata.geo" "$out/nodedata.geo_unrolled"

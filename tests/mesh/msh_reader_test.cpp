@@ -75,6 +75,8 @@ const FixtureCase kFixtures[] = {
     {"square_tri3_v41_ascii_extras.msh", "4.1", false, 32, 0, 1, kZero, kSquareTop, false},
     {"nodedata_v41_bin.msh", "4.1", true, 32, 0, 1, kZero, kSquareTop, false},
     {"nodedata_v22_ascii.msh", "2.2", false, 32, 0, 1, kZero, kSquareTop, false},
+    {"elementdata_v41_ascii.msh", "4.1", false, 32, 0, 1, kZero, kSquareTop, false},
+    {"elementdata_v22_bin.msh", "2.2", true, 32, 0, 1, kZero, kSquareTop, false},
     {"square_quad4_v22_ascii.msh", "2.2", false, 0, 16, 1, kZero, kSquareTop, false},
     {"square_quad4_v22_bin.msh", "2.2", true, 0, 16, 1, kZero, kSquareTop, false},
     {"square_quad4_v40_ascii.msh", "4.0", false, 0, 16, 1, kZero, kSquareTop, false},
