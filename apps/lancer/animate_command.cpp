@@ -2,6 +2,8 @@
 // accelerator build serves every frame. Output: an animated GIF, an animated PNG, or numbered frames.
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <optional>
 
@@ -41,6 +43,21 @@ int parseOrbit(const std::string& orbit, std::size_t lightCount) {
       fmt::format("'{}' is not an orbit: use 'camera' or 'light:K' with K from 0 to {} (the scene has "
                   "{} light{})",
                   orbit, lightCount == 0 ? 0 : lightCount - 1, lightCount, lightCount == 1 ? "" : "s"));
+}
+
+// A global palette needs every frame before the first can be written, so the GIF writer keeps them
+// all (3 bytes per pixel). Refused up front when that would take more than half the machine's memory.
+void checkGlobalPaletteMemory(int frames, int width, int height) {
+  const double bytes = 3.0 * frames * width * height;
+  const double memory =
+      static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
+  if (memory > 0 && bytes > 0.5 * memory)
+    throw InputError(
+        SourceLocation{"--palette"},
+        fmt::format("a global GIF palette keeps every frame until the end: {} frames of {}x{} need "
+                    "{:.1f} GiB, more than half of this machine's {:.1f} GiB; use --palette per-frame "
+                    "(frames are then written as they come), fewer frames or a smaller size",
+                    frames, width, height, bytes / (1 << 30), memory / (1 << 30)));
 }
 
 int runAnimate(const AnimateCommandOptions& options) {
@@ -83,6 +100,8 @@ int runAnimate(const AnimateCommandOptions& options) {
         options.dither == "none"
             ? Dither::None
             : (options.dither == "floyd-steinberg" ? Dither::FloydSteinberg : Dither::Ordered);
+    if (gifOptions.palette == GifPalette::Global)
+      checkGlobalPaletteMemory(animation.frames, settings.width, settings.height);
     gif.emplace(output, settings.width, settings.height, gifOptions);  // fails now on a bad folder
     if (!options.overrides.quiet && std::abs(gifActualFrameRate(animation.fps) - animation.fps) > 1e-9)
       std::fprintf(stderr,

@@ -51,6 +51,10 @@ TEST(AnimateCliBadInput, OptionsAreClearErrors) {
       {"-o " + quoted(folder.file("missing/t.gif")), "the folder"},
       {"-o " + quoted(folder.file("missing/f_%04d.png")), "the folder"},
       {"", "no output: give -o FILE.gif or -o frame_%04d.png"},
+      {"--frames 10000 --width 8000 --height 8000 -o " + quoted(out),
+       "--palette: error: a global GIF palette keeps every frame until the end: 10000 frames of 8000x8000 "
+       "need "
+       "1788.1 GiB, more than half of this machine's"},
   };
   for (const BadCase& bad : cases) {
     SCOPED_TRACE(bad.options);
