@@ -1,6 +1,7 @@
 // Reflection and refraction against closed forms: the interface laws themselves, a glass slab's
 // parallel exit and lateral shift, total internal reflection in a right-angle prism on either side
-// of the critical angle, depth 0 equal to the local model, and energy that recursion cannot create.
+// of the critical angle, coloured and absorbed shadows, depth 0 equal to the local model, and energy
+// that recursion cannot create.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -193,6 +194,49 @@ TEST(OpticsAnalytic, TotalInternalReflectionPastTheCriticalAngle) {
     EXPECT_FLOAT_EQ(seen.x, 1.0f) << "n = " << ior << ": expected refraction through the hypotenuse";
     EXPECT_FLOAT_EQ(seen.y, 0.0f);
   }
+}
+
+// ---- coloured shadows -------------------------------------------------------------------------------
+
+// The floor's value at (0.53, 0, 0) under a light at (0, 0, 10), seen straight down: white, diffuse
+// only, so the value is cos(theta) times what the shadow ray lets through. The shadow ray crosses
+// the occluder near x = 0.48, while the camera ray at x = 0.53 misses it.
+Vec3 floorUnder(const Material& occluder, Mesh occluderMesh) {
+  Material floor = emitter("floor", {0, 0, 0});
+  floor.kd = {1, 1, 1};
+  SceneDescription d = ambientOnly({floor, occluder});
+  d.ambient = {0, 0, 0};
+  d.render.maxDepth = 0;
+  d.lights = {{{0, 0, 10}, {1, 1, 1}, {1, 0, 0}}};
+  d.meshes.resize(2);
+  d.meshes[1].material = 1;
+  const RayProbe probe(d, {test::squareMesh(-3, -3, 3, 3, 0), std::move(occluderMesh)});
+  return probe.trace({0.53, 0, 5}, {0, 0, -1});
+}
+
+TEST(OpticsAnalytic, ShadowsThroughTransparentFacesAreColouredAndAbsorbed) {
+  const double cosTheta = 10 / std::sqrt(100 + 0.53 * 0.53);
+  // An open transparent sheet: transparency times its colour scaled to the brightest channel.
+  Material sheet = clearGlass(1.5f);
+  sheet.transparency = 0.5f;
+  sheet.kd = {0.2f, 0.4f, 0.8f};
+  const Vec3 tinted = floorUnder(sheet, test::squareMesh(-0.5f, -0.5f, 0.5f, 0.5f, 1));
+  EXPECT_NEAR(tinted.x, cosTheta * 0.5 * 0.25, 1e-5);
+  EXPECT_NEAR(tinted.y, cosTheta * 0.5 * 0.5, 1e-5);
+  EXPECT_NEAR(tinted.z, cosTheta * 0.5 * 1.0, 1e-5);
+  // A clear slab 0.4 thick (z in [0.8, 1.2]) that absorbs: exp(-absorption * path inside).
+  Material slab = clearGlass(1.5f);
+  slab.kd = {1, 1, 1};
+  slab.absorption = {1.0f, 2.0f, 0.5f};
+  Mesh box = inwardBox(0.5f, 0.5f, 0.2f);
+  for (Vec3& p : box.positions) p.z += 1.0f;
+  const Vec3 absorbed = floorUnder(slab, box);
+  const double inside = 0.4 / cosTheta;
+  EXPECT_NEAR(absorbed.x, cosTheta * std::exp(-1.0 * inside), 1e-4);
+  EXPECT_NEAR(absorbed.y, cosTheta * std::exp(-2.0 * inside), 1e-4);
+  EXPECT_NEAR(absorbed.z, cosTheta * std::exp(-0.5 * inside), 1e-4);
+  // An opaque occluder blocks the light.
+  EXPECT_EQ(floorUnder(emitter("opaque", {0, 0, 0}), test::squareMesh(-0.5f, -0.5f, 0.5f, 0.5f, 1)).x, 0.0f);
 }
 
 // ---- depth 0 and energy -----------------------------------------------------------------------------
