@@ -153,25 +153,20 @@ void readMsh4Nodes(MshReadState& state) {
     const int perNode = 3 + extra;
     values.requireValues(inBlock, 8 + 8 * static_cast<std::uint64_t>(perNode), 1 + perNode, "the node block");
     if (state.binary) {
-      // MSH 4.1 binary: all the block's tags, then all its coordinates.
-      std::vector<std::uint64_t>& tags = nodes.tags();
-      const std::size_t first = tags.size();
-      tags.resize(first + inBlock);
-      cursor.copyRaw(tags.data() + first, inBlock);
-      std::vector<Vec3d>& coords = nodes.coords();
-      coords.resize(first + inBlock);
-      const char* coordsAt = cursor.position();
-      if (extra == 0) {
-        cursor.copyRaw(reinterpret_cast<double*>(coords.data() + first), 3 * inBlock);
-      } else {
-        for (std::uint64_t i = 0; i < inBlock; ++i) {
-          cursor.copyRaw(reinterpret_cast<double*>(&coords[first + i]), 3);
-          cursor.advance(8 * static_cast<std::uint64_t>(extra));
-        }
+      // MSH 4.1 binary: all the block's tags, then all its coordinates (3 + extra doubles per
+      // node). One pass appends both and checks finiteness: no zero-filled resize, no second pass.
+      static_assert(sizeof(Vec3d) == 3 * sizeof(double), "a node's x, y, z are copied as one block");
+      const std::uint64_t stride = 8 * static_cast<std::uint64_t>(perNode);
+      const char* tagData = cursor.advance(8 * inBlock);
+      const char* coordData = cursor.advance(stride * inBlock);
+      for (std::uint64_t i = 0; i < inBlock; ++i) {
+        std::uint64_t nodeTag;
+        Vec3d p;
+        std::memcpy(&nodeTag, tagData + 8 * i, 8);
+        std::memcpy(&p, coordData + stride * i, sizeof(Vec3d));
+        if (!isFinite(p)) checkFinite(state, p, nodeTag, coordData + stride * i);
+        nodes.add(nodeTag, p);
       }
-      for (std::uint64_t i = 0; i < inBlock; ++i)
-        checkFinite(state, coords[first + i], tags[first + i],
-                    coordsAt + i * 8 * static_cast<std::uint64_t>(perNode));
     } else if (state.minor == 1) {
       std::vector<std::uint64_t>& tags = nodes.tags();
       const std::size_t first = tags.size();
