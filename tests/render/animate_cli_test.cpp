@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include "lancer/render/animation.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "render/animate_cli_util.hpp"
+#include "support/golden.hpp"
 
 namespace lancer {
 namespace {
@@ -269,6 +271,36 @@ TEST(AnimateCli, NumberedFramesAreBitIdenticalToRenderAtEachAngle) {
             0);
   EXPECT_EQ(test::readBytes(folder.file("plain.png")), test::readBytes(folder.file("f_0000.png")));
   EXPECT_NE(truth[0], truth[1]);
+}
+
+// `--orbit light:0`: the camera stays, light 0 turns; frame k matches `lancer render` with the light
+// put where the orbit takes it (within rounding: the light's position passes through scene space).
+TEST(AnimateCli, LightOrbitFramesMatchRendersWithTheLightMoved) {
+  ScratchFolder folder;
+  const test::CommandResult result = runCli("animate -q " + quoted(test::kTurntableScene) +
+                                            " --orbit light:0 -o " + quoted(folder.file("l_%d.png")));
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  std::ifstream in(test::kTurntableScene);
+  const std::string base((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const SceneDescription description = loadScene(test::kTurntableScene);
+  const Image frame0 = readPng(folder.file("l_0.png"));
+  for (int k = 0; k < 4; ++k) {
+    const Vec3d light =
+        rotateAbout({-4, 8, 5}, {0, 0, 0}, {0, 1, 0}, orbitAngleDegrees(*description.animation, k));
+    std::string text = sceneWithCamera(base, description.camera);
+    const std::string oldLight = "position = [-4, 8, 5]";
+    text.replace(text.find(oldLight), oldLight.size(),
+                 fmt::format("position = [{:.17g}, {:.17g}, {:.17g}]", light.x, light.y, light.z));
+    const std::string toml = folder.file(fmt::format("light_{}.toml", k));
+    std::ofstream(toml) << text;
+    const std::string still = folder.file(fmt::format("light_{}.png", k));
+    ASSERT_EQ(runCli("render -q " + quoted(toml) + " -o " + quoted(still)).exitCode, 0);
+    const Image frame = readPng(folder.file(fmt::format("l_{}.png", k)));
+    EXPECT_GT(test::psnr8(frame, readPng(still)), 40.0) << "frame " << k;
+    if (k > 0) {
+      EXPECT_LT(test::psnr8(frame, frame0), 30.0) << "frame " << k << ": the light moved";
+    }
+  }
 }
 
 // Ctrl-C (SIGINT from `timeout`) in the middle of a long animation: exit 130, the old files as they
