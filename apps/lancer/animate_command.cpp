@@ -68,9 +68,12 @@ int runAnimate(const AnimateCommandOptions& options) {
   if (options.fps) animation.fps = *options.fps;
   if (!options.orbit.empty()) animation.orbitLight = parseOrbit(options.orbit, prepared.scene.lights.size());
 
-  const std::string output = options.output.empty() ? settings.output : options.output;
+  // render.output names `lancer render`'s still image: an animation never writes over it unasked.
+  const std::string& output = options.output;
   if (output.empty())
-    throw InputError(SourceLocation{options.input}, "no output: give -o FILE.gif or -o frame_%04d.png");
+    throw InputError(
+        SourceLocation{options.input},
+        "no output: give -o FILE.gif, -o FILE.png (animated PNG) or -o frame_%04d.png (numbered frames)");
   const std::optional<FramePattern> pattern = parseFramePattern(output);
   ImageWriteOptions stillOptions;
   stillOptions.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;

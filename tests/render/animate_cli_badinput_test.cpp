@@ -50,7 +50,7 @@ TEST(AnimateCliBadInput, OptionsAreClearErrors) {
       {"-o " + quoted(folder.file("f_%04d.tiff")), "f_0000.tiff: error:"},
       {"-o " + quoted(folder.file("missing/t.gif")), "the folder"},
       {"-o " + quoted(folder.file("missing/f_%04d.png")), "the folder"},
-      {"", "no output: give -o FILE.gif or -o frame_%04d.png"},
+      {"", "no output: give -o FILE.gif, -o FILE.png (animated PNG) or -o frame_%04d.png (numbered frames)"},
       {"--frames 10000 --width 8000 --height 8000 -o " + quoted(out),
        "--palette: error: a global GIF palette keeps every frame until the end: 10000 frames of 8000x8000 "
        "need "
