@@ -94,6 +94,7 @@ void readMsh2Nodes(MshReadState& state) {
     cursor.skipLine();
     constexpr std::uint64_t kRecord = 4 + 3 * 8;  // int tag, 3 doubles
     cursor.requireBytes(count, kRecord, "$Nodes");
+    cursor.requireMemory(count, "$Nodes");
     nodes.reserve(count);
     for (std::uint64_t i = 0; i < count; ++i) {
       const char* at = cursor.advance(kRecord);
@@ -106,6 +107,7 @@ void readMsh2Nodes(MshReadState& state) {
     }
   } else {
     cursor.requireBytes(count, 4 * kMinTextNumberBytes, "$Nodes");
+    cursor.requireMemory(count, "$Nodes");
     nodes.reserve(count);
     for (std::uint64_t i = 0; i < count; ++i) {
       const char* at = cursor.tokenStart();
@@ -129,6 +131,7 @@ void readMsh2Elements(MshReadState& state) {
   if (state.binary) {
     cursor.skipLine();
     cursor.requireBytes(count, 4 * 4, "$Elements");
+    cursor.requireMemory(count, "$Elements");
     state.assembler.reserveFaces(count);
     std::vector<std::int32_t> record;
     for (std::uint64_t done = 0; done < count;) {
@@ -161,6 +164,7 @@ void readMsh2Elements(MshReadState& state) {
     }
   } else {
     cursor.requireBytes(count, 4 * kMinTextNumberBytes, "$Elements");
+    cursor.requireMemory(count, "$Elements");
     state.assembler.reserveFaces(count);
     for (std::uint64_t i = 0; i < count; ++i) {
       const char* at = cursor.tokenStart();

@@ -136,6 +136,7 @@ void readMsh4Nodes(MshReadState& state) {
   }
   values.requireValues(blocks, 20, 4, "$Nodes (blocks)");
   values.requireValues(count, 8 + 24, 4, "$Nodes");
+  state.cursor.requireMemory(count, "$Nodes");
   MshNodeTable& nodes = state.assembler.nodes;
   nodes.reserve(count);
   for (std::uint64_t b = 0; b < blocks; ++b) {
@@ -215,6 +216,7 @@ void readMsh4Elements(MshReadState& state) {
   }
   values.requireValues(blocks, 20, 4, "$Elements (blocks)");
   values.requireValues(count, 16, 2, "$Elements");
+  cursor.requireMemory(count, "$Elements");
   state.assembler.reserveFaces(count);
   const MshNodeTable& nodes = state.assembler.nodes;
   const auto& entities = state.partitionedEntities.empty() ? state.entities : state.partitionedEntities;

@@ -1,5 +1,7 @@
 #include "lancer/mesh/msh_cursor.hpp"
 
+#include "lancer/util/memory_budget.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -64,6 +66,11 @@ void MshCursor::failNumber(const char* what, bool outOfRange, const char* kind) 
            fmt::format("expected {} ({}), found the end of the file (the file looks truncated)", what, kind));
   if (outOfRange) failAt(start, fmt::format("{} {} is out of range", what, quoteToken(found)));
   failAt(start, fmt::format("expected {} ({}), found {}", what, kind, quoteToken(found)));
+}
+
+void MshCursor::requireMemory(std::uint64_t count, const char* what) const {
+  lancer::requireMemory(saturatingProduct(count, kMeshBytesPerItem), locate(pos_),
+                        fmt::format("{} with {} entries", what, count));
 }
 
 void MshCursor::failTooFew(std::uint64_t count, std::uint64_t itemBytes, const char* what) const {

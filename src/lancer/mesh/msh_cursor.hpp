@@ -15,6 +15,12 @@
 
 namespace lancer {
 
+// Memory a node or a face costs from reading to rendering: the reader's tag and coordinate tables,
+// the mesh's positions and normals, the kd-tree's references. Estimated from the sizes of those
+// tables (a node: 8 tag + 24 coordinates + 12 position + 12 normal + 4 index = 60 bytes; a face is
+// less), rounded up so that the check errs on the side of a clear message.
+inline constexpr std::uint64_t kMeshBytesPerItem = 64;
+
 class MshCursor {
  public:
   MshCursor(std::span<const char> bytes, std::string file)
@@ -95,9 +101,13 @@ class MshCursor {
     pos_ += sizeof(T);
     return value;
   }
+  // Throws when count nodes or faces (kMeshBytesPerItem each once loaded, indexed and accelerated)
+  // would exceed the memory budget (--max-memory); called before reserving from a count in the file.
+  void requireMemory(std::uint64_t count, const char* what) const;
   // Copies count values of T; the caller has called requireBytes.
   template <typename T>
   void copyRaw(T* out, std::uint64_t count) {
+    if (count == 0) return;  // out may be an empty vector's null data(): memcpy(nullptr, ...) is UB
     std::memcpy(out, pos_, count * sizeof(T));
     pos_ += count * sizeof(T);
   }

@@ -1,0 +1,123 @@
+#!/usr/bin/env bash
+# Hardening checks (issue 7), run by .ci/run after scripts/test.sh:
+#   1. the whole test suite built with AddressSanitizer + UndefinedBehaviorSanitizer (LANCER_SANITIZE);
+#   2. the parallel renderer and image tile tests built with ThreadSanitizer (LANCER_TSAN);
+#   3. every libFuzzer target (LANCER_FUZZ, clang) for FUZZ_SECONDS (default 60) on its committed corpus;
+#   4. clang-tidy on src/ with the checks of .clang-tidy (must be clean);
+#   5. clang-format on the sources: a warning for now, an error with FORMAT_STRICT=1.
+# Installs what is missing with apt-get, like scripts/setup.sh. Build folders: build-hardening-*.
+# Skip steps with SKIP="asan tsan fuzz tidy format" (any subset), e.g. for a quick local run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+FUZZ_SECONDS=${FUZZ_SECONDS:-60}
+FORMAT_STRICT=${FORMAT_STRICT:-0}
+SKIP=${SKIP:-}
+jobs=$(nproc)
+
+packages=(g++ cmake ninja-build pkg-config libfmt-dev libpng-dev libgif-dev libtomlplusplus-dev libcli11-dev
+          libgtest-dev clang libclang-rt-14-dev clang-format clang-tidy)
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+if ((${#missing[@]})); then
+  echo "ci_hardening: installing ${missing[*]}" >&2
+  sudo=""
+  if [ "$(id -u)" != 0 ]; then sudo="sudo"; fi
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi
+
+script_start=$SECONDS
+step_start=$SECONDS
+begin() { step_start=$SECONDS; echo "=== ci_hardening: $1" >&2; }
+end() { echo "=== ci_hardening: $1 done in $((SECONDS - step_start)) s" >&2; }
+skipped() { [[ " $SKIP " == *" $1 "* ]]; }
+
+# Sanitizer reports must fail the run, with stacks that name the line.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}
+
+if ! skipped asan; then
+  begin "ASan + UBSan build and the whole test suite"
+  cmake -S . -B build-hardening-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLANCER_SANITIZE=ON \
+        -DLANCER_BUILD_BENCH=OFF >/dev/null
+  cmake --build build-hardening-asan -j"$jobs"
+  ctest --test-dir build-hardening-asan --output-on-failure -j"$jobs"
+  end "ASan + UBSan"
+fi
+
+if ! skipped tsan; then
+  begin "ThreadSanitizer build and the parallel renderer / tile tests"
+  cmake -S . -B build-hardening-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLANCER_TSAN=ON \
+        -DLANCER_BUILD_BENCH=OFF >/dev/null
+  cmake --build build-hardening-tsan -j"$jobs" --target render_analytic_test sampler_test image_test
+  # The tests that run the tiled renderer with several threads or paste tiles from threads.
+  ctest --test-dir build-hardening-tsan --output-on-failure -j"$jobs" \
+        -R '^(RenderAnalytic\.|Sampler\..*ThreadCount|Image\.Tiles)'
+  end "ThreadSanitizer"
+fi
+
+if ! skipped fuzz; then
+  begin "libFuzzer targets, ${FUZZ_SECONDS} s each on the committed corpus"
+  CXX=clang++ cmake -S . -B build-hardening-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DLANCER_FUZZ=ON \
+        -DLANCER_BUILD_TESTS=OFF -DLANCER_BUILD_BENCH=OFF >/dev/null
+  cmake --build build-hardening-fuzz -j"$jobs" --target fuzzers
+  # Scratch in memory where possible: the image writer fsyncs every file it writes.
+  work=$(mktemp -d -p /dev/shm 2>/dev/null || mktemp -d)
+  mkdir -p build-hardening-fuzz/artifacts
+  trap 'rm -rf "$work"' EXIT
+  for target in msh_reader scene_loader image_writer; do
+    mkdir -p "$work/$target"
+    dictionary=()
+    if [ -f "fuzz/$target.dict" ]; then dictionary=(-dict="fuzz/$target.dict"); fi
+    # New inputs go to the scratch folder (first), the committed corpus is only read. -timeout turns
+    # a hang into a failure, -rss_limit_mb an unbounded allocation.
+    TMPDIR="$work" "build-hardening-fuzz/fuzz/fuzz_$target" "${dictionary[@]}" -max_total_time="$FUZZ_SECONDS" \
+      -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="build-hardening-fuzz/artifacts/$target-" \
+      "$work/$target" "fuzz/corpus/$target" 2>"$work/$target.log" || {
+        tail -n 60 "$work/$target.log" >&2
+        echo "ci_hardening: fuzz_$target failed; the input is in the log above (artifact build-hardening-fuzz/artifacts/$target-*)" >&2
+        exit 1
+      }
+    grep -E '^(#[0-9]+[[:space:]]+DONE|stat::number_of_executed_units)' "$work/$target.log" >&2 || true
+  done
+  end "fuzzing"
+fi
+
+if ! skipped tidy; then
+  begin "clang-tidy on src/ (checks in .clang-tidy)"
+  if [ ! -f build-hardening-fuzz/compile_commands.json ]; then
+    CXX=clang++ cmake -S . -B build-hardening-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DLANCER_FUZZ=ON \
+          -DLANCER_BUILD_TESTS=OFF -DLANCER_BUILD_BENCH=OFF >/dev/null
+  fi
+  # clang's compile database, so that every flag is one clang-tidy understands.
+  mapfile -t sources < <(git ls-files 'src/*.cpp')
+  run-clang-tidy -quiet -j "$jobs" -p build-hardening-fuzz "${sources[@]/#/$PWD/}" >"build-hardening-fuzz/tidy.log" 2>&1 || true
+  if grep -E '(warning|error): ' build-hardening-fuzz/tidy.log >&2; then
+    echo "ci_hardening: clang-tidy found problems (above)" >&2
+    exit 1
+  fi
+  end "clang-tidy"
+fi
+
+if ! skipped format; then
+  begin "clang-format check"
+  mapfile -t files < <(git ls-files '*.cpp' '*.hpp')
+  if ! clang-format --dry-run "${files[@]}" 2>"${TMPDIR:-/tmp}/lancer-format.log"; then :; fi
+  unformatted=$(grep -c 'warning:' "${TMPDIR:-/tmp}/lancer-format.log" || true)
+  if [ "$unformatted" != 0 ]; then
+    echo "ci_hardening: $unformatted lines differ from .clang-format in $(grep -o '^[^:]*' \
+      "${TMPDIR:-/tmp}/lancer-format.log" | sort -u | wc -l) files; fix with:" >&2
+    echo "  git ls-files '*.cpp' '*.hpp' | xargs clang-format -i" >&2
+    if [ "$FORMAT_STRICT" = 1 ]; then exit 1; fi
+    echo "ci_hardening: (warning only until the tree has been formatted once; FORMAT_STRICT=1 makes it an error)" >&2
+  fi
+  end "clang-format"
+fi
+
+echo "=== ci_hardening: all steps passed in $((SECONDS - script_start)) s" >&2
