@@ -7,9 +7,11 @@
 #include <csignal>
 #include <filesystem>
 
+#include "lancer/image/image.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/scene_loader.hpp"
+#include "lancer/util/memory_budget.hpp"
 
 namespace lancer::cli {
 namespace {
@@ -78,6 +80,9 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
     throw InputError(SourceLocation{"--samples"},
                      fmt::format("{} samples cannot form an n x n grid: use a perfect square (1, 4, 9, 16, ...)",
                                  settings.samples));
+  // The float image and its 8-bit copy for the writer; checked before loading any mesh.
+  requireMemory(saturatingProduct(static_cast<std::uint64_t>(settings.width) * settings.height, sizeof(Rgba) + 4),
+                SourceLocation{input}, fmt::format("a {}x{} image", settings.width, settings.height));
   if (!overrides.shading.empty()) {
     settings.shading = shadingFromName(overrides.shading);
     for (MeshInstance& mesh : description.meshes) mesh.shading.reset();
