@@ -175,12 +175,13 @@ int runAnimate(const AnimateCommandOptions& options) {
 void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
   auto options = std::make_shared<AnimateCommandOptions>();
   CLI::App* command = app.add_subcommand(
-      "animate", "Render an orbit of the camera or of a light as an animated GIF or numbered frames");
+      "animate",
+      "Render an orbit of the camera or of a light as an animated GIF, an animated PNG or numbered frames");
   command->add_option("input", options->input, "Scene file (.toml) or gmsh mesh (.msh)")->required();
-  command->add_option(
-      "-o,--output", options->output,
-      "Output: NAME.gif (animated, looping), NAME.png (animated PNG) or NAME_%04d.png/.bmp/.ppm (one "
-      "file per frame)");
+  command->add_option("-o,--output", options->output,
+                      "Output (required): NAME.gif (animated, looping), NAME.png (animated PNG) or "
+                      "NAME_%04d.png/.bmp/.ppm (one "
+                      "file per frame)");
   command->add_option("--frames", options->frames, "Number of frames")->check(CLI::Range(1, 10000));
   command->add_option("--fps", options->fps, "Frames per second")->check(CLI::Range(0.01, 100.0));
   command->add_option("--orbit", options->orbit, "What turns: camera or light:K");
