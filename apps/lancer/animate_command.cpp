@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 
@@ -33,16 +34,20 @@ struct AnimateCommandOptions {
 
 int parseOrbit(const std::string& orbit, std::size_t lightCount) {
   if (orbit == "camera") return -1;
-  int light = -1;
-  char trailing = 0;
-  if (std::sscanf(orbit.c_str(), "light:%d%c", &light, &trailing) == 1 && light >= 0 &&
-      static_cast<std::size_t>(light) < lightCount)
-    return light;
+  // "light:K" with K plain decimal digits, as the scene file's animation.orbit accepts.
+  const std::string digits = orbit.rfind("light:", 0) == 0 ? orbit.substr(6) : std::string();
+  const bool number = !digits.empty() && digits.size() <= 9 &&
+                      std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (number && static_cast<std::size_t>(std::stoi(digits)) < lightCount) return std::stoi(digits);
+  if (lightCount == 0)
+    throw InputError(
+        SourceLocation{"--orbit"},
+        fmt::format("'{}' is not an orbit here: the scene has no [[light]]; use 'camera'", orbit));
   throw InputError(
       SourceLocation{"--orbit"},
       fmt::format("'{}' is not an orbit: use 'camera' or 'light:K' with K from 0 to {} (the scene has "
                   "{} light{})",
-                  orbit, lightCount == 0 ? 0 : lightCount - 1, lightCount, lightCount == 1 ? "" : "s"));
+                  orbit, lightCount - 1, lightCount, lightCount == 1 ? "" : "s"));
 }
 
 // A global palette needs every frame before the first can be written, so the GIF writer keeps them

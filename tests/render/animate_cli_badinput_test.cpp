@@ -30,6 +30,9 @@ TEST(AnimateCliBadInput, OptionsAreClearErrors) {
        "lights)"},
       {"--orbit light:2 -o " + quoted(out), "'light:2' is not an orbit"},
       {"--orbit light:1x -o " + quoted(out), "'light:1x' is not an orbit"},
+      {"--orbit light:+1 -o " + quoted(out), "'light:+1' is not an orbit"},
+      {"--orbit 'light: 1' -o " + quoted(out), "'light: 1' is not an orbit"},
+      {"--orbit light:99999999999 -o " + quoted(out), "'light:99999999999' is not an orbit"},
       {"--frames 0 -o " + quoted(out), "--frames: Value 0 not in range"},
       {"--frames many -o " + quoted(out), "--frames: Value many not in range 1 to 10000"},
       {"--fps 0 -o " + quoted(out), "--fps: Value 0 not in range"},
@@ -63,6 +66,20 @@ TEST(AnimateCliBadInput, OptionsAreClearErrors) {
     EXPECT_TRUE(contains(result.output, bad.message)) << result.output;
   }
   EXPECT_TRUE(folder.entries().empty());
+}
+
+TEST(AnimateCliBadInput, LightOrbitInASceneWithoutLights) {
+  ScratchFolder folder;
+  const std::string toml = folder.file("dark.toml");
+  std::ofstream(toml) << fmt::format(
+      "[render]\nwidth = 8\nheight = 6\n[[mesh]]\nfile = \"{}/render/floor.msh\"\n", LANCER_TEST_DATA_DIR);
+  const test::CommandResult result =
+      runCli("animate " + quoted(toml) + " --orbit light:0 -o " + quoted(folder.file("t.gif")));
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_TRUE(
+      contains(result.output,
+               "--orbit: error: 'light:0' is not an orbit here: the scene has no [[light]]; use 'camera'"))
+      << result.output;
 }
 
 TEST(AnimateCliBadInput, BadAnimationKeysPointAtTheSceneFile) {
