@@ -49,25 +49,28 @@ float roundUp(double value) {
 }  // namespace
 
 Aabb clippedTriangleBounds(const std::array<Vec3, 3>& corners, const Aabb& box) {
-  Polygon a, b;
-  a.count = 3;
-  for (int i = 0; i < 3; ++i) a.corner[i] = toDouble(corners[i]);
+  // Ping-pong between two polygons by pointer: swapping the 220-byte structs cost more than clipping.
+  Polygon buffers[2];
+  Polygon* a = &buffers[0];
+  Polygon* b = &buffers[1];
+  a->count = 3;
+  for (int i = 0; i < 3; ++i) a->corner[i] = toDouble(corners[i]);
   Aabb triangle;
   for (const Vec3& c : corners) triangle.extend(c);
   // Only the planes the triangle crosses cut anything; usually just the new split plane.
   for (int axis = 0; axis < 3; ++axis) {
     if (triangle.lower[axis] < box.lower[axis]) {
-      clipAgainst(a, axis, box.lower[axis], 1.0, b);
+      clipAgainst(*a, axis, box.lower[axis], 1.0, *b);
       std::swap(a, b);
     }
     if (triangle.upper[axis] > box.upper[axis]) {
-      clipAgainst(a, axis, box.upper[axis], -1.0, b);
+      clipAgainst(*a, axis, box.upper[axis], -1.0, *b);
       std::swap(a, b);
     }
-    if (a.count == 0) return Aabb{};
+    if (a->count == 0) return Aabb{};
   }
   Aabbd exact;
-  for (int i = 0; i < a.count; ++i) exact.extend(a.corner[i]);
+  for (int i = 0; i < a->count; ++i) exact.extend(a->corner[i]);
   Aabb result;
   for (int axis = 0; axis < 3; ++axis) {
     result.lower[axis] = std::max(roundDown(exact.lower[axis]), box.lower[axis]);
