@@ -82,7 +82,8 @@ Image renderImage(const Scene& scene, const Accelerator& accelerator, const Came
       }
       raysTraced.fetch_add(counters.rays, std::memory_order_relaxed);
       samplesTraced.fetch_add(samples, std::memory_order_relaxed);
-      pixelsDone.fetch_add(static_cast<std::uint64_t>((x1 - x0) * (y1 - y0)), std::memory_order_relaxed);
+      pixelsDone.fetch_add(static_cast<std::uint64_t>(x1 - x0) * static_cast<std::uint64_t>(y1 - y0),
+                           std::memory_order_relaxed);
     }
     workersRunning.fetch_sub(1, std::memory_order_release);
   };
