@@ -12,7 +12,8 @@ constexpr int kSide = 33;  // 32 cells per channel plus the empty index 0
 constexpr std::size_t kCells = kSide * kSide * kSide;
 
 constexpr std::size_t cell(int r, int g, int b) {
-  return static_cast<std::size_t>((r * kSide + g) * kSide + b);
+  constexpr auto side = static_cast<std::size_t>(kSide);
+  return (static_cast<std::size_t>(r) * side + static_cast<std::size_t>(g)) * side + static_cast<std::size_t>(b);
 }
 
 constexpr std::uint32_t pack(int r, int g, int b) {
