@@ -62,8 +62,8 @@ class BuildArenas {
   std::deque<BuildArena> arenas_;
 };
 
-// Lays the temporary tree out as sibling-paired 8-byte nodes, renumbers triangles in the order
-// the leaves first use them (neighbours in space become neighbours in memory) and fills stats.
+// Lays the temporary tree out as one stream (KdTree::layout_): sibling-paired 8-byte nodes, each
+// leaf's list and triangles written after the pair that holds it, and fills stats.
 class KdTreeAssembler {
  public:
   static KdTree assemble(const BuildNode& root, KdBuildInput&& input, const KdBuildOptions& options,
