@@ -111,8 +111,8 @@ if ! skipped format; then
   if ! clang-format --dry-run "${files[@]}" 2>"${TMPDIR:-/tmp}/lancer-format.log"; then :; fi
   unformatted=$(grep -c 'warning:' "${TMPDIR:-/tmp}/lancer-format.log" || true)
   if [ "$unformatted" != 0 ]; then
-    echo "ci_hardening: $unformatted lines differ from .clang-format in $(grep -o '^[^:]*' \
-      "${TMPDIR:-/tmp}/lancer-format.log" | sort -u | wc -l) files; fix with:" >&2
+    echo "ci_hardening: $unformatted places differ from .clang-format in $(grep 'warning:' \
+      "${TMPDIR:-/tmp}/lancer-format.log" | cut -d: -f1 | sort -u | wc -l) files; fix with:" >&2
     echo "  git ls-files '*.cpp' '*.hpp' | xargs clang-format -i" >&2
     if [ "$FORMAT_STRICT" = 1 ]; then exit 1; fi
     echo "ci_hardening: (warning only until the tree has been formatted once; FORMAT_STRICT=1 makes it an error)" >&2
