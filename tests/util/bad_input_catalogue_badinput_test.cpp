@@ -5,6 +5,7 @@
 // cases. After changing a message or adding a case, regenerate the table with
 //   LANCER_UPDATE_BAD_INPUT_DOC=1 ctest --test-dir build -R BadInputCatalogue
 // and review the diff of docs/bad_input.md.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -139,7 +140,9 @@ std::function<void(const Scratch&)> oldOutputKept(const std::string& file, const
     EXPECT_EQ(s.read(file), "old image") << "the existing output was changed";
     for (const std::string& name : s.entries()) {
       const bool inFolder = folder.empty() ? name.find('/') == std::string::npos : name.rfind(folder + "/", 0) == 0;
-      if (inFolder) EXPECT_EQ(name.find(".tmp-"), std::string::npos) << "temporary file left: " << name;
+      if (inFolder) {
+        EXPECT_EQ(name.find(".tmp-"), std::string::npos) << "temporary file left: " << name;
+      }
     }
   };
 }
@@ -307,15 +310,14 @@ std::string messageCell(const std::string& message) {
   while (std::getline(lines, line)) {
     if (!cell.empty()) cell += "<br>";
     const bool backtick = line.find('`') != std::string::npos;
-    cell += backtick ? "`` " + escapeCell(line) + " ``" : "`" + escapeCell(line) + "`";
+    cell += backtick ? fmt::format("`` {} ``", escapeCell(line)) : fmt::format("`{}`", escapeCell(line));
   }
   return cell;
 }
 
 std::string tableRow(int number, const Case& c, const Outcome& outcome) {
-  return "| " + std::to_string(number) + " | " + escapeCell(c.what) + " | " + escapeCell(c.input) + " | " +
-         messageCell(outcome.message) + " | " + std::to_string(outcome.exitCode) + " | `Row.PrintsItsMessage/" +
-         c.id + "` |";
+  return fmt::format("| {} | {} | {} | {} | {} | `Row.PrintsItsMessage/{}` |", number, escapeCell(c.what),
+                     escapeCell(c.input), messageCell(outcome.message), outcome.exitCode, c.id);
 }
 
 std::string tableHeader() {
@@ -347,8 +349,8 @@ TEST_P(Row, PrintsItsMessage) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BadInputCatalogue, Row, testing::Range<std::size_t>(0, catalogue().size()),
-                         [](const testing::TestParamInfo<std::size_t>& info) {
-                           return catalogue()[info.param].id;
+                         [](const testing::TestParamInfo<std::size_t>& row) {
+                           return catalogue()[row.param].id;
                          });
 
 TEST(BadInputCatalogue, DocumentIsUpToDate) {
