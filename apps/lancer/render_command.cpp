@@ -34,7 +34,7 @@ int tracePixel(const PreparedScene& prepared, const Camera& camera, const std::s
       y >= settings.height)
     throw InputError(SourceLocation{"--pixel"},
                      fmt::format("'{}' is not a pixel 'x,y' inside {}x{}", pixel, settings.width, settings.height));
-  const Tracer tracer(prepared.scene, prepared.accelerator, settings);
+  const Tracer tracer(prepared.scene, prepared.accelerator, settings, camera.pixelFootprint());
   TraceCounters counters;
   std::uint64_t samples = 0;
   const Rgba value = renderPixel(tracer, camera, settings, x, y, counters, samples);

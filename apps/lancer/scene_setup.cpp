@@ -55,6 +55,8 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
   command.add_option("--threads", overrides.threads, "Worker threads (default 0: all cores)")
       ->check(CLI::Range(0, 1024));
   command.add_flag("--srgb", overrides.srgb, "Encode the output with the sRGB curve instead of linear");
+  command.add_flag("--edges", overrides.edges,
+                   "Draw element edges (1 pixel, black) on every mesh whose scene sets no edges");
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
 }
 
@@ -83,6 +85,9 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
   // The float image and its 8-bit copy for the writer; checked before loading any mesh.
   requireMemory(saturatingProduct(static_cast<std::uint64_t>(settings.width) * settings.height, sizeof(Rgba) + 4),
                 SourceLocation{input}, fmt::format("a {}x{} image", settings.width, settings.height));
+  if (overrides.edges)
+    for (MeshInstance& mesh : description.meshes)
+      if (!mesh.edges) mesh.edges = EdgeSettings{};
   if (!overrides.shading.empty()) {
     settings.shading = shadingFromName(overrides.shading);
     for (MeshInstance& mesh : description.meshes) mesh.shading.reset();

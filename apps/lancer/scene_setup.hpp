@@ -20,6 +20,7 @@ struct SceneOverrides {
   std::string accel = "kdtree-sah";
   int threads = 0;
   bool srgb = false;
+  bool edges = false;  // draw element edges on every mesh that does not set its own
   bool quiet = false;
 };
 

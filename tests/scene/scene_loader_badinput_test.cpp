@@ -126,9 +126,16 @@ TEST(SceneLoaderBadInput, UnknownTopLevelTable) {
   EXPECT_TRUE(failsAt("[camra]\n", "1:2", "unknown key 'camra' (did you mean 'camera'?)"));
 }
 
+TEST(SceneLoaderBadInput, EdgesKeyIsCheckedLikeEveryOther) {
+  EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\nedges = 3\n", "3:9", "mesh[0].edges must be true, false or a table"));
+  EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\nedges = { widht = 1.0 }\n", "3:11",
+                      "unknown key 'widht' in mesh[0].edges (did you mean 'width'?)"));
+  EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\nedges = { width = 0 }\n", "3:19", "mesh[0].edges.width"));
+  EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\nedges = { only = \"feature\" }\n", "3:18",
+                      "did you mean 'features'"));
+}
+
 TEST(SceneLoaderBadInput, FutureMeshKeysAreUnknownForNow) {
-  EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\nedges = { width = 1.0 }\n", "3:1",
-                      "unknown key 'edges' in mesh[0]"));
   EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\ncolor_by = { field = \"t\" }\n", "3:1",
                       "unknown key 'color_by' in mesh[0]"));
 }

@@ -65,4 +65,9 @@ Ray Camera::generateRay(float x, float y) const {
   return Ray(position_ + right_ * sx + up_ * sy, forward_);
 }
 
+PixelFootprint Camera::pixelFootprint() const {
+  const float pixel = 2.0f * halfHeight_ * invHeight_;
+  return projection_ == Projection::Perspective ? PixelFootprint{0.0f, pixel} : PixelFootprint{pixel, 0.0f};
+}
+
 }  // namespace lancer

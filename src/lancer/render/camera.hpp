@@ -4,6 +4,7 @@
 
 #include "lancer/math/aabb.hpp"
 #include "lancer/math/ray.hpp"
+#include "lancer/render/edge_overlay.hpp"
 #include "lancer/scene/scene_description.hpp"
 
 namespace lancer {
@@ -19,6 +20,9 @@ class Camera {
   Ray generateRay(float x, float y) const;
 
   Projection projection() const { return projection_; }
+  // World size of one pixel along a primary ray: grows with distance for a perspective camera,
+  // constant for an orthographic one.
+  PixelFootprint pixelFootprint() const;
   const Vec3& position() const { return position_; }
   const Vec3& forward() const { return forward_; }
 

@@ -17,12 +17,14 @@ float rayToSegmentDistance(const Vec3& origin, const Vec3& unitDirection, const 
 }
 
 float edgeCoverage(const Vec3& origin, const Vec3& unitDirection, const Vec3* corners, int cornerCount,
-                   std::uint8_t edgeMask, float pixelSize, float widthPixels) {
-  if (edgeMask == 0 || !(pixelSize > 0.0f)) return 0.0f;
+                   std::uint8_t edgeMask, std::uint8_t lineCornerMask, float pixelSize, float widthPixels) {
+  if ((edgeMask | lineCornerMask) == 0 || !(pixelSize > 0.0f)) return 0.0f;
   float nearest = INFINITY;
   for (int i = 0; i < cornerCount; ++i) {
-    if (!(edgeMask & (1u << i))) continue;
-    nearest = std::min(nearest, rayToSegmentDistance(origin, unitDirection, corners[i], corners[(i + 1) % cornerCount]));
+    if (edgeMask & (1u << i))
+      nearest = std::min(nearest, rayToSegmentDistance(origin, unitDirection, corners[i], corners[(i + 1) % cornerCount]));
+    else if (lineCornerMask & (1u << i))
+      nearest = std::min(nearest, rayToSegmentDistance(origin, unitDirection, corners[i], corners[i]));
   }
   const float distancePixels = nearest / pixelSize;
   return std::clamp(0.5f * widthPixels + 0.5f - distancePixels, 0.0f, 1.0f);

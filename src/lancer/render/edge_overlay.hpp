@@ -25,8 +25,11 @@ float rayToSegmentDistance(const Vec3& origin, const Vec3& unitDirection, const 
 // Coverage in [0, 1] of a line `widthPixels` wide along the marked edges (bit i: corner i to corner
 // i+1) of a face with `cornerCount` corners, for a ray whose pixel is `pixelSize` world units wide
 // at the hit: 1 on the line, 0 beyond half a pixel outside it, linear in between (a box-filtered
-// edge, so one sample per pixel already draws smooth lines).
+// edge, so one sample per pixel already draws smooth lines). `lineCornerMask` (bit i: corner i)
+// marks corners that lie on a line drawn by other faces: a face touching a line only at a corner
+// (the middle triangle of a split 6-node triangle) draws the line's round end there, or the line
+// would show a notch.
 float edgeCoverage(const Vec3& origin, const Vec3& unitDirection, const Vec3* corners, int cornerCount,
-                   std::uint8_t edgeMask, float pixelSize, float widthPixels);
+                   std::uint8_t edgeMask, std::uint8_t lineCornerMask, float pixelSize, float widthPixels);
 
 }  // namespace lancer

@@ -51,7 +51,7 @@ Image renderImage(const Scene& scene, const Accelerator& accelerator, const Came
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   Image image(settings.width, settings.height);
-  const Tracer tracer(scene, accelerator, settings);
+  const Tracer tracer(scene, accelerator, settings, camera.pixelFootprint());
 
   const int tilesX = (settings.width + kTileSize - 1) / kTileSize;
   const int tilesY = (settings.height + kTileSize - 1) / kTileSize;

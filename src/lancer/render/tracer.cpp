@@ -39,8 +39,13 @@ EnergySplit energySplit(const Material& material) {
   return split;
 }
 
-Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings)
-    : scene_(scene), accelerator_(accelerator), background_(settings.background), maxDepth_(settings.maxDepth) {
+Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings,
+               PixelFootprint footprint)
+    : scene_(scene),
+      accelerator_(accelerator),
+      background_(settings.background),
+      maxDepth_(settings.maxDepth),
+      footprint_(footprint) {
   for (const Material& material : scene.materials) {
     anyTransparent_ = anyTransparent_ || material.transparency > 0;
     splits_.push_back(energySplit(material));
@@ -51,7 +56,7 @@ TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounter
   bool hitSomething = false;
   float hitDistance = 0;
   TraceResult result;
-  result.color = trace(ray, 0, 1.0f, parallelView, counters, hitSomething, hitDistance);
+  result.color = trace(ray, 0, 1.0f, 0.0f, parallelView, counters, hitSomething, hitDistance);
   result.alpha = hitSomething ? 1.0f : 0.0f;
   return result;
 }
@@ -137,8 +142,21 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
 // that is not traced (depth limit, or a path weight below 1/512) takes the local colour instead, so
 // every node is a weighted mean of non-negative terms with weights summing to 1: light can only be
 // lost (absorption), never created, and depth 0 is exactly the local model.
-Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, bool parallelView, TraceCounters& counters,
-                   bool& hitSomething, float& hitDistance) const {
+float Tracer::edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) const {
+  const std::uint16_t style = scene_.faceEdgeStyle.empty() ? 0 : scene_.faceEdgeStyle[hit.face];
+  if (style == 0) return 0.0f;
+  const MeshFace& face = scene_.faces[hit.face];
+  Vec3 corners[4];
+  for (int c = 0; c < face.cornerCount(); ++c) corners[c] = scene_.positions[face.vertex[c]];
+  const float directionLength = length(ray.direction);
+  const float pixelSize = footprint_.at(pathLength + hit.t * directionLength);
+  return edgeCoverage(ray.origin, ray.direction * (1.0f / directionLength), corners, face.cornerCount(),
+                      scene_.faceEdgeMask[hit.face], scene_.faceLineCorners[hit.face], pixelSize,
+                      scene_.edgeStyles[style].widthPixels);
+}
+
+Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
+                   TraceCounters& counters, bool& hitSomething, float& hitDistance) const {
   ++counters.rays;
   Hit hit;
   if (!accelerator_.intersect(ray, 0.0f, kInfinity, hit)) {
@@ -147,12 +165,17 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, bool parallelVie
   }
   hitSomething = true;
   hitDistance = hit.t * length(ray.direction);
+  // Edges are paint on the surface: fully covered pixels need no shading, partial ones blend.
+  const float edge = edgeCoverageAt(ray, hit, pathLength);
+  const Vec3 edgeColor = edge > 0.0f ? scene_.edgeStyles[scene_.faceEdgeStyle[hit.face]].color : Vec3{};
+  if (edge >= 1.0f) return edgeColor;
+  auto withEdge = [&](const Vec3& color) { return edge > 0.0f ? color * (1.0f - edge) + edgeColor * edge : color; };
   const SurfacePoint surface = makeSurfacePoint(scene_, ray, hit);
   const std::uint32_t materialIndex = scene_.faceMaterial[hit.face];
   const Material& material = scene_.materials[materialIndex];
   const EnergySplit& split = splits_[materialIndex];
   const Vec3 local = shadeLocal(ray, surface, material, parallelView, counters);
-  if (depth >= maxDepth_ || !split.recursive) return local;
+  if (depth >= maxDepth_ || !split.recursive) return withEdge(local);
 
   const Vec3 direction = normalize(ray.direction);
   const bool solid = scene_.faceBoundsSolid[hit.face] != 0;
@@ -190,7 +213,8 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, bool parallelVie
     if (dot(reflected, surface.geometricNormal) <= 0.0f) reflected = reflect(direction, surface.geometricNormal);
     float distance = 0;
     const Ray reflectedRay(offsetRayOrigin(surface.position, surface.geometricNormal), reflected);
-    Vec3 radiance = trace(reflectedRay, depth + 1, reflectPathWeight, false, counters, hitSomething, distance);
+    Vec3 radiance = trace(reflectedRay, depth + 1, reflectPathWeight, pathLength + hitDistance, false, counters,
+                          hitSomething, distance);
     // Reflected off the inside of a solid: the ray stays in its medium (Beer-Lambert).
     if (solid && !entering && maxComponent(material.absorption) > 0.0f)
       radiance *= std::isfinite(distance) ? beerLambert(material.absorption, distance) : Vec3{0, 0, 0};
@@ -202,8 +226,8 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, bool parallelVie
   if (transmitPathWeight >= kMinPathWeight) {
     float distance = 0;
     const Ray transmittedRay(offsetRayOrigin(surface.position, -surface.geometricNormal), transmittedDirection);
-    Vec3 radiance =
-        trace(transmittedRay, depth + 1, transmitPathWeight, false, counters, hitSomething, distance);
+    Vec3 radiance = trace(transmittedRay, depth + 1, transmitPathWeight, pathLength + hitDistance, false, counters,
+                          hitSomething, distance);
     // Entering a solid: absorbed along the segment inside, up to the next surface.
     if (solid && entering && maxComponent(material.absorption) > 0.0f)
       radiance *= std::isfinite(distance) ? beerLambert(material.absorption, distance) : Vec3{0, 0, 0};
@@ -211,7 +235,7 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, bool parallelVie
   } else {
     color += local * transmitWeight;
   }
-  return color;
+  return withEdge(color);
 }
 
 }  // namespace lancer

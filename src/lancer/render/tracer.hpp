@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "lancer/accel/accelerator.hpp"
+#include "lancer/render/edge_overlay.hpp"
 #include "lancer/render/surface_point.hpp"
 #include "lancer/scene/scene.hpp"
 
@@ -34,15 +35,20 @@ EnergySplit energySplit(const Material& material);
 
 class Tracer {
  public:
-  Tracer(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings);
+  // `footprint`: the world size of a pixel along primary rays, for edges drawn in pixel widths.
+  Tracer(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings,
+         PixelFootprint footprint = {});
 
   // `parallelView`: the ray is an orthographic primary ray, so the viewer is at infinity along it.
   TraceResult tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const;
 
  private:
-  // `hitDistance` receives the distance to the nearest hit (infinity on a miss), for absorption.
-  Vec3 trace(const Ray& ray, int depth, float pathWeight, bool parallelView, TraceCounters& counters,
-             bool& hitSomething, float& hitDistance) const;
+  // `hitDistance` receives the distance to the nearest hit (infinity on a miss), for absorption;
+  // `pathLength` is how far the ray's origin is from the eye along the path, for edge widths.
+  Vec3 trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
+             TraceCounters& counters, bool& hitSomething, float& hitDistance) const;
+  // Coverage of the hit face's drawn edges at the hit (0 when its mesh draws none).
+  float edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) const;
   Vec3 shadeLocal(const Ray& ray, const SurfacePoint& surface, const Material& material, bool parallelView,
                   TraceCounters& counters) const;
   // Fraction of the light that reaches `from` (0 when blocked by an opaque face; transparent faces
@@ -55,6 +61,7 @@ class Tracer {
   int maxDepth_;
   bool anyTransparent_ = false;
   std::vector<EnergySplit> splits_;  // per material
+  PixelFootprint footprint_;
 };
 
 }  // namespace lancer

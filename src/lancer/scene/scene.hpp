@@ -20,6 +20,12 @@ struct SceneLight {
   Vec3 attenuation;  // constant, linear, quadratic
 };
 
+// How a mesh's element edges are drawn (Scene::edgeStyles[0] means "not drawn").
+struct EdgeStyle {
+  float widthPixels = 0;
+  Vec3 color{0, 0, 0};
+};
+
 struct Scene {
   Vec3d origin;  // world = origin + scene-space position; keeps float precision far from 0
   std::vector<Vec3> positions;
@@ -28,7 +34,10 @@ struct Scene {
   CornerNormals cornerNormals;    // smooth normals per face corner
   std::vector<std::uint32_t> faceMaterial;
   std::vector<ShadingMode> faceShading;
-  std::vector<std::uint8_t> faceEdgeMask;
+  std::vector<std::uint8_t> faceEdgeMask;   // element edges (or feature edges) of each face
+  std::vector<std::uint16_t> faceEdgeStyle; // index into edgeStyles; 0: edges not drawn
+  std::vector<std::uint8_t> faceLineCorners; // bit c: corner c is the end of a drawn edge of some face
+  std::vector<EdgeStyle> edgeStyles{EdgeStyle{}};
   // 1 when the face belongs to a closed, outward-oriented shell (it bounds a solid: refraction
   // enters and leaves it); 0 for open surfaces, which transparency treats as thin sheets.
   std::vector<std::uint8_t> faceBoundsSolid;

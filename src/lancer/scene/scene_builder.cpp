@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "lancer/mesh/feature_edges.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
 #include "lancer/scene/scene.hpp"
@@ -130,6 +131,15 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     const ShellOrientationReport orientation = orientClosedShellsOutward(positions, mesh.faces, edgeMasks);
     CornerNormals normals =
         computeCornerNormals(positions, mesh.faces, mesh.facePhysicalTag, instance.smoothAngleDegrees);
+    std::uint16_t edgeStyle = 0;
+    if (instance.edges) {
+      scene.edgeStyles.push_back({instance.edges->widthPixels, instance.edges->color});
+      edgeStyle = static_cast<std::uint16_t>(scene.edgeStyles.size() - 1);
+      if (instance.edges->featuresOnly) {
+        mesh.faceEdgeMask = edgeMasks;  // in step with the oriented faces
+        edgeMasks = featureEdgeMasks(mesh, instance.edges->featureAngleDegrees);
+      }
+    }
 
     const auto vertexBase = static_cast<std::uint32_t>(scene.positions.size());
     const auto normalBase = static_cast<std::uint32_t>(scene.cornerNormals.normals.size());
@@ -153,7 +163,26 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
       scene.faceMaterial.push_back(material);
       scene.faceShading.push_back(shading);
       scene.faceEdgeMask.push_back(edgeMasks[f]);
+      scene.faceEdgeStyle.push_back(edgeStyle);
       scene.faceBoundsSolid.push_back(orientation.faceBoundsSolid[f]);
+    }
+  }
+
+  // Corners where drawn edges end, so faces meeting a line only at a corner draw its end too.
+  if (scene.edgeStyles.size() > 1) {
+    std::vector<std::uint8_t> onLine(scene.positions.size(), 0);
+    for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+      if (scene.faceEdgeStyle[f] == 0) continue;
+      const MeshFace& face = scene.faces[f];
+      const int n = face.cornerCount();
+      for (int c = 0; c < n; ++c)
+        if (scene.faceEdgeMask[f] & (1u << c)) onLine[face.vertex[c]] = onLine[face.vertex[(c + 1) % n]] = 1;
+    }
+    scene.faceLineCorners.assign(scene.faces.size(), 0);
+    for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+      const MeshFace& face = scene.faces[f];
+      for (int c = 0; c < face.cornerCount(); ++c)
+        if (onLine[face.vertex[c]]) scene.faceLineCorners[f] |= static_cast<std::uint8_t>(1u << c);
     }
   }
 

@@ -68,6 +68,15 @@ struct GroupMaterial {
   SourceLocation where;
 };
 
+// `edges = { width = 1.0, color = [0, 0, 0], only = "features", feature_angle = 30 }`: element
+// edges drawn over the shaded surface, `width` pixels wide wherever they are seen.
+struct EdgeSettings {
+  float widthPixels = 1;
+  Vec3 color{0, 0, 0};
+  bool featuresOnly = false;          // only boundaries, group borders and creases
+  float featureAngleDegrees = 30;     // crease angle for featuresOnly
+};
+
 struct MeshInstance {
   std::string file;  // resolved against the scene file's folder
   SourceLocation where;  // of the [[mesh]] table, for errors found when the mesh is loaded
@@ -78,6 +87,7 @@ struct MeshInstance {
   Vec3d rotateDegrees{0, 0, 0};  // about x, then y, then z
   Vec3d scale{1, 1, 1};
   std::vector<GroupMaterial> groupMaterials;
+  std::optional<EdgeSettings> edges;
 };
 
 struct AnimationSettings {

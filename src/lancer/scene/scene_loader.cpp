@@ -29,8 +29,10 @@ constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
 constexpr std::array<std::string_view, 3> kLightKeys = {"position", "intensity", "attenuation"};
 constexpr std::array<std::string_view, 9> kMaterialKeys = {
     "ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "fresnel", "absorption"};
-constexpr std::array<std::string_view, 8> kMeshKeys = {"file",      "material", "shading", "smooth_angle",
-                                                       "translate", "rotate",   "scale",   "groups"};
+constexpr std::array<std::string_view, 9> kMeshKeys = {"file",      "material", "shading", "smooth_angle",
+                                                       "translate", "rotate",   "scale",   "groups", "edges"};
+constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only", "feature_angle"};
+constexpr std::array<std::string_view, 2> kEdgeSelections = {"elements", "features"};
 constexpr std::array<std::string_view, 6> kAnimationKeys = {"frames", "fps",    "orbit",
                                                             "axis",   "center", "degrees"};
 
@@ -301,6 +303,28 @@ std::vector<GroupMaterial> readGroupMaterials(const SceneFile& file, const TomlT
   return groups;
 }
 
+// `edges = { width = 1.0, color = [0, 0, 0], only = "features", feature_angle = 30 }`, or
+// `edges = true` for the defaults.
+std::optional<EdgeSettings> readEdges(const SceneFile& file, const TomlTableReader& mesh) {
+  const toml::node* node = mesh.find("edges");
+  if (!node) return std::nullopt;
+  if (const auto* enabled = node->as_boolean())
+    return enabled->get() ? std::optional<EdgeSettings>(EdgeSettings{}) : std::nullopt;
+  const auto* table = node->as_table();
+  if (!table)
+    mesh.fail(*node, fmt::format("{} must be true, false or a table like {{ width = 1.0, color = [0, 0, 0] }}, "
+                                 "found {}",
+                                 mesh.qualified("edges"), describeValue(*node)));
+  const TomlTableReader reader(*table, mesh.qualified("edges"), file.path, kEdgeKeys);
+  EdgeSettings edges;
+  if (auto width = reader.number("width", NumberRange::between(0.1, 100))) edges.widthPixels = float(*width);
+  if (auto color = reader.vector("color", Triple::Rgb, NumberRange::between(0, 1))) edges.color = toFloat(*color);
+  if (auto only = reader.choice("only", kEdgeSelections)) edges.featuresOnly = *only == 1;
+  if (auto angle = reader.number("feature_angle", NumberRange::between(0, 180)))
+    edges.featureAngleDegrees = float(*angle);
+  return edges;
+}
+
 MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size_t index,
                       const std::vector<Material>& materials) {
   const TomlTableReader reader(table, fmt::format("mesh[{}]", index), file.path, kMeshKeys);
@@ -320,6 +344,7 @@ MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size
   if (auto scale = reader.numberOrVector("scale", Triple::Xyz, NumberRange::nonZeroNumber()))
     mesh.scale = *scale;
   mesh.groupMaterials = readGroupMaterials(file, reader, materials);
+  mesh.edges = readEdges(file, reader);
   return mesh;
 }
 
