@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "lancer/render/clip_planes.hpp"
+#include "lancer/math/clip_planes.hpp"
 
 namespace lancer {
 namespace {

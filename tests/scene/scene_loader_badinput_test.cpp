@@ -121,8 +121,8 @@ TEST(SceneLoaderBadInput, UnknownTopLevelTable) {
   EXPECT_EQ(errorOf("[floor]\nshadow_catcher = true\n"),
             "scene.toml:1:2: error: unknown key 'floor'; expected one of: render, camera, ambient, light, "
             "material, "
-            "mesh, animation");
-  EXPECT_TRUE(failsAt("[[clip]]\npoint = [0, 0, 0]\n", "1:3", "unknown key 'clip'"));
+            "mesh, animation, clip");
+  EXPECT_TRUE(failsAt("[[clip]]\npoint = [0, 0, 0]\n", "1:1", "clip[0] has no 'normal'"));
   EXPECT_TRUE(failsAt("[camra]\n", "1:2", "unknown key 'camra' (did you mean 'camera'?)"));
 }
 

@@ -17,6 +17,7 @@ struct SurfacePoint {
   float cornerWeight[4];  // weights of the face's corners; 0 for the missing fourth of a triangle
   float normalSign;       // +1 when the ray hit the side the file's winding faces, else -1
   std::uint32_t face;
+  bool isCap = false;  // the flat cut face of a clip plane, not a point of `face` itself
 };
 
 // Weights of the corners of `face` at point p on it: barycentric for a triangle, inverse-bilinear

@@ -1,5 +1,6 @@
 #include "lancer/render/tracer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -64,7 +65,10 @@ TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounter
 Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, TraceCounters& counters) const {
   if (!anyTransparent_) {
     ++counters.rays;
-    return accelerator_.occluded(Ray(from, lightPosition - from), 0.0f, 1.0f) ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
+    const Ray ray(from, lightPosition - from);
+    const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
+    if (kept.empty() || kept.enter >= 1.0f) return {1, 1, 1};
+    return accelerator_.occluded(ray, kept.enter, std::min(kept.exit, 1.0f)) ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
   }
   Vec3 transmission{1, 1, 1};
   Vec3 origin = from;
@@ -74,8 +78,9 @@ Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, Trac
   for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
     ++counters.rays;
     const Ray ray(origin, lightPosition - origin);
+    const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
     Hit hit;
-    if (!accelerator_.intersect(ray, 0.0f, 1.0f, hit)) return transmission;
+    if (kept.empty() || !accelerator_.intersect(ray, kept.enter, std::min(kept.exit, 1.0f), hit)) return transmission;
     const Material& material = scene_.materials[scene_.faceMaterial[hit.face]];
     if (material.transparency <= 0.0f) return {0, 0, 0};
     const Vec3 point = ray.at(hit.t);
@@ -102,7 +107,7 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
   Vec3 color = scene_.ambient * material.ka;
   const Vec3 toViewer = normalize(-ray.direction);
   const MeshFace& face = scene_.faces[surface.face];
-  const bool gouraud = scene_.faceShading[surface.face] == ShadingMode::Gouraud;
+  const bool gouraud = !surface.isCap && scene_.faceShading[surface.face] == ShadingMode::Gouraud;
   for (const SceneLight& light : scene_.lights) {
     const Vec3 toLight = light.position - surface.position;
     const float distance = length(toLight);
@@ -142,6 +147,19 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
 // that is not traced (depth limit, or a path weight below 1/512) takes the local colour instead, so
 // every node is a weighted mean of non-negative terms with weights summing to 1: light can only be
 // lost (absorption), never created, and depth 0 is exactly the local model.
+Vec3 Tracer::shadeCap(const Ray& ray, const ClipInterval& kept, std::uint32_t face, bool parallelView,
+                      TraceCounters& counters) const {
+  const ClipPlane& plane = scene_.clipPlanes[static_cast<std::size_t>(kept.enterPlane)];
+  SurfacePoint cap{};
+  cap.face = face;
+  cap.position = ray.at(kept.enter);
+  // The ray came from the removed side, where the plane's normal points: the cap faces it.
+  cap.geometricNormal = cap.shadingNormal = plane.normal;
+  cap.normalSign = 1.0f;
+  cap.isCap = true;
+  return shadeLocal(ray, cap, scene_.materials[scene_.faceMaterial[face]], parallelView, counters);
+}
+
 float Tracer::edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) const {
   const std::uint16_t style = scene_.faceEdgeStyle.empty() ? 0 : scene_.faceEdgeStyle[hit.face];
   if (style == 0) return 0.0f;
@@ -158,10 +176,20 @@ float Tracer::edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) c
 Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
                    TraceCounters& counters, bool& hitSomething, float& hitDistance) const {
   ++counters.rays;
+  // Cut views: only the part of the ray on the kept side of every clip plane can hit anything.
+  const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
   Hit hit;
-  if (!accelerator_.intersect(ray, 0.0f, kInfinity, hit)) {
+  if (kept.empty() || !accelerator_.intersect(ray, kept.enter, kept.exit, hit)) {
     hitDistance = kInfinity;
     return background_;
+  }
+  // A ray that crosses a capped plane and then leaves a closed shell from inside was inside the
+  // solid at the plane: it sees the cut face (the cap) there, flat, in the shell's material.
+  if (kept.enterPlane >= 0 && scene_.clipCaps[static_cast<std::size_t>(kept.enterPlane)] &&
+      scene_.faceBoundsSolid[hit.face] && dot(scene_.faceNormals[hit.face], ray.direction) > 0.0f) {
+    hitSomething = true;
+    hitDistance = kept.enter * length(ray.direction);
+    return shadeCap(ray, kept, hit.face, parallelView, counters);
   }
   hitSomething = true;
   hitDistance = hit.t * length(ray.direction);

@@ -47,6 +47,10 @@ class Tracer {
   // `pathLength` is how far the ray's origin is from the eye along the path, for edge widths.
   Vec3 trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
              TraceCounters& counters, bool& hitSomething, float& hitDistance) const;
+  // The flat face a capped clip plane shows where it cuts a closed shell (`face`: the shell's face
+  // the ray leaves by, for its material).
+  Vec3 shadeCap(const Ray& ray, const ClipInterval& kept, std::uint32_t face, bool parallelView,
+                TraceCounters& counters) const;
   // Coverage of the hit face's drawn edges at the hit (0 when its mesh draws none).
   float edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) const;
   Vec3 shadeLocal(const Ray& ray, const SurfacePoint& surface, const Material& material, bool parallelView,

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lancer/math/aabb.hpp"
+#include "lancer/math/clip_planes.hpp"
 #include "lancer/mesh/mesh.hpp"
 #include "lancer/mesh/vertex_normals.hpp"
 #include "lancer/scene/scene_description.hpp"
@@ -43,6 +44,8 @@ struct Scene {
   std::vector<std::uint8_t> faceBoundsSolid;
   std::vector<Material> materials;
   std::vector<SceneLight> lights;
+  std::vector<ClipPlane> clipPlanes;  // scene space
+  std::vector<std::uint8_t> clipCaps;  // 1: cap closed shells cut by clipPlanes[i]
   Vec3 ambient{0, 0, 0};
   Aabb bounds;  // scene space
 

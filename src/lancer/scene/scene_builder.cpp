@@ -186,6 +186,10 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     }
   }
 
+  for (const ClipSettings& clip : description.clips) {
+    scene.clipPlanes.push_back({scene.toSceneSpace(clip.point), toFloat(clip.normal)});
+    scene.clipCaps.push_back(clip.cap ? 1 : 0);
+  }
   for (const PointLight& light : description.lights)
     scene.lights.push_back({scene.toSceneSpace(light.position), light.intensity, light.attenuation});
   return scene;

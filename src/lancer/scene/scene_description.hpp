@@ -99,6 +99,14 @@ struct AnimationSettings {
   double degrees = 360;
 };
 
+// `[[clip]] point = [..], normal = [..], cap = true`: geometry on the side the normal points to is
+// removed for every ray; with `cap`, closed shells cut by the plane show a flat face there.
+struct ClipSettings {
+  Vec3d point{0, 0, 0};
+  Vec3d normal{1, 0, 0};  // unit
+  bool cap = true;
+};
+
 struct SceneDescription {
   std::string path;  // the scene file, for messages
   RenderSettings render;
@@ -107,6 +115,7 @@ struct SceneDescription {
   std::vector<PointLight> lights;
   std::vector<Material> materials;  // materials[0] is always present: "default" when none is named
   std::vector<MeshInstance> meshes;
+  std::vector<ClipSettings> clips;
   std::optional<AnimationSettings> animation;
 };
 

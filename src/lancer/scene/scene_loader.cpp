@@ -18,8 +18,8 @@
 namespace lancer {
 namespace {
 
-constexpr std::array<std::string_view, 7> kSceneTables = {"render",   "camera", "ambient",  "light",
-                                                          "material", "mesh",   "animation"};
+constexpr std::array<std::string_view, 8> kSceneTables = {"render",   "camera", "ambient",  "light",
+                                                          "material", "mesh",   "animation", "clip"};
 constexpr std::array<std::string_view, 10> kRenderKeys = {
     "width",   "height",     "samples", "max_depth", "sampler",
     "shading", "background", "output",  "srgb",      "adaptive_threshold"};
@@ -181,6 +181,23 @@ CameraSettings readCamera(const SceneFile& file, const toml::table& table) {
   camera.viewHeight = reader.number("view_height", NumberRange::above(0));
   checkCameraFrame(reader, camera);
   return camera;
+}
+
+constexpr std::array<std::string_view, 3> kClipKeys = {"point", "normal", "cap"};
+
+ClipSettings readClip(const SceneFile& file, const toml::table& table, std::size_t index) {
+  const TomlTableReader reader(table, fmt::format("clip[{}]", index), file.path, kClipKeys);
+  ClipSettings clip;
+  const std::optional<Vec3d> point = reader.vector("point", Triple::Xyz);
+  if (!point) reader.failMissing("point", "point = [x, y, z] (a point on the cutting plane)");
+  const std::optional<Vec3d> normal = reader.vector("normal", Triple::Xyz);
+  if (!normal) reader.failMissing("normal", "normal = [x, y, z] (geometry on this side is removed)");
+  if (length(*normal) == 0.0)
+    reader.fail(*reader.find("normal"), fmt::format("{} must not be [0, 0, 0]", reader.qualified("normal")));
+  clip.point = *point;
+  clip.normal = normalize(*normal);
+  if (auto cap = reader.boolean("cap")) clip.cap = *cap;
+  return clip;
 }
 
 PointLight readLight(const SceneFile& file, const toml::table& table, std::size_t index) {
@@ -436,6 +453,8 @@ SceneDescription parseScene(std::string_view text, const std::string& path) {
   }
   const std::vector<const toml::table*> lights = tableArray(file, root, "light");
   for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(readLight(file, *lights[i], i));
+  const std::vector<const toml::table*> clips = tableArray(file, root, "clip");
+  for (std::size_t i = 0; i < clips.size(); ++i) scene.clips.push_back(readClip(file, *clips[i], i));
   scene.materials = readMaterials(file, root);
   const std::vector<const toml::table*> meshes = tableArray(file, root, "mesh");
   for (std::size_t i = 0; i < meshes.size(); ++i)
