@@ -9,6 +9,7 @@
 
 #include "lancer/math/aabb.hpp"
 #include "lancer/math/vec3.hpp"
+#include "lancer/mesh/mesh_field.hpp"
 
 namespace lancer {
 
@@ -64,6 +65,7 @@ struct Mesh {
   std::vector<std::int32_t> faceEntityTag;    // gmsh elementary entity
   std::vector<std::uint8_t> faceEdgeMask;     // see kAllEdges
   std::vector<PhysicalGroup> physicalGroups;
+  std::vector<MeshField> fields;  // $NodeData / $ElementData steps, in file order (empty: no cost)
   MeshSourceInfo source;
 
   std::size_t faceCount() const { return faces.size(); }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lancer {
 namespace {
@@ -132,6 +133,25 @@ void MshMeshAssembler::appendSkin(MeshSourceInfo& source) {
   volumeFaces_ = {};
 }
 
+namespace {
+
+// Keeps the values of the nodes that became mesh vertices, in the same order as the positions.
+// Nodes the field does not cover (made by lancer after the section was read) get NaN.
+void remapNodeField(MeshField& field, const std::vector<std::uint8_t>& usedNode, std::uint32_t usedCount) {
+  const auto components = static_cast<std::size_t>(field.components);
+  const std::size_t covered = field.values.size() / components;
+  std::vector<float> values;
+  values.reserve(std::size_t{usedCount} * components);
+  for (std::size_t i = 0; i < usedNode.size(); ++i) {
+    if (!usedNode[i]) continue;
+    for (std::size_t c = 0; c < components; ++c)
+      values.push_back(i < covered ? field.values[i * components + c] : std::numeric_limits<float>::quiet_NaN());
+  }
+  field.values = std::move(values);
+}
+
+}  // namespace
+
 Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> namedGroups) {
   for (int type = 1; type <= kMaxMshElementType; ++type) {
     const std::uint64_t count = countByType_[static_cast<std::size_t>(type)];
@@ -217,6 +237,8 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   });
   mesh.physicalGroups = std::move(namedGroups);
   mesh.source = std::move(source);
+  mesh.fields = std::move(nodeFields);
+  for (MeshField& field : mesh.fields) remapNodeField(field, usedNode, usedCount);
   return mesh;
 }
 

@@ -19,6 +19,8 @@ namespace lancer {
 class MshMeshAssembler {
  public:
   MshNodeTable nodes;
+  // $NodeData steps with values in node-table order; finish() maps them onto the mesh's vertices.
+  std::vector<MeshField> nodeFields;
 
   void reserveFaces(std::size_t count);
   // The physical and elementary tags of the elements that follow; dimension is the elements'.

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstring>
 
+#include "lancer/mesh/msh_fields.hpp"
 #include "lancer/mesh/msh_sections.hpp"
 
 namespace lancer {
@@ -191,8 +192,10 @@ void readSections(MshReadState& state) {
       if (state.elementsRead) cursor.failAt(start, "a second $Elements section; lancer reads one per file");
       state.major == 2 ? readMsh2Elements(state) : readMsh4Elements(state);
       state.elementsRead = true;
+    } else if (name == "$NodeData") {
+      readMshNodeData(state, start);
     } else {
-      // $Comments, $Periodic, $NodeData, $ElementData, $GhostElements, $Parametrizations, ...
+      // $Comments, $Periodic, $ElementData, $GhostElements, $Parametrizations, ...
       skipSection(cursor, name, start);
     }
   }

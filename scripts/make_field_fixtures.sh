@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Regenerates the .msh fixtures with post-processing fields in tests/data/fields/ from
+# tests/data/geo/field_square.geo with the real gmsh: the unit square with a view whose value is
+# x + 2 y, saved as $NodeData or $ElementData in MSH 2.2 and 4.1, ASCII and binary. They live apart
+# from tests/data/msh/ because that folder's files must all be in gmsh_reference.tsv.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+command -v gmsh >/dev/null || { echo "make_field_fixtures.sh: gmsh is not installed (apt-get install gmsh)" >&2; exit 1; }
+
+out=$(realpath tests/data/fields)
+rm -f "$out"/*.msh
+for kind in node element; do
+  for format in 2.2 4.1; do
+    for binary in 0 1; do
+      encoding=ascii
+      [[ $binary == 1 ]] && encoding=bin
+      file="$out/${kind}_xy_v${format/./}_${encoding}.msh"
+      log=$(gmsh tests/data/geo/field_square.geo -0 -setnumber elementData "$([[ $kind == element ]] && echo 1 || echo 0)" \
+        -setstring out "$file" -setnumber Mesh.MshFileVersion "$format" -setnumber Mesh.Binary "$binary" 2>&1)
+      if grep -q '^Error' <<<"$log" || [[ ! -s $file ]]; then echo "$log" >&2; exit 1; fi
+    done
+  done
+done
+rm -f tests/data/geo/field_square.geo_unrolled
+echo "field fixtures: $(ls "$out"/*.msh | wc -l) files, $(du -sh "$out" | cut -f1)"

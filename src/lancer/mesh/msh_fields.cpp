@@ -1,0 +1,121 @@
+#include "lancer/mesh/msh_fields.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+namespace lancer {
+namespace {
+
+// Largest component count gmsh writes (a 3x3 tensor).
+constexpr int kMaxComponents = 9;
+
+struct FieldHeader {
+  std::string name;
+  double time = 0;
+  int step = 0;
+  int components = 1;
+  std::uint64_t count = 0;
+};
+
+// A double-quoted string tag; gmsh writes one per line.
+std::string readQuoted(MshCursor& cursor) {
+  const char* quote = cursor.tokenStart();
+  if (cursor.atEnd() || *quote != '"') cursor.failAt(quote, "expected a string tag in double quotes");
+  const char* nameStart = quote + 1;
+  const char* limit = quote + 1 + std::min<std::uint64_t>(cursor.remaining() - 1, 4096);
+  const char* nameEnd = nameStart;
+  while (nameEnd < limit && *nameEnd != '"' && *nameEnd != '\n') ++nameEnd;
+  if (nameEnd == limit || *nameEnd != '"') cursor.failAt(quote, "the string tag has no closing quote");
+  cursor.seek(nameEnd + 1);
+  return {nameStart, nameEnd};
+}
+
+FieldHeader readHeader(MshReadState& state, const char* section) {
+  MshCursor& cursor = state.cursor;
+  FieldHeader header;
+  const char* at = cursor.tokenStart();
+  const int stringTags = cursor.readInt32("the number of string tags");
+  if (stringTags < 0 || stringTags > 64)
+    cursor.failAt(
+        at, fmt::format("{} string tags in {}: expected 1 (the view's name) or a few", stringTags, section));
+  for (int i = 0; i < stringTags; ++i) {
+    std::string tag = readQuoted(cursor);
+    if (i == 0) header.name = std::move(tag);
+  }
+  at = cursor.tokenStart();
+  const int realTags = cursor.readInt32("the number of real tags");
+  if (realTags < 0 || realTags > 64)
+    cursor.failAt(at, fmt::format("{} real tags in {}: expected 1 (the time) or a few", realTags, section));
+  for (int i = 0; i < realTags; ++i) {
+    const double value = cursor.readDouble("a real tag");
+    if (i == 0) header.time = value;
+  }
+  at = cursor.tokenStart();
+  const int integerTags = cursor.readInt32("the number of integer tags");
+  if (integerTags < 3 || integerTags > 64)
+    cursor.failAt(at, fmt::format("{} integer tags in {}: expected at least 3 (time step, components, count)",
+                                  integerTags, section));
+  header.step = cursor.readInt32("the time step");
+  at = cursor.tokenStart();
+  header.components = cursor.readInt32("the number of components");
+  if (header.components < 1 || header.components > kMaxComponents)
+    cursor.failAt(
+        at, fmt::format("{} components in {}: expected 1 to {}", header.components, section, kMaxComponents));
+  header.count = cursor.readCount("the number of values");
+  for (int i = 3; i < integerTags; ++i) cursor.readInt64("an integer tag");  // partition, ...
+  return header;
+}
+
+}  // namespace
+
+void readMshNodeData(MshReadState& state, const char* sectionStart) {
+  MshCursor& cursor = state.cursor;
+  if (!state.nodesRead)
+    cursor.failAt(sectionStart, "$NodeData comes before $Nodes; its values need the nodes");
+  FieldHeader header = readHeader(state, "$NodeData");
+  MshNodeTable& nodes = state.assembler.nodes;
+  const auto components = static_cast<std::uint64_t>(header.components);
+  const std::uint64_t recordBytes =
+      state.binary ? 4 + 8 * components : (1 + components) * kMinTextNumberBytes;
+  const char* countAt = cursor.position();
+  if (header.count > nodes.size())
+    cursor.failAt(countAt, fmt::format("$NodeData '{}' has {} values but the file has {} nodes", header.name,
+                                       header.count, nodes.size()));
+  if (state.binary) cursor.skipLine();
+  cursor.requireBytes(header.count, recordBytes, "$NodeData");
+
+  MeshField field;
+  field.name = std::move(header.name);
+  field.step = header.step;
+  field.time = header.time;
+  field.components = header.components;
+  field.values.assign(nodes.size() * components, std::numeric_limits<float>::quiet_NaN());
+  for (std::uint64_t i = 0; i < header.count; ++i) {
+    // Binary records may start with bytes that look like whitespace: only text skips to the token.
+    const char* recordAt = state.binary ? cursor.position() : cursor.tokenStart();
+    const std::uint64_t tag = state.binary
+                                  ? static_cast<std::uint64_t>(cursor.readRaw<std::int32_t>("a node tag"))
+                                  : cursor.readCount("a node tag");
+    const std::uint32_t index = nodes.find(tag);
+    if (index == kNoVertex)
+      cursor.failAt(recordAt, fmt::format("$NodeData '{}' gives a value for node {}, which $Nodes does not "
+                                          "define",
+                                          field.name, tag));
+    float* out = field.values.data() + index * components;
+    for (std::uint64_t c = 0; c < components; ++c) {
+      const char* valueAt = state.binary ? cursor.position() : cursor.tokenStart();
+      const double value =
+          state.binary ? cursor.readRaw<double>("a field value") : cursor.readDouble("a field value");
+      if (!std::isfinite(value))
+        cursor.failAt(valueAt,
+                      fmt::format("$NodeData '{}' has a non-finite value for node {}", field.name, tag));
+      out[c] = static_cast<float>(value);
+    }
+  }
+  cursor.expectToken("$EndNodeData", "after the node data values");
+  state.assembler.nodeFields.push_back(std::move(field));
+}
+
+}  // namespace lancer

@@ -1,0 +1,22 @@
+// The unit square (square.geo) with one post-processing view whose value is x + 2 y, linear so that
+// tests can check where each value lands: gmsh's NewView makes a zero view on the mesh, and
+// ModifyComponents fills it in place, keeping it mesh-based so that Save View writes $NodeData or
+// $ElementData (for elements gmsh evaluates x and y at the element's barycentre).
+// Usage: gmsh field_square.geo -0 -setnumber elementData 0|1 -setstring out FILE.msh
+//        -setnumber Mesh.MshFileVersion 2.2|4.1 -setnumber Mesh.Binary 0|1
+DefineConstant[ elementData = 0, out = "field_square.msh" ];
+Include "square.geo";
+Mesh 2;
+Plugin(NewView).NumComp = 1;
+If (elementData)
+  Plugin(NewView).Type = "ElementData";
+Else
+  Plugin(NewView).Type = "NodeData";
+EndIf
+Plugin(NewView).Run;
+Plugin(ModifyComponents).Expression0 = "x + 2*y";
+Plugin(ModifyComponents).View = 0;
+Plugin(ModifyComponents).Run;
+View[0].Name = "temperature";
+PostProcessing.SaveMesh = 1;
+Save View[0] out;

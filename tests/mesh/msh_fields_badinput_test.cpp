@@ -1,0 +1,108 @@
+// Broken $NodeData sections, made by editing a file gmsh wrote (tests/data/fields/, from
+// scripts/make_field_fixtures.sh) in memory: each is refused with an InputError giving the file,
+// the line (text) or byte offset (binary) and what is wrong.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "lancer/mesh/msh_reader.hpp"
+#include "mesh/msh_test_util.hpp"
+
+namespace lancer {
+namespace {
+
+std::string fixture(const char* name) {
+  const std::vector<char> bytes = test::readFileBytes(std::string(LANCER_TEST_DATA_DIR) + "/fields/" + name);
+  return {bytes.begin(), bytes.end()};
+}
+
+std::string replaceOnce(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+// The error's "file:location error: ..." text, or "" when the file was read.
+std::string errorOf(const std::string& bytes) {
+  try {
+    readMshFromMemory(bytes, "f.msh");
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+const std::string kHeader = "$NodeData\n1\n\"temperature\"\n1\n-1\n3\n0\n1\n25\n";
+
+TEST(MshFieldsBadInput, TheFixtureHeaderIsAsExpected) {
+  EXPECT_NE(fixture("node_xy_v41_ascii.msh").find(kHeader + "1 0\n"), std::string::npos);
+  EXPECT_NE(fixture("node_xy_v41_bin.msh").find(kHeader), std::string::npos);
+  EXPECT_EQ(errorOf(fixture("node_xy_v41_ascii.msh")), "");
+}
+
+TEST(MshFieldsBadInput, MissingNode) {
+  const std::string what =
+      errorOf(replaceOnce(fixture("node_xy_v41_ascii.msh"), kHeader + "1 0\n", kHeader + "9001 0\n"));
+  EXPECT_EQ(what.rfind("f.msh:196:", 0), 0u) << what;
+  EXPECT_NE(what.find("gives a value for node 9001, which $Nodes does not define"), std::string::npos)
+      << what;
+}
+
+TEST(MshFieldsBadInput, MoreValuesThanNodes) {
+  const std::string what =
+      errorOf(replaceOnce(fixture("node_xy_v22_ascii.msh"), "\n1\n25\n1 0\n", "\n1\n26\n1 0\n"));
+  EXPECT_NE(what.find("$NodeData 'temperature' has 26 values but the file has 25 nodes"), std::string::npos)
+      << what;
+}
+
+TEST(MshFieldsBadInput, ZeroComponents) {
+  const std::string what = errorOf(replaceOnce(fixture("node_xy_v41_ascii.msh"), kHeader,
+                                               "$NodeData\n1\n\"temperature\"\n1\n-1\n3\n0\n0\n25\n"));
+  EXPECT_EQ(what.rfind("f.msh:194:", 0), 0u) << what;
+  EXPECT_NE(what.find("0 components in $NodeData: expected 1 to 9"), std::string::npos) << what;
+}
+
+TEST(MshFieldsBadInput, TooFewIntegerTags) {
+  const std::string what = errorOf(replaceOnce(fixture("node_xy_v41_ascii.msh"), kHeader,
+                                               "$NodeData\n1\n\"temperature\"\n1\n-1\n2\n0\n1\n"));
+  EXPECT_NE(what.find("2 integer tags in $NodeData: expected at least 3"), std::string::npos) << what;
+}
+
+TEST(MshFieldsBadInput, UnterminatedName) {
+  const std::string what =
+      errorOf(replaceOnce(fixture("node_xy_v41_ascii.msh"), "\"temperature\"", "\"temperature"));
+  EXPECT_NE(what.find("the string tag has no closing quote"), std::string::npos) << what;
+}
+
+TEST(MshFieldsBadInput, NonFiniteValue) {
+  const std::string what =
+      errorOf(replaceOnce(fixture("node_xy_v41_ascii.msh"), kHeader + "1 0\n", kHeader + "1 nan\n"));
+  EXPECT_NE(what.find("non-finite value for node 1"), std::string::npos) << what;
+}
+
+TEST(MshFieldsBadInput, TruncatedText) {
+  std::string bytes = fixture("node_xy_v41_ascii.msh");
+  bytes.resize(bytes.find("$EndNodeData") - 20);
+  EXPECT_NE(errorOf(bytes).find("f.msh:"), std::string::npos);
+}
+
+TEST(MshFieldsBadInput, TruncatedBinary) {
+  std::string bytes = fixture("node_xy_v41_bin.msh");
+  bytes.resize(bytes.find(kHeader) + kHeader.size() + 100);
+  const std::string what = errorOf(bytes);
+  EXPECT_EQ(what.rfind("f.msh:@", 0), 0u) << what;
+  EXPECT_NE(what.find("$NodeData"), std::string::npos) << what;
+}
+
+TEST(MshFieldsBadInput, BinaryMissingNode) {
+  std::string bytes = fixture("node_xy_v22_bin.msh");
+  const std::size_t record = bytes.find(kHeader) + kHeader.size();
+  bytes[record] = 0x7f;  // tag 1 -> 127, which the 25-node square does not have
+  const std::string what = errorOf(bytes);
+  EXPECT_EQ(what.rfind("f.msh:@" + std::to_string(record) + ":", 0), 0u) << what;
+  EXPECT_NE(what.find("node 127"), std::string::npos) << what;
+}
+
+}  // namespace
+}  // namespace lancer

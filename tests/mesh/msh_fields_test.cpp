@@ -1,0 +1,54 @@
+// $NodeData read from files gmsh wrote (scripts/make_field_fixtures.sh): the unit square with the
+// field x + 2 y, so the value at every mesh vertex must be x + 2 y of that vertex, whatever the MSH
+// version, encoding and node renumbering.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "lancer/mesh/msh_reader.hpp"
+
+namespace lancer {
+namespace {
+
+std::string fieldFixture(const std::string& name) {
+  return std::string(LANCER_TEST_DATA_DIR) + "/fields/" + name;
+}
+
+class NodeDataTest : public testing::TestWithParam<const char*> {};
+
+TEST_P(NodeDataTest, ValuesLandOnTheirVertices) {
+  const Mesh mesh = readMsh(fieldFixture(GetParam()));
+  ASSERT_EQ(mesh.fields.size(), 1u);
+  const MeshField& field = mesh.fields[0];
+  EXPECT_EQ(field.name, "temperature");
+  EXPECT_FALSE(field.perElement);
+  EXPECT_EQ(field.components, 1);
+  EXPECT_EQ(field.step, 0);
+  ASSERT_EQ(field.itemCount(), mesh.positions.size());
+  EXPECT_EQ(mesh.positions.size(), 25u);
+  for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3d p = mesh.worldPosition(v);
+    EXPECT_NEAR(field.scalar(v), p.x + 2 * p.y, 1e-5) << "vertex " << v;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllEncodings, NodeDataTest,
+                         testing::Values("node_xy_v22_ascii.msh", "node_xy_v22_bin.msh",
+                                         "node_xy_v41_ascii.msh", "node_xy_v41_bin.msh"));
+
+TEST(MeshFieldTest, VectorScalarIsTheLength) {
+  MeshField field;
+  field.components = 3;
+  field.values = {3, 4, 0, 0, 0, -2};
+  ASSERT_EQ(field.itemCount(), 2u);
+  EXPECT_FLOAT_EQ(field.scalar(0), 5.0f);
+  EXPECT_FLOAT_EQ(field.scalar(1), 2.0f);
+}
+
+TEST(MeshFieldTest, MeshesWithoutDataHaveNoFields) {
+  const Mesh mesh = readMsh(std::string(LANCER_TEST_DATA_DIR) + "/msh/square_tri3_v41_ascii.msh");
+  EXPECT_TRUE(mesh.fields.empty());
+}
+
+}  // namespace
+}  // namespace lancer
