@@ -1,5 +1,5 @@
 // `lancer info FILE.msh [--json]`: what the reader made of a mesh file: format, counts as read and
-// as rendered, physical groups, bounding box, area, shells and their orientation, load time.
+// as rendered, physical groups, fields, bounding box, area, shells and their orientation, load time.
 #include <fmt/format.h>
 
 #include <cstdio>
@@ -64,9 +64,10 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
                  mshElementTypeName(type), type);
   }
   if (source.duplicateElementsSkipped)
-    fmt::print("copies skipped:  {} (MSH 2 repeats an element for each further physical group; the first "
-               "copy is kept)\n",
-               source.duplicateElementsSkipped);
+    fmt::print(
+        "copies skipped:  {} (MSH 2 repeats an element for each further physical group; the first "
+        "copy is kept)\n",
+        source.duplicateElementsSkipped);
   if (source.degenerateFacesDropped)
     fmt::print("warning: {} degenerate (zero-area) faces dropped\n", source.degenerateFacesDropped);
   fmt::print("physical groups:\n");
@@ -79,6 +80,16 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
   }
   if (const auto none = stats.facesByPhysicalTag.find(0); none != stats.facesByPhysicalTag.end())
     fmt::print("  (no physical group)                    {} faces\n", none->second);
+  if (!mesh.fields.empty()) {
+    fmt::print("fields:\n");
+    for (const MeshField& field : mesh.fields) {
+      const auto [low, high] = field.range();
+      fmt::print("  {:<24} {} data, {} component{}, step {} (time {:g}), {} {:.6g} .. {:.6g}\n",
+                 fmt::format("\"{}\"", field.name), field.perElement ? "element" : "node", field.components,
+                 field.components == 1 ? "" : "s", field.step, field.time,
+                 field.components == 1 ? "values" : "magnitudes", low, high);
+    }
+  }
   if (mesh.faceCount()) {
     const Aabbd& box = stats.worldBounds;
     fmt::print("bounding box:    [{:.9g}, {:.9g}, {:.9g}] .. [{:.9g}, {:.9g}, {:.9g}]\n", box.lower.x,
@@ -132,6 +143,17 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
                        i ? "," : "", group.dimension, group.tag, jsonString(group.name), count);
   }
   out += mesh.physicalGroups.empty() ? "],\n" : "\n  ],\n";
+  out += "  \"fields\": [";
+  for (std::size_t i = 0; i < mesh.fields.size(); ++i) {
+    const MeshField& field = mesh.fields[i];
+    const auto [low, high] = field.range();
+    out += fmt::format(
+        "{}\n    {{\"name\": {}, \"location\": \"{}\", \"components\": {}, \"step\": {}, \"time\": {:.17g}, "
+        "\"min\": {:.9g}, \"max\": {:.9g}}}",
+        i ? "," : "", jsonString(field.name), field.perElement ? "element" : "node", field.components,
+        field.step, field.time, low, high);
+  }
+  out += mesh.fields.empty() ? "],\n" : "\n  ],\n";
   if (mesh.faceCount()) {
     const Aabbd& box = stats.worldBounds;
     out += fmt::format(
@@ -168,7 +190,9 @@ void addInfoCommand(CLI::App& app, CommandRunner& runner) {
   CLI::App* command = app.add_subcommand("info", "Describe a gmsh .msh file as lancer reads it");
   command->add_option("FILE", options->file, "the .msh file")->required();
   command->add_flag("--json", options->json, "machine-readable output");
-  command->add_option("--accel", options->accel, "also build an accelerator (default kdtree-sah) and report its statistics")
+  command
+      ->add_option("--accel", options->accel,
+                   "also build an accelerator (default kdtree-sah) and report its statistics")
       ->expected(0, 1)
       ->default_str("kdtree-sah")
       ->check(CLI::IsMember({"kdtree-sah", "kdtree-median", "naive"}));
@@ -178,10 +202,13 @@ void addInfoCommand(CLI::App& app, CommandRunner& runner) {
       const MeshStats stats = computeMeshStats(mesh);
       if (options->json) {
         printJson(mesh, stats,
-                  options->accel.empty() ? "" : accelStatsJson(buildAccelStats(mesh, parseAccelKind(options->accel))));
+                  options->accel.empty()
+                      ? ""
+                      : accelStatsJson(buildAccelStats(mesh, parseAccelKind(options->accel))));
       } else {
         printText(mesh, stats);
-        if (!options->accel.empty()) std::fputs(accelStatsText(buildAccelStats(mesh, parseAccelKind(options->accel))).c_str(), stdout);
+        if (!options->accel.empty())
+          std::fputs(accelStatsText(buildAccelStats(mesh, parseAccelKind(options->accel))).c_str(), stdout);
       }
       return kExitOk;
     };

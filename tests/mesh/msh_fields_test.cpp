@@ -45,6 +45,14 @@ TEST(MeshFieldTest, VectorScalarIsTheLength) {
   EXPECT_FLOAT_EQ(field.scalar(1), 2.0f);
 }
 
+TEST(MeshFieldTest, RangeIgnoresMissingValues) {
+  MeshField field;
+  field.values = {2, std::nanf(""), -1, 5};
+  EXPECT_EQ(field.range(), (std::pair{-1.0f, 5.0f}));
+  field.values = {std::nanf("")};
+  EXPECT_EQ(field.range(), (std::pair{0.0f, 0.0f}));
+}
+
 TEST(MeshFieldTest, MeshesWithoutDataHaveNoFields) {
   const Mesh mesh = readMsh(std::string(LANCER_TEST_DATA_DIR) + "/msh/square_tri3_v41_ascii.msh");
   EXPECT_TRUE(mesh.fields.empty());

@@ -1,6 +1,8 @@
 #include "lancer/mesh/mesh_field.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lancer {
 
@@ -10,6 +12,17 @@ float MeshField::scalar(std::size_t item) const {
   double sum = 0;
   for (int c = 0; c < components; ++c) sum += static_cast<double>(v[c]) * v[c];
   return static_cast<float>(std::sqrt(sum));
+}
+
+std::pair<float, float> MeshField::range() const {
+  float low = std::numeric_limits<float>::infinity(), high = -low;
+  for (std::size_t i = 0; i < itemCount(); ++i) {
+    const float value = scalar(i);
+    if (std::isnan(value)) continue;
+    low = std::min(low, value);
+    high = std::max(high, value);
+  }
+  return low <= high ? std::pair{low, high} : std::pair{0.0f, 0.0f};
 }
 
 }  // namespace lancer

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lancer {
@@ -25,6 +26,8 @@ struct MeshField {
   }
   // The scalar colour maps show: the value of a scalar, the length of a vector or tensor.
   float scalar(std::size_t item) const;
+  // The least and greatest scalar over the items, ignoring NaN; {0, 0} when there is none.
+  std::pair<float, float> range() const;
 };
 
 }  // namespace lancer
