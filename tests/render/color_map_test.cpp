@@ -4,8 +4,8 @@
 
 #include <cmath>
 
+#include "lancer/image/color_map.hpp"
 #include "lancer/image/tiny_font.hpp"
-#include "lancer/render/color_map.hpp"
 
 namespace lancer {
 namespace {
@@ -20,9 +20,9 @@ void expectColour(const Vec3& c, int r, int g, int b) {
 float luma(const Vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
 TEST(ColorMap, EndsAndMiddleAreThePublishedColours) {
-  expectColour(colorMapLookup(ColorMapKind::Viridis, 0), 68, 1, 84);      // #440154
+  expectColour(colorMapLookup(ColorMapKind::Viridis, 0), 68, 1, 84);        // #440154
   expectColour(colorMapLookup(ColorMapKind::Viridis, 0.5f), 33, 145, 140);  // #21918c
-  expectColour(colorMapLookup(ColorMapKind::Viridis, 1), 253, 231, 37);   // #fde725
+  expectColour(colorMapLookup(ColorMapKind::Viridis, 1), 253, 231, 37);     // #fde725
   expectColour(colorMapLookup(ColorMapKind::Magma, 0), 0, 0, 4);
   expectColour(colorMapLookup(ColorMapKind::Magma, 1), 252, 253, 191);
   expectColour(colorMapLookup(ColorMapKind::Coolwarm, 0), 59, 76, 192);
@@ -48,7 +48,8 @@ TEST(ColorMap, DivergingMapIsLightestInTheMiddleBlueBelowRedAbove) {
     const float t = i / 32.0f;
     EXPECT_LT(luma(colorMapLookup(ColorMapKind::Coolwarm, t)), middle);
     EXPECT_LT(luma(colorMapLookup(ColorMapKind::Coolwarm, 1 - t)), middle);
-    const Vec3 below = colorMapLookup(ColorMapKind::Coolwarm, t), above = colorMapLookup(ColorMapKind::Coolwarm, 1 - t);
+    const Vec3 below = colorMapLookup(ColorMapKind::Coolwarm, t),
+               above = colorMapLookup(ColorMapKind::Coolwarm, 1 - t);
     EXPECT_GT(below.z, below.x);
     EXPECT_GT(above.x, above.z);
   }
@@ -61,7 +62,8 @@ TEST(ColorMap, OutOfRangeAndNanAreClamped) {
 }
 
 TEST(ColorMap, NamesRoundTripAndUnknownIsRefused) {
-  for (ColorMapKind kind : {ColorMapKind::Viridis, ColorMapKind::Magma, ColorMapKind::Coolwarm, ColorMapKind::Grey})
+  for (ColorMapKind kind :
+       {ColorMapKind::Viridis, ColorMapKind::Magma, ColorMapKind::Coolwarm, ColorMapKind::Grey})
     EXPECT_EQ(parseColorMap(colorMapName(kind)), kind);
   EXPECT_EQ(parseColorMap("gray"), ColorMapKind::Grey);
   EXPECT_FALSE(parseColorMap("jet").has_value());

@@ -1,4 +1,4 @@
-#include "lancer/render/color_map.hpp"
+#include "lancer/image/color_map.hpp"
 
 #include <algorithm>
 #include <array>

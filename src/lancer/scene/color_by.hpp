@@ -1,0 +1,44 @@
+// `color_by = { field = "temperature", step = 0, map = "viridis", range = [min, max] }` on a
+// [[mesh]]: colouring a surface by a field of its .msh file ($NodeData or $ElementData). Reading
+// the scene key, then resolving it against the loaded mesh into normalised scalars in [0, 1] that
+// the tracer maps to colours (per vertex, interpolated per pixel, or per face).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lancer/image/color_map.hpp"
+#include "lancer/mesh/mesh.hpp"
+#include "lancer/scene/toml_table_reader.hpp"
+#include "lancer/util/input_error.hpp"
+
+namespace lancer {
+
+struct ColorBy {
+  std::string field;
+  int step = 0;
+  ColorMapKind map = ColorMapKind::Viridis;
+  std::optional<std::pair<double, double>> range;  // default: the field's range over the step
+  SourceLocation where;                            // the color_by value, for errors found at load
+};
+
+// The mesh table's `color_by`, if present (file: the scene file's path, for messages).
+std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReader& mesh);
+
+// A field mapped for display: t = (scalar - low) / (high - low), clamped to [0, 1]; vector fields
+// use their magnitude. NaN where the file gives no value (drawn as the map's low end).
+struct FieldColoring {
+  ColorMapKind map = ColorMapKind::Viridis;
+  bool perFace = false;  // element data: t per face; node data: t per mesh vertex
+  double low = 0;
+  double high = 1;
+  std::vector<float> t;
+};
+
+// Finds the field and step named by `spec` in the mesh; an unknown name or step is an InputError at
+// spec.where that lists what the file has (and the closest name).
+FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh);
+
+}  // namespace lancer

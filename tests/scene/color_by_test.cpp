@@ -1,0 +1,123 @@
+// color_by: reading the scene key and resolving it against a gmsh-made mesh with the field x + 2 y
+// (tests/data/fields/): normalised values, ranges, and the errors for unknown fields and steps.
+#include "lancer/scene/color_by.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+
+#include "lancer/mesh/msh_reader.hpp"
+
+namespace lancer {
+namespace {
+
+constexpr std::array<std::string_view, 2> kKeys = {"file", "color_by"};
+
+std::optional<ColorBy> parse(const std::string& text) {
+  const toml::table root = toml::parse(std::string_view(text), std::string_view("scene.toml"));
+  const TomlTableReader reader(root, "mesh[0]", "scene.toml", kKeys);
+  return readColorBy("scene.toml", reader);
+}
+
+std::string parseError(const std::string& text) {
+  try {
+    parse(text);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+Mesh fieldMesh() { return readMsh(std::string(LANCER_TEST_DATA_DIR) + "/fields/node_xy_v41_ascii.msh"); }
+
+TEST(ColorByTest, ReadsAllKeys) {
+  const auto spec =
+      parse("color_by = { field = \"temperature\", step = 2, map = \"magma\", range = [-1, 4.5] }");
+  ASSERT_TRUE(spec);
+  EXPECT_EQ(spec->field, "temperature");
+  EXPECT_EQ(spec->step, 2);
+  EXPECT_EQ(spec->map, ColorMapKind::Magma);
+  ASSERT_TRUE(spec->range);
+  EXPECT_EQ(spec->range->first, -1.0);
+  EXPECT_EQ(spec->range->second, 4.5);
+  EXPECT_EQ(spec->where.line, 1);
+}
+
+TEST(ColorByTest, DefaultsAndAbsence) {
+  EXPECT_FALSE(parse("file = \"a.msh\""));
+  const auto spec = parse("color_by = { field = \"t\" }");
+  ASSERT_TRUE(spec);
+  EXPECT_EQ(spec->step, 0);
+  EXPECT_EQ(spec->map, ColorMapKind::Viridis);
+  EXPECT_FALSE(spec->range);
+}
+
+TEST(ColorByTest, BadValuesPointAtTheKey) {
+  EXPECT_NE(parseError("color_by = \"temperature\"")
+                .find("scene.toml:1:12: error: mesh[0].color_by must be a table"),
+            std::string::npos)
+      << parseError("color_by = \"temperature\"");
+  EXPECT_NE(parseError("color_by = { map = \"viridis\" }").find("field"), std::string::npos);
+  EXPECT_NE(parseError("color_by = { field = \"t\", map = \"virdis\" }").find("viridis"), std::string::npos);
+  EXPECT_NE(parseError("color_by = { field = \"t\", range = [1, 1] }").find("min < max"), std::string::npos);
+  EXPECT_NE(parseError("color_by = { field = \"t\", range = [1] }").find("two finite numbers"),
+            std::string::npos);
+  EXPECT_NE(parseError("color_by = { field = \"t\", step = -1 }").find("step"), std::string::npos);
+  EXPECT_NE(parseError("color_by = { field = \"t\", colour = 1 }").find("colour"), std::string::npos);
+}
+
+TEST(ColorByTest, NodeFieldIsNormalisedOverItsRange) {
+  const Mesh mesh = fieldMesh();
+  ColorBy spec;
+  spec.field = "temperature";
+  const FieldColoring coloring = resolveColorBy(spec, mesh);
+  EXPECT_FALSE(coloring.perFace);
+  EXPECT_NEAR(coloring.low, 0.0, 1e-6);
+  EXPECT_NEAR(coloring.high, 3.0, 1e-6);
+  ASSERT_EQ(coloring.t.size(), mesh.positions.size());
+  for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3d p = mesh.worldPosition(v);
+    EXPECT_NEAR(coloring.t[v], (p.x + 2 * p.y) / 3, 1e-5);
+  }
+}
+
+TEST(ColorByTest, ExplicitRangeClamps) {
+  const Mesh mesh = fieldMesh();
+  ColorBy spec;
+  spec.field = "temperature";
+  spec.range = std::pair{1.0, 2.0};
+  const FieldColoring coloring = resolveColorBy(spec, mesh);
+  for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3d p = mesh.worldPosition(v);
+    EXPECT_NEAR(coloring.t[v], std::clamp(p.x + 2 * p.y - 1, 0.0, 1.0), 1e-5);
+  }
+}
+
+std::string resolveError(const ColorBy& spec, const Mesh& mesh) {
+  try {
+    resolveColorBy(spec, mesh);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(ColorByTest, UnknownFieldNamesTheFieldsPresent) {
+  const Mesh mesh = fieldMesh();
+  ColorBy spec;
+  spec.field = "temprature";
+  spec.where = {"scene.toml", 7, 12};
+  const std::string what = resolveError(spec, mesh);
+  EXPECT_EQ(what.rfind("scene.toml:7:12: error: color_by field \"temprature\" is not in ", 0), 0u) << what;
+  EXPECT_NE(what.find("(did you mean 'temperature'?); it has \"temperature\" (step 0)"), std::string::npos)
+      << what;
+  spec.field = "temperature";
+  spec.step = 3;
+  EXPECT_NE(resolveError(spec, mesh).find("has no step 3"), std::string::npos);
+  const Mesh plain = readMsh(std::string(LANCER_TEST_DATA_DIR) + "/msh/square_tri3_v41_ascii.msh");
+  EXPECT_NE(resolveError(spec, plain).find("has no fields"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace lancer
