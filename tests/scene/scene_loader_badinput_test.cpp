@@ -118,10 +118,9 @@ TEST(SceneLoaderBadInput, UnknownKeyWrittenAsDottedKey) {
 }
 
 TEST(SceneLoaderBadInput, UnknownTopLevelTable) {
-  EXPECT_EQ(errorOf("[floor]\nshadow_catcher = true\n"),
-            "scene.toml:1:2: error: unknown key 'floor'; expected one of: render, camera, ambient, light, "
-            "material, "
-            "mesh, animation, clip");
+  EXPECT_EQ(errorOf("[ground]\nshadow_catcher = true\n"),
+            "scene.toml:1:2: error: unknown key 'ground'; expected one of: render, camera, ambient, light, "
+            "material, mesh, animation, clip, floor");
   EXPECT_TRUE(failsAt("[[clip]]\npoint = [0, 0, 0]\n", "1:1", "clip[0] has no 'normal'"));
   EXPECT_TRUE(failsAt("[camra]\n", "1:2", "unknown key 'camra' (did you mean 'camera'?)"));
 }

@@ -54,11 +54,11 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderS
 }
 
 TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const {
-  bool hitSomething = false;
+  float coverage = 0;
   float hitDistance = 0;
   TraceResult result;
-  result.color = trace(ray, 0, 1.0f, 0.0f, parallelView, counters, hitSomething, hitDistance);
-  result.alpha = hitSomething ? 1.0f : 0.0f;
+  result.color = trace(ray, 0, 1.0f, 0.0f, parallelView, counters, coverage, hitDistance);
+  result.alpha = coverage;
   return result;
 }
 
@@ -147,6 +147,28 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
 // that is not traced (depth limit, or a path weight below 1/512) takes the local colour instead, so
 // every node is a weighted mean of non-negative terms with weights summing to 1: light can only be
 // lost (absorption), never created, and depth 0 is exactly the local model.
+Vec3 Tracer::shadeShadowCatcher(const Vec3& point, TraceCounters& counters, float& coverage) const {
+  // The share of the light the floor would get that the meshes let through, per channel: ambient
+  // plus the lights' diffuse irradiance with shadows, over the same without them.
+  const Vec3& normal = scene_.floorNormal;
+  Vec3 lit = scene_.ambient, shadowed = scene_.ambient;
+  const Vec3 shadowOrigin = offsetRayOrigin(point, normal);
+  for (const SceneLight& light : scene_.lights) {
+    const Vec3 toLight = light.position - point;
+    const float distance = length(toLight);
+    const float cosTheta = distance > 0.0f ? dot(normal, toLight) / distance : 0.0f;
+    if (cosTheta <= 0.0f) continue;
+    const Vec3 irradiance = light.intensity * (cosTheta * lightAttenuation(light, distance));
+    lit += irradiance;
+    shadowed += irradiance * lightTransmission(shadowOrigin, light.position, counters);
+  }
+  auto ratio = [](float s, float l) { return l > 0.0f ? std::clamp(s / l, 0.0f, 1.0f) : 1.0f; };
+  const Vec3 kept{ratio(shadowed.x, lit.x), ratio(shadowed.y, lit.y), ratio(shadowed.z, lit.z)};
+  // Over a transparent background the shadow is black with the darkening as its opacity.
+  coverage = std::max(coverage, 1.0f - (kept.x + kept.y + kept.z) / 3.0f);
+  return background_ * kept;
+}
+
 Vec3 Tracer::shadeCap(const Ray& ray, const ClipInterval& kept, std::uint32_t face, bool parallelView,
                       TraceCounters& counters) const {
   const ClipPlane& plane = scene_.clipPlanes[static_cast<std::size_t>(kept.enterPlane)];
@@ -174,12 +196,22 @@ float Tracer::edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) c
 }
 
 Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
-                   TraceCounters& counters, bool& hitSomething, float& hitDistance) const {
+                   TraceCounters& counters, float& coverage, float& hitDistance) const {
   ++counters.rays;
   // Cut views: only the part of the ray on the kept side of every clip plane can hit anything.
   const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
   Hit hit;
-  if (kept.empty() || !accelerator_.intersect(ray, kept.enter, kept.exit, hit)) {
+  const bool hitMesh = !kept.empty() && accelerator_.intersect(ray, kept.enter, kept.exit, hit);
+  if (scene_.hasShadowCatcher) {
+    // The catcher is a plane seen from above, in front of any mesh hit and inside the kept part.
+    const float rate = dot(ray.direction, scene_.floorNormal);
+    const float t = rate < 0.0f ? (scene_.floorOffset - dot(ray.origin, scene_.floorNormal)) / rate : kInfinity;
+    if (t > kept.enter && t < kept.exit && t < (hitMesh ? hit.t : kInfinity)) {
+      hitDistance = t * length(ray.direction);
+      return shadeShadowCatcher(ray.at(t), counters, coverage);
+    }
+  }
+  if (!hitMesh) {
     hitDistance = kInfinity;
     return background_;
   }
@@ -187,11 +219,11 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength
   // solid at the plane: it sees the cut face (the cap) there, flat, in the shell's material.
   if (kept.enterPlane >= 0 && scene_.clipCaps[static_cast<std::size_t>(kept.enterPlane)] &&
       scene_.faceBoundsSolid[hit.face] && dot(scene_.faceNormals[hit.face], ray.direction) > 0.0f) {
-    hitSomething = true;
+    coverage = 1.0f;
     hitDistance = kept.enter * length(ray.direction);
     return shadeCap(ray, kept, hit.face, parallelView, counters);
   }
-  hitSomething = true;
+  coverage = 1.0f;
   hitDistance = hit.t * length(ray.direction);
   // Edges are paint on the surface: fully covered pixels need no shading, partial ones blend.
   const float edge = edgeCoverageAt(ray, hit, pathLength);
@@ -242,7 +274,7 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength
     float distance = 0;
     const Ray reflectedRay(offsetRayOrigin(surface.position, surface.geometricNormal), reflected);
     Vec3 radiance = trace(reflectedRay, depth + 1, reflectPathWeight, pathLength + hitDistance, false, counters,
-                          hitSomething, distance);
+                          coverage, distance);
     // Reflected off the inside of a solid: the ray stays in its medium (Beer-Lambert).
     if (solid && !entering && maxComponent(material.absorption) > 0.0f)
       radiance *= std::isfinite(distance) ? beerLambert(material.absorption, distance) : Vec3{0, 0, 0};
@@ -255,7 +287,7 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength
     float distance = 0;
     const Ray transmittedRay(offsetRayOrigin(surface.position, -surface.geometricNormal), transmittedDirection);
     Vec3 radiance = trace(transmittedRay, depth + 1, transmitPathWeight, pathLength + hitDistance, false, counters,
-                          hitSomething, distance);
+                          coverage, distance);
     // Entering a solid: absorbed along the segment inside, up to the next surface.
     if (solid && entering && maxComponent(material.absorption) > 0.0f)
       radiance *= std::isfinite(distance) ? beerLambert(material.absorption, distance) : Vec3{0, 0, 0};

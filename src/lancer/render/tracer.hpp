@@ -45,8 +45,12 @@ class Tracer {
  private:
   // `hitDistance` receives the distance to the nearest hit (infinity on a miss), for absorption;
   // `pathLength` is how far the ray's origin is from the eye along the path, for edge widths.
+  // `coverage` is raised to 1 when the path hits geometry (to the shadow's density on a shadow
+  // catcher), for the alpha of transparent backgrounds.
   Vec3 trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
-             TraceCounters& counters, bool& hitSomething, float& hitDistance) const;
+             TraceCounters& counters, float& coverage, float& hitDistance) const;
+  // The shadow-catcher floor at `point`: the background darkened by the meshes' shadows.
+  Vec3 shadeShadowCatcher(const Vec3& point, TraceCounters& counters, float& coverage) const;
   // The flat face a capped clip plane shows where it cuts a closed shell (`face`: the shell's face
   // the ray leaves by, for its material).
   Vec3 shadeCap(const Ray& ray, const ClipInterval& kept, std::uint32_t face, bool parallelView,

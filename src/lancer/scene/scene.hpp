@@ -46,6 +46,10 @@ struct Scene {
   std::vector<SceneLight> lights;
   std::vector<ClipPlane> clipPlanes;  // scene space
   std::vector<std::uint8_t> clipCaps;  // 1: cap closed shells cut by clipPlanes[i]
+  // The shadow-catcher floor: points p with dot(p, floorNormal) = floorOffset (scene space).
+  bool hasShadowCatcher = false;
+  Vec3 floorNormal{0, 1, 0};
+  float floorOffset = 0;
   Vec3 ambient{0, 0, 0};
   Aabb bounds;  // scene space
 

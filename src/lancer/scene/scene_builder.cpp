@@ -1,8 +1,10 @@
 // Turns a SceneDescription into a Scene: reads meshes, applies instance transforms in double
 // precision, recentres everything on one origin, orients closed shells outward, resolves group
 // materials, computes normals.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <numbers>
 
@@ -186,6 +188,17 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     }
   }
 
+  if (description.floor) {
+    scene.hasShadowCatcher = true;
+    scene.floorNormal = toFloat(description.floor->normal);
+    if (description.floor->height) {
+      scene.floorOffset = static_cast<float>(*description.floor->height - dot(scene.origin, description.floor->normal));
+    } else {  // touch the lowest vertex along the normal, so the part stands on it
+      float lowest = std::numeric_limits<float>::infinity();
+      for (const Vec3& p : scene.positions) lowest = std::min(lowest, dot(p, scene.floorNormal));
+      scene.floorOffset = std::isfinite(lowest) ? lowest : 0.0f;
+    }
+  }
   for (const ClipSettings& clip : description.clips) {
     scene.clipPlanes.push_back({scene.toSceneSpace(clip.point), toFloat(clip.normal)});
     scene.clipCaps.push_back(clip.cap ? 1 : 0);

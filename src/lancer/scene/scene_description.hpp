@@ -107,6 +107,14 @@ struct ClipSettings {
   bool cap = true;
 };
 
+// `[floor] shadow_catcher = true`: an infinite plane that is never drawn itself but darkens the
+// picture where the meshes shadow it, so a part casts its shadow on the page (or, with a
+// transparent background, on whatever the figure is placed over).
+struct FloorSettings {
+  std::optional<double> height;  // along `normal`; default: the scene's lowest point
+  Vec3d normal{0, 1, 0};         // unit, pointing up
+};
+
 struct SceneDescription {
   std::string path;  // the scene file, for messages
   RenderSettings render;
@@ -116,6 +124,7 @@ struct SceneDescription {
   std::vector<Material> materials;  // materials[0] is always present: "default" when none is named
   std::vector<MeshInstance> meshes;
   std::vector<ClipSettings> clips;
+  std::optional<FloorSettings> floor;
   std::optional<AnimationSettings> animation;
 };
 

@@ -18,8 +18,8 @@
 namespace lancer {
 namespace {
 
-constexpr std::array<std::string_view, 8> kSceneTables = {"render",   "camera", "ambient",  "light",
-                                                          "material", "mesh",   "animation", "clip"};
+constexpr std::array<std::string_view, 9> kSceneTables = {"render",   "camera", "ambient",  "light",
+                                                          "material", "mesh",   "animation", "clip", "floor"};
 constexpr std::array<std::string_view, 10> kRenderKeys = {
     "width",   "height",     "samples", "max_depth", "sampler",
     "shading", "background", "output",  "srgb",      "adaptive_threshold"};
@@ -184,6 +184,26 @@ CameraSettings readCamera(const SceneFile& file, const toml::table& table) {
 }
 
 constexpr std::array<std::string_view, 3> kClipKeys = {"point", "normal", "cap"};
+constexpr std::array<std::string_view, 3> kFloorKeys = {"shadow_catcher", "height", "normal"};
+
+FloorSettings readFloor(const SceneFile& file, const toml::table& table) {
+  const TomlTableReader reader(table, "floor", file.path, kFloorKeys);
+  const std::optional<bool> catcher = reader.boolean("shadow_catcher");
+  if (!catcher || !*catcher) {
+    if (const toml::node* node = reader.find("shadow_catcher"))
+      reader.fail(*node, "floor.shadow_catcher = false is not supported: [floor] is only a shadow catcher; "
+                         "for a visible floor add a floor mesh (see examples/demo.toml)");
+    reader.failMissing("shadow_catcher", "shadow_catcher = true");
+  }
+  FloorSettings floor;
+  if (auto height = reader.number("height")) floor.height = *height;
+  if (auto normal = reader.vector("normal", Triple::Xyz)) {
+    if (length(*normal) == 0.0)
+      reader.fail(*reader.find("normal"), "floor.normal must not be [0, 0, 0]");
+    floor.normal = normalize(*normal);
+  }
+  return floor;
+}
 
 ClipSettings readClip(const SceneFile& file, const toml::table& table, std::size_t index) {
   const TomlTableReader reader(table, fmt::format("clip[{}]", index), file.path, kClipKeys);
@@ -455,6 +475,7 @@ SceneDescription parseScene(std::string_view text, const std::string& path) {
   for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(readLight(file, *lights[i], i));
   const std::vector<const toml::table*> clips = tableArray(file, root, "clip");
   for (std::size_t i = 0; i < clips.size(); ++i) scene.clips.push_back(readClip(file, *clips[i], i));
+  if (const toml::table* floor = sectionTable(file, root, "floor")) scene.floor = readFloor(file, *floor);
   scene.materials = readMaterials(file, root);
   const std::vector<const toml::table*> meshes = tableArray(file, root, "mesh");
   for (std::size_t i = 0; i < meshes.size(); ++i)
