@@ -126,7 +126,8 @@ TEST(SceneLoaderBadInput, UnknownTopLevelTable) {
 }
 
 TEST(SceneLoaderBadInput, EdgesKeyIsCheckedLikeEveryOther) {
-  EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\nedges = 3\n", "3:9", "mesh[0].edges must be true, false or a table"));
+  EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\nedges = 3\n", "3:9",
+                      "mesh[0].edges must be true, false or a table"));
   EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\nedges = { widht = 1.0 }\n", "3:11",
                       "unknown key 'widht' in mesh[0].edges (did you mean 'width'?)"));
   EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\nedges = { width = 0 }\n", "3:19", "mesh[0].edges.width"));
@@ -134,9 +135,14 @@ TEST(SceneLoaderBadInput, EdgesKeyIsCheckedLikeEveryOther) {
                       "did you mean 'features'"));
 }
 
-TEST(SceneLoaderBadInput, FutureMeshKeysAreUnknownForNow) {
-  EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\ncolor_by = { field = \"t\" }\n", "3:1",
-                      "unknown key 'color_by' in mesh[0]"));
+TEST(SceneLoaderBadInput, ColorByIsChecked) {
+  EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\ncolor_by = \"t\"\n", "3:12",
+                      "mesh[0].color_by must be a table like { field = \"temperature\""));
+  EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\ncolor_by = { field = \"t\", map = \"jet\" }\n", "3:33",
+                      "mesh[0].color_by.map must be \"viridis\", \"magma\", \"coolwarm\", \"grey\" or "
+                      "\"gray\", found \"jet\""));
+  EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\ncolor_by = { field = \"t\", rnage = [0, 1] }\n", "3:27",
+                      "unknown key 'rnage' in mesh[0].color_by"));
 }
 
 TEST(SceneLoaderBadInput, UnknownAnimationKey) {

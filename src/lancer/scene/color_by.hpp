@@ -9,20 +9,11 @@
 #include <utility>
 #include <vector>
 
-#include "lancer/image/color_map.hpp"
 #include "lancer/mesh/mesh.hpp"
+#include "lancer/scene/color_by_spec.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
-#include "lancer/util/input_error.hpp"
 
 namespace lancer {
-
-struct ColorBy {
-  std::string field;
-  int step = 0;
-  ColorMapKind map = ColorMapKind::Viridis;
-  std::optional<std::pair<double, double>> range;  // default: the field's range over the step
-  SourceLocation where;                            // the color_by value, for errors found at load
-};
 
 // The mesh table's `color_by`, if present (file: the scene file's path, for messages).
 std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReader& mesh);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lancer/math/vec3.hpp"
+#include "lancer/scene/color_by_spec.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
@@ -83,6 +84,7 @@ struct MeshInstance {
   int material = 0;  // index into SceneDescription::materials
   std::optional<ShadingMode> shading;
   float smoothAngleDegrees = 60;
+  std::optional<ColorBy> colorBy;  // colour the surface by a field of the mesh file
   Vec3d translate{0, 0, 0};
   Vec3d rotateDegrees{0, 0, 0};  // about x, then y, then z
   Vec3d scale{1, 1, 1};

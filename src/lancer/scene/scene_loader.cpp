@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "lancer/scene/color_by.hpp"
 #include "lancer/scene/suggest.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
 
@@ -29,8 +30,9 @@ constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
 constexpr std::array<std::string_view, 3> kLightKeys = {"position", "intensity", "attenuation"};
 constexpr std::array<std::string_view, 9> kMaterialKeys = {
     "ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "fresnel", "absorption"};
-constexpr std::array<std::string_view, 9> kMeshKeys = {"file",      "material", "shading", "smooth_angle",
-                                                       "translate", "rotate",   "scale",   "groups", "edges"};
+constexpr std::array<std::string_view, 10> kMeshKeys = {"file",   "material", "shading", "smooth_angle",
+                                                        "translate", "rotate", "scale",   "groups",
+                                                        "edges",     "color_by"};
 constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only", "feature_angle"};
 constexpr std::array<std::string_view, 2> kEdgeSelections = {"elements", "features"};
 constexpr std::array<std::string_view, 6> kAnimationKeys = {"frames", "fps",    "orbit",
@@ -382,6 +384,7 @@ MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size
     mesh.scale = *scale;
   mesh.groupMaterials = readGroupMaterials(file, reader, materials);
   mesh.edges = readEdges(file, reader);
+  mesh.colorBy = readColorBy(file.path, reader);
   return mesh;
 }
 
