@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "commands.hpp"
+#include "lancer/image/color_map.hpp"
 #include "lancer/image/image_io.hpp"
 #include "lancer/render/renderer.hpp"
 #include "scene_setup.hpp"
@@ -11,18 +12,24 @@
 namespace lancer::cli {
 namespace {
 
+// The --legend image: a tall bar with room for the tick labels.
+constexpr int kLegendWidth = 120;
+constexpr int kLegendHeight = 320;
+
 struct RenderCommandOptions {
   std::string input;
   std::string output;
   std::string pixel;
+  std::string legend;  // --legend: colour bar of the first field-coloured mesh
   SceneOverrides overrides;
 };
 
 void printProgress(const RenderProgress& progress) {
   const double raysPerSecond = progress.seconds > 0 ? progress.rays / progress.seconds : 0;
-  const double eta = progress.fraction > 0 ? progress.seconds * (1 - progress.fraction) / progress.fraction : 0;
-  std::fprintf(stderr, "\r  %5.1f%%  %7.2f Mrays/s  ETA %5.1f s ", 100 * progress.fraction, raysPerSecond * 1e-6,
-               eta);
+  const double eta =
+      progress.fraction > 0 ? progress.seconds * (1 - progress.fraction) / progress.fraction : 0;
+  std::fprintf(stderr, "\r  %5.1f%%  %7.2f Mrays/s  ETA %5.1f s ", 100 * progress.fraction,
+               raysPerSecond * 1e-6, eta);
   std::fflush(stderr);
 }
 
@@ -30,16 +37,16 @@ int tracePixel(const PreparedScene& prepared, const Camera& camera, const std::s
   const RenderSettings& settings = prepared.description.render;
   int x = -1, y = -1;
   char trailing = 0;
-  if (std::sscanf(pixel.c_str(), "%d,%d%c", &x, &y, &trailing) != 2 || x < 0 || y < 0 || x >= settings.width ||
-      y >= settings.height)
-    throw InputError(SourceLocation{"--pixel"},
-                     fmt::format("'{}' is not a pixel 'x,y' inside {}x{}", pixel, settings.width, settings.height));
+  if (std::sscanf(pixel.c_str(), "%d,%d%c", &x, &y, &trailing) != 2 || x < 0 || y < 0 ||
+      x >= settings.width || y >= settings.height)
+    throw InputError(SourceLocation{"--pixel"}, fmt::format("'{}' is not a pixel 'x,y' inside {}x{}", pixel,
+                                                            settings.width, settings.height));
   const Tracer tracer(prepared.scene, prepared.accelerator, settings, camera.pixelFootprint());
   TraceCounters counters;
   std::uint64_t samples = 0;
   const Rgba value = renderPixel(tracer, camera, settings, x, y, counters, samples);
-  std::printf("pixel %d,%d: rgb %.6f %.6f %.6f alpha %.3f (%llu samples, %llu rays)\n", x, y, value.r, value.g,
-              value.b, value.a, static_cast<unsigned long long>(samples),
+  std::printf("pixel %d,%d: rgb %.6f %.6f %.6f alpha %.3f (%llu samples, %llu rays)\n", x, y, value.r,
+              value.g, value.b, value.a, static_cast<unsigned long long>(samples),
               static_cast<unsigned long long>(counters.rays));
   return kExitOk;
 }
@@ -52,9 +59,16 @@ int runRender(const RenderCommandOptions& options) {
   if (output.empty() && options.pixel.empty())
     throw InputError(SourceLocation{options.input}, "no output image: give -o FILE or set render.output");
   if (!output.empty()) imageFormatFromPath(output);  // refuse a bad extension before rendering
+  if (!options.legend.empty()) {
+    imageFormatFromPath(options.legend);
+    if (!prepared.scene.legend)
+      throw InputError(
+          SourceLocation{options.input},
+          "--legend needs a mesh coloured by a field (color_by = { field = \"...\" } in a [[mesh]])");
+  }
 
-  const Camera camera(prepared.description.camera, prepared.scene.origin, prepared.scene.bounds, settings.width,
-                      settings.height);
+  const Camera camera(prepared.description.camera, prepared.scene.origin, prepared.scene.bounds,
+                      settings.width, settings.height);
   if (!options.pixel.empty()) return tracePixel(prepared, camera, options.pixel);
 
   const std::atomic<bool>& interrupted = installInterruptHandler();
@@ -64,7 +78,8 @@ int runRender(const RenderCommandOptions& options) {
   const bool progress = showProgress(options.overrides);
   if (progress) renderOptions.onProgress = printProgress;
   RenderStats stats;
-  const Image image = renderImage(prepared.scene, prepared.accelerator, camera, settings, renderOptions, &stats);
+  const Image image =
+      renderImage(prepared.scene, prepared.accelerator, camera, settings, renderOptions, &stats);
   if (progress) std::fputc('\n', stderr);
   if (interrupted.load()) {
     std::fprintf(stderr, "lancer: interrupted; %s was not written\n", output.c_str());
@@ -75,13 +90,19 @@ int runRender(const RenderCommandOptions& options) {
   writeOptions.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
   writeOptions.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
   writeImage(output, image, writeOptions);
+  if (!options.legend.empty()) {
+    // The bar holds the map's display values: written as they are, like the picture's field colours.
+    const Scene::FieldLegend& legend = *prepared.scene.legend;
+    writeImage(options.legend,
+               colorBarImage(legend.map, legend.low, legend.high, kLegendWidth, kLegendHeight));
+  }
   if (!options.overrides.quiet) {
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr,
                  "%s: %dx%d, %zu faces, %.2f samples/pixel, load %.3f s, build %.3f s, trace %.3f s "
                  "(%.2f Mrays/s), total %.3f s\n",
-                 output.c_str(), settings.width, settings.height, prepared.scene.faces.size(), stats.samplesPerPixel,
-                 prepared.loadSeconds, prepared.buildSeconds, stats.seconds,
+                 output.c_str(), settings.width, settings.height, prepared.scene.faces.size(),
+                 stats.samplesPerPixel, prepared.loadSeconds, prepared.buildSeconds, stats.seconds,
                  stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, total);
   }
   return kExitOk;
@@ -97,6 +118,8 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
   command->add_option("-o,--output", options->output,
                       fmt::format("Output image ({}); overrides render.output", kImageExtensions));
   addSceneOverrideOptions(*command, options->overrides);
+  command->add_option("--legend", options->legend,
+                      "Also write the colour bar of the first field-coloured mesh (color_by) to this image");
   command->add_option("--pixel", options->pixel, "Trace only pixel x,y and print its value (debugging)");
   command->callback([options, &runner] { runner = [options] { return runRender(*options); }; });
 }

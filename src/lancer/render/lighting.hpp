@@ -17,15 +17,21 @@ inline float lightAttenuation(const SceneLight& light, float distance) {
 }
 
 // `normal` and `toViewer` are unit vectors; `toLight` is unit, `lightDistance` the distance to the light.
-inline Vec3 directLighting(const Material& material, const SceneLight& light, const Vec3& normal,
+// `kd`: the diffuse colour to use, the material's or a field colour map's (color_by).
+inline Vec3 directLighting(const Material& material, const Vec3& kd, const SceneLight& light, const Vec3& normal,
                            const Vec3& toViewer, const Vec3& toLight, float lightDistance) {
   const float cosTheta = dot(normal, toLight);
   if (cosTheta <= 0.0f) return {0, 0, 0};
   const Vec3 reflected = normal * (2.0f * cosTheta) - toLight;
   const float cosAlpha = dot(reflected, toViewer);
   const float specular = cosAlpha > 0.0f ? std::pow(cosAlpha, material.shininess) : 0.0f;
-  const Vec3 response = material.kd * cosTheta + material.ks * specular;
+  const Vec3 response = kd * cosTheta + material.ks * specular;
   return light.intensity * response * lightAttenuation(light, lightDistance);
+}
+
+inline Vec3 directLighting(const Material& material, const SceneLight& light, const Vec3& normal,
+                           const Vec3& toViewer, const Vec3& toLight, float lightDistance) {
+  return directLighting(material, material.kd, light, normal, toViewer, toLight, lightDistance);
 }
 
 }  // namespace lancer

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "lancer/render/field_shading.hpp"
 #include "lancer/render/lighting.hpp"
 #include "lancer/render/optics.hpp"
 #include "lancer/render/ray_offset.hpp"
@@ -46,7 +47,8 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderS
       accelerator_(accelerator),
       background_(settings.background),
       maxDepth_(settings.maxDepth),
-      footprint_(footprint) {
+      footprint_(footprint),
+      linearFieldColors_(settings.srgb) {
   for (const Material& material : scene.materials) {
     anyTransparent_ = anyTransparent_ || material.transparency > 0;
     splits_.push_back(energySplit(material));
@@ -104,7 +106,11 @@ Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, Trac
 
 Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Material& material, bool parallelView,
                         TraceCounters& counters) const {
-  Vec3 color = scene_.ambient * material.ka;
+  // A field-coloured face (color_by) shows the map's colour as ka and kd; ks and shininess stay.
+  Vec3 fieldColor;
+  const bool colored = fieldColorAt(scene_, surface, linearFieldColors_, fieldColor);
+  const Vec3& kd = colored ? fieldColor : material.kd;
+  Vec3 color = scene_.ambient * (colored ? fieldColor : material.ka);
   const Vec3 toViewer = normalize(-ray.direction);
   const MeshFace& face = scene_.faces[surface.face];
   const bool gouraud = !surface.isCap && scene_.faceShading[surface.face] == ShadingMode::Gouraud;
@@ -124,12 +130,12 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
         const Vec3 cornerToViewer = parallelView ? toViewer : normalize(ray.origin - corner);
         const Vec3 cornerToLight = light.position - corner;
         const float cornerDistance = length(cornerToLight);
-        contribution += directLighting(material, light, cornerNormal, cornerToViewer,
+        contribution += directLighting(material, kd, light, cornerNormal, cornerToViewer,
                                        cornerToLight * (1.0f / cornerDistance), cornerDistance) *
                         surface.cornerWeight[c];
       }
     } else {
-      contribution = directLighting(material, light, surface.shadingNormal, toViewer, lightDirection, distance);
+      contribution = directLighting(material, kd, light, surface.shadingNormal, toViewer, lightDirection, distance);
     }
     if (maxComponent(contribution) <= 0.0f) continue;
     // A light behind the geometric surface is blocked by the surface itself.

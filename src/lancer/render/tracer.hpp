@@ -70,6 +70,7 @@ class Tracer {
   bool anyTransparent_ = false;
   std::vector<EnergySplit> splits_;  // per material
   PixelFootprint footprint_;
+  bool linearFieldColors_ = false;  // --srgb: field colours are decoded to linear (field_shading.hpp)
 };
 
 }  // namespace lancer

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,18 @@ struct Scene {
   // 1 when the face belongs to a closed, outward-oriented shell (it bounds a solid: refraction
   // enters and leaves it); 0 for open surfaces, which transparency treats as thin sheets.
   std::vector<std::uint8_t> faceBoundsSolid;
+  // Field colouring (color_by): per face 0 (not coloured) or 1 + the ColorMapKind, and per vertex
+  // the normalised field value t in [0, 1] (NaN: none), interpolated per pixel then mapped. Both
+  // are empty when no mesh is coloured.
+  std::vector<std::uint8_t> faceColorMap;
+  std::vector<float> vertexFieldT;
+  // The first coloured mesh's map and range, for the --legend colour bar.
+  struct FieldLegend {
+    ColorMapKind map = ColorMapKind::Viridis;
+    double low = 0;
+    double high = 1;
+  };
+  std::optional<FieldLegend> legend;
   std::vector<Material> materials;
   std::vector<SceneLight> lights;
   std::vector<ClipPlane> clipPlanes;  // scene space

@@ -13,6 +13,7 @@
 #include "lancer/mesh/feature_edges.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
+#include "lancer/scene/color_by.hpp"
 #include "lancer/scene/scene.hpp"
 
 namespace lancer {
@@ -87,6 +88,18 @@ std::vector<std::pair<std::int32_t, std::uint32_t>> resolveGroupMaterials(const 
   return result;
 }
 
+// Records a coloured mesh whose vertices start at vertexBase and faces at faceBase: its faces get
+// the map, its vertices the field's t (the mesh's vertices are the scene's from vertexBase on, in
+// order). Earlier meshes' entries are filled with "not coloured" first.
+void addFieldColoring(Scene& scene, const FieldColoring& coloring, std::uint32_t vertexBase, std::size_t faceBase) {
+  scene.faceColorMap.resize(faceBase, 0);
+  scene.faceColorMap.resize(scene.faces.size(), static_cast<std::uint8_t>(1 + static_cast<int>(coloring.map)));
+  scene.vertexFieldT.resize(vertexBase, std::nanf(""));
+  scene.vertexFieldT.insert(scene.vertexFieldT.end(), coloring.t.begin(), coloring.t.end());
+  scene.vertexFieldT.resize(scene.positions.size(), std::nanf(""));
+  if (!scene.legend) scene.legend = Scene::FieldLegend{coloring.map, coloring.low, coloring.high};
+}
+
 }  // namespace
 
 Scene buildScene(const SceneDescription& description) {
@@ -143,7 +156,11 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
       }
     }
 
+    std::optional<FieldColoring> coloring;
+    if (instance.colorBy) coloring = resolveColorBy(*instance.colorBy, mesh);
+
     const auto vertexBase = static_cast<std::uint32_t>(scene.positions.size());
+    const std::size_t faceBase = scene.faces.size();
     const auto normalBase = static_cast<std::uint32_t>(scene.cornerNormals.normals.size());
     for (const Vec3& p : positions) scene.bounds.extend(p);
     scene.positions.insert(scene.positions.end(), positions.begin(), positions.end());
@@ -168,7 +185,11 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
       scene.faceEdgeStyle.push_back(edgeStyle);
       scene.faceBoundsSolid.push_back(orientation.faceBoundsSolid[f]);
     }
+    if (coloring) addFieldColoring(scene, *coloring, vertexBase, faceBase);
   }
+  // Meshes after the last coloured one are not coloured.
+  if (!scene.faceColorMap.empty()) scene.faceColorMap.resize(scene.faces.size(), 0);
+  if (!scene.vertexFieldT.empty()) scene.vertexFieldT.resize(scene.positions.size(), std::nanf(""));
 
   // Corners where drawn edges end, so faces meeting a line only at a corner draw its end too.
   if (scene.edgeStyles.size() > 1) {

@@ -1,0 +1,24 @@
+#include "lancer/render/field_shading.hpp"
+
+#include <cmath>
+
+#include "lancer/image/color_map.hpp"
+#include "lancer/image/pixel_encoding.hpp"
+
+namespace lancer {
+
+bool fieldColorAt(const Scene& scene, const SurfacePoint& surface, bool linearize, Vec3& color) {
+  if (scene.faceColorMap.empty() || surface.isCap) return false;
+  const std::uint8_t map = scene.faceColorMap[surface.face];
+  if (map == 0) return false;
+  const MeshFace& face = scene.faces[surface.face];
+  float t = 0;
+  for (int c = 0; c < face.cornerCount(); ++c)
+    t += surface.cornerWeight[c] * scene.vertexFieldT[face.vertex[c]];
+  if (std::isnan(t)) return false;
+  color = colorMapLookup(static_cast<ColorMapKind>(map - 1), t);
+  if (linearize) color = {linearFromSrgb(color.x), linearFromSrgb(color.y), linearFromSrgb(color.z)};
+  return true;
+}
+
+}  // namespace lancer

@@ -1,0 +1,82 @@
+// color_by through the renderer: a gmsh-made square with the field x + 2 y, seen from above with
+// ambient-only white light, shows at each pixel the colour map's colour at (x + 2 y) / 3 (the
+// oracle), with linear or sRGB output; and a golden image of a lit, tilted, field-coloured square.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "lancer/image/color_map.hpp"
+#include "lancer/image/pixel_encoding.hpp"
+#include "lancer/scene/scene_loader.hpp"
+#include "support/golden.hpp"
+#include "support/test_scenes.hpp"
+
+namespace lancer {
+namespace {
+
+const std::string kDataDir = LANCER_TEST_DATA_DIR "/render/";
+
+// Largest channel difference, in 8-bit steps, between the picture and the map at (x + 2 y) / 3.
+double worstError(bool srgb) {
+  SceneDescription description = loadScene(kDataDir + "field_square_top.toml");
+  description.render.srgb = srgb;
+  const Scene scene = buildScene(description);
+  const Image image = test::renderScene(description, scene);
+  const int size = image.width();
+  double worst = 0;
+  for (int row = 0; row < size; ++row) {
+    for (int column = 0; column < size; ++column) {
+      const double x = (column + 0.5) / size;
+      const double y = 1.0 - (row + 0.5) / size;
+      const Vec3 expected = colorMapLookup(ColorMapKind::Viridis, static_cast<float>((x + 2 * y) / 3));
+      const Rgba& pixel = image.at(column, row);
+      const float got[3] = {pixel.r, pixel.g, pixel.b};
+      const float want[3] = {expected.x, expected.y, expected.z};
+      for (int c = 0; c < 3; ++c) {
+        const float shown = srgb ? srgbFromLinear(got[c]) : got[c];
+        worst = std::max(worst, std::abs(shown - want[c]) * 255.0);
+      }
+    }
+  }
+  return worst;
+}
+
+TEST(FieldColor, LinearOutputShowsTheMapColours) { EXPECT_LT(worstError(false), 2.0); }
+
+TEST(FieldColor, SrgbOutputShowsTheSameMapColours) { EXPECT_LT(worstError(true), 2.0); }
+
+TEST(FieldColor, UncolouredMeshesCostNothing) {
+  SceneDescription description = loadScene(kDataDir + "field_square_top.toml");
+  description.meshes[0].colorBy.reset();
+  const Scene scene = buildScene(description);
+  EXPECT_TRUE(scene.faceColorMap.empty());
+  EXPECT_TRUE(scene.vertexFieldT.empty());
+  EXPECT_FALSE(scene.legend);
+}
+
+TEST(FieldColor, UnknownFieldIsAnErrorAtTheSceneKey) {
+  SceneDescription description = loadScene(kDataDir + "field_square_top.toml");
+  description.meshes[0].colorBy->field = "pressure";
+  try {
+    buildScene(description);
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    const std::string what = error.what();
+    EXPECT_NE(what.find("field_square_top.toml:21:12: error: color_by field \"pressure\" is not in"),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find("it has \"temperature\" (step 0)"), std::string::npos) << what;
+  }
+}
+
+TEST(FieldColor, GoldenTiltedSquare) {
+  const SceneDescription description = loadScene(kDataDir + "field_square.toml");
+  const Scene scene = buildScene(description);
+  ASSERT_TRUE(scene.legend);
+  EXPECT_EQ(scene.legend->map, ColorMapKind::Magma);
+  EXPECT_EQ(scene.legend->low, 0.5);
+  test::expectImageNear(test::renderScene(description, scene), kDataDir + "golden/field_square.png", 40.0);
+}
+
+}  // namespace
+}  // namespace lancer
