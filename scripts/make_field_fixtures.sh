@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates the .msh fixtures with post-processing fields in tests/data/fields/ from
 # tests/data/geo/field_square.geo with the real gmsh: the unit square with a view whose value is
-# x + 2 y, saved as $NodeData or $ElementData in MSH 2.2 and 4.1, ASCII and binary. They live apart
+# x + 2 y, saved as $NodeData or $ElementData in MSH 2.2 and 4.1, ASCII and binary; and the mesh of
+# examples/field.toml. They live apart
 # from tests/data/msh/ because that folder's files must all be in gmsh_reference.tsv.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,4 +23,9 @@ for kind in node element; do
   done
 done
 rm -f tests/data/geo/field_square.geo_unrolled
+
+# The example of examples/field.toml (the .geo names its output, beside it).
+log=$(cd examples/meshes && gmsh field_sphere.geo -0 2>&1)
+if grep -q '^Error' <<<"$log" || [[ ! -s examples/meshes/field_sphere.msh ]]; then echo "$log" >&2; exit 1; fi
+rm -f examples/meshes/field_sphere.geo_unrolled
 echo "field fixtures: $(ls "$out"/*.msh | wc -l) files, $(du -sh "$out" | cut -f1)"
