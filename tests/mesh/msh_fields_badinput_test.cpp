@@ -104,5 +104,31 @@ TEST(MshFieldsBadInput, BinaryMissingNode) {
   EXPECT_NE(what.find("node 127"), std::string::npos) << what;
 }
 
+TEST(MshFieldsBadInput, TruncatedElementDataBinary) {
+  std::string bytes = fixture("element_xy_v41_bin.msh");
+  bytes.resize(bytes.find("$ElementData") + 120);
+  const std::string what = errorOf(bytes);
+  EXPECT_EQ(what.rfind("f.msh:@", 0), 0u) << what;
+  EXPECT_NE(what.find("$ElementData"), std::string::npos) << what;
+}
+
+TEST(MshFieldsBadInput, ElementDataNonFiniteValue) {
+  const std::string what =
+      errorOf(replaceOnce(fixture("element_xy_v41_ascii.msh"), "\n17 0.500000000002081\n", "\n17 inf\n"));
+  EXPECT_NE(what.find("$ElementData 'temperature' has a non-finite value for element 17"), std::string::npos)
+      << what;
+}
+
+TEST(MshFieldsBadInput, ElementDataBeforeElements) {
+  std::string bytes = fixture("element_xy_v41_ascii.msh");
+  const std::size_t data = bytes.find("$ElementData");
+  const std::size_t end = bytes.find("$EndElementData") + std::string("$EndElementData\n").size();
+  const std::string section = bytes.substr(data, end - data);
+  bytes.erase(data, end - data);
+  bytes.insert(bytes.find("$Elements"), section);
+  const std::string what = errorOf(bytes);
+  EXPECT_NE(what.find("$ElementData comes before $Elements"), std::string::npos) << what;
+}
+
 }  // namespace
 }  // namespace lancer

@@ -36,6 +36,29 @@ INSTANTIATE_TEST_SUITE_P(AllEncodings, NodeDataTest,
                          testing::Values("node_xy_v22_ascii.msh", "node_xy_v22_bin.msh",
                                          "node_xy_v41_ascii.msh", "node_xy_v41_bin.msh"));
 
+// $ElementData: gmsh's ModifyComponents evaluates x + 2 y of an element at its last node (seen in
+// the files: element 17 = nodes 1 5 16 gets the value at node 16), so each face, kept in the file's
+// winding, must carry x + 2 y of its third corner.
+class ElementDataTest : public testing::TestWithParam<const char*> {};
+
+TEST_P(ElementDataTest, EveryFaceGetsItsElementsValue) {
+  const Mesh mesh = readMsh(fieldFixture(GetParam()));
+  ASSERT_EQ(mesh.fields.size(), 1u);
+  const MeshField& field = mesh.fields[0];
+  EXPECT_EQ(field.name, "temperature");
+  EXPECT_TRUE(field.perElement);
+  ASSERT_EQ(field.itemCount(), mesh.faceCount());
+  ASSERT_EQ(mesh.faceCount(), 32u);
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
+    const Vec3d p = mesh.worldPosition(mesh.faces[f].vertex[2]);
+    EXPECT_NEAR(field.scalar(f), p.x + 2 * p.y, 1e-5) << "face " << f;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllEncodings, ElementDataTest,
+                         testing::Values("element_xy_v22_ascii.msh", "element_xy_v22_bin.msh",
+                                         "element_xy_v41_ascii.msh", "element_xy_v41_bin.msh"));
+
 TEST(MeshFieldTest, VectorScalarIsTheLength) {
   MeshField field;
   field.components = 3;

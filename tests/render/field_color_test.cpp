@@ -69,6 +69,22 @@ TEST(FieldColor, UnknownFieldIsAnErrorAtTheSceneKey) {
   }
 }
 
+TEST(FieldColor, ElementDataIsConstantPerFace) {
+  // The same square with x + 2 y as $ElementData (gmsh evaluates it at each element's last node).
+  SceneDescription description = loadScene(kDataDir + "field_square_top.toml");
+  description.meshes[0].file = LANCER_TEST_DATA_DIR "/fields/element_xy_v41_bin.msh";
+  const Scene scene = buildScene(description);
+  ASSERT_EQ(scene.faceFieldT.size(), scene.faces.size());
+  ASSERT_TRUE(scene.legend);
+  EXPECT_TRUE(scene.vertexFieldT.empty());
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+    EXPECT_EQ(scene.faceColorMap[f], (1 + static_cast<int>(ColorMapKind::Viridis)) | Scene::kFaceFieldColor);
+    const Vec3d p = scene.origin + toDouble(scene.positions[scene.faces[f].vertex[2]]);
+    const double low = scene.legend->low, high = scene.legend->high;  // the triangles' range
+    EXPECT_NEAR(scene.faceFieldT[f], (p.x + 2 * p.y - low) / (high - low), 1e-5) << f;
+  }
+}
+
 TEST(FieldColor, GoldenTiltedSquare) {
   const SceneDescription description = loadScene(kDataDir + "field_square.toml");
   const Scene scene = buildScene(description);

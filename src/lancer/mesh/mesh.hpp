@@ -65,7 +65,7 @@ struct Mesh {
   std::vector<std::int32_t> faceEntityTag;    // gmsh elementary entity
   std::vector<std::uint8_t> faceEdgeMask;     // see kAllEdges
   std::vector<PhysicalGroup> physicalGroups;
-  std::vector<MeshField> fields;  // $NodeData / $ElementData steps, in file order (empty: no cost)
+  std::vector<MeshField> fields;  // $NodeData then $ElementData steps, each in file order
   MeshSourceInfo source;
 
   std::size_t faceCount() const { return faces.size(); }

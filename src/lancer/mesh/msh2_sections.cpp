@@ -54,8 +54,11 @@ class Msh2ElementSink {
         std::equal(nodeTags, nodeTags + nodeCount, previousNodes_.begin(), previousNodes_.end());
     if (!seen_.insert(element.tag) || repeat) {
       ++state_.source.duplicateElementsSkipped;
+      // gmsh's $ElementData names the last copy: its values belong to the kept one.
+      if (repeat) state_.assembler.aliasElement(static_cast<std::uint64_t>(element.tag), previousTag_);
       return;
     }
+    previousTag_ = static_cast<std::uint64_t>(element.tag);
     previousType_ = element.type;
     previousEntity_ = element.entity;
     previousNodes_.assign(nodeTags, nodeTags + nodeCount);
@@ -72,13 +75,14 @@ class Msh2ElementSink {
         failMissingNode(state_, at, static_cast<std::uint64_t>(element.tag), element.type, nodeTags[n]);
     }
     state_.assembler.setGroup(info.dimension, element.physical, element.entity);
-    state_.assembler.addElement(element.type, nodeIndex_);
+    state_.assembler.addElement(element.type, nodeIndex_, static_cast<std::uint64_t>(element.tag));
   }
 
  private:
   MshReadState& state_;
   SeenElementTags seen_;
   int previousType_ = 0;
+  std::uint64_t previousTag_ = 0;
   std::int32_t previousEntity_ = 0;
   std::vector<std::uint64_t> previousNodes_;
   std::uint32_t nodeIndex_[kMaxMshElementNodes];

@@ -71,7 +71,7 @@ void readBinaryElements(MshReadState& state, int type, std::uint64_t count) {
       if (nodeIndex[n] == kNoVertex)
         failMissingNode(state, data + e * kRecordBytes, record[0], type, record[n + 1]);
     }
-    state.assembler.addElement(type, nodeIndex);
+    state.assembler.addElement(type, nodeIndex, record[0]);
   }
 }
 
@@ -271,7 +271,7 @@ void readMsh4Elements(MshReadState& state) {
         nodeIndex[n] = nodes.find(record[n + 1]);
         if (nodeIndex[n] == kNoVertex) failMissingNode(state, at, record[0], type, record[n + 1]);
       }
-      state.assembler.addElement(type, nodeIndex);
+      state.assembler.addElement(type, nodeIndex, record[0]);
     }
   }
   if (read != count)

@@ -118,4 +118,44 @@ void readMshNodeData(MshReadState& state, const char* sectionStart) {
   state.assembler.nodeFields.push_back(std::move(field));
 }
 
+void readMshElementData(MshReadState& state, const char* sectionStart) {
+  MshCursor& cursor = state.cursor;
+  if (!state.elementsRead)
+    cursor.failAt(sectionStart, "$ElementData comes before $Elements; its values need the elements");
+  FieldHeader header = readHeader(state, "$ElementData");
+  const auto components = static_cast<std::uint64_t>(header.components);
+  const std::uint64_t recordBytes =
+      state.binary ? 4 + 8 * components : (1 + components) * kMinTextNumberBytes;
+  // No count or tag check against $Elements: gmsh writes values for elements it did not save (the
+  // points of a model without physical points), so records naming no element are ignored.
+  if (state.binary) cursor.skipLine();
+  cursor.requireBytes(header.count, recordBytes, "$ElementData");
+
+  MshMeshAssembler::ElementField raw;
+  raw.field.name = std::move(header.name);
+  raw.field.perElement = true;
+  raw.field.step = header.step;
+  raw.field.time = header.time;
+  raw.field.components = header.components;
+  raw.field.values.reserve(header.count * components);
+  raw.tags.reserve(header.count);
+  for (std::uint64_t i = 0; i < header.count; ++i) {
+    const std::uint64_t tag = state.binary
+                                  ? static_cast<std::uint64_t>(cursor.readRaw<std::int32_t>("an element tag"))
+                                  : cursor.readCount("an element tag");
+    raw.tags.push_back(tag);
+    for (std::uint64_t c = 0; c < components; ++c) {
+      const char* valueAt = state.binary ? cursor.position() : cursor.tokenStart();
+      const double value =
+          state.binary ? cursor.readRaw<double>("a field value") : cursor.readDouble("a field value");
+      if (!std::isfinite(value))
+        cursor.failAt(valueAt, fmt::format("$ElementData '{}' has a non-finite value for element {}",
+                                           raw.field.name, tag));
+      raw.field.values.push_back(static_cast<float>(value));
+    }
+  }
+  cursor.expectToken("$EndElementData", "after the element data values");
+  state.assembler.elementFields.push_back(std::move(raw));
+}
+
 }  // namespace lancer

@@ -11,5 +11,8 @@ namespace lancer {
 // Reads one $NodeData section (after its opening token) into state.assembler.nodeFields, with values
 // in node-table order; the assembler maps them onto mesh vertices in finish().
 void readMshNodeData(MshReadState& state, const char* sectionStart);
+// Reads one $ElementData section into state.assembler.elementFields (values per record, with the
+// records' element tags); finish() gives each face its element's value.
+void readMshElementData(MshReadState& state, const char* sectionStart);
 
 }  // namespace lancer

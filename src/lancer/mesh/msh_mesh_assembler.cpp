@@ -100,6 +100,7 @@ void MshMeshAssembler::addOtherElement(int type, const std::uint32_t* n) {
       return;
     default:
       appendVolumeElementFaces(type, n, group_, volumeFaces_);
+      if (trackElements_) volumeFaceElement_.resize(volumeFaces_.size(), element_);
       return;
   }
 }
@@ -116,6 +117,7 @@ void MshMeshAssembler::appendSkin(MeshSourceInfo& source) {
   source.skinFacesCoveredBySurfaces = covered;
   for (std::uint32_t index : skin) {
     const MshVolumeFace& face = volumeFaces_[index];
+    if (trackElements_) element_ = volumeFaceElement_[index];
     physical_ = groups_[face.group].first;
     entity_ = groups_[face.group].second;
     if (face.mid[0] != kNoVertex && face.corner[3] == kNoVertex) {
@@ -145,7 +147,8 @@ void remapNodeField(MeshField& field, const std::vector<std::uint8_t>& usedNode,
   for (std::size_t i = 0; i < usedNode.size(); ++i) {
     if (!usedNode[i]) continue;
     for (std::size_t c = 0; c < components; ++c)
-      values.push_back(i < covered ? field.values[i * components + c] : std::numeric_limits<float>::quiet_NaN());
+      values.push_back(i < covered ? field.values[i * components + c]
+                                   : std::numeric_limits<float>::quiet_NaN());
   }
   field.values = std::move(values);
 }
@@ -213,6 +216,7 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
       facePhysical_[kept] = facePhysical_[f];
       faceEntity_[kept] = faceEntity_[f];
       faceEdgeMask_[kept] = faceEdgeMask_[f];
+      if (trackElements_) faceElement_[kept] = faceElement_[f];
     }
     ++kept;
   }
@@ -239,7 +243,37 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   mesh.source = std::move(source);
   mesh.fields = std::move(nodeFields);
   for (MeshField& field : mesh.fields) remapNodeField(field, usedNode, usedCount);
+  if (trackElements_) faceElement_.resize(kept);
+  mapElementFields(mesh);
   return mesh;
+}
+
+void MshMeshAssembler::mapElementFields(Mesh& mesh) {
+  std::sort(elementAliases_.begin(), elementAliases_.end());
+  for (ElementField& raw : elementFields) {
+    for (std::uint64_t& tag : raw.tags) {
+      const auto alias =
+          std::lower_bound(elementAliases_.begin(), elementAliases_.end(), std::pair{tag, std::uint64_t{0}});
+      if (alias != elementAliases_.end() && alias->first == tag) tag = alias->second;
+    }
+    // Sorted (tag, record) pairs: one binary search per face.
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> byTag(raw.tags.size());
+    for (std::size_t r = 0; r < raw.tags.size(); ++r) byTag[r] = {raw.tags[r], static_cast<std::uint32_t>(r)};
+    std::sort(byTag.begin(), byTag.end());
+    const auto components = static_cast<std::size_t>(raw.field.components);
+    std::vector<float> values(faceElement_.size() * components, std::numeric_limits<float>::quiet_NaN());
+    for (std::size_t f = 0; f < faceElement_.size(); ++f) {
+      const auto found =
+          std::lower_bound(byTag.begin(), byTag.end(), std::pair{faceElement_[f], std::uint32_t{0}});
+      if (found == byTag.end() || found->first != faceElement_[f]) continue;
+      std::copy_n(raw.field.values.begin() + static_cast<std::ptrdiff_t>(found->second * components),
+                  components, values.begin() + static_cast<std::ptrdiff_t>(f * components));
+    }
+    raw.field.values = std::move(values);
+    mesh.fields.push_back(std::move(raw.field));
+  }
+  elementFields.clear();
+  faceElement_ = {};
 }
 
 }  // namespace lancer

@@ -21,6 +21,21 @@ class MshMeshAssembler {
   MshNodeTable nodes;
   // $NodeData steps with values in node-table order; finish() maps them onto the mesh's vertices.
   std::vector<MeshField> nodeFields;
+  // $ElementData steps: values per record and the records' element tags; finish() gives every face
+  // made from an element (split second-order faces, volume-skin faces) its element's value.
+  struct ElementField {
+    MeshField field;
+    std::vector<std::uint64_t> tags;
+  };
+  std::vector<ElementField> elementFields;
+  // Set before the elements are read when the file has $ElementData: faces then remember their
+  // element's tag (8 bytes per face, only for such files).
+  void trackElements() { trackElements_ = true; }
+  // An MSH 2 copy of an element (one per further physical group) that was skipped: $ElementData
+  // values given for the copy go to the kept element.
+  void aliasElement(std::uint64_t copy, std::uint64_t kept) {
+    if (trackElements_) elementAliases_.emplace_back(copy, kept);
+  }
 
   void reserveFaces(std::size_t count);
   // The physical and elementary tags of the elements that follow; dimension is the elements'.
@@ -29,8 +44,9 @@ class MshMeshAssembler {
     changeGroup(dimension, physical, entity);
   }
   // nodeIndex: the element's nodes as indices into `nodes`, mshElementType(type).nodeCount of them.
-  void addElement(int type, const std::uint32_t* nodeIndex) {
+  void addElement(int type, const std::uint32_t* nodeIndex, std::uint64_t tag = 0) {
     ++countByType_[static_cast<std::size_t>(type)];
+    element_ = tag;
     switch (type) {
       case 2:
         addTriangle(nodeIndex[0], nodeIndex[1], nodeIndex[2], 0b111);
@@ -51,12 +67,14 @@ class MshMeshAssembler {
 
  private:
   void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint8_t edgeMask) {
+    if (trackElements_) faceElement_.push_back(element_);
     faces_.push_back(MeshFace{{a, b, c, kNoVertex}});
     facePhysical_.push_back(physical_);
     faceEntity_.push_back(entity_);
     faceEdgeMask_.push_back(edgeMask);
   }
   void addQuad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, std::uint8_t edgeMask) {
+    if (trackElements_) faceElement_.push_back(element_);
     faces_.push_back(MeshFace{{a, b, c, d}});
     facePhysical_.push_back(physical_);
     faceEntity_.push_back(entity_);
@@ -68,12 +86,18 @@ class MshMeshAssembler {
   void addSplitQuad(const std::uint32_t* corner, const std::uint32_t* mid, std::uint32_t centre);
   void changeGroup(int dimension, std::int32_t physical, std::int32_t entity);
   void appendSkin(MeshSourceInfo& source);
+  void mapElementFields(Mesh& mesh);
 
   std::vector<MeshFace> faces_;
   std::vector<std::int32_t> facePhysical_;
   std::vector<std::int32_t> faceEntity_;
   std::vector<std::uint8_t> faceEdgeMask_;
   std::vector<MshVolumeFace> volumeFaces_;
+  bool trackElements_ = false;
+  std::uint64_t element_ = 0;                                            // tag of the element being added
+  std::vector<std::uint64_t> faceElement_;                               // per face, when tracking
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> elementAliases_;  // (copy, kept), when tracking
+  std::vector<std::uint64_t> volumeFaceElement_;                         // per volume face, when tracking
   std::vector<MshFaceKey> secondOrderSurfaceKeys_;  // corners of split surface elements, for the skin
   std::vector<std::pair<std::int32_t, std::int32_t>> groups_;  // (physical, entity) of volume faces
   std::set<std::pair<int, std::int32_t>> physicalsSeen_;       // (dimension, physical tag)

@@ -194,6 +194,8 @@ void readSections(MshReadState& state) {
       state.elementsRead = true;
     } else if (name == "$NodeData") {
       readMshNodeData(state, start);
+    } else if (name == "$ElementData") {
+      readMshElementData(state, start);
     } else {
       // $Comments, $Periodic, $ElementData, $GhostElements, $Parametrizations, ...
       skipSection(cursor, name, start);
@@ -213,6 +215,9 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64
   source.path = name;
   source.fileBytes = fileBytes;
   MshReadState state(cursor, assembler, source);
+  // Faces remember their element only when a $ElementData needs it (one fast scan for the name).
+  constexpr std::string_view kElementData = "$ElementData";
+  if (::memmem(bytes.data(), bytes.size(), kElementData.data(), kElementData.size())) assembler.trackElements();
   readSections(state);
   return assembler.finish(std::move(source), std::move(state.namedGroups));
 }

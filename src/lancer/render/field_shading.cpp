@@ -11,12 +11,16 @@ bool fieldColorAt(const Scene& scene, const SurfacePoint& surface, bool lineariz
   if (scene.faceColorMap.empty() || surface.isCap) return false;
   const std::uint8_t map = scene.faceColorMap[surface.face];
   if (map == 0) return false;
-  const MeshFace& face = scene.faces[surface.face];
   float t = 0;
-  for (int c = 0; c < face.cornerCount(); ++c)
-    t += surface.cornerWeight[c] * scene.vertexFieldT[face.vertex[c]];
+  if (map & Scene::kFaceFieldColor) {
+    t = scene.faceFieldT[surface.face];  // element data: constant over the face
+  } else {
+    const MeshFace& face = scene.faces[surface.face];
+    for (int c = 0; c < face.cornerCount(); ++c)
+      t += surface.cornerWeight[c] * scene.vertexFieldT[face.vertex[c]];
+  }
   if (std::isnan(t)) return false;
-  color = colorMapLookup(static_cast<ColorMapKind>(map - 1), t);
+  color = colorMapLookup(static_cast<ColorMapKind>((map & ~Scene::kFaceFieldColor) - 1), t);
   if (linearize) color = {linearFromSrgb(color.x), linearFromSrgb(color.y), linearFromSrgb(color.z)};
   return true;
 }

@@ -36,18 +36,21 @@ struct Scene {
   CornerNormals cornerNormals;    // smooth normals per face corner
   std::vector<std::uint32_t> faceMaterial;
   std::vector<ShadingMode> faceShading;
-  std::vector<std::uint8_t> faceEdgeMask;   // element edges (or feature edges) of each face
-  std::vector<std::uint16_t> faceEdgeStyle; // index into edgeStyles; 0: edges not drawn
-  std::vector<std::uint8_t> faceLineCorners; // bit c: corner c is the end of a drawn edge of some face
+  std::vector<std::uint8_t> faceEdgeMask;     // element edges (or feature edges) of each face
+  std::vector<std::uint16_t> faceEdgeStyle;   // index into edgeStyles; 0: edges not drawn
+  std::vector<std::uint8_t> faceLineCorners;  // bit c: corner c is the end of a drawn edge of some face
   std::vector<EdgeStyle> edgeStyles{EdgeStyle{}};
   // 1 when the face belongs to a closed, outward-oriented shell (it bounds a solid: refraction
   // enters and leaves it); 0 for open surfaces, which transparency treats as thin sheets.
   std::vector<std::uint8_t> faceBoundsSolid;
-  // Field colouring (color_by): per face 0 (not coloured) or 1 + the ColorMapKind, and per vertex
-  // the normalised field value t in [0, 1] (NaN: none), interpolated per pixel then mapped. Both
-  // are empty when no mesh is coloured.
+  // Field colouring (color_by): per face 0 (not coloured) or 1 + the ColorMapKind, plus
+  // kFaceFieldColor for element data; the normalised field value t in [0, 1] (NaN: none) per vertex
+  // (node data: interpolated per pixel, then mapped) or per face (element data). All are empty when
+  // no mesh is coloured (faceFieldT also when none is coloured by element data).
+  static constexpr std::uint8_t kFaceFieldColor = 0x80;
   std::vector<std::uint8_t> faceColorMap;
   std::vector<float> vertexFieldT;
+  std::vector<float> faceFieldT;
   // The first coloured mesh's map and range, for the --legend colour bar.
   struct FieldLegend {
     ColorMapKind map = ColorMapKind::Viridis;
@@ -57,7 +60,7 @@ struct Scene {
   std::optional<FieldLegend> legend;
   std::vector<Material> materials;
   std::vector<SceneLight> lights;
-  std::vector<ClipPlane> clipPlanes;  // scene space
+  std::vector<ClipPlane> clipPlanes;   // scene space
   std::vector<std::uint8_t> clipCaps;  // 1: cap closed shells cut by clipPlanes[i]
   // The shadow-catcher floor: points p with dot(p, floorNormal) = floorOffset (scene space).
   bool hasShadowCatcher = false;

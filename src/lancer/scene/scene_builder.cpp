@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <limits>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -25,7 +25,8 @@ struct InstanceTransform {
   double rotation[3][3];
   Vec3d translate;
 
-  explicit InstanceTransform(const MeshInstance& instance) : scale(instance.scale), translate(instance.translate) {
+  explicit InstanceTransform(const MeshInstance& instance)
+      : scale(instance.scale), translate(instance.translate) {
     const double k = std::numbers::pi / 180.0;
     const double cx = std::cos(instance.rotateDegrees.x * k), sx = std::sin(instance.rotateDegrees.x * k);
     const double cy = std::cos(instance.rotateDegrees.y * k), sy = std::sin(instance.rotateDegrees.y * k);
@@ -91,12 +92,17 @@ std::vector<std::pair<std::int32_t, std::uint32_t>> resolveGroupMaterials(const 
 // Records a coloured mesh whose vertices start at vertexBase and faces at faceBase: its faces get
 // the map, its vertices the field's t (the mesh's vertices are the scene's from vertexBase on, in
 // order). Earlier meshes' entries are filled with "not coloured" first.
-void addFieldColoring(Scene& scene, const FieldColoring& coloring, std::uint32_t vertexBase, std::size_t faceBase) {
+void addFieldColoring(Scene& scene, const FieldColoring& coloring, std::uint32_t vertexBase,
+                      std::size_t faceBase) {
+  const int perFace = coloring.perFace ? Scene::kFaceFieldColor : 0;
   scene.faceColorMap.resize(faceBase, 0);
-  scene.faceColorMap.resize(scene.faces.size(), static_cast<std::uint8_t>(1 + static_cast<int>(coloring.map)));
-  scene.vertexFieldT.resize(vertexBase, std::nanf(""));
-  scene.vertexFieldT.insert(scene.vertexFieldT.end(), coloring.t.begin(), coloring.t.end());
-  scene.vertexFieldT.resize(scene.positions.size(), std::nanf(""));
+  scene.faceColorMap.resize(scene.faces.size(),
+                            static_cast<std::uint8_t>((1 + static_cast<int>(coloring.map)) | perFace));
+  // The mesh's faces and vertices are the scene's from the bases on, in order.
+  std::vector<float>& t = coloring.perFace ? scene.faceFieldT : scene.vertexFieldT;
+  t.resize(coloring.perFace ? faceBase : vertexBase, std::nanf(""));
+  t.insert(t.end(), coloring.t.begin(), coloring.t.end());
+  t.resize(coloring.perFace ? scene.faces.size() : scene.positions.size(), std::nanf(""));
   if (!scene.legend) scene.legend = Scene::FieldLegend{coloring.map, coloring.low, coloring.high};
 }
 
@@ -133,7 +139,8 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
 
     std::vector<Vec3> positions(mesh.positions.size());
     for (std::size_t v = 0; v < positions.size(); ++v)
-      positions[v] = toFloat(transforms[i].apply(mesh.worldPosition(static_cast<std::uint32_t>(v))) - scene.origin);
+      positions[v] =
+          toFloat(transforms[i].apply(mesh.worldPosition(static_cast<std::uint32_t>(v))) - scene.origin);
     std::vector<std::uint8_t> edgeMasks = mesh.faceEdgeMask;
     edgeMasks.resize(mesh.faces.size(), kAllEdges);
     // A mirroring scale (odd number of negative factors) reverses the winding; keep the file's
@@ -190,6 +197,7 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
   // Meshes after the last coloured one are not coloured.
   if (!scene.faceColorMap.empty()) scene.faceColorMap.resize(scene.faces.size(), 0);
   if (!scene.vertexFieldT.empty()) scene.vertexFieldT.resize(scene.positions.size(), std::nanf(""));
+  if (!scene.faceFieldT.empty()) scene.faceFieldT.resize(scene.faces.size(), std::nanf(""));
 
   // Corners where drawn edges end, so faces meeting a line only at a corner draw its end too.
   if (scene.edgeStyles.size() > 1) {
@@ -213,7 +221,8 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     scene.hasShadowCatcher = true;
     scene.floorNormal = toFloat(description.floor->normal);
     if (description.floor->height) {
-      scene.floorOffset = static_cast<float>(*description.floor->height - dot(scene.origin, description.floor->normal));
+      scene.floorOffset =
+          static_cast<float>(*description.floor->height - dot(scene.origin, description.floor->normal));
     } else {  // touch the lowest vertex along the normal, so the part stands on it
       float lowest = std::numeric_limits<float>::infinity();
       for (const Vec3& p : scene.positions) lowest = std::min(lowest, dot(p, scene.floorNormal));
