@@ -22,6 +22,11 @@ for kind in node element; do
     done
   done
 done
+# A volume-only tet10 cube with $ElementData: the faces lancer renders are split second-order skin
+# faces of the tetrahedra, each must carry its tetrahedron's value.
+log=$(gmsh tests/data/geo/field_square.geo -0 -setnumber elementData 1 -setnumber volume 1 \
+  -setstring out "$out/element_tet10_v41_bin.msh" -setnumber Mesh.MshFileVersion 4.1 -setnumber Mesh.Binary 1 2>&1)
+if grep -q '^Error' <<<"$log" || [[ ! -s $out/element_tet10_v41_bin.msh ]]; then echo "$log" >&2; exit 1; fi
 rm -f tests/data/geo/field_square.geo_unrolled
 
 # The example of examples/field.toml (the .geo names its output, beside it).

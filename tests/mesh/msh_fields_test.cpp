@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 #include "lancer/mesh/msh_reader.hpp"
 
@@ -58,6 +59,27 @@ TEST_P(ElementDataTest, EveryFaceGetsItsElementsValue) {
 INSTANTIATE_TEST_SUITE_P(AllEncodings, ElementDataTest,
                          testing::Values("element_xy_v22_ascii.msh", "element_xy_v22_bin.msh",
                                          "element_xy_v41_ascii.msh", "element_xy_v41_bin.msh"));
+
+// A volume-only tet10 cube: the rendered faces are the tetrahedra's skin faces, each split into four
+// triangles. Every one carries a value, the four pieces of one skin face the same one (their
+// tetrahedron's), and the values are x + 2 y at a node of the cube (gmsh's last node of the tet).
+TEST(ElementDataTest, SkinAndSplitFacesGetTheirTetrahedronsValue) {
+  const Mesh mesh = readMsh(fieldFixture("element_tet10_v41_bin.msh"));
+  ASSERT_EQ(mesh.fields.size(), 1u);
+  const MeshField& field = mesh.fields[0];
+  ASSERT_TRUE(field.perElement);
+  ASSERT_EQ(field.itemCount(), mesh.faceCount());
+  ASSERT_EQ(mesh.source.skinFaces * 4, mesh.faceCount());
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
+    ASSERT_FALSE(std::isnan(field.scalar(f))) << f;
+    EXPECT_EQ(field.scalar(f), field.scalar(f - f % 4)) << f;
+    EXPECT_GE(field.scalar(f), 0.0f);
+    EXPECT_LE(field.scalar(f), 3.0f);
+  }
+  // Not one element's value everywhere: the skin faces come from many tetrahedra.
+  std::set<float> distinct(field.values.begin(), field.values.end());
+  EXPECT_GE(distinct.size(), 10u);
+}
 
 TEST(MeshFieldTest, VectorScalarIsTheLength) {
   MeshField field;

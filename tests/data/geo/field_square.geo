@@ -2,11 +2,19 @@
 // tests can check where each value lands: gmsh's NewView makes a zero view on the mesh, and
 // ModifyComponents fills it in place, keeping it mesh-based so that Save View writes $NodeData or
 // $ElementData (for elements gmsh evaluates x and y at the element's barycentre).
+// With -setnumber volume 1, the second-order tetrahedra of cube_tet.geo instead.
 // Usage: gmsh field_square.geo -0 -setnumber elementData 0|1 -setstring out FILE.msh
 //        -setnumber Mesh.MshFileVersion 2.2|4.1 -setnumber Mesh.Binary 0|1
-DefineConstant[ elementData = 0, out = "field_square.msh" ];
-Include "square.geo";
-Mesh 2;
+DefineConstant[ elementData = 0, volume = 0, out = "field_square.msh" ];
+If (volume)
+  // Instead of the square: the volume-only cube of cube_tet.geo, second order.
+  Include "cube_tet.geo";
+  Mesh 3;
+  SetOrder 2;
+Else
+  Include "square.geo";
+  Mesh 2;
+EndIf
 Plugin(NewView).NumComp = 1;
 If (elementData)
   Plugin(NewView).Type = "ElementData";
