@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "lancer/mesh/msh_reader.hpp"
@@ -79,6 +80,35 @@ TEST(ElementDataTest, SkinAndSplitFacesGetTheirTetrahedronsValue) {
   // Not one element's value everywhere: the skin faces come from many tetrahedra.
   std::set<float> distinct(field.values.begin(), field.values.end());
   EXPECT_GE(distinct.size(), 10u);
+}
+
+// 8-node quads: lancer splits each into four quads around a centre node it adds, whose value must
+// be the serendipity combination of the element's values (-1/4 of each corner, 1/2 of each mid-edge
+// node), as its position is. (gmsh's ModifyComponents leaves 0 at mid-edge nodes, so the values are
+// not x + 2 y there: the oracle is the file's own values.) In each group of four faces the centre is
+// on all four, mid-edge nodes on two, corners on one.
+TEST(NodeDataTest, DerivedQuadCentresGetTheSerendipityValue) {
+  const Mesh mesh = readMsh(fieldFixture("node_quad8_v41_ascii.msh"));
+  ASSERT_EQ(mesh.fields.size(), 1u);
+  const MeshField& field = mesh.fields[0];
+  ASSERT_EQ(field.itemCount(), mesh.positions.size());
+  EXPECT_EQ(mesh.positions.size(), 65u + 16u);  // 25 corners and 40 mid-edge nodes, 16 centres
+  ASSERT_EQ(mesh.faceCount(), 64u);
+  for (std::size_t group = 0; group < 16; ++group) {
+    std::map<std::uint32_t, int> uses;
+    for (std::size_t f = group * 4; f < group * 4 + 4; ++f)
+      for (int c = 0; c < 4; ++c) ++uses[mesh.faces[f].vertex[c]];
+    double expected = 0;
+    std::uint32_t centre = kNoVertex;
+    for (const auto& [vertex, count] : uses) {
+      if (count == 4) centre = vertex;
+      if (count == 1) expected -= 0.25 * field.scalar(vertex);
+      if (count == 2) expected += 0.5 * field.scalar(vertex);
+    }
+    ASSERT_NE(centre, kNoVertex) << group;
+    EXPECT_NEAR(field.scalar(centre), expected, 1e-5) << group;
+    EXPECT_FALSE(std::isnan(field.scalar(centre)));
+  }
 }
 
 TEST(MeshFieldTest, VectorScalarIsTheLength) {

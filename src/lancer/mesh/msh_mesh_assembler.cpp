@@ -84,6 +84,11 @@ Vec3d MshMeshAssembler::serendipityCentre(const std::uint32_t* corner, const std
   return centre;
 }
 
+std::uint32_t MshMeshAssembler::addDerivedCentre(const std::uint32_t* corner, const std::uint32_t* mid) {
+  derivedSources_.push_back({corner[0], corner[1], corner[2], corner[3], mid[0], mid[1], mid[2], mid[3]});
+  return nodes.addDerived(serendipityCentre(corner, mid));
+}
+
 void MshMeshAssembler::addOtherElement(int type, const std::uint32_t* n) {
   switch (type) {
     case 9:
@@ -96,7 +101,7 @@ void MshMeshAssembler::addOtherElement(int type, const std::uint32_t* n) {
       return;
     case 16:
       secondOrderSurfaceKeys_.push_back(mshFaceKey(n, 4));
-      addSplitQuad(n, n + 4, nodes.addDerived(serendipityCentre(n, n + 4)));
+      addSplitQuad(n, n + 4, addDerivedCentre(n, n + 4));
       return;
     default:
       appendVolumeElementFaces(type, n, group_, volumeFaces_);
@@ -124,7 +129,7 @@ void MshMeshAssembler::appendSkin(MeshSourceInfo& source) {
       addSplitTriangle(face.corner, face.mid);
     } else if (face.mid[0] != kNoVertex) {
       const std::uint32_t centre =
-          face.centre != kNoVertex ? face.centre : nodes.addDerived(serendipityCentre(face.corner, face.mid));
+          face.centre != kNoVertex ? face.centre : addDerivedCentre(face.corner, face.mid);
       addSplitQuad(face.corner, face.mid, centre);
     } else if (face.corner[3] == kNoVertex) {
       addTriangle(face.corner[0], face.corner[1], face.corner[2], 0b111);
@@ -138,9 +143,21 @@ void MshMeshAssembler::appendSkin(MeshSourceInfo& source) {
 namespace {
 
 // Keeps the values of the nodes that became mesh vertices, in the same order as the positions.
-// Nodes the field does not cover (made by lancer after the section was read) get NaN.
-void remapNodeField(MeshField& field, const std::vector<std::uint8_t>& usedNode, std::uint32_t usedCount) {
+// The centres lancer adds to 8-node quads (derived nodes, after the file's `tagged` nodes) get the
+// serendipity combination of their quad's values, like their positions.
+void remapNodeField(MeshField& field, const std::vector<std::uint8_t>& usedNode, std::uint32_t usedCount,
+                    std::size_t tagged, const std::vector<std::array<std::uint32_t, 8>>& derivedSources) {
   const auto components = static_cast<std::size_t>(field.components);
+  field.values.resize(tagged * components);
+  for (const auto& source : derivedSources) {
+    for (std::size_t c = 0; c < components; ++c) {
+      float value = 0;
+      for (int i = 0; i < 4; ++i)
+        value += -0.25f * field.values[source[i] * components + c] +
+                 0.5f * field.values[source[4 + i] * components + c];
+      field.values.push_back(value);
+    }
+  }
   const std::size_t covered = field.values.size() / components;
   std::vector<float> values;
   values.reserve(std::size_t{usedCount} * components);
@@ -242,7 +259,8 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   mesh.physicalGroups = std::move(namedGroups);
   mesh.source = std::move(source);
   mesh.fields = std::move(nodeFields);
-  for (MeshField& field : mesh.fields) remapNodeField(field, usedNode, usedCount);
+  for (MeshField& field : mesh.fields)
+    remapNodeField(field, usedNode, usedCount, nodes.taggedCount(), derivedSources_);
   if (trackElements_) faceElement_.resize(kept);
   mapElementFields(mesh);
   return mesh;

@@ -82,6 +82,8 @@ class MshMeshAssembler {
   }
   void addOtherElement(int type, const std::uint32_t* nodeIndex);
   Vec3d serendipityCentre(const std::uint32_t* corner, const std::uint32_t* mid) const;
+  // A new node at the serendipity centre of an 8-node quad, remembering its sources for node data.
+  std::uint32_t addDerivedCentre(const std::uint32_t* corner, const std::uint32_t* mid);
   void addSplitTriangle(const std::uint32_t* corner, const std::uint32_t* mid);
   void addSplitQuad(const std::uint32_t* corner, const std::uint32_t* mid, std::uint32_t centre);
   void changeGroup(int dimension, std::int32_t physical, std::int32_t entity);
@@ -93,6 +95,7 @@ class MshMeshAssembler {
   std::vector<std::int32_t> faceEntity_;
   std::vector<std::uint8_t> faceEdgeMask_;
   std::vector<MshVolumeFace> volumeFaces_;
+  std::vector<std::array<std::uint32_t, 8>> derivedSources_;  // corners and mids of each derived centre
   bool trackElements_ = false;
   std::uint64_t element_ = 0;                                            // tag of the element being added
   std::vector<std::uint64_t> faceElement_;                               // per face, when tracking
