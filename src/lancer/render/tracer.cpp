@@ -185,6 +185,9 @@ Vec3 Tracer::shadeCap(const Ray& ray, const ClipInterval& kept, std::uint32_t fa
   cap.geometricNormal = cap.shadingNormal = plane.normal;
   cap.normalSign = 1.0f;
   cap.isCap = true;
+  // A field-coloured shell colours its cap with the mean of the face the ray leaves by.
+  const int corners = scene_.faces[face].cornerCount();
+  for (int c = 0; c < corners; ++c) cap.cornerWeight[c] = 1.0f / static_cast<float>(corners);
   return shadeLocal(ray, cap, scene_.materials[scene_.faceMaterial[face]], parallelView, counters);
 }
 
