@@ -28,9 +28,10 @@ class MshMeshAssembler {
     std::vector<std::uint64_t> tags;
   };
   std::vector<ElementField> elementFields;
-  // Set before the elements are read when the file has $ElementData: faces then remember their
-  // element's tag (8 bytes per face, only for such files).
+  // Set before the elements are read when the file has $ElementData (msh_reader.cpp reads such a
+  // file again): faces then remember their element's tag (8 bytes per face, only for such files).
   void trackElements() { trackElements_ = true; }
+  bool tracksElements() const { return trackElements_; }
   // An MSH 2 copy of an element (one per further physical group) that was skipped: $ElementData
   // values given for the copy go to the kept element.
   void aliasElement(std::uint64_t copy, std::uint64_t kept) {
