@@ -28,6 +28,11 @@ log=$(gmsh tests/data/geo/field_square.geo -0 -setnumber elementData 0 -setstrin
   -setnumber Mesh.ElementOrder 2 -setnumber Mesh.SecondOrderIncomplete 1 2>&1)
 if grep -q '^Error' <<<"$log" || [[ ! -s $out/node_quad8_v41_ascii.msh ]]; then echo "$log" >&2; exit 1; fi
 
+# A vector field: colours show its magnitude.
+log=$(gmsh tests/data/geo/field_square.geo -0 -setnumber vector 1 -setstring out "$out/node_vector_v41_bin.msh" \
+  -setnumber Mesh.MshFileVersion 4.1 -setnumber Mesh.Binary 1 2>&1)
+if grep -q '^Error' <<<"$log" || [[ ! -s $out/node_vector_v41_bin.msh ]]; then echo "$log" >&2; exit 1; fi
+
 # A volume-only tet10 cube with $ElementData: the faces lancer renders are split second-order skin
 # faces of the tetrahedra, each must carry its tetrahedron's value.
 log=$(gmsh tests/data/geo/field_square.geo -0 -setnumber elementData 1 -setnumber volume 1 \

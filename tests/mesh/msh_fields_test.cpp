@@ -111,6 +111,25 @@ TEST(NodeDataTest, DerivedQuadCentresGetTheSerendipityValue) {
   }
 }
 
+// A 3-component $NodeData (x, 2 y, 2) in binary: each component lands on its vertex, and the
+// scalar colour maps show is the magnitude.
+TEST(NodeDataTest, VectorFieldComponentsAndMagnitude) {
+  const Mesh mesh = readMsh(fieldFixture("node_vector_v41_bin.msh"));
+  ASSERT_EQ(mesh.fields.size(), 1u);
+  const MeshField& field = mesh.fields[0];
+  ASSERT_EQ(field.components, 3);
+  ASSERT_EQ(field.itemCount(), mesh.positions.size());
+  for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3d p = mesh.worldPosition(v);
+    EXPECT_NEAR(field.values[v * 3 + 0], p.x, 1e-5);
+    EXPECT_NEAR(field.values[v * 3 + 1], 2 * p.y, 1e-5);
+    EXPECT_NEAR(field.values[v * 3 + 2], 2.0, 1e-6);
+    EXPECT_NEAR(field.scalar(v), std::sqrt(p.x * p.x + 4 * p.y * p.y + 4), 1e-5);
+  }
+  EXPECT_NEAR(field.range().first, 2.0, 1e-5);
+  EXPECT_NEAR(field.range().second, 3.0, 1e-5);
+}
+
 TEST(MeshFieldTest, VectorScalarIsTheLength) {
   MeshField field;
   field.components = 3;
