@@ -188,6 +188,15 @@ CameraSettings readCamera(const SceneFile& file, const toml::table& table) {
 constexpr std::array<std::string_view, 3> kClipKeys = {"point", "normal", "cap"};
 constexpr std::array<std::string_view, 3> kFloorKeys = {"shadow_catcher", "height", "normal"};
 
+// An optional [x, y, z] that must not be zero, returned normalised (plane normals).
+std::optional<Vec3d> readDirection(const TomlTableReader& reader, std::string_view key) {
+  const std::optional<Vec3d> direction = reader.vector(key, Triple::Xyz);
+  if (!direction) return std::nullopt;
+  if (length(*direction) == 0.0)
+    reader.fail(*reader.find(key), fmt::format("{} must not be [0, 0, 0]", reader.qualified(key)));
+  return normalize(*direction);
+}
+
 FloorSettings readFloor(const SceneFile& file, const toml::table& table) {
   const TomlTableReader reader(table, "floor", file.path, kFloorKeys);
   const std::optional<bool> catcher = reader.boolean("shadow_catcher");
@@ -199,11 +208,7 @@ FloorSettings readFloor(const SceneFile& file, const toml::table& table) {
   }
   FloorSettings floor;
   if (auto height = reader.number("height")) floor.height = *height;
-  if (auto normal = reader.vector("normal", Triple::Xyz)) {
-    if (length(*normal) == 0.0)
-      reader.fail(*reader.find("normal"), "floor.normal must not be [0, 0, 0]");
-    floor.normal = normalize(*normal);
-  }
+  if (auto normal = readDirection(reader, "normal")) floor.normal = *normal;
   return floor;
 }
 
@@ -212,12 +217,10 @@ ClipSettings readClip(const SceneFile& file, const toml::table& table, std::size
   ClipSettings clip;
   const std::optional<Vec3d> point = reader.vector("point", Triple::Xyz);
   if (!point) reader.failMissing("point", "point = [x, y, z] (a point on the cutting plane)");
-  const std::optional<Vec3d> normal = reader.vector("normal", Triple::Xyz);
+  const std::optional<Vec3d> normal = readDirection(reader, "normal");
   if (!normal) reader.failMissing("normal", "normal = [x, y, z] (geometry on this side is removed)");
-  if (length(*normal) == 0.0)
-    reader.fail(*reader.find("normal"), fmt::format("{} must not be [0, 0, 0]", reader.qualified("normal")));
   clip.point = *point;
-  clip.normal = normalize(*normal);
+  clip.normal = *normal;
   if (auto cap = reader.boolean("cap")) clip.cap = *cap;
   return clip;
 }
