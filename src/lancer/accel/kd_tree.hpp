@@ -11,6 +11,7 @@
 #include "lancer/accel/kd_tree_stats.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/aabb.hpp"
+#include "lancer/math/face_clip_sets.hpp"
 #include "lancer/math/ray.hpp"
 #include "lancer/mesh/mesh.hpp"
 
@@ -56,6 +57,10 @@ class KdTree {
   bool intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const;
   // Any hit with t in (tMin, tMax): the shadow-ray query, stops at the first blocker.
   bool occluded(const Ray& ray, float tMin, float tMax) const;
+  // The same two queries seeing only the hits per-mesh clip planes keep (a removed face is passed
+  // through, and casts no shadow). Separate entry points: scenes without such planes pay nothing.
+  bool intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips, Hit& hit) const;
+  bool occluded(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips) const;
 
   const AccelStats& stats() const { return stats_; }
   const Aabb& bounds() const { return bounds_; }

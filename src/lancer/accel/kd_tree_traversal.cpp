@@ -70,6 +70,34 @@ struct AnyHit {
   }
 };
 
+// ClosestHit and AnyHit for scenes with per-mesh clip planes: a hit those planes remove is not a
+// hit. Pruning by the closest kept hit stays exact, and so does the mailbox (a repeated test of a
+// triangle gets the same answer, kept or not).
+struct ClippedClosestHit {
+  Hit best;
+  float upper;
+  const FaceClipSets& clips;
+
+  bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
+    const float t = intersectTriangle(tri, ray, tMin, upper);
+    if (t >= 0.0f && t < tMax && closerThan(t, tri.face, best) && clips.keeps(ray, tri.face, t)) {
+      best.t = t;
+      best.face = tri.face;
+      upper = nextUp(t);
+    }
+    return false;
+  }
+};
+
+struct ClippedAnyHit {
+  const FaceClipSets& clips;
+
+  bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) const {
+    const float t = intersectTriangle(tri, ray, tMin, tMax);
+    return t >= 0.0f && clips.keeps(ray, tri.face, t);
+  }
+};
+
 // Walks the tree; Query::test returns true to stop (any hit). `bound` reads the current pruning
 // distance: the closest hit so far, or tMax for any-hit.
 template <typename Query, typename Bound>
@@ -167,6 +195,25 @@ bool KdTree::intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
 bool KdTree::occluded(const Ray& ray, float tMin, float tMax) const {
   LANCER_KD_COUNT(rays);
   AnyHit query;
+  for (const PackedTriangle& tri : slivers_) {
+    if (query.test(tri, ray, tMin, tMax)) return true;
+  }
+  return walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return tMax; });
+}
+
+bool KdTree::intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips, Hit& hit) const {
+  LANCER_KD_COUNT(rays);
+  ClippedClosestHit query{Hit{tMax, Hit{}.face}, tMax, clips};
+  for (const PackedTriangle& tri : slivers_) query.test(tri, ray, tMin, tMax);
+  walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return query.best.t; });
+  if (!query.best.valid()) return false;
+  hit = query.best;
+  return true;
+}
+
+bool KdTree::occluded(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips) const {
+  LANCER_KD_COUNT(rays);
+  ClippedAnyHit query{clips};
   for (const PackedTriangle& tri : slivers_) {
     if (query.test(tri, ray, tMin, tMax)) return true;
   }

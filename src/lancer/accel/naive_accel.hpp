@@ -8,6 +8,7 @@
 
 #include "lancer/accel/hit.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
+#include "lancer/math/face_clip_sets.hpp"
 
 namespace lancer {
 
@@ -18,19 +19,11 @@ class NaiveAccel {
 
   // Closest hit with t in (tMin, tMax); returns false (hit untouched) when there is none.
   bool intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
-    Hit best;
-    best.t = tMax;
-    for (const PackedTriangle& tri : triangles_) {
-      // Upper bound one ulp past the best so an equal-t hit on a shared edge reaches the tie-break.
-      const float t = intersectTriangle(tri, ray, tMin, std::nextafter(best.t, INFINITY));
-      if (t >= 0.0f && t < tMax && closerThan(t, tri.face, best)) {
-        best.t = t;
-        best.face = tri.face;
-      }
-    }
-    if (!best.valid()) return false;
-    hit = best;
-    return true;
+    return closest(ray, tMin, tMax, [](std::uint32_t, float) { return true; }, hit);
+  }
+  // The same among the hits per-mesh clip planes keep: a removed face is passed through.
+  bool intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips, Hit& hit) const {
+    return closest(ray, tMin, tMax, [&](std::uint32_t face, float t) { return clips.keeps(ray, face, t); }, hit);
   }
 
   // Any hit with t in (tMin, tMax): the shadow-ray query, stops at the first blocker.
@@ -40,10 +33,35 @@ class NaiveAccel {
     }
     return false;
   }
+  // The same with removed faces casting no shadow.
+  bool occluded(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips) const {
+    for (const PackedTriangle& tri : triangles_) {
+      const float t = intersectTriangle(tri, ray, tMin, tMax);
+      if (t >= 0.0f && clips.keeps(ray, tri.face, t)) return true;
+    }
+    return false;
+  }
 
   std::size_t memoryBytes() const { return triangles_.capacity() * sizeof(PackedTriangle); }
 
  private:
+  template <typename Keep>
+  bool closest(const Ray& ray, float tMin, float tMax, Keep keep, Hit& hit) const {
+    Hit best;
+    best.t = tMax;
+    for (const PackedTriangle& tri : triangles_) {
+      // Upper bound one ulp past the best so an equal-t hit on a shared edge reaches the tie-break.
+      const float t = intersectTriangle(tri, ray, tMin, std::nextafter(best.t, INFINITY));
+      if (t >= 0.0f && t < tMax && closerThan(t, tri.face, best) && keep(tri.face, t)) {
+        best.t = t;
+        best.face = tri.face;
+      }
+    }
+    if (!best.valid()) return false;
+    hit = best;
+    return true;
+  }
+
   std::vector<PackedTriangle> triangles_;
 };
 
