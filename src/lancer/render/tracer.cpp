@@ -55,6 +55,16 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderS
   }
 }
 
+bool Tracer::nearestHit(const Ray& ray, float tMin, float tMax, Hit& hit) const {
+  if (scene_.meshClips.empty()) return accelerator_.intersect(ray, tMin, tMax, hit);
+  return accelerator_.intersect(ray, tMin, tMax, scene_.meshClips, hit);
+}
+
+bool Tracer::blocked(const Ray& ray, float tMin, float tMax) const {
+  if (scene_.meshClips.empty()) return accelerator_.occluded(ray, tMin, tMax);
+  return accelerator_.occluded(ray, tMin, tMax, scene_.meshClips);
+}
+
 TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const {
   float coverage = 0;
   float hitDistance = 0;
@@ -70,7 +80,7 @@ Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, Trac
     const Ray ray(from, lightPosition - from);
     const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
     if (kept.empty() || kept.enter >= 1.0f) return {1, 1, 1};
-    return accelerator_.occluded(ray, kept.enter, std::min(kept.exit, 1.0f)) ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
+    return blocked(ray, kept.enter, std::min(kept.exit, 1.0f)) ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
   }
   Vec3 transmission{1, 1, 1};
   Vec3 origin = from;
@@ -82,7 +92,7 @@ Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, Trac
     const Ray ray(origin, lightPosition - origin);
     const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
     Hit hit;
-    if (kept.empty() || !accelerator_.intersect(ray, kept.enter, std::min(kept.exit, 1.0f), hit)) return transmission;
+    if (kept.empty() || !nearestHit(ray, kept.enter, std::min(kept.exit, 1.0f), hit)) return transmission;
     const Material& material = scene_.materials[scene_.faceMaterial[hit.face]];
     if (material.transparency <= 0.0f) return {0, 0, 0};
     const Vec3 point = ray.at(hit.t);
@@ -175,12 +185,28 @@ Vec3 Tracer::shadeShadowCatcher(const Vec3& point, TraceCounters& counters, floa
   return background_ * kept;
 }
 
-Vec3 Tracer::shadeCap(const Ray& ray, const ClipInterval& kept, std::uint32_t face, bool parallelView,
+const ClipPlane* Tracer::capPlane(const Ray& ray, const ClipInterval& kept, std::uint32_t face, float& tCap) const {
+  // The mesh's own planes and the scene's together keep a convex region, entered at the later of
+  // the two entries, by that entry's plane.
+  if (const FaceClipRange* range = scene_.meshClips.empty() ? nullptr : scene_.meshClips.rangeOf(face)) {
+    const ClipInterval own = clipRay(ray, scene_.meshClips.planesOf(*range));
+    if (own.enterPlane >= 0 && own.enter > kept.enter) {
+      const std::size_t plane = range->planeBegin + static_cast<std::size_t>(own.enterPlane);
+      if (!scene_.meshClips.caps[plane]) return nullptr;
+      tCap = own.enter;
+      return &scene_.meshClips.planes[plane];
+    }
+  }
+  if (kept.enterPlane < 0 || !scene_.clipCaps[static_cast<std::size_t>(kept.enterPlane)]) return nullptr;
+  tCap = kept.enter;
+  return &scene_.clipPlanes[static_cast<std::size_t>(kept.enterPlane)];
+}
+
+Vec3 Tracer::shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::uint32_t face, bool parallelView,
                       TraceCounters& counters) const {
-  const ClipPlane& plane = scene_.clipPlanes[static_cast<std::size_t>(kept.enterPlane)];
   SurfacePoint cap{};
   cap.face = face;
-  cap.position = ray.at(kept.enter);
+  cap.position = ray.at(tCap);
   // The ray came from the removed side, where the plane's normal points: the cap faces it.
   cap.geometricNormal = cap.shadingNormal = plane.normal;
   cap.normalSign = 1.0f;
@@ -207,10 +233,11 @@ float Tracer::edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) c
 Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
                    TraceCounters& counters, float& coverage, float& hitDistance) const {
   ++counters.rays;
-  // Cut views: only the part of the ray on the kept side of every clip plane can hit anything.
+  // Cut views: only the part of the ray on the kept side of every scene clip plane can hit
+  // anything; a mesh's own planes are seen through by the query itself.
   const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
   Hit hit;
-  const bool hitMesh = !kept.empty() && accelerator_.intersect(ray, kept.enter, kept.exit, hit);
+  const bool hitMesh = !kept.empty() && nearestHit(ray, kept.enter, kept.exit, hit);
   if (scene_.hasShadowCatcher) {
     // The catcher is a plane seen from above, in front of any mesh hit and inside the kept part.
     const float rate = dot(ray.direction, scene_.floorNormal);
@@ -225,12 +252,16 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength
     return background_;
   }
   // A ray that crosses a capped plane and then leaves a closed shell from inside was inside the
-  // solid at the plane: it sees the cut face (the cap) there, flat, in the shell's material.
-  if (kept.enterPlane >= 0 && scene_.clipCaps[static_cast<std::size_t>(kept.enterPlane)] &&
-      scene_.faceBoundsSolid[hit.face] && dot(scene_.faceNormals[hit.face], ray.direction) > 0.0f) {
-    coverage = 1.0f;
-    hitDistance = kept.enter * length(ray.direction);
-    return shadeCap(ray, kept, hit.face, parallelView, counters);
+  // solid at the plane: it sees the cut face (the cap) there, flat, in the shell's material. Only
+  // the hit mesh's planes matter: the ray met no kept face of that mesh since the crossing.
+  if ((kept.enterPlane >= 0 || !scene_.meshClips.empty()) && scene_.faceBoundsSolid[hit.face] &&
+      dot(scene_.faceNormals[hit.face], ray.direction) > 0.0f) {
+    float tCap = 0;
+    if (const ClipPlane* plane = capPlane(ray, kept, hit.face, tCap)) {
+      coverage = 1.0f;
+      hitDistance = tCap * length(ray.direction);
+      return shadeCap(ray, *plane, tCap, hit.face, parallelView, counters);
+    }
   }
   coverage = 1.0f;
   hitDistance = hit.t * length(ray.direction);

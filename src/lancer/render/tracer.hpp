@@ -51,9 +51,17 @@ class Tracer {
              TraceCounters& counters, float& coverage, float& hitDistance) const;
   // The shadow-catcher floor at `point`: the background darkened by the meshes' shadows.
   Vec3 shadeShadowCatcher(const Vec3& point, TraceCounters& counters, float& coverage) const;
-  // The flat face a capped clip plane shows where it cuts a closed shell (`face`: the shell's face
-  // the ray leaves by, for its material).
-  Vec3 shadeCap(const Ray& ray, const ClipInterval& kept, std::uint32_t face, bool parallelView,
+  // The accelerator's closest-hit and any-hit queries, seeing through the faces that per-mesh clip
+  // planes remove when the scene has such planes (the plain queries otherwise).
+  bool nearestHit(const Ray& ray, float tMin, float tMax, Hit& hit) const;
+  bool blocked(const Ray& ray, float tMin, float tMax) const;
+  // The capped plane by which `ray` entered the kept region of `face`'s mesh (the scene's planes
+  // and the mesh's own), with the crossing in `tCap`; nullptr when it started inside that region or
+  // entered by an uncapped plane. `kept`: the ray's interval for the scene's planes.
+  const ClipPlane* capPlane(const Ray& ray, const ClipInterval& kept, std::uint32_t face, float& tCap) const;
+  // The flat face a capped clip plane shows where it cuts a closed shell, at ray parameter `tCap`
+  // (`face`: the shell's face the ray leaves by, for its material).
+  Vec3 shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::uint32_t face, bool parallelView,
                 TraceCounters& counters) const;
   // Coverage of the hit face's drawn edges at the hit (0 when its mesh draws none).
   float edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) const;

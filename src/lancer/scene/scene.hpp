@@ -10,6 +10,7 @@
 
 #include "lancer/math/aabb.hpp"
 #include "lancer/math/clip_planes.hpp"
+#include "lancer/math/face_clip_sets.hpp"
 #include "lancer/mesh/mesh.hpp"
 #include "lancer/mesh/vertex_normals.hpp"
 #include "lancer/scene/scene_description.hpp"
@@ -62,6 +63,8 @@ struct Scene {
   std::vector<SceneLight> lights;
   std::vector<ClipPlane> clipPlanes;   // scene space
   std::vector<std::uint8_t> clipCaps;  // 1: cap closed shells cut by clipPlanes[i]
+  // Each mesh's own planes ([[mesh.clip]]), which remove only its faces; empty when no mesh has any.
+  FaceClipSets meshClips;
   // The shadow-catcher floor: points p with dot(p, floorNormal) = floorOffset (scene space).
   bool hasShadowCatcher = false;
   Vec3 floorNormal{0, 1, 0};

@@ -106,6 +106,21 @@ void addFieldColoring(Scene& scene, const FieldColoring& coloring, std::uint32_t
   if (!scene.legend) scene.legend = Scene::FieldLegend{coloring.map, coloring.low, coloring.high};
 }
 
+// The planes of a mesh whose faces start at faceBase and run to the scene's last face.
+void addMeshClips(Scene& scene, const std::vector<ClipSettings>& clips, std::size_t faceBase) {
+  FaceClipSets& sets = scene.meshClips;
+  FaceClipRange range;
+  range.faceBegin = static_cast<std::uint32_t>(faceBase);
+  range.faceEnd = static_cast<std::uint32_t>(scene.faces.size());
+  range.planeBegin = static_cast<std::uint32_t>(sets.planes.size());
+  for (const ClipSettings& clip : clips) {
+    sets.planes.push_back({scene.toSceneSpace(clip.point), toFloat(clip.normal)});
+    sets.caps.push_back(clip.cap ? 1 : 0);
+  }
+  range.planeEnd = static_cast<std::uint32_t>(sets.planes.size());
+  sets.ranges.push_back(range);
+}
+
 }  // namespace
 
 Scene buildScene(const SceneDescription& description) {
@@ -193,6 +208,7 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
       scene.faceBoundsSolid.push_back(orientation.faceBoundsSolid[f]);
     }
     if (coloring) addFieldColoring(scene, *coloring, vertexBase, faceBase);
+    if (!instance.clips.empty() && !mesh.faces.empty()) addMeshClips(scene, instance.clips, faceBase);
   }
   // Meshes after the last coloured one are not coloured.
   if (!scene.faceColorMap.empty()) scene.faceColorMap.resize(scene.faces.size(), 0);

@@ -78,6 +78,15 @@ struct EdgeSettings {
   float featureAngleDegrees = 30;     // crease angle for featuresOnly
 };
 
+// `[[clip]] point = [..], normal = [..], cap = true`: geometry on the side the normal points to is
+// removed for every ray; with `cap`, closed shells cut by the plane show a flat face there. Scene
+// coordinates, also for a mesh's own planes (`[[mesh.clip]]`, which remove only that mesh's faces).
+struct ClipSettings {
+  Vec3d point{0, 0, 0};
+  Vec3d normal{1, 0, 0};  // unit
+  bool cap = true;
+};
+
 struct MeshInstance {
   std::string file;  // resolved against the scene file's folder
   SourceLocation where;  // of the [[mesh]] table, for errors found when the mesh is loaded
@@ -90,6 +99,7 @@ struct MeshInstance {
   Vec3d scale{1, 1, 1};
   std::vector<GroupMaterial> groupMaterials;
   std::optional<EdgeSettings> edges;
+  std::vector<ClipSettings> clips;  // [[mesh.clip]]: planes that cut this mesh only
 };
 
 struct AnimationSettings {
@@ -99,14 +109,6 @@ struct AnimationSettings {
   Vec3d axis{0, 1, 0};
   std::optional<Vec3d> center;  // default: centre of the scene's bounding box
   double degrees = 360;
-};
-
-// `[[clip]] point = [..], normal = [..], cap = true`: geometry on the side the normal points to is
-// removed for every ray; with `cap`, closed shells cut by the plane show a flat face there.
-struct ClipSettings {
-  Vec3d point{0, 0, 0};
-  Vec3d normal{1, 0, 0};  // unit
-  bool cap = true;
 };
 
 // `[floor] shadow_catcher = true`: an infinite plane that is never drawn itself but darkens the

@@ -30,9 +30,9 @@ constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
 constexpr std::array<std::string_view, 3> kLightKeys = {"position", "intensity", "attenuation"};
 constexpr std::array<std::string_view, 9> kMaterialKeys = {
     "ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "fresnel", "absorption"};
-constexpr std::array<std::string_view, 10> kMeshKeys = {"file",   "material", "shading", "smooth_angle",
-                                                        "translate", "rotate", "scale",   "groups",
-                                                        "edges",     "color_by"};
+constexpr std::array<std::string_view, 11> kMeshKeys = {"file",      "material", "shading", "smooth_angle",
+                                                        "translate", "rotate",   "scale",   "groups",
+                                                        "edges",     "color_by", "clip"};
 constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only", "feature_angle"};
 constexpr std::array<std::string_view, 2> kEdgeSelections = {"elements", "features"};
 constexpr std::array<std::string_view, 6> kAnimationKeys = {"frames", "fps",    "orbit",
@@ -78,24 +78,30 @@ const toml::table* sectionTable(const SceneFile& file, const toml::table& root, 
             fmt::format("{} must be a table written [{}], found {}", name, name, describeValue(*node)));
 }
 
-// `[[light]]`, `[[mesh]]`: the elements of an array of tables (empty if absent).
-std::vector<const toml::table*> tableArray(const SceneFile& file, const toml::table& root,
-                                           std::string_view name) {
+// `[[light]]`, `[[mesh]]`, `[[mesh.clip]]`: the elements of the array of tables `key` of `parent`
+// (empty if absent). `name` is how messages call it ("mesh[2].clip"), `header` how it is written
+// ("mesh.clip").
+std::vector<const toml::table*> tableArray(const SceneFile& file, const toml::table& parent, std::string_view key,
+                                           std::string_view name, std::string_view header) {
   std::vector<const toml::table*> tables;
-  const toml::node* node = root.get(name);
+  const toml::node* node = parent.get(key);
   if (!node) return tables;
   const auto* array = node->as_array();
   if (!array)
-    file.fail(*node, fmt::format("{} must be an array of tables: write [[{}]] for each one, not {}", name,
-                                 name, node->is_table() ? fmt::format("[{}]", name) : describeValue(*node)));
+    file.fail(*node, fmt::format("{} must be an array of tables: write [[{}]] for each one, not {}", name, header,
+                                 node->is_table() ? fmt::format("[{}]", header) : describeValue(*node)));
   for (std::size_t i = 0; i < array->size(); ++i) {
     const toml::node& element = *array->get(i);
     if (!element.is_table())
-      file.fail(element, fmt::format("{}[{}] must be a table written [[{}]], found {}", name, i, name,
+      file.fail(element, fmt::format("{}[{}] must be a table written [[{}]], found {}", name, i, header,
                                      describeValue(element)));
     tables.push_back(element.as_table());
   }
   return tables;
+}
+
+std::vector<const toml::table*> tableArray(const SceneFile& file, const toml::table& root, std::string_view name) {
+  return tableArray(file, root, name, name, name);
 }
 
 void readBackground(const TomlTableReader& reader, RenderSettings& render) {
@@ -212,8 +218,9 @@ FloorSettings readFloor(const SceneFile& file, const toml::table& table) {
   return floor;
 }
 
-ClipSettings readClip(const SceneFile& file, const toml::table& table, std::size_t index) {
-  const TomlTableReader reader(table, fmt::format("clip[{}]", index), file.path, kClipKeys);
+// `[[clip]]` and `[[mesh.clip]]` alike; `name` is "clip[1]" or "mesh[0].clip[1]", for messages.
+ClipSettings readClip(const SceneFile& file, const toml::table& table, const std::string& name) {
+  const TomlTableReader reader(table, name, file.path, kClipKeys);
   ClipSettings clip;
   const std::optional<Vec3d> point = reader.vector("point", Triple::Xyz);
   if (!point) reader.failMissing("point", "point = [x, y, z] (a point on the cutting plane)");
@@ -388,6 +395,10 @@ MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size
   mesh.groupMaterials = readGroupMaterials(file, reader, materials);
   mesh.edges = readEdges(file, reader);
   mesh.colorBy = readColorBy(file.path, reader);
+  const std::string clipName = reader.qualified("clip");
+  const std::vector<const toml::table*> clips = tableArray(file, table, "clip", clipName, "mesh.clip");
+  for (std::size_t i = 0; i < clips.size(); ++i)
+    mesh.clips.push_back(readClip(file, *clips[i], fmt::format("{}[{}]", clipName, i)));
   return mesh;
 }
 
@@ -480,7 +491,8 @@ SceneDescription parseScene(std::string_view text, const std::string& path) {
   const std::vector<const toml::table*> lights = tableArray(file, root, "light");
   for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(readLight(file, *lights[i], i));
   const std::vector<const toml::table*> clips = tableArray(file, root, "clip");
-  for (std::size_t i = 0; i < clips.size(); ++i) scene.clips.push_back(readClip(file, *clips[i], i));
+  for (std::size_t i = 0; i < clips.size(); ++i)
+    scene.clips.push_back(readClip(file, *clips[i], fmt::format("clip[{}]", i)));
   if (const toml::table* floor = sectionTable(file, root, "floor")) scene.floor = readFloor(file, *floor);
   scene.materials = readMaterials(file, root);
   const std::vector<const toml::table*> meshes = tableArray(file, root, "mesh");
