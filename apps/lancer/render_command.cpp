@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "lancer/image/color_map.hpp"
 #include "lancer/image/image_io.hpp"
+#include "lancer/image/image_row_writer.hpp"
 #include "lancer/render/renderer.hpp"
 #include "scene_setup.hpp"
 
@@ -51,11 +52,48 @@ int tracePixel(const PreparedScene& prepared, const Camera& camera, const std::s
   return kExitOk;
 }
 
+std::string outputPath(const RenderCommandOptions& options, const RenderSettings& settings) {
+  return options.output.empty() ? settings.output : options.output;
+}
+
+// PNG, BMP and PPM go to the file band by band as they finish, so memory holds a few bands of rows
+// whatever the image size; a GIF needs every pixel for its palette.
+bool streamsToFile(const std::string& output) {
+  return !output.empty() && ImageRowWriter::streams(imageFormatFromPath(output));
+}
+
+// Renders into `output` (atomically: an interrupted or failed render leaves any existing file as it
+// was). Returns false when interrupted.
+bool renderToFile(const PreparedScene& prepared, const Camera& camera, const std::string& output,
+                  const RenderOptions& renderOptions, RenderStats& stats) {
+  const RenderSettings& settings = prepared.description.render;
+  ImageWriteOptions writeOptions;
+  writeOptions.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
+  writeOptions.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
+  const bool cancellable = renderOptions.cancel != nullptr;
+  if (!streamsToFile(output)) {
+    const Image image =
+        renderImage(prepared.scene, prepared.accelerator, camera, settings, renderOptions, &stats);
+    if (cancellable && renderOptions.cancel->load()) return false;
+    writeImage(output, image, writeOptions);
+    return true;
+  }
+  ImageRowWriter writer(output, settings.width, settings.height, writeOptions);  // a bad folder fails now
+  renderBands(
+      prepared.scene, prepared.accelerator, camera, settings, renderOptions,
+      [&](int, const Image& band) { writer.writeRows(band); }, &stats);
+  if (stats.cancelled || (cancellable && renderOptions.cancel->load())) return false;  // ~writer discards
+  writer.commit();
+  return true;
+}
+
 int runRender(const RenderCommandOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  PreparedScene prepared = prepareScene(options.input, options.overrides);
+  PreparedScene prepared = prepareScene(options.input, options.overrides, [&](const RenderSettings& s) {
+    return streamsToFile(outputPath(options, s)) ? ImageBuffer::Bands : ImageBuffer::Whole;
+  });
   const RenderSettings& settings = prepared.description.render;
-  const std::string output = options.output.empty() ? settings.output : options.output;
+  const std::string output = outputPath(options, settings);
   if (output.empty() && options.pixel.empty())
     throw InputError(SourceLocation{options.input}, "no output image: give -o FILE or set render.output");
   if (!output.empty()) imageFormatFromPath(output);  // refuse a bad extension before rendering
@@ -78,18 +116,18 @@ int runRender(const RenderCommandOptions& options) {
   const bool progress = showProgress(options.overrides);
   if (progress) renderOptions.onProgress = printProgress;
   RenderStats stats;
-  const Image image =
-      renderImage(prepared.scene, prepared.accelerator, camera, settings, renderOptions, &stats);
+  bool written = false;
+  try {
+    written = renderToFile(prepared, camera, output, renderOptions, stats);
+  } catch (...) {
+    if (progress) std::fputc('\n', stderr);  // the error goes below the progress line
+    throw;
+  }
   if (progress) std::fputc('\n', stderr);
-  if (interrupted.load()) {
+  if (!written) {
     std::fprintf(stderr, "lancer: interrupted; %s was not written\n", output.c_str());
     return kExitInterrupted;
   }
-
-  ImageWriteOptions writeOptions;
-  writeOptions.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
-  writeOptions.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
-  writeImage(output, image, writeOptions);
   if (!options.legend.empty()) {
     // The bar holds the map's display values: written as they are, like the picture's field colours.
     const Scene::FieldLegend& legend = *prepared.scene.legend;

@@ -9,6 +9,7 @@
 
 #include "lancer/image/image.hpp"
 #include "lancer/mesh/msh_reader.hpp"
+#include "lancer/render/renderer.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "lancer/util/memory_budget.hpp"
@@ -38,6 +39,26 @@ SamplerKind samplerFromName(const std::string& name) {
                               : (name == "adaptive" ? SamplerKind::Adaptive : SamplerKind::Regular);
 }
 
+// Checked before loading any mesh. Whole: the float image and its 8-bit copy for the writer.
+// Bands: the bands renderBands keeps, plus the writer's encoded row and libpng's and zlib's state
+// (well under kWriterStateBytes), whatever the height.
+void requireImageMemory(const RenderSettings& settings, int threads, ImageBuffer buffer,
+                        const std::string& input) {
+  constexpr std::uint64_t kWriterStateBytes = 1 << 20;
+  const std::uint64_t pixels =
+      static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
+  if (buffer == ImageBuffer::Whole) {
+    requireMemory(saturatingProduct(pixels, sizeof(Rgba) + 4), SourceLocation{input},
+                  fmt::format("a {}x{} image", settings.width, settings.height));
+    return;
+  }
+  const std::uint64_t bytes = bandMemoryBytes(settings.width, settings.height, threads) +
+                              static_cast<std::uint64_t>(settings.width) * 4 + kWriterStateBytes;
+  requireMemory(bytes, SourceLocation{input},
+                fmt::format("a {}x{} image rendered in bands of {} rows", settings.width, settings.height,
+                            kTileSize));
+}
+
 }  // namespace
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
@@ -60,7 +81,8 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
 }
 
-PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides) {
+PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides,
+                           const ImageBufferChoice& imageBuffer) {
   const auto start = std::chrono::steady_clock::now();
   SceneDescription description;
   std::vector<Mesh> preloaded;
@@ -82,9 +104,8 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
     throw InputError(SourceLocation{"--samples"},
                      fmt::format("{} samples cannot form an n x n grid: use a perfect square (1, 4, 9, 16, ...)",
                                  settings.samples));
-  // The float image and its 8-bit copy for the writer; checked before loading any mesh.
-  requireMemory(saturatingProduct(static_cast<std::uint64_t>(settings.width) * settings.height, sizeof(Rgba) + 4),
-                SourceLocation{input}, fmt::format("a {}x{} image", settings.width, settings.height));
+  requireImageMemory(settings, overrides.threads, imageBuffer ? imageBuffer(settings) : ImageBuffer::Whole,
+                     input);
   if (overrides.edges)
     for (MeshInstance& mesh : description.meshes)
       if (!mesh.edges) mesh.edges = EdgeSettings{};

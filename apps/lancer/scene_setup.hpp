@@ -3,6 +3,7 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -34,9 +35,17 @@ struct PreparedScene {
   double buildSeconds = 0;
 };
 
+// How a command holds the image while it renders: whole (animation frames, GIF) or as the few bands
+// of rows that renderBands keeps (a still PNG, BMP or PPM streamed to its file).
+enum class ImageBuffer { Whole, Bands };
+// Asked once the overrides are applied, before any mesh is loaded, for the memory check.
+using ImageBufferChoice = std::function<ImageBuffer(const RenderSettings&)>;
+
 // Reads a scene file (.toml) or builds the quick-look scene of a mesh (.msh), applies the
-// overrides, loads the meshes and builds the accelerator.
-PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides);
+// overrides, checks the image's memory against the budget (--max-memory), loads the meshes and builds
+// the accelerator. Without a choice the image is held whole.
+PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides,
+                           const ImageBufferChoice& imageBuffer = {});
 
 // Ctrl-C and SIGTERM set the flag instead of killing the process, so outputs stay untouched.
 const std::atomic<bool>& installInterruptHandler();

@@ -287,6 +287,11 @@ std::vector<Case> catalogue() {
        "if [ $(id -u) = 0 ]; then exec setpriv --reuid=65534 --regid=65534 --clear-groups "
        "$LANCER render -q scene.toml -o ro/out.png; else exec $LANCER render -q scene.toml -o ro/out.png; fi",
        oldOutputKept("ro/out.png", "ro")},
+      // A still PNG, BMP or PPM is streamed in bands (row 65); a GIF still is held whole.
+      {"out_gif_over_memory_budget", "GIF still needing more than --max-memory (held whole for its palette)",
+       "`--max-memory 64M`, `width = height = 4000`, `-o out.gif`",
+       withScene("[render]\nwidth = 4000\nheight = 4000\n[[mesh]]\nfile = \"part.msh\"\n"),
+       "$LANCER render -q --max-memory 64M scene.toml -o out.gif", nullptr},
   };
   return cases;
 }

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <vector>
 
 #include "lancer/util/input_error.hpp"
@@ -162,6 +163,21 @@ bool AtomicFileWriter::write(const void* data, std::size_t size) noexcept {
     return false;
   }
   return true;
+}
+
+bool AtomicFileWriter::writeAt(std::uint64_t offset, const void* data, std::size_t size) noexcept {
+  if (errorNumber_ != 0 || stream_ == nullptr) return false;
+  errno = 0;
+  if (offset > static_cast<std::uint64_t>(std::numeric_limits<off_t>::max()) ||
+      ::fseeko(stream_, static_cast<off_t>(offset), SEEK_SET) != 0) {
+    errorNumber_ = errno != 0 ? errno : EIO;
+    return false;
+  }
+  return write(data, size);
+}
+
+void AtomicFileWriter::throwIfFailed() {
+  if (errorNumber_ != 0) failAndThrow("writing", errorNumber_);
 }
 
 void AtomicFileWriter::discard() noexcept {

@@ -28,6 +28,13 @@ class AtomicFileWriter {
   // write has failed (the first error is kept and reported by commit()).
   bool write(const void* data, std::size_t size) noexcept;
   bool write(std::span<const std::uint8_t> bytes) noexcept { return write(bytes.data(), bytes.size()); }
+  // Writes bytes at `offset` from the start of the file (past the end leaves a hole of zeros, filled
+  // later); a following write() continues after them. For formats that store rows bottom-up.
+  bool writeAt(std::uint64_t offset, const void* data, std::size_t size) noexcept;
+
+  // When a write has failed: removes the temporary file and throws the InputError commit() would,
+  // so a writer that streams stops at the first failure instead of after the whole image.
+  void throwIfFailed();
 
   // Publishes the file, or throws InputError (after removing the temporary file).
   void commit();

@@ -11,6 +11,7 @@
 
 #include "lancer/image/atomic_file.hpp"
 #include "lancer/image/image_io.hpp"
+#include "lancer/image/png_row_encoder.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
@@ -20,14 +21,15 @@ namespace {
 constexpr std::uint64_t kMaxReadPixels = std::uint64_t{1} << 26;
 
 struct PngErrorText {
-  char text[256] = {};
+  char text[kPngErrorTextSize] = {};
 };
 
-// Our own handlers: libpng's defaults print to stderr, and the library never prints.
+// Our own handlers: libpng's defaults print to stderr, and the library never prints. The error
+// pointer is a buffer of kPngErrorTextSize characters.
 void onPngError(png_structp png, png_const_charp message) {
-  auto* error = static_cast<PngErrorText*>(png_get_error_ptr(png));
-  if (error != nullptr && message != nullptr) {
-    std::strncpy(error->text, message, sizeof(error->text) - 1);
+  auto* text = static_cast<char*>(png_get_error_ptr(png));
+  if (text != nullptr && message != nullptr) {
+    std::strncpy(text, message, kPngErrorTextSize - 1);
   }
   png_longjmp(png, 1);
 }
@@ -39,10 +41,20 @@ void onPngWrite(png_structp png, png_bytep data, png_size_t size) {
 }
 void onPngFlush(png_structp) {}
 
+// The header chunks, shared by the whole-image and the row-by-row writers so both give the same bytes.
+// Called between setjmp and the last libpng call.
+void writePngHeader(png_structp png, png_infop info, int width, int height, int channels, bool srgbChunk) {
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
+               channels == 4 ? PNG_COLOR_TYPE_RGBA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  if (srgbChunk) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_write_info(png, info);
+}
+
 // Returns false with error->text set when libpng fails (a failed write leaves the reason in `file`).
 bool encodePng(AtomicFileWriter* file, int width, int height, int channels, bool srgbChunk,
                const std::uint8_t* samples, PngErrorText* error) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, error, onPngError, onPngWarning);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, error->text, onPngError, onPngWarning);
   if (png == nullptr) return false;
   png_infop info = png_create_info_struct(png);
   if (info == nullptr) {
@@ -54,11 +66,7 @@ bool encodePng(AtomicFileWriter* file, int width, int height, int channels, bool
     return false;
   }
   png_set_write_fn(png, file, onPngWrite, onPngFlush);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
-               channels == 4 ? PNG_COLOR_TYPE_RGBA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  if (srgbChunk) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
-  png_write_info(png, info);
+  writePngHeader(png, info, width, height, channels, srgbChunk);
   const std::size_t stride = static_cast<std::size_t>(width) * static_cast<std::size_t>(channels);
   for (int y = 0; y < height; ++y) {
     png_write_row(png, samples + stride * static_cast<std::size_t>(y));
@@ -74,7 +82,7 @@ struct PngSize {
 
 // Decodes to 8-bit RGBA in `pixels`. Returns false with error->text on failure.
 bool decodePng(std::FILE* stream, std::vector<std::uint8_t>* pixels, PngSize* size, PngErrorText* error) {
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, error, onPngError, onPngWarning);
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, error->text, onPngError, onPngWarning);
   if (png == nullptr) return false;
   png_infop info = png_create_info_struct(png);
   if (info == nullptr) {
@@ -120,6 +128,59 @@ struct FileCloser {
 };
 
 }  // namespace
+
+PngRowEncoder::PngRowEncoder(AtomicFileWriter& file, int width, int height, int channels, bool srgbChunk)
+    : file_(file) {
+  if (!start(width, height, channels, srgbChunk)) {
+    destroy();  // no destructor runs after a throwing constructor
+    fail();
+  }
+}
+
+PngRowEncoder::~PngRowEncoder() { destroy(); }
+
+void PngRowEncoder::destroy() noexcept {
+  if (png_ != nullptr) png_destroy_write_struct(&png_, info_ != nullptr ? &info_ : nullptr);
+  png_ = nullptr;
+  info_ = nullptr;
+}
+
+bool PngRowEncoder::start(int width, int height, int channels, bool srgbChunk) {
+  png_ = png_create_write_struct(PNG_LIBPNG_VER_STRING, errorText_, onPngError, onPngWarning);
+  if (png_ == nullptr) return false;
+  info_ = png_create_info_struct(png_);
+  if (info_ == nullptr) return false;
+  if (setjmp(png_jmpbuf(png_))) return false;
+  png_set_write_fn(png_, &file_, onPngWrite, onPngFlush);
+  writePngHeader(png_, info_, width, height, channels, srgbChunk);
+  return true;
+}
+
+bool PngRowEncoder::row(const std::uint8_t* samples) {
+  if (setjmp(png_jmpbuf(png_))) return false;
+  png_write_row(png_, samples);
+  return true;
+}
+
+bool PngRowEncoder::end() {
+  if (setjmp(png_jmpbuf(png_))) return false;
+  png_write_end(png_, nullptr);
+  return true;
+}
+
+void PngRowEncoder::writeRow(const std::uint8_t* samples) {
+  if (!row(samples)) fail();
+}
+
+void PngRowEncoder::finish() {
+  if (!end()) fail();
+}
+
+void PngRowEncoder::fail() {
+  file_.throwIfFailed();  // a failed write, with its reason
+  file_.discard();
+  throw InputError(SourceLocation{file_.targetPath()}, fmt::format("PNG encoding failed: {}", errorText_));
+}
 
 void writePng(const std::string& path, const Image& image, const ImageWriteOptions& options) {
   if (image.empty()) throw InputError(SourceLocation{path}, "cannot write an empty (0-pixel) PNG");

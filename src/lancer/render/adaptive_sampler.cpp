@@ -86,8 +86,8 @@ Rgba AdaptiveSampler::shadePixel(int x, int y, const Sample corners[4], TraceCou
   return toRgba(value.color, compareAlpha_ ? value.alpha : 1.0f);
 }
 
-void AdaptiveSampler::renderTile(int x0, int y0, int x1, int y1, Image& image, TraceCounters& counters,
-                                 std::uint64_t& samples) {
+void AdaptiveSampler::renderTile(int x0, int y0, int x1, int y1, Image& band, int bandY0,
+                                 TraceCounters& counters, std::uint64_t& samples) {
   const int columns = x1 - x0 + 1, rows = y1 - y0 + 1;
   cornerRows_.resize(static_cast<std::size_t>(columns * rows));
   for (int j = 0; j < rows; ++j)
@@ -99,7 +99,7 @@ void AdaptiveSampler::renderTile(int x0, int y0, int x1, int y1, Image& image, T
       const auto at = [&](int i, int j) { return cornerRows_[static_cast<std::size_t>(j * columns + i)]; };
       const int i = x - x0, j = y - y0;
       const Sample corners[4] = {at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)};
-      image.at(x, y) = shadePixel(x, y, corners, counters, samples);
+      band.at(x, y - bandY0) = shadePixel(x, y, corners, counters, samples);
     }
   }
 }

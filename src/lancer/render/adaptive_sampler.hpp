@@ -25,8 +25,10 @@ class AdaptiveSampler {
  public:
   AdaptiveSampler(const Tracer& tracer, const Camera& camera, const RenderSettings& settings);
 
-  // Renders pixels [x0, x1) x [y0, y1) into `image`; `samples` counts the primary rays traced.
-  void renderTile(int x0, int y0, int x1, int y1, Image& image, TraceCounters& counters, std::uint64_t& samples);
+  // Renders pixels [x0, x1) x [y0, y1) into `band`, whose row 0 is image row bandY0; `samples`
+  // counts the primary rays traced.
+  void renderTile(int x0, int y0, int x1, int y1, Image& band, int bandY0, TraceCounters& counters,
+                  std::uint64_t& samples);
   // One pixel on its own (its four corners traced here), for `--pixel` and tests.
   Rgba renderPixel(int x, int y, TraceCounters& counters, std::uint64_t& samples);
 

@@ -1,7 +1,10 @@
 #include "lancer/render/renderer.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <mutex>
 #include <optional>
 #include <thread>
 #include <vector>
@@ -12,15 +15,123 @@
 namespace lancer {
 namespace {
 
-constexpr int kTileSize = 32;
-
 int resolveThreadCount(int requested) {
   if (requested > 0) return requested;
   const unsigned hardware = std::thread::hardware_concurrency();
   return hardware > 0 ? static_cast<int>(hardware) : 1;
 }
 
+int tilesAcross(int pixels) { return (pixels + kTileSize - 1) / kTileSize; }
+
+// The bands in flight and the hand-over between workers and the calling thread. Band b lives in
+// slot b % window; a worker may start a tile of band b only once band b - window has gone to the
+// sink, which bounds memory to `window` bands. Tiles are claimed in order, so every tile of a band
+// below the one a waiting worker holds is already being traced: the wait always ends.
+class BandWindow {
+ public:
+  BandWindow(int width, int height, int window)
+      : width_(width),
+        height_(height),
+        tilesX_(tilesAcross(width)),
+        slots_(static_cast<std::size_t>(window)) {}
+
+  // Blocks until band `band` may be traced, then returns its pixels (allocated by its first tile),
+  // or nullptr once the render is stopping.
+  Image* enter(int band) {
+    std::unique_lock lock(mutex_);
+    slotFreed_.wait(lock, [&] { return stopping_ || band < flushed_ + windowSize(); });
+    if (stopping_) return nullptr;
+    Slot& slot = slotOf(band);
+    if (slot.pixels.empty()) {
+      const int rows = std::min(kTileSize, height_ - band * kTileSize);
+      slot.pixels = Image(width_, rows);
+      slot.tilesLeft = tilesX_;
+      bufferedRows_ += rows;
+      peakBufferedRows_ = std::max(peakBufferedRows_, bufferedRows_);
+    }
+    return &slot.pixels;
+  }
+
+  void tileDone(int band) {
+    std::lock_guard lock(mutex_);
+    if (--slotOf(band).tilesLeft == 0) bandDone_.notify_all();
+  }
+
+  // The next band in order once all its tiles are traced, or nullptr after `timeout` (to let the
+  // caller report progress and notice a cancel).
+  const Image* waitForNext(std::chrono::duration<double> timeout) {
+    std::unique_lock lock(mutex_);
+    const auto ready = [&] {
+      const Slot& slot = slotOf(flushed_);
+      return !slot.pixels.empty() && slot.tilesLeft == 0;
+    };
+    if (!bandDone_.wait_for(lock, timeout, ready)) return nullptr;
+    return &slotOf(flushed_).pixels;
+  }
+
+  // The sink has taken the next band: free its slot for band `flushed + window`.
+  void release() {
+    std::lock_guard lock(mutex_);
+    Slot& slot = slotOf(flushed_);
+    bufferedRows_ -= slot.pixels.height();
+    slot.pixels = Image();
+    ++flushed_;
+    slotFreed_.notify_all();
+  }
+
+  // Wakes and turns away every waiting worker (done, cancelled, or the sink threw).
+  void stop() {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+    slotFreed_.notify_all();
+  }
+
+  int flushed() const { return flushed_; }  // calling thread only
+  int peakBufferedRows() const {
+    std::lock_guard lock(mutex_);
+    return peakBufferedRows_;
+  }
+
+ private:
+  struct Slot {
+    Image pixels;
+    int tilesLeft = 0;
+  };
+  int windowSize() const { return static_cast<int>(slots_.size()); }
+  Slot& slotOf(int band) { return slots_[static_cast<std::size_t>(band % windowSize())]; }
+
+  int width_, height_, tilesX_;
+  std::vector<Slot> slots_;
+  mutable std::mutex mutex_;
+  std::condition_variable bandDone_;   // a band's last tile finished
+  std::condition_variable slotFreed_;  // a band went to the sink, or the render stops
+  int flushed_ = 0;                    // bands handed to the sink
+  bool stopping_ = false;
+  int bufferedRows_ = 0, peakBufferedRows_ = 0;
+};
+
+// Stops the workers when the calling thread leaves renderBands, also by an exception from the sink,
+// before the jthreads join.
+struct StopOnExit {
+  BandWindow& bands;
+  ~StopOnExit() { bands.stop(); }
+};
+
 }  // namespace
+
+int bandWindow(int width, int threads) {
+  // At least two tiles per worker beyond the band the sink is writing; at least three bands so a
+  // slow sink (PNG deflate) overlaps tracing.
+  const int tilesX = tilesAcross(width);
+  const int wanted = 2 * resolveThreadCount(threads);
+  return std::max(3, (wanted + tilesX - 1) / tilesX + 1);
+}
+
+std::uint64_t bandMemoryBytes(int width, int height, int threads) {
+  const std::uint64_t rows = static_cast<std::uint64_t>(
+      std::min(bandWindow(width, threads) * kTileSize, tilesAcross(height) * kTileSize));
+  return rows * static_cast<std::uint64_t>(width) * sizeof(Rgba);
+}
 
 Rgba renderPixel(const Tracer& tracer, const Camera& camera, const RenderSettings& settings, int x, int y,
                  TraceCounters& counters, std::uint64_t& samplesTraced) {
@@ -46,49 +157,58 @@ Rgba renderPixel(const Tracer& tracer, const Camera& camera, const RenderSetting
   return toRgba(sum * weight, alpha);
 }
 
-Image renderImage(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
-                  const RenderSettings& settings, const RenderOptions& options, RenderStats* stats) {
+void renderBands(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
+                 const RenderSettings& settings, const RenderOptions& options, const BandSink& sink,
+                 RenderStats* stats) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  Image image(settings.width, settings.height);
   const Tracer tracer(scene, accelerator, settings, camera.pixelFootprint());
 
-  const int tilesX = (settings.width + kTileSize - 1) / kTileSize;
-  const int tilesY = (settings.height + kTileSize - 1) / kTileSize;
-  const int tileCount = tilesX * tilesY;
+  const int tilesX = tilesAcross(settings.width);
+  const int bandCount = tilesAcross(settings.height);
+  const int tileCount = tilesX * bandCount;
+  const int threadCount = std::min(resolveThreadCount(options.threads), tileCount);
+  BandWindow bands(settings.width, settings.height,
+                   std::min(bandWindow(settings.width, threadCount), bandCount));
   std::atomic<int> nextTile{0};
   std::atomic<std::uint64_t> pixelsDone{0};
   std::atomic<std::uint64_t> raysTraced{0};
   std::atomic<std::uint64_t> samplesTraced{0};
-  std::atomic<int> workersRunning{0};
+  const auto cancelled = [&] {
+    return options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed);
+  };
 
   auto worker = [&] {
     std::optional<AdaptiveSampler> adaptive;
     if (settings.sampler == SamplerKind::Adaptive) adaptive.emplace(tracer, camera, settings);
     for (;;) {
-      if (options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed)) break;
+      if (cancelled()) break;
       const int tile = nextTile.fetch_add(1, std::memory_order_relaxed);
       if (tile >= tileCount) break;
-      const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
-      const int x1 = std::min(x0 + kTileSize, settings.width), y1 = std::min(y0 + kTileSize, settings.height);
+      const int band = tile / tilesX;
+      Image* pixels = bands.enter(band);
+      if (pixels == nullptr) break;
+      const int bandY0 = band * kTileSize;
+      const int x0 = (tile % tilesX) * kTileSize;
+      const int x1 = std::min(x0 + kTileSize, settings.width),
+                y1 = std::min(bandY0 + kTileSize, settings.height);
       TraceCounters counters;
       std::uint64_t samples = 0;
       if (adaptive) {
-        adaptive->renderTile(x0, y0, x1, y1, image, counters, samples);
+        adaptive->renderTile(x0, bandY0, x1, y1, *pixels, bandY0, counters, samples);
       } else {
-        for (int y = y0; y < y1; ++y)
+        for (int y = bandY0; y < y1; ++y)
           for (int x = x0; x < x1; ++x)
-            image.at(x, y) = renderPixel(tracer, camera, settings, x, y, counters, samples);
+            pixels->at(x, y - bandY0) = renderPixel(tracer, camera, settings, x, y, counters, samples);
       }
       raysTraced.fetch_add(counters.rays, std::memory_order_relaxed);
       samplesTraced.fetch_add(samples, std::memory_order_relaxed);
-      pixelsDone.fetch_add(static_cast<std::uint64_t>(x1 - x0) * static_cast<std::uint64_t>(y1 - y0),
+      pixelsDone.fetch_add(static_cast<std::uint64_t>(x1 - x0) * static_cast<std::uint64_t>(y1 - bandY0),
                            std::memory_order_relaxed);
+      bands.tileDone(band);
     }
-    workersRunning.fetch_sub(1, std::memory_order_release);
   };
 
-  const int threadCount = std::min(resolveThreadCount(options.threads), std::max(tileCount, 1));
   const double totalPixels = static_cast<double>(settings.width) * settings.height;
   auto report = [&] {
     if (!options.onProgress) return;
@@ -99,19 +219,22 @@ Image renderImage(const Scene& scene, const Accelerator& accelerator, const Came
     options.onProgress(progress);
   };
   {
-    workersRunning.store(threadCount);
     std::vector<std::jthread> workers;
     workers.reserve(static_cast<std::size_t>(threadCount));
+    const StopOnExit stopOnExit{bands};  // destroyed before `workers` joins them
     for (int t = 0; t < threadCount; ++t) workers.emplace_back(worker);
-    if (options.onProgress) {
-      const auto interval = std::chrono::duration<double>(options.progressInterval);
-      auto lastReport = Clock::now();
-      while (workersRunning.load(std::memory_order_acquire) > 0) {
-        std::this_thread::sleep_for(std::min(interval, std::chrono::duration<double>(0.02)));
-        if (Clock::now() - lastReport >= interval) {
-          lastReport = Clock::now();
-          report();
-        }
+    // Short waits: a cancel flag set by a signal handler notifies nobody.
+    const auto interval = std::chrono::duration<double>(options.progressInterval);
+    const auto poll = std::min(interval, std::chrono::duration<double>(0.02));
+    auto lastReport = Clock::now();
+    while (bands.flushed() < bandCount && !cancelled()) {
+      if (const Image* band = bands.waitForNext(poll)) {
+        sink(bands.flushed() * kTileSize, *band);
+        bands.release();
+      }
+      if (options.onProgress && Clock::now() - lastReport >= interval) {
+        lastReport = Clock::now();
+        report();
       }
     }
   }
@@ -121,8 +244,17 @@ Image renderImage(const Scene& scene, const Accelerator& accelerator, const Came
     stats->seconds = std::chrono::duration<double>(Clock::now() - start).count();
     stats->rays = raysTraced.load();
     stats->samplesPerPixel = static_cast<double>(samplesTraced.load()) / totalPixels;
-    stats->cancelled = options.cancel != nullptr && options.cancel->load() && pixelsDone.load() < totalPixels;
+    stats->cancelled = bands.flushed() < bandCount;
+    stats->peakBufferedRows = bands.peakBufferedRows();
   }
+}
+
+Image renderImage(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
+                  const RenderSettings& settings, const RenderOptions& options, RenderStats* stats) {
+  Image image(settings.width, settings.height);
+  renderBands(
+      scene, accelerator, camera, settings, options,
+      [&](int y0, const Image& band) { image.pasteTile(band, 0, y0); }, stats);
   return image;
 }
 

@@ -1,6 +1,7 @@
-// Renders a whole image: the image is cut into tiles, worker threads take tiles in a fixed order
-// and trace every sample of every pixel. Per-pixel deterministic sampling makes the image
-// bit-identical for any thread count.
+// Renders an image in tiles of 32x32 pixels: worker threads take tiles in a fixed order (left to right
+// within a band of 32 rows, bands top to bottom) and trace every sample of every pixel. Per-pixel
+// deterministic sampling makes the image bit-identical for any thread count. Finished bands go, in
+// order, to a sink on the calling thread, so an image of any height needs memory for a few bands.
 #pragma once
 
 #include <atomic>
@@ -13,10 +14,12 @@
 
 namespace lancer {
 
+inline constexpr int kTileSize = 32;  // pixels on a tile's side; a band is kTileSize rows
+
 struct RenderProgress {
-  double fraction = 0;      // of pixels done
-  std::uint64_t rays = 0;   // traced so far
-  double seconds = 0;       // since the start
+  double fraction = 0;     // of pixels done
+  std::uint64_t rays = 0;  // traced so far
+  double seconds = 0;      // since the start
 };
 
 struct RenderOptions {
@@ -33,10 +36,29 @@ struct RenderStats {
   std::uint64_t rays = 0;
   double samplesPerPixel = 0;  // mean, as actually traced (adaptive sampling varies it)
   bool cancelled = false;
+  int peakBufferedRows = 0;  // most image rows held at once in bands being traced or waiting for the sink
 };
 
+// Receives rows [y0, y0 + band.height()) of the image, full width; bands come top to bottom, each
+// once, on the thread that called renderBands. An exception from the sink stops the render (the
+// workers finish their tiles) and propagates.
+using BandSink = std::function<void(int y0, const Image& band)>;
+
+// Renders the image band by band into `sink`. When cancelled, the sink has received only some of the
+// bands (stats->cancelled is then true).
+void renderBands(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
+                 const RenderSettings& settings, const RenderOptions& options, const BandSink& sink,
+                 RenderStats* stats = nullptr);
+
+// The whole image at once (animations, GIF output, tests): renderBands into one Image.
 Image renderImage(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
                   const RenderSettings& settings, const RenderOptions& options, RenderStats* stats = nullptr);
+
+// How many bands renderBands keeps at most (being traced, or done and waiting for the sink): enough
+// that `threads` workers (0: all hardware threads) always find tiles while the sink writes a band.
+int bandWindow(int width, int threads);
+// The bytes renderBands allocates for its bands: bandWindow bands of width x kTileSize pixels.
+std::uint64_t bandMemoryBytes(int width, int height, int threads);
 
 // Radiance of one pixel (all its samples), for `--pixel x,y` debugging and for tests.
 Rgba renderPixel(const Tracer& tracer, const Camera& camera, const RenderSettings& settings, int x, int y,
