@@ -262,5 +262,14 @@ TEST(MeshClip, KeysAreRead) {
   EXPECT_EQ(d.clips[0].normal, (Vec3d{0, 0, 1}));
 }
 
+TEST(MeshClip, TheExampleCutsTwoMeshesAndLeavesTheFloorWhole) {
+  const SceneDescription d = loadScene(LANCER_SOURCE_DIR "/examples/cut_per_mesh.toml");
+  ASSERT_EQ(d.meshes.size(), 3u);
+  EXPECT_EQ(d.meshes[0].clips.size(), 1u);
+  EXPECT_EQ(d.meshes[1].clips.size(), 1u);
+  EXPECT_TRUE(d.meshes[2].clips.empty());
+  EXPECT_TRUE(d.clips.empty());
+}
+
 }  // namespace
 }  // namespace lancer

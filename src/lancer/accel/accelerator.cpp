@@ -23,6 +23,16 @@ std::string_view accelKindName(AccelKind kind) {
   return "unknown";
 }
 
+bool Accelerator::intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips, Hit& hit) const {
+  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(ray, tMin, tMax, clips, hit);
+  return std::get<NaiveAccel>(impl_).intersect(ray, tMin, tMax, clips, hit);
+}
+
+bool Accelerator::occluded(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips) const {
+  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(ray, tMin, tMax, clips);
+  return std::get<NaiveAccel>(impl_).occluded(ray, tMin, tMax, clips);
+}
+
 Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const MeshFace> faces, AccelKind kind,
                                const KdBuildOptions& options) {
   switch (kind) {

@@ -37,14 +37,10 @@ class Accelerator {
   }
 
   // The same two queries seeing only the hits per-mesh clip planes keep (see face_clip_sets.hpp).
-  bool intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips, Hit& hit) const {
-    if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(ray, tMin, tMax, clips, hit);
-    return std::get<NaiveAccel>(impl_).intersect(ray, tMin, tMax, clips, hit);
-  }
-  bool occluded(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips) const {
-    if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(ray, tMin, tMax, clips);
-    return std::get<NaiveAccel>(impl_).occluded(ray, tMin, tMax, clips);
-  }
+  // Out of line: the rare path stays out of the code of callers that choose between these and the
+  // plain queries once per ray (the tracer).
+  bool intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips, Hit& hit) const;
+  bool occluded(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips) const;
 
   AccelKind kind() const { return kind_; }
   AccelStats stats() const { return stats_; }

@@ -79,6 +79,7 @@ class Tracer {
   std::vector<EnergySplit> splits_;  // per material
   PixelFootprint footprint_;
   bool linearFieldColors_ = false;  // --srgb: field colours are decoded to linear (field_shading.hpp)
+  bool anyMeshClips_ = false;       // some mesh has planes of its own: use the clipped queries
 };
 
 }  // namespace lancer
