@@ -41,8 +41,24 @@ std::vector<BuildCase> buildCases() {
   shallow.maxDepth = 4;
   KdBuildOptions tinyLeaves = parallel;
   tinyLeaves.medianLeafSize = 1;
-  return {{"sah", sah(serial)},           {"sah-2-threads", sah(parallel)}, {"sah-deep", sah(cheapTraversal)},
-          {"sah-shallow", sah(shallow)},  {"median", median(serial)},      {"median-leaf-1", median(tinyLeaves)}};
+  // The binned top levels (kd_tree_sah_binning.hpp) on test-sized meshes: binning down to 8
+  // triangles, the sweep from the root, and binning on 3 threads (sweeps forked with local ids).
+  KdBuildOptions binnedDeep = serial;
+  binnedDeep.binnedAbove = 8;
+  KdBuildOptions sweepOnly = serial;
+  sweepOnly.binnedAbove = 0;
+  KdBuildOptions binnedParallel = serial;
+  binnedParallel.threads = 3;
+  binnedParallel.binnedAbove = 40;
+  return {{"sah", sah(serial)},
+          {"sah-2-threads", sah(parallel)},
+          {"sah-deep", sah(cheapTraversal)},
+          {"sah-shallow", sah(shallow)},
+          {"sah-binned-8", sah(binnedDeep)},
+          {"sah-sweep-only", sah(sweepOnly)},
+          {"sah-binned-3-threads", sah(binnedParallel)},
+          {"median", median(serial)},
+          {"median-leaf-1", median(tinyLeaves)}};
 }
 
 std::string describe(const test::TestRay& r) {

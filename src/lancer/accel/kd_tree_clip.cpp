@@ -9,27 +9,37 @@ namespace lancer {
 namespace {
 
 // A convex polygon during Sutherland-Hodgman clipping; a triangle clipped by 6 planes has at
-// most 3 + 6 corners.
+// most 3 + 6 corners. Plain arrays: Vec3d's operator[] is a select chain, which made this loop,
+// indexed by a run-time axis, twice as slow.
 struct Polygon {
-  Vec3d corner[9];
+  double corner[9][3];
   int count = 0;
 };
 
 // Keeps the part of `in` with sign * (p[axis] - plane) >= 0.
 void clipAgainst(const Polygon& in, int axis, double plane, double sign, Polygon& out) {
   out.count = 0;
+  if (in.count == 0) return;
+  const double* a = in.corner[in.count - 1];
+  double da = sign * (a[axis] - plane);
   for (int i = 0; i < in.count; ++i) {
-    const Vec3d& a = in.corner[i];
-    const Vec3d& b = in.corner[(i + 1) % in.count];
-    const double da = sign * (a[axis] - plane);
+    const double* b = in.corner[i];
     const double db = sign * (b[axis] - plane);
-    if (da >= 0) out.corner[out.count++] = a;
+    // Edge a -> b: emit its crossing with the plane, then b if kept.
     if ((da < 0 && db > 0) || (da > 0 && db < 0)) {
       const double s = da / (da - db);
-      Vec3d p = a + (b - a) * s;
+      double* p = out.corner[out.count++];
+      for (int k = 0; k < 3; ++k) p[k] = a[k] + (b[k] - a[k]) * s;
       p[axis] = plane;  // exactly on the plane, whatever the rounding of the interpolation
-      out.corner[out.count++] = p;
     }
+    if (db >= 0) {
+      double* p = out.corner[out.count++];
+      p[0] = b[0];
+      p[1] = b[1];
+      p[2] = b[2];
+    }
+    a = b;
+    da = db;
   }
 }
 
@@ -54,7 +64,11 @@ Aabb clippedTriangleBounds(const std::array<Vec3, 3>& corners, const Aabb& box) 
   Polygon* a = &buffers[0];
   Polygon* b = &buffers[1];
   a->count = 3;
-  for (int i = 0; i < 3; ++i) a->corner[i] = toDouble(corners[i]);
+  for (int i = 0; i < 3; ++i) {
+    a->corner[i][0] = corners[i].x;
+    a->corner[i][1] = corners[i].y;
+    a->corner[i][2] = corners[i].z;
+  }
   Aabb triangle;
   for (const Vec3& c : corners) triangle.extend(c);
   // Only the planes the triangle crosses cut anything; usually just the new split plane.
@@ -69,12 +83,18 @@ Aabb clippedTriangleBounds(const std::array<Vec3, 3>& corners, const Aabb& box) 
     }
     if (a->count == 0) return Aabb{};
   }
-  Aabbd exact;
-  for (int i = 0; i < a->count; ++i) exact.extend(a->corner[i]);
+  double lower[3], upper[3];
+  for (int k = 0; k < 3; ++k) lower[k] = upper[k] = a->corner[0][k];
+  for (int i = 1; i < a->count; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      lower[k] = std::min(lower[k], a->corner[i][k]);
+      upper[k] = std::max(upper[k], a->corner[i][k]);
+    }
+  }
   Aabb result;
   for (int axis = 0; axis < 3; ++axis) {
-    result.lower[axis] = std::max(roundDown(exact.lower[axis]), box.lower[axis]);
-    result.upper[axis] = std::min(roundUp(exact.upper[axis]), box.upper[axis]);
+    result.lower[axis] = std::max(roundDown(lower[axis]), box.lower[axis]);
+    result.upper[axis] = std::min(roundUp(upper[axis]), box.upper[axis]);
   }
   return result;
 }
