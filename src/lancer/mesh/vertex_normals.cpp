@@ -55,8 +55,42 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
   CornerNormals result;
   result.faceCorner.assign(faceCount, {0, 0, 0, 0});
   result.normals.reserve(positions.size());
+  auto assignCorners = [&](std::uint32_t f, std::uint32_t v, std::uint32_t index) {
+    const MeshFace& face = faces[f];
+    for (int c = 0; c < face.cornerCount(); ++c)
+      if (face.vertex[c] == v) result.faceCorner[f][c] = index;
+  };
   for (std::uint32_t v = 0; v < positions.size(); ++v) {
     const std::size_t firstNormal = result.normals.size();
+    // Smooth vertex (the common case): every pair of its faces is smoothed together, so every
+    // corner gets the same sum, in the same order, as the general loop below would give it: one
+    // sum and one normal instead of one per corner (the loop below took 7% of a big render).
+    bool smooth = true;
+    for (std::uint32_t a = rowStart[v]; a < rowStart[v + 1] && smooth; ++a) {
+      const std::uint32_t f = incidentFace[a];
+      for (std::uint32_t b = a + 1; b < rowStart[v + 1]; ++b) {
+        const std::uint32_t g = incidentFace[b];
+        if (g != f && (facePhysicalTag[g] != facePhysicalTag[f] ||
+                       dot(unitFaceNormal[f], unitFaceNormal[g]) < cosCrease ||
+                       dot(unitFaceNormal[g], unitFaceNormal[f]) < cosCrease)) {
+          smooth = false;
+          break;
+        }
+      }
+    }
+    if (smooth && rowStart[v + 1] > rowStart[v]) {
+      Vec3 sum{0, 0, 0};
+      for (std::uint32_t slot = rowStart[v]; slot < rowStart[v + 1]; ++slot)
+        sum += unitFaceNormal[incidentFace[slot]] * incidentWeight[slot];
+      const Vec3 normal = normalize(sum);
+      if (dot(normal, normal) > 0.5f) {
+        const auto index = static_cast<std::uint32_t>(result.normals.size());
+        result.normals.push_back(normal);
+        for (std::uint32_t slot = rowStart[v]; slot < rowStart[v + 1]; ++slot)
+          assignCorners(incidentFace[slot], v, index);
+        continue;
+      }
+    }
     for (std::uint32_t slot = rowStart[v]; slot < rowStart[v + 1]; ++slot) {
       const std::uint32_t f = incidentFace[slot];
       const Vec3 nf = unitFaceNormal[f];
@@ -78,9 +112,7 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
         }
       }
       if (index == result.normals.size()) result.normals.push_back(normal);
-      const MeshFace& face = faces[f];
-      for (int c = 0; c < face.cornerCount(); ++c)
-        if (face.vertex[c] == v) result.faceCorner[f][c] = index;
+      assignCorners(f, v, index);
     }
   }
   return result;
