@@ -5,8 +5,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 command -v gmsh >/dev/null || { echo "make_render_fixtures: gmsh is not installed" >&2; exit 1; }
-mesh() {  # mesh GEO_WITHOUT_EXTENSION: 2D mesh, MSH 4.1 binary, beside the .geo
-  gmsh "$1.geo" -2 -format msh41 -bin -o "$1.msh" >/dev/null
+# mesh GEO_WITHOUT_EXTENSION: MSH 4.1 binary beside the .geo; a 3D mesh when the .geo defines a
+# Physical Volume (gmsh then saves only the volume elements, and lancer renders their skin), else 2D.
+mesh() {
+  local dim=2
+  grep -q '^Physical Volume' "$1.geo" && dim=3
+  gmsh "$1.geo" -"$dim" -format msh41 -bin -o "$1.msh" >/dev/null
   rm -f "$1.geo_unrolled"
 }
 for geo in tests/data/render/*.geo; do mesh "${geo%.geo}"; done
