@@ -38,8 +38,12 @@ std::string shellDescription(const MeshShell& shell) {
     return text +
            (shell.consistentlyOriented ? "open, consistently oriented" : "open, not consistently oriented");
   if (!shell.consistentlyOriented) return text + "closed, NOT consistently oriented";
-  return text + fmt::format("closed, consistently oriented ({}, volume {:.6g})",
-                            shell.signedVolume >= 0 ? "normals point outward" : "normals point inward",
+  // The file's own winding; lancer turns every solid's faces out of its material when it renders.
+  const char* winding = shell.signedVolume >= 0 ? "normals point outward" : "normals point inward";
+  if (shell.cavity)
+    winding = shell.signedVolume < 0 ? "cavity wall, normals point into the cavity"
+                                     : "cavity wall, normals point into the material";
+  return text + fmt::format("closed, consistently oriented ({}, volume {:.6g})", winding,
                             std::abs(shell.signedVolume));
 }
 
@@ -168,9 +172,9 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
     const MeshShell& shell = stats.shells[s];
     out += fmt::format(
         "{}\n    {{\"faces\": {}, \"area\": {:.17g}, \"closed\": {}, \"consistentlyOriented\": {}, "
-        "\"signedVolume\": {:.17g}}}",
+        "\"signedVolume\": {:.17g}, \"cavity\": {}}}",
         s ? "," : "", shell.faceCount, shell.area, shell.closed, shell.consistentlyOriented,
-        shell.signedVolume);
+        shell.signedVolume, shell.cavity);
   }
   out += stats.shells.empty() ? "],\n" : "\n  ],\n";
   if (!accelMember.empty()) out += accelMember + ",\n";

@@ -101,5 +101,20 @@ TEST(InfoCli, MissingFileExitsWithCodeTwo) {
   EXPECT_EQ(result.output, "/nonexistent/part.msh: error: cannot open the file: No such file or directory\n");
 }
 
+TEST(InfoCli, CavityWallIsReportedAsSuch) {
+  // gmsh's hollow sphere: the tetrahedra's skin faces out of the material, into the cavity inside.
+  const std::string path = std::string(LANCER_TEST_DATA_DIR) + "/render/hollow_sphere.msh";
+  const CommandResult text = runCli("info '" + path + "'");
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  EXPECT_TRUE(contains(text.output, "shells:          2 (2 closed, 2 closed and consistently oriented)"))
+      << text.output;
+  EXPECT_TRUE(contains(text.output, "(normals point outward, volume ")) << text.output;
+  EXPECT_TRUE(contains(text.output, "(cavity wall, normals point into the cavity, volume 0.")) << text.output;
+  const CommandResult json = runCli("info --json '" + path + "'");
+  ASSERT_EQ(json.exitCode, 0) << json.output;
+  EXPECT_TRUE(contains(json.output, ", \"cavity\": true}")) << json.output;
+  EXPECT_TRUE(contains(json.output, ", \"cavity\": false}")) << json.output;
+}
+
 }  // namespace
 }  // namespace lancer

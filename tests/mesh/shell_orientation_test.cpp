@@ -40,7 +40,7 @@ void flipEvery(Mesh& mesh, int period, int phase) {
 }
 
 ShellOrientationReport orient(Mesh& mesh) {
-  return orientClosedShellsOutward(mesh.positions, mesh.faces, mesh.faceEdgeMask);
+  return orientClosedShellsOutward(mesh.positions, mesh.faces, mesh.faceEdgeMask, mesh.facePhysicalTag);
 }
 
 TEST(ShellOrientation, GmshSphereWithFlippedFacesComesBackOutward) {

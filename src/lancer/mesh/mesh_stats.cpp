@@ -1,5 +1,7 @@
 #include "lancer/mesh/mesh_stats.hpp"
 
+#include "lancer/mesh/shell_nesting.hpp"
+
 #include <algorithm>
 #include <utility>
 #include <numeric>
@@ -140,10 +142,15 @@ MeshStats computeMeshStats(const Mesh& mesh) {
     shell.area += faceArea(mesh, f);
     shell.signedVolume += coneVolume(mesh, mesh.faces[f]);
   }
+  std::vector<std::uint8_t> solid(shells.size(), 0);
   for (std::size_t s = 0; s < shells.size(); ++s) {
     shells[s].closed = faceShells.closed[s] != 0;
     shells[s].consistentlyOriented = faceShells.consistent[s] != 0;
+    solid[s] = shells[s].closed && shells[s].consistentlyOriented;
   }
+  const std::vector<std::uint8_t> cavity =
+      findCavityShells(mesh.positions, mesh.faces, faceShells, mesh.facePhysicalTag, solid);
+  for (std::size_t s = 0; s < shells.size(); ++s) shells[s].cavity = cavity[s] != 0;
   std::stable_sort(shells.begin(), shells.end(),
                    [](const MeshShell& a, const MeshShell& b) { return a.faceCount > b.faceCount; });
   stats.shells = std::move(shells);

@@ -19,6 +19,9 @@ struct MeshShell {
   bool consistentlyOriented = false;
   // Volume enclosed, by the divergence theorem: > 0 when a closed, oriented shell's faces point out.
   double signedVolume = 0;
+  // A closed, oriented shell nested inside an odd number of closed shells of its physical group
+  // (shell_nesting.hpp): it bounds a cavity, and faces out of the material when signedVolume < 0.
+  bool cavity = false;
 };
 
 // One directed edge of one face; sorting by key brings the faces that share an edge together.

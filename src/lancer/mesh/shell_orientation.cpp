@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "lancer/mesh/mesh_stats.hpp"
+#include "lancer/mesh/shell_nesting.hpp"
 
 namespace lancer {
 namespace {
@@ -69,7 +70,8 @@ void reverseWinding(MeshFace& face, std::uint8_t& edgeMask) {
 }
 
 ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions, std::vector<MeshFace>& faces,
-                                                 std::vector<std::uint8_t>& edgeMasks) {
+                                                 std::vector<std::uint8_t>& edgeMasks,
+                                                 std::span<const std::int32_t> facePhysicalTag) {
   ShellOrientationReport report;
   const std::size_t faceCount = faces.size();
   report.faceBoundsSolid.assign(faceCount, 0);
@@ -112,12 +114,18 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
     volume6[shell] += flip[f] ? -v : v;
   }
 
+  // A cavity wall faces into the cavity (out of the material around it): negative volume.
+  std::vector<std::uint8_t> solidShell(shells.shellCount(), 0);
+  for (std::size_t s = 0; s < shells.shellCount(); ++s) solidShell[s] = shells.closed[s] && orientable[s];
+  const std::vector<std::uint8_t> cavity = findCavityShells(positions, faces, shells, facePhysicalTag, solidShell);
+
   std::uint8_t unusedMask = kAllEdges;
   for (std::size_t f = 0; f < faceCount; ++f) {
     const std::uint32_t shell = shells.shellOfFace[f];
-    if (!shells.closed[shell] || !orientable[shell]) continue;
+    if (!solidShell[shell]) continue;
     report.faceBoundsSolid[f] = 1;
-    const bool reverse = (flip[f] != 0) != (volume6[shell] < 0.0);
+    const bool reverseShell = (volume6[shell] < 0.0) != (cavity[shell] != 0);
+    const bool reverse = (flip[f] != 0) != reverseShell;
     if (!reverse) continue;
     reverseWinding(faces[f], edgeMasks.empty() ? unusedMask : edgeMasks[f]);
     ++report.flippedFaces;
@@ -126,6 +134,7 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
     if (!shells.closed[s]) continue;
     ++report.closedShells;
     if (!orientable[s]) ++report.unorientableShells;
+    if (cavity[s]) ++report.cavityShells;
   }
   return report;
 }

@@ -1,5 +1,5 @@
-// Orients every closed shell of a surface mesh outward, whatever winding the file used: refraction
-// decides "entering" or "leaving" a solid from the side a ray hits, so it needs outward normals.
+// Orients every closed shell of a surface mesh out of its solid, whatever winding the file used:
+// refraction and caps decide "entering" or "leaving" a solid from the side a ray hits.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +17,8 @@ struct ShellOrientationReport {
   // Closed shells with no consistent orientation (a non-orientable or non-manifold surface); their
   // faces keep the file's winding and are treated as open (two-sided, thin).
   std::uint64_t unorientableShells = 0;
+  // Closed, oriented shells that are cavity walls (shell_nesting.hpp), now facing into the cavity.
+  std::uint64_t cavityShells = 0;
   // Per face: 1 when it belongs to a closed, consistently oriented shell (it bounds a solid).
   std::vector<std::uint8_t> faceBoundsSolid;
 };
@@ -26,11 +28,15 @@ void reverseWinding(MeshFace& face, std::uint8_t& edgeMask);
 
 // For each shell (faces joined through shared edges, see findFaceShells): when every edge is shared
 // by exactly two faces, the orientation of one face is propagated across shared edges to the whole
-// shell, and the shell is flipped as a whole when its signed volume (divergence theorem) is negative.
+// shell, and the shell is flipped as a whole so that it faces out of the material: its signed volume
+// (divergence theorem) positive, or negative for a cavity wall (a shell nested inside an odd number of
+// closed shells of its physical group, see findCavityShells), whose faces point into the cavity.
 // Open shells keep the file's winding: they are rendered two-sided. `positions` are the vertices the
 // faces index (any frame: the sign of the volume does not depend on translation).
 // `edgeMasks`, when not empty, holds one mask per face and is kept in step with the faces.
+// `facePhysicalTag` holds one tag per face (empty: all faces in one group).
 ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions, std::vector<MeshFace>& faces,
-                                                 std::vector<std::uint8_t>& edgeMasks);
+                                                 std::vector<std::uint8_t>& edgeMasks,
+                                                 std::span<const std::int32_t> facePhysicalTag);
 
 }  // namespace lancer

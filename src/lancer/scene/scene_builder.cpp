@@ -164,8 +164,10 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     if (mirrored) {
       for (std::size_t f = 0; f < mesh.faces.size(); ++f) reverseWinding(mesh.faces[f], edgeMasks[f]);
     }
-    // Refraction tells entering from leaving by the side a ray hits, so solids must face outward.
-    const ShellOrientationReport orientation = orientClosedShellsOutward(positions, mesh.faces, edgeMasks);
+    // Refraction and caps tell entering from leaving by the side a ray hits, so solids must face out
+    // of their material (cavity walls into the cavity).
+    const ShellOrientationReport orientation =
+        orientClosedShellsOutward(positions, mesh.faces, edgeMasks, mesh.facePhysicalTag);
     CornerNormals normals =
         computeCornerNormals(positions, mesh.faces, mesh.facePhysicalTag, instance.smoothAngleDegrees);
     std::uint16_t edgeStyle = 0;
