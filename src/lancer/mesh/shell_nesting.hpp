@@ -17,10 +17,11 @@ namespace lancer {
 // another group nested inside is a separate solid (a steel ball in a glass block), not a cavity.
 // Inside is decided for one vertex of the inner shell by the parity of a ray's crossings with the
 // outer shell's faces, in double, retrying another direction (or vertex) when the ray grazes an edge
-// or the vertex lies on the outer shell. Cost: O(faces) to group faces by shell, k² box tests for k
-// candidate shells, and one pass over T's faces for each pair (S, T) whose boxes nest (T's strictly
-// containing S's); a mesh of one shell, or of side-by-side shells, pays only the first two. Many
-// shells nested in one another (k onion layers of n faces each) cost O(k² n).
+// or the vertex lies on the outer shell. Cost: O(faces) to group faces by shell, a sweep along x that
+// box-tests each of the k candidate shells against the shells whose x-range spans its start (few
+// for side-by-side shells, k at worst), and one pass over T's faces for each pair (S, T) whose boxes
+// nest (T's strictly containing S's); a mesh of one shell, or of side-by-side shells, pays only the
+// first two. Many shells nested in one another (k onion layers of n faces each) cost O(k² n).
 std::vector<std::uint8_t> findCavityShells(std::span<const Vec3> positions, const std::vector<MeshFace>& faces,
                                            const FaceShells& shells, std::span<const std::int32_t> facePhysicalTag,
                                            std::span<const std::uint8_t> candidates);
