@@ -96,7 +96,7 @@ class KdTree {
   // next to the node, instead of paying three dependent misses in three separate arrays. The
   // triangles are read in place (trivially copyable data written by memcpy, never modified).
   std::vector<KdNode> layout_;
-  // Near-degenerate triangles, whose Moller-Trumbore hits can land far from the triangle: tested
+  // Near-degenerate triangles, whose computed hits can land far from the triangle: tested
   // for every ray (outside the tree) so answers still equal brute force. Empty for sane meshes.
   std::vector<PackedTriangle> slivers_;
   Aabb bounds_;                               // scene box, padded so boundary hits are inside

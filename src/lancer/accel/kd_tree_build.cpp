@@ -12,7 +12,8 @@ namespace lancer {
 namespace {
 
 // A triangle whose corners are collinear to within this sine of the corner angle: its
-// Moller-Trumbore determinant is rounding noise, so a computed hit may lie anywhere on the ray.
+// determinant (the sum of the edge functions) is rounding noise, so a computed hit may lie anywhere
+// on the ray.
 constexpr double kSliverSine = 1e-4;
 
 bool isSliver(const std::array<Vec3, 3>& c) {

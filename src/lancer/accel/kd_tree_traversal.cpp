@@ -27,7 +27,7 @@ namespace {
 constexpr float kSlack = 1e-6f;
 
 // Half-width of the band around a split plane within which a ray counts as on both sides,
-// relative to the largest coordinate involved: Moller-Trumbore accepts hits a few ulps outside a
+// relative to the largest coordinate involved: the triangle test accepts hits a few ulps outside a
 // triangle (closed edges plus rounding), so a triangle that ends exactly at a plane can be hit by a
 // ray that runs a hair beyond it, in the neighbouring cell.
 constexpr float kPlaneSlack = 4e-6f;

@@ -6,8 +6,7 @@ std::vector<PackedTriangle> packTriangles(std::span<const Vec3> positions, std::
   std::vector<PackedTriangle> triangles;
   triangles.reserve(faces.size() * 2);
   auto pack = [&](std::uint32_t face, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    const Vec3 v0 = positions[a];
-    triangles.push_back({v0, positions[b] - v0, positions[c] - v0, face});
+    triangles.push_back({positions[a], positions[b], positions[c], face});
   };
   for (std::uint32_t f = 0; f < faces.size(); ++f) {
     const MeshFace& face = faces[f];

@@ -1,6 +1,10 @@
-// Ray/triangle intersection shared by every accelerator, so that they agree to the last bit.
-// Moller & Trumbore 1997, "Fast, Minimum Storage Ray/Triangle Intersection", on pre-gathered
-// vertex and edge vectors; edges and vertices count as inside (closed triangles: no cracks).
+// Ray/triangle intersection shared by every accelerator, so that they agree to the last bit:
+// Woop, Benthin & Wald 2013, "Watertight Ray/Triangle Intersection" (JCGT 2(1)). The triangle is
+// moved to the ray's origin and sheared so that the ray runs along +z; the three edge functions are
+// then computed from float inputs in double, where the products are exact, so an edge shared by two
+// triangles gets exactly opposite values in both (whatever the compiler fuses): a ray through a
+// shared edge or vertex hits at least one of its triangles, never slips between them. Edges and
+// vertices count as inside (closed triangles).
 #pragma once
 
 #include <cstdint>
@@ -13,36 +17,43 @@
 namespace lancer {
 
 // One triangle ready for the test; quads become two (corners 0,1,2 and 0,2,3) with the same face.
+// Corners, not edges: a vertex shared by two triangles must be transformed identically in both.
 struct PackedTriangle {
-  Vec3 v0;
-  Vec3 edge1;  // v1 - v0
-  Vec3 edge2;  // v2 - v0
+  Vec3 v0, v1, v2;
   std::uint32_t face;
 };
 
 std::vector<PackedTriangle> packTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces);
 
+namespace detail {
+inline float component(const Vec3& v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
+}  // namespace detail
+
 // Returns the ray parameter of the hit in (tMin, tMax), or a negative value when there is none.
-// The barycentric tests compare against the determinant instead of dividing by it (the same
-// closed-triangle test in exact arithmetic). Everything is computed and the tests combined with
-// `&` into one branch at the end: inside a kd-tree leaf which test fails first is unpredictable,
-// and the mispredictions cost more than the few extra multiplies (measured on the bench meshes).
+// Everything is computed and the tests combined with `&` into one branch at the end: inside a
+// kd-tree leaf which test fails first is unpredictable (measured with the earlier test).
 inline float intersectTriangle(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
-  const Vec3 p = cross(ray.direction, tri.edge2);
-  const float det = dot(tri.edge1, p);
-  // u * det and v * det; flip signs for a negative determinant so that 0 <= u, v, u + v <= 1.
-  const float sign = det < 0.0f ? -1.0f : 1.0f;
-  const float absDet = det * sign;
-  const Vec3 s = ray.origin - tri.v0;
-  const float uDet = dot(s, p) * sign;
-  const Vec3 q = cross(s, tri.edge1);
-  const float vDet = dot(ray.direction, q) * sign;
-  // det == 0: the ray is parallel to the triangle's plane (or the triangle is degenerate); t is
-  // then infinite or NaN, but the test fails on det != 0 whatever it is.
-  const float t = dot(tri.edge2, q) / det;
-  const bool inside = (det != 0.0f) & (uDet >= 0.0f) & (uDet <= absDet) & (vDet >= 0.0f) &
-                      (uDet + vDet <= absDet) & (t > tMin) & (t < tMax);
-  return inside ? t : -1.0f;
+  const Vec3 a = tri.v0 - ray.origin, b = tri.v1 - ray.origin, c = tri.v2 - ray.origin;
+  const int kx = ray.kx, ky = ray.ky, kz = ray.kz;
+  const float az = detail::component(a, kz), bz = detail::component(b, kz), cz = detail::component(c, kz);
+  // Sheared x and y, rounded to float once (the same value for a vertex in every triangle).
+  const auto shear = [](float x, float s, float z) { return static_cast<float>(double(x) - double(s) * double(z)); };
+  const float ax = shear(detail::component(a, kx), ray.shearX, az), ay = shear(detail::component(a, ky), ray.shearY, az);
+  const float bx = shear(detail::component(b, kx), ray.shearX, bz), by = shear(detail::component(b, ky), ray.shearY, bz);
+  const float cx = shear(detail::component(c, kx), ray.shearX, cz), cy = shear(detail::component(c, ky), ray.shearY, cz);
+  // Edge functions: products of floats are exact in double, so each is rounded once.
+  const double u = double(cx) * double(by) - double(cy) * double(bx);
+  const double v = double(ax) * double(cy) - double(ay) * double(cx);
+  const double w = double(bx) * double(ay) - double(by) * double(ax);
+  const double det = u + v + w;
+  // Scaled hit distance; t = scaledT / det.
+  const double scaledT =
+      (u * double(az) + v * double(bz) + w * double(cz)) * double(ray.shearZ);
+  const double t = scaledT / det;
+  const bool sameSign = ((u >= 0.0) & (v >= 0.0) & (w >= 0.0)) | ((u <= 0.0) & (v <= 0.0) & (w <= 0.0));
+  const auto tf = static_cast<float>(t);
+  const bool inside = sameSign & (det != 0.0) & (tf > tMin) & (tf < tMax);
+  return inside ? tf : -1.0f;
 }
 
 }  // namespace lancer
