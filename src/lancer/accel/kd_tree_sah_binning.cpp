@@ -39,6 +39,13 @@ struct AxisCost {
   }
 };
 
+AxisCost axisCost(const Aabb& cell, int axis, float invArea, const KdBuildOptions& options) {
+  const Vec3 e = cell.extent();
+  const float a = e[(axis + 1) % 3], b = e[(axis + 2) % 3];
+  return {cell.lower[axis],      cell.upper[axis],        a * b, a + b, invArea,
+          options.traversalCost, options.intersectionCost};
+}
+
 }  // namespace
 
 BinnedSplit findBinnedSplit(std::span<const BuildRef> refs, const Aabb& cell, const KdBuildOptions& options) {
@@ -53,7 +60,6 @@ BinnedSplit findBinnedSplit(std::span<const BuildRef> refs, const Aabb& cell, co
   used.lower = max(used.lower, cell.lower);
   used.upper = min(used.upper, cell.upper);
 
-  const Vec3 extent = cell.extent();
   const float invArea = 1.0f / area;
   const float kt = options.traversalCost, ki = options.intersectionCost;
   const auto n = static_cast<std::uint32_t>(refs.size());
@@ -77,20 +83,20 @@ BinnedSplit findBinnedSplit(std::span<const BuildRef> refs, const Aabb& cell, co
   for (int axis = 0; axis < 3; ++axis) {
     const float lo = cell.lower[axis], hi = cell.upper[axis];
     if (!(hi > lo)) continue;
-    const float a = extent[(axis + 1) % 3], b = extent[(axis + 2) % 3];
-    const AxisCost planeCost{lo, hi, a * b, a + b, invArea, kt, ki};
-    auto sideArea = [&](float length) { return planeCost.sideArea(length); };
+    const AxisCost planeCost = axisCost(cell, axis, invArea, options);
     // Empty space below or above the references, when it is a real slab (as in the exact sweep).
     const float minSlab = options.emptySpaceMinFraction * (hi - lo);
     if (used.lower[axis] - lo >= minSlab) {
-      const float cost = (kt + ki * sideArea(hi - used.lower[axis]) * float(n)) * options.emptySpaceFactor;
+      const float cost =
+          (kt + ki * planeCost.sideArea(hi - used.lower[axis]) * float(n)) * options.emptySpaceFactor;
       if (cost < best.cost) {
         best = {axis, used.lower[axis], false, cost};
         bestBin = -1;
       }
     }
     if (hi - used.upper[axis] >= minSlab) {
-      const float cost = (kt + ki * sideArea(used.upper[axis] - lo) * float(n)) * options.emptySpaceFactor;
+      const float cost =
+          (kt + ki * planeCost.sideArea(used.upper[axis] - lo) * float(n)) * options.emptySpaceFactor;
       if (cost < best.cost) {
         best = {axis, used.upper[axis], true, cost};
         bestBin = -1;
@@ -141,14 +147,7 @@ BinnedSplit findBinnedSplit(std::span<const BuildRef> refs, const Aabb& cell, co
     std::sort(events.begin(), events.end(), [](const WindowEvent& x, const WindowEvent& y) {
       return x.pos < y.pos || (x.pos == y.pos && x.type < y.type);
     });
-    const Vec3 e = cell.extent();
-    const AxisCost planeCost{cell.lower[axis],
-                             cell.upper[axis],
-                             e[(axis + 1) % 3] * e[(axis + 2) % 3],
-                             e[(axis + 1) % 3] + e[(axis + 2) % 3],
-                             invArea,
-                             kt,
-                             ki};
+    const AxisCost planeCost = axisCost(cell, axis, invArea, options);
     for (std::size_t i = 0; i < events.size();) {
       const float p = events[i].pos;
       std::uint32_t ends = 0, planars = 0, starts = 0;

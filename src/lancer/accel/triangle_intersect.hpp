@@ -25,22 +25,21 @@ struct PackedTriangle {
 
 std::vector<PackedTriangle> packTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces);
 
-namespace detail {
-inline float component(const Vec3& v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
-}  // namespace detail
-
 // Returns the ray parameter of the hit in (tMin, tMax), or a negative value when there is none.
 // Everything is computed and the tests combined with `&` into one branch at the end: inside a
 // kd-tree leaf which test fails first is unpredictable (measured with the earlier test).
 inline float intersectTriangle(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
-  const Vec3 a = tri.v0 - ray.origin, b = tri.v1 - ray.origin, c = tri.v2 - ray.origin;
+  // Corners relative to the origin as indexable arrays (Vec3's operator[] is a select chain, and the
+  // axes here vary per ray).
+  const Vec3 da = tri.v0 - ray.origin, db = tri.v1 - ray.origin, dc = tri.v2 - ray.origin;
+  const float a[3] = {da.x, da.y, da.z}, b[3] = {db.x, db.y, db.z}, c[3] = {dc.x, dc.y, dc.z};
   const int kx = ray.kx, ky = ray.ky, kz = ray.kz;
-  const float az = detail::component(a, kz), bz = detail::component(b, kz), cz = detail::component(c, kz);
+  const float az = a[kz], bz = b[kz], cz = c[kz];
   // Sheared x and y, rounded to float once (the same value for a vertex in every triangle).
   const auto shear = [](float x, float s, float z) { return static_cast<float>(double(x) - double(s) * double(z)); };
-  const float ax = shear(detail::component(a, kx), ray.shearX, az), ay = shear(detail::component(a, ky), ray.shearY, az);
-  const float bx = shear(detail::component(b, kx), ray.shearX, bz), by = shear(detail::component(b, ky), ray.shearY, bz);
-  const float cx = shear(detail::component(c, kx), ray.shearX, cz), cy = shear(detail::component(c, ky), ray.shearY, cz);
+  const float ax = shear(a[kx], ray.shearX, az), ay = shear(a[ky], ray.shearY, az);
+  const float bx = shear(b[kx], ray.shearX, bz), by = shear(b[ky], ray.shearY, bz);
+  const float cx = shear(c[kx], ray.shearX, cz), cy = shear(c[ky], ray.shearY, cz);
   // Edge functions: products of floats are exact in double, so each is rounded once.
   const double u = double(cx) * double(by) - double(cy) * double(bx);
   const double v = double(ax) * double(cy) - double(ay) * double(cx);

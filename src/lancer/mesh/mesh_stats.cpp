@@ -1,10 +1,10 @@
 #include "lancer/mesh/mesh_stats.hpp"
 
-#include "lancer/mesh/shell_nesting.hpp"
-
 #include <algorithm>
-#include <utility>
 #include <numeric>
+#include <utility>
+
+#include "lancer/mesh/shell_nesting.hpp"
 
 namespace lancer {
 namespace {

@@ -70,9 +70,9 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
       const std::uint32_t f = incidentFace[a];
       for (std::uint32_t b = a + 1; b < rowStart[v + 1]; ++b) {
         const std::uint32_t g = incidentFace[b];
+        // dot is symmetric to the bit, so this one test decides the pair for both corners.
         if (g != f && (facePhysicalTag[g] != facePhysicalTag[f] ||
-                       dot(unitFaceNormal[f], unitFaceNormal[g]) < cosCrease ||
-                       dot(unitFaceNormal[g], unitFaceNormal[f]) < cosCrease)) {
+                       dot(unitFaceNormal[f], unitFaceNormal[g]) < cosCrease)) {
           smooth = false;
           break;
         }
