@@ -32,6 +32,18 @@ std::string jsonString(const std::string& text) {
   return out + "\"";
 }
 
+std::uint64_t countOf(const std::map<std::int32_t, std::uint64_t>& counts, std::int32_t tag) {
+  const auto found = counts.find(tag);
+  return found == counts.end() ? 0 : found->second;
+}
+
+// A volume as `info` names it: "Name" (tag), or tag alone, or the faces in no group.
+std::string groupLabel(const Mesh& mesh, std::int32_t tag) {
+  if (tag == 0) return "(no physical group)";
+  const std::string name = mesh.physicalName(tag);
+  return name.empty() ? fmt::format("{}", tag) : fmt::format("\"{}\" ({})", name, tag);
+}
+
 std::string shellDescription(const MeshShell& shell) {
   std::string text = fmt::format("{} faces, area {:.6g}, ", shell.faceCount, shell.area);
   if (!shell.closed)
@@ -43,6 +55,7 @@ std::string shellDescription(const MeshShell& shell) {
   if (shell.cavity)
     winding = shell.signedVolume < 0 ? "cavity wall, normals point into the cavity"
                                      : "cavity wall, normals point into the material";
+  if (shell.interface) winding = "interface between volumes";
   return text + fmt::format("closed, consistently oriented ({}, volume {:.6g})", winding,
                             std::abs(shell.signedVolume));
 }
@@ -61,6 +74,9 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
   if (source.volumeElements)
     fmt::print("volume skin:     {} faces from {} volume elements ({} already surface elements)\n",
                source.skinFaces, source.volumeElements, source.skinFacesCoveredBySurfaces);
+  if (source.interfaceFaces)
+    fmt::print("interfaces:      {} faces shared by two volumes ({} surface elements on them merged)\n",
+               source.interfaceFaces, source.interfaceSurfaceElementsMerged);
   if (!source.unrenderableByType.empty()) {
     fmt::print("not rendered:\n");
     for (const auto& [type, count] : source.unrenderableByType)
@@ -79,9 +95,14 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
     const auto faces = stats.facesByPhysicalTag.find(group.tag);
     const std::uint64_t count =
         group.dimension >= 2 && faces != stats.facesByPhysicalTag.end() ? faces->second : 0;
-    fmt::print("  dim {} tag {:<6} {:<24} {} faces\n", group.dimension, group.tag,
-               group.name.empty() ? "(unnamed)" : fmt::format("\"{}\"", group.name), count);
+    const std::uint64_t shared = group.dimension == 3 ? countOf(stats.interfaceFacesByPhysicalTag, group.tag) : 0;
+    fmt::print("  dim {} tag {:<6} {:<24} {} faces{}\n", group.dimension, group.tag,
+               group.name.empty() ? "(unnamed)" : fmt::format("\"{}\"", group.name), count,
+               shared ? fmt::format(" ({} skin, {} interface)", count - shared, shared) : "");
   }
+  for (const auto& [pair, count] : stats.interfaces)
+    fmt::print("  interface {} | {}: {} faces\n", groupLabel(mesh, pair.first), groupLabel(mesh, pair.second),
+               count);
   if (const auto none = stats.facesByPhysicalTag.find(0); none != stats.facesByPhysicalTag.end())
     fmt::print("  (no physical group)                    {} faces\n", none->second);
   if (!mesh.fields.empty()) {
@@ -143,10 +164,21 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
     const auto faces = stats.facesByPhysicalTag.find(group.tag);
     const std::uint64_t count =
         group.dimension >= 2 && faces != stats.facesByPhysicalTag.end() ? faces->second : 0;
-    out += fmt::format("{}\n    {{\"dimension\": {}, \"tag\": {}, \"name\": {}, \"faces\": {}}}",
-                       i ? "," : "", group.dimension, group.tag, jsonString(group.name), count);
+    const std::uint64_t shared = group.dimension == 3 ? countOf(stats.interfaceFacesByPhysicalTag, group.tag) : 0;
+    out += fmt::format(
+        "{}\n    {{\"dimension\": {}, \"tag\": {}, \"name\": {}, \"faces\": {}, \"interfaceFaces\": {}}}",
+        i ? "," : "", group.dimension, group.tag, jsonString(group.name), count, shared);
   }
   out += mesh.physicalGroups.empty() ? "],\n" : "\n  ],\n";
+  out += fmt::format("  \"interfaceFaces\": {},\n  \"interfaces\": [", source.interfaceFaces);
+  bool firstInterface = true;
+  for (const auto& [pair, count] : stats.interfaces) {
+    out += fmt::format("{}\n    {{\"tags\": [{}, {}], \"names\": [{}, {}], \"faces\": {}}}",
+                       firstInterface ? "" : ",", pair.first, pair.second, jsonString(mesh.physicalName(pair.first)),
+                       jsonString(mesh.physicalName(pair.second)), count);
+    firstInterface = false;
+  }
+  out += stats.interfaces.empty() ? "],\n" : "\n  ],\n";
   out += "  \"fields\": [";
   for (std::size_t i = 0; i < mesh.fields.size(); ++i) {
     const MeshField& field = mesh.fields[i];
@@ -172,9 +204,9 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
     const MeshShell& shell = stats.shells[s];
     out += fmt::format(
         "{}\n    {{\"faces\": {}, \"area\": {:.17g}, \"closed\": {}, \"consistentlyOriented\": {}, "
-        "\"signedVolume\": {:.17g}, \"cavity\": {}}}",
+        "\"signedVolume\": {:.17g}, \"cavity\": {}, \"interface\": {}}}",
         s ? "," : "", shell.faceCount, shell.area, shell.closed, shell.consistentlyOriented,
-        shell.signedVolume, shell.cavity);
+        shell.signedVolume, shell.cavity, shell.interface);
   }
   out += stats.shells.empty() ? "],\n" : "\n  ],\n";
   if (!accelMember.empty()) out += accelMember + ",\n";

@@ -72,7 +72,7 @@ TEST(InfoCli, JsonReport) {
   EXPECT_TRUE(contains(out, "\"faces\": {\"total\": 16, \"triangles\": 0, \"quads\": 16},")) << out;
   // gmsh writes each quad once per physical group ("plate", "everything"): 16 second copies skipped.
   EXPECT_TRUE(contains(out, "\"duplicateElementsSkipped\": 16,")) << out;
-  EXPECT_TRUE(contains(out, "{\"dimension\": 2, \"tag\": 1, \"name\": \"plate\", \"faces\": 16}")) << out;
+  EXPECT_TRUE(contains(out, "{\"dimension\": 2, \"tag\": 1, \"name\": \"plate\", \"faces\": 16, \"interfaceFaces\": 0}")) << out;
   EXPECT_TRUE(contains(out, "\"boundingBox\": {\"min\": [0, 0, 0], \"max\": [1, 1, 0]},")) << out;
   EXPECT_TRUE(contains(out, "\"area\": 1,")) << out;
   EXPECT_TRUE(contains(out, "\"closed\": false, \"consistentlyOriented\": true")) << out;
@@ -112,8 +112,32 @@ TEST(InfoCli, CavityWallIsReportedAsSuch) {
   EXPECT_TRUE(contains(text.output, "(cavity wall, normals point into the cavity, volume 0.")) << text.output;
   const CommandResult json = runCli("info --json '" + path + "'");
   ASSERT_EQ(json.exitCode, 0) << json.output;
-  EXPECT_TRUE(contains(json.output, ", \"cavity\": true}")) << json.output;
-  EXPECT_TRUE(contains(json.output, ", \"cavity\": false}")) << json.output;
+  EXPECT_TRUE(contains(json.output, ", \"cavity\": true, \"interface\": false}")) << json.output;
+  EXPECT_TRUE(contains(json.output, ", \"cavity\": false, \"interface\": false}")) << json.output;
+}
+
+TEST(InfoCli, VolumesListTheirSkinAndInterfaceFacesAndNameTheInterfaces) {
+  // tests/data/multimaterial/three_materials.geo: housing around bushing around shaft, meshed together.
+  const std::string path = std::string(LANCER_TEST_DATA_DIR) + "/multimaterial/three_materials_v41.msh";
+  const CommandResult text = runCli("info '" + path + "'");
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  EXPECT_TRUE(contains(text.output, "interfaces:      1004 faces shared by two volumes")) << text.output;
+  EXPECT_TRUE(contains(text.output, "\"Housing\"                2618 faces (1980 skin, 638 interface)\n"))
+      << text.output;
+  EXPECT_TRUE(contains(text.output, "\"Bushing\"                1342 faces (338 skin, 1004 interface)\n"))
+      << text.output;
+  EXPECT_TRUE(contains(text.output, "\"Shaft\"                  722 faces (356 skin, 366 interface)\n"))
+      << text.output;
+  EXPECT_TRUE(contains(text.output, "  interface \"Housing\" (1) | \"Bushing\" (2): 638 faces\n")) << text.output;
+  EXPECT_TRUE(contains(text.output, "  interface \"Bushing\" (2) | \"Shaft\" (3): 366 faces\n")) << text.output;
+  const CommandResult json = runCli("info --json '" + path + "'");
+  ASSERT_EQ(json.exitCode, 0) << json.output;
+  EXPECT_TRUE(contains(json.output, "\"name\": \"Bushing\", \"faces\": 1342, \"interfaceFaces\": 1004}"))
+      << json.output;
+  EXPECT_TRUE(contains(json.output, "\"interfaceFaces\": 1004,\n  \"interfaces\": [\n    {\"tags\": [1, 2], "
+                                    "\"names\": [\"Housing\", \"Bushing\"], \"faces\": 638},\n    {\"tags\": [2, 3], "
+                                    "\"names\": [\"Bushing\", \"Shaft\"], \"faces\": 366}\n  ],"))
+      << json.output;
 }
 
 }  // namespace

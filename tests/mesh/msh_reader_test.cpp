@@ -160,14 +160,18 @@ TEST(MshReader, TetrahedraBecomeTheirSkinInEveryFormat) {
   }
 }
 
-TEST(MshReader, SurfaceElementsCoverTheSkinWhenTheFileHasBoth) {
+// -save_all writes every surface element too, in no physical group: the skin is one face per
+// boundary face (no second copy), and it carries the grouped volume's tag, so the volume's material.
+TEST(MshReader, UngroupedSurfaceElementsGiveWayToTheGroupedVolumeSkin) {
   const Mesh linear = readMsh(mshFixture("cube_tet4_saveall_v41_ascii.msh"));
   EXPECT_EQ(linear.faceCount(), linear.source.elementsByType.at(2));
-  EXPECT_EQ(linear.source.skinFaces, 0u);
-  EXPECT_EQ(linear.source.skinFacesCoveredBySurfaces, linear.source.elementsByType.at(2));
+  EXPECT_EQ(linear.source.skinFaces, linear.faceCount());
+  EXPECT_EQ(linear.source.skinFacesCoveredBySurfaces, 0u);
+  for (std::size_t f = 0; f < linear.faceCount(); ++f) ASSERT_EQ(linear.facePhysicalTag[f], 1) << f;
   const Mesh quadratic = readMsh(mshFixture("cube_tet10_saveall_v41_bin.msh"));
   EXPECT_EQ(quadratic.faceCount(), 4 * quadratic.source.elementsByType.at(9));
-  EXPECT_EQ(quadratic.source.skinFaces, 0u);
+  EXPECT_EQ(quadratic.source.skinFaces * 4, quadratic.faceCount());
+  EXPECT_TRUE(quadratic.volumeSides.empty());  // one volume: no interfaces, nothing more per face
   const MeshStats stats = computeMeshStats(quadratic);
   EXPECT_NEAR(stats.area, 6.0, 1e-5);
   EXPECT_TRUE(stats.shells.size() == 1 && stats.shells[0].closed && stats.shells[0].consistentlyOriented);

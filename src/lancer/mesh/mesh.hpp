@@ -28,6 +28,24 @@ struct MeshFace {
 // element-edge rendering.
 inline constexpr std::uint8_t kAllEdges = 0x0F;
 
+// Which volume lies on each side of a face, kept only for meshes with interfaces (faces shared by
+// volume elements of two different volumes: two physical volumes, or two elementary volumes when
+// neither is in a physical group). A face is wound out of its inner volume (the one its
+// facePhysicalTag and faceEntityTag name) towards its outer volume, on the side its normal points.
+enum class FaceSide : std::uint8_t {
+  kSurface = 0,    // a surface element lancer cannot tie to a volume: its winding is the file's
+  kSkin = 1,       // on a volume's boundary, nothing outside: wound out of the volume by its element
+  kInterface = 2,  // between two volumes: faceOuterPhysicalTag/faceOuterEntityTag name the outer one
+};
+
+struct FaceVolumeSides {
+  std::vector<FaceSide> side;
+  std::vector<std::int32_t> outerPhysicalTag;  // meaningful for kInterface faces only
+  std::vector<std::int32_t> outerEntityTag;
+  bool empty() const { return side.empty(); }
+  bool isInterface(std::size_t face) const { return !side.empty() && side[face] == FaceSide::kInterface; }
+};
+
 struct PhysicalGroup {
   int dimension = 0;
   int tag = 0;
@@ -48,6 +66,8 @@ struct MeshSourceInfo {
   std::uint64_t volumeElements = 0;                // volume elements replaced by their skin
   std::uint64_t skinFaces = 0;                     // faces that came from volume elements' skins
   std::uint64_t skinFacesCoveredBySurfaces = 0;    // skin faces already present as surface elements
+  std::uint64_t interfaceFaces = 0;                // faces shared by two volumes (counted in skinFaces)
+  std::uint64_t interfaceSurfaceElementsMerged = 0;  // surface elements on interfaces, merged into them
   std::uint32_t partitionCount = 0;                // mesh partitions the file declares (0: none)
   double loadSeconds = 0;
 };
@@ -64,6 +84,8 @@ struct Mesh {
   std::vector<std::int32_t> facePhysicalTag;  // first physical group of the element, 0 if none
   std::vector<std::int32_t> faceEntityTag;    // gmsh elementary entity
   std::vector<std::uint8_t> faceEdgeMask;     // see kAllEdges
+  // Empty unless the mesh has interfaces between volumes (then 9 bytes more per face).
+  FaceVolumeSides volumeSides;
   std::vector<PhysicalGroup> physicalGroups;
   std::vector<MeshField> fields;  // $NodeData then $ElementData steps, each in file order
   MeshSourceInfo source;

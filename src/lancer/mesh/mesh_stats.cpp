@@ -132,6 +132,13 @@ MeshStats computeMeshStats(const Mesh& mesh) {
     face.isQuad() ? ++stats.quads : ++stats.triangles;
     stats.area += faceArea(mesh, f);
     ++stats.facesByPhysicalTag[mesh.facePhysicalTag[f]];
+    if (mesh.volumeSides.isInterface(f)) {
+      const std::int32_t inner = mesh.facePhysicalTag[f], outer = mesh.volumeSides.outerPhysicalTag[f];
+      if (outer != inner) ++stats.facesByPhysicalTag[outer];
+      ++stats.interfaceFacesByPhysicalTag[inner];
+      if (outer != inner) ++stats.interfaceFacesByPhysicalTag[outer];
+      ++stats.interfaces[{std::min(inner, outer), std::max(inner, outer)}];
+    }
     for (int c = 0; c < face.cornerCount(); ++c) stats.worldBounds.extend(mesh.worldPosition(face.vertex[c]));
   }
   const FaceShells faceShells = findFaceShells(mesh.faces);
@@ -150,7 +157,9 @@ MeshStats computeMeshStats(const Mesh& mesh) {
   }
   const std::vector<std::uint8_t> cavity =
       findCavityShells(mesh.positions, mesh.faces, faceShells, mesh.facePhysicalTag, solid);
-  for (std::size_t s = 0; s < shells.size(); ++s) shells[s].cavity = cavity[s] != 0;
+  for (std::size_t f = 0; f < faceCount; ++f)
+    if (mesh.volumeSides.isInterface(f)) shells[faceShells.shellOfFace[f]].interface = true;
+  for (std::size_t s = 0; s < shells.size(); ++s) shells[s].cavity = cavity[s] != 0 && !shells[s].interface;
   std::stable_sort(shells.begin(), shells.end(),
                    [](const MeshShell& a, const MeshShell& b) { return a.faceCount > b.faceCount; });
   stats.shells = std::move(shells);

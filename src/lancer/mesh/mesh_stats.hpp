@@ -22,6 +22,8 @@ struct MeshShell {
   // A closed, oriented shell nested inside an odd number of closed shells of its physical group
   // (shell_nesting.hpp): it bounds a cavity, and faces out of the material when signedVolume < 0.
   bool cavity = false;
+  // Some of its faces are interfaces between two volumes (then never a cavity wall).
+  bool interface = false;
 };
 
 // One directed edge of one face; sorting by key brings the faces that share an edge together.
@@ -49,7 +51,11 @@ struct MeshStats {
   double area = 0;
   std::uint64_t triangles = 0;
   std::uint64_t quads = 0;
+  // Faces that bound each physical group: an interface counts for the volumes on both its sides.
   std::map<std::int32_t, std::uint64_t> facesByPhysicalTag;
+  std::map<std::int32_t, std::uint64_t> interfaceFacesByPhysicalTag;
+  // Interface faces per pair of physical tags (smaller first); 0 is a volume in no physical group.
+  std::map<std::pair<std::int32_t, std::int32_t>, std::uint64_t> interfaces;
   std::vector<MeshShell> shells;  // largest first
 };
 

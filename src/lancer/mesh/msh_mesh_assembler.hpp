@@ -1,5 +1,5 @@
 // Builds a Mesh from the nodes and elements a .msh parser reads: splits second-order faces, turns
-// volume elements into their skin, drops degenerate faces, keeps only the nodes faces use and
+// volume elements into their skin and the interfaces between volumes, drops degenerate faces, keeps only the nodes faces use and
 // recentres them on the bounding-box centre as float. Independent of the MSH version.
 #pragma once
 
@@ -68,18 +68,24 @@ class MshMeshAssembler {
 
  private:
   void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint8_t edgeMask) {
-    if (trackElements_) faceElement_.push_back(element_);
     faces_.push_back(MeshFace{{a, b, c, kNoVertex}});
-    facePhysical_.push_back(physical_);
-    faceEntity_.push_back(entity_);
-    faceEdgeMask_.push_back(edgeMask);
+    recordFace(edgeMask);
   }
   void addQuad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, std::uint8_t edgeMask) {
-    if (trackElements_) faceElement_.push_back(element_);
     faces_.push_back(MeshFace{{a, b, c, d}});
+    recordFace(edgeMask);
+  }
+  // The per-face arrays of the face just pushed.
+  void recordFace(std::uint8_t edgeMask) {
+    if (trackElements_) faceElement_.push_back(element_);
     facePhysical_.push_back(physical_);
     faceEntity_.push_back(entity_);
     faceEdgeMask_.push_back(edgeMask);
+    if (trackSides_) {
+      sides_.side.push_back(side_);
+      sides_.outerPhysicalTag.push_back(outerPhysical_);
+      sides_.outerEntityTag.push_back(outerEntity_);
+    }
   }
   void addOtherElement(int type, const std::uint32_t* nodeIndex);
   Vec3d serendipityCentre(const std::uint32_t* corner, const std::uint32_t* mid) const;
@@ -88,7 +94,22 @@ class MshMeshAssembler {
   void addSplitTriangle(const std::uint32_t* corner, const std::uint32_t* mid);
   void addSplitQuad(const std::uint32_t* corner, const std::uint32_t* mid, std::uint32_t centre);
   void changeGroup(int dimension, std::int32_t physical, std::int32_t entity);
-  void appendSkin(MeshSourceInfo& source);
+  // A surface element as faces_[firstFace .. firstFace + faceCount) (four for a split second-order
+  // element), with its corners in the file's order, for matching it with volume faces.
+  struct SurfaceElementFaces {
+    MshFaceKey key;
+    std::uint32_t corner[4];
+    std::uint32_t firstFace;
+    std::uint32_t faceCount;
+    bool operator<(const SurfaceElementFaces& other) const { return key < other.key; }
+  };
+  std::vector<SurfaceElementFaces> surfaceElementsByKey() const;
+  void alignWinding(const SurfaceElementFaces& element, const MshVolumeFace& volumeFace);
+  void moveFace(std::size_t to, std::size_t from);  // every per-face array
+  void truncateFaces(std::size_t count);
+  void removeFaces(const std::vector<std::uint8_t>& removed);
+  void addVolumeFace(const MshVolumeFace& face);
+  void appendVolumeBoundary(MeshSourceInfo& source);
   void mapElementFields(Mesh& mesh);
 
   std::vector<MeshFace> faces_;
@@ -102,7 +123,12 @@ class MshMeshAssembler {
   std::vector<std::uint64_t> faceElement_;                               // per face, when tracking
   std::vector<std::pair<std::uint64_t, std::uint64_t>> elementAliases_;  // (copy, kept), when tracking
   std::vector<std::uint64_t> volumeFaceElement_;                         // per volume face, when tracking
-  std::vector<MshFaceKey> secondOrderSurfaceKeys_;  // corners of split surface elements, for the skin
+  std::vector<SurfaceElementFaces> secondOrderSurfaces_;  // split surface elements, for the skin
+  FaceVolumeSides sides_;  // filled from the volume boundary on, and only when it has interfaces
+  bool trackSides_ = false;
+  FaceSide side_ = FaceSide::kSurface;
+  std::int32_t outerPhysical_ = 0;
+  std::int32_t outerEntity_ = 0;
   std::vector<std::pair<std::int32_t, std::int32_t>> groups_;  // (physical, entity) of volume faces
   std::set<std::pair<int, std::int32_t>> physicalsSeen_;       // (dimension, physical tag)
   std::array<std::uint64_t, kMaxMshElementType + 1> countByType_{};

@@ -97,9 +97,8 @@ void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_
   }
 }
 
-std::vector<std::uint32_t> findSkinFaces(std::span<const MshVolumeFace> faces,
-                                         std::span<const MshFaceKey> surfaceKeys,
-                                         std::uint64_t& coveredBySurface) {
+std::vector<VolumeBoundaryFace> findVolumeBoundary(std::span<const MshVolumeFace> faces,
+                                                   std::span<const std::uint64_t> volumeOfGroup) {
   // Sorting the keys brings the two copies of every interior face together.
   std::vector<KeyedFace> keyed(faces.size());
   for (std::size_t i = 0; i < faces.size(); ++i) {
@@ -107,22 +106,25 @@ std::vector<std::uint32_t> findSkinFaces(std::span<const MshVolumeFace> faces,
     keyed[i] = {mshFaceKey(faces[i].corner, corners), static_cast<std::uint32_t>(i)};
   }
   std::sort(keyed.begin(), keyed.end());
-  std::vector<std::uint32_t> skin;
-  coveredBySurface = 0;
+  std::vector<VolumeBoundaryFace> boundary;
   for (std::size_t i = 0; i < keyed.size();) {
     std::size_t j = i + 1;
     while (j < keyed.size() && keyed[j].key == keyed[i].key) ++j;
     if (j == i + 1) {
-      if (std::binary_search(surfaceKeys.begin(), surfaceKeys.end(), keyed[i].key)) {
-        ++coveredBySurface;
-      } else {
-        skin.push_back(keyed[i].face);
+      boundary.push_back({keyed[i].face, kNoVertex});
+    } else if (j == i + 2) {
+      std::uint32_t a = keyed[i].face, b = keyed[i + 1].face;
+      const std::uint64_t volumeA = volumeOfGroup[faces[a].group], volumeB = volumeOfGroup[faces[b].group];
+      if (volumeA != volumeB) {
+        if (volumeB < volumeA) std::swap(a, b);
+        boundary.push_back({a, b});
       }
     }
     i = j;
   }
-  std::sort(skin.begin(), skin.end());
-  return skin;
+  std::sort(boundary.begin(), boundary.end(),
+            [](const VolumeBoundaryFace& x, const VolumeBoundaryFace& y) { return x.face < y.face; });
+  return boundary;
 }
 
 }  // namespace lancer

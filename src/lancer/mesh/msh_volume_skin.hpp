@@ -1,5 +1,6 @@
-// Volume elements become their skin: every element face is listed with outward winding, and the
-// faces that occur exactly once (and are not already a surface element) are the boundary.
+// Volume elements become their boundary: every element face is listed with outward winding; the
+// faces that occur exactly once are the skin, and the faces shared by elements of two different
+// volumes are the interfaces between them.
 #pragma once
 
 #include <array>
@@ -31,10 +32,19 @@ MshFaceKey mshFaceKey(const std::uint32_t* corners, int cornerCount);
 void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_t group,
                               std::vector<MshVolumeFace>& faces);
 
-// Indices (ascending) of the faces that occur once among `faces` and whose key is not in
-// surfaceKeys (sorted). coveredBySurface counts the once-only faces a surface element already shows.
-std::vector<std::uint32_t> findSkinFaces(std::span<const MshVolumeFace> faces,
-                                         std::span<const MshFaceKey> surfaceKeys,
-                                         std::uint64_t& coveredBySurface);
+// One face of the volumes' boundary: `face` (an index into the volume faces) is the side kept, wound
+// out of its element's volume; `outer` is the face of the other volume's element on an interface,
+// kNoVertex on the skin.
+struct VolumeBoundaryFace {
+  std::uint32_t face;
+  std::uint32_t outer;
+};
+
+// The faces that occur once among `faces` (skin) and the faces that occur twice with two different
+// volumes (volumeOfGroup[face.group], any 64-bit identity per group); faces shared by two elements
+// of one volume, or by more than two elements, are interior. On an interface the kept side is the
+// element of the smaller volume identity. Ascending by `face`. O(n log n): one sort of the keys.
+std::vector<VolumeBoundaryFace> findVolumeBoundary(std::span<const MshVolumeFace> faces,
+                                                   std::span<const std::uint64_t> volumeOfGroup);
 
 }  // namespace lancer

@@ -71,7 +71,8 @@ void reverseWinding(MeshFace& face, std::uint8_t& edgeMask) {
 
 ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions, std::vector<MeshFace>& faces,
                                                  std::vector<std::uint8_t>& edgeMasks,
-                                                 std::span<const std::int32_t> facePhysicalTag) {
+                                                 std::span<const std::int32_t> facePhysicalTag,
+                                                 std::span<const FaceSide> faceSide) {
   ShellOrientationReport report;
   const std::size_t faceCount = faces.size();
   report.faceBoundsSolid.assign(faceCount, 0);
@@ -117,18 +118,28 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
   // A cavity wall faces into the cavity (out of the material around it): negative volume.
   std::vector<std::uint8_t> solidShell(shells.shellCount(), 0);
   for (std::size_t s = 0; s < shells.shellCount(); ++s) solidShell[s] = shells.closed[s] && orientable[s];
-  const std::vector<std::uint8_t> cavity = findCavityShells(positions, faces, shells, facePhysicalTag, solidShell);
+  std::vector<std::uint8_t> cavity = findCavityShells(positions, faces, shells, facePhysicalTag, solidShell);
+  std::vector<std::uint8_t> interfaceShell(faceSide.empty() ? 0 : shells.shellCount(), 0);
+  for (std::size_t f = 0; f < faceSide.size(); ++f)
+    if (faceSide[f] == FaceSide::kInterface) interfaceShell[shells.shellOfFace[f]] = 1;
+  for (std::size_t s = 0; s < interfaceShell.size(); ++s)
+    if (interfaceShell[s]) cavity[s] = 0;
 
   std::uint8_t unusedMask = kAllEdges;
   for (std::size_t f = 0; f < faceCount; ++f) {
     const std::uint32_t shell = shells.shellOfFace[f];
-    if (!solidShell[shell]) continue;
+    if (!solidShell[shell]) {
+      if (!faceSide.empty() && faceSide[f] != FaceSide::kSurface) report.faceBoundsSolid[f] = 1;
+      continue;
+    }
     report.faceBoundsSolid[f] = 1;
     const bool reverseShell = (volume6[shell] < 0.0) != (cavity[shell] != 0);
     const bool reverse = (flip[f] != 0) != reverseShell;
     if (!reverse) continue;
     reverseWinding(faces[f], edgeMasks.empty() ? unusedMask : edgeMasks[f]);
     ++report.flippedFaces;
+    if (!faceSide.empty() && faceSide[f] == FaceSide::kInterface)
+      report.reversedInterfaces.push_back(static_cast<std::uint32_t>(f));
   }
   for (std::size_t s = 0; s < shells.shellCount(); ++s) {
     if (!shells.closed[s]) continue;

@@ -19,8 +19,11 @@ struct ShellOrientationReport {
   std::uint64_t unorientableShells = 0;
   // Closed, oriented shells that are cavity walls (shell_nesting.hpp), now facing into the cavity.
   std::uint64_t cavityShells = 0;
-  // Per face: 1 when it belongs to a closed, consistently oriented shell (it bounds a solid).
+  // Per face: 1 when it belongs to a closed, consistently oriented shell, or is a volume's face in a
+  // mesh with interfaces (it bounds a solid).
   std::vector<std::uint8_t> faceBoundsSolid;
+  // Interface faces that were reversed: their inner and outer volumes swap (the caller's tags).
+  std::vector<std::uint32_t> reversedInterfaces;
 };
 
 // Reverses a face's winding (corner 0 stays first) and remaps its edge mask to the new edge order.
@@ -35,8 +38,13 @@ void reverseWinding(MeshFace& face, std::uint8_t& edgeMask);
 // faces index (any frame: the sign of the volume does not depend on translation).
 // `edgeMasks`, when not empty, holds one mask per face and is kept in step with the faces.
 // `facePhysicalTag` holds one tag per face (empty: all faces in one group).
+// `faceSide` (Mesh::volumeSides, empty when the mesh has no interfaces): a closed shell of interfaces
+// (a ball inside a block) faces out of the volume it encloses and is never a cavity wall; a volume's
+// faces in a shell that is not a closed 2-manifold (where an interface meets the skin, three faces
+// share each edge of the rim) keep their elements' winding, out of their volume, and bound solids.
 ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions, std::vector<MeshFace>& faces,
                                                  std::vector<std::uint8_t>& edgeMasks,
-                                                 std::span<const std::int32_t> facePhysicalTag);
+                                                 std::span<const std::int32_t> facePhysicalTag,
+                                                 std::span<const FaceSide> faceSide = {});
 
 }  // namespace lancer

@@ -77,6 +77,17 @@ TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounter
   return result;
 }
 
+MediumCrossing Tracer::crossingAt(std::uint32_t face, bool entering) const {
+  const std::uint32_t inner = scene_.faceMaterial[face];
+  if (!scene_.faceBoundsSolid[face]) return {Scene::kNoMaterial, Scene::kNoMaterial, inner};
+  const std::uint32_t outer = scene_.faceOuterMaterial.empty() ? Scene::kNoMaterial : scene_.faceOuterMaterial[face];
+  if (entering) return {outer, inner, inner};
+  // Leaving by an interface: out of a transparent volume the ray sees the next volume's surface;
+  // inside an opaque one (only a cut view without caps gets there) its own wall, as on the skin.
+  const bool seesOuter = outer != Scene::kNoMaterial && scene_.materials[inner].transparency > 0.0f;
+  return {inner, outer, seesOuter ? outer : inner};
+}
+
 Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, TraceCounters& counters) const {
   if (!anyTransparent_) {
     ++counters.rays;
@@ -87,32 +98,37 @@ Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, Trac
   }
   Vec3 transmission{1, 1, 1};
   Vec3 origin = from;
-  // Inside a transparent solid the light is also absorbed (Beer-Lambert) between entry and exit.
-  Vec3 insideAbsorption{0, 0, 0};
-  Vec3 entryPoint{0, 0, 0};
+  // Inside a solid the light is also absorbed (Beer-Lambert). Each stretch of the way is in the
+  // medium its far end leaves (the side of the face hit says which), so a ray that starts inside a
+  // solid is absorbed from its start; past the last face, in the medium that face let it into.
+  constexpr std::uint32_t kUnknown = Scene::kNoMaterial - 1;
+  std::uint32_t medium = kUnknown;
   for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
     ++counters.rays;
     const Ray ray(origin, lightPosition - origin);
     const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
+    const float start = std::max(kept.enter, 0.0f), end = std::min(kept.exit, 1.0f);
     Hit hit;
-    if (kept.empty() || !nearestHit(ray, kept.enter, std::min(kept.exit, 1.0f), hit)) return transmission;
-    const Material& material = scene_.materials[scene_.faceMaterial[hit.face]];
-    if (material.transparency <= 0.0f) return {0, 0, 0};
-    const Vec3 point = ray.at(hit.t);
+    if (kept.empty() || !nearestHit(ray, kept.enter, end, hit)) {
+      if (medium != kUnknown && start < end)
+        transmission *= beerLambert(absorptionOf(medium), (end - start) * length(ray.direction));
+      return transmission;
+    }
     const Vec3 normal = scene_.faceNormals[hit.face];
     const bool leaving = dot(normal, ray.direction) > 0;
-    if (scene_.faceBoundsSolid[hit.face]) {
-      if (!leaving) {
-        insideAbsorption = material.absorption;
-        entryPoint = point;
-      } else if (maxComponent(insideAbsorption) > 0.0f) {
-        transmission *= beerLambert(insideAbsorption, length(point - entryPoint));
-        insideAbsorption = {0, 0, 0};
-      }
+    const MediumCrossing media = crossingAt(hit.face, !leaving);
+    const Material& material = scene_.materials[media.shown];
+    if (material.transparency <= 0.0f) return {0, 0, 0};
+    if (scene_.faceBoundsSolid[hit.face]) medium = media.from;
+    if (medium != kUnknown) {
+      const Vec3 absorption = absorptionOf(medium);
+      if (maxComponent(absorption) > 0.0f)
+        transmission *= beerLambert(absorption, std::max(hit.t - start, 0.0f) * length(ray.direction));
     }
-    transmission *= transmissionTint(material) * splits_[scene_.faceMaterial[hit.face]].transmit;
+    if (scene_.faceBoundsSolid[hit.face]) medium = media.to;
+    transmission *= transmissionTint(material) * splits_[media.shown].transmit;
     if (maxComponent(transmission) < kMinPathWeight) return {0, 0, 0};
-    origin = offsetRayOrigin(point, leaving ? normal : -normal);
+    origin = offsetRayOrigin(ray.at(hit.t), leaving ? normal : -normal);
   }
   return {0, 0, 0};
 }
@@ -205,8 +221,8 @@ const ClipPlane* Tracer::capPlane(const Ray& ray, const ClipInterval& kept, std:
   return &scene_.clipPlanes[static_cast<std::size_t>(kept.enterPlane)];
 }
 
-Vec3 Tracer::shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::uint32_t face, bool parallelView,
-                      TraceCounters& counters) const {
+Vec3 Tracer::shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::uint32_t face,
+                      std::uint32_t material, bool parallelView, TraceCounters& counters) const {
   SurfacePoint cap{};
   cap.face = face;
   cap.position = ray.at(tCap);
@@ -217,7 +233,7 @@ Vec3 Tracer::shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::u
   // A field-coloured shell colours its cap with the mean of the face the ray leaves by.
   const int corners = scene_.faces[face].cornerCount();
   for (int c = 0; c < corners; ++c) cap.cornerWeight[c] = 1.0f / static_cast<float>(corners);
-  return shadeLocal(ray, cap, scene_.materials[scene_.faceMaterial[face]], parallelView, counters);
+  return shadeLocal(ray, cap, scene_.materials[material], parallelView, counters);
 }
 
 float Tracer::edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) const {
@@ -254,16 +270,20 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength
     hitDistance = kInfinity;
     return background_;
   }
-  // A ray that crosses a capped plane and then leaves a closed shell from inside was inside the
-  // solid at the plane: it sees the cut face (the cap) there, flat, in the shell's material. Only
-  // the hit mesh's planes matter: the ray met no kept face of that mesh since the crossing.
-  if ((kept.enterPlane >= 0 || anyMeshClips_) && scene_.faceBoundsSolid[hit.face] &&
-      dot(scene_.faceNormals[hit.face], ray.direction) > 0.0f) {
+  // A ray that crosses a capped plane and then leaves a solid was inside it at the plane: it sees
+  // the cut face (the cap) there, flat, in the solid's material: the face's own when the ray leaves
+  // through its back, the outer volume's when it meets an interface from the front. Only the hit
+  // mesh's planes matter: the ray met no kept face of that mesh since the crossing.
+  if ((kept.enterPlane >= 0 || anyMeshClips_) && scene_.faceBoundsSolid[hit.face]) {
+    const bool entering = dot(scene_.faceNormals[hit.face], ray.direction) < 0.0f;
+    const std::uint32_t solid = crossingAt(hit.face, entering).from;
     float tCap = 0;
-    if (const ClipPlane* plane = capPlane(ray, kept, hit.face, tCap)) {
-      coverage = 1.0f;
-      hitDistance = tCap * length(ray.direction);
-      return shadeCap(ray, *plane, tCap, hit.face, parallelView, counters);
+    if (solid != Scene::kNoMaterial) {
+      if (const ClipPlane* plane = capPlane(ray, kept, hit.face, tCap)) {
+        coverage = 1.0f;
+        hitDistance = tCap * length(ray.direction);
+        return shadeCap(ray, *plane, tCap, hit.face, solid, parallelView, counters);
+      }
     }
   }
   coverage = 1.0f;
@@ -274,21 +294,21 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength
   if (edge >= 1.0f) return edgeColor;
   auto withEdge = [&](const Vec3& color) { return edge > 0.0f ? color * (1.0f - edge) + edgeColor * edge : color; };
   const SurfacePoint surface = makeSurfacePoint(scene_, ray, hit);
-  const std::uint32_t materialIndex = scene_.faceMaterial[hit.face];
-  const Material& material = scene_.materials[materialIndex];
-  const EnergySplit& split = splits_[materialIndex];
+  // Closed shells and volumes face out of their material, so the side hit says whether the ray enters.
+  const bool entering = surface.normalSign > 0.0f;
+  const MediumCrossing media = crossingAt(hit.face, entering);
+  const Material& material = scene_.materials[media.shown];
+  const EnergySplit& split = splits_[media.shown];
   const Vec3 local = shadeLocal(ray, surface, material, parallelView, counters);
   if (depth >= maxDepth_ || !split.recursive) return withEdge(local);
 
   const Vec3 direction = normalize(ray.direction);
   const bool solid = scene_.faceBoundsSolid[hit.face] != 0;
-  // Closed shells face outward (oriented at load), so the side hit says whether the ray enters.
-  const bool entering = surface.normalSign > 0.0f;
   Vec3 reflectWeight = split.reflect;
   float transmitWeight = split.transmit;
   Vec3 transmittedDirection = direction;  // an open surface is a thin sheet: no net bending
   if (transmitWeight > 0.0f) {
-    const float eta = entering ? 1.0f / material.ior : material.ior;
+    const float eta = iorOf(media.from) / iorOf(media.to);  // glass into water: n_glass / n_water
     Vec3 normal = surface.shadingNormal;
     bool transmits = true;
     if (solid) {
@@ -318,9 +338,10 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength
     const Ray reflectedRay(offsetRayOrigin(surface.position, surface.geometricNormal), reflected);
     Vec3 radiance = trace(reflectedRay, depth + 1, reflectPathWeight, pathLength + hitDistance, false, counters,
                           coverage, distance);
-    // Reflected off the inside of a solid: the ray stays in its medium (Beer-Lambert).
-    if (solid && !entering && maxComponent(material.absorption) > 0.0f)
-      radiance *= std::isfinite(distance) ? beerLambert(material.absorption, distance) : Vec3{0, 0, 0};
+    // Reflected: the ray stays in the medium it came from (Beer-Lambert inside a solid).
+    const Vec3 absorption = absorptionOf(media.from);
+    if (maxComponent(absorption) > 0.0f)
+      radiance *= std::isfinite(distance) ? beerLambert(absorption, distance) : Vec3{0, 0, 0};
     color += radiance * reflectWeight;
   } else {
     color += local * reflectWeight;
@@ -331,9 +352,10 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength
     const Ray transmittedRay(offsetRayOrigin(surface.position, -surface.geometricNormal), transmittedDirection);
     Vec3 radiance = trace(transmittedRay, depth + 1, transmitPathWeight, pathLength + hitDistance, false, counters,
                           coverage, distance);
-    // Entering a solid: absorbed along the segment inside, up to the next surface.
-    if (solid && entering && maxComponent(material.absorption) > 0.0f)
-      radiance *= std::isfinite(distance) ? beerLambert(material.absorption, distance) : Vec3{0, 0, 0};
+    // Into the medium beyond: absorbed along the segment inside it, up to the next surface.
+    const Vec3 absorption = absorptionOf(media.to);
+    if (maxComponent(absorption) > 0.0f)
+      radiance *= std::isfinite(distance) ? beerLambert(absorption, distance) : Vec3{0, 0, 0};
     color += radiance * transmitWeight;
   } else {
     color += local * transmitWeight;

@@ -33,6 +33,15 @@ struct EnergySplit {
 // exceeds 1 in some channel (the scene loader rejects such materials; scenes built in code may not).
 EnergySplit energySplit(const Material& material);
 
+// The two media a surface hit separates, as material indices (Scene::kNoMaterial: outside every
+// solid, or a thin sheet's surroundings), and the material the surface shows.
+struct MediumCrossing {
+  std::uint32_t from;   // where the ray comes from
+  std::uint32_t to;     // where it goes if it passes through
+  std::uint32_t shown;  // the face's own (inner) material, or the outer volume's when the ray leaves a
+                        // transparent volume by an interface
+};
+
 class Tracer {
  public:
   // `footprint`: the world size of a pixel along primary rays, for edges drawn in pixel widths.
@@ -59,10 +68,17 @@ class Tracer {
   // and the mesh's own), with the crossing in `tCap`; nullptr when it started inside that region or
   // entered by an uncapped plane. `kept`: the ray's interval for the scene's planes.
   const ClipPlane* capPlane(const Ray& ray, const ClipInterval& kept, std::uint32_t face, float& tCap) const;
-  // The flat face a capped clip plane shows where it cuts a closed shell, at ray parameter `tCap`
-  // (`face`: the shell's face the ray leaves by, for its material).
-  Vec3 shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::uint32_t face, bool parallelView,
-                TraceCounters& counters) const;
+  // The flat face a capped clip plane shows where it cuts a solid, at ray parameter `tCap`, in the
+  // solid's `material` (`face`: the face the ray would leave the solid by, for field colours).
+  Vec3 shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::uint32_t face, std::uint32_t material,
+                bool parallelView, TraceCounters& counters) const;
+  // What a ray meets at `face`: closed shells and volume faces are wound out of their inner volume,
+  // so the side hit (`entering`: against the normal) says which volume it leaves and which it enters.
+  MediumCrossing crossingAt(std::uint32_t face, bool entering) const;
+  float iorOf(std::uint32_t material) const { return material == Scene::kNoMaterial ? 1.0f : scene_.materials[material].ior; }
+  Vec3 absorptionOf(std::uint32_t material) const {
+    return material == Scene::kNoMaterial ? Vec3{0, 0, 0} : scene_.materials[material].absorption;
+  }
   // Coverage of the hit face's drawn edges at the hit (0 when its mesh draws none).
   float edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) const;
   Vec3 shadeLocal(const Ray& ray, const SurfacePoint& surface, const Material& material, bool parallelView,

@@ -44,7 +44,9 @@ SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh) {
   instance.where.file = meshPath;
   instance.material = 0;
   instance.smoothAngleDegrees = 40;
-  const std::set<std::int32_t> tags(mesh.facePhysicalTag.begin(), mesh.facePhysicalTag.end());
+  std::set<std::int32_t> tags(mesh.facePhysicalTag.begin(), mesh.facePhysicalTag.end());
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f)  // a volume seen only from outside its interfaces
+    if (mesh.volumeSides.isInterface(f)) tags.insert(mesh.volumeSides.outerPhysicalTag[f]);
   int colourIndex = 0;
   for (std::int32_t tag : tags) {
     // One group (or none) keeps the neutral colour; faces outside any group keep it too.

@@ -35,7 +35,11 @@ struct Scene {
   std::vector<MeshFace> faces;
   std::vector<Vec3> faceNormals;  // geometric, unit; outward on closed shells, else the file's winding
   CornerNormals cornerNormals;    // smooth normals per face corner
-  std::vector<std::uint32_t> faceMaterial;
+  std::vector<std::uint32_t> faceMaterial;  // of the volume behind the face (its inner side)
+  // Of the volume in front of an interface face (on its normal's side), kNoMaterial elsewhere: air.
+  // Empty when no mesh has interfaces between volumes.
+  static constexpr std::uint32_t kNoMaterial = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> faceOuterMaterial;
   std::vector<ShadingMode> faceShading;
   std::vector<std::uint8_t> faceEdgeMask;     // element edges (or feature edges) of each face
   std::vector<std::uint16_t> faceEdgeStyle;   // index into edgeStyles; 0: edges not drawn

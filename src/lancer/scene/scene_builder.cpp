@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -75,6 +76,7 @@ std::vector<std::pair<std::int32_t, std::uint32_t>> resolveGroupMaterials(const 
     }
     if (!found && isTag) {  // a tag used by faces but without a $PhysicalNames entry is fine too
       for (std::int32_t faceTag : mesh.facePhysicalTag) found = found || faceTag == tag;
+      for (std::int32_t faceTag : mesh.volumeSides.outerPhysicalTag) found = found || faceTag == tag;
     }
     if (!found) {
       std::string known;
@@ -150,6 +152,12 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     const MeshInstance& instance = description.meshes[i];
     Mesh& mesh = meshes[i];
     const auto groupMaterials = resolveGroupMaterials(instance, mesh);
+    auto materialOf = [&](std::int32_t physicalTag) {
+      auto material = static_cast<std::uint32_t>(instance.material);
+      for (const auto& [tag, groupMaterial] : groupMaterials)
+        if (physicalTag == tag) material = groupMaterial;
+      return material;
+    };
     const ShadingMode shading = instance.shading.value_or(description.render.shading);
 
     std::vector<Vec3> positions(mesh.positions.size());
@@ -167,7 +175,11 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     // Refraction and caps tell entering from leaving by the side a ray hits, so solids must face out
     // of their material (cavity walls into the cavity).
     const ShellOrientationReport orientation =
-        orientClosedShellsOutward(positions, mesh.faces, edgeMasks, mesh.facePhysicalTag);
+        orientClosedShellsOutward(positions, mesh.faces, edgeMasks, mesh.facePhysicalTag, mesh.volumeSides.side);
+    for (const std::uint32_t f : orientation.reversedInterfaces) {
+      std::swap(mesh.facePhysicalTag[f], mesh.volumeSides.outerPhysicalTag[f]);
+      std::swap(mesh.faceEntityTag[f], mesh.volumeSides.outerEntityTag[f]);
+    }
     CornerNormals normals =
         computeCornerNormals(positions, mesh.faces, mesh.facePhysicalTag, instance.smoothAngleDegrees);
     std::uint16_t edgeStyle = 0;
@@ -197,13 +209,14 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
         face.vertex[c] += vertexBase;
         corners[c] += normalBase;
       }
-      std::uint32_t material = static_cast<std::uint32_t>(instance.material);
-      for (const auto& [tag, groupMaterial] : groupMaterials)
-        if (mesh.facePhysicalTag[f] == tag) material = groupMaterial;
+      scene.faceMaterial.push_back(materialOf(mesh.facePhysicalTag[f]));
+      if (mesh.volumeSides.isInterface(f)) {
+        scene.faceOuterMaterial.resize(scene.faces.size(), Scene::kNoMaterial);
+        scene.faceOuterMaterial.push_back(materialOf(mesh.volumeSides.outerPhysicalTag[f]));
+      }
       scene.faces.push_back(face);
       scene.faceNormals.push_back(faceNormal(scene.positions, face));
       scene.cornerNormals.faceCorner.push_back(corners);
-      scene.faceMaterial.push_back(material);
       scene.faceShading.push_back(shading);
       scene.faceEdgeMask.push_back(edgeMasks[f]);
       scene.faceEdgeStyle.push_back(edgeStyle);
@@ -212,6 +225,7 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     if (coloring) addFieldColoring(scene, *coloring, vertexBase, faceBase);
     if (!instance.clips.empty() && !mesh.faces.empty()) addMeshClips(scene, instance.clips, faceBase);
   }
+  if (!scene.faceOuterMaterial.empty()) scene.faceOuterMaterial.resize(scene.faces.size(), Scene::kNoMaterial);
   // Meshes after the last coloured one are not coloured.
   if (!scene.faceColorMap.empty()) scene.faceColorMap.resize(scene.faces.size(), 0);
   if (!scene.vertexFieldT.empty()) scene.vertexFieldT.resize(scene.positions.size(), std::nanf(""));
