@@ -14,4 +14,4 @@ mesh() {
   rm -f "$1.geo_unrolled"
 }
 for geo in tests/data/render/*.geo; do mesh "${geo%.geo}"; done
-for name in bracket floor sphere; do mesh "examples/meshes/$name"; done
+for name in bracket floor sphere three_materials; do mesh "examples/meshes/$name"; done

@@ -243,6 +243,41 @@ TEST(OpticsAnalytic, ShadowsThroughTransparentFacesAreColouredAndAbsorbed) {
 
 Mesh unitSphere() { return readMsh(LANCER_TEST_DATA_DIR "/msh/sphere_v41_ascii.msh"); }
 
+// Light reaching a point at depth h inside an absorbing solid, from straight above, is exp(-a h)
+// times what the surface lets through, whether the shadow ray starts inside the solid (a floor sunk
+// into a clear glass block, or through a glass ball) or outside it (a floor under the block). Seen
+// from above through the same h of glass, the pixel is exp(-2 a h). Shadow rays that started inside
+// were not absorbed before (exp(-a h) only, from the camera's half of the path).
+TEST(OpticsAnalytic, LightIsAbsorbedAlongTheShadowRayAlsoWhenItStartsInsideTheSolid) {
+  Material floor = emitter("floor", {0, 0, 0});
+  floor.kd = {1, 1, 1};
+  Material glass = clearGlass(1.0f);  // no bending, no Fresnel: only absorption changes the light
+  glass.absorption = {1.0f, 2.0f, 0.5f};
+  SceneDescription d = ambientOnly({floor, glass});
+  d.ambient = {0, 0, 0};
+  d.lights = {{{0, 0, 1000}, {1, 1, 1}, {1, 0, 0}}};
+  d.meshes.resize(2);
+  d.meshes[1].material = 1;
+  auto expectAbsorbed = [](const Vec3& seen, double glassPath, const char* what) {
+    EXPECT_NEAR(seen.x, std::exp(-1.0 * glassPath), 2e-4) << what;
+    EXPECT_NEAR(seen.y, std::exp(-2.0 * glassPath), 2e-4) << what;
+    EXPECT_NEAR(seen.z, std::exp(-0.5 * glassPath), 2e-4) << what;
+  };
+  for (const float depth : {0.5f, 0.25f}) {  // the block is z in [-0.5, 0.5]; the floor at 0.5 - depth
+    const RayProbe probe(d, {test::squareMesh(-2, -2, 2, 2, 0.5f - depth), inwardBox(0.5f, 0.5f, 0.5f)});
+    expectAbsorbed(probe.trace({0.1, 0.2, 5}, {0, 0, -1}), 2.0 * depth, "floor sunk into the block");
+    expectAbsorbed(probe.trace({1.5, 0.2, 5}, {0, 0, -1}), 0.0, "floor beside the block");
+  }
+  const RayProbe under(d, {test::squareMesh(-2, -2, 2, 2, -0.75f), inwardBox(0.5f, 0.5f, 0.5f)});
+  expectAbsorbed(under.trace({0.1, 0.2, 5}, {0, 0, -1}), 2.0, "floor under the block");
+  // Through the centre of a glass ball of radius 1 (gmsh's sphere: faceted, so a looser tolerance).
+  const RayProbe ball(d, {test::squareMesh(-2, -2, 2, 2, 0), unitSphere()});
+  const Vec3 seen = ball.trace({0.01, 0.02, 5}, {0, 0, -1});
+  EXPECT_NEAR(seen.x, std::exp(-2.0), 2e-3);
+  EXPECT_NEAR(seen.y, std::exp(-4.0), 2e-3);
+}
+
+
 // A mirror ball and a glass ball side by side, seen in perspective.
 SceneDescription twoBalls(std::vector<Material> materials) {
   SceneDescription d;

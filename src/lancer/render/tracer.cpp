@@ -257,11 +257,24 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength
   const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
   Hit hit;
   const bool hitMesh = !kept.empty() && nearestHit(ray, kept.enter, kept.exit, hit);
+  // A ray that crosses a capped plane and then leaves a solid was inside it at the plane: it sees
+  // the cut face (the cap) there, flat, in the solid's material: the face's own when the ray leaves
+  // through its back, the outer volume's when it meets an interface from the front. Only the hit
+  // mesh's planes matter: the ray met no kept face of that mesh since the crossing.
+  const ClipPlane* cap = nullptr;
+  float tCap = 0;
+  std::uint32_t capMaterial = Scene::kNoMaterial;
+  if (hitMesh && (kept.enterPlane >= 0 || anyMeshClips_) && scene_.faceBoundsSolid[hit.face]) {
+    const bool entering = dot(scene_.faceNormals[hit.face], ray.direction) < 0.0f;
+    capMaterial = crossingAt(hit.face, entering).from;
+    if (capMaterial != Scene::kNoMaterial) cap = capPlane(ray, kept, hit.face, tCap);
+  }
   if (scene_.hasShadowCatcher) {
-    // The catcher is a plane seen from above, in front of any mesh hit and inside the kept part.
+    // The catcher is a plane seen from above, in front of what the ray sees (a cap or a face) and
+    // inside the kept part.
     const float rate = dot(ray.direction, scene_.floorNormal);
     const float t = rate < 0.0f ? (scene_.floorOffset - dot(ray.origin, scene_.floorNormal)) / rate : kInfinity;
-    if (t > kept.enter && t < kept.exit && t < (hitMesh ? hit.t : kInfinity)) {
+    if (t > kept.enter && t < kept.exit && t < (cap ? tCap : hitMesh ? hit.t : kInfinity)) {
       hitDistance = t * length(ray.direction);
       return shadeShadowCatcher(ray.at(t), counters, coverage);
     }
@@ -270,21 +283,10 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength
     hitDistance = kInfinity;
     return background_;
   }
-  // A ray that crosses a capped plane and then leaves a solid was inside it at the plane: it sees
-  // the cut face (the cap) there, flat, in the solid's material: the face's own when the ray leaves
-  // through its back, the outer volume's when it meets an interface from the front. Only the hit
-  // mesh's planes matter: the ray met no kept face of that mesh since the crossing.
-  if ((kept.enterPlane >= 0 || anyMeshClips_) && scene_.faceBoundsSolid[hit.face]) {
-    const bool entering = dot(scene_.faceNormals[hit.face], ray.direction) < 0.0f;
-    const std::uint32_t solid = crossingAt(hit.face, entering).from;
-    float tCap = 0;
-    if (solid != Scene::kNoMaterial) {
-      if (const ClipPlane* plane = capPlane(ray, kept, hit.face, tCap)) {
-        coverage = 1.0f;
-        hitDistance = tCap * length(ray.direction);
-        return shadeCap(ray, *plane, tCap, hit.face, solid, parallelView, counters);
-      }
-    }
+  if (cap) {
+    coverage = 1.0f;
+    hitDistance = tCap * length(ray.direction);
+    return shadeCap(ray, *cap, tCap, hit.face, capMaterial, parallelView, counters);
   }
   coverage = 1.0f;
   hitDistance = hit.t * length(ray.direction);
