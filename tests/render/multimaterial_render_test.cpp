@@ -105,6 +105,23 @@ TEST(MultiMaterialRender, UncappedCutsShowTheInnerVolumesSurfaces) {
   EXPECT_EQ((Vec3{centre.r, centre.g, centre.b}), kCubeColour);
 }
 
+// Calls visit(colour, p) for every pixel of an orthographic view from `position` towards the origin
+// (up +y), with p where the pixel's ray meets the plane z = 0.
+template <typename Visit>
+void forEachPixelOnTheCut(const Image& image, const Vec3d& position, Visit&& visit) {
+  const Vec3d forward = normalize(Vec3d{0, 0, 0} - position);
+  const Vec3d right = normalize(cross(forward, Vec3d{0, 1, 0}));  // the camera's frame
+  const Vec3d up = cross(right, forward);
+  const double pixel = kViewHeight / kSize;
+  for (int j = 0; j < kSize; ++j) {
+    for (int i = 0; i < kSize; ++i) {
+      const Vec3d origin = position + right * ((i + 0.5 - kSize / 2.0) * pixel) + up * ((kSize / 2.0 - j - 0.5) * pixel);
+      const Rgba seen = image.at(i, j);
+      visit(Vec3{seen.r, seen.g, seen.b}, origin + forward * (-origin.z / forward.z));
+    }
+  }
+}
+
 // A cap in front of a shadow catcher that touches the part's lowest point: a ray that enters the cap
 // near the bottom runs inside the cube down to the bottom face, where the catcher lies too. The cap
 // is what it sees (the catcher was compared with the far face instead, and won half the time).
@@ -114,25 +131,40 @@ TEST(MultiMaterialRender, CapsStayInFrontOfACoincidentShadowCatcher) {
   const Vec3d position{0, 3, 5};
   d.camera.position = position;
   const Scene scene = test::sceneFromMeshes(d, {readMsh(multimaterial("cube_sphere_v41.msh"))});
-  const Image image = test::renderScene(d, scene);
-  // The orthographic camera's frame (right = forward x up), and where each pixel's ray meets z = 0.
-  const Vec3d forward = normalize(Vec3d{0, 0, 0} - position);
-  const Vec3d right = normalize(cross(forward, Vec3d{0, 1, 0}));
-  const Vec3d up = cross(right, forward);
-  const double pixel = kViewHeight / kSize;
   int onCap = 0, wrong = 0;
-  for (int j = 0; j < kSize; ++j) {
-    for (int i = 0; i < kSize; ++i) {
-      const Vec3d origin = position + right * ((i + 0.5 - kSize / 2.0) * pixel) + up * ((kSize / 2.0 - j - 0.5) * pixel);
-      const Vec3d p = origin + forward * (-origin.z / forward.z);
-      if (std::max(std::abs(p.x), std::abs(p.y)) > 1 - 2 * pixel) continue;
-      ++onCap;
-      const Rgba seen = image.at(i, j);
-      const Vec3 colour{seen.r, seen.g, seen.b};
-      wrong += !(colour == kCubeColour || colour == kBallColour);
-    }
-  }
+  forEachPixelOnTheCut(test::renderScene(d, scene), position, [&](const Vec3& colour, const Vec3d& p) {
+    if (std::max(std::abs(p.x), std::abs(p.y)) > 1 - 2 * kViewHeight / kSize) return;
+    ++onCap;
+    wrong += !(colour == kCubeColour || colour == kBallColour);
+  });
   EXPECT_GT(onCap, kSize * kSize / 4);
+  EXPECT_EQ(wrong, 0);
+}
+
+// Surfaces only (tests/data/render/nested_spheres.geo: a "Steel" sphere of radius 0.5 inside a
+// "Glass" sphere of radius 1, no volume elements): the region between them is the glass's, so a ray
+// that enters the cut there and meets the steel sphere from outside sees the glass cap, not the
+// steel surface; inside the small sphere, the steel cap.
+TEST(MultiMaterialRender, SurfacesNestedInAnotherGroupsSolidAreCappedByTheInnermostRegion) {
+  SceneDescription d = cutAlongZ(0.0, true, "Glass", "Steel");
+  const Vec3d position{0, 3, 5};  // tilted: rays from the ring run down onto the steel sphere
+  d.camera.position = position;
+  const Scene scene =
+      test::sceneFromMeshes(d, {readMsh(std::string(LANCER_TEST_DATA_DIR) + "/render/nested_spheres.msh")});
+  const double margin = 2 * kViewHeight / kSize;
+  int ring = 0, core = 0, wrong = 0;
+  forEachPixelOnTheCut(test::renderScene(d, scene), position, [&](const Vec3& colour, const Vec3d& p) {
+    const double r = std::hypot(p.x, p.y);
+    if (r > 0.5 + margin && r < 0.97 - margin) {  // the faceted spheres: a little inside their radii
+      ++ring;
+      wrong += !(colour == kCubeColour);
+    } else if (r < 0.48 - margin) {
+      ++core;
+      wrong += !(colour == kBallColour);
+    }
+  });
+  EXPECT_GT(ring, 1000);
+  EXPECT_GT(core, 500);
   EXPECT_EQ(wrong, 0);
 }
 

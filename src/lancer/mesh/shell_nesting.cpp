@@ -88,12 +88,21 @@ bool shareTag(std::span<const std::int32_t> a, std::span<const std::int32_t> b) 
 std::vector<std::uint8_t> findCavityShells(std::span<const Vec3> positions, const std::vector<MeshFace>& faces,
                                            const FaceShells& shells, std::span<const std::int32_t> facePhysicalTag,
                                            std::span<const std::uint8_t> candidates) {
+  return findShellNesting(positions, faces, shells, facePhysicalTag, candidates, false).cavity;
+}
+
+ShellNesting findShellNesting(std::span<const Vec3> positions, const std::vector<MeshFace>& faces,
+                              const FaceShells& shells, std::span<const std::int32_t> facePhysicalTag,
+                              std::span<const std::uint8_t> candidates, bool withEnclosing) {
   const std::size_t shellCount = shells.shellCount();
-  std::vector<std::uint8_t> cavity(shellCount, 0);
+  ShellNesting nesting;
+  nesting.cavity.assign(shellCount, 0);
+  if (withEnclosing) nesting.enclosing.assign(shellCount, kNoShell);
+  std::vector<std::uint8_t>& cavity = nesting.cavity;
   std::vector<std::uint32_t> candidateShells;
   for (std::size_t s = 0; s < shellCount; ++s)
     if (candidates[s]) candidateShells.push_back(static_cast<std::uint32_t>(s));
-  if (candidateShells.size() < 2) return cavity;
+  if (candidateShells.size() < 2) return nesting;
 
   // Faces grouped by shell (first[s] .. first[s + 1] in shellFaces), each shell's box and tags.
   std::vector<std::uint32_t> first(shellCount + 1, 0);
@@ -133,14 +142,24 @@ std::vector<std::uint8_t> findCavityShells(std::span<const Vec3> positions, cons
     const double start = box[inner].lower.x;
     std::erase_if(active, [&](std::uint32_t outer) { return box[outer].upper.x <= start; });
     bool odd = false;
+    double innermostSize = 0;
     for (const std::uint32_t outer : active) {
-      if (!strictlyContains(box[outer], box[inner]) || !shareTag(tags[outer], tags[inner])) continue;
-      if (shellInside(positions, faces, facesOf(inner), facesOf(outer), box[outer])) odd = !odd;
+      if (!strictlyContains(box[outer], box[inner])) continue;
+      const bool sameGroup = shareTag(tags[outer], tags[inner]);
+      if (!sameGroup && !withEnclosing) continue;
+      if (!shellInside(positions, faces, facesOf(inner), facesOf(outer), box[outer])) continue;
+      if (sameGroup) odd = !odd;
+      // Of the shells around it, the innermost has the smallest box (nested boxes nest).
+      const double size = length(box[outer].extent());
+      if (withEnclosing && (nesting.enclosing[inner] == kNoShell || size < innermostSize)) {
+        nesting.enclosing[inner] = outer;
+        innermostSize = size;
+      }
     }
     cavity[inner] = odd ? 1 : 0;
     active.push_back(inner);
   }
-  return cavity;
+  return nesting;
 }
 
 }  // namespace lancer

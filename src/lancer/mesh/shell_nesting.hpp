@@ -22,6 +22,20 @@ namespace lancer {
 // for side-by-side shells, k at worst), and one pass over T's faces for each pair (S, T) whose boxes
 // nest (T's strictly containing S's); a mesh of one shell, or of side-by-side shells, pays only the
 // first two. Many shells nested in one another (k onion layers of n faces each) cost O(k² n).
+inline constexpr std::uint32_t kNoShell = 0xFFFFFFFFu;
+
+struct ShellNesting {
+  std::vector<std::uint8_t> cavity;      // per shell, as findCavityShells
+  std::vector<std::uint32_t> enclosing;  // per shell: the innermost candidate around it (any group), or
+                                         // kNoShell; empty unless asked for
+};
+
+// findCavityShells, and with `withEnclosing` also the innermost candidate shell of any group around
+// each shell (then shells of other groups whose boxes nest are tested too).
+ShellNesting findShellNesting(std::span<const Vec3> positions, const std::vector<MeshFace>& faces,
+                              const FaceShells& shells, std::span<const std::int32_t> facePhysicalTag,
+                              std::span<const std::uint8_t> candidates, bool withEnclosing);
+
 std::vector<std::uint8_t> findCavityShells(std::span<const Vec3> positions, const std::vector<MeshFace>& faces,
                                            const FaceShells& shells, std::span<const std::int32_t> facePhysicalTag,
                                            std::span<const std::uint8_t> candidates);

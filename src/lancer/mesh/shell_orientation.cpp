@@ -118,7 +118,22 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
   // A cavity wall faces into the cavity (out of the material around it): negative volume.
   std::vector<std::uint8_t> solidShell(shells.shellCount(), 0);
   for (std::size_t s = 0; s < shells.shellCount(); ++s) solidShell[s] = shells.closed[s] && orientable[s];
-  std::vector<std::uint8_t> cavity = findCavityShells(positions, faces, shells, facePhysicalTag, solidShell);
+  // Without interfaces, solids nested in solids of another group (surfaces only: a steel ball drawn
+  // inside a glass ball) learn which group surrounds them, as interfaces know their outer volume.
+  const bool findEnclosing = faceSide.empty() && !facePhysicalTag.empty();
+  ShellNesting nesting = findShellNesting(positions, faces, shells, facePhysicalTag, solidShell, findEnclosing);
+  std::vector<std::uint8_t>& cavity = nesting.cavity;
+  if (findEnclosing) {
+    std::vector<std::uint32_t> firstFace(shells.shellCount(), kNoShell);
+    for (std::size_t f = faceCount; f-- > 0;) firstFace[shells.shellOfFace[f]] = static_cast<std::uint32_t>(f);
+    for (std::size_t f = 0; f < faceCount; ++f) {
+      const std::uint32_t shell = shells.shellOfFace[f];
+      const std::uint32_t around = nesting.enclosing[shell];
+      if (!solidShell[shell] || cavity[shell] || around == kNoShell || cavity[around]) continue;
+      if (report.faceEnclosedBy.empty()) report.faceEnclosedBy.assign(faceCount, ShellOrientationReport::kNotEnclosed);
+      report.faceEnclosedBy[f] = facePhysicalTag[firstFace[around]];
+    }
+  }
   std::vector<std::uint8_t> interfaceShell(faceSide.empty() ? 0 : shells.shellCount(), 0);
   for (std::size_t f = 0; f < faceSide.size(); ++f)
     if (faceSide[f] == FaceSide::kInterface) interfaceShell[shells.shellOfFace[f]] = 1;

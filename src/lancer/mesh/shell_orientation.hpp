@@ -2,6 +2,7 @@
 // refraction and caps decide "entering" or "leaving" a solid from the side a ray hits.
 #pragma once
 
+#include <climits>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -24,6 +25,11 @@ struct ShellOrientationReport {
   std::vector<std::uint8_t> faceBoundsSolid;
   // Interface faces that were reversed: their inner and outer volumes swap (the caller's tags).
   std::vector<std::uint32_t> reversedInterfaces;
+  // In meshes without interfaces: per face, the physical tag of the solid of another group that its
+  // closed shell lies in (the innermost, when it is not a cavity), else kNotEnclosed; empty when no
+  // solid lies in another.
+  static constexpr std::int32_t kNotEnclosed = INT32_MIN;
+  std::vector<std::int32_t> faceEnclosedBy;
 };
 
 // Reverses a face's winding (corner 0 stays first) and remaps its edge mask to the new edge order.

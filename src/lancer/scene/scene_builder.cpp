@@ -210,9 +210,15 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
         corners[c] += normalBase;
       }
       scene.faceMaterial.push_back(materialOf(mesh.facePhysicalTag[f]));
-      if (mesh.volumeSides.isInterface(f)) {
+      // The material in front of the face: the outer volume of an interface, or the solid of another
+      // group that a closed surface lies in (a steel ball drawn inside a glass one).
+      std::optional<std::int32_t> outer;
+      if (mesh.volumeSides.isInterface(f)) outer = mesh.volumeSides.outerPhysicalTag[f];
+      if (!orientation.faceEnclosedBy.empty() && orientation.faceEnclosedBy[f] != ShellOrientationReport::kNotEnclosed)
+        outer = orientation.faceEnclosedBy[f];
+      if (outer) {
         scene.faceOuterMaterial.resize(scene.faces.size(), Scene::kNoMaterial);
-        scene.faceOuterMaterial.push_back(materialOf(mesh.volumeSides.outerPhysicalTag[f]));
+        scene.faceOuterMaterial.push_back(materialOf(*outer));
       }
       scene.faces.push_back(face);
       scene.faceNormals.push_back(faceNormal(scene.positions, face));
