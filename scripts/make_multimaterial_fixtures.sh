@@ -17,6 +17,7 @@ mesh cube_sphere cube_sphere_v41 msh41 -bin
 mesh cube_sphere cube_sphere_v22 msh22
 mesh cube_sphere cube_sphere_o2_v41 msh41 -bin -order 2 -clscale 1.5
 mesh cube_sphere cube_sphere_saveall_v41 msh41 -bin -save_all
+mesh cube_sphere_nogroups cube_sphere_nogroups_v41 msh41 -bin
 mesh box_cylinder_hex box_cylinder_hex_v41 msh41 -bin
 mesh box_cylinder_hex box_cylinder_hex27_v41 msh41 -bin -order 2 -clscale 1.5
 mesh glass_water_slabs glass_water_slabs_v41 msh41 -bin

@@ -37,11 +37,12 @@ std::uint64_t countOf(const std::map<std::int32_t, std::uint64_t>& counts, std::
   return found == counts.end() ? 0 : found->second;
 }
 
-// A volume as `info` names it: "Name" (tag), or tag alone, or the faces in no group.
-std::string groupLabel(const Mesh& mesh, std::int32_t tag) {
-  if (tag == 0) return "(no physical group)";
-  const std::string name = mesh.physicalName(tag);
-  return name.empty() ? fmt::format("{}", tag) : fmt::format("\"{}\" ({})", name, tag);
+// A volume of MeshStats::interfaces as `info` names it: "Name" (tag), or its tag alone, or its
+// elementary entity when it is in no physical group.
+std::string volumeLabel(const Mesh& mesh, std::int64_t volume) {
+  if (volume < 0) return fmt::format("volume entity {} (no physical group)", -volume);
+  const std::string name = mesh.physicalName(static_cast<std::int32_t>(volume));
+  return name.empty() ? fmt::format("{}", volume) : fmt::format("\"{}\" ({})", name, volume);
 }
 
 std::string shellDescription(const MeshShell& shell) {
@@ -101,7 +102,7 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
                shared ? fmt::format(" ({} skin, {} interface)", count - shared, shared) : "");
   }
   for (const auto& [pair, count] : stats.interfaces)
-    fmt::print("  interface {} | {}: {} faces\n", groupLabel(mesh, pair.first), groupLabel(mesh, pair.second),
+    fmt::print("  interface {} | {}: {} faces\n", volumeLabel(mesh, pair.first), volumeLabel(mesh, pair.second),
                count);
   if (const auto none = stats.facesByPhysicalTag.find(0); none != stats.facesByPhysicalTag.end())
     fmt::print("  (no physical group)                    {} faces\n", none->second);
@@ -173,9 +174,13 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
   out += fmt::format("  \"interfaceFaces\": {},\n  \"interfaces\": [", source.interfaceFaces);
   bool firstInterface = true;
   for (const auto& [pair, count] : stats.interfaces) {
-    out += fmt::format("{}\n    {{\"tags\": [{}, {}], \"names\": [{}, {}], \"faces\": {}}}",
-                       firstInterface ? "" : ",", pair.first, pair.second, jsonString(mesh.physicalName(pair.first)),
-                       jsonString(mesh.physicalName(pair.second)), count);
+    // A volume in no physical group is tag 0 with its elementary entity; a grouped one, entity 0.
+    const auto tag = [](std::int64_t v) { return v > 0 ? v : 0; };
+    const auto entity = [](std::int64_t v) { return v < 0 ? -v : 0; };
+    const auto name = [&](std::int64_t v) { return jsonString(mesh.physicalName(static_cast<std::int32_t>(tag(v)))); };
+    out += fmt::format("{}\n    {{\"tags\": [{}, {}], \"entities\": [{}, {}], \"names\": [{}, {}], \"faces\": {}}}",
+                       firstInterface ? "" : ",", tag(pair.first), tag(pair.second), entity(pair.first),
+                       entity(pair.second), name(pair.first), name(pair.second), count);
     firstInterface = false;
   }
   out += stats.interfaces.empty() ? "],\n" : "\n  ],\n";

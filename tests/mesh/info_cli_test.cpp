@@ -135,8 +135,8 @@ TEST(InfoCli, VolumesListTheirSkinAndInterfaceFacesAndNameTheInterfaces) {
   EXPECT_TRUE(contains(json.output, "\"name\": \"Bushing\", \"faces\": 1342, \"interfaceFaces\": 1004}"))
       << json.output;
   EXPECT_TRUE(contains(json.output, "\"interfaceFaces\": 1004,\n  \"interfaces\": [\n    {\"tags\": [1, 2], "
-                                    "\"names\": [\"Housing\", \"Bushing\"], \"faces\": 638},\n    {\"tags\": [2, 3], "
-                                    "\"names\": [\"Bushing\", \"Shaft\"], \"faces\": 366}\n  ],"))
+                                    "\"entities\": [0, 0], \"names\": [\"Housing\", \"Bushing\"], \"faces\": 638},\n    {\"tags\": [2, 3], "
+                                    "\"entities\": [0, 0], \"names\": [\"Bushing\", \"Shaft\"], \"faces\": 366}\n  ],"))
       << json.output;
 }
 

@@ -71,6 +71,20 @@ TEST(VolumeInterface, SharedFacesOfTwoPhysicalVolumesAreKeptOnceInEveryFormat) {
   EXPECT_EQ(secondOrder.faceCount(), 4 * secondOrder.source.skinFaces);
 }
 
+// Without physical groups gmsh saves every element; the volumes are its two elementary entities,
+// and the surface triangles on the ball are the interface, once.
+TEST(VolumeInterface, VolumesInNoPhysicalGroupAreToldApartByTheirEntities) {
+  const Mesh grouped = readMsh(multimaterial("cube_sphere_v41.msh"));
+  const Mesh mesh = readMsh(multimaterial("cube_sphere_nogroups_v41.msh"));
+  EXPECT_EQ(mesh.faceCount(), grouped.faceCount());
+  EXPECT_EQ(mesh.source.interfaceFaces, grouped.source.interfaceFaces);
+  EXPECT_EQ(mesh.source.interfaceSurfaceElementsMerged, grouped.source.interfaceFaces);
+  const MeshStats stats = computeMeshStats(mesh);
+  ASSERT_EQ(stats.interfaces.size(), 1u);
+  EXPECT_EQ(stats.interfaces.begin()->first, (std::pair<std::int64_t, std::int64_t>{-3, -2}));  // entities 3, 2
+  EXPECT_EQ(stats.interfaces.begin()->second, grouped.source.interfaceFaces);
+}
+
 TEST(VolumeInterface, HexahedraShareTheCylindersSide) {
   for (const char* file : {"box_cylinder_hex_v41.msh", "box_cylinder_hex27_v41.msh"}) {
     const Mesh mesh = readMsh(multimaterial(file));

@@ -137,7 +137,9 @@ MeshStats computeMeshStats(const Mesh& mesh) {
       if (outer != inner) ++stats.facesByPhysicalTag[outer];
       ++stats.interfaceFacesByPhysicalTag[inner];
       if (outer != inner) ++stats.interfaceFacesByPhysicalTag[outer];
-      ++stats.interfaces[{std::min(inner, outer), std::max(inner, outer)}];
+      const std::int64_t a = inner != 0 ? inner : -std::int64_t{mesh.faceEntityTag[f]};
+      const std::int64_t b = outer != 0 ? outer : -std::int64_t{mesh.volumeSides.outerEntityTag[f]};
+      ++stats.interfaces[{std::min(a, b), std::max(a, b)}];
     }
     for (int c = 0; c < face.cornerCount(); ++c) stats.worldBounds.extend(mesh.worldPosition(face.vertex[c]));
   }

@@ -54,8 +54,9 @@ struct MeshStats {
   // Faces that bound each physical group: an interface counts for the volumes on both its sides.
   std::map<std::int32_t, std::uint64_t> facesByPhysicalTag;
   std::map<std::int32_t, std::uint64_t> interfaceFacesByPhysicalTag;
-  // Interface faces per pair of physical tags (smaller first); 0 is a volume in no physical group.
-  std::map<std::pair<std::int32_t, std::int32_t>, std::uint64_t> interfaces;
+  // Interface faces per pair of volumes (smaller first): a volume is its physical tag (> 0), or minus
+  // its elementary entity's tag when it is in no physical group (gmsh saving every element).
+  std::map<std::pair<std::int64_t, std::int64_t>, std::uint64_t> interfaces;
   std::vector<MeshShell> shells;  // largest first
 };
 
