@@ -10,6 +10,7 @@
 #include <string>
 
 #include "lancer/mesh/msh_reader.hpp"
+#include "lancer/scene/quick_look.hpp"
 #include "support/golden.hpp"
 #include "support/test_scenes.hpp"
 
@@ -187,6 +188,18 @@ TEST(MultiMaterialRender, KdTreeAndBruteForceGiveTheSameCutView) {
   const Image kd = test::renderScene(d, scene, AccelKind::KdTreeSah, 1);
   EXPECT_EQ(test::psnr8(kd, test::renderScene(d, scene, AccelKind::Naive, 1)), INFINITY);
   EXPECT_EQ(test::psnr8(kd, test::renderScene(d, scene, AccelKind::KdTreeSah, 3)), INFINITY);
+}
+
+// The quick look colours the groups seen from outside as it would without interfaces (here one
+// group: the neutral colour, so the part looks as it did), and the volumes met only inside it next.
+TEST(MultiMaterialRender, QuickLookKeepsTheOutsideColoursAndPaintsInnerVolumes) {
+  const std::string path = multimaterial("cube_sphere_v41.msh");
+  const SceneDescription d = quickLookScene(path, readMsh(path));
+  ASSERT_EQ(d.meshes.size(), 1u);
+  ASSERT_EQ(d.meshes[0].groupMaterials.size(), 1u);
+  EXPECT_EQ(d.meshes[0].groupMaterials[0].group, "2");  // "Ball"
+  EXPECT_EQ(d.materials.at(static_cast<std::size_t>(d.meshes[0].groupMaterials[0].material)).name, "Ball");
+  EXPECT_EQ(d.meshes[0].material, 0);  // the cube: the neutral default
 }
 
 // ---- refraction across an interface ---------------------------------------------------------------

@@ -36,9 +36,12 @@ void appendFaces(const int (&table)[N][4], const std::uint32_t* nodes, std::uint
   }
 }
 
+// The face's volume travels with its key (filled in the sequential pass), so telling an interface
+// from an interior face does not read the faces again at random.
 struct KeyedFace {
   MshFaceKey key;
   std::uint32_t face;
+  std::uint32_t group;
   bool operator<(const KeyedFace& other) const { return key < other.key; }
 };
 
@@ -103,7 +106,7 @@ std::vector<VolumeBoundaryFace> findVolumeBoundary(std::span<const MshVolumeFace
   std::vector<KeyedFace> keyed(faces.size());
   for (std::size_t i = 0; i < faces.size(); ++i) {
     const int corners = faces[i].corner[3] == kNoVertex ? 3 : 4;
-    keyed[i] = {mshFaceKey(faces[i].corner, corners), static_cast<std::uint32_t>(i)};
+    keyed[i] = {mshFaceKey(faces[i].corner, corners), static_cast<std::uint32_t>(i), faces[i].group};
   }
   std::sort(keyed.begin(), keyed.end());
   std::vector<VolumeBoundaryFace> boundary;
@@ -113,12 +116,12 @@ std::vector<VolumeBoundaryFace> findVolumeBoundary(std::span<const MshVolumeFace
     if (j == i + 1) {
       boundary.push_back({keyed[i].face, kNoVertex});
     } else if (j == i + 2) {
-      std::uint32_t a = keyed[i].face, b = keyed[i + 1].face;
-      const std::uint64_t volumeA = volumeOfGroup[faces[a].group], volumeB = volumeOfGroup[faces[b].group];
-      if (volumeA != volumeB) {
-        if (volumeB < volumeA) std::swap(a, b);
-        boundary.push_back({a, b});
-      }
+      const KeyedFace& a = keyed[i];
+      const KeyedFace& b = keyed[i + 1];
+      const std::uint64_t volumeA = a.group == b.group ? 0 : volumeOfGroup[a.group];
+      const std::uint64_t volumeB = a.group == b.group ? 0 : volumeOfGroup[b.group];
+      if (volumeA < volumeB) boundary.push_back({a.face, b.face});
+      if (volumeB < volumeA) boundary.push_back({b.face, a.face});
     }
     i = j;
   }

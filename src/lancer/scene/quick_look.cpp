@@ -44,19 +44,32 @@ SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh) {
   instance.where.file = meshPath;
   instance.material = 0;
   instance.smoothAngleDegrees = 40;
-  std::set<std::int32_t> tags(mesh.facePhysicalTag.begin(), mesh.facePhysicalTag.end());
-  for (std::size_t f = 0; f < mesh.faceCount(); ++f)  // a volume seen only from outside its interfaces
-    if (mesh.volumeSides.isInterface(f)) tags.insert(mesh.volumeSides.outerPhysicalTag[f]);
+  // Groups on the outside (faces that are not interfaces) are coloured as in a mesh without
+  // interfaces, so a multi-material part looks the same from outside; groups met only inside it, on
+  // interfaces (balls inside a block), take the next colours.
+  std::set<std::int32_t> outside, inside;
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
+    if (!mesh.volumeSides.isInterface(f)) {
+      outside.insert(mesh.facePhysicalTag[f]);
+      continue;
+    }
+    inside.insert(mesh.facePhysicalTag[f]);
+    inside.insert(mesh.volumeSides.outerPhysicalTag[f]);
+  }
+  for (std::int32_t tag : outside) inside.erase(tag);
   int colourIndex = 0;
-  for (std::int32_t tag : tags) {
-    // One group (or none) keeps the neutral colour; faces outside any group keep it too.
-    if (tags.size() == 1 || tag == 0) continue;
+  auto paint = [&](std::int32_t tag) {
     const std::string name = mesh.physicalName(tag);
     scene.materials.push_back(paintedMaterial(name.empty() ? std::to_string(tag) : name,
                                               kPalette[colourIndex++ % std::size(kPalette)]));
     instance.groupMaterials.push_back(
         {std::to_string(tag), static_cast<int>(scene.materials.size() - 1), instance.where});
-  }
+  };
+  // One group outside (or none) keeps the neutral colour; faces outside any group keep it too.
+  for (std::int32_t tag : outside)
+    if (tag != 0 && outside.size() > 1) paint(tag);
+  for (std::int32_t tag : inside)
+    if (tag != 0) paint(tag);
   scene.meshes.push_back(instance);
 
   // Lights sit relative to the mesh's bounding sphere: a key light above, left and in front of the
