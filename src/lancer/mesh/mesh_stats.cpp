@@ -132,6 +132,8 @@ MeshStats computeMeshStats(const Mesh& mesh) {
     face.isQuad() ? ++stats.quads : ++stats.triangles;
     stats.area += faceArea(mesh, f);
     ++stats.facesByPhysicalTag[mesh.facePhysicalTag[f]];
+    if (const std::vector<std::int32_t>* more = mesh.morePhysicalTags(f))
+      for (const std::int32_t tag : *more) ++stats.facesByPhysicalTag[tag];
     for (int c = 0; c < face.cornerCount(); ++c) stats.worldBounds.extend(mesh.worldPosition(face.vertex[c]));
   }
   const FaceShells faceShells = findFaceShells(mesh.faces);

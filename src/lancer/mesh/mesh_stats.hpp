@@ -49,7 +49,7 @@ struct MeshStats {
   double area = 0;
   std::uint64_t triangles = 0;
   std::uint64_t quads = 0;
-  std::map<std::int32_t, std::uint64_t> facesByPhysicalTag;
+  std::map<std::int32_t, std::uint64_t> facesByPhysicalTag;  // a face counts under each of its groups
   std::vector<MeshShell> shells;  // largest first
 };
 
