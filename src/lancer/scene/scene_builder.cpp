@@ -6,12 +6,14 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <numbers>
 
 #include <fmt/format.h>
 
 #include "lancer/mesh/feature_edges.hpp"
 #include "lancer/mesh/msh_reader.hpp"
+#include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/scene.hpp"
@@ -52,7 +54,10 @@ Mesh readInstanceMesh(const MeshInstance& instance) {
   std::error_code error;
   if (!std::filesystem::exists(instance.file, error))
     throw InputError(instance.where, fmt::format("mesh file '{}' does not exist", instance.file));
-  return readMsh(instance.file);
+  Mesh mesh = readMsh(instance.file);
+  if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
+    throw InputError(instance.where, fmt::format("mesh '{}' has nothing to draw: {}", instance.file, reason));
+  return mesh;
 }
 
 // Material of each physical tag named in `groups`, checked against the mesh's groups.
@@ -85,6 +90,17 @@ std::vector<std::pair<std::int32_t, std::uint32_t>> resolveGroupMaterials(const 
                                                 instance.file, entry.group, known.empty() ? "none" : known));
     }
     result.emplace_back(tag, static_cast<std::uint32_t>(entry.material));
+  }
+  // A face in several groups takes the most specific mapping: the group with the fewest faces, and
+  // of equal ones the mapping written last. The face loop lets the last match win, so the mappings
+  // are ordered from the largest group down (stable: file order among equals).
+  if (!mesh.extraPhysicalGroups.empty() && result.size() > 1) {
+    std::map<std::int32_t, std::uint64_t> faces;
+    for (const auto& mapping : result) faces[mapping.first] = 0;
+    for (std::size_t f = 0; f < mesh.faceCount(); ++f)
+      for (auto& [tag, count] : faces) count += mesh.faceInPhysicalGroup(f, tag);
+    std::stable_sort(result.begin(), result.end(),
+                     [&](const auto& a, const auto& b) { return faces[a.first] > faces[b.first]; });
   }
   return result;
 }
@@ -149,6 +165,7 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const MeshInstance& instance = description.meshes[i];
     Mesh& mesh = meshes[i];
+    scene.warnings.insert(scene.warnings.end(), mesh.source.warnings.begin(), mesh.source.warnings.end());
     const auto groupMaterials = resolveGroupMaterials(instance, mesh);
     const ShadingMode shading = instance.shading.value_or(description.render.shading);
 
@@ -199,7 +216,7 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
       }
       std::uint32_t material = static_cast<std::uint32_t>(instance.material);
       for (const auto& [tag, groupMaterial] : groupMaterials)
-        if (mesh.facePhysicalTag[f] == tag) material = groupMaterial;
+        if (mesh.faceInPhysicalGroup(f, tag)) material = groupMaterial;
       scene.faces.push_back(face);
       scene.faceNormals.push_back(faceNormal(scene.positions, face));
       scene.cornerNormals.faceCorner.push_back(corners);
