@@ -124,6 +124,66 @@ Format byExtension(const std::string& path) {
   return Format::kNone;
 }
 
+const char* nativeExtension(Format format) {
+  switch (format) {
+    case Format::kGeo: return ".geo";
+    case Format::kStlAscii:
+    case Format::kStlBinary: return ".stl";
+    case Format::kStep: return ".step";
+    case Format::kIges: return ".iges";
+    case Format::kBrep: return ".brep";
+    case Format::kPos: return ".pos";
+    case Format::kVtk: return ".vtk";
+    case Format::kObj: return ".obj";
+    case Format::kNone: break;
+  }
+  return nullptr;
+}
+
+// The message for a file of `format` at `path` (renamed to its native extension when `rename` says
+// so); out: the .msh to write.
+std::string describe(Format format, std::string_view text, const std::string& path, const std::string& out,
+                     const std::string& rename) {
+  const std::string name = std::filesystem::path(out).filename().string();
+  switch (format) {
+    case Format::kGeo: {
+      // A script that makes volumes wants -3; otherwise surfaces are what lancer draws.
+      const bool volumes = text.find("Volume") != std::string_view::npos || text.find("Box(") != text.npos ||
+                           text.find("Sphere(") != text.npos || text.find("Cylinder(") != text.npos;
+      return fmt::format("this is a gmsh geometry script (.geo), not a mesh: {}mesh it with 'gmsh {} -{} -o {}'",
+                         rename, path, volumes ? 3 : 2, out);
+    }
+    case Format::kStlAscii:
+    case Format::kStlBinary:
+      return fmt::format("this is an STL surface ({}), not a gmsh mesh: {}convert it with 'gmsh {} -save -o {}'",
+                         format == Format::kStlBinary ? "binary" : "ASCII", rename, path, out);
+    case Format::kStep:
+      return fmt::format("this is a STEP CAD model, not a mesh: {}mesh it with 'gmsh {} -2 -o {}' (-3 to mesh "
+                         "its volumes)",
+                         rename, path, out);
+    case Format::kIges:
+      return fmt::format("this is an IGES CAD model, not a mesh: {}mesh it with 'gmsh {} -2 -o {}'", rename, path,
+                         out);
+    case Format::kBrep:
+      return fmt::format("this is an OpenCASCADE BREP model, not a mesh: {}mesh it with 'gmsh {} -2 -o {}'",
+                         rename, path, out);
+    case Format::kPos:
+      return fmt::format("this is a gmsh post-processing view (.pos), not a mesh: save it as a mesh with its "
+                         "data: {}write 'Save View[0] \"{}\";' in save.geo and run 'gmsh {} save.geo -0'",
+                         rename, name, path);
+    case Format::kVtk:
+      return fmt::format("this is a VTK file, not a gmsh mesh: {}convert it with 'gmsh {} -save -o {}'", rename,
+                         path, out);
+    case Format::kObj:
+      return fmt::format("this is a Wavefront OBJ mesh, which gmsh does not read: convert it, e.g. with "
+                         "meshio: 'meshio convert {} {}'",
+                         path, out);
+    case Format::kNone:
+      break;
+  }
+  return {};
+}
+
 }  // namespace
 
 bool looksLikeMsh(std::span<const char> head) {
@@ -136,45 +196,16 @@ std::string foreignFileMessage(std::span<const char> head, std::uint64_t fileByt
   if (looksLikeMsh(head)) return {};
   Format format = byContent(text, fileBytes);
   if (format == Format::kNone) format = byExtension(path);
-  const std::string stem = std::filesystem::path(path).replace_extension(".msh").string();
-  const std::string name = std::filesystem::path(stem).filename().string();
-  switch (format) {
-    case Format::kGeo: {
-      // A script that makes volumes wants -3 (gmsh saves only the elements of the top dimension's
-      // physical groups when it has some); otherwise surfaces are what lancer draws.
-      const bool volumes = text.find("Volume") != std::string_view::npos || text.find("Box(") != text.npos ||
-                           text.find("Sphere(") != text.npos || text.find("Cylinder(") != text.npos;
-      return fmt::format("this is a gmsh geometry script (.geo), not a mesh: mesh it with 'gmsh {} -{} -o {}'",
-                         path, volumes ? 3 : 2, stem);
-    }
-    case Format::kStlAscii:
-    case Format::kStlBinary:
-      return fmt::format("this is an STL surface ({}), not a gmsh mesh: convert it with 'gmsh {} -save -o {}'",
-                         format == Format::kStlBinary ? "binary" : "ASCII", path, stem);
-    case Format::kStep:
-      return fmt::format("this is a STEP CAD model, not a mesh: mesh it with 'gmsh {} -2 -o {}' (-3 to mesh "
-                         "its volumes)",
-                         path, stem);
-    case Format::kIges:
-      return fmt::format("this is an IGES CAD model, not a mesh: mesh it with 'gmsh {} -2 -o {}'", path, stem);
-    case Format::kBrep:
-      return fmt::format("this is an OpenCASCADE BREP model, not a mesh: mesh it with 'gmsh {} -2 -o {}'",
-                         path, stem);
-    case Format::kPos:
-      return fmt::format("this is a gmsh post-processing view (.pos), not a mesh: save it as a mesh with its "
-                         "data: write 'Save View[0] \"{}\";' in save.geo and run 'gmsh {} save.geo -0'",
-                         name, path);
-    case Format::kVtk:
-      return fmt::format("this is a VTK file, not a gmsh mesh: convert it with 'gmsh {} -save -o {}'", path,
-                         stem);
-    case Format::kObj:
-      return fmt::format("this is a Wavefront OBJ mesh, which gmsh does not read: convert it, e.g. with "
-                         "meshio: 'meshio convert {} {}'",
-                         path, stem);
-    case Format::kNone:
-      break;
-  }
-  return {};
+  if (format == Format::kNone) return {};
+  // gmsh picks its reader by extension: a file recognised by content under another name is renamed
+  // first (and an STL named part.msh is not converted onto itself). meshio reads OBJ by content.
+  const std::string extension = lower(std::filesystem::path(path).extension().string());
+  const bool renamed = byExtension(path) != format && format != Format::kObj &&
+                       !(format == Format::kStlBinary && extension == ".stl");
+  const std::string source =
+      renamed ? std::filesystem::path(path).replace_extension(nativeExtension(format)).string() : path;
+  const std::string out = std::filesystem::path(path).replace_extension(".msh").string();
+  return describe(format, text, source, out, renamed ? fmt::format("rename it to {}, then ", source) : "");
 }
 
 }  // namespace lancer
