@@ -54,10 +54,10 @@ class Msh2ElementSink {
     const auto tag = static_cast<std::uint64_t>(element.tag);
     state_.minElementTag = std::min(state_.minElementTag, tag);
     state_.maxElementTag = std::max(state_.maxElementTag, tag);
-    sortedNodes_.assign(nodeTags, nodeTags + nodeCount);
-    std::sort(sortedNodes_.begin(), sortedNodes_.end());
+    std::uint64_t nodeSum = 0;
+    for (std::size_t n = 0; n < nodeCount; ++n) nodeSum += nodeTags[n];
     const bool repeat = element.type == previousType_ && element.entity == previousEntity_ &&
-                        sortedNodes_ == previousNodes_;
+                        nodeSum == previousNodeSum_ && sameNodes(nodeTags, nodeCount);
     const bool tagSeen = !seen_.insert(element.tag);
     if (tagSeen || repeat) {
       ++state_.source.duplicateElementsSkipped;
@@ -75,7 +75,8 @@ class Msh2ElementSink {
     previousEntity_ = element.entity;
     previousPhysical_ = element.physical;
     lastExtra_ = 0;
-    previousNodes_.swap(sortedNodes_);
+    previousNodeSum_ = nodeSum;
+    previousNodes_.assign(nodeTags, nodeTags + nodeCount);
     if (element.partitions > 0)
       state_.source.partitionCount =
           std::max(state_.source.partitionCount, static_cast<std::uint32_t>(element.partitions));
@@ -93,6 +94,16 @@ class Msh2ElementSink {
   }
 
  private:
+  // The same nodes as the previous element, in its order or any other (a reversed copy).
+  bool sameNodes(const std::uint64_t* nodeTags, std::size_t nodeCount) {
+    if (std::equal(nodeTags, nodeTags + nodeCount, previousNodes_.begin(), previousNodes_.end())) return true;
+    sortedNodes_.assign(nodeTags, nodeTags + nodeCount);
+    std::sort(sortedNodes_.begin(), sortedNodes_.end());
+    std::vector<std::uint64_t> previous = previousNodes_;
+    std::sort(previous.begin(), previous.end());
+    return sortedNodes_ == previous;
+  }
+
   MshReadState& state_;
   SeenElementTags seen_;
   int previousType_ = 0;
@@ -100,7 +111,8 @@ class Msh2ElementSink {
   std::int32_t previousEntity_ = 0;
   std::int32_t previousPhysical_ = 0;
   std::int32_t lastExtra_ = 0;  // the last further group recorded for the kept element's entity
-  std::vector<std::uint64_t> previousNodes_;  // sorted
+  std::vector<std::uint64_t> previousNodes_;
+  std::uint64_t previousNodeSum_ = 0;  // a cheap first test: most elements are not copies
   std::vector<std::uint64_t> sortedNodes_;
   std::uint32_t nodeIndex_[kMaxMshElementNodes];
 };

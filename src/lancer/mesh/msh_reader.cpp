@@ -184,8 +184,6 @@ void skipRepeatedMeshSection(MshReadState& state, std::string_view name, const c
   cursor.seek(start + first.size());
 }
 
-// A post-processing section lancer cannot read does not stop the mesh from loading: it is skipped
-// to its end marker with a warning (and color_by naming it says why it is missing).
 // The view's name in a field section's header (its first string tag), or "" when it has none.
 std::string_view sectionFieldName(const char* from, const char* to) {
   const std::string_view header(from, static_cast<std::size_t>(to - from));
@@ -196,6 +194,8 @@ std::string_view sectionFieldName(const char* from, const char* to) {
   return header.substr(open + 1, std::min<std::size_t>(close - open - 1, 200));
 }
 
+// A post-processing section lancer cannot read does not stop the mesh from loading: it is skipped
+// to its end marker with a warning (and color_by naming it says why it is missing).
 template <typename ReadSection>
 void readFieldSection(MshReadState& state, std::string_view name, const char* start, ReadSection read) {
   MshCursor& cursor = state.cursor;
