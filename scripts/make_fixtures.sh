@@ -189,3 +189,4 @@ write("binary_v40.msh", replace_once(a40, b"4 0 8\n", b"4 1 8\n\x01\x00\x00\x00\
 PY
 echo "fixtures: $(ls "$out"/*.msh | wc -l) files, broken corpus: $(ls "$out"/broken/*.msh | wc -l) files, $(du -sh "$out" | cut -f1)"
 scripts/gmsh_reference.sh  # what gmsh itself reports for each fixture, the oracle of msh_gmsh_reference_test
+scripts/make_reader_fixtures.sh  # tests/data/reader: groups, order 3+, nothing to draw, appended views, non-mesh files

@@ -10,6 +10,7 @@
 #include "lancer/mesh/mesh_stats.hpp"
 #include "lancer/mesh/msh_element_types.hpp"
 #include "lancer/mesh/msh_reader.hpp"
+#include "lancer/mesh/nothing_to_draw.hpp"
 
 namespace lancer::cli {
 namespace {
@@ -68,10 +69,15 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
              source.partitionCount ? fmt::format(", {} partitions", source.partitionCount) : "");
   fmt::print("nodes:           {}\n", source.nodeCount);
   fmt::print("elements read:\n");
-  for (const auto& [type, count] : source.elementsByType)
-    fmt::print("  {:>10}  {} (type {})\n", count, mshElementTypeName(type), type);
+  for (const auto& [type, count] : source.elementsByType) {
+    const std::string how = mshElementRenderNote(type);
+    fmt::print("  {:>10}  {} (type {}){}\n", count, mshElementTypeName(type), type,
+               how.empty() ? "" : ": " + how);
+  }
   fmt::print("faces rendered:  {} ({} triangles, {} quads)\n", mesh.faceCount(), stats.triangles,
              stats.quads);
+  if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
+    fmt::print("nothing to draw: {}\n", reason);
   if (source.volumeElements)
     fmt::print("volume skin:     {} faces from {} volume elements ({} already surface elements)\n",
                source.skinFaces, source.volumeElements, source.skinFacesCoveredBySurfaces);
@@ -81,16 +87,17 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
   if (!source.unrenderableByType.empty()) {
     fmt::print("not rendered:\n");
     for (const auto& [type, count] : source.unrenderableByType)
-      fmt::print("  {:>10}  {} (type {}): lancer renders up to second order\n", count,
+      fmt::print("  {:>10}  {} (type {}): lancer does not draw this type\n", count,
                  mshElementTypeName(type), type);
   }
   if (source.duplicateElementsSkipped)
     fmt::print(
         "copies skipped:  {} (MSH 2 repeats an element for each further physical group; the first "
-        "copy is kept)\n",
+        "copy is kept, in all the groups)\n",
         source.duplicateElementsSkipped);
   if (source.degenerateFacesDropped)
     fmt::print("warning: {} degenerate (zero-area) faces dropped\n", source.degenerateFacesDropped);
+  for (const std::string& warning : source.warnings) fmt::print("{}\n", warning);
   fmt::print("physical groups:\n");
   for (const PhysicalGroup& group : mesh.physicalGroups) {
     const auto faces = stats.facesByPhysicalTag.find(group.tag);
@@ -159,6 +166,12 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
   out += fmt::format("  \"volumeElements\": {},\n  \"skinFaces\": {},\n  \"degenerateFacesDropped\": {},\n",
                      source.volumeElements, source.skinFaces, source.degenerateFacesDropped);
   out += fmt::format("  \"duplicateElementsSkipped\": {},\n", source.duplicateElementsSkipped);
+  const std::string reason = nothingToDrawReason(mesh);
+  out += fmt::format("  \"nothingToDraw\": {},\n", reason.empty() ? "null" : jsonString(reason));
+  out += "  \"warnings\": [";
+  for (std::size_t i = 0; i < source.warnings.size(); ++i)
+    out += fmt::format("{}{}", i ? ", " : "", jsonString(source.warnings[i]));
+  out += "],\n";
   out += "  \"physicalGroups\": [";
   for (std::size_t i = 0; i < mesh.physicalGroups.size(); ++i) {
     const PhysicalGroup& group = mesh.physicalGroups[i];

@@ -4,10 +4,34 @@
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <string>
+#include <vector>
 
 #include "commands.hpp"
+#include "lancer/scene/suggest.hpp"
 #include "lancer/util/input_error.hpp"
 #include "lancer/util/memory_budget.hpp"
+
+namespace {
+
+// The first word of the command line when it names no subcommand (`lancer view x`), else "".
+std::string unknownSubcommand(CLI::App& app, int argc, char** argv) {
+  if (!app.get_subcommands().empty()) return {};
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "--max-memory") {
+      ++i;  // the global option's value
+      continue;
+    }
+    if (word.empty() || word[0] == '-') continue;
+    for (const CLI::App* command : app.get_subcommands({}))
+      if (command->check_name(word)) return {};
+    return word;
+  }
+  return {};
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace lancer::cli;
@@ -38,6 +62,17 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    if (const std::string unknown = unknownSubcommand(app, argc, argv); !unknown.empty()) {
+      std::vector<std::string> names;
+      std::string commands;
+      for (const CLI::App* command : app.get_subcommands({})) {
+        names.push_back(command->get_name());
+        commands += (commands.empty() ? "" : ", ") + command->get_name();
+      }
+      std::fprintf(stderr, "lancer: error: unknown subcommand '%s'%s; the commands are %s (lancer --help)\n",
+                   unknown.c_str(), lancer::didYouMean(unknown, names).c_str(), commands.c_str());
+      return kExitBadInput;
+    }
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitBadInput;
   }

@@ -5,10 +5,15 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <vector>
 
 #include "lancer/image/image.hpp"
+#include "lancer/mesh/foreign_formats.hpp"
 #include "lancer/mesh/msh_reader.hpp"
+#include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/scene_loader.hpp"
@@ -24,10 +29,20 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// A .msh by name, or a file that is no scene: a mesh by content, or a file that is neither (a .geo,
+// STL, STEP, ...), which the mesh reader names with the gmsh command that makes a mesh of it.
 bool isMeshFile(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".msh";
+  if (extension == ".msh") return true;
+  if (extension == ".toml") return false;
+  std::ifstream in(path, std::ios::binary);
+  std::vector<char> head(4096);
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  return looksLikeMsh(head) || !foreignFileMessage(head, error ? 0 : size, path).empty();
 }
 
 ShadingMode shadingFromName(const std::string& name) {
@@ -88,6 +103,8 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
   std::vector<Mesh> preloaded;
   if (isMeshFile(input)) {
     preloaded.push_back(readMsh(input));
+    if (const std::string reason = nothingToDrawReason(preloaded.front()); !reason.empty())
+      throw InputError(SourceLocation{input}, "nothing to draw: " + reason);
     description = quickLookScene(input, preloaded.front());
   } else {
     description = loadScene(input);
@@ -114,6 +131,8 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
     for (MeshInstance& mesh : description.meshes) mesh.shading.reset();
   }
   Scene scene = preloaded.empty() ? buildScene(description) : buildScene(description, std::move(preloaded));
+  if (!overrides.quiet)
+    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
   const double loadSeconds = secondsSince(start);
   const auto buildStart = std::chrono::steady_clock::now();
   Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, parseAccelKind(overrides.accel));

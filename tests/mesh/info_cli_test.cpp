@@ -57,8 +57,11 @@ TEST(InfoCli, TextReportOfAClosedSkinAndUnrenderableElements) {
       << skin.output;
   const CommandResult cubic = runCli("info '" + test::mshFixture("square_tri10_v41_ascii.msh") + "'");
   ASSERT_EQ(cubic.exitCode, 0) << cubic.output;
-  EXPECT_TRUE(contains(cubic.output, "not rendered:\n          32  10-node triangle (type 21)"))
+  EXPECT_TRUE(contains(cubic.output,
+                       "          32  10-node triangle (type 21): split into flat faces through all its nodes\n"))
       << cubic.output;
+  EXPECT_TRUE(contains(cubic.output, "faces rendered:  288 (288 triangles, 0 quads)")) << cubic.output;
+  EXPECT_FALSE(contains(cubic.output, "not rendered:")) << cubic.output;
 }
 
 TEST(InfoCli, JsonReport) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -243,15 +245,26 @@ TEST(MshReader, EightNodeQuadCentreIsTheSerendipityCentre) {
     for (int j = 0; j < 4; ++j) EXPECT_TRUE(points.count({2 * i + 1, 2 * j + 1})) << i << "," << j;
 }
 
-TEST(MshReader, ThirdOrderElementsAreCountedAsUnrenderable) {
+TEST(MshReader, ThirdOrderTrianglesAreSplitThroughAllTheirNodes) {
   for (const char* file :
        {"square_tri10_v22_ascii.msh", "square_tri10_v22_bin.msh", "square_tri10_v40_ascii.msh",
         "square_tri10_v41_ascii.msh", "square_tri10_v41_bin.msh"}) {
     SCOPED_TRACE(file);
     const Mesh mesh = readMsh(mshFixture(file));
-    EXPECT_EQ(mesh.faceCount(), 0u);
-    EXPECT_EQ(mesh.source.unrenderableByType, (std::map<int, std::uint64_t>{{21, 32}}));
-    EXPECT_EQ(mesh.source.elementsByType.at(26), 16u);  // 4-node lines are skipped, not unrenderable
+    // 32 10-node triangles, 9 flat faces each, over all 169 nodes of the unit square.
+    EXPECT_EQ(mesh.faceCount(), 32u * 9u);
+    EXPECT_EQ(mesh.positions.size(), 169u);
+    EXPECT_TRUE(mesh.source.unrenderableByType.empty());
+    EXPECT_EQ(mesh.source.elementsByType.at(26), 16u);  // 4-node lines are skipped
+    const MeshStats stats = computeMeshStats(mesh);
+    EXPECT_NEAR(stats.area, 1.0, 1e-12);
+    // The split faces share their vertices and keep the element's winding: one open shell.
+    ASSERT_EQ(stats.shells.size(), 1u);
+    EXPECT_TRUE(stats.shells[0].consistentlyOriented);
+    // Element edges: the outer edges of the 9 faces, 3 per element edge.
+    std::size_t drawnEdges = 0;
+    for (const std::uint8_t mask : mesh.faceEdgeMask) drawnEdges += static_cast<std::size_t>(std::popcount(mask));
+    EXPECT_EQ(drawnEdges, 32u * 9u);
   }
 }
 
@@ -395,7 +408,16 @@ TEST(MshElementTypes, NodeCountsAndRolesFollowGmsh) {
   EXPECT_EQ(mshElementType(26).role, MshElementRole::kIgnored);
   EXPECT_EQ(mshElementType(9).role, MshElementRole::kSurface);
   EXPECT_EQ(mshElementType(19).role, MshElementRole::kVolume);
-  EXPECT_EQ(mshElementType(21).role, MshElementRole::kUnrenderable);
+  EXPECT_EQ(mshElementType(21).role, MshElementRole::kSurface);   // 10-node triangle
+  EXPECT_EQ(mshElementType(36).role, MshElementRole::kSurface);   // 16-node quadrangle
+  EXPECT_EQ(mshElementType(29).role, MshElementRole::kVolume);    // 20-node tetrahedron
+  EXPECT_EQ(mshElementType(92).role, MshElementRole::kVolume);    // 64-node hexahedron
+  EXPECT_EQ(mshElementType(34).role, MshElementRole::kUnrenderable);  // polygon
+  EXPECT_EQ(mshElementType(84).role, MshElementRole::kUnrenderable);  // 1-node line
+  EXPECT_EQ(mshElementType(140).role, MshElementRole::kUnrenderable);  // trihedron
+  EXPECT_EQ(mshCompleteSurfaceOrder(21), 3);
+  EXPECT_EQ(mshCompleteSurfaceOrder(40), 0);  // 16-node quadrangle of order 4, incomplete
+  EXPECT_EQ(mshCompleteSurfaceOrder(51), 10);
   EXPECT_EQ(mshElementType(29).dimension, 3);
   EXPECT_EQ(mshElementTypeName(11), "10-node tetrahedron");
   EXPECT_EQ(mshElementTypeName(34), "variable-size polygon");

@@ -156,8 +156,9 @@ TEST(VolumeInterface, FacesOnNonManifoldRimsBoundSolidsWoundOutOfTheirVolume) {
     const float middle = slabs.faceMaterial[f] == 0 ? 0.5f : -0.5f;
     const Vec3 fromMiddle = centroid(slabs, f) - slabs.toSceneSpace({0, middle, 0});
     ASSERT_GT(dot(slabs.faceNormals[f], fromMiddle), 0.0f) << f;
-    if (slabs.faceOuterMaterial[f] != Scene::kNoMaterial)
+    if (slabs.faceOuterMaterial[f] != Scene::kNoMaterial) {
       ASSERT_NE(slabs.faceOuterMaterial[f], slabs.faceMaterial[f]) << f;
+    }
   }
   const Scene hexes = test::sceneFromMeshes(twoMaterials("Box", "Cylinder"),
                                             {readMsh(multimaterial("box_cylinder_hex_v41.msh"))});

@@ -134,6 +134,15 @@ Case mshCase(const std::string& file, std::string what) {
           nullptr};
 }
 
+// `lancer render` of a gmsh-made file in tests/data/reader/ (scripts/make_reader_fixtures.sh).
+Case readerCase(std::string id, std::string what, const std::string& file, const std::string& as = "") {
+  const std::string name = as.empty() ? file : as;
+  return {std::move(id), std::move(what),
+          "`tests/data/reader/" + file + "`" + (as.empty() ? "" : " as `" + as + "`"),
+          [file, name](const Scratch& s) { s.copy(dataFile("reader/" + file), name); },
+          "$LANCER render -q " + name + " -o out.png", nullptr};
+}
+
 // After a failed write: the old out.png is intact and nothing else is in the folder `folder`.
 std::function<void(const Scratch&)> oldOutputKept(const std::string& file, const std::string& folder = "") {
   return [file, folder](const Scratch& s) {
@@ -161,7 +170,10 @@ std::vector<Case> catalogue() {
       mshCase("byte_swapped.msh", "byte-swapped (big-endian) binary file"),
       mshCase("bad_check_word.msh", "corrupt endianness check word"),
       mshCase("no_end_mesh_format.msh", "misspelt section end"),
-      mshCase("only_mesh_format.msh", "header only, no nodes or elements"),
+      {"msh_only_mesh_format", "header only, no nodes or elements, rendered",
+       "`tests/data/msh/broken/only_mesh_format.msh`",
+       [](const Scratch& s) { s.copy(dataFile("msh/broken/only_mesh_format.msh"), "only_mesh_format.msh"); },
+       "$LANCER render -q only_mesh_format.msh -o out.png", nullptr},
       mshCase("truncated_nodes_ascii.msh", "truncated inside $Nodes (ASCII)"),
       mshCase("truncated_elements_ascii.msh", "truncated inside $Elements (ASCII)"),
       mshCase("truncated_nodes_bin.msh", "truncated inside $Nodes (binary 4.1)"),
@@ -292,6 +304,61 @@ std::vector<Case> catalogue() {
        "`--max-memory 64M`, `width = height = 4000`, `-o out.gif`",
        withScene("[render]\nwidth = 4000\nheight = 4000\n[[mesh]]\nfile = \"part.msh\"\n"),
        "$LANCER render -q --max-memory 64M scene.toml -o out.gif", nullptr},
+
+      // Rows added later go at the end, so that the row numbers cited above the table stay.
+      // --- gmsh files with nothing to draw, and files that are not meshes (tests/data/reader) ---
+      readerCase("draw_lines_only_v41", "only lines (meshed with -1), MSH 4.1", "outline_only_v41_ascii.msh"),
+      readerCase("draw_lines_only_v22", "only lines (meshed with -1), MSH 2.2", "outline_only_v22_ascii.msh"),
+      readerCase("draw_no_elements", "model saved unmeshed (-0): no elements", "square_unmeshed_v41_ascii.msh"),
+      readerCase("draw_volumes_meshed_2d_v41", "Physical Volumes meshed with -2, MSH 4.1",
+                 "box_volume_group_2d_v41_ascii.msh"),
+      readerCase("draw_volumes_meshed_2d_v22", "Physical Volumes meshed with -2, MSH 2.2",
+                 "box_volume_group_2d_v22_ascii.msh"),
+      {"draw_scene_mesh_lines_only", "a scene's mesh has nothing to draw", "`file = \"lines.msh\"` (only lines)",
+       [](const Scratch& s) {
+         s.copy(dataFile("reader/outline_only_v41_ascii.msh"), "lines.msh");
+         s.write("scene.toml", "[[mesh]]\nfile = \"lines.msh\"\n");
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+      readerCase("mesh_changed_before_view", "appended view after a different copy of the mesh",
+                 "appended_view_changed_v41_ascii.msh"),
+      {"not_mesh_geo", "a .geo script", "`tests/data/geo/cube_tet.geo` as `part.geo`",
+       [](const Scratch& s) { s.copy(dataFile("geo/cube_tet.geo"), "part.geo"); },
+       "$LANCER render -q part.geo -o out.png", nullptr},
+      {"not_mesh_geo_surface", "a .geo script of a surface, to info", "`tests/data/geo/square.geo` as `t1.geo`",
+       [](const Scratch& s) { s.copy(dataFile("geo/square.geo"), "t1.geo"); }, "$LANCER info t1.geo", nullptr},
+      readerCase("not_mesh_stl_ascii", "an ASCII STL", "sphere.stl", "part.stl"),
+      readerCase("not_mesh_stl_binary", "a binary STL under another name", "sphere_binary.stl", "part.dat"),
+      {"not_mesh_stl_info", "an STL given to info", "`tests/data/reader/sphere.stl` as `part.stl`",
+       [](const Scratch& s) { s.copy(dataFile("reader/sphere.stl"), "part.stl"); }, "$LANCER info part.stl",
+       nullptr},
+      readerCase("not_mesh_step", "a STEP model", "box.step", "part.stp"),
+      readerCase("not_mesh_brep", "a BREP model", "box.brep", "part.brep"),
+      readerCase("not_mesh_pos", "a .pos view", "temperature.pos", "view.pos"),
+      readerCase("not_mesh_vtk", "a VTK file", "sphere.vtk", "part.vtk"),
+      readerCase("not_mesh_stl_as_msh", "an STL named .msh", "sphere.stl", "part.msh"),
+      {"not_mesh_obj", "a Wavefront OBJ (gmsh writes none: a 4-line one)", "`v`/`f` lines in `part.obj`",
+       [](const Scratch& s) { s.write("part.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"); },
+       "$LANCER render -q part.obj -o out.png", nullptr},
+      {"not_mesh_scene_stl", "a scene's mesh is an STL", "`file = \"part.stl\"`",
+       [](const Scratch& s) {
+         s.copy(dataFile("reader/sphere.stl"), "part.stl");
+         s.write("scene.toml", "[[mesh]]\nfile = \"part.stl\"\n");
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+      {"field_section_unreadable", "color_by a field whose section could not be read",
+       "`color_by = { field = \"temperature\" }`, its `$NodeData` with 0 components",
+       [](const Scratch& s) {
+         s.copy(dataFile("reader/unreadable_nodedata_v41_ascii.msh"), "part.msh");
+         s.write("scene.toml", "[[mesh]]\nfile = \"part.msh\"\ncolor_by = { field = \"temperature\" }\n");
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+
+      // --- command line, continued ---
+      {"cli_unknown_subcommand", "unknown subcommand", "`lancer view part.msh`", nullptr,
+       "$LANCER view part.msh", nullptr},
+      {"cli_misspelt_subcommand", "misspelt subcommand", "`lancer rendr part.msh`", nullptr,
+       "$LANCER rendr part.msh", nullptr},
   };
   return cases;
 }

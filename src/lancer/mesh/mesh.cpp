@@ -12,6 +12,13 @@ std::string Mesh::physicalName(std::int32_t tag) const {
   return best ? best->name : std::string();
 }
 
+const std::vector<std::int32_t>* Mesh::findMorePhysicalTags(std::int32_t entity, std::int32_t first) const {
+  // A handful of entries (one per entity with several groups): a linear scan is the fastest lookup.
+  for (const ExtraPhysicalGroups& extra : extraPhysicalGroups)
+    if (extra.entity == entity && extra.first == first) return &extra.more;
+  return nullptr;
+}
+
 Aabb faceBounds(const Mesh& mesh) {
   Aabb box;
   for (const MeshFace& face : mesh.faces) {

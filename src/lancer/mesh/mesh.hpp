@@ -2,9 +2,11 @@
 // elementary tags gmsh attached, plus what the reader saw (format, counts) for `lancer info`.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lancer/math/aabb.hpp"
@@ -52,6 +54,18 @@ struct PhysicalGroup {
   std::string name;  // empty when the file gives no $PhysicalNames entry
 };
 
+// An elementary entity that is in more than one physical group (gmsh lets a surface or volume belong
+// to several; MSH 4 lists them all in $Entities, MSH 2 repeats each element once per group). Its faces
+// carry the first group in Mesh::facePhysicalTag and the others here, so a mesh whose entities have
+// at most one group each costs nothing extra. Matched by (entity, first): faces do not record
+// whether they came from a surface or a volume entity.
+struct ExtraPhysicalGroups {
+  int dimension = 0;        // of the entity
+  std::int32_t entity = 0;  // the faces' faceEntityTag
+  std::int32_t first = 0;   // the faces' facePhysicalTag
+  std::vector<std::int32_t> more;
+};
+
 // What the reader saw, for `lancer info` and for warnings.
 struct MeshSourceInfo {
   std::string path;
@@ -69,6 +83,11 @@ struct MeshSourceInfo {
   std::uint64_t interfaceFaces = 0;                // faces shared by two volumes (counted in skinFaces)
   std::uint64_t interfaceSurfaceElementsMerged = 0;  // surface elements on interfaces, merged into them
   std::uint32_t partitionCount = 0;                // mesh partitions the file declares (0: none)
+  // Things the reader accepted but the user should know, each "file:line:col: warning: ..." (values
+  // for nodes the file does not save, a field section it could not read and skipped, ...).
+  std::vector<std::string> warnings;
+  // Fields in sections the reader skipped (see warnings): name and the warning, for color_by.
+  std::vector<std::pair<std::string, std::string>> skippedFields;
   double loadSeconds = 0;
 };
 
@@ -87,6 +106,7 @@ struct Mesh {
   // Empty unless the mesh has interfaces between volumes (then 9 bytes more per face).
   FaceVolumeSides volumeSides;
   std::vector<PhysicalGroup> physicalGroups;
+  std::vector<ExtraPhysicalGroups> extraPhysicalGroups;  // empty unless an entity has several groups
   std::vector<MeshField> fields;  // $NodeData then $ElementData steps, each in file order
   MeshSourceInfo source;
 
@@ -94,6 +114,23 @@ struct Mesh {
   Vec3d worldPosition(std::uint32_t vertex) const { return origin + toDouble(positions[vertex]); }
   // Name of the physical group with this tag (surfaces first), or "" when unnamed.
   std::string physicalName(std::int32_t tag) const;
+  // The groups face f belongs to after its first (facePhysicalTag[f]); null when none.
+  const std::vector<std::int32_t>* morePhysicalTags(std::size_t f) const {
+    return extraPhysicalGroups.empty() ? nullptr : findMorePhysicalTags(faceEntityTag[f], facePhysicalTag[f]);
+  }
+  // Whether face f is in the physical group `tag` (its first group or any other).
+  bool faceInPhysicalGroup(std::size_t f, std::int32_t tag) const {
+    return inPhysicalGroup(facePhysicalTag[f], faceEntityTag[f], tag);
+  }
+  // The same for the entity `entity` whose first group is `first` (an interface's outer volume too).
+  bool inPhysicalGroup(std::int32_t first, std::int32_t entity, std::int32_t tag) const {
+    if (first == tag) return true;
+    const std::vector<std::int32_t>* more = extraPhysicalGroups.empty() ? nullptr : findMorePhysicalTags(entity, first);
+    return more && std::find(more->begin(), more->end(), tag) != more->end();
+  }
+
+ private:
+  const std::vector<std::int32_t>* findMorePhysicalTags(std::int32_t entity, std::int32_t first) const;
 };
 
 // Bounding box of the vertices actually used by faces, in the mesh's local (origin-relative) frame.

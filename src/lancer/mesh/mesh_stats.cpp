@@ -132,6 +132,8 @@ MeshStats computeMeshStats(const Mesh& mesh) {
     face.isQuad() ? ++stats.quads : ++stats.triangles;
     stats.area += faceArea(mesh, f);
     ++stats.facesByPhysicalTag[mesh.facePhysicalTag[f]];
+    if (const std::vector<std::int32_t>* more = mesh.morePhysicalTags(f))
+      for (const std::int32_t tag : *more) ++stats.facesByPhysicalTag[tag];
     if (mesh.volumeSides.isInterface(f)) {
       const std::int32_t inner = mesh.facePhysicalTag[f], outer = mesh.volumeSides.outerPhysicalTag[f];
       if (outer != inner) ++stats.facesByPhysicalTag[outer];

@@ -51,7 +51,8 @@ struct MeshStats {
   double area = 0;
   std::uint64_t triangles = 0;
   std::uint64_t quads = 0;
-  // Faces that bound each physical group: an interface counts for the volumes on both its sides.
+  // Faces that bound each physical group: a face counts under each of its groups, and an interface
+  // for the volumes on both its sides.
   std::map<std::int32_t, std::uint64_t> facesByPhysicalTag;
   std::map<std::int32_t, std::uint64_t> interfaceFacesByPhysicalTag;
   // Interface faces per pair of volumes (smaller first): a volume is its physical tag (> 0), or minus

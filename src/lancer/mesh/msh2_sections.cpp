@@ -41,7 +41,9 @@ struct Msh2Element {
 };
 
 // gmsh 4 writes an MSH 2 element once per physical group, each copy with a new tag, one after the
-// other; older writers repeat the tag. Either way the first copy (first physical group) is kept.
+// other (a group that takes the entity reversed gets the nodes in reverse order); older writers
+// repeat the tag. The first copy is kept, and the copies' groups become the entity's further groups
+// (Mesh::extraPhysicalGroups), as MSH 4 lists them in $Entities.
 class Msh2ElementSink {
  public:
   explicit Msh2ElementSink(MshReadState& state) : state_(state) {}
@@ -49,18 +51,31 @@ class Msh2ElementSink {
   void add(const Msh2Element& element, const MshElementType& info, const std::uint64_t* nodeTags,
            const char* at) {
     const auto nodeCount = static_cast<std::size_t>(info.nodeCount);
-    const bool repeat =
-        element.type == previousType_ && element.entity == previousEntity_ &&
-        std::equal(nodeTags, nodeTags + nodeCount, previousNodes_.begin(), previousNodes_.end());
-    if (!seen_.insert(element.tag) || repeat) {
+    const auto tag = static_cast<std::uint64_t>(element.tag);
+    state_.minElementTag = std::min(state_.minElementTag, tag);
+    state_.maxElementTag = std::max(state_.maxElementTag, tag);
+    std::uint64_t nodeSum = 0;
+    for (std::size_t n = 0; n < nodeCount; ++n) nodeSum += nodeTags[n];
+    const bool repeat = element.type == previousType_ && element.entity == previousEntity_ &&
+                        nodeSum == previousNodeSum_ && sameNodes(nodeTags, nodeCount);
+    const bool tagSeen = !seen_.insert(element.tag);
+    if (tagSeen || repeat) {
       ++state_.source.duplicateElementsSkipped;
       // gmsh's $ElementData names the last copy: its values belong to the kept one.
-      if (repeat) state_.assembler.aliasElement(static_cast<std::uint64_t>(element.tag), previousTag_);
+      if (repeat) state_.assembler.aliasElement(tag, previousTag_);
+      if ((repeat || element.entity == previousEntity_) && element.physical != previousPhysical_ &&
+          element.physical != lastExtra_) {
+        state_.addExtraGroup(info.dimension, element.entity, previousPhysical_, element.physical);
+        lastExtra_ = element.physical;
+      }
       return;
     }
-    previousTag_ = static_cast<std::uint64_t>(element.tag);
+    previousTag_ = tag;
     previousType_ = element.type;
     previousEntity_ = element.entity;
+    previousPhysical_ = element.physical;
+    lastExtra_ = 0;
+    previousNodeSum_ = nodeSum;
     previousNodes_.assign(nodeTags, nodeTags + nodeCount);
     if (element.partitions > 0)
       state_.source.partitionCount =
@@ -79,12 +94,26 @@ class Msh2ElementSink {
   }
 
  private:
+  // The same nodes as the previous element, in its order or any other (a reversed copy).
+  bool sameNodes(const std::uint64_t* nodeTags, std::size_t nodeCount) {
+    if (std::equal(nodeTags, nodeTags + nodeCount, previousNodes_.begin(), previousNodes_.end())) return true;
+    sortedNodes_.assign(nodeTags, nodeTags + nodeCount);
+    std::sort(sortedNodes_.begin(), sortedNodes_.end());
+    std::vector<std::uint64_t> previous = previousNodes_;
+    std::sort(previous.begin(), previous.end());
+    return sortedNodes_ == previous;
+  }
+
   MshReadState& state_;
   SeenElementTags seen_;
   int previousType_ = 0;
   std::uint64_t previousTag_ = 0;
   std::int32_t previousEntity_ = 0;
+  std::int32_t previousPhysical_ = 0;
+  std::int32_t lastExtra_ = 0;  // the last further group recorded for the kept element's entity
   std::vector<std::uint64_t> previousNodes_;
+  std::uint64_t previousNodeSum_ = 0;  // a cheap first test: most elements are not copies
+  std::vector<std::uint64_t> sortedNodes_;
   std::uint32_t nodeIndex_[kMaxMshElementNodes];
 };
 
@@ -157,7 +186,7 @@ void readMsh2Elements(MshReadState& state) {
         const char* at = cursor.position();
         cursor.copyRaw(record.data(), values);
         const std::int32_t* tags = record.data() + 1;
-        Msh2Element element{record[0], type, tagCount > 0 ? tags[0] : 0, tagCount > 1 ? tags[1] : 0, 0};
+        Msh2Element element{record[0], type, tagCount > 0 ? std::abs(tags[0]) : 0, tagCount > 1 ? tags[1] : 0, 0};
         for (int k = 3; k < tagCount; ++k)
           element.partitions = std::max(element.partitions, std::abs(tags[k]));
         for (int n = 0; n < info.nodeCount; ++n)
@@ -184,7 +213,7 @@ void readMsh2Elements(MshReadState& state) {
                                               element.tag, tagCount));
       for (std::int64_t k = 0; k < tagCount; ++k) {
         const std::int64_t value = cursor.readInt64("an element tag value");
-        if (k == 0) element.physical = static_cast<std::int32_t>(value);
+        if (k == 0) element.physical = static_cast<std::int32_t>(std::abs(value));
         if (k == 1) element.entity = static_cast<std::int32_t>(value);
         if (k >= 3)
           element.partitions =

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <climits>
+#include <cstdlib>
 #include <cstring>
 
 #include "lancer/mesh/msh_sections.hpp"
@@ -43,15 +45,30 @@ class Msh4Values {
   bool binary_;
 };
 
-std::int32_t readTagList(Msh4Values& values, const char* what) {
+void skipTagList(Msh4Values& values, const char* what) {
   const std::uint64_t count = values.size(what);
   values.requireValues(count, 4, 1, what);
-  std::int32_t first = 0;
+  for (std::uint64_t i = 0; i < count; ++i) values.integer(what);
+}
+
+// An entity's physical groups. gmsh writes -T for a group that takes the entity with reversed
+// orientation (e.g. a Physical Surface of {-2001}): that is still the group T (gmsh's own
+// getPhysicalGroups reports T), so the sign is dropped, and a group listed twice counts once.
+void readPhysicalTags(Msh4Values& values, MshEntity& entity) {
+  const char* what = "the entity's physical groups";
+  const std::uint64_t count = values.size(what);
+  values.requireValues(count, 4, 1, what);
   for (std::uint64_t i = 0; i < count; ++i) {
-    const std::int32_t tag = values.integer(what);
-    if (i == 0) first = tag;
+    const std::int32_t signedTag = values.integer(what);
+    const std::int32_t tag = signedTag == INT32_MIN ? INT32_MAX : std::abs(signedTag);
+    if (tag == 0 || tag == entity.physical) continue;
+    if (entity.physical == 0) {
+      entity.physical = tag;
+    } else if (std::find(entity.morePhysicals.begin(), entity.morePhysicals.end(), tag) ==
+               entity.morePhysicals.end()) {
+      entity.morePhysicals.push_back(tag);
+    }
   }
-  return first;
 }
 
 // The hot loop for the common binary blocks (3-node triangles, 4-node quads): fixed-size records
@@ -97,22 +114,25 @@ void readMsh4Entities(MshReadState& state, bool partitioned) {
                          partitioned ? "$PartitionedEntities" : "$Entities");
     for (std::uint64_t i = 0; i < counts[dimension]; ++i) {
       const std::int32_t tag = values.integer("an entity tag");
-      MshEntity entity{0, tag};
+      MshEntity entity{0, tag, {}};
       int parentDimension = -1;
       std::int32_t parentTag = 0;
       if (partitioned) {
         parentDimension = values.integer("the parent entity's dimension");
         parentTag = values.integer("the parent entity's tag");
-        readTagList(values, "the entity's partitions");
+        skipTagList(values, "the entity's partitions");
       }
       // MSH 4.1 gives a point its coordinates, 4.0 and all other entities a bounding box.
       const int coordinates = (dimension == 0 && state.minor == 1) ? 3 : 6;
       for (int k = 0; k < coordinates; ++k) values.real("an entity's bounding box");
-      entity.physical = readTagList(values, "the entity's physical groups");
-      if (dimension > 0) readTagList(values, "the entity's bounding entities");
+      readPhysicalTags(values, entity);
+      if (dimension > 0) skipTagList(values, "the entity's bounding entities");
       if (partitioned) {
         const auto parent = state.entities.find(mshEntityKey(parentDimension, parentTag));
-        if (entity.physical == 0 && parent != state.entities.end()) entity.physical = parent->second.physical;
+        if (entity.physical == 0 && parent != state.entities.end()) {
+          entity.physical = parent->second.physical;
+          entity.morePhysicals = parent->second.morePhysicals;
+        }
         if (parentDimension == dimension) entity.geometric = parentTag;
         state.partitionedEntities[mshEntityKey(dimension, tag)] = entity;
       } else {
@@ -211,8 +231,10 @@ void readMsh4Elements(MshReadState& state) {
   const std::uint64_t blocks = values.size("the number of element blocks");
   const std::uint64_t count = values.size("the number of elements");
   if (state.minor == 1) {
-    values.size("the smallest element tag");
-    values.size("the largest element tag");
+    state.minElementTag = values.size("the smallest element tag");
+    state.maxElementTag = values.size("the largest element tag");
+  } else {
+    state.minElementTag = 0, state.maxElementTag = UINT64_MAX;  // 4.0 headers give no tag range
   }
   values.requireValues(blocks, 20, 4, "$Elements (blocks)");
   values.requireValues(count, 16, 2, "$Elements");
@@ -239,8 +261,10 @@ void readMsh4Elements(MshReadState& state) {
     const auto perElement = static_cast<std::uint64_t>(info.nodeCount) + 1;
     values.requireValues(inBlock, 8 * perElement, perElement, "the element block");
     const auto entity = entities.find(mshEntityKey(dimension, tag));
-    const MshEntity group = entity != entities.end() ? entity->second : MshEntity{0, tag};
+    const MshEntity group = entity != entities.end() ? entity->second : MshEntity{0, tag, {}};
     state.assembler.setGroup(info.dimension, group.physical, group.geometric);
+    for (const std::int32_t more : group.morePhysicals)
+      state.addExtraGroup(info.dimension, group.geometric, group.physical, more);
     const bool keep = info.role == MshElementRole::kSurface || info.role == MshElementRole::kVolume;
     if (!keep && state.binary) {
       for (std::uint64_t e = 0; e < inBlock; ++e) state.assembler.countElement(type);

@@ -106,6 +106,24 @@ const char* familyName(Family family) {
   }
 }
 
+int cornerCount(Family family) {
+  switch (family) {
+    case kTriangle:
+      return 3;
+    case kQuad:
+    case kTet:
+      return 4;
+    case kHex:
+      return 8;
+    case kPrism:
+      return 6;
+    case kPyramid:
+      return 5;
+    default:
+      return 0;  // points and lines are not drawn; polygons and polyhedra have no fixed corners
+  }
+}
+
 }  // namespace
 
 MshElementType mshElementType(int type) {
@@ -147,9 +165,42 @@ MshElementType mshElementType(int type) {
       result.role = MshElementRole::kVolume;
       break;
     default:
+      // Order 3 and up: surfaces are split through their nodes (msh_high_order.cpp), volumes give
+      // their skin through their corners. Types with fewer nodes than corners are gmsh's one-node
+      // "elements" (84-89, 132), which have no shape to draw.
+      if (entry.nodes >= cornerCount(entry.family) && cornerCount(entry.family) > 0)
+        result.role = familyDimension(entry.family) == 2 ? MshElementRole::kSurface : MshElementRole::kVolume;
       break;
   }
   return result;
+}
+
+int mshCompleteSurfaceOrder(int type) {
+  switch (type) {
+    case 21: case 36: return 3;
+    case 23: case 37: return 4;
+    case 25: case 38: return 5;
+    case 42: case 47: return 6;
+    case 43: case 48: return 7;
+    case 44: case 49: return 8;
+    case 45: case 50: return 9;
+    case 46: case 51: return 10;
+    default: return 0;
+  }
+}
+
+int mshSurfaceCorners(int type) {
+  const MshElementType info = mshElementType(type);
+  if (info.role != MshElementRole::kSurface) return 0;
+  return cornerCount(kTypes[type].family);
+}
+
+std::string mshElementRenderNote(int type) {
+  const MshElementType info = mshElementType(type);
+  if (type <= 19 || (info.role != MshElementRole::kSurface && info.role != MshElementRole::kVolume)) return {};
+  if (info.role == MshElementRole::kVolume) return "drawn through its corner nodes (its skin's faces are flat)";
+  if (mshCompleteSurfaceOrder(type)) return "split into flat faces through all its nodes";
+  return "drawn through its corner nodes (incomplete element: no interior nodes)";
 }
 
 std::string mshElementTypeName(int type) {

@@ -9,9 +9,9 @@ namespace lancer {
 
 enum class MshElementRole : std::uint8_t {
   kIgnored,       // points and lines: not surfaces, silently skipped (still counted as read)
-  kSurface,       // triangles and quads up to second order: become faces
-  kVolume,        // tetrahedra, hexahedra, prisms, pyramids up to second order: become their skin
-  kUnrenderable,  // third order and up, polygons, one-node "elements": counted and reported
+  kSurface,       // triangles and quads of any order: become faces (msh_high_order.hpp for order 3+)
+  kVolume,        // tetrahedra, hexahedra, prisms, pyramids of any order: become their skin
+  kUnrenderable,  // polygons, polyhedra, one-node "elements", trihedra: counted and reported
 };
 
 struct MshElementType {
@@ -28,5 +28,16 @@ MshElementType mshElementType(int type);
 
 // "3-node triangle", "10-node tetrahedron", ... for `lancer info`; "type N" for rare ones.
 std::string mshElementTypeName(int type);
+
+// The order p of a complete triangle or quadrangle of order 3 to 10 (gmsh's MSH_TRI_10 ... MSH_TRI_66,
+// MSH_QUA_16 ... MSH_QUA_121), 0 for any other type.
+int mshCompleteSurfaceOrder(int type);
+
+// 3 for a drawn triangle type, 4 for a drawn quadrangle type, 0 for anything else.
+int mshSurfaceCorners(int type);
+
+// How lancer draws elements of order 3 and up, for `lancer info` ("subdivided through all its
+// nodes", "drawn through its corner nodes"); "" for the others.
+std::string mshElementRenderNote(int type);
 
 }  // namespace lancer

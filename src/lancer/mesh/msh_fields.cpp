@@ -68,6 +68,17 @@ FieldHeader readHeader(MshReadState& state, const char* section) {
   return header;
 }
 
+// gmsh ends a post-processing section at the first token that starts with $End (its own tutorial
+// file view5.msh closes an $ElementData with $EndElememtData, and gmsh reads it), so lancer does too.
+void expectFieldSectionEnd(MshCursor& cursor, std::string_view expected, const char* context) {
+  MshCursor peek = cursor;
+  if (peek.token().starts_with("$End")) {
+    cursor.token();
+    return;
+  }
+  cursor.expectToken(expected, context);
+}
+
 }  // namespace
 
 void readMshNodeData(MshReadState& state, const char* sectionStart) {
@@ -79,10 +90,6 @@ void readMshNodeData(MshReadState& state, const char* sectionStart) {
   const auto components = static_cast<std::uint64_t>(header.components);
   const std::uint64_t recordBytes =
       state.binary ? 4 + 8 * components : (1 + components) * kMinTextNumberBytes;
-  const char* countAt = cursor.position();
-  if (header.count > nodes.size())
-    cursor.failAt(countAt, fmt::format("$NodeData '{}' has {} values but the file has {} nodes", header.name,
-                                       header.count, nodes.size()));
   if (state.binary) cursor.skipLine();
   cursor.requireBytes(header.count, recordBytes, "$NodeData");
 
@@ -92,6 +99,10 @@ void readMshNodeData(MshReadState& state, const char* sectionStart) {
   field.time = header.time;
   field.components = header.components;
   field.values.assign(nodes.size() * components, std::numeric_limits<float>::quiet_NaN());
+  // Values for nodes the file does not save (a view built over all of a model's nodes, saved with
+  // only its physical groups' elements) are dropped, with one warning for the section.
+  std::uint64_t dropped = 0, firstDropped = 0;
+  const char* firstDroppedAt = nullptr;
   for (std::uint64_t i = 0; i < header.count; ++i) {
     // Binary records may start with bytes that look like whitespace: only text skips to the token.
     const char* recordAt = state.binary ? cursor.position() : cursor.tokenStart();
@@ -99,11 +110,8 @@ void readMshNodeData(MshReadState& state, const char* sectionStart) {
                                   ? static_cast<std::uint64_t>(cursor.readRaw<std::int32_t>("a node tag"))
                                   : cursor.readCount("a node tag");
     const std::uint32_t index = nodes.find(tag);
-    if (index == kNoVertex)
-      cursor.failAt(recordAt, fmt::format("$NodeData '{}' gives a value for node {}, which $Nodes does not "
-                                          "define",
-                                          field.name, tag));
-    float* out = field.values.data() + index * components;
+    if (index == kNoVertex && dropped++ == 0) firstDropped = tag, firstDroppedAt = recordAt;
+    float* out = index == kNoVertex ? nullptr : field.values.data() + index * components;
     for (std::uint64_t c = 0; c < components; ++c) {
       const char* valueAt = state.binary ? cursor.position() : cursor.tokenStart();
       const double value =
@@ -111,10 +119,16 @@ void readMshNodeData(MshReadState& state, const char* sectionStart) {
       if (!std::isfinite(value))
         cursor.failAt(valueAt,
                       fmt::format("$NodeData '{}' has a non-finite value for node {}", field.name, tag));
-      out[c] = static_cast<float>(value);
+      if (out) out[c] = static_cast<float>(value);
     }
   }
-  cursor.expectToken("$EndNodeData", "after the node data values");
+  if (dropped)
+    state.warnAt(firstDroppedAt,
+                 fmt::format("$NodeData '{}' gives values for {} node{} that $Nodes does not define (the "
+                             "first: node {}); they were dropped and the other {} kept",
+                             field.name, dropped, dropped == 1 ? "" : "s", static_cast<std::int64_t>(firstDropped),
+                             header.count - dropped));
+  expectFieldSectionEnd(cursor, "$EndNodeData", "after the node data values");
   state.assembler.nodeFields.push_back(std::move(field));
 }
 
@@ -126,8 +140,8 @@ void readMshElementData(MshReadState& state, const char* sectionStart) {
   const auto components = static_cast<std::uint64_t>(header.components);
   const std::uint64_t recordBytes =
       state.binary ? 4 + 8 * components : (1 + components) * kMinTextNumberBytes;
-  // No count or tag check against $Elements: gmsh writes values for elements it did not save (the
-  // points of a model without physical points), so records naming no element are ignored.
+  // Records naming an element that made no face are ignored: gmsh writes values for every element
+  // of a view, lines and points too. Tags outside the file's element tags are dropped with a warning.
   if (state.binary) cursor.skipLine();
   cursor.requireBytes(header.count, recordBytes, "$ElementData");
 
@@ -139,10 +153,17 @@ void readMshElementData(MshReadState& state, const char* sectionStart) {
   raw.field.components = header.components;
   raw.field.values.reserve(header.count * components);
   raw.tags.reserve(header.count);
+  std::uint64_t dropped = 0, firstDropped = 0;
+  const char* firstDroppedAt = nullptr;
   for (std::uint64_t i = 0; i < header.count; ++i) {
+    const char* recordAt = state.binary ? cursor.position() : cursor.tokenStart();
     const std::uint64_t tag = state.binary
                                   ? static_cast<std::uint64_t>(cursor.readRaw<std::int32_t>("an element tag"))
                                   : cursor.readCount("an element tag");
+    // Tag 0 is gmsh's placeholder for an element it did not save (Save View writes one for each
+    // point of a model without physical points): dropped without a word, as gmsh itself reads it.
+    if (tag != 0 && (tag < state.minElementTag || tag > state.maxElementTag) && dropped++ == 0)
+      firstDropped = tag, firstDroppedAt = recordAt;
     raw.tags.push_back(tag);
     for (std::uint64_t c = 0; c < components; ++c) {
       const char* valueAt = state.binary ? cursor.position() : cursor.tokenStart();
@@ -154,7 +175,13 @@ void readMshElementData(MshReadState& state, const char* sectionStart) {
       raw.field.values.push_back(static_cast<float>(value));
     }
   }
-  cursor.expectToken("$EndElementData", "after the element data values");
+  if (dropped)
+    state.warnAt(firstDroppedAt,
+                 fmt::format("$ElementData '{}' gives values for {} element{} that $Elements does not hold "
+                             "(the first: element {}); they were dropped and the other {} kept",
+                             raw.field.name, dropped, dropped == 1 ? "" : "s",
+                             static_cast<std::int64_t>(firstDropped), header.count - dropped));
+  expectFieldSectionEnd(cursor, "$EndElementData", "after the element data values");
   state.assembler.elementFields.push_back(std::move(raw));
 }
 

@@ -1,5 +1,6 @@
 #include "lancer/mesh/msh_mesh_assembler.hpp"
 
+#include "lancer/mesh/msh_high_order.hpp"
 #include "lancer/mesh/msh_huge_pages.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
 
@@ -106,10 +107,31 @@ void MshMeshAssembler::addOtherElement(int type, const std::uint32_t* n) {
       addSplitQuad(n, n + 4, addDerivedCentre(n, n + 4));
       return;
     default:
+      if (mshSurfaceCorners(type)) {
+        addHighOrderSurface(type, n);
+        return;
+      }
       appendVolumeElementFaces(type, n, group_, volumeFaces_);
       if (trackElements_) volumeFaceElement_.resize(volumeFaces_.size(), element_);
       return;
   }
+}
+
+// Order 3 and up: the element's flat faces through its nodes (msh_high_order.hpp).
+void MshMeshAssembler::addHighOrderSurface(int type, const std::uint32_t* n) {
+  const int corners = mshSurfaceCorners(type);
+  const auto first = static_cast<std::uint32_t>(faces_.size());
+  for (const MshSubFace& face : mshHighOrderSurfaceFaces(type)) {
+    if (face.corner[3] == kNoSubCorner) {
+      addTriangle(n[face.corner[0]], n[face.corner[1]], n[face.corner[2]], face.edgeMask);
+    } else {
+      addQuad(n[face.corner[0]], n[face.corner[1]], n[face.corner[2]], n[face.corner[3]], face.edgeMask);
+    }
+  }
+  secondOrderSurfaces_.push_back({mshFaceKey(n, corners),
+                                  {n[0], n[1], n[2], corners == 4 ? n[3] : kNoVertex},
+                                  first,
+                                  static_cast<std::uint32_t>(faces_.size()) - first});
 }
 
 std::vector<MshMeshAssembler::SurfaceElementFaces> MshMeshAssembler::surfaceElementsByKey() const {

@@ -88,6 +88,7 @@ class MshMeshAssembler {
     }
   }
   void addOtherElement(int type, const std::uint32_t* nodeIndex);
+  void addHighOrderSurface(int type, const std::uint32_t* nodeIndex);
   Vec3d serendipityCentre(const std::uint32_t* corner, const std::uint32_t* mid) const;
   // A new node at the serendipity centre of an 8-node quad, remembering its sources for node data.
   std::uint32_t addDerivedCentre(const std::uint32_t* corner, const std::uint32_t* mid);

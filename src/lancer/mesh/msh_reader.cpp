@@ -6,14 +6,18 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <bit>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <set>
 #include <stdexcept>
 
+#include "lancer/mesh/foreign_formats.hpp"
 #include "lancer/mesh/msh_fields.hpp"
 #include "lancer/mesh/msh_sections.hpp"
+#include "lancer/util/input_error.hpp"
 
 namespace lancer {
 namespace {
@@ -162,10 +166,64 @@ void skipSection(MshCursor& cursor, std::string_view name, const char* start) {
   cursor.seek(static_cast<const char*>(found) + end.size());
 }
 
+bool isMeshSection(std::string_view name) {
+  return name == "$PhysicalNames" || name == "$Entities" || name == "$PartitionedEntities" ||
+         name == "$Nodes" || name == "$Elements" || name == "$Periodic" || name == "$GhostElements";
+}
+
+// gmsh's view.write(..., append=True) and Save View with PostProcessing.SaveMesh write the mesh
+// again before each view: a section the file already had is accepted when it is the same bytes.
+void skipRepeatedMeshSection(MshReadState& state, std::string_view name, const char* start) {
+  const std::string_view first = state.meshSections.find(name)->second;
+  MshCursor& cursor = state.cursor;
+  if (static_cast<std::uint64_t>(cursor.remaining() + name.size()) < first.size() ||
+      std::memcmp(start, first.data(), first.size()) != 0)
+    cursor.failAt(start, fmt::format("a second {} section that differs from the first: lancer reads one mesh "
+                                     "per file (gmsh repeats a mesh only before appended views, unchanged)",
+                                     name.substr(0, 40)));
+  cursor.seek(start + first.size());
+}
+
+// The view's name in a field section's header (its first string tag), or "" when it has none.
+std::string_view sectionFieldName(const char* from, const char* to) {
+  const std::string_view header(from, static_cast<std::size_t>(to - from));
+  const std::size_t open = header.find('"');
+  if (open == std::string_view::npos || header.find_first_not_of(" \t\r\n0123456789") < open) return {};
+  const std::size_t close = header.find_first_of("\"\n", open + 1);
+  if (close == std::string_view::npos || header[close] != '"') return {};
+  return header.substr(open + 1, std::min<std::size_t>(close - open - 1, 200));
+}
+
+// A post-processing section lancer cannot read does not stop the mesh from loading: it is skipped
+// to its end marker with a warning (and color_by naming it says why it is missing).
+template <typename ReadSection>
+void readFieldSection(MshReadState& state, std::string_view name, const char* start, ReadSection read) {
+  MshCursor& cursor = state.cursor;
+  try {
+    read(state, start);
+  } catch (const InputError& error) {
+    // The end marker: the first line starting with $End after the section's name, as gmsh finds it.
+    const char* fileEnd = cursor.position() + cursor.remaining();
+    const char* from = start + name.size();
+    const void* found = ::memmem(from, static_cast<std::size_t>(fileEnd - from), "\n$End", 5);
+    const char* end = found ? static_cast<const char*>(found) + 1 : fileEnd;
+    const std::string_view fieldName = sectionFieldName(from, std::min(end, from + 4096));
+    const std::string message =
+        fmt::format("{}{} skipped: {}", name.substr(0, 40),
+                    fieldName.empty() ? "" : fmt::format(" \"{}\"", fieldName), error.message());
+    state.source.warnings.push_back(formatInputWarning(error.location(), message));
+    state.source.skippedFields.emplace_back(std::string(fieldName), state.source.warnings.back());
+    cursor.seek(end);
+    cursor.token();  // the $End... marker
+  }
+}
+
 // False when it stopped at a $ElementData because faces did not remember their elements.
 bool readSections(MshReadState& state) {
   MshCursor& cursor = state.cursor;
+  const char* formatStart = cursor.tokenStart();
   readMeshFormat(state);
+  state.meshSections.emplace("$MeshFormat", std::string_view(formatStart, cursor.position()));
   for (;;) {
     cursor.skipWhitespace();
     if (cursor.atEnd()) break;
@@ -176,7 +234,11 @@ bool readSections(MshReadState& state) {
                                        std::string(name.substr(0, 32))));
     if (name.starts_with("$End"))
       cursor.failAt(start, fmt::format("{} closes a section that was never opened", name.substr(0, 40)));
-    if (name == "$MeshFormat") cursor.failAt(start, "a second $MeshFormat section (two files concatenated?)");
+    if (state.meshSections.count(name)) {
+      skipRepeatedMeshSection(state, name, start);
+      continue;
+    }
+    const bool meshSection = isMeshSection(name);
     if (name == "$PhysicalNames") {
       readPhysicalNames(state);
     } else if (name == "$Entities" && state.major == 4) {
@@ -195,20 +257,48 @@ bool readSections(MshReadState& state) {
       state.major == 2 ? readMsh2Elements(state) : readMsh4Elements(state);
       state.elementsRead = true;
     } else if (name == "$NodeData") {
-      readMshNodeData(state, start);
+      readFieldSection(state, name, start, readMshNodeData);
     } else if (name == "$ElementData") {
       if (state.elementsRead && !state.assembler.tracksElements()) return false;
-      readMshElementData(state, start);
+      readFieldSection(state, name, start, readMshElementData);
     } else {
-      // $Comments, $Periodic, $ElementData, $GhostElements, $Parametrizations, ...
+      // $Comments, $Periodic, $ElementNodeData, $GhostElements, $Parametrizations, ...
       skipSection(cursor, name, start);
     }
+    if (meshSection) state.meshSections.emplace(std::string(name), std::string_view(start, cursor.position()));
   }
-  if (!state.nodesRead || !state.elementsRead)
-    cursor.failFile(state.nodesRead ? "the file has $Nodes but no $Elements section (truncated?)"
-                                    : "the file has no $Nodes and $Elements sections: it holds no mesh "
-                                      "(mesh it in gmsh with -2 or -3 before saving)");
+  // No $Nodes and no $Elements is an empty mesh (gmsh writes only $Entities for a model whose
+  // physical groups have no elements in the dimension meshed); render refuses it with the reason
+  // (nothingToDrawReason), info describes it.
+  if (state.nodesRead && !state.elementsRead)
+    cursor.failFile("the file has $Nodes but no $Elements section (truncated?)");
   return true;
+}
+
+// The groups the file declares but no face carries first: further groups of entities in several
+// (MSH 4 $Entities, MSH 2 element copies) and groups of entities without elements (a model of
+// Physical Volumes meshed in 2D), listed unnamed when $PhysicalNames has no entry for them.
+void addDeclaredGroups(MshReadState& state, Mesh& mesh) {
+  std::set<std::pair<int, std::int32_t>> known;
+  for (const PhysicalGroup& group : mesh.physicalGroups) known.insert({group.dimension, group.tag});
+  const auto declare = [&](int dimension, std::int32_t tag) {
+    if (dimension >= 2 && tag != 0 && known.insert({dimension, tag}).second)
+      mesh.physicalGroups.push_back({dimension, tag, ""});
+  };
+  for (const auto* entities : {&state.entities, &state.partitionedEntities}) {
+    for (const auto& [key, entity] : *entities) {
+      const int dimension = static_cast<int>(key >> 32);
+      declare(dimension, entity.physical);
+      for (const std::int32_t more : entity.morePhysicals) declare(dimension, more);
+    }
+  }
+  for (const ExtraPhysicalGroups& extra : state.extraGroups)
+    for (const std::int32_t more : extra.more) declare(extra.dimension, more);
+  std::sort(mesh.physicalGroups.begin(), mesh.physicalGroups.end(),
+            [](const PhysicalGroup& a, const PhysicalGroup& b) {
+              return a.dimension != b.dimension ? a.dimension < b.dimension : a.tag < b.tag;
+            });
+  mesh.extraPhysicalGroups = std::move(state.extraGroups);
 }
 
 Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64_t fileBytes) {
@@ -218,13 +308,22 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64
   for (const bool track : {false, true}) {
     MshCursor cursor(bytes, name);
     if (bytes.empty()) cursor.failFile("the file is empty");
+    if (!looksLikeMsh(bytes)) {
+      const std::string foreign = foreignFileMessage(bytes.first(std::min<std::size_t>(bytes.size(), 1 << 20)),
+                                                     fileBytes, name);
+      if (!foreign.empty()) cursor.failFile(foreign);
+    }
     MshMeshAssembler assembler;
     if (track) assembler.trackElements();
     MeshSourceInfo source;
     source.path = name;
     source.fileBytes = fileBytes;
     MshReadState state(cursor, assembler, source);
-    if (readSections(state)) return assembler.finish(std::move(source), std::move(state.namedGroups));
+    if (readSections(state)) {
+      Mesh mesh = assembler.finish(std::move(source), std::move(state.namedGroups));
+      addDeclaredGroups(state, mesh);
+      return mesh;
+    }
   }
   throw std::logic_error("readBytes: the tracking read stopped at $ElementData");
 }

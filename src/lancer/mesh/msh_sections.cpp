@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace lancer {
 
 void finishNodes(MshReadState& state, const char* sectionStart) {
@@ -23,6 +25,22 @@ void failMissingNode(const MshReadState& state, const char* at, std::uint64_t el
                      std::uint64_t nodeTag) {
   state.cursor.failAt(at, fmt::format("element {} ({}) uses node {}, which $Nodes does not define",
                                       elementTag, mshElementTypeName(type), nodeTag));
+}
+
+void MshReadState::addExtraGroup(int dimension, std::int32_t entity, std::int32_t first, std::int32_t more) {
+  if (more == first || more == 0) return;
+  auto found = std::find_if(extraGroups.begin(), extraGroups.end(), [&](const ExtraPhysicalGroups& e) {
+    return e.dimension == dimension && e.entity == entity && e.first == first;
+  });
+  if (found == extraGroups.end()) {
+    extraGroups.push_back({dimension, entity, first, {}});
+    found = extraGroups.end() - 1;
+  }
+  if (std::find(found->more.begin(), found->more.end(), more) == found->more.end()) found->more.push_back(more);
+}
+
+void MshReadState::warnAt(const char* at, const std::string& message) {
+  source.warnings.push_back(formatInputWarning(cursor.locate(at), message));
 }
 
 MshElementType requireKnownType(const MshReadState& state, int type, const char* at) {

@@ -3,6 +3,9 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -16,6 +19,7 @@ namespace lancer {
 struct MshEntity {
   std::int32_t physical = 0;   // first physical group, 0 if none
   std::int32_t geometric = 0;  // the model entity's tag (the parent, for a partitioned entity)
+  std::vector<std::int32_t> morePhysicals;  // its further physical groups (usually none)
 };
 
 struct MshReadState {
@@ -32,6 +36,19 @@ struct MshReadState {
   std::unordered_map<std::uint64_t, MshEntity> partitionedEntities;  // $PartitionedEntities
   bool nodesRead = false;
   bool elementsRead = false;
+  // The bytes of each mesh section read ($MeshFormat, $Nodes, ...), from its name to its end marker:
+  // gmsh repeats the whole mesh before each view it appends to a file, and a repeat must match.
+  std::map<std::string, std::string_view, std::less<>> meshSections;
+  // Entities in several physical groups (Mesh::extraPhysicalGroups), one entry per entity.
+  std::vector<ExtraPhysicalGroups> extraGroups;
+  // Element tags of the file are within [minElementTag, maxElementTag] (for $ElementData checks).
+  std::uint64_t minElementTag = UINT64_MAX;
+  std::uint64_t maxElementTag = 0;
+
+  // Records that the elements of entity (dimension, entity) are also in the group `more`.
+  void addExtraGroup(int dimension, std::int32_t entity, std::int32_t first, std::int32_t more);
+  // Adds a "file:line:col: warning: ..." for the user (MeshSourceInfo::warnings).
+  void warnAt(const char* at, const std::string& message);
 };
 
 inline std::uint64_t mshEntityKey(int dimension, std::int32_t tag) {

@@ -82,6 +82,11 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh) {
     }
   }
   if (!found) {
+    for (const auto& [name, warning] : mesh.source.skippedFields)
+      if (name == spec.field)
+        throw InputError(spec.where, fmt::format("color_by field \"{}\": its section in {} could not be read "
+                                                 "and was skipped ({})",
+                                                 spec.field, mesh.source.path, warning));
     if (mesh.fields.empty())
       throw InputError(spec.where,
                        fmt::format("color_by field \"{}\": {} has no fields ($NodeData or $ElementData)",

@@ -75,6 +75,8 @@ struct Scene {
   float floorOffset = 0;
   Vec3 ambient{0, 0, 0};
   Aabb bounds;  // scene space
+  // What the mesh readers warned about (MeshSourceInfo::warnings), for the CLI to print.
+  std::vector<std::string> warnings;
 
   Vec3 toSceneSpace(const Vec3d& world) const { return toFloat(world - origin); }
 };

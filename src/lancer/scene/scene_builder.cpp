@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <utility>
 
@@ -13,6 +14,7 @@
 
 #include "lancer/mesh/feature_edges.hpp"
 #include "lancer/mesh/msh_reader.hpp"
+#include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/scene.hpp"
@@ -53,7 +55,10 @@ Mesh readInstanceMesh(const MeshInstance& instance) {
   std::error_code error;
   if (!std::filesystem::exists(instance.file, error))
     throw InputError(instance.where, fmt::format("mesh file '{}' does not exist", instance.file));
-  return readMsh(instance.file);
+  Mesh mesh = readMsh(instance.file);
+  if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
+    throw InputError(instance.where, fmt::format("mesh '{}' has nothing to draw: {}", instance.file, reason));
+  return mesh;
 }
 
 // Material of each physical tag named in `groups`, checked against the mesh's groups.
@@ -87,6 +92,17 @@ std::vector<std::pair<std::int32_t, std::uint32_t>> resolveGroupMaterials(const 
                                                 instance.file, entry.group, known.empty() ? "none" : known));
     }
     result.emplace_back(tag, static_cast<std::uint32_t>(entry.material));
+  }
+  // A face in several groups takes the most specific mapping: the group with the fewest faces, and
+  // of equal ones the mapping written last. The face loop lets the last match win, so the mappings
+  // are ordered from the largest group down (stable: file order among equals).
+  if (!mesh.extraPhysicalGroups.empty() && result.size() > 1) {
+    std::map<std::int32_t, std::uint64_t> faces;
+    for (const auto& mapping : result) faces[mapping.first] = 0;
+    for (std::size_t f = 0; f < mesh.faceCount(); ++f)
+      for (auto& [tag, count] : faces) count += mesh.faceInPhysicalGroup(f, tag);
+    std::stable_sort(result.begin(), result.end(),
+                     [&](const auto& a, const auto& b) { return faces[a.first] > faces[b.first]; });
   }
   return result;
 }
@@ -151,11 +167,14 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const MeshInstance& instance = description.meshes[i];
     Mesh& mesh = meshes[i];
+    scene.warnings.insert(scene.warnings.end(), mesh.source.warnings.begin(), mesh.source.warnings.end());
     const auto groupMaterials = resolveGroupMaterials(instance, mesh);
-    auto materialOf = [&](std::int32_t physicalTag) {
+    // The material of the faces of `entity` whose first group is `physical` (groupMaterials is in
+    // order of increasing precedence: the last mapping that names one of their groups wins).
+    auto materialOf = [&](std::int32_t physical, std::int32_t entity) {
       auto material = static_cast<std::uint32_t>(instance.material);
       for (const auto& [tag, groupMaterial] : groupMaterials)
-        if (physicalTag == tag) material = groupMaterial;
+        if (mesh.inPhysicalGroup(physical, entity, tag)) material = groupMaterial;
       return material;
     };
     const ShadingMode shading = instance.shading.value_or(description.render.shading);
@@ -209,16 +228,17 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
         face.vertex[c] += vertexBase;
         corners[c] += normalBase;
       }
-      scene.faceMaterial.push_back(materialOf(mesh.facePhysicalTag[f]));
+      scene.faceMaterial.push_back(materialOf(mesh.facePhysicalTag[f], mesh.faceEntityTag[f]));
       // The material in front of the face: the outer volume of an interface, or the solid of another
       // group that a closed surface lies in (a steel ball drawn inside a glass one).
-      std::optional<std::int32_t> outer;
-      if (mesh.volumeSides.isInterface(f)) outer = mesh.volumeSides.outerPhysicalTag[f];
+      std::optional<std::uint32_t> outer;
+      if (mesh.volumeSides.isInterface(f))
+        outer = materialOf(mesh.volumeSides.outerPhysicalTag[f], mesh.volumeSides.outerEntityTag[f]);
       if (!orientation.faceEnclosedBy.empty() && orientation.faceEnclosedBy[f] != ShellOrientationReport::kNotEnclosed)
-        outer = orientation.faceEnclosedBy[f];
+        outer = materialOf(orientation.faceEnclosedBy[f], 0);
       if (outer) {
         scene.faceOuterMaterial.resize(scene.faces.size(), Scene::kNoMaterial);
-        scene.faceOuterMaterial.push_back(materialOf(*outer));
+        scene.faceOuterMaterial.push_back(*outer);
       }
       scene.faces.push_back(face);
       scene.faceNormals.push_back(faceNormal(scene.positions, face));

@@ -4,7 +4,9 @@
 
 namespace lancer {
 
-std::string formatInputError(const SourceLocation& location, const std::string& message) {
+namespace {
+
+std::string formatLocated(const SourceLocation& location, const char* severity, const std::string& message) {
   std::string where = location.file.empty() ? std::string("<input>") : location.file;
   if (location.byteOffset >= 0) {
     where += fmt::format(":@{}", location.byteOffset);
@@ -12,7 +14,17 @@ std::string formatInputError(const SourceLocation& location, const std::string& 
     where += fmt::format(":{}", location.line);
     if (location.column > 0) where += fmt::format(":{}", location.column);
   }
-  return fmt::format("{}: error: {}", where, message);
+  return fmt::format("{}: {}: {}", where, severity, message);
+}
+
+}  // namespace
+
+std::string formatInputError(const SourceLocation& location, const std::string& message) {
+  return formatLocated(location, "error", message);
+}
+
+std::string formatInputWarning(const SourceLocation& location, const std::string& message) {
+  return formatLocated(location, "warning", message);
 }
 
 InputError::InputError(SourceLocation location, const std::string& message)

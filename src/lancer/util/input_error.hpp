@@ -33,5 +33,7 @@ class InputError : public std::runtime_error {
 
 // "file:line:col: error: message" (parts that are unknown are left out; binary: "file:@offset").
 std::string formatInputError(const SourceLocation& location, const std::string& message);
+// The same with "warning:", for input lancer accepts but the user should hear about.
+std::string formatInputWarning(const SourceLocation& location, const std::string& message);
 
 }  // namespace lancer
