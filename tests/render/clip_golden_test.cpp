@@ -18,9 +18,7 @@ constexpr double kMinPsnrDb = 40.0;
 
 const std::string kDataDir = LANCER_TEST_DATA_DIR "/render/";
 
-Image render(const SceneDescription& description) {
-  return test::renderScene(description, buildScene(description));
-}
+Image render(const SceneDescription& description) { return test::renderScene(description); }
 
 TEST(ClipGolden, CappedCutsOfTwoVolumesInTheirGroupsColours) {
   const SceneDescription description = loadScene(kDataDir + "cut_bushing.toml");

@@ -17,9 +17,7 @@ constexpr double kMinPsnrDb = 40.0;
 
 const std::string kDataDir = LANCER_TEST_DATA_DIR "/multimaterial/";
 
-Image render(const SceneDescription& description) {
-  return test::renderScene(description, buildScene(description));
-}
+Image render(const SceneDescription& description) { return test::renderScene(description); }
 
 TEST(MultiMaterialGolden, CutPartShowsEachVolumesCapInItsMaterial) {
   test::expectImageNear(render(loadScene(kDataDir + "cut_three_materials.toml")),

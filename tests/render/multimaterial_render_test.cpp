@@ -22,14 +22,7 @@ std::string multimaterial(const std::string& name) {
 }
 
 // Shows only ambient light, so a pixel's value is exactly its material's ka.
-Material flatColour(const char* name, Vec3 ka) {
-  Material m;
-  m.name = name;
-  m.ka = ka;
-  m.kd = {0, 0, 0};
-  m.ks = {0, 0, 0};
-  return m;
-}
+Material flatColour(const char* name, Vec3 ka) { return test::ambientOnlyMaterial(name, ka); }
 
 constexpr int kSize = 120;
 constexpr double kViewHeight = 2.4;

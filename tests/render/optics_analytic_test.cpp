@@ -42,14 +42,7 @@ Mesh rightAnglePrism() {
 }
 
 // A material that only shows ambient light: local colour = ambient * ka exactly.
-Material emitter(const char* name, Vec3 ka) {
-  Material m;
-  m.name = name;
-  m.ka = ka;
-  m.kd = {0, 0, 0};
-  m.ks = {0, 0, 0};
-  return m;
-}
+Material emitter(const char* name, Vec3 ka) { return test::ambientOnlyMaterial(name, ka); }
 
 Material clearGlass(float ior) {
   Material m = emitter("glass", {0, 0, 0});

@@ -12,6 +12,15 @@ Mesh squareMesh(float x0, float y0, float x1, float y1, float height, std::int32
   return mesh;
 }
 
+Material ambientOnlyMaterial(const char* name, Vec3 ka) {
+  Material m;
+  m.name = name;
+  m.ka = ka;
+  m.kd = {0, 0, 0};
+  m.ks = {0, 0, 0};
+  return m;
+}
+
 Scene sceneFromMeshes(const SceneDescription& description, std::vector<Mesh> meshes) {
   return buildScene(description, std::move(meshes));
 }
@@ -24,5 +33,7 @@ Image renderScene(const SceneDescription& description, const Scene& scene, Accel
   options.threads = threads;
   return renderImage(scene, accelerator, camera, description.render, options);
 }
+
+Image renderScene(const SceneDescription& description) { return renderScene(description, buildScene(description)); }
 
 }  // namespace lancer::test
