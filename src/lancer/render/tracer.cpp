@@ -153,7 +153,7 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
     if (maxComponent(contribution) <= 0.0f) continue;
     // A light behind the geometric surface is blocked by the surface itself.
     if (dot(surface.geometricNormal, lightDirection) <= 0.0f) continue;
-    const Vec3 shadowOrigin = offsetRayOrigin(surface.position, surface.geometricNormal);
+    const Vec3 shadowOrigin = offsetRayOrigin(surface.position, surface.positionError, surface.geometricNormal);
     color += contribution * lightTransmission(shadowOrigin, light.position, counters);
   }
   return color;
@@ -210,6 +210,7 @@ Vec3 Tracer::shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::u
   SurfacePoint cap{};
   cap.face = face;
   cap.position = ray.at(tCap);
+  cap.positionError = rayPointError(ray.origin, ray.direction, tCap);
   // The ray came from the removed side, where the plane's normal points: the cap faces it.
   cap.geometricNormal = cap.shadingNormal = plane.normal;
   cap.normalSign = 1.0f;
