@@ -51,6 +51,20 @@ Ray Camera::generateRay(float x, float y) const {
   return Ray(position_ + right_ * sx + up_ * sy, forward_);
 }
 
+bool Camera::project(const Vec3& p, float& x, float& y) const {
+  const Vec3 v = p - position_;
+  float sx = dot(v, right_), sy = dot(v, up_);
+  if (projection_ == Projection::Perspective) {
+    const float depth = dot(v, forward_);
+    if (!(depth > 0.0f)) return false;
+    sx /= depth;
+    sy /= depth;
+  }
+  x = 0.5f * (sx / halfWidth_ + 1.0f) / invWidth_;
+  y = 0.5f * (1.0f - sy / halfHeight_) / invHeight_;
+  return true;
+}
+
 PixelFootprint Camera::pixelFootprint() const {
   const float pixel = 2.0f * halfHeight_ * invHeight_;
   return projection_ == Projection::Perspective ? PixelFootprint{0.0f, pixel} : PixelFootprint{pixel, 0.0f};

@@ -24,6 +24,9 @@ class Camera {
   // World size of one pixel along a primary ray: grows with distance for a perspective camera,
   // constant for an orthographic one.
   PixelFootprint pixelFootprint() const;
+  // The inverse of generateRay: the image position (pixels from the top-left corner) where scene
+  // point p appears; false when it is behind a perspective camera.
+  bool project(const Vec3& p, float& x, float& y) const;
   const Vec3& position() const { return position_; }
   const Vec3& forward() const { return forward_; }
 
