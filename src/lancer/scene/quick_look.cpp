@@ -84,10 +84,11 @@ void placeQuickLookLights(SceneDescription& scene, const Mesh& mesh) {
   const Vec3d front = cross(right, up);
   const double aspect = static_cast<double>(scene.render.width) / scene.render.height;
   scene.lights.clear();
-  // The key: high on the left, in front, far enough to light the whole part evenly.
+  // The key: high on the left, in front, so the top, front and side faces of the 3/4 view read
+  // apart; far enough to light the whole part evenly.
   scene.lights.push_back({centre + normalize(right * -0.5 + up * 1.8 + front * 0.9) * (6 * radius), {0.9f, 0.9f, 0.9f}, {1, 0, 0}});
   // The fill sits at the eye: whatever the camera sees, it lights (the shadow ray retraces the view).
-  scene.lights.push_back({defaultCameraPosition(world, camera, aspect), {0.35f, 0.35f, 0.37f}, {1, 0, 0}});
+  scene.lights.push_back({defaultCameraPosition(world, camera, aspect), {0.5f, 0.5f, 0.52f}, {1, 0, 0}});
 }
 
 }  // namespace lancer
