@@ -11,7 +11,7 @@ constexpr Vec3d kAxes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 constexpr double kViewRight = 0.9, kViewUp = 0.65, kViewFront = 1.3;
 constexpr double kPlanarExtent = 1e-6;   // of the largest extent
 constexpr double kFlatCosine = 0.9962;   // cos 5 degrees
-constexpr double kOnSide = 1e-3;         // of the largest extent: a face on a side of the box
+constexpr double kOnSide = 0.05;  // of the largest extent: a face on (or near: feet, bolt heads) a box side
 constexpr double kNearTie = 0.02;
 // A base is at least this share of the surface: a sphere's flat pole facets are not a base.
 constexpr double kMinBaseShare = 0.02;
@@ -28,17 +28,14 @@ double faceArea(const Mesh& mesh, const MeshFace& face, Vec3d& normal) {
   return 0.5 * area2;
 }
 
-// Best axis by score, near ties resolved by kPreference; -1 when every score is 0.
+// The axis with the largest (or smallest) score; a later axis in kPreference must beat the best so
+// far by more than kNearTie. With `largest`, axes scoring 0 never win (-1 when all do).
 int bestAxis(const double score[3], bool largest) {
   int best = -1;
   for (int axis : kPreference) {
-    if (largest ? !(score[axis] > 0) : false) continue;
-    if (best < 0) {
-      best = axis;
-      continue;
-    }
-    const bool better = largest ? score[axis] > score[best] * (1 + kNearTie)
-                                : score[axis] < score[best] * (1 - kNearTie);
+    if (largest && !(score[axis] > 0)) continue;
+    const bool better = best < 0 || (largest ? score[axis] > score[best] * (1 + kNearTie)
+                                             : score[axis] < score[best] * (1 - kNearTie));
     if (better) best = axis;
   }
   return best;

@@ -37,8 +37,9 @@ void applyUpAxis(CameraSettings& camera, UpAxis axis);
 // What the quick look makes of a bare mesh (README "Quick look"):
 //  1. planar (one extent at most 1e-6 of the largest: gmsh's 2D models in the XY plane) -> seen straight
 //     on from the + side of that axis: a z plane with y up, an x plane with z up, a y plane with -z up;
-//  2. else the axis with the most "base" area, faces lying flat (within 5 degrees) on the two sides of
-//     the bounding box across it (the plate a part stands on, the ends of a cylinder), counted when
+//  2. else the axis with the most "base" area, faces lying flat (within 5 degrees) on or near (within
+//     5% of the largest extent) the two sides of the bounding box across it (the plate a part stands
+//     on, even with bolt heads below it; the ends of a cylinder), counted when
 //     it is at least 2% of the surface; near ties (within 2%) go to z, then y (CAD and gmsh draw z
 //     as height);
 //  3. else (no flat side: terrains, spheres, organic shapes) the axis of the smallest extent (a
