@@ -1,7 +1,6 @@
 #include "lancer/render/outline_edges.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <unordered_map>
 
@@ -60,38 +59,71 @@ OutlineEdges::OutlineEdges(const Scene& scene, const Camera& camera, int imageWi
     return l.faces[0] != r.faces[0] ? l.faces[0] < r.faces[0] : l.faces[1] < r.faces[1];
   });
 
-  // Bin each segment's screen box, widened by half its line and a pixel, in cells (two passes:
-  // count, then fill).
-  cellsX_ = (imageWidth + kCellPixels - 1) / kCellPixels;
-  cellsY_ = (imageHeight + kCellPixels - 1) / kCellPixels;
-  std::vector<std::array<int, 4>> boxes(segments_.size(), {0, -1, 0, -1});
-  for (std::size_t s = 0; s < segments_.size(); ++s) {
+  // Bin each segment in the cells within half its line and a pixel of it, walking it on screen in
+  // steps of half a cell, so the entries grow with its length, not with its screen box; two passes
+  // (count, then fill), each cell taking a segment once. Cells grow with the image so that a huge
+  // image keeps at most about kMaxCellsAcross^2 of them.
+  cellPixels_ = std::max(kMinCellPixels, (std::max(imageWidth, imageHeight) + kMaxCellsAcross - 1) / kMaxCellsAcross);
+  cellsX_ = (imageWidth + cellPixels_ - 1) / cellPixels_;
+  cellsY_ = (imageHeight + cellPixels_ - 1) / cellPixels_;
+  const std::size_t cellCount = static_cast<std::size_t>(cellsX_) * static_cast<std::size_t>(cellsY_);
+  std::vector<std::uint32_t> lastSegment(cellCount, kNoFace);
+  auto visitCells = [&](std::uint32_t s, auto&& onCell) {
     float ax, ay, bx, by;
-    // An edge crossing the plane of a perspective eye is skipped (it cannot lie along the outline
-    // of anything in view).
-    if (!camera.project(segments_[s].a, ax, ay) || !camera.project(segments_[s].b, bx, by)) continue;
+    // An edge crossing the plane of a perspective eye is skipped (not binned).
+    if (!camera.project(segments_[s].a, ax, ay) || !camera.project(segments_[s].b, bx, by)) return;
     const float margin = 0.5f * scene.edgeStyles[segments_[s].style].widthPixels + 1.0f;
-    const auto cell = [](float v) { return static_cast<int>(std::floor(v / kCellPixels)); };
-    boxes[s] = {std::max(cell(std::min(ax, bx) - margin), 0), std::min(cell(std::max(ax, bx) + margin), cellsX_ - 1),
-                std::max(cell(std::min(ay, by) - margin), 0), std::min(cell(std::max(ay, by) + margin), cellsY_ - 1)};
-  }
-  cellStart_.assign(static_cast<std::size_t>(cellsX_) * cellsY_ + 1, 0);
-  for (const auto& box : boxes)
-    for (int y = box[2]; y <= box[3]; ++y)
-      for (int x = box[0]; x <= box[1]; ++x) ++cellStart_[static_cast<std::size_t>(y) * cellsX_ + x + 1];
+    // Liang-Barsky: the part of the segment inside the image widened by the margin.
+    float t0 = 0.0f, t1 = 1.0f;
+    const float dx = bx - ax, dy = by - ay;
+    const float p[4] = {-dx, dx, -dy, dy};
+    const float q[4] = {ax + margin, static_cast<float>(imageWidth) + margin - ax, ay + margin,
+                        static_cast<float>(imageHeight) + margin - ay};
+    for (int k = 0; k < 4; ++k) {
+      if (p[k] == 0.0f) {
+        if (q[k] < 0.0f) return;
+        continue;
+      }
+      const float r = q[k] / p[k];
+      if (p[k] < 0.0f) t0 = std::max(t0, r);
+      else t1 = std::min(t1, r);
+    }
+    if (!(t0 <= t1)) return;
+    const float length = std::hypot(dx, dy) * (t1 - t0);
+    const int steps = static_cast<int>(std::ceil(length / (0.5f * static_cast<float>(cellPixels_)))) + 1;
+    const auto cell = [&](float v, int count) {
+      return std::clamp(static_cast<int>(std::floor(v / static_cast<float>(cellPixels_))), 0, count - 1);
+    };
+    // A pixel within the margin of the segment is within reach + a quarter cell of some step.
+    const float reach = margin + 0.25f * static_cast<float>(cellPixels_);
+    for (int i = 0; i <= steps; ++i) {
+      const float t = t0 + (t1 - t0) * static_cast<float>(i) / static_cast<float>(steps);
+      const float x = ax + dx * t, y = ay + dy * t;
+      for (int cy = cell(y - reach, cellsY_); cy <= cell(y + reach, cellsY_); ++cy) {
+        for (int cx = cell(x - reach, cellsX_); cx <= cell(x + reach, cellsX_); ++cx) {
+          const std::size_t c = static_cast<std::size_t>(cy) * static_cast<std::size_t>(cellsX_) + static_cast<std::size_t>(cx);
+          if (lastSegment[c] == s) continue;
+          lastSegment[c] = s;
+          onCell(c);
+        }
+      }
+    }
+  };
+  cellStart_.assign(cellCount + 1, 0);
+  for (std::uint32_t s = 0; s < segments_.size(); ++s) visitCells(s, [&](std::size_t c) { ++cellStart_[c + 1]; });
   for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
   cellSegments_.resize(cellStart_.back());
   std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
-  for (std::size_t s = 0; s < segments_.size(); ++s)
-    for (int y = boxes[s][2]; y <= boxes[s][3]; ++y)
-      for (int x = boxes[s][0]; x <= boxes[s][1]; ++x)
-        cellSegments_[fill[static_cast<std::size_t>(y) * cellsX_ + x]++] = static_cast<std::uint32_t>(s);
+  std::fill(lastSegment.begin(), lastSegment.end(), kNoFace);
+  for (std::uint32_t s = 0; s < segments_.size(); ++s)
+    visitCells(s, [&](std::size_t c) { cellSegments_[fill[c]++] = s; });
 }
 
 int OutlineEdges::cellOf(const Ray& ray) const {
   float x = 0, y = 0;
   if (!camera_->project(ray.origin + ray.direction, x, y)) return -1;
-  const int cx = static_cast<int>(std::floor(x / kCellPixels)), cy = static_cast<int>(std::floor(y / kCellPixels));
+  const int cx = static_cast<int>(std::floor(x / static_cast<float>(cellPixels_)));
+  const int cy = static_cast<int>(std::floor(y / static_cast<float>(cellPixels_)));
   if (cx < 0 || cy < 0 || cx >= cellsX_ || cy >= cellsY_) return -1;
   return cy * cellsX_ + cx;
 }

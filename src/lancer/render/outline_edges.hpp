@@ -37,12 +37,14 @@ class OutlineEdges {
     std::uint16_t style;
   };
   static constexpr std::uint32_t kNoFace = 0xFFFFFFFFu;
-  static constexpr int kCellPixels = 4;
+  static constexpr int kMinCellPixels = 4;
+  static constexpr int kMaxCellsAcross = 1024;
 
   int cellOf(const Ray& ray) const;  // -1 outside the image
 
   const Scene* scene_;
   const Camera* camera_;
+  int cellPixels_ = kMinCellPixels;
   int cellsX_ = 0, cellsY_ = 0;
   std::vector<Segment> segments_;
   std::vector<std::uint32_t> cellStart_;  // cellsX_ * cellsY_ + 1 offsets into cellSegments_
