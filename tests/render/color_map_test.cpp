@@ -103,9 +103,10 @@ TEST(ColorBar, ConstantFieldIsLabelledOnce) {
   for (int y = 0; y < 300; ++y)
     for (int x = 0; x < 120; ++x) text.at(x, y) = {1, 1, 1, 1};
   drawTinyText(text, 50, 10, "2.5", 1, {0, 0, 0, 1});  // anywhere right of the bar
-  const int tickPixels = 3;  // 3 * scale pixels of tick, scale 1 at 300 rows
+  const int tickPixels = 3;                            // 3 * scale pixels of tick, scale 1 at 300 rows
   EXPECT_EQ(labelInk(legend), labelInk(text) + tickPixels);
-  for (int y : {8, 150, 291}) EXPECT_LT(length(legend.at(10, y).rgb() - colorMapLookup(ColorMapKind::Viridis, 0.5f)), 1e-6f);
+  for (int y : {8, 150, 291})
+    EXPECT_LT(length(legend.at(10, y).rgb() - colorMapLookup(ColorMapKind::Viridis, 0.5f)), 1e-6f);
   // A range narrower than the labels' four digits reads as one number too.
   EXPECT_EQ(labelInk(colorBarImage(ColorMapKind::Viridis, 1.0, 1.000001, 120, 300)),
             labelInk(colorBarImage(ColorMapKind::Viridis, 1.0, 1.0, 120, 300)));

@@ -144,7 +144,8 @@ TEST(Edges, OutlineEdgesAreAsWideAsInteriorEdges) {
     for (double y : {0.375, 0.625}) {
       const double interior = inkAcross(image, 0.25, y);
       EXPECT_NEAR(interior, 3.0, 0.05) << "y " << y;
-      for (double x : {0.0, 1.0}) EXPECT_NEAR(inkAcross(image, x, y), interior, 0.05) << "x " << x << " y " << y;
+      for (double x : {0.0, 1.0})
+        EXPECT_NEAR(inkAcross(image, x, y), interior, 0.05) << "x " << x << " y " << y;
     }
   }
 }

@@ -75,8 +75,8 @@ TEST(QuickLookTurntable, UpOptionOverridesTheGuess) {
   test::ScratchFolder folder;
   const std::string mesh = test::quoted(std::string(LANCER_TEST_DATA_DIR) + "/render/bracket_zup.msh");
   auto render = [&](const std::string& options, const std::string& name) {
-    const test::CommandResult result =
-        test::runCli("render -q --width 48 --height 36 " + options + " " + mesh + " -o " + test::quoted(folder.file(name)));
+    const test::CommandResult result = test::runCli("render -q --width 48 --height 36 " + options + " " +
+                                                    mesh + " -o " + test::quoted(folder.file(name)));
     EXPECT_EQ(result.exitCode, 0) << result.output;
     return test::readBytes(folder.file(name));
   };
@@ -84,8 +84,8 @@ TEST(QuickLookTurntable, UpOptionOverridesTheGuess) {
   EXPECT_EQ(render("--up z", "z.png"), guessed);
   EXPECT_NE(render("--up y", "y.png"), guessed);
   EXPECT_NE(render("--up -z", "minus_z.png"), guessed);
-  const test::CommandResult animate = test::runCli("animate -q --width 32 --height 24 --frames 3 --up x " + mesh +
-                                                   " -o " + test::quoted(folder.file("f_%04d.png")));
+  const test::CommandResult animate = test::runCli("animate -q --width 32 --height 24 --frames 3 --up x " +
+                                                   mesh + " -o " + test::quoted(folder.file("f_%04d.png")));
   EXPECT_EQ(animate.exitCode, 0) << animate.output;
 }
 

@@ -87,7 +87,8 @@ TEST(ShadowAcneProperty, HeightFieldsLitFromStraightAboveNeverShadowThemselves) 
         countUnlit(image, seen, unlit);
         EXPECT_GT(seen, d.render.width * d.render.height / 8) << "size " << size;
         EXPECT_EQ(unlit, 0) << "size " << size << (quads ? " quads" : " triangles") << " shading "
-                            << static_cast<int>(shading) << ": " << unlit << " of " << seen << " pixels unlit";
+                            << static_cast<int>(shading) << ": " << unlit << " of " << seen
+                            << " pixels unlit";
         ++fields;
       }
     }

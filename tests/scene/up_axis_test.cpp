@@ -101,7 +101,8 @@ TEST(UpAxis, QuickLookCameraFollowsTheGuessOrTheOverride) {
 TEST(UpAxis, QuickLookLightsEveryFaceTheCameraSeesFromItsFront) {
   std::mt19937 random(5);
   std::uniform_real_distribution<double> unit(-1, 1);
-  for (const char* name : {"render/bracket_zup.msh", "render/bracket_coarse.msh", "msh/square_tri3_v41_ascii.msh"}) {
+  for (const char* name :
+       {"render/bracket_zup.msh", "render/bracket_coarse.msh", "msh/square_tri3_v41_ascii.msh"}) {
     const Mesh mesh = fixture(name);
     for (int size = 0; size < 2; ++size) {
       SceneDescription d = quickLookScene(name, mesh);
@@ -114,7 +115,8 @@ TEST(UpAxis, QuickLookLightsEveryFaceTheCameraSeesFromItsFront) {
       ASSERT_EQ(d.lights.size(), 2u);
       EXPECT_LT(length(d.lights[1].position - eye), 1e-9 * length(world.extent())) << name;
       for (int k = 0; k < 2000; ++k) {
-        const Vec3d p = world.center() + Vec3d{unit(random), unit(random), unit(random)} * (0.5 * world.extent());
+        const Vec3d p =
+            world.center() + Vec3d{unit(random), unit(random), unit(random)} * (0.5 * world.extent());
         Vec3d n = normalize(Vec3d{unit(random), unit(random), unit(random)});
         if (dot(n, eye - p) <= 0) n = -n;  // the side the camera sees
         bool lit = false;

@@ -118,7 +118,8 @@ Image colorBarImage(ColorMapKind kind, double low, double high, int width, int h
   }
   // Five ticks that would all read the same number (a constant field, or a range below the labels'
   // four digits) are one tick, at the middle, labelled once.
-  const bool oneLabel = std::all_of(labels.begin(), labels.end(), [&](const std::string& l) { return l == labels[0]; });
+  const bool oneLabel =
+      std::all_of(labels.begin(), labels.end(), [&](const std::string& l) { return l == labels[0]; });
   for (int i = oneLabel ? kTicks / 2 : 0; i < (oneLabel ? kTicks / 2 + 1 : kTicks); ++i) {
     const double fraction = static_cast<double>(i) / (kTicks - 1);
     const int row = barBottom - 1 - static_cast<int>(std::lround(fraction * (barBottom - 1 - barTop)));

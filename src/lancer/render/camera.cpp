@@ -17,8 +17,7 @@ Camera::Camera(const CameraSettings& settings, const Vec3d& sceneOrigin, const A
   const double aspect = static_cast<double>(imageWidth) / imageHeight;
   const Aabbd worldBounds{sceneOrigin + toDouble(sceneBounds.lower), sceneOrigin + toDouble(sceneBounds.upper)};
   const Vec3d lookAt = settings.lookAt.value_or(worldBounds.empty() ? Vec3d{} : worldBounds.center());
-  const Vec3d position =
-      settings.position.value_or(defaultCameraPosition(worldBounds, settings, aspect));
+  const Vec3d position = settings.position.value_or(defaultCameraPosition(worldBounds, settings, aspect));
 
   const Vec3d forward = normalize(lookAt - position);
   Vec3d right = normalize(cross(forward, settings.up));

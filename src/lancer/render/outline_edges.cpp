@@ -63,7 +63,8 @@ OutlineEdges::OutlineEdges(const Scene& scene, const Camera& camera, int imageWi
   // steps of half a cell, so the entries grow with its length, not with its screen box; two passes
   // (count, then fill), each cell taking a segment once. Cells grow with the image so that a huge
   // image keeps at most about kMaxCellsAcross^2 of them.
-  cellPixels_ = std::max(kMinCellPixels, (std::max(imageWidth, imageHeight) + kMaxCellsAcross - 1) / kMaxCellsAcross);
+  cellPixels_ =
+      std::max(kMinCellPixels, (std::max(imageWidth, imageHeight) + kMaxCellsAcross - 1) / kMaxCellsAcross);
   cellsX_ = (imageWidth + cellPixels_ - 1) / cellPixels_;
   cellsY_ = (imageHeight + cellPixels_ - 1) / cellPixels_;
   const std::size_t cellCount = static_cast<std::size_t>(cellsX_) * static_cast<std::size_t>(cellsY_);
@@ -85,8 +86,10 @@ OutlineEdges::OutlineEdges(const Scene& scene, const Camera& camera, int imageWi
         continue;
       }
       const float r = q[k] / p[k];
-      if (p[k] < 0.0f) t0 = std::max(t0, r);
-      else t1 = std::min(t1, r);
+      if (p[k] < 0.0f)
+        t0 = std::max(t0, r);
+      else
+        t1 = std::min(t1, r);
     }
     if (!(t0 <= t1)) return;
     const float length = std::hypot(dx, dy) * (t1 - t0);
@@ -101,7 +104,8 @@ OutlineEdges::OutlineEdges(const Scene& scene, const Camera& camera, int imageWi
       const float x = ax + dx * t, y = ay + dy * t;
       for (int cy = cell(y - reach, cellsY_); cy <= cell(y + reach, cellsY_); ++cy) {
         for (int cx = cell(x - reach, cellsX_); cx <= cell(x + reach, cellsX_); ++cx) {
-          const std::size_t c = static_cast<std::size_t>(cy) * static_cast<std::size_t>(cellsX_) + static_cast<std::size_t>(cx);
+          const std::size_t c =
+              static_cast<std::size_t>(cy) * static_cast<std::size_t>(cellsX_) + static_cast<std::size_t>(cx);
           if (lastSegment[c] == s) continue;
           lastSegment[c] = s;
           onCell(c);
@@ -110,7 +114,8 @@ OutlineEdges::OutlineEdges(const Scene& scene, const Camera& camera, int imageWi
     }
   };
   cellStart_.assign(cellCount + 1, 0);
-  for (std::uint32_t s = 0; s < segments_.size(); ++s) visitCells(s, [&](std::size_t c) { ++cellStart_[c + 1]; });
+  for (std::uint32_t s = 0; s < segments_.size(); ++s)
+    visitCells(s, [&](std::size_t c) { ++cellStart_[c + 1]; });
   for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
   cellSegments_.resize(cellStart_.back());
   std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
@@ -131,7 +136,8 @@ int OutlineEdges::cellOf(const Ray& ray) const {
 bool OutlineEdges::near(const Ray& ray) const {
   if (segments_.empty()) return false;
   const int cell = cellOf(ray);
-  return cell >= 0 && cellStart_[static_cast<std::size_t>(cell) + 1] > cellStart_[static_cast<std::size_t>(cell)];
+  return cell >= 0 &&
+         cellStart_[static_cast<std::size_t>(cell) + 1] > cellStart_[static_cast<std::size_t>(cell)];
 }
 
 float OutlineEdges::coverage(const Ray& ray, std::uint32_t hitFace, float hitDistance,
@@ -140,10 +146,11 @@ float OutlineEdges::coverage(const Ray& ray, std::uint32_t hitFace, float hitDis
   if (cell < 0) return 0.0f;
   const Vec3 direction = normalize(ray.direction);
   float best = 0.0f;
-  for (std::uint32_t i = cellStart_[static_cast<std::size_t>(cell)]; i < cellStart_[static_cast<std::size_t>(cell) + 1];
-       ++i) {
+  for (std::uint32_t i = cellStart_[static_cast<std::size_t>(cell)];
+       i < cellStart_[static_cast<std::size_t>(cell) + 1]; ++i) {
     const Segment& segment = segments_[cellSegments_[i]];
-    if (hitFace != kNoFace && (segment.faces[0] == hitFace || segment.faces[1] == hitFace)) continue;  // drawn
+    if (hitFace != kNoFace && (segment.faces[0] == hitFace || segment.faces[1] == hitFace))
+      continue;  // drawn
     // The segment's point nearest the ray: in front of what the ray hit, and not cut away.
     const Vec3 w = segment.a - ray.origin, e = segment.b - segment.a;
     const Vec3 wAcross = w - direction * dot(w, direction), eAcross = e - direction * dot(e, direction);

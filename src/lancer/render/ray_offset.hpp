@@ -30,7 +30,8 @@ inline Vec3 offsetRayOrigin(const Vec3& p, const Vec3& error, const Vec3& normal
   const float distance = dot(abs(normal), error);
   const Vec3 offset = normal * distance;
   auto away = [](float moved, float by) {
-    return by > 0.0f ? std::nextafter(moved, INFINITY) : (by < 0.0f ? std::nextafter(moved, -INFINITY) : moved);
+    return by > 0.0f ? std::nextafter(moved, INFINITY)
+                     : (by < 0.0f ? std::nextafter(moved, -INFINITY) : moved);
   };
   const Vec3 moved = p + offset;
   return {away(moved.x, offset.x), away(moved.y, offset.y), away(moved.z, offset.z)};

@@ -85,7 +85,8 @@ TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounter
   return result;
 }
 
-void Tracer::paintOutlines(const Ray& ray, float hitDistance, TraceResult& result, TraceCounters& counters) const {
+void Tracer::paintOutlines(const Ray& ray, float hitDistance, TraceResult& result,
+                           TraceCounters& counters) const {
   // The face the ray hit draws its own edges; the query is repeated only near outlines.
   ++counters.rays;
   const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
@@ -174,7 +175,8 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
     if (maxComponent(contribution) <= 0.0f) continue;
     // A light behind the geometric surface is blocked by the surface itself.
     if (dot(surface.geometricNormal, lightDirection) <= 0.0f) continue;
-    const Vec3 shadowOrigin = offsetRayOrigin(surface.position, surface.positionError, surface.geometricNormal);
+    const Vec3 shadowOrigin =
+        offsetRayOrigin(surface.position, surface.positionError, surface.geometricNormal);
     color += contribution * lightTransmission(shadowOrigin, light.position, counters);
   }
   return color;

@@ -43,7 +43,8 @@ class Tracer {
          PixelFootprint footprint = {});
   // For primary rays of `camera` (which must outlive the tracer): edges get its pixel footprint,
   // and edges on outlines are drawn whole (outline_edges.hpp).
-  Tracer(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings, const Camera& camera);
+  Tracer(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings,
+         const Camera& camera);
 
   // `parallelView`: the ray is an orthographic primary ray, so the viewer is at infinity along it.
   TraceResult tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const;

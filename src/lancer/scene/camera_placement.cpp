@@ -20,7 +20,8 @@ double fittingDistance(double radius, double fovDegrees, double aspect) {
 
 Vec3d defaultCameraPosition(const Aabbd& worldBounds, const CameraSettings& settings, double aspect) {
   const double radius = std::max(0.5 * length(worldBounds.extent()), 1e-12);
-  return worldBounds.center() + normalize(settings.viewFrom) * fittingDistance(radius, settings.fovDegrees, aspect);
+  return worldBounds.center() +
+         normalize(settings.viewFrom) * fittingDistance(radius, settings.fovDegrees, aspect);
 }
 
 }  // namespace lancer

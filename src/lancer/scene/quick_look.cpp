@@ -73,8 +73,9 @@ SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh, s
 
 void placeQuickLookLights(SceneDescription& scene, const Mesh& mesh) {
   const Aabb bounds = faceBounds(mesh);
-  const Aabbd world = bounds.empty() ? Aabbd{mesh.origin, mesh.origin}
-                                     : Aabbd{mesh.origin + toDouble(bounds.lower), mesh.origin + toDouble(bounds.upper)};
+  const Aabbd world = bounds.empty()
+                          ? Aabbd{mesh.origin, mesh.origin}
+                          : Aabbd{mesh.origin + toDouble(bounds.lower), mesh.origin + toDouble(bounds.upper)};
   const Vec3d centre = world.center();
   const double radius = std::max(0.5 * length(world.extent()), 1e-12);
   const CameraSettings& camera = scene.camera;
@@ -86,7 +87,9 @@ void placeQuickLookLights(SceneDescription& scene, const Mesh& mesh) {
   scene.lights.clear();
   // The key: high on the left, in front, so the top, front and side faces of the 3/4 view read
   // apart; far enough to light the whole part evenly.
-  scene.lights.push_back({centre + normalize(right * -0.5 + up * 1.8 + front * 0.9) * (6 * radius), {0.9f, 0.9f, 0.9f}, {1, 0, 0}});
+  scene.lights.push_back({centre + normalize(right * -0.5 + up * 1.8 + front * 0.9) * (6 * radius),
+                          {0.9f, 0.9f, 0.9f},
+                          {1, 0, 0}});
   // The fill sits at the eye: whatever the camera sees, it lights (the shadow ray retraces the view).
   scene.lights.push_back({defaultCameraPosition(world, camera, aspect), {0.5f, 0.5f, 0.52f}, {1, 0, 0}});
 }

@@ -109,7 +109,7 @@ struct AnimationSettings {
   int frames = 36;
   double fps = 12;
   int orbitLight = -1;  // -1: the camera orbits; k >= 0: light k orbits
-  std::optional<Vec3d> axis;  // default: the camera's up (a turntable about the up axis)
+  std::optional<Vec3d> axis;    // default: the camera's up (a turntable about the up axis)
   std::optional<Vec3d> center;  // default: centre of the scene's bounding box
   double degrees = 360;
 };

@@ -189,11 +189,12 @@ CameraSettings readCamera(const SceneFile& file, const toml::table& table) {
   // up_axis: the up of the automatic camera, which then takes its 3/4 view from that side too.
   if (auto upAxis = reader.choice("up_axis", kUpAxisNames)) {
     if (reader.find("up"))
-      reader.fail(*reader.find("up_axis"),
-                  fmt::format("camera.up_axis and camera.up both say which way is up; keep one (up_axis = \"{}\" "
-                              "is up = {})",
-                              kUpAxisNames[static_cast<std::size_t>(*upAxis)],
-                              formatVector(upVector(static_cast<UpAxis>(*upAxis)))));
+      reader.fail(
+          *reader.find("up_axis"),
+          fmt::format("camera.up_axis and camera.up both say which way is up; keep one (up_axis = \"{}\" "
+                      "is up = {})",
+                      kUpAxisNames[static_cast<std::size_t>(*upAxis)],
+                      formatVector(upVector(static_cast<UpAxis>(*upAxis)))));
     applyUpAxis(camera, static_cast<UpAxis>(*upAxis));
   }
   if (auto fov = reader.number("fov", NumberRange::strictlyBetween(0, 180))) camera.fovDegrees = *fov;

@@ -9,8 +9,8 @@ namespace {
 constexpr Vec3d kAxes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 // The 3/4 view in a frame's own terms: right, above, in front (camera.cpp's historical y-up view).
 constexpr double kViewRight = 0.9, kViewUp = 0.65, kViewFront = 1.3;
-constexpr double kPlanarExtent = 1e-6;   // of the largest extent
-constexpr double kFlatCosine = 0.9962;   // cos 5 degrees
+constexpr double kPlanarExtent = 1e-6;  // of the largest extent
+constexpr double kFlatCosine = 0.9962;  // cos 5 degrees
 constexpr double kOnSide = 0.05;  // of the largest extent: a face on (or near: feet, bolt heads) a box side
 constexpr double kNearTie = 0.02;
 // A base is at least this share of the surface: a sphere's flat pole facets are not a base.
@@ -106,7 +106,8 @@ UpGuess guessUpAxis(const Mesh& mesh) {
     for (int axis = 0; axis < 3; ++axis) {
       if (std::abs(normal[axis]) < kFlatCosine) continue;
       const double position = mesh.positions[face.vertex[0]][axis];
-      if (std::abs(position - bounds.lower[axis]) <= onSide || std::abs(position - bounds.upper[axis]) <= onSide)
+      if (std::abs(position - bounds.lower[axis]) <= onSide ||
+          std::abs(position - bounds.upper[axis]) <= onSide)
         base[axis] += area;
     }
   }
