@@ -14,4 +14,6 @@ mesh() {
   rm -f "$1.geo_unrolled"
 }
 for geo in tests/data/render/*.geo; do mesh "${geo%.geo}"; done
+# The terrain has no geometry, only a mesh: gmsh's Python API builds it (python3-gmsh).
+/usr/bin/python3 tests/data/render/terrain.py tests/data/render/terrain.msh
 for name in bracket floor sphere three_materials; do mesh "examples/meshes/$name"; done

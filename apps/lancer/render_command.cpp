@@ -42,7 +42,7 @@ int tracePixel(const PreparedScene& prepared, const Camera& camera, const std::s
       x >= settings.width || y >= settings.height)
     throw InputError(SourceLocation{"--pixel"}, fmt::format("'{}' is not a pixel 'x,y' inside {}x{}", pixel,
                                                             settings.width, settings.height));
-  const Tracer tracer(prepared.scene, prepared.accelerator, settings, camera.pixelFootprint());
+  const Tracer tracer(prepared.scene, prepared.accelerator, settings, camera);
   TraceCounters counters;
   std::uint64_t samples = 0;
   const Rgba value = renderPixel(tracer, camera, settings, x, y, counters, samples);

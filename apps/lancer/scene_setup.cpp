@@ -93,21 +93,32 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
   command.add_flag("--srgb", overrides.srgb, "Encode the output with the sRGB curve instead of linear");
   command.add_flag("--edges", overrides.edges,
                    "Draw element edges (1 pixel, black) on every mesh whose scene sets no edges");
+  command.add_option("--up", overrides.up,
+                     "Up axis of the automatic camera: x, y, z, -x, -y or -z (a bare mesh: guessed; a scene: "
+                     "y)");
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
 }
 
 PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides,
                            const ImageBufferChoice& imageBuffer) {
   const auto start = std::chrono::steady_clock::now();
+  std::optional<UpAxis> up;
+  if (!overrides.up.empty()) {
+    up = parseUpAxis(overrides.up);
+    if (!up)
+      throw InputError(SourceLocation{"--up"},
+                       fmt::format("'{}' is not an axis: use x, y, z, -x, -y or -z", overrides.up));
+  }
   SceneDescription description;
   std::vector<Mesh> preloaded;
   if (isMeshFile(input)) {
     preloaded.push_back(readMsh(input));
     if (const std::string reason = nothingToDrawReason(preloaded.front()); !reason.empty())
       throw InputError(SourceLocation{input}, "nothing to draw: " + reason);
-    description = quickLookScene(input, preloaded.front());
+    description = quickLookScene(input, preloaded.front(), up);
   } else {
     description = loadScene(input);
+    if (up) applyUpAxis(description.camera, *up);
   }
   RenderSettings& settings = description.render;
   if (overrides.width) settings.width = *overrides.width;
@@ -116,6 +127,9 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
   if (overrides.srgb) settings.srgb = true;
   if (!overrides.sampler.empty()) settings.sampler = samplerFromName(overrides.sampler);
   if (overrides.samples) settings.samples = *overrides.samples;
+  // The quick look's fill sits at the automatic camera, whose distance depends on the image's aspect.
+  if (!preloaded.empty() && (overrides.width || overrides.height))
+    placeQuickLookLights(description, preloaded.front());
   const int root = static_cast<int>(std::lround(std::sqrt(settings.samples)));
   if (settings.sampler != SamplerKind::Adaptive && root * root != settings.samples)
     throw InputError(SourceLocation{"--samples"},

@@ -22,6 +22,7 @@ struct SceneOverrides {
   int threads = 0;
   bool srgb = false;
   bool edges = false;  // draw element edges on every mesh that does not set its own
+  std::string up;      // --up: the automatic camera's up axis (x, y, z, -x, -y, -z)
   bool quiet = false;
 };
 

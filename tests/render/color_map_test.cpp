@@ -87,6 +87,33 @@ TEST(ColorBar, BarRunsFromLowAtTheBottomToHighAtTheTopWithLabels) {
   EXPECT_EQ(legend.at(legend.width() - 1, legend.height() / 2 - 20).r, 1.0f);
 }
 
+// Ink pixels right of the bar (120 wide: the bar ends at x = 32), the ticks and labels.
+int labelInk(const Image& legend) {
+  int ink = 0;
+  for (int y = 0; y < legend.height(); ++y)
+    for (int x = 32; x < legend.width(); ++x) ink += legend.at(x, y).r == 0 ? 1 : 0;
+  return ink;
+}
+
+// A constant field is labelled once, at the middle tick, and its bar is the one colour the field
+// is drawn in (the map's middle); five equal labels were drawn before.
+TEST(ColorBar, ConstantFieldIsLabelledOnce) {
+  const Image legend = colorBarImage(ColorMapKind::Viridis, 2.5, 2.5, 120, 300);
+  Image text(120, 300);
+  for (int y = 0; y < 300; ++y)
+    for (int x = 0; x < 120; ++x) text.at(x, y) = {1, 1, 1, 1};
+  drawTinyText(text, 50, 10, "2.5", 1, {0, 0, 0, 1});  // anywhere right of the bar
+  const int tickPixels = 3;                            // 3 * scale pixels of tick, scale 1 at 300 rows
+  EXPECT_EQ(labelInk(legend), labelInk(text) + tickPixels);
+  for (int y : {8, 150, 291})
+    EXPECT_LT(length(legend.at(10, y).rgb() - colorMapLookup(ColorMapKind::Viridis, 0.5f)), 1e-6f);
+  // A range narrower than the labels' four digits reads as one number too.
+  EXPECT_EQ(labelInk(colorBarImage(ColorMapKind::Viridis, 1.0, 1.000001, 120, 300)),
+            labelInk(colorBarImage(ColorMapKind::Viridis, 1.0, 1.0, 120, 300)));
+  // A real range keeps its five labels.
+  EXPECT_GT(labelInk(colorBarImage(ColorMapKind::Viridis, 2.5, 12.5, 120, 300)), 4 * labelInk(legend));
+}
+
 TEST(TinyFont, WidthAndGlyphPixels) {
   EXPECT_EQ(tinyTextWidth("", 1), 0);
   EXPECT_EQ(tinyTextWidth("1", 1), 5);

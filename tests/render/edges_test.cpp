@@ -112,3 +112,43 @@ TEST(EdgesGolden, QuadAndSecondOrderMeshesInPerspective) {
 
 }  // namespace
 }  // namespace lancer
+
+namespace lancer {
+namespace {
+
+// Ink of the red line nearest world x along the pixel row through world y: the sum over the row
+// of each pixel's coverage 1 - green (white under the line, red on it), within 4 pixels of x.
+double inkAcross(const Image& image, double x, double y) {
+  const double pixel = 1.2 / kSize;
+  const int row = static_cast<int>((0.5 - y) / pixel + kSize / 2.0);
+  const double centre = (x - 0.5) / pixel + kSize / 2.0;
+  double ink = 0;
+  for (int column = static_cast<int>(centre) - 4; column <= static_cast<int>(centre) + 4; ++column)
+    ink += 1.0 - image.at(column, row).g;
+  return ink;
+}
+
+// An element edge on the square's outline is drawn whole, as wide as an interior edge: over the
+// background, and over a second surface behind it.
+TEST(Edges, OutlineEdgesAreAsWideAsInteriorEdges) {
+  for (bool floorBehind : {false, true}) {
+    SceneDescription d = topDownEdges();
+    d.meshes[0].edges->widthPixels = 3;
+    std::vector<Mesh> meshes;
+    meshes.push_back(readMsh(test::mshFixture("square_quad4_v41_bin.msh")));
+    if (floorBehind) {
+      d.meshes.resize(2);  // a white floor without edges, a unit below
+      meshes.push_back(test::squareMesh(-1, -1, 2, 2, -1));
+    }
+    const Image image = test::renderScene(d, test::sceneFromMeshes(d, std::move(meshes)));
+    for (double y : {0.375, 0.625}) {
+      const double interior = inkAcross(image, 0.25, y);
+      EXPECT_NEAR(interior, 3.0, 0.05) << "y " << y;
+      for (double x : {0.0, 1.0})
+        EXPECT_NEAR(inkAcross(image, x, y), interior, 0.05) << "x " << x << " y " << y;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace lancer

@@ -134,7 +134,8 @@ TEST(SceneLoader, FullSceneSetsEveryField) {
   EXPECT_EQ(animation.frames, 24);
   EXPECT_DOUBLE_EQ(animation.fps, 8.5);
   EXPECT_EQ(animation.orbitLight, 1);
-  expectVec(animation.axis, 0, 0, 1);
+  ASSERT_TRUE(animation.axis);
+  expectVec(*animation.axis, 0, 0, 1);
   ASSERT_TRUE(animation.center);
   expectVec(*animation.center, 1, 2, 3);
   EXPECT_DOUBLE_EQ(animation.degrees, 180);
@@ -168,13 +169,23 @@ TEST(SceneLoader, EmptySceneTakesEveryDefault) {
   EXPECT_FALSE(scene.animation);
 }
 
+TEST(SceneLoader, UpAxisTurnsTheAutomaticCameraAndTheTurntable) {
+  const SceneDescription scene = parseScene("[camera]\nup_axis = \"z\"\n[animation]\n", "scene.toml");
+  expectVec(scene.camera.up, 0, 0, 1);
+  // The 3/4 view from the right, above (+z) and in front (-y).
+  expectVec(scene.camera.viewFrom, 0.9, -1.3, 0.65);
+  EXPECT_FALSE(scene.animation->axis);  // the orbit takes the camera's up
+  expectVec(parseScene("[camera]\n", "scene.toml").camera.viewFrom, 0.9, 0.65, 1.3);
+}
+
 TEST(SceneLoader, AnimationTableTakesDefaultsForAbsentKeys) {
   const SceneDescription scene = parseScene("[animation]\n", "scene.toml");
   ASSERT_TRUE(scene.animation);
   EXPECT_EQ(scene.animation->frames, 36);
   EXPECT_DOUBLE_EQ(scene.animation->fps, 12);
   EXPECT_EQ(scene.animation->orbitLight, -1);
-  expectVec(scene.animation->axis, 0, 1, 0);
+  EXPECT_FALSE(scene.animation->axis);  // the camera's up, y by default
+  expectVec(scene.camera.up, 0, 1, 0);
   EXPECT_FALSE(scene.animation->center);
   EXPECT_DOUBLE_EQ(scene.animation->degrees, 360);
   EXPECT_EQ(parseScene("[animation]\norbit = \"camera\"\n", "scene.toml").animation->orbitLight, -1);

@@ -359,6 +359,16 @@ std::vector<Case> catalogue() {
        "$LANCER view part.msh", nullptr},
       {"cli_misspelt_subcommand", "misspelt subcommand", "`lancer rendr part.msh`", nullptr,
        "$LANCER rendr part.msh", nullptr},
+      // --- the automatic camera's up axis ---
+      sceneCase("scene_bad_up_axis", "unknown up axis", "`up_axis = \"up\"`",
+                "[camera]\nup_axis = \"up\"\n[[mesh]]\nfile = \"part.msh\"\n"),
+      sceneCase("scene_up_and_up_axis", "camera up given twice", "`up = [0, 0, 1]` and `up_axis = \"z\"`",
+                "[camera]\nup = [0, 0, 1]\nup_axis = \"z\"\n[[mesh]]\nfile = \"part.msh\"\n"),
+      {"cli_bad_up", "--up not an axis", "`--up w`", withScene(scene()),
+       "$LANCER render -q --up w scene.toml -o out.png", nullptr},
+      {"cli_bad_up_mesh", "--up not an axis, bare mesh", "`--up=+z part.msh`",
+       [](const Scratch& s) { s.copy(dataFile("msh/square_tri3_v41_ascii.msh"), "part.msh"); },
+       "$LANCER animate -q --up=+z part.msh -o out.gif", nullptr},
   };
   return cases;
 }

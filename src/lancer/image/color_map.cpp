@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "lancer/image/tiny_font.hpp"
 
@@ -100,21 +101,32 @@ Image colorBarImage(ColorMapKind kind, double low, double high, int width, int h
   const int margin = (kTinyFontHeight * scale + 1) / 2 + 2;  // half a label above the top tick
   const int barLeft = 2 * scale, barRight = barLeft + std::max(4, width / 4);
   const int barTop = margin, barBottom = height - margin;
+  // A constant field is drawn in the map's middle colour (color_by.cpp), so its bar is that colour.
+  const bool constant = low == high;
   for (int y = barTop; y < barBottom; ++y) {
     // Row centres map the bottom row to low and the top row to high.
     const float t = 1.0f - (static_cast<float>(y - barTop) + 0.5f) / static_cast<float>(barBottom - barTop);
-    const Vec3 c = colorMapLookup(kind, t);
+    const Vec3 c = colorMapLookup(kind, constant ? 0.5f : t);
     for (int x = barLeft; x < barRight; ++x) image.at(x, y) = {c.x, c.y, c.z, 1};
   }
   constexpr int kTicks = 5;
+  std::array<std::string, kTicks> labels;
   for (int i = 0; i < kTicks; ++i) {
+    char label[32];
+    std::snprintf(label, sizeof label, "%.4g", low + static_cast<double>(i) / (kTicks - 1) * (high - low));
+    labels[static_cast<std::size_t>(i)] = label;
+  }
+  // Five ticks that would all read the same number (a constant field, or a range below the labels'
+  // four digits) are one tick, at the middle, labelled once.
+  const bool oneLabel =
+      std::all_of(labels.begin(), labels.end(), [&](const std::string& l) { return l == labels[0]; });
+  for (int i = oneLabel ? kTicks / 2 : 0; i < (oneLabel ? kTicks / 2 + 1 : kTicks); ++i) {
     const double fraction = static_cast<double>(i) / (kTicks - 1);
     const int row = barBottom - 1 - static_cast<int>(std::lround(fraction * (barBottom - 1 - barTop)));
     const int tickEnd = barRight + 3 * scale;
     for (int x = barRight; x < std::min(width, tickEnd); ++x) image.at(x, row) = ink;
-    char label[32];
-    std::snprintf(label, sizeof label, "%.4g", low + fraction * (high - low));
-    drawTinyText(image, tickEnd + 2 * scale, row - kTinyFontHeight * scale / 2, label, scale, ink);
+    drawTinyText(image, tickEnd + 2 * scale, row - kTinyFontHeight * scale / 2,
+                 labels[static_cast<std::size_t>(i)], scale, ink);
   }
   return image;
 }

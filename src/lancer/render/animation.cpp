@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace lancer {
 
@@ -23,6 +24,10 @@ Vec3d rotateAbout(const Vec3d& p, const Vec3d& center, const Vec3d& axis, double
   return center + v * c + cross(k, v) * s + k * (dot(k, v) * (1 - c));
 }
 
+Vec3d orbitAxis(const AnimationSettings& animation, const CameraSettings& camera) {
+  return animation.axis.value_or(camera.up);
+}
+
 Vec3d orbitCenter(const AnimationSettings& animation, const Scene& scene) {
   if (animation.center) return *animation.center;
   return scene.origin + toDouble(scene.bounds.empty() ? Vec3{} : scene.bounds.center());
@@ -35,13 +40,14 @@ CameraSettings orbitCamera(const CameraSettings& camera, const AnimationSettings
   CameraSettings result = camera;
   const Vec3d sceneCentre = worldBounds.empty() ? Vec3d{} : worldBounds.center();
   const Vec3d position = camera.position.value_or(
-      defaultCameraPosition(worldBounds, camera.fovDegrees, static_cast<double>(imageWidth) / imageHeight));
+      defaultCameraPosition(worldBounds, camera, static_cast<double>(imageWidth) / imageHeight));
   const Vec3d lookAt = camera.lookAt.value_or(sceneCentre);
   const Vec3d centre = orbitCenter(animation, scene);
+  const Vec3d axis = orbitAxis(animation, camera);
   const double degrees = orbitAngleDegrees(animation, frame);
-  result.position = rotateAbout(position, centre, animation.axis, degrees);
-  result.lookAt = rotateAbout(lookAt, centre, animation.axis, degrees);
-  result.up = rotateAbout(camera.up, Vec3d{}, animation.axis, degrees);
+  result.position = rotateAbout(position, centre, axis, degrees);
+  result.lookAt = rotateAbout(lookAt, centre, axis, degrees);
+  result.up = rotateAbout(camera.up, Vec3d{}, axis, degrees);
   return result;
 }
 
@@ -55,22 +61,28 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
   const RenderSettings& settings = description.render;
   AnimationStats stats;
   const bool lightOrbit = animation.orbitLight >= 0;
-  const SceneLight originalLight =
-      lightOrbit ? scene.lights.at(static_cast<std::size_t>(animation.orbitLight)) : SceneLight{};
+  // The lights that turn: the orbiting one, or (quick look) all of them with the camera.
+  const bool lightsWithCamera = !lightOrbit && description.lightsFollowCamera;
+  const std::vector<SceneLight> originalLights = scene.lights;
   const Vec3d centre = orbitCenter(animation, scene);
+  const Vec3d axis = orbitAxis(animation, description.camera);
+  auto turnLight = [&](std::size_t index, double degrees) {
+    // Scene space and back is not exact, so an unturned light keeps its own coordinates.
+    scene.lights[index] = originalLights[index];
+    if (degrees != 0)
+      scene.lights[index].position = scene.toSceneSpace(
+          rotateAbout(scene.origin + toDouble(originalLights[index].position), centre, axis, degrees));
+  };
   for (int frame = 0; frame < animation.frames; ++frame) {
     CameraSettings cameraSettings = description.camera;
+    const double degrees = orbitAngleDegrees(animation, frame);
     if (lightOrbit) {
-      // Scene space and back is not exact, so the unturned light keeps its own coordinates.
-      const double degrees = orbitAngleDegrees(animation, frame);
-      SceneLight& light = scene.lights[static_cast<std::size_t>(animation.orbitLight)];
-      light = originalLight;
-      if (degrees != 0)
-        light.position = scene.toSceneSpace(
-            rotateAbout(scene.origin + toDouble(originalLight.position), centre, animation.axis, degrees));
+      turnLight(static_cast<std::size_t>(animation.orbitLight), degrees);
     } else {
       cameraSettings =
           orbitCamera(description.camera, animation, scene, settings.width, settings.height, frame);
+      if (lightsWithCamera)
+        for (std::size_t i = 0; i < scene.lights.size(); ++i) turnLight(i, degrees);
     }
     const Camera camera(cameraSettings, scene.origin, scene.bounds, settings.width, settings.height);
     RenderOptions frameOptions = options;
@@ -93,7 +105,7 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
     }
     onFrame(frame, image);
   }
-  if (lightOrbit) scene.lights[static_cast<std::size_t>(animation.orbitLight)] = originalLight;
+  scene.lights = originalLights;
   stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return stats;
 }

@@ -15,6 +15,9 @@ double orbitAngleDegrees(const AnimationSettings& animation, int frame);
 // Rodrigues' rotation of p about the line through `center` along `axis` (any non-zero length).
 Vec3d rotateAbout(const Vec3d& p, const Vec3d& center, const Vec3d& axis, double degrees);
 
+// The orbit's axis: the animation's, else the camera's up (a turntable about the up axis).
+Vec3d orbitAxis(const AnimationSettings& animation, const CameraSettings& camera);
+
 // World-space centre of the orbit: the animation's, else the centre of the scene's bounds.
 Vec3d orbitCenter(const AnimationSettings& animation, const Scene& scene);
 
@@ -38,7 +41,8 @@ struct AnimationStats {
 
 // Renders every frame in order with all threads (frames one after another: each frame is already
 // parallel over tiles) and hands each finished frame to `onFrame`. `scene` is modified while a light
-// orbits and restored before returning.
+// orbits (or, with description.lightsFollowCamera, while the lights turn with the camera) and restored
+// before returning.
 AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator, const SceneDescription& description,
                                const AnimationSettings& animation, const RenderOptions& options,
                                const std::function<void(int frame, const Image&)>& onFrame,

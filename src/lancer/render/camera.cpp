@@ -8,22 +8,8 @@ namespace lancer {
 namespace {
 
 constexpr double kDegrees = std::numbers::pi / 180.0;
-// Direction from the scene centre to the default camera: right, above, in front (a 3/4 view).
-constexpr Vec3d kThreeQuarterView{0.9, 0.65, 1.3};
-
-double fittingDistance(double radius, double fovDegrees, double aspect) {
-  // The tighter of the vertical and horizontal half-angles decides; 8% margin around the sphere.
-  const double halfVertical = 0.5 * fovDegrees * kDegrees;
-  const double halfHorizontal = std::atan(std::tan(halfVertical) * aspect);
-  return 1.08 * radius / std::sin(std::min(halfVertical, halfHorizontal));
-}
 
 }  // namespace
-
-Vec3d defaultCameraPosition(const Aabbd& worldBounds, double fovDegrees, double aspect) {
-  const double radius = std::max(0.5 * length(worldBounds.extent()), 1e-12);
-  return worldBounds.center() + normalize(kThreeQuarterView) * fittingDistance(radius, fovDegrees, aspect);
-}
 
 Camera::Camera(const CameraSettings& settings, const Vec3d& sceneOrigin, const Aabb& sceneBounds, int imageWidth,
                int imageHeight)
@@ -31,8 +17,7 @@ Camera::Camera(const CameraSettings& settings, const Vec3d& sceneOrigin, const A
   const double aspect = static_cast<double>(imageWidth) / imageHeight;
   const Aabbd worldBounds{sceneOrigin + toDouble(sceneBounds.lower), sceneOrigin + toDouble(sceneBounds.upper)};
   const Vec3d lookAt = settings.lookAt.value_or(worldBounds.empty() ? Vec3d{} : worldBounds.center());
-  const Vec3d position =
-      settings.position.value_or(defaultCameraPosition(worldBounds, settings.fovDegrees, aspect));
+  const Vec3d position = settings.position.value_or(defaultCameraPosition(worldBounds, settings, aspect));
 
   const Vec3d forward = normalize(lookAt - position);
   Vec3d right = normalize(cross(forward, settings.up));
@@ -63,6 +48,20 @@ Ray Camera::generateRay(float x, float y) const {
     return Ray(position_, normalize(forward_ + right_ * sx + up_ * sy));
   }
   return Ray(position_ + right_ * sx + up_ * sy, forward_);
+}
+
+bool Camera::project(const Vec3& p, float& x, float& y) const {
+  const Vec3 v = p - position_;
+  float sx = dot(v, right_), sy = dot(v, up_);
+  if (projection_ == Projection::Perspective) {
+    const float depth = dot(v, forward_);
+    if (!(depth > 0.0f)) return false;
+    sx /= depth;
+    sy /= depth;
+  }
+  x = 0.5f * (sx / halfWidth_ + 1.0f) / invWidth_;
+  y = 0.5f * (1.0f - sy / halfHeight_) / invHeight_;
+  return true;
 }
 
 PixelFootprint Camera::pixelFootprint() const {

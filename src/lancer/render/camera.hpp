@@ -5,6 +5,7 @@
 #include "lancer/math/aabb.hpp"
 #include "lancer/math/ray.hpp"
 #include "lancer/render/edge_overlay.hpp"
+#include "lancer/scene/camera_placement.hpp"
 #include "lancer/scene/scene_description.hpp"
 
 namespace lancer {
@@ -23,6 +24,9 @@ class Camera {
   // World size of one pixel along a primary ray: grows with distance for a perspective camera,
   // constant for an orthographic one.
   PixelFootprint pixelFootprint() const;
+  // The inverse of generateRay: the image position (pixels from the top-left corner) where scene
+  // point p appears; false when it is behind a perspective camera.
+  bool project(const Vec3& p, float& x, float& y) const;
   const Vec3& position() const { return position_; }
   const Vec3& forward() const { return forward_; }
 
@@ -33,9 +37,5 @@ class Camera {
   float halfWidth_, halfHeight_;  // of the view window at distance 1 (perspective) or in world units
   float invWidth_, invHeight_;
 };
-
-// The default 3/4 view used when a scene gives no camera position: from the front-right-above of
-// the scene's bounding box, far enough that its bounding sphere fits the field of view.
-Vec3d defaultCameraPosition(const Aabbd& worldBounds, double fovDegrees, double aspect);
 
 }  // namespace lancer

@@ -26,8 +26,7 @@ float edgeCoverage(const Vec3& origin, const Vec3& unitDirection, const Vec3* co
     else if (lineCornerMask & (1u << i))
       nearest = std::min(nearest, rayToSegmentDistance(origin, unitDirection, corners[i], corners[i]));
   }
-  const float distancePixels = nearest / pixelSize;
-  return std::clamp(0.5f * widthPixels + 0.5f - distancePixels, 0.0f, 1.0f);
+  return lineCoverage(nearest / pixelSize, widthPixels);
 }
 
 }  // namespace lancer

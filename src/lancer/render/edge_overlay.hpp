@@ -22,6 +22,13 @@ struct PixelFootprint {
 // screen-space distance (times the footprint) between the pixel and the edge's projection.
 float rayToSegmentDistance(const Vec3& origin, const Vec3& unitDirection, const Vec3& a, const Vec3& b);
 
+// Coverage of a line `widthPixels` wide at `distancePixels` from its centre line: 1 on the line, 0
+// beyond half a pixel outside it, linear in between (a box filter).
+inline float lineCoverage(float distancePixels, float widthPixels) {
+  const float c = 0.5f * widthPixels + 0.5f - distancePixels;
+  return c < 0.0f ? 0.0f : (c > 1.0f ? 1.0f : c);
+}
+
 // Coverage in [0, 1] of a line `widthPixels` wide along the marked edges (bit i: corner i to corner
 // i+1) of a face with `cornerCount` corners, for a ray whose pixel is `pixelSize` world units wide
 // at the hit: 1 on the line, 0 beyond half a pixel outside it, linear in between (a box-filtered

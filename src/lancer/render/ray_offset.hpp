@@ -1,6 +1,5 @@
-// Where secondary rays start: the hit point pushed off the surface by an amount that scales with the
-// magnitude of its coordinates, so that neither a 1e-3 part nor a 1e6 part shows self-shadowing acne.
-// Wachter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems ch. 6.
+// Where secondary rays start: the hit point pushed off the surface by more than the rounding error of
+// its coordinates, so that neither a 1e-3 part nor survey coordinates show self-shadowing acne.
 #pragma once
 
 #include <bit>
@@ -11,6 +10,37 @@
 
 namespace lancer {
 
+// Relative rounding error allowed per coordinate of a surface point (SurfacePoint::positionError):
+// 2^-16, 256 float epsilons. It covers rebuilding the point from the triangle's corners (a few
+// epsilons) and the error of the triangle test seen from the moved origin, which grows with the
+// corners' distance to it and with 1 / sin of the angle between the ray and the surface: this margin
+// holds down to rays about 1 degree off the surface, where a light's cosine is below 0.02.
+inline constexpr float kSurfacePointRelativeError = 1.0f / 65536.0f;
+
+// Bound on the error of each coordinate of ray.at(t) (one product and one sum, rounded): for points
+// that are not rebuilt from a triangle's corners, such as a clip plane's cap.
+inline Vec3 rayPointError(const Vec3& origin, const Vec3& direction, float t) {
+  return (abs(origin) + abs(direction * t) * 2.0f) * (4.0f * 0x1p-24f);
+}
+
+// Moves p along `normal` (unit, to the side the new ray leaves from) by the error bound `error` (per
+// coordinate) projected on it, then rounds each coordinate away from p so that the rounding of the
+// sum cannot undo the move. Pharr, Jakob & Humphreys, "Physically Based Rendering", 4th ed., 6.8.6.
+inline Vec3 offsetRayOrigin(const Vec3& p, const Vec3& error, const Vec3& normal) {
+  const float distance = dot(abs(normal), error);
+  const Vec3 offset = normal * distance;
+  auto away = [](float moved, float by) {
+    return by > 0.0f ? std::nextafter(moved, INFINITY)
+                     : (by < 0.0f ? std::nextafter(moved, -INFINITY) : moved);
+  };
+  const Vec3 moved = p + offset;
+  return {away(moved.x, offset.x), away(moved.y, offset.y), away(moved.z, offset.z)};
+}
+
+// Wachter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems ch. 6:
+// an offset that scales with each coordinate's own magnitude, for points whose error does (points
+// of a shadow ray's crossings, the shadow-catcher floor). A hit point seen from afar is not such a
+// point (its error follows the camera's distance and its largest coordinate): see the overload above.
 // `normal` must point to the side the new ray leaves from (towards the light, the reflection, ...).
 inline Vec3 offsetRayOrigin(const Vec3& p, const Vec3& normal) {
   constexpr float kOrigin = 1.0f / 32.0f;       // below this magnitude, offset in absolute terms

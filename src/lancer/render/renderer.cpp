@@ -162,7 +162,7 @@ void renderBands(const Scene& scene, const Accelerator& accelerator, const Camer
                  RenderStats* stats) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  const Tracer tracer(scene, accelerator, settings, camera.pixelFootprint());
+  const Tracer tracer(scene, accelerator, settings, camera);
 
   const int tilesX = tilesAcross(settings.width);
   const int bandCount = tilesAcross(settings.height);

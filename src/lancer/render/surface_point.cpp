@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "lancer/render/ray_offset.hpp"
+
 namespace lancer {
 namespace {
 
@@ -101,12 +103,44 @@ void faceCornerWeights(const Scene& scene, const MeshFace& face, const Vec3& p, 
   }
 }
 
+// Rebuilding a point from the corners rounds each coordinate relative to the corners' own; the
+// triangle test of a ray leaving the point errs relative to the triangle's size, in every direction
+// (its frame follows the ray, not the surface), so that part is the same for each coordinate.
+Vec3 surfacePointError(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const float size = maxComponent(max(max(a, b), c) - min(min(a, b), c));
+  return (max(max(abs(a), abs(b)), abs(c)) + Vec3{size, size, size}) * kSurfacePointRelativeError;
+}
+
+// The point of the triangle the accelerators tested (a quad is corners 0,1,2 and 0,2,3) nearest
+// to p, as a convex combination of its corners, with the bound on its coordinates' error.
+void pointOnHitTriangle(const Scene& scene, const MeshFace& face, const Vec3& p, Vec3& point, Vec3& error) {
+  const Vec3& a = scene.positions[face.vertex[0]];
+  Vec3 b = scene.positions[face.vertex[1]];
+  Vec3 c = scene.positions[face.vertex[2]];
+  if (face.isQuad() && dot(cross(c - a, p - a), cross(c - a, b - a)) < 0) {
+    b = c;
+    c = scene.positions[face.vertex[3]];
+  }
+  float w[3];
+  barycentric(a, b, c, p, w);
+  point = a * w[0] + b * w[1] + c * w[2];
+  error = surfacePointError(a, b, c);
+}
+
 SurfacePoint makeSurfacePoint(const Scene& scene, const Ray& ray, const Hit& hit) {
   SurfacePoint sp;
   sp.face = hit.face;
-  sp.position = ray.at(hit.t);
+  const Vec3 alongRay = ray.at(hit.t);
   const MeshFace& face = scene.faces[hit.face];
-  faceCornerWeights(scene, face, sp.position, sp.cornerWeight);
+  faceCornerWeights(scene, face, alongRay, sp.cornerWeight);
+  if (face.isQuad()) {
+    pointOnHitTriangle(scene, face, alongRay, sp.position, sp.positionError);
+  } else {  // the corner weights are the barycentric ones already
+    const Vec3 &a = scene.positions[face.vertex[0]], &b = scene.positions[face.vertex[1]],
+               &c = scene.positions[face.vertex[2]];
+    sp.position = a * sp.cornerWeight[0] + b * sp.cornerWeight[1] + c * sp.cornerWeight[2];
+    sp.positionError = surfacePointError(a, b, c);
+  }
 
   const Vec3 ng = scene.faceNormals[hit.face];
   // Two-sided faces: shade the side the ray arrives on.

@@ -11,7 +11,11 @@
 namespace lancer {
 
 struct SurfacePoint {
+  // On the hit triangle, rebuilt from its corners: ray.at(t) is off the surface by the rounding of
+  // the ray's origin and length (a camera 7,500 units away puts it 1e-4 off), which no offset
+  // proportional to the point's own coordinates covers where they are small.
   Vec3 position;
+  Vec3 positionError;    // bound per coordinate, for offsetRayOrigin (ray_offset.hpp)
   Vec3 geometricNormal;  // unit, on the side the ray came from
   Vec3 shadingNormal;    // unit, interpolated corner normals (flat: the geometric normal)
   float cornerWeight[4];  // weights of the face's corners; 0 for the missing fourth of a triangle

@@ -56,6 +56,13 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderS
   }
 }
 
+Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings,
+               const Camera& camera)
+    : Tracer(scene, accelerator, settings, camera.pixelFootprint()) {
+  outlines_.emplace(scene, camera, settings.width, settings.height);
+  if (outlines_->empty()) outlines_.reset();
+}
+
 // Inlined into every caller: as a call they cost 1% of the trace of scenes without per-mesh planes
 // (callgrind, examples/demo.toml); inlined, 0.2%, the one test of anyMeshClips_.
 [[gnu::always_inline]] inline bool Tracer::nearestHit(const Ray& ray, float tMin, float tMax, Hit& hit) const {
@@ -74,6 +81,7 @@ TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounter
   TraceResult result;
   result.color = trace(ray, 0, 1.0f, 0.0f, parallelView, counters, coverage, hitDistance);
   result.alpha = coverage;
+  if (outlines_ && outlines_->near(ray)) paintOutlines(ray, hitDistance, result, counters);
   return result;
 }
 
@@ -86,6 +94,20 @@ MediumCrossing Tracer::crossingAt(std::uint32_t face, bool entering) const {
   // inside an opaque one (only a cut view without caps gets there) its own wall, as on the skin.
   const bool seesOuter = outer != Scene::kNoMaterial && scene_.materials[inner].transparency > 0.0f;
   return {inner, outer, seesOuter ? outer : inner};
+}
+
+void Tracer::paintOutlines(const Ray& ray, float hitDistance, TraceResult& result,
+                           TraceCounters& counters) const {
+  // The face the ray hit draws its own edges; the query is repeated only near outlines.
+  ++counters.rays;
+  const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
+  Hit hit;
+  if (!kept.empty()) nearestHit(ray, kept.enter, kept.exit, hit);
+  Vec3 color;
+  const float edge = outlines_->coverage(ray, hit.face, hitDistance, footprint_, color);
+  if (edge <= 0.0f) return;
+  result.color = result.color * (1.0f - edge) + color * edge;
+  result.alpha = std::max(result.alpha, edge);
 }
 
 Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, TraceCounters& counters) const {
@@ -169,7 +191,8 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
     if (maxComponent(contribution) <= 0.0f) continue;
     // A light behind the geometric surface is blocked by the surface itself.
     if (dot(surface.geometricNormal, lightDirection) <= 0.0f) continue;
-    const Vec3 shadowOrigin = offsetRayOrigin(surface.position, surface.geometricNormal);
+    const Vec3 shadowOrigin =
+        offsetRayOrigin(surface.position, surface.positionError, surface.geometricNormal);
     color += contribution * lightTransmission(shadowOrigin, light.position, counters);
   }
   return color;
@@ -226,6 +249,7 @@ Vec3 Tracer::shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::u
   SurfacePoint cap{};
   cap.face = face;
   cap.position = ray.at(tCap);
+  cap.positionError = rayPointError(ray.origin, ray.direction, tCap);
   // The ray came from the removed side, where the plane's normal points: the cap faces it.
   cap.geometricNormal = cap.shadingNormal = plane.normal;
   cap.normalSign = 1.0f;

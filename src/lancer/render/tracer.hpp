@@ -2,10 +2,13 @@
 // lighting model with shadow rays, then mirror reflection and refraction up to a depth.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "lancer/accel/accelerator.hpp"
+#include "lancer/render/camera.hpp"
 #include "lancer/render/edge_overlay.hpp"
+#include "lancer/render/outline_edges.hpp"
 #include "lancer/render/surface_point.hpp"
 #include "lancer/scene/scene.hpp"
 
@@ -47,6 +50,10 @@ class Tracer {
   // `footprint`: the world size of a pixel along primary rays, for edges drawn in pixel widths.
   Tracer(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings,
          PixelFootprint footprint = {});
+  // For primary rays of `camera` (which must outlive the tracer): edges get its pixel footprint,
+  // and edges on outlines are drawn whole (outline_edges.hpp).
+  Tracer(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings,
+         const Camera& camera);
 
   // `parallelView`: the ray is an orthographic primary ray, so the viewer is at infinity along it.
   TraceResult tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const;
@@ -81,6 +88,8 @@ class Tracer {
   }
   // Coverage of the hit face's drawn edges at the hit (0 when its mesh draws none).
   float edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) const;
+  // Paints the outer half of outline edges over what primary ray `ray` saw at `hitDistance`.
+  void paintOutlines(const Ray& ray, float hitDistance, TraceResult& result, TraceCounters& counters) const;
   Vec3 shadeLocal(const Ray& ray, const SurfacePoint& surface, const Material& material, bool parallelView,
                   TraceCounters& counters) const;
   // Fraction of the light that reaches `from` (0 when blocked by an opaque face; transparent faces
@@ -96,6 +105,7 @@ class Tracer {
   PixelFootprint footprint_;
   bool linearFieldColors_ = false;  // --srgb: field colours are decoded to linear (field_shading.hpp)
   bool anyMeshClips_ = false;       // some mesh has planes of its own: use the clipped queries
+  std::optional<OutlineEdges> outlines_;  // with a camera, when some mesh draws its edges
 };
 
 }  // namespace lancer

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "lancer/scene/camera_placement.hpp"
+
 namespace lancer {
 namespace {
 
@@ -31,7 +33,7 @@ Material paintedMaterial(const std::string& name, const Vec3& colour) {
 
 }  // namespace
 
-SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh) {
+SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh, std::optional<UpAxis> up) {
   SceneDescription scene;
   scene.path = meshPath;
   scene.render.shading = ShadingMode::Phong;
@@ -72,14 +74,39 @@ SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh) {
     if (tag != 0) paint(tag);
   scene.meshes.push_back(instance);
 
-  // Lights sit relative to the mesh's bounding sphere: a key light above, left and in front of the
-  // default 3/4 camera, a dimmer fill from the right, both far enough to light the whole part evenly.
-  const Aabb bounds = faceBounds(mesh);
-  const Vec3d centre = mesh.origin + toDouble(bounds.empty() ? Vec3{} : bounds.center());
-  const double radius = std::max(0.5 * static_cast<double>(length(bounds.extent())), 1e-12);
-  scene.lights.push_back({centre + normalize(Vec3d{-0.5, 1.8, 0.9}) * (6 * radius), {0.9f, 0.9f, 0.9f}, {1, 0, 0}});
-  scene.lights.push_back({centre + normalize(Vec3d{1.5, 0.3, 0.5}) * (6 * radius), {0.35f, 0.35f, 0.37f}, {1, 0, 0}});
+  if (up) {
+    applyUpAxis(scene.camera, *up);
+  } else {
+    const UpGuess guess = guessUpAxis(mesh);
+    scene.camera.up = guess.frame.up;
+    scene.camera.viewFrom = guess.frame.toViewer;
+  }
+  scene.lightsFollowCamera = true;
+  placeQuickLookLights(scene, mesh);
   return scene;
+}
+
+void placeQuickLookLights(SceneDescription& scene, const Mesh& mesh) {
+  const Aabb bounds = faceBounds(mesh);
+  const Aabbd world = bounds.empty()
+                          ? Aabbd{mesh.origin, mesh.origin}
+                          : Aabbd{mesh.origin + toDouble(bounds.lower), mesh.origin + toDouble(bounds.upper)};
+  const Vec3d centre = world.center();
+  const double radius = std::max(0.5 * length(world.extent()), 1e-12);
+  const CameraSettings& camera = scene.camera;
+  // The camera's frame: screen right, up, and the front (towards the viewer's side of the model).
+  const Vec3d up = normalize(camera.up);
+  const Vec3d right = normalize(cross(-camera.viewFrom, up));
+  const Vec3d front = cross(right, up);
+  const double aspect = static_cast<double>(scene.render.width) / scene.render.height;
+  scene.lights.clear();
+  // The key: high on the left, in front, so the top, front and side faces of the 3/4 view read
+  // apart; far enough to light the whole part evenly.
+  scene.lights.push_back({centre + normalize(right * -0.5 + up * 1.8 + front * 0.9) * (6 * radius),
+                          {0.9f, 0.9f, 0.9f},
+                          {1, 0, 0}});
+  // The fill sits at the eye: whatever the camera sees, it lights (the shadow ray retraces the view).
+  scene.lights.push_back({defaultCameraPosition(world, camera, aspect), {0.5f, 0.5f, 0.52f}, {1, 0, 0}});
 }
 
 }  // namespace lancer

@@ -39,6 +39,9 @@ struct CameraSettings {
   std::optional<Vec3d> position;
   std::optional<Vec3d> lookAt;  // default: centre of the scene's bounding box
   Vec3d up{0, 1, 0};
+  // Without a position, the camera looks at the scene from this direction (any length): the 3/4 view
+  // from the right, above and in front for y up. `up_axis` and `--up` turn it with `up`.
+  Vec3d viewFrom{0.9, 0.65, 1.3};
   double fovDegrees = 40;  // vertical, perspective
   std::optional<double> viewHeight;  // world units, orthographic; default frames the scene
 };
@@ -106,7 +109,7 @@ struct AnimationSettings {
   int frames = 36;
   double fps = 12;
   int orbitLight = -1;  // -1: the camera orbits; k >= 0: light k orbits
-  Vec3d axis{0, 1, 0};
+  std::optional<Vec3d> axis;    // default: the camera's up (a turntable about the up axis)
   std::optional<Vec3d> center;  // default: centre of the scene's bounding box
   double degrees = 360;
 };
@@ -130,6 +133,9 @@ struct SceneDescription {
   std::vector<ClipSettings> clips;
   std::optional<FloorSettings> floor;
   std::optional<AnimationSettings> animation;
+  // The quick look's key and fill are placed for the automatic camera: an animation turns them with
+  // the camera, so every frame is lit the same way.
+  bool lightsFollowCamera = false;
 };
 
 }  // namespace lancer

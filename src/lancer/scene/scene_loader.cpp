@@ -15,6 +15,7 @@
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/suggest.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
+#include "lancer/scene/up_axis.hpp"
 
 namespace lancer {
 namespace {
@@ -24,8 +25,8 @@ constexpr std::array<std::string_view, 9> kSceneTables = {"render",   "camera", 
 constexpr std::array<std::string_view, 10> kRenderKeys = {
     "width",   "height",     "samples", "max_depth", "sampler",
     "shading", "background", "output",  "srgb",      "adaptive_threshold"};
-constexpr std::array<std::string_view, 6> kCameraKeys = {"projection", "position", "look_at",
-                                                         "up",         "fov",      "view_height"};
+constexpr std::array<std::string_view, 7> kCameraKeys = {"projection", "position", "look_at",    "up",
+                                                         "up_axis",    "fov",      "view_height"};
 constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
 constexpr std::array<std::string_view, 3> kLightKeys = {"position", "intensity", "attenuation"};
 constexpr std::array<std::string_view, 9> kMaterialKeys = {
@@ -185,6 +186,17 @@ CameraSettings readCamera(const SceneFile& file, const toml::table& table) {
   camera.position = reader.vector("position", Triple::Xyz);
   camera.lookAt = reader.vector("look_at", Triple::Xyz);
   if (auto up = reader.vector("up", Triple::Xyz)) camera.up = *up;
+  // up_axis: the up of the automatic camera, which then takes its 3/4 view from that side too.
+  if (auto upAxis = reader.choice("up_axis", kUpAxisNames)) {
+    if (reader.find("up"))
+      reader.fail(
+          *reader.find("up_axis"),
+          fmt::format("camera.up_axis and camera.up both say which way is up; keep one (up_axis = \"{}\" "
+                      "is up = {})",
+                      kUpAxisNames[static_cast<std::size_t>(*upAxis)],
+                      formatVector(upVector(static_cast<UpAxis>(*upAxis)))));
+    applyUpAxis(camera, static_cast<UpAxis>(*upAxis));
+  }
   if (auto fov = reader.number("fov", NumberRange::strictlyBetween(0, 180))) camera.fovDegrees = *fov;
   camera.viewHeight = reader.number("view_height", NumberRange::above(0));
   checkCameraFrame(reader, camera);

@@ -1,0 +1,126 @@
+#include "lancer/scene/up_axis.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lancer {
+namespace {
+
+constexpr Vec3d kAxes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+// The 3/4 view in a frame's own terms: right, above, in front (camera.cpp's historical y-up view).
+constexpr double kViewRight = 0.9, kViewUp = 0.65, kViewFront = 1.3;
+constexpr double kPlanarExtent = 1e-6;  // of the largest extent
+constexpr double kFlatCosine = 0.9962;  // cos 5 degrees
+constexpr double kOnSide = 0.05;  // of the largest extent: a face on (or near: feet, bolt heads) a box side
+constexpr double kNearTie = 0.02;
+// A base is at least this share of the surface: a sphere's flat pole facets are not a base.
+constexpr double kMinBaseShare = 0.02;
+// Preference on near ties: z, then y, then x.
+constexpr int kPreference[3] = {2, 1, 0};
+
+double faceArea(const Mesh& mesh, const MeshFace& face, Vec3d& normal) {
+  const Vec3d a = toDouble(mesh.positions[face.vertex[0]]), b = toDouble(mesh.positions[face.vertex[1]]),
+              c = toDouble(mesh.positions[face.vertex[2]]);
+  Vec3d twice = cross(b - a, c - a);
+  if (face.isQuad()) twice = twice + cross(c - a, toDouble(mesh.positions[face.vertex[3]]) - a);
+  const double area2 = length(twice);
+  normal = area2 > 0 ? twice * (1.0 / area2) : Vec3d{};
+  return 0.5 * area2;
+}
+
+// The axis with the largest (or smallest) score; a later axis in kPreference must beat the best so
+// far by more than kNearTie. With `largest`, axes scoring 0 never win (-1 when all do).
+int bestAxis(const double score[3], bool largest) {
+  int best = -1;
+  for (int axis : kPreference) {
+    if (largest && !(score[axis] > 0)) continue;
+    const bool better = best < 0 || (largest ? score[axis] > score[best] * (1 + kNearTie)
+                                             : score[axis] < score[best] * (1 - kNearTie));
+    if (better) best = axis;
+  }
+  return best;
+}
+
+}  // namespace
+
+std::optional<UpAxis> parseUpAxis(std::string_view name) {
+  for (std::size_t i = 0; i < kUpAxisNames.size(); ++i)
+    if (kUpAxisNames[i] == name) return static_cast<UpAxis>(i);
+  return std::nullopt;
+}
+
+Vec3d upVector(UpAxis axis) {
+  const int index = static_cast<int>(axis);
+  return kAxes[index % 3] * (index < 3 ? 1.0 : -1.0);
+}
+
+ViewFrame threeQuarterFrame(UpAxis axis) {
+  const Vec3d up = upVector(axis);
+  // Right is +x unless x is the up axis (then +y); the front follows from the right-handed frame.
+  const Vec3d right = std::abs(up.x) > 0 ? kAxes[1] : kAxes[0];
+  const Vec3d front = cross(right, up);
+  return {right, up, right * kViewRight + up * kViewUp + front * kViewFront};
+}
+
+void applyUpAxis(CameraSettings& camera, UpAxis axis) {
+  const ViewFrame frame = threeQuarterFrame(axis);
+  camera.up = frame.up;
+  camera.viewFrom = frame.toViewer;
+}
+
+UpGuess guessUpAxis(const Mesh& mesh) {
+  const Aabb bounds = faceBounds(mesh);
+  const Vec3d extent = toDouble(bounds.extent());
+  const double largest = std::max({extent.x, extent.y, extent.z});
+  UpGuess guess;
+  auto choose = [&](UpAxis up, const char* reason) {
+    guess.up = up;
+    guess.frame = threeQuarterFrame(up);
+    guess.reason = reason;
+  };
+  if (!(largest > 0)) {
+    choose(UpAxis::Y, "empty");
+    return guess;
+  }
+  // 1. Planar: straight on, from the + side of the plane's axis.
+  const double extents[3] = {extent.x, extent.y, extent.z};
+  for (int axis : kPreference) {
+    if (extents[axis] > kPlanarExtent * largest) continue;
+    static constexpr UpAxis kScreenUp[3] = {UpAxis::Z, UpAxis::MinusZ, UpAxis::Y};
+    guess.up = kScreenUp[axis];
+    guess.frame.up = upVector(guess.up);
+    guess.frame.toViewer = kAxes[axis];
+    guess.frame.right = cross(-guess.frame.toViewer, guess.frame.up);
+    guess.planar = true;
+    guess.reason = axis == 0 ? "planar in x" : (axis == 1 ? "planar in y" : "planar in z");
+    return guess;
+  }
+  // 2. Base area: faces lying flat on the box's sides across each axis.
+  double base[3] = {0, 0, 0};
+  double total = 0;
+  const double onSide = kOnSide * largest;
+  for (const MeshFace& face : mesh.faces) {
+    Vec3d normal;
+    const double area = faceArea(mesh, face, normal);
+    total += area;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (std::abs(normal[axis]) < kFlatCosine) continue;
+      const double position = mesh.positions[face.vertex[0]][axis];
+      if (std::abs(position - bounds.lower[axis]) <= onSide ||
+          std::abs(position - bounds.upper[axis]) <= onSide)
+        base[axis] += area;
+    }
+  }
+  for (double& area : base)
+    if (area < kMinBaseShare * total) area = 0;
+  static constexpr UpAxis kUp[3] = {UpAxis::X, UpAxis::Y, UpAxis::Z};
+  if (const int axis = bestAxis(base, true); axis >= 0) {
+    choose(kUp[axis], "base area");
+    return guess;
+  }
+  // 3. No flat side: the thinnest direction is the height.
+  choose(kUp[bestAxis(extents, false)], "smallest extent");
+  return guess;
+}
+
+}  // namespace lancer
