@@ -8,7 +8,7 @@
 #include "commands.hpp"
 #include "info_accel.hpp"
 #include "lancer/mesh/mesh_stats.hpp"
-#include "lancer/mesh/msh_element_types.hpp"
+#include "lancer/mesh/msh/element_types.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "lancer/image/image.hpp"
-#include "lancer/mesh/foreign_formats.hpp"
+#include "lancer/mesh/msh/foreign_formats.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/render/renderer.hpp"

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "lancer/mesh/foreign_formats.hpp"
+#include "lancer/mesh/msh/foreign_formats.hpp"
 #include "mesh/msh_test_util.hpp"
 
 namespace lancer {

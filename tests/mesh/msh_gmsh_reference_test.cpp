@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "lancer/mesh/mesh_stats.hpp"
-#include "lancer/mesh/msh_element_types.hpp"
+#include "lancer/mesh/msh/element_types.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "mesh/msh_test_util.hpp"
 

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "lancer/mesh/mesh_stats.hpp"
-#include "lancer/mesh/msh_element_types.hpp"
-#include "lancer/mesh/msh_high_order.hpp"
+#include "lancer/mesh/msh/element_types.hpp"
+#include "lancer/mesh/msh/high_order.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 
 namespace lancer {

@@ -11,8 +11,8 @@
 #include <set>
 
 #include "lancer/mesh/mesh_stats.hpp"
-#include "lancer/mesh/msh_element_types.hpp"
-#include "lancer/mesh/msh_node_table.hpp"
+#include "lancer/mesh/msh/element_types.hpp"
+#include "lancer/mesh/msh/node_table.hpp"
 #include "mesh/msh_test_util.hpp"
 
 namespace lancer {

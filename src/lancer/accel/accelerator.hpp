@@ -6,9 +6,9 @@
 #include <string_view>
 #include <variant>
 
+#include "lancer/accel/accel_stats.hpp"
 #include "lancer/accel/hit.hpp"
 #include "lancer/accel/kd_tree.hpp"
-#include "lancer/accel/kd_tree_stats.hpp"
 #include "lancer/accel/naive_accel.hpp"
 
 namespace lancer {

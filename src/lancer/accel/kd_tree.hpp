@@ -6,9 +6,9 @@
 #include <span>
 #include <vector>
 
+#include "lancer/accel/accel_stats.hpp"
 #include "lancer/accel/hit.hpp"
-#include "lancer/accel/kd_tree_node.hpp"
-#include "lancer/accel/kd_tree_stats.hpp"
+#include "lancer/accel/kd/node.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/aabb.hpp"
 #include "lancer/math/face_clip_sets.hpp"
@@ -29,7 +29,7 @@ struct KdBuildOptions {
   // when the empty side is at least emptySpaceMinFraction of the cell's side.
   float emptySpaceFactor = 0.8f;
   float emptySpaceMinFraction = 0.1f;
-  // Cells holding more triangles than this are split by binning (kd_tree_sah_binning.hpp) rather
+  // Cells holding more triangles than this are split by binning (kd/sah_binning.hpp) rather
   // than by sweeping sorted events; 0 sweeps from the root (the pure O(N log N) build).
   std::uint32_t binnedAbove = 4096;
   // Deepest leaf; 0 picks 8 + 1.3 log2(triangles) (pbrt-v3 section 4.4.2), capped by kMaxDepth.

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "lancer/mesh/msh_element_types.hpp"
+#include "lancer/mesh/msh/element_types.hpp"
 
 namespace lancer {
 namespace {

@@ -14,9 +14,9 @@
 #include <set>
 #include <stdexcept>
 
-#include "lancer/mesh/foreign_formats.hpp"
-#include "lancer/mesh/msh_fields.hpp"
-#include "lancer/mesh/msh_sections.hpp"
+#include "lancer/mesh/msh/fields.hpp"
+#include "lancer/mesh/msh/foreign_formats.hpp"
+#include "lancer/mesh/msh/sections.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {

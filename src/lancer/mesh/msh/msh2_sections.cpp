@@ -6,7 +6,7 @@
 
 #include <unordered_set>
 
-#include "lancer/mesh/msh_sections.hpp"
+#include "lancer/mesh/msh/sections.hpp"
 
 namespace lancer {
 namespace {

@@ -1,6 +1,6 @@
 // SAH kd-tree build in O(N log N): Wald & Havran 2006, "On building fast kd-trees for ray tracing,
 // and on doing that in O(N log N)". Cells of more than KdBuildOptions::binnedAbove triangles are
-// split by binning (kd_tree_sah_binning.hpp); below, per-axis event lists are sorted once per
+// split by binning (sah_binning.hpp); below, per-axis event lists are sorted once per
 // subtree; every split sweeps them to find the best plane (section 4.2), classifies triangles as
 // left, right or both, and splits the sorted lists in linear time, clipping only the straddlers
 // (section 4.3).
@@ -11,10 +11,10 @@
 #include <limits>
 #include <utility>
 
+#include "lancer/accel/kd/build.hpp"
+#include "lancer/accel/kd/clip.hpp"
+#include "lancer/accel/kd/sah_binning.hpp"
 #include "lancer/accel/kd_tree.hpp"
-#include "lancer/accel/kd_tree_build.hpp"
-#include "lancer/accel/kd_tree_clip.hpp"
-#include "lancer/accel/kd_tree_sah_binning.hpp"
 
 namespace lancer {
 

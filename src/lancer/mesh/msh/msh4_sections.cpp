@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "lancer/mesh/msh_sections.hpp"
+#include "lancer/mesh/msh/sections.hpp"
 
 namespace lancer {
 namespace {

@@ -1,4 +1,4 @@
-#include "lancer/accel/kd_tree_build.hpp"
+#include "lancer/accel/kd/build.hpp"
 
 #include <algorithm>
 #include <cmath>

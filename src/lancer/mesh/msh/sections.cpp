@@ -1,4 +1,4 @@
-#include "lancer/mesh/msh_sections.hpp"
+#include "lancer/mesh/msh/sections.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "lancer/mesh/msh_fields.hpp"
+#include "lancer/mesh/msh/fields.hpp"
 
 #include <fmt/format.h>
 

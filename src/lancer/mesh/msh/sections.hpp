@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "lancer/mesh/mesh.hpp"
-#include "lancer/mesh/msh_cursor.hpp"
-#include "lancer/mesh/msh_mesh_assembler.hpp"
+#include "lancer/mesh/msh/cursor.hpp"
+#include "lancer/mesh/msh/mesh_assembler.hpp"
 
 namespace lancer {
 

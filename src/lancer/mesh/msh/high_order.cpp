@@ -1,9 +1,9 @@
-#include "lancer/mesh/msh_high_order.hpp"
+#include "lancer/mesh/msh/high_order.hpp"
 
 #include <array>
 #include <mutex>
 
-#include "lancer/mesh/msh_element_types.hpp"
+#include "lancer/mesh/msh/element_types.hpp"
 
 namespace lancer {
 namespace {

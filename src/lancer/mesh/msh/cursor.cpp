@@ -1,4 +1,4 @@
-#include "lancer/mesh/msh_cursor.hpp"
+#include "lancer/mesh/msh/cursor.hpp"
 
 #include "lancer/util/memory_budget.hpp"
 

@@ -1,8 +1,8 @@
-#include "lancer/mesh/msh_node_table.hpp"
+#include "lancer/mesh/msh/node_table.hpp"
 
 #include <algorithm>
 
-#include "lancer/mesh/msh_huge_pages.hpp"
+#include "lancer/mesh/msh/huge_pages.hpp"
 
 namespace lancer {
 

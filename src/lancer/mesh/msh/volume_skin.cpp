@@ -1,4 +1,4 @@
-#include "lancer/mesh/msh_volume_skin.hpp"
+#include "lancer/mesh/msh/volume_skin.hpp"
 
 #include <algorithm>
 

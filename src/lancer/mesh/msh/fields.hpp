@@ -4,7 +4,7 @@
 // then `count` records of a tag and `components` values (binary: a 4-byte int and doubles).
 #pragma once
 
-#include "lancer/mesh/msh_sections.hpp"
+#include "lancer/mesh/msh/sections.hpp"
 
 namespace lancer {
 

@@ -1,4 +1,4 @@
-#include "lancer/mesh/msh_element_types.hpp"
+#include "lancer/mesh/msh/element_types.hpp"
 
 #include <fmt/format.h>
 
@@ -165,7 +165,7 @@ MshElementType mshElementType(int type) {
       result.role = MshElementRole::kVolume;
       break;
     default:
-      // Order 3 and up: surfaces are split through their nodes (msh_high_order.cpp), volumes give
+      // Order 3 and up: surfaces are split through their nodes (high_order.cpp), volumes give
       // their skin through their corners. Types with fewer nodes than corners are gmsh's one-node
       // "elements" (84-89, 132), which have no shape to draw.
       if (entry.nodes >= cornerCount(entry.family) && cornerCount(entry.family) > 0)

@@ -1,4 +1,4 @@
-#include "lancer/accel/kd_tree_clip.hpp"
+#include "lancer/accel/kd/clip.hpp"
 
 #include <cmath>
 #include <utility>

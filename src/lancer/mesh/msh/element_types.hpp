@@ -9,7 +9,7 @@ namespace lancer {
 
 enum class MshElementRole : std::uint8_t {
   kIgnored,       // points and lines: not surfaces, silently skipped (still counted as read)
-  kSurface,       // triangles and quads of any order: become faces (msh_high_order.hpp for order 3+)
+  kSurface,       // triangles and quads of any order: become faces (high_order.hpp for order 3+)
   kVolume,        // tetrahedra, hexahedra, prisms, pyramids of any order: become their skin
   kUnrenderable,  // polygons, polyhedra, one-node "elements", trihedra: counted and reported
 };

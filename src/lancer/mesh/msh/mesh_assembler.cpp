@@ -1,7 +1,7 @@
-#include "lancer/mesh/msh_mesh_assembler.hpp"
+#include "lancer/mesh/msh/mesh_assembler.hpp"
 
-#include "lancer/mesh/msh_high_order.hpp"
-#include "lancer/mesh/msh_huge_pages.hpp"
+#include "lancer/mesh/msh/high_order.hpp"
+#include "lancer/mesh/msh/huge_pages.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
 
 #include <algorithm>
@@ -117,7 +117,7 @@ void MshMeshAssembler::addOtherElement(int type, const std::uint32_t* n) {
   }
 }
 
-// Order 3 and up: the element's flat faces through its nodes (msh_high_order.hpp).
+// Order 3 and up: the element's flat faces through its nodes (high_order.hpp).
 void MshMeshAssembler::addHighOrderSurface(int type, const std::uint32_t* n) {
   const int corners = mshSurfaceCorners(type);
   const auto first = static_cast<std::uint32_t>(faces_.size());
@@ -208,7 +208,7 @@ void MshMeshAssembler::addVolumeFace(const MshVolumeFace& face) {
   }
 }
 
-// The volume elements' boundary: skin faces and interfaces (msh_volume_skin.hpp). A surface element
+// The volume elements' boundary: skin faces and interfaces (volume_skin.hpp). A surface element
 // that shows a boundary face is that face, not a second one: on the skin it is kept in the volume's
 // place when it is in a physical group or the volume is not (so a Physical Surface keeps its
 // material), else the volume's face is kept (-save_all writes every surface, in no group); on an

@@ -1,9 +1,9 @@
-#include "lancer/accel/kd_tree_sah_binning.hpp"
+#include "lancer/accel/kd/sah_binning.hpp"
 
 #include <algorithm>
 #include <limits>
 
-#include "lancer/accel/kd_tree_clip.hpp"
+#include "lancer/accel/kd/clip.hpp"
 
 namespace lancer {
 

@@ -4,8 +4,8 @@
 #include <chrono>
 #include <future>
 
+#include "lancer/accel/kd/build.hpp"
 #include "lancer/accel/kd_tree.hpp"
-#include "lancer/accel/kd_tree_build.hpp"
 
 namespace lancer {
 

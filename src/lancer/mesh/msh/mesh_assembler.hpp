@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "lancer/mesh/mesh.hpp"
-#include "lancer/mesh/msh_element_types.hpp"
-#include "lancer/mesh/msh_node_table.hpp"
-#include "lancer/mesh/msh_volume_skin.hpp"
+#include "lancer/mesh/msh/element_types.hpp"
+#include "lancer/mesh/msh/node_table.hpp"
+#include "lancer/mesh/msh/volume_skin.hpp"
 
 namespace lancer {
 
@@ -28,7 +28,7 @@ class MshMeshAssembler {
     std::vector<std::uint64_t> tags;
   };
   std::vector<ElementField> elementFields;
-  // Set before the elements are read when the file has $ElementData (msh_reader.cpp reads such a
+  // Set before the elements are read when the file has $ElementData (reader.cpp reads such a
   // file again): faces then remember their element's tag (8 bytes per face, only for such files).
   void trackElements() { trackElements_ = true; }
   bool tracksElements() const { return trackElements_; }

@@ -1,4 +1,4 @@
-#include "lancer/mesh/foreign_formats.hpp"
+#include "lancer/mesh/msh/foreign_formats.hpp"
 
 #include <fmt/format.h>
 
