@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/mesh_stats.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/shell_nesting.hpp"

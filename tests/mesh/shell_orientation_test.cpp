@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/mesh_stats.hpp"
 #include "lancer/scene/scene.hpp"

@@ -1,4 +1,5 @@
 #include "lancer/mesh/vertex_normals.hpp"
+#include "lancer/mesh/face_geometry.hpp"
 
 #include <gtest/gtest.h>
 

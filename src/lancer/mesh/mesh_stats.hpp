@@ -1,5 +1,5 @@
 // Whole-mesh facts for `lancer info` and for tests: bounding box, surface area, face counts per
-// physical group, and the shells (edge-connected face sets) with their closedness and orientation.
+// physical group, and the shells (face_shells.hpp) with their closedness, orientation and volume.
 #pragma once
 
 #include <cstdint>
@@ -26,26 +26,6 @@ struct MeshShell {
   bool interface = false;
 };
 
-// One directed edge of one face; sorting by key brings the faces that share an edge together.
-struct FaceEdge {
-  std::uint64_t key;  // (smaller vertex << 32) | larger vertex
-  std::uint32_t face;
-  bool forward;  // traversed from the smaller vertex to the larger
-  bool operator<(const FaceEdge& other) const { return key < other.key; }
-};
-
-// The shells of a face set (faces joined through shared edges), shared by the statistics below and
-// by shell orientation (shell_orientation.hpp), which needs the same edge table.
-struct FaceShells {
-  std::vector<FaceEdge> edges;            // every face's edges, sorted by key
-  std::vector<std::uint32_t> shellOfFace;  // shells numbered in order of their first face
-  std::vector<std::uint8_t> closed;        // per shell: every edge shared by exactly two faces
-  std::vector<std::uint8_t> consistent;    // per shell: shared edges traversed in opposite directions
-  std::size_t shellCount() const { return closed.size(); }
-};
-
-FaceShells findFaceShells(const std::vector<MeshFace>& faces);
-
 struct MeshStats {
   Aabbd worldBounds;
   double area = 0;
@@ -60,9 +40,6 @@ struct MeshStats {
   std::map<std::pair<std::int64_t, std::int64_t>, std::uint64_t> interfaces;
   std::vector<MeshShell> shells;  // largest first
 };
-
-// Area of one face in the mesh's local frame (a quad: half the cross product of its diagonals).
-double faceArea(const Mesh& mesh, std::size_t face);
 
 MeshStats computeMeshStats(const Mesh& mesh);
 

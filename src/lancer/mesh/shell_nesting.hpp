@@ -6,8 +6,8 @@
 #include <span>
 #include <vector>
 
+#include "lancer/mesh/face_shells.hpp"
 #include "lancer/mesh/mesh.hpp"
-#include "lancer/mesh/mesh_stats.hpp"
 
 namespace lancer {
 

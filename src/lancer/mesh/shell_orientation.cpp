@@ -2,7 +2,8 @@
 
 #include <algorithm>
 
-#include "lancer/mesh/mesh_stats.hpp"
+#include "lancer/mesh/face_geometry.hpp"
+#include "lancer/mesh/face_shells.hpp"
 #include "lancer/mesh/shell_nesting.hpp"
 
 namespace lancer {
@@ -47,27 +48,7 @@ FaceLinks manifoldLinks(const std::vector<FaceEdge>& edges, std::size_t faceCoun
   return result;
 }
 
-// Six times the signed volume of the cone from the origin over the face (fanned from corner 0), in
-// double: a shell of a million small faces still sums to the right sign.
-double coneVolume6(std::span<const Vec3> positions, const MeshFace& face) {
-  const Vec3d a = toDouble(positions[face.vertex[0]]);
-  double volume = 0;
-  for (int c = 1; c + 1 < face.cornerCount(); ++c)
-    volume += dot(a, cross(toDouble(positions[face.vertex[c]]), toDouble(positions[face.vertex[c + 1]])));
-  return volume;
-}
-
 }  // namespace
-
-void reverseWinding(MeshFace& face, std::uint8_t& edgeMask) {
-  // (v0, v1, ..., v{n-1}) becomes (v0, v{n-1}, ..., v1): new edge i is old edge n-1-i, reversed.
-  const int n = face.cornerCount();
-  std::reverse(face.vertex + 1, face.vertex + n);
-  std::uint8_t mask = 0;
-  for (int i = 0; i < n; ++i)
-    if (edgeMask & (1u << (n - 1 - i))) mask |= static_cast<std::uint8_t>(1u << i);
-  edgeMask = static_cast<std::uint8_t>(mask | (edgeMask & ~((1u << n) - 1u)));
-}
 
 ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions, std::vector<MeshFace>& faces,
                                                  std::vector<std::uint8_t>& edgeMasks,
@@ -111,7 +92,7 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
   for (std::size_t f = 0; f < faceCount; ++f) {
     const std::uint32_t shell = shells.shellOfFace[f];
     if (!shells.closed[shell]) continue;
-    const double v = coneVolume6(positions, faces[f]);
+    const double v = sixfoldConeVolume(positions, faces[f]);
     volume6[shell] += flip[f] ? -v : v;
   }
 

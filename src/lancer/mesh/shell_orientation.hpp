@@ -32,9 +32,6 @@ struct ShellOrientationReport {
   std::vector<std::int32_t> faceEnclosedBy;
 };
 
-// Reverses a face's winding (corner 0 stays first) and remaps its edge mask to the new edge order.
-void reverseWinding(MeshFace& face, std::uint8_t& edgeMask);
-
 // For each shell (faces joined through shared edges, see findFaceShells): when every edge is shared
 // by exactly two faces, the orientation of one face is propagated across shared edges to the whole
 // shell, and the shell is flipped as a whole so that it faces out of the material: its signed volume

@@ -16,10 +16,6 @@ struct CornerNormals {
   std::vector<std::array<std::uint32_t, 4>> faceCorner;  // per face, per corner: index into normals
 };
 
-// Geometric normal of a face (unit; for a quad, the normal of its diagonals' cross product, which is
-// the mean plane's normal for a non-planar quad). Zero for a degenerate face.
-Vec3 faceNormal(std::span<const Vec3> positions, const MeshFace& face);
-
 // Two faces sharing a vertex are smoothed together when the angle between their normals is at most
 // creaseAngleDegrees and they have the same physical tag (Thurmer & Wuthrich 1998 angle weights).
 CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<const MeshFace> faces,

@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/feature_edges.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"

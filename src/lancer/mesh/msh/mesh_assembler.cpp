@@ -1,8 +1,8 @@
 #include "lancer/mesh/msh/mesh_assembler.hpp"
 
+#include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/msh/high_order.hpp"
 #include "lancer/mesh/msh/huge_pages.hpp"
-#include "lancer/mesh/shell_orientation.hpp"
 
 #include <algorithm>
 #include <cmath>

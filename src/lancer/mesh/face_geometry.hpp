@@ -1,0 +1,29 @@
+// Geometry of one mesh face, a triangle or a quad (through its diagonals): normal, area, the signed
+// volume of its cone from the origin, and the reversal of its winding.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "lancer/mesh/mesh.hpp"
+
+namespace lancer {
+
+// Geometric normal of a face (unit; for a quad, the normal of its diagonals' cross product, which is
+// the mean plane's normal for a non-planar quad). Zero for a degenerate face.
+Vec3 faceNormal(std::span<const Vec3> positions, const MeshFace& face);
+
+// Area of a face in the frame of `positions` (a quad: half the cross product of its diagonals), in
+// double.
+double faceArea(std::span<const Vec3> positions, const MeshFace& face);
+
+// Six times the signed volume of the cone from the origin over the face (its triple products, the
+// triangles fanned from corner 0), in double. Summed over a closed shell it is six times the volume
+// enclosed (divergence theorem), positive when the faces point out, wherever the origin; a shell of a
+// million small faces still sums to the right sign, which is all shell orientation needs.
+double sixfoldConeVolume(std::span<const Vec3> positions, const MeshFace& face);
+
+// Reverses a face's winding (corner 0 stays first) and remaps its edge mask to the new edge order.
+void reverseWinding(MeshFace& face, std::uint8_t& edgeMask);
+
+}  // namespace lancer

@@ -1,0 +1,32 @@
+// The shells of a face set: faces joined through shared edges, with the sorted edge table that
+// decides whether each shell is closed and consistently oriented (shell orientation, nesting, info).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "lancer/mesh/mesh.hpp"
+
+namespace lancer {
+
+// One directed edge of one face; sorting by key brings the faces that share an edge together.
+struct FaceEdge {
+  std::uint64_t key;  // (smaller vertex << 32) | larger vertex
+  std::uint32_t face;
+  bool forward;  // traversed from the smaller vertex to the larger
+  bool operator<(const FaceEdge& other) const { return key < other.key; }
+};
+
+// The shells of a face set, shared by the mesh statistics (mesh_stats.hpp), shell orientation
+// (shell_orientation.hpp) and cavity finding (shell_nesting.hpp), which need the same edge table.
+struct FaceShells {
+  std::vector<FaceEdge> edges;             // every face's edges, sorted by key
+  std::vector<std::uint32_t> shellOfFace;  // shells numbered in order of their first face
+  std::vector<std::uint8_t> closed;        // per shell: every edge shared by exactly two faces
+  std::vector<std::uint8_t> consistent;    // per shell: shared edges traversed in opposite directions
+  std::size_t shellCount() const { return closed.size(); }
+};
+
+FaceShells findFaceShells(const std::vector<MeshFace>& faces);
+
+}  // namespace lancer
