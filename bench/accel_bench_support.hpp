@@ -1,4 +1,4 @@
-// What the accelerator benchmarks share: the gmsh meshes they load, the ray sets of issue 4
+// What the accelerator benchmarks share: the gmsh meshes they load, the ray sets compared with Embree
 // (1024x1024 pinhole primary rays framing the mesh, shadow rays to one light, incoherent rays in
 // the bounding box) and a runner that traces a ray set on N threads in chunks, like the renderer.
 #pragma once

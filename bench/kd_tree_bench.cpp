@@ -1,4 +1,4 @@
-// lancer's kd-tree alone: both builds (SAH and the brief's median) on the bracket meshes, build
+// lancer's kd-tree alone: both builds (SAH and spatial median) on the bracket meshes, build
 // time and structure, and ray throughput for primary, shadow and incoherent rays on 1 and 2 threads.
 // Run through bench/run_accel_bench.sh, which makes the meshes and prints the tables.
 #include "accel_bench_support.hpp"

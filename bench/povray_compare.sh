@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# End-to-end `lancer render` against POV-Ray 3.7 on the bench meshes (issue 4): the same scene
+# End-to-end `lancer render` against POV-Ray 3.7 on the bench meshes: the same scene
 # (camera, one point light with shadows, Phong-like material, smoothed normals, resolution and
 # 4 samples per pixel) written for both by pov_scene_writer, each run file to PNG, wall times and
 # the ratio printed. Skips cleanly when povray is not installed.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Makes the bench meshes that are missing (gmsh, from bench/geo/), runs the accelerator benchmarks
-# and prints issue 4's tables: build time and throughput, bytes per triangle, and ray throughput
+# and prints the tables of bench/RESULTS.md: build time and throughput, bytes per triangle, and ray throughput
 # for primary, shadow and incoherent rays on 1 and 2 threads, with lancer/Embree ratios from the
 # same run.
 #   bench/run_accel_bench.sh [build-dir] [meshes]    e.g. bench/run_accel_bench.sh build-accel 10k,100k

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Hardening checks (issue 7), run by .ci/run after scripts/test.sh:
+# Hardening checks, run by .ci/run after scripts/test.sh:
 #   1. the whole test suite built with AddressSanitizer + UndefinedBehaviorSanitizer (LANCER_SANITIZE);
 #   2. the parallel renderer and image tile tests built with ThreadSanitizer (LANCER_TSAN);
 #   3. every libFuzzer target (LANCER_FUZZ, clang) for FUZZ_SECONDS (default 60) on its committed corpus;

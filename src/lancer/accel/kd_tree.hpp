@@ -1,5 +1,6 @@
-// The kd-tree accelerator: build (surface-area heuristic or the brief's spatial median) and the
-// front-to-back traversal for closest-hit and any-hit queries. Answers equal NaiveAccel's exactly.
+// The kd-tree accelerator: build (surface-area heuristic, or each cell's longest side split at its
+// middle) and the front-to-back traversal for closest-hit and any-hit queries, whose answers equal
+// NaiveAccel's exactly. The builders and the traversal are in accel/kd/.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// The brief's first algorithm: test every triangle. Slow (linear in faces) but obviously right,
+// The simplest accelerator: test every triangle. Slow (linear in faces) but obviously right,
 // it is the reference that the kd-tree is checked against.
 #pragma once
 

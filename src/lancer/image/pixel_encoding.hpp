@@ -1,4 +1,4 @@
-// Turning linear float intensities into 8-bit file values and back: the brief's linear mapping
+// Turning linear float intensities into 8-bit file values and back: the linear mapping
 // round(255 * clamp(I, 0, 1)) by default, or the sRGB transfer curve (IEC 61966-2-1) as an option.
 #pragma once
 
@@ -11,7 +11,7 @@
 namespace lancer {
 
 enum class TransferCurve {
-  Linear,  // value = round(255 * clamp(I, 0, 1)), as the brief asks
+  Linear,  // value = round(255 * clamp(I, 0, 1)), the default
   Srgb,    // value = round(255 * srgb(clamp(I, 0, 1))): brighter mid-tones, what monitors expect
 };
 

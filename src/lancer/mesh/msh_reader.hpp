@@ -1,5 +1,6 @@
 // Reads gmsh .msh files (MSH 2.2, 4.0 and 4.1; ASCII and binary) into a Mesh: surface elements as
 // faces, volume elements as their skin. Bad input throws InputError pointing into the file.
+// The reader's parts are in mesh/msh/, reader.cpp first (the sections in file order).
 #pragma once
 
 #include <span>

@@ -1,4 +1,4 @@
-// Animations of the brief: the camera or one light turns about an axis through the scene while the
+// Orbit animations: the camera or one light turns about an axis through the scene while the
 // geometry and its accelerator stay as they are (built once, reused by every frame).
 #pragma once
 

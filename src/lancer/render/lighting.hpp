@@ -1,4 +1,5 @@
-// The brief's empirical lighting model (its equation 1), per RGB channel, for one point light:
+// The empirical lighting model lancer renders with (Phong's, with the mirror vector R), per RGB
+// channel, for one point light:
 //   Is * att(d) * (kd * max(0, N.L) + ks * max(0, R.V)^n),   R = L mirrored about N,
 // with the specular term 0 when the light is behind the surface (N.L <= 0).
 #pragma once

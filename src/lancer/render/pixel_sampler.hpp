@@ -1,4 +1,4 @@
-// Where the samples of a pixel fall: the brief's regular n x n sub-pixel grid, or a jittered
+// Where the samples of a pixel fall: the regular n x n sub-pixel grid, or a jittered
 // (stratified) grid seeded per pixel so that images are identical for any thread count.
 #pragma once
 

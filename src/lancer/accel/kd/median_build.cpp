@@ -1,5 +1,6 @@
-// The brief's kd-tree: split the longest side of the cell at its middle and send each triangle to
-// every child its bounding box touches, until a cell holds few enough triangles.
+// The spatial-median kd-tree (--accel kdtree-median), the simple baseline: split the longest side of
+// the cell at its middle and send each triangle to every child its bounding box touches, until a
+// cell holds few enough triangles.
 #include <algorithm>
 #include <chrono>
 #include <future>

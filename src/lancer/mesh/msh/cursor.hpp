@@ -33,7 +33,6 @@ class MshCursor {
   bool atEnd() const { return pos_ >= end_; }
   // From here on, errors give byte offsets (the file's data sections are binary).
   void setBinaryLocations(bool binary) { binaryLocations_ = binary; }
-  bool binaryLocations() const { return binaryLocations_; }
 
   // --- text -------------------------------------------------------------------------------------
   void skipWhitespace() {

@@ -262,7 +262,8 @@ bool readSections(MshReadState& state) {
       if (state.elementsRead && !state.assembler.tracksElements()) return false;
       readFieldSection(state, name, start, readMshElementData);
     } else {
-      // $Comments, $Periodic, $ElementNodeData, $GhostElements, $Parametrizations, ...
+      // Every other section is skipped to its end marker: $Comments, $Periodic, $GhostElements,
+      // $Parametrizations, $ElementNodeData, $InterpolationScheme and any unknown one.
       skipSection(cursor, name, start);
     }
     if (meshSection) state.meshSections.emplace(std::string(name), std::string_view(start, cursor.position()));
