@@ -1,5 +1,7 @@
 #include "scene_setup.hpp"
 
+#include "commands.hpp"
+
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -161,5 +163,24 @@ const std::atomic<bool>& installInterruptHandler() {
 }
 
 bool showProgress(const SceneOverrides& overrides) { return !overrides.quiet && isatty(STDERR_FILENO); }
+
+ImageWriteOptions imageWriteOptions(const RenderSettings& settings) {
+  ImageWriteOptions options;
+  options.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
+  options.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
+  return options;
+}
+
+RenderOptions commandRenderOptions(const SceneOverrides& overrides) {
+  RenderOptions options;
+  options.threads = overrides.threads;
+  options.cancel = &installInterruptHandler();
+  return options;
+}
+
+int interruptedExit(const std::string& output) {
+  std::fprintf(stderr, "lancer: interrupted; %s was not written\n", output.c_str());
+  return kExitInterrupted;
+}
 
 }  // namespace lancer::cli

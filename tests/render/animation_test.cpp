@@ -38,10 +38,10 @@ std::vector<Image> animate(LoadedScene& s, const AnimationSettings& animation, i
 
 Image renderWith(const LoadedScene& s, const CameraSettings& cameraSettings) {
   const RenderSettings& settings = s.description.render;
-  const Camera camera(cameraSettings, s.scene.origin, s.scene.bounds, settings.width, settings.height);
+  const Camera camera = makeCamera(cameraSettings, s.scene, settings);
   RenderOptions options;
   options.threads = 2;
-  return renderImage(s.scene, s.accelerator, camera, settings, options);
+  return Renderer(s.scene, s.accelerator, camera, settings).renderImage(options);
 }
 
 bool bitIdentical(const Image& a, const Image& b) {

@@ -84,7 +84,7 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
       if (lightsWithCamera)
         for (std::size_t i = 0; i < scene.lights.size(); ++i) turnLight(i, degrees);
     }
-    const Camera camera(cameraSettings, scene.origin, scene.bounds, settings.width, settings.height);
+    const Camera camera = makeCamera(cameraSettings, scene, settings);
     RenderOptions frameOptions = options;
     if (onProgress) {
       frameOptions.onProgress = [&](const RenderProgress& progress) {
@@ -97,7 +97,7 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
       };
     }
     RenderStats frameStats;
-    const Image image = renderImage(scene, accelerator, camera, settings, frameOptions, &frameStats);
+    const Image image = Renderer(scene, accelerator, camera, settings).renderImage(frameOptions, &frameStats);
     stats.rays += frameStats.rays;
     if (frameStats.cancelled || (options.cancel != nullptr && options.cancel->load())) {
       stats.cancelled = true;
