@@ -64,6 +64,12 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
   // The lights that turn: the orbiting one, or (quick look) all of them with the camera.
   const bool lightsWithCamera = !lightOrbit && description.lightsFollowCamera;
   const std::vector<SceneLight> originalLights = scene.lights;
+  // The scene's lights come back as they were however the loop ends (onFrame may throw: a full disk).
+  struct RestoreLights {
+    Scene& scene;
+    const std::vector<SceneLight>& lights;
+    ~RestoreLights() { scene.lights = lights; }
+  } restoreLights{scene, originalLights};
   const Vec3d centre = orbitCenter(animation, scene);
   const Vec3d axis = orbitAxis(animation, description.camera);
   auto turnLight = [&](std::size_t index, double degrees) {
@@ -105,7 +111,6 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
     }
     onFrame(frame, image);
   }
-  scene.lights = originalLights;
   stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return stats;
 }
