@@ -1,8 +1,11 @@
 #include "lancer/mesh/msh_mesh_assembler.hpp"
 
+#include <fmt/format.h>
+
 #include "lancer/mesh/msh_high_order.hpp"
 #include "lancer/mesh/msh_huge_pages.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
+#include "lancer/util/input_error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -394,6 +397,15 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   }
   source.degenerateFacesDropped = faces_.size() - kept;
   truncateFaces(kept);
+  // What was read and is not drawn, said by every command that loads the mesh (info lists it too).
+  for (const auto& [type, count] : source.unrenderableByType)
+    source.warnings.push_back(formatInputWarning(
+        SourceLocation{source.path},
+        fmt::format("{} {} (type {}) not drawn: lancer does not draw this type", count, mshElementTypeName(type), type)));
+  if (source.degenerateFacesDropped)
+    source.warnings.push_back(formatInputWarning(
+        SourceLocation{source.path},
+        fmt::format("{} degenerate (zero-area) faces dropped", source.degenerateFacesDropped)));
   if (trackSides_) mesh.volumeSides = std::move(sides_);
   mesh.faces = std::move(faces_);
   mesh.facePhysicalTag = std::move(facePhysical_);
