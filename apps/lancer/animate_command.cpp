@@ -15,6 +15,7 @@
 #include "lancer/image/gif_writer.hpp"
 #include "lancer/image/image_io.hpp"
 #include "lancer/render/animation.hpp"
+#include "lancer/scene/render_limits.hpp"
 #include "scene_setup.hpp"
 
 namespace lancer::cli {
@@ -179,7 +180,7 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
                       "Output (required): NAME.gif (animated, looping), NAME.png (animated PNG) or "
                       "NAME_%04d.png/.bmp/.ppm (one "
                       "file per frame)");
-  command->add_option("--frames", options->frames, "Number of frames")->check(CLI::Range(1, 10000));
+  command->add_option("--frames", options->frames, "Number of frames")->check(CLI::Range(1, kMaxFrames));
   command->add_option("--fps", options->fps, "Frames per second")->check(CLI::Range(0.01, 100.0));
   command->add_option("--orbit", options->orbit, "What turns: camera or light:K");
   command

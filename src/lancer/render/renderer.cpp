@@ -11,15 +11,10 @@
 
 #include "lancer/render/adaptive_sampler.hpp"
 #include "lancer/render/pixel_sampler.hpp"
+#include "lancer/util/thread_count.hpp"
 
 namespace lancer {
 namespace {
-
-int resolveThreadCount(int requested) {
-  if (requested > 0) return requested;
-  const unsigned hardware = std::thread::hardware_concurrency();
-  return hardware > 0 ? static_cast<int>(hardware) : 1;
-}
 
 int tilesAcross(int pixels) { return (pixels + kTileSize - 1) / kTileSize; }
 
