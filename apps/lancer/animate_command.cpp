@@ -15,6 +15,7 @@
 #include "lancer/image/gif_writer.hpp"
 #include "lancer/image/image_io.hpp"
 #include "lancer/render/animation.hpp"
+#include "lancer/scene/render_limits.hpp"
 #include "scene_setup.hpp"
 
 namespace lancer::cli {
@@ -80,9 +81,7 @@ int runAnimate(const AnimateCommandOptions& options) {
         SourceLocation{options.input},
         "no output: give -o FILE.gif, -o FILE.png (animated PNG) or -o frame_%04d.png (numbered frames)");
   const std::optional<FramePattern> pattern = parseFramePattern(output);
-  ImageWriteOptions stillOptions;
-  stillOptions.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
-  stillOptions.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
+  const ImageWriteOptions stillOptions = imageWriteOptions(settings);
   std::optional<GifWriter> gif;
   std::optional<ApngWriter> apng;
   StagedFrames frames;
@@ -130,10 +129,7 @@ int runAnimate(const AnimateCommandOptions& options) {
         "name (frame_%04d.png, .bmp or .ppm)");
   }
 
-  const std::atomic<bool>& interrupted = installInterruptHandler();
-  RenderOptions renderOptions;
-  renderOptions.threads = options.overrides.threads;
-  renderOptions.cancel = &interrupted;
+  const RenderOptions renderOptions = commandRenderOptions(options.overrides);
   const bool progress = showProgress(options.overrides);
   auto onProgress = [&](const AnimationProgress& p) {
     const double done = (p.frame + p.frameProgress.fraction) / p.frames;
@@ -156,10 +152,7 @@ int runAnimate(const AnimateCommandOptions& options) {
       },
       progress ? std::function<void(const AnimationProgress&)>(onProgress) : nullptr);
   if (progress) std::fputc('\n', stderr);
-  if (stats.cancelled) {
-    std::fprintf(stderr, "lancer: interrupted; %s was not written\n", output.c_str());
-    return kExitInterrupted;  // the writers' destructors remove their temporary files
-  }
+  if (stats.cancelled) return interruptedExit(output);  // the writers' destructors remove their temporary files
   if (gif) gif->finish();
   if (apng) apng->finish();
   if (pattern) frames.publish();
@@ -187,7 +180,7 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
                       "Output (required): NAME.gif (animated, looping), NAME.png (animated PNG) or "
                       "NAME_%04d.png/.bmp/.ppm (one "
                       "file per frame)");
-  command->add_option("--frames", options->frames, "Number of frames")->check(CLI::Range(1, 10000));
+  command->add_option("--frames", options->frames, "Number of frames")->check(CLI::Range(1, kMaxFrames));
   command->add_option("--fps", options->fps, "Frames per second")->check(CLI::Range(0.01, 100.0));
   command->add_option("--orbit", options->orbit, "What turns: camera or light:K");
   command

@@ -95,8 +95,6 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
         "copies skipped:  {} (MSH 2 repeats an element for each further physical group; the first "
         "copy is kept, in all the groups)\n",
         source.duplicateElementsSkipped);
-  if (source.degenerateFacesDropped)
-    fmt::print("warning: {} degenerate (zero-area) faces dropped\n", source.degenerateFacesDropped);
   for (const std::string& warning : source.warnings) fmt::print("{}\n", warning);
   fmt::print("physical groups:\n");
   for (const PhysicalGroup& group : mesh.physicalGroups) {

@@ -34,7 +34,7 @@ void printProgress(const RenderProgress& progress) {
   std::fflush(stderr);
 }
 
-int tracePixel(const PreparedScene& prepared, const Camera& camera, const std::string& pixel) {
+int tracePixel(const PreparedScene& prepared, const Renderer& renderer, const std::string& pixel) {
   const RenderSettings& settings = prepared.description.render;
   int x = -1, y = -1;
   char trailing = 0;
@@ -42,10 +42,9 @@ int tracePixel(const PreparedScene& prepared, const Camera& camera, const std::s
       x >= settings.width || y >= settings.height)
     throw InputError(SourceLocation{"--pixel"}, fmt::format("'{}' is not a pixel 'x,y' inside {}x{}", pixel,
                                                             settings.width, settings.height));
-  const Tracer tracer(prepared.scene, prepared.accelerator, settings, camera);
   TraceCounters counters;
   std::uint64_t samples = 0;
-  const Rgba value = renderPixel(tracer, camera, settings, x, y, counters, samples);
+  const Rgba value = renderer.renderPixel(x, y, counters, samples);
   std::printf("pixel %d,%d: rgb %.6f %.6f %.6f alpha %.3f (%llu samples, %llu rays)\n", x, y, value.r,
               value.g, value.b, value.a, static_cast<unsigned long long>(samples),
               static_cast<unsigned long long>(counters.rays));
@@ -64,24 +63,19 @@ bool streamsToFile(const std::string& output) {
 
 // Renders into `output` (atomically: an interrupted or failed render leaves any existing file as it
 // was). Returns false when interrupted.
-bool renderToFile(const PreparedScene& prepared, const Camera& camera, const std::string& output,
+bool renderToFile(const PreparedScene& prepared, const Renderer& renderer, const std::string& output,
                   const RenderOptions& renderOptions, RenderStats& stats) {
   const RenderSettings& settings = prepared.description.render;
-  ImageWriteOptions writeOptions;
-  writeOptions.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
-  writeOptions.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
+  const ImageWriteOptions writeOptions = imageWriteOptions(settings);
   const bool cancellable = renderOptions.cancel != nullptr;
   if (!streamsToFile(output)) {
-    const Image image =
-        renderImage(prepared.scene, prepared.accelerator, camera, settings, renderOptions, &stats);
+    const Image image = renderer.renderImage(renderOptions, &stats);
     if (cancellable && renderOptions.cancel->load()) return false;
     writeImage(output, image, writeOptions);
     return true;
   }
   ImageRowWriter writer(output, settings.width, settings.height, writeOptions);  // a bad folder fails now
-  renderBands(
-      prepared.scene, prepared.accelerator, camera, settings, renderOptions,
-      [&](int, const Image& band) { writer.writeRows(band); }, &stats);
+  renderer.renderBands(renderOptions, [&](int, const Image& band) { writer.writeRows(band); }, &stats);
   if (stats.cancelled || (cancellable && renderOptions.cancel->load())) return false;  // ~writer discards
   writer.commit();
   return true;
@@ -105,29 +99,23 @@ int runRender(const RenderCommandOptions& options) {
           "--legend needs a mesh coloured by a field (color_by = { field = \"...\" } in a [[mesh]])");
   }
 
-  const Camera camera(prepared.description.camera, prepared.scene.origin, prepared.scene.bounds,
-                      settings.width, settings.height);
-  if (!options.pixel.empty()) return tracePixel(prepared, camera, options.pixel);
+  const Camera camera = makeCamera(prepared.description.camera, prepared.scene, settings);
+  const Renderer renderer(prepared.scene, prepared.accelerator, camera, settings);
+  if (!options.pixel.empty()) return tracePixel(prepared, renderer, options.pixel);
 
-  const std::atomic<bool>& interrupted = installInterruptHandler();
-  RenderOptions renderOptions;
-  renderOptions.threads = options.overrides.threads;
-  renderOptions.cancel = &interrupted;
+  RenderOptions renderOptions = commandRenderOptions(options.overrides);
   const bool progress = showProgress(options.overrides);
   if (progress) renderOptions.onProgress = printProgress;
   RenderStats stats;
   bool written = false;
   try {
-    written = renderToFile(prepared, camera, output, renderOptions, stats);
+    written = renderToFile(prepared, renderer, output, renderOptions, stats);
   } catch (...) {
     if (progress) std::fputc('\n', stderr);  // the error goes below the progress line
     throw;
   }
   if (progress) std::fputc('\n', stderr);
-  if (!written) {
-    std::fprintf(stderr, "lancer: interrupted; %s was not written\n", output.c_str());
-    return kExitInterrupted;
-  }
+  if (!written) return interruptedExit(output);
   if (!options.legend.empty()) {
     // The bar holds the map's display values: written as they are, like the picture's field colours.
     const Scene::FieldLegend& legend = *prepared.scene.legend;

@@ -1,5 +1,7 @@
 #include "scene_setup.hpp"
 
+#include "commands.hpp"
+
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -16,6 +18,7 @@
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/quick_look.hpp"
+#include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "lancer/util/memory_budget.hpp"
 
@@ -45,13 +48,10 @@ bool isMeshFile(const std::string& path) {
   return looksLikeMsh(head) || !foreignFileMessage(head, error ? 0 : size, path).empty();
 }
 
-ShadingMode shadingFromName(const std::string& name) {
-  return name == "flat" ? ShadingMode::Flat : (name == "gouraud" ? ShadingMode::Gouraud : ShadingMode::Phong);
-}
-
-SamplerKind samplerFromName(const std::string& name) {
-  return name == "stratified" ? SamplerKind::Stratified
-                              : (name == "adaptive" ? SamplerKind::Adaptive : SamplerKind::Regular);
+// The command line checks its choices against the same tables (CLI11 wants strings).
+template <std::size_t N>
+std::vector<std::string> choices(const std::array<std::string_view, N>& names) {
+  return {names.begin(), names.end()};
 }
 
 // Checked before loading any mesh. Whole: the float image and its 8-bit copy for the writer.
@@ -77,19 +77,20 @@ void requireImageMemory(const RenderSettings& settings, int threads, ImageBuffer
 }  // namespace
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
-  command.add_option("--width", overrides.width, "Image width in pixels")->check(CLI::Range(1, 32768));
-  command.add_option("--height", overrides.height, "Image height in pixels")->check(CLI::Range(1, 32768));
+  command.add_option("--width", overrides.width, "Image width in pixels")->check(CLI::Range(1, kMaxRenderSide));
+  command.add_option("--height", overrides.height, "Image height in pixels")->check(CLI::Range(1, kMaxRenderSide));
   command.add_option("--samples", overrides.samples, "Samples per pixel (a perfect square for the regular grid)")
-      ->check(CLI::Range(1, 1024));
+      ->check(CLI::Range(1, kMaxSamples));
   command.add_option("--sampler", overrides.sampler, "Anti-aliasing: regular, stratified or adaptive")
-      ->check(CLI::IsMember({"regular", "stratified", "adaptive"}));
-  command.add_option("--max-depth", overrides.maxDepth, "Reflection/refraction depth")->check(CLI::Range(0, 64));
+      ->check(CLI::IsMember(choices(kSamplerNames)));
+  command.add_option("--max-depth", overrides.maxDepth, "Reflection/refraction depth")
+      ->check(CLI::Range(0, kMaxDepth));
   command.add_option("--shading", overrides.shading, "Shading for every mesh: flat, gouraud or phong")
-      ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
+      ->check(CLI::IsMember(choices(kShadingNames)));
   command.add_option("--accel", overrides.accel, "Accelerator: kdtree-sah (default), kdtree-median or naive")
       ->check(CLI::IsMember({"kdtree-sah", "kdtree-median", "naive"}));
   command.add_option("--threads", overrides.threads, "Worker threads (default 0: all cores)")
-      ->check(CLI::Range(0, 1024));
+      ->check(CLI::Range(0, kMaxThreads));
   command.add_flag("--srgb", overrides.srgb, "Encode the output with the sRGB curve instead of linear");
   command.add_flag("--edges", overrides.edges,
                    "Draw element edges (1 pixel, black) on every mesh whose scene sets no edges");
@@ -125,7 +126,7 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
   if (overrides.height) settings.height = *overrides.height;
   if (overrides.maxDepth) settings.maxDepth = *overrides.maxDepth;
   if (overrides.srgb) settings.srgb = true;
-  if (!overrides.sampler.empty()) settings.sampler = samplerFromName(overrides.sampler);
+  if (!overrides.sampler.empty()) settings.sampler = *enumFromName<SamplerKind>(kSamplerNames, overrides.sampler);
   if (overrides.samples) settings.samples = *overrides.samples;
   // The quick look's fill sits at the automatic camera, whose distance depends on the image's aspect.
   if (!preloaded.empty() && (overrides.width || overrides.height))
@@ -141,7 +142,7 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
     for (MeshInstance& mesh : description.meshes)
       if (!mesh.edges) mesh.edges = EdgeSettings{};
   if (!overrides.shading.empty()) {
-    settings.shading = shadingFromName(overrides.shading);
+    settings.shading = *enumFromName<ShadingMode>(kShadingNames, overrides.shading);
     for (MeshInstance& mesh : description.meshes) mesh.shading.reset();
   }
   Scene scene = preloaded.empty() ? buildScene(description) : buildScene(description, std::move(preloaded));
@@ -161,5 +162,24 @@ const std::atomic<bool>& installInterruptHandler() {
 }
 
 bool showProgress(const SceneOverrides& overrides) { return !overrides.quiet && isatty(STDERR_FILENO); }
+
+ImageWriteOptions imageWriteOptions(const RenderSettings& settings) {
+  ImageWriteOptions options;
+  options.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
+  options.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
+  return options;
+}
+
+RenderOptions commandRenderOptions(const SceneOverrides& overrides) {
+  RenderOptions options;
+  options.threads = overrides.threads;
+  options.cancel = &installInterruptHandler();
+  return options;
+}
+
+int interruptedExit(const std::string& output) {
+  std::fprintf(stderr, "lancer: interrupted; %s was not written\n", output.c_str());
+  return kExitInterrupted;
+}
 
 }  // namespace lancer::cli

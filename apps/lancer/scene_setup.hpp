@@ -10,6 +10,8 @@
 #include <CLI/CLI.hpp>
 
 #include "lancer/accel/accelerator.hpp"
+#include "lancer/image/image_io.hpp"
+#include "lancer/render/renderer.hpp"
 #include "lancer/scene/scene.hpp"
 
 namespace lancer::cli {
@@ -53,5 +55,15 @@ const std::atomic<bool>& installInterruptHandler();
 
 // True when progress lines should go to stderr (a terminal, and not --quiet).
 bool showProgress(const SceneOverrides& overrides);
+
+// How the settings want images written: the sRGB curve or linear, alpha with a transparent background.
+ImageWriteOptions imageWriteOptions(const RenderSettings& settings);
+
+// A command's render options: its --threads, and Ctrl-C (or SIGTERM) stops the render.
+RenderOptions commandRenderOptions(const SceneOverrides& overrides);
+
+// Prints that the command was interrupted and `output` not written (it is left as it was), and
+// returns the exit code for it.
+int interruptedExit(const std::string& output);
 
 }  // namespace lancer::cli

@@ -4,6 +4,8 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "mesh/msh_test_util.hpp"
@@ -141,6 +143,28 @@ TEST(InfoCli, VolumesListTheirSkinAndInterfaceFacesAndNameTheInterfaces) {
                                     "\"entities\": [0, 0], \"names\": [\"Housing\", \"Bushing\"], \"faces\": 638},\n    {\"tags\": [2, 3], "
                                     "\"entities\": [0, 0], \"names\": [\"Bushing\", \"Shaft\"], \"faces\": 366}\n  ],"))
       << json.output;
+}
+
+// render and animate say what info says about a mesh: faces dropped as degenerate (and element types
+// not drawn), each once, naming the file.
+TEST(InfoCli, RenderAndAnimatePrintTheMeshWarningsInfoPrints) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "lancer_info_cli_warnings";
+  std::filesystem::create_directories(folder);
+  const std::string mesh = (folder / "degenerate.msh").string();
+  std::ofstream(mesh) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n"
+                         "1 0 0 0\n2 1 0 0\n3 2 0 0\n4 0 1 0\n$EndNodes\n"
+                         "$Elements\n3\n1 2 2 0 1 1 2 4\n2 2 2 0 1 1 2 3\n3 2 2 0 1 1 1 4\n$EndElements\n";
+  const std::string warning = mesh + ": warning: 2 degenerate (zero-area) faces dropped\n";
+  for (const std::string& command :
+       {"info '" + mesh + "'", "render '" + mesh + "' -o '" + (folder / "out.png").string() + "'",
+        "animate --frames 2 '" + mesh + "' -o '" + (folder / "out.gif").string() + "'"}) {
+    const CommandResult result = runCli(command);
+    EXPECT_EQ(result.exitCode, 0) << command << "\n" << result.output;
+    const std::size_t at = result.output.find(warning);
+    EXPECT_NE(at, std::string::npos) << command << "\n" << result.output;
+    EXPECT_EQ(result.output.find(warning, at + 1), std::string::npos) << command << "\n" << result.output;
+  }
+  std::filesystem::remove_all(folder);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <cstring>
+#include <stdexcept>
 #include <vector>
 
 #include "lancer/scene/scene_loader.hpp"
@@ -38,10 +39,10 @@ std::vector<Image> animate(LoadedScene& s, const AnimationSettings& animation, i
 
 Image renderWith(const LoadedScene& s, const CameraSettings& cameraSettings) {
   const RenderSettings& settings = s.description.render;
-  const Camera camera(cameraSettings, s.scene.origin, s.scene.bounds, settings.width, settings.height);
+  const Camera camera = makeCamera(cameraSettings, s.scene, settings);
   RenderOptions options;
   options.threads = 2;
-  return renderImage(s.scene, s.accelerator, camera, settings, options);
+  return Renderer(s.scene, s.accelerator, camera, settings).renderImage(options);
 }
 
 bool bitIdentical(const Image& a, const Image& b) {
@@ -185,6 +186,25 @@ TEST(Animation, CancellingStopsBeforeTheNextFrame) {
   EXPECT_TRUE(stats.cancelled);
   EXPECT_EQ(delivered, 1);
   EXPECT_EQ(s.scene.lights[1].position, lightBefore);
+}
+
+// A frame writer that fails (a full disk) ends the animation with its exception, and the orbiting
+// light is back where it was: the scene can render again (the light stayed turned before).
+TEST(Animation, AFailingFrameWriterLeavesTheLightsAsTheyWere) {
+  LoadedScene s;
+  RenderOptions options;
+  options.threads = 2;
+  const Vec3 lightBefore = s.scene.lights[0].position;
+  AnimationSettings animation = *s.description.animation;
+  animation.orbitLight = 0;
+  int delivered = 0;
+  EXPECT_THROW(renderAnimation(s.scene, s.accelerator, s.description, animation, options,
+                               [&](int, const Image&) {
+                                 if (++delivered == 2) throw std::runtime_error("disk full");
+                               }),
+               std::runtime_error);
+  EXPECT_EQ(delivered, 2);
+  EXPECT_EQ(s.scene.lights[0].position, lightBefore);
 }
 
 }  // namespace

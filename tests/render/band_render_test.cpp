@@ -51,14 +51,14 @@ struct Rendering {
   Image whole(int threads) const {
     RenderOptions options;
     options.threads = threads;
-    return renderImage(scene, accelerator, camera, description.render, options);
+    return Renderer(scene, accelerator, camera, description.render).renderImage(options);
   }
   RenderStats bands(int threads, const BandSink& sink, const std::atomic<bool>* cancel = nullptr) const {
     RenderOptions options;
     options.threads = threads;
     options.cancel = cancel;
     RenderStats stats;
-    renderBands(scene, accelerator, camera, description.render, options, sink, &stats);
+    Renderer(scene, accelerator, camera, description.render).renderBands(options, sink, &stats);
     return stats;
   }
 };

@@ -66,10 +66,10 @@ SceneDescription halfPlaneScene(double angleDegrees, int samples, SamplerKind sa
 Image renderHalfPlane(const SceneDescription& d, int threads = 0, RenderStats* stats = nullptr) {
   const Scene scene = test::sceneFromMeshes(d, {test::squareMesh(float(kEdgeOffset), -20, 20, 20, 0)});
   const Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, AccelKind::KdTreeSah);
-  const Camera camera(d.camera, scene.origin, scene.bounds, d.render.width, d.render.height);
+  const Camera camera = makeCamera(d.camera, scene, d.render);
   RenderOptions options;
   options.threads = threads;
-  return renderImage(scene, accelerator, camera, d.render, options, stats);
+  return Renderer(scene, accelerator, camera, d.render).renderImage(options, stats);
 }
 
 TEST(Sampler, RegularGridCoverageWithinHalfASampleRowOfTheExactArea) {
@@ -186,13 +186,13 @@ TEST(Sampler, StratifiedAndAdaptiveAreBitIdenticalForAnyThreadCount) {
     EXPECT_TRUE(one == test::renderScene(d, scene, AccelKind::KdTreeSah, 1));  // and across runs
     // Every pixel equals what `--pixel x,y` computes for it alone.
     const Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, AccelKind::KdTreeSah);
-    const Camera camera(d.camera, scene.origin, scene.bounds, d.render.width, d.render.height);
-    const Tracer tracer(scene, accelerator, d.render);
+    const Camera camera = makeCamera(d.camera, scene, d.render);
+    const Renderer renderer(scene, accelerator, camera, d.render);
     for (int y = 0; y < d.render.height; y += 7)
       for (int x = 0; x < d.render.width; x += 5) {
         TraceCounters counters;
         std::uint64_t samples = 0;
-        const Rgba alone = renderPixel(tracer, camera, d.render, x, y, counters, samples);
+        const Rgba alone = renderer.renderPixel(x, y, counters, samples);
         ASSERT_EQ(alone.r, one.at(x, y).r) << x << "," << y;
         ASSERT_EQ(alone.b, one.at(x, y).b) << x << "," << y;
       }

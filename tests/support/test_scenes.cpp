@@ -27,11 +27,10 @@ Scene sceneFromMeshes(const SceneDescription& description, std::vector<Mesh> mes
 
 Image renderScene(const SceneDescription& description, const Scene& scene, AccelKind accel, int threads) {
   const Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, accel);
-  const Camera camera(description.camera, scene.origin, scene.bounds, description.render.width,
-                      description.render.height);
+  const Camera camera = makeCamera(description.camera, scene, description.render);
   RenderOptions options;
   options.threads = threads;
-  return renderImage(scene, accelerator, camera, description.render, options);
+  return Renderer(scene, accelerator, camera, description.render).renderImage(options);
 }
 
 Image renderScene(const SceneDescription& description) { return renderScene(description, buildScene(description)); }

@@ -21,8 +21,8 @@ struct Rgba {
 constexpr Rgba toRgba(const Vec3& colour, float alpha = 1) { return {colour.x, colour.y, colour.z, alpha}; }
 
 // The largest width or height of an Image and of what the image writers accept: GIF's 16-bit limit.
-// Users get less: the scene loader and the CLI's --width and --height allow up to 32768 (their own
-// constants), so this bound only catches a library caller's bug.
+// Users get less: scenes and the CLI's --width and --height allow up to kMaxRenderSide (32768,
+// scene/render_limits.hpp), so this bound only catches a library caller's bug.
 inline constexpr int kMaxImageSide = 65535;
 
 // Threads may write distinct pixels (e.g. disjoint tiles through pasteTile or at()) concurrently:

@@ -64,6 +64,12 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
   // The lights that turn: the orbiting one, or (quick look) all of them with the camera.
   const bool lightsWithCamera = !lightOrbit && description.lightsFollowCamera;
   const std::vector<SceneLight> originalLights = scene.lights;
+  // The scene's lights come back as they were however the loop ends (onFrame may throw: a full disk).
+  struct RestoreLights {
+    Scene& scene;
+    const std::vector<SceneLight>& lights;
+    ~RestoreLights() { scene.lights = lights; }
+  } restoreLights{scene, originalLights};
   const Vec3d centre = orbitCenter(animation, scene);
   const Vec3d axis = orbitAxis(animation, description.camera);
   auto turnLight = [&](std::size_t index, double degrees) {
@@ -84,7 +90,7 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
       if (lightsWithCamera)
         for (std::size_t i = 0; i < scene.lights.size(); ++i) turnLight(i, degrees);
     }
-    const Camera camera(cameraSettings, scene.origin, scene.bounds, settings.width, settings.height);
+    const Camera camera = makeCamera(cameraSettings, scene, settings);
     RenderOptions frameOptions = options;
     if (onProgress) {
       frameOptions.onProgress = [&](const RenderProgress& progress) {
@@ -97,7 +103,7 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
       };
     }
     RenderStats frameStats;
-    const Image image = renderImage(scene, accelerator, camera, settings, frameOptions, &frameStats);
+    const Image image = Renderer(scene, accelerator, camera, settings).renderImage(frameOptions, &frameStats);
     stats.rays += frameStats.rays;
     if (frameStats.cancelled || (options.cancel != nullptr && options.cancel->load())) {
       stats.cancelled = true;
@@ -105,7 +111,6 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
     }
     onFrame(frame, image);
   }
-  scene.lights = originalLights;
   stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return stats;
 }

@@ -36,6 +36,44 @@ inline float dielectricFresnel(float cosIncident, float eta) {
   return 0.5f * (rs * rs + rp * rp);
 }
 
+// How the light a surface sends on divides between mirror reflection and transmission, given the
+// material's shares (`reflect`, `transmit`). Through a solid's surface (`refracts`) the ray bends by
+// Snell's law with eta = n_from / n_to, about the shading normal, or the geometric one when the
+// shading normal would send it back out; total internal reflection gives the whole transmitted share
+// to reflection, and with Fresnel the transmitted share is split again by the dielectric
+// reflectance. A thin sheet passes light unbent (its Fresnel term takes eta = sheetEta). Only weight
+// moves from transmission to reflection: the sum stays the material's.
+struct InterfaceSplit {
+  Vec3 reflect;
+  float transmit;
+  Vec3 transmittedDirection;
+};
+
+inline InterfaceSplit splitAtInterface(const Vec3& direction, const Vec3& shadingNormal, const Vec3& geometricNormal,
+                                       bool refracts, float eta, bool fresnel, float sheetEta, const Vec3& reflect,
+                                       float transmit) {
+  InterfaceSplit split{reflect, transmit, direction};
+  if (transmit <= 0.0f) return split;
+  Vec3 normal = shadingNormal;
+  bool transmits = true;
+  if (refracts) {
+    transmits = refract(direction, normal, eta, split.transmittedDirection);
+    if (transmits && dot(split.transmittedDirection, geometricNormal) >= 0.0f) {
+      normal = geometricNormal;
+      transmits = refract(direction, normal, eta, split.transmittedDirection);
+    }
+  }
+  if (!transmits) {
+    split.reflect += Vec3{1, 1, 1} * split.transmit;
+    split.transmit = 0.0f;
+  } else if (fresnel) {
+    const float reflectance = dielectricFresnel(-dot(direction, normal), refracts ? eta : sheetEta);
+    split.reflect += Vec3{1, 1, 1} * (split.transmit * reflectance);
+    split.transmit *= 1.0f - reflectance;
+  }
+  return split;
+}
+
 inline Vec3 beerLambert(const Vec3& absorption, float distance) {
   return {std::exp(-absorption.x * distance), std::exp(-absorption.y * distance), std::exp(-absorption.z * distance)};
 }

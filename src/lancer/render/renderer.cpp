@@ -11,15 +11,10 @@
 
 #include "lancer/render/adaptive_sampler.hpp"
 #include "lancer/render/pixel_sampler.hpp"
+#include "lancer/util/thread_count.hpp"
 
 namespace lancer {
 namespace {
-
-int resolveThreadCount(int requested) {
-  if (requested > 0) return requested;
-  const unsigned hardware = std::thread::hardware_concurrency();
-  return hardware > 0 ? static_cast<int>(hardware) : 1;
-}
 
 int tilesAcross(int pixels) { return (pixels + kTileSize - 1) / kTileSize; }
 
@@ -133,8 +128,10 @@ std::uint64_t bandMemoryBytes(int width, int height, int threads) {
   return rows * static_cast<std::uint64_t>(width) * sizeof(Rgba);
 }
 
-Rgba renderPixel(const Tracer& tracer, const Camera& camera, const RenderSettings& settings, int x, int y,
-                 TraceCounters& counters, std::uint64_t& samplesTraced) {
+namespace {
+
+Rgba tracePixel(const Tracer& tracer, const Camera& camera, const RenderSettings& settings, int x, int y,
+                TraceCounters& counters, std::uint64_t& samplesTraced) {
   if (settings.sampler == SamplerKind::Adaptive)
     return AdaptiveSampler(tracer, camera, settings).renderPixel(x, y, counters, samplesTraced);
   const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(settings.samples)))));
@@ -157,12 +154,26 @@ Rgba renderPixel(const Tracer& tracer, const Camera& camera, const RenderSetting
   return toRgba(sum * weight, alpha);
 }
 
-void renderBands(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
-                 const RenderSettings& settings, const RenderOptions& options, const BandSink& sink,
-                 RenderStats* stats) {
+}  // namespace
+
+Camera makeCamera(const CameraSettings& camera, const Scene& scene, const RenderSettings& settings) {
+  return Camera(camera, scene.origin, scene.bounds, settings.width, settings.height);
+}
+
+Renderer::Renderer(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
+                   const RenderSettings& settings)
+    : camera_(camera), settings_(settings), tracer_(scene, accelerator, settings, camera) {}
+
+Rgba Renderer::renderPixel(int x, int y, TraceCounters& counters, std::uint64_t& samplesTraced) const {
+  return tracePixel(tracer_, camera_, settings_, x, y, counters, samplesTraced);
+}
+
+void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, RenderStats* stats) const {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  const Tracer tracer(scene, accelerator, settings, camera);
+  const Tracer& tracer = tracer_;
+  const Camera& camera = camera_;
+  const RenderSettings& settings = settings_;
 
   const int tilesX = tilesAcross(settings.width);
   const int bandCount = tilesAcross(settings.height);
@@ -199,7 +210,7 @@ void renderBands(const Scene& scene, const Accelerator& accelerator, const Camer
       } else {
         for (int y = bandY0; y < y1; ++y)
           for (int x = x0; x < x1; ++x)
-            pixels->at(x, y - bandY0) = renderPixel(tracer, camera, settings, x, y, counters, samples);
+            pixels->at(x, y - bandY0) = tracePixel(tracer, camera, settings, x, y, counters, samples);
       }
       raysTraced.fetch_add(counters.rays, std::memory_order_relaxed);
       samplesTraced.fetch_add(samples, std::memory_order_relaxed);
@@ -249,12 +260,9 @@ void renderBands(const Scene& scene, const Accelerator& accelerator, const Camer
   }
 }
 
-Image renderImage(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
-                  const RenderSettings& settings, const RenderOptions& options, RenderStats* stats) {
-  Image image(settings.width, settings.height);
-  renderBands(
-      scene, accelerator, camera, settings, options,
-      [&](int y0, const Image& band) { image.pasteTile(band, 0, y0); }, stats);
+Image Renderer::renderImage(const RenderOptions& options, RenderStats* stats) const {
+  Image image(settings_.width, settings_.height);
+  renderBands(options, [&](int y0, const Image& band) { image.pasteTile(band, 0, y0); }, stats);
   return image;
 }
 

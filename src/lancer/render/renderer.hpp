@@ -44,24 +44,34 @@ struct RenderStats {
 // workers finish their tiles) and propagates.
 using BandSink = std::function<void(int y0, const Image& band)>;
 
-// Renders the image band by band into `sink`. When cancelled, the sink has received only some of the
-// bands (stats->cancelled is then true).
-void renderBands(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
-                 const RenderSettings& settings, const RenderOptions& options, const BandSink& sink,
-                 RenderStats* stats = nullptr);
+// What a frame needs, held together: the scene and its accelerator, the camera, the settings, and
+// the tracer built from them once (as pbrt-v4's integrator holds its aggregate, lights and camera, so
+// that rendering takes only where the pixels go). The scene, accelerator and camera must outlive it.
+class Renderer {
+ public:
+  Renderer(const Scene& scene, const Accelerator& accelerator, const Camera& camera, const RenderSettings& settings);
 
-// The whole image at once (animations, GIF output, tests): renderBands into one Image.
-Image renderImage(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
-                  const RenderSettings& settings, const RenderOptions& options, RenderStats* stats = nullptr);
+  // The image band by band into `sink`. When cancelled, the sink has received only some of the
+  // bands (stats->cancelled is then true).
+  void renderBands(const RenderOptions& options, const BandSink& sink, RenderStats* stats = nullptr) const;
+  // The whole image at once (animations, GIF output, tests): renderBands into one Image.
+  Image renderImage(const RenderOptions& options, RenderStats* stats = nullptr) const;
+  // Radiance of one pixel (all its samples), for `--pixel x,y` debugging and for tests.
+  Rgba renderPixel(int x, int y, TraceCounters& counters, std::uint64_t& samplesTraced) const;
+
+ private:
+  const Camera& camera_;
+  RenderSettings settings_;
+  Tracer tracer_;
+};
+
+// The camera of a frame: `camera`'s view of the scene, for an image of the settings' size.
+Camera makeCamera(const CameraSettings& camera, const Scene& scene, const RenderSettings& settings);
 
 // How many bands renderBands keeps at most (being traced, or done and waiting for the sink): enough
 // that `threads` workers (0: all hardware threads) always find tiles while the sink writes a band.
 int bandWindow(int width, int threads);
 // The bytes renderBands allocates for its bands: bandWindow bands of width x kTileSize pixels.
 std::uint64_t bandMemoryBytes(int width, int height, int threads);
-
-// Radiance of one pixel (all its samples), for `--pixel x,y` debugging and for tests.
-Rgba renderPixel(const Tracer& tracer, const Camera& camera, const RenderSettings& settings, int x, int y,
-                 TraceCounters& counters, std::uint64_t& samplesTraced);
 
 }  // namespace lancer

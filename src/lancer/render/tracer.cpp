@@ -76,12 +76,11 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderS
 }
 
 TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const {
-  float coverage = 0;
-  float hitDistance = 0;
+  const TracedRay traced = trace(ray, 0, 1.0f, 0.0f, parallelView, counters);
   TraceResult result;
-  result.color = trace(ray, 0, 1.0f, 0.0f, parallelView, counters, coverage, hitDistance);
-  result.alpha = coverage;
-  if (outlines_ && outlines_->near(ray)) paintOutlines(ray, hitDistance, result, counters);
+  result.color = traced.color;
+  result.alpha = traced.coverage;
+  if (outlines_ && outlines_->near(ray)) paintOutlines(ray, traced.distance, result, counters);
   return result;
 }
 
@@ -198,13 +197,6 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
   return color;
 }
 
-// The ray tree of the brief, depth first. At each hit the light leaving towards the viewer is
-//   local * split.local + reflected * reflectWeight + transmitted * transmitWeight,
-// where reflectWeight + transmitWeight = split.reflect + split.transmit (Fresnel and total internal
-// reflection only move weight from transmission to reflection) and split.local = 1 - both. A branch
-// that is not traced (depth limit, or a path weight below 1/512) takes the local colour instead, so
-// every node is a weighted mean of non-negative terms with weights summing to 1: light can only be
-// lost (absorption), never created, and depth 0 is exactly the local model.
 Vec3 Tracer::shadeShadowCatcher(const Vec3& point, TraceCounters& counters, float& coverage) const {
   // The share of the light the floor would get that the meshes let through, per channel: ambient
   // plus the lights' diffuse irradiance with shadows, over the same without them.
@@ -273,47 +265,76 @@ float Tracer::edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) c
                       scene_.edgeStyles[style].widthPixels);
 }
 
-Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
-                   TraceCounters& counters, float& coverage, float& hitDistance) const {
-  ++counters.rays;
+Tracer::Sighting Tracer::firstSighting(const Ray& ray) const {
+  Sighting seen;
   // Cut views: only the part of the ray on the kept side of every scene clip plane can hit
   // anything; a mesh's own planes are seen through by the query itself.
   const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
-  Hit hit;
-  const bool hitMesh = !kept.empty() && nearestHit(ray, kept.enter, kept.exit, hit);
-  // A ray that crosses a capped plane and then leaves a solid was inside it at the plane: it sees
-  // the cut face (the cap) there, flat, in the solid's material: the face's own when the ray leaves
-  // through its back, the outer volume's when it meets an interface from the front. Only the hit
-  // mesh's planes matter: the ray met no kept face of that mesh since the crossing.
-  const ClipPlane* cap = nullptr;
-  float tCap = 0;
-  std::uint32_t capMaterial = Scene::kNoMaterial;
-  if (hitMesh && (kept.enterPlane >= 0 || anyMeshClips_) && scene_.faceBoundsSolid[hit.face]) {
-    const bool entering = dot(scene_.faceNormals[hit.face], ray.direction) < 0.0f;
-    capMaterial = crossingAt(hit.face, entering).from;
-    if (capMaterial != Scene::kNoMaterial) cap = capPlane(ray, kept, hit.face, tCap);
+  const bool hitMesh = !kept.empty() && nearestHit(ray, kept.enter, kept.exit, seen.hit);
+  if (hitMesh) {
+    seen.kind = Sighting::Kind::kSurface;
+    seen.t = seen.hit.t;
+    // A ray that crosses a capped plane and then leaves a solid was inside it at the plane: it sees
+    // the cut face (the cap) there, flat, in the solid's material: the face's own when the ray
+    // leaves through its back, the outer volume's when it meets an interface from the front. Only
+    // the hit mesh's planes matter: the ray met no kept face of that mesh since the crossing.
+    if ((kept.enterPlane >= 0 || anyMeshClips_) && scene_.faceBoundsSolid[seen.hit.face]) {
+      const bool entering = dot(scene_.faceNormals[seen.hit.face], ray.direction) < 0.0f;
+      const std::uint32_t solid = crossingAt(seen.hit.face, entering).from;
+      float tCap = 0;
+      if (solid != Scene::kNoMaterial) seen.capPlane = capPlane(ray, kept, seen.hit.face, tCap);
+      if (seen.capPlane) {
+        seen.kind = Sighting::Kind::kCap;
+        seen.t = tCap;
+        seen.capMaterial = solid;
+      }
+    }
   }
   if (scene_.hasShadowCatcher) {
     // The catcher is a plane seen from above, in front of what the ray sees (a cap or a face) and
     // inside the kept part.
     const float rate = dot(ray.direction, scene_.floorNormal);
     const float t = rate < 0.0f ? (scene_.floorOffset - dot(ray.origin, scene_.floorNormal)) / rate : kInfinity;
-    if (t > kept.enter && t < kept.exit && t < (cap ? tCap : hitMesh ? hit.t : kInfinity)) {
-      hitDistance = t * length(ray.direction);
-      return shadeShadowCatcher(ray.at(t), counters, coverage);
+    if (t > kept.enter && t < kept.exit && t < (hitMesh ? seen.t : kInfinity)) {
+      seen.kind = Sighting::Kind::kShadowCatcher;
+      seen.t = t;
     }
   }
-  if (!hitMesh) {
-    hitDistance = kInfinity;
-    return background_;
+  return seen;
+}
+
+// The ray tree, depth first. At each hit the light leaving towards the viewer is
+//   local * split.local + reflected * reflectWeight + transmitted * transmitWeight,
+// where reflectWeight + transmitWeight = split.reflect + split.transmit (Fresnel and total internal
+// reflection only move weight from transmission to reflection) and split.local = 1 - both. A branch
+// that is not traced (depth limit, or a path weight below 1/512) takes the local colour instead, so
+// every node is a weighted mean of non-negative terms with weights summing to 1: light can only be
+// lost (absorption), never created, and depth 0 is exactly the local model.
+Tracer::TracedRay Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
+                                TraceCounters& counters) const {
+  ++counters.rays;
+  const Sighting seen = firstSighting(ray);
+  const float distance = seen.t * length(ray.direction);
+  switch (seen.kind) {
+    case Sighting::Kind::kNothing:
+      return {background_, kInfinity, 0.0f};
+    case Sighting::Kind::kShadowCatcher: {
+      float coverage = 0;
+      const Vec3 color = shadeShadowCatcher(ray.at(seen.t), counters, coverage);
+      return {color, distance, coverage};
+    }
+    case Sighting::Kind::kCap:
+      return {shadeCap(ray, *seen.capPlane, seen.t, seen.hit.face, seen.capMaterial, parallelView, counters),
+              distance, 1.0f};
+    case Sighting::Kind::kSurface:
+      break;
   }
-  if (cap) {
-    coverage = 1.0f;
-    hitDistance = tCap * length(ray.direction);
-    return shadeCap(ray, *cap, tCap, hit.face, capMaterial, parallelView, counters);
-  }
-  coverage = 1.0f;
-  hitDistance = hit.t * length(ray.direction);
+  return {shadeSurface(ray, seen.hit, distance, depth, pathWeight, pathLength, parallelView, counters), distance,
+          1.0f};
+}
+
+Vec3 Tracer::shadeSurface(const Ray& ray, const Hit& hit, float distance, int depth, float pathWeight,
+                          float pathLength, bool parallelView, TraceCounters& counters) const {
   // Edges are paint on the surface: fully covered pixels need no shading, partial ones blend.
   const float edge = edgeCoverageAt(ray, hit, pathLength);
   const Vec3 edgeColor = edge > 0.0f ? scene_.edgeStyles[scene_.faceEdgeStyle[hit.face]].color : Vec3{};
@@ -321,72 +342,47 @@ Vec3 Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength
   auto withEdge = [&](const Vec3& color) { return edge > 0.0f ? color * (1.0f - edge) + edgeColor * edge : color; };
   const SurfacePoint surface = makeSurfacePoint(scene_, ray, hit);
   // Closed shells and volumes face out of their material, so the side hit says whether the ray enters.
-  const bool entering = surface.normalSign > 0.0f;
-  const MediumCrossing media = crossingAt(hit.face, entering);
+  const MediumCrossing media = crossingAt(hit.face, surface.normalSign > 0.0f);
   const Material& material = scene_.materials[media.shown];
   const EnergySplit& split = splits_[media.shown];
   const Vec3 local = shadeLocal(ray, surface, material, parallelView, counters);
   if (depth >= maxDepth_ || !split.recursive) return withEdge(local);
 
   const Vec3 direction = normalize(ray.direction);
-  const bool solid = scene_.faceBoundsSolid[hit.face] != 0;
-  Vec3 reflectWeight = split.reflect;
-  float transmitWeight = split.transmit;
-  Vec3 transmittedDirection = direction;  // an open surface is a thin sheet: no net bending
-  if (transmitWeight > 0.0f) {
-    const float eta = iorOf(media.from) / iorOf(media.to);  // glass into water: n_glass / n_water
-    Vec3 normal = surface.shadingNormal;
-    bool transmits = true;
-    if (solid) {
-      transmits = refract(direction, normal, eta, transmittedDirection);
-      // An interpolated normal can send the ray back out of the geometric surface: use the true one.
-      if (transmits && dot(transmittedDirection, surface.geometricNormal) >= 0.0f) {
-        normal = surface.geometricNormal;
-        transmits = refract(direction, normal, eta, transmittedDirection);
-      }
-    }
-    if (!transmits) {  // total internal reflection: everything transmitted is reflected instead
-      reflectWeight += Vec3{1, 1, 1} * transmitWeight;
-      transmitWeight = 0.0f;
-    } else if (material.fresnel) {
-      const float fresnel = dielectricFresnel(-dot(direction, normal), solid ? eta : 1.0f / material.ior);
-      reflectWeight += Vec3{1, 1, 1} * (transmitWeight * fresnel);
-      transmitWeight *= 1.0f - fresnel;
-    }
-  }
-
+  // Glass into water bends by n_glass / n_water; an open surface is a thin sheet.
+  const InterfaceSplit weights =
+      splitAtInterface(direction, surface.shadingNormal, surface.geometricNormal, scene_.faceBoundsSolid[hit.face] != 0,
+                       iorOf(media.from) / iorOf(media.to), material.fresnel, 1.0f / material.ior, split.reflect,
+                       split.transmit);
+  const float branchLength = pathLength + distance;
   Vec3 color = local * split.local;
-  const float reflectPathWeight = pathWeight * maxComponent(reflectWeight);
-  if (reflectPathWeight >= kMinPathWeight) {
-    Vec3 reflected = reflect(direction, surface.shadingNormal);
-    if (dot(reflected, surface.geometricNormal) <= 0.0f) reflected = reflect(direction, surface.geometricNormal);
-    float distance = 0;
-    const Ray reflectedRay(offsetRayOrigin(surface.position, surface.geometricNormal), reflected);
-    Vec3 radiance = trace(reflectedRay, depth + 1, reflectPathWeight, pathLength + hitDistance, false, counters,
-                          coverage, distance);
-    // Reflected: the ray stays in the medium it came from (Beer-Lambert inside a solid).
-    const Vec3 absorption = absorptionOf(media.from);
-    if (maxComponent(absorption) > 0.0f)
-      radiance *= std::isfinite(distance) ? beerLambert(absorption, distance) : Vec3{0, 0, 0};
-    color += radiance * reflectWeight;
-  } else {
-    color += local * reflectWeight;
-  }
-  const float transmitPathWeight = pathWeight * transmitWeight;
-  if (transmitPathWeight >= kMinPathWeight) {
-    float distance = 0;
-    const Ray transmittedRay(offsetRayOrigin(surface.position, -surface.geometricNormal), transmittedDirection);
-    Vec3 radiance = trace(transmittedRay, depth + 1, transmitPathWeight, pathLength + hitDistance, false, counters,
-                          coverage, distance);
-    // Into the medium beyond: absorbed along the segment inside it, up to the next surface.
-    const Vec3 absorption = absorptionOf(media.to);
-    if (maxComponent(absorption) > 0.0f)
-      radiance *= std::isfinite(distance) ? beerLambert(absorption, distance) : Vec3{0, 0, 0};
-    color += radiance * transmitWeight;
-  } else {
-    color += local * transmitWeight;
-  }
+  // Reflected: the ray stays in the medium it came from (Beer-Lambert inside a solid).
+  color += traceBranch(
+      weights.reflect, absorptionOf(media.from), local,
+      [&] {
+        Vec3 reflected = reflect(direction, surface.shadingNormal);
+        if (dot(reflected, surface.geometricNormal) <= 0.0f) reflected = reflect(direction, surface.geometricNormal);
+        return Ray(offsetRayOrigin(surface.position, surface.geometricNormal), reflected);
+      },
+      depth, pathWeight, branchLength, counters);
+  // Transmitted: into the medium beyond, absorbed along the segment inside it.
+  color += traceBranch(
+      Vec3{1, 1, 1} * weights.transmit, absorptionOf(media.to), local,
+      [&] { return Ray(offsetRayOrigin(surface.position, -surface.geometricNormal), weights.transmittedDirection); },
+      depth, pathWeight, branchLength, counters);
   return withEdge(color);
+}
+
+template <typename MakeRay>
+Vec3 Tracer::traceBranch(const Vec3& weight, const Vec3& absorption, const Vec3& local, MakeRay&& makeRay, int depth,
+                         float pathWeight, float pathLength, TraceCounters& counters) const {
+  const float branchWeight = pathWeight * maxComponent(weight);
+  if (branchWeight < kMinPathWeight) return local * weight;
+  const TracedRay traced = trace(makeRay(), depth + 1, branchWeight, pathLength, false, counters);
+  Vec3 radiance = traced.color;
+  if (maxComponent(absorption) > 0.0f)
+    radiance *= std::isfinite(traced.distance) ? beerLambert(absorption, traced.distance) : Vec3{0, 0, 0};
+  return radiance * weight;
 }
 
 }  // namespace lancer

@@ -59,12 +59,35 @@ class Tracer {
   TraceResult tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const;
 
  private:
-  // `hitDistance` receives the distance to the nearest hit (infinity on a miss), for absorption;
+  // What a ray brings back: its colour, how far it went to the first thing it saw (infinity on a
+  // miss: for absorption and edge widths), and how much of a pixel that thing covers (1 on geometry,
+  // the shadow's density on a shadow catcher, 0 on a miss: the alpha of transparent backgrounds).
+  struct TracedRay {
+    Vec3 color;
+    float distance;
+    float coverage;
+  };
+  // What a ray sees first within the kept part of the scene, at ray parameter t.
+  struct Sighting {
+    enum class Kind { kNothing, kShadowCatcher, kCap, kSurface } kind = Kind::kNothing;
+    float t = 0;
+    Hit hit;                               // the face hit (for a cap: the face the ray leaves the solid by)
+    const ClipPlane* capPlane = nullptr;   // kCap
+    std::uint32_t capMaterial = 0;         // kCap: the cut solid's
+  };
   // `pathLength` is how far the ray's origin is from the eye along the path, for edge widths.
-  // `coverage` is raised to 1 when the path hits geometry (to the shadow's density on a shadow
-  // catcher), for the alpha of transparent backgrounds.
-  Vec3 trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
-             TraceCounters& counters, float& coverage, float& hitDistance) const;
+  TracedRay trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
+                  TraceCounters& counters) const;
+  Sighting firstSighting(const Ray& ray) const;
+  // The Whitted step at a surface hit `distance` along the ray: the local model, then the reflected
+  // and transmitted branches.
+  Vec3 shadeSurface(const Ray& ray, const Hit& hit, float distance, int depth, float pathWeight, float pathLength,
+                    bool parallelView, TraceCounters& counters) const;
+  // One branch of the ray tree with its weight: traced (and absorbed by the medium it runs in) when
+  // its path weight is worth it, else the point's local colour in its place.
+  template <typename MakeRay>
+  Vec3 traceBranch(const Vec3& weight, const Vec3& absorption, const Vec3& local, MakeRay&& makeRay, int depth,
+                   float pathWeight, float pathLength, TraceCounters& counters) const;
   // The shadow-catcher floor at `point`: the background darkened by the meshes' shadows.
   Vec3 shadeShadowCatcher(const Vec3& point, TraceCounters& counters, float& coverage) const;
   // The accelerator's closest-hit and any-hit queries, seeing through the faces that per-mesh clip

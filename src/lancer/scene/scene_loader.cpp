@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "lancer/scene/color_by.hpp"
+#include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/suggest.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
 #include "lancer/scene/up_axis.hpp"
@@ -39,14 +40,6 @@ constexpr std::array<std::string_view, 2> kEdgeSelections = {"elements", "featur
 constexpr std::array<std::string_view, 6> kAnimationKeys = {"frames", "fps",    "orbit",
                                                             "axis",   "center", "degrees"};
 
-constexpr std::array<std::string_view, 3> kShadingNames = {"flat", "gouraud", "phong"};
-constexpr std::array<std::string_view, 2> kProjectionNames = {"perspective", "orthographic"};
-constexpr std::array<std::string_view, 3> kSamplerNames = {"regular", "stratified", "adaptive"};
-
-constexpr std::int64_t kMaxImageSide = 32768;
-constexpr std::int64_t kMaxSamples = 1024;
-constexpr std::int64_t kMaxDepth = 64;
-constexpr std::int64_t kMaxFrames = 10000;
 
 // State shared by the section readers: the file for messages and the folder paths are relative to.
 struct SceneFile {
@@ -125,8 +118,8 @@ void readBackground(const TomlTableReader& reader, RenderSettings& render) {
 RenderSettings readRender(const SceneFile& file, const toml::table& table) {
   const TomlTableReader reader(table, "render", file.path, kRenderKeys);
   RenderSettings render;
-  if (auto width = reader.integer("width", 1, kMaxImageSide)) render.width = static_cast<int>(*width);
-  if (auto height = reader.integer("height", 1, kMaxImageSide)) render.height = static_cast<int>(*height);
+  if (auto width = reader.integer("width", 1, kMaxRenderSide)) render.width = static_cast<int>(*width);
+  if (auto height = reader.integer("height", 1, kMaxRenderSide)) render.height = static_cast<int>(*height);
   if (auto sampler = reader.choice("sampler", kSamplerNames))
     render.sampler = static_cast<SamplerKind>(*sampler);
   if (auto samples = reader.integer("samples", 1, kMaxSamples)) {

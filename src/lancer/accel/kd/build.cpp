@@ -7,6 +7,8 @@
 #include <string>
 #include <thread>
 
+#include "lancer/util/thread_count.hpp"
+
 namespace lancer {
 
 namespace {
@@ -63,10 +65,7 @@ int resolveMaxDepth(const KdBuildOptions& options, std::size_t triangleCount) {
   return std::clamp(depth, 0, KdTree::kMaxDepth);
 }
 
-int resolveThreads(const KdBuildOptions& options) {
-  if (options.threads > 0) return options.threads;
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
+int resolveThreads(const KdBuildOptions& options) { return resolveThreadCount(options.threads); }
 
 BuildNode* BuildArena::leaf(std::span<const std::uint32_t> triangles) {
   BuildNode& node = nodes.emplace_back();

@@ -1,8 +1,11 @@
 #include "lancer/mesh/msh/mesh_assembler.hpp"
 
+#include <fmt/format.h>
+
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/msh/high_order.hpp"
 #include "lancer/mesh/msh/huge_pages.hpp"
+#include "lancer/util/input_error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -106,15 +109,23 @@ void MshMeshAssembler::addOtherElement(int type, const std::uint32_t* n) {
       secondOrderSurfaces_.push_back({mshFaceKey(n, 4), {n[0], n[1], n[2], n[3]}, first, 4});
       addSplitQuad(n, n + 4, addDerivedCentre(n, n + 4));
       return;
+    case 4: case 5: case 6: case 7: case 11: case 12: case 13: case 14: case 17: case 18: case 19:
+      addVolumeElement(type, n);  // first and second order: no table lookup per element
+      return;
     default:
       if (mshSurfaceCorners(type)) {
         addHighOrderSurface(type, n);
         return;
       }
-      appendVolumeElementFaces(type, n, group_, volumeFaces_);
-      if (trackElements_) volumeFaceElement_.resize(volumeFaces_.size(), element_);
+      addVolumeElement(type, n);
       return;
   }
+}
+
+void MshMeshAssembler::addVolumeElement(int type, const std::uint32_t* n) {
+  appendVolumeElementFaces(type, n, group_, volumeFaces_);
+  if (volumeGroups_.empty() || volumeGroups_.back() != group_) volumeGroups_.push_back(group_);
+  if (trackElements_) volumeFaceElement_.resize(volumeFaces_.size(), element_);
 }
 
 // Order 3 and up: the element's flat faces through its nodes (high_order.hpp).
@@ -222,7 +233,10 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
     volumeOfGroup[g] = physical != 0 ? std::uint64_t{static_cast<std::uint32_t>(physical)}
                                      : (std::uint64_t{1} << 32) | static_cast<std::uint32_t>(entity);
   }
-  const std::vector<VolumeBoundaryFace> boundary = findVolumeBoundary(volumeFaces_, volumeOfGroup);
+  const bool severalVolumes =
+      std::any_of(volumeGroups_.begin(), volumeGroups_.end(),
+                  [&](std::uint32_t g) { return volumeOfGroup[g] != volumeOfGroup[volumeGroups_.front()]; });
+  const std::vector<VolumeBoundaryFace> boundary = findVolumeBoundary(volumeFaces_, volumeOfGroup, severalVolumes);
   const bool anyInterface = std::any_of(boundary.begin(), boundary.end(),
                                         [](const VolumeBoundaryFace& face) { return face.outer != kNoVertex; });
   if (anyInterface) {
@@ -383,6 +397,15 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   }
   source.degenerateFacesDropped = faces_.size() - kept;
   truncateFaces(kept);
+  // What was read and is not drawn, said by every command that loads the mesh (info lists it too).
+  for (const auto& [type, count] : source.unrenderableByType)
+    source.warnings.push_back(formatInputWarning(
+        SourceLocation{source.path},
+        fmt::format("{} {} (type {}) not drawn: lancer does not draw this type", count, mshElementTypeName(type), type)));
+  if (source.degenerateFacesDropped)
+    source.warnings.push_back(formatInputWarning(
+        SourceLocation{source.path},
+        fmt::format("{} degenerate (zero-area) faces dropped", source.degenerateFacesDropped)));
   if (trackSides_) mesh.volumeSides = std::move(sides_);
   mesh.faces = std::move(faces_);
   mesh.facePhysicalTag = std::move(facePhysical_);

@@ -88,6 +88,7 @@ class MshMeshAssembler {
     }
   }
   void addOtherElement(int type, const std::uint32_t* nodeIndex);
+  void addVolumeElement(int type, const std::uint32_t* nodeIndex);
   void addHighOrderSurface(int type, const std::uint32_t* nodeIndex);
   Vec3d serendipityCentre(const std::uint32_t* corner, const std::uint32_t* mid) const;
   // A new node at the serendipity centre of an 8-node quad, remembering its sources for node data.
@@ -131,6 +132,7 @@ class MshMeshAssembler {
   std::int32_t outerPhysical_ = 0;
   std::int32_t outerEntity_ = 0;
   std::vector<std::pair<std::int32_t, std::int32_t>> groups_;  // (physical, entity) of volume faces
+  std::vector<std::uint32_t> volumeGroups_;  // the groups of volume elements (each run of one, once)
   std::set<std::pair<int, std::int32_t>> physicalsSeen_;       // (dimension, physical tag)
   std::array<std::uint64_t, kMaxMshElementType + 1> countByType_{};
   int dimension_ = -1;

@@ -1,6 +1,7 @@
 #include "lancer/mesh/msh/volume_skin.hpp"
 
 #include <algorithm>
+#include <type_traits>
 
 namespace lancer {
 namespace {
@@ -36,14 +37,54 @@ void appendFaces(const int (&table)[N][4], const std::uint32_t* nodes, std::uint
   }
 }
 
-// The face's volume travels with its key (filled in the sequential pass), so telling an interface
-// from an interior face does not read the faces again at random.
+// Sorting the keys brings the two copies of every interior face together. With several volumes the
+// face's group travels with its key (filled in the sequential pass), so telling an interface from an
+// interior face reads no face again at random; with one volume the entry stays 20 bytes.
 struct KeyedFace {
   MshFaceKey key;
   std::uint32_t face;
-  std::uint32_t group;
   bool operator<(const KeyedFace& other) const { return key < other.key; }
 };
+
+struct KeyedGroupedFace {
+  MshFaceKey key;
+  std::uint32_t face;
+  std::uint32_t group;
+  bool operator<(const KeyedGroupedFace& other) const { return key < other.key; }
+};
+
+template <typename Keyed>
+std::vector<VolumeBoundaryFace> boundaryOf(std::span<const MshVolumeFace> faces,
+                                           std::span<const std::uint64_t> volumeOfGroup) {
+  std::vector<Keyed> keyed(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const int corners = faces[i].corner[3] == kNoVertex ? 3 : 4;
+    keyed[i].key = mshFaceKey(faces[i].corner, corners);
+    keyed[i].face = static_cast<std::uint32_t>(i);
+    if constexpr (std::is_same_v<Keyed, KeyedGroupedFace>) keyed[i].group = faces[i].group;
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<VolumeBoundaryFace> boundary;
+  for (std::size_t i = 0; i < keyed.size();) {
+    std::size_t j = i + 1;
+    while (j < keyed.size() && keyed[j].key == keyed[i].key) ++j;
+    if (j == i + 1) {
+      boundary.push_back({keyed[i].face, kNoVertex});
+    } else if constexpr (std::is_same_v<Keyed, KeyedGroupedFace>) {
+      const Keyed& a = keyed[i];
+      const Keyed& b = keyed[i + 1];
+      if (j == i + 2 && a.group != b.group) {
+        const std::uint64_t volumeA = volumeOfGroup[a.group], volumeB = volumeOfGroup[b.group];
+        if (volumeA < volumeB) boundary.push_back({a.face, b.face});
+        if (volumeB < volumeA) boundary.push_back({b.face, a.face});
+      }
+    }
+    i = j;
+  }
+  std::sort(boundary.begin(), boundary.end(),
+            [](const VolumeBoundaryFace& x, const VolumeBoundaryFace& y) { return x.face < y.face; });
+  return boundary;
+}
 
 }  // namespace
 
@@ -110,33 +151,9 @@ void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_
 }
 
 std::vector<VolumeBoundaryFace> findVolumeBoundary(std::span<const MshVolumeFace> faces,
-                                                   std::span<const std::uint64_t> volumeOfGroup) {
-  // Sorting the keys brings the two copies of every interior face together.
-  std::vector<KeyedFace> keyed(faces.size());
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    const int corners = faces[i].corner[3] == kNoVertex ? 3 : 4;
-    keyed[i] = {mshFaceKey(faces[i].corner, corners), static_cast<std::uint32_t>(i), faces[i].group};
-  }
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<VolumeBoundaryFace> boundary;
-  for (std::size_t i = 0; i < keyed.size();) {
-    std::size_t j = i + 1;
-    while (j < keyed.size() && keyed[j].key == keyed[i].key) ++j;
-    if (j == i + 1) {
-      boundary.push_back({keyed[i].face, kNoVertex});
-    } else if (j == i + 2) {
-      const KeyedFace& a = keyed[i];
-      const KeyedFace& b = keyed[i + 1];
-      const std::uint64_t volumeA = a.group == b.group ? 0 : volumeOfGroup[a.group];
-      const std::uint64_t volumeB = a.group == b.group ? 0 : volumeOfGroup[b.group];
-      if (volumeA < volumeB) boundary.push_back({a.face, b.face});
-      if (volumeB < volumeA) boundary.push_back({b.face, a.face});
-    }
-    i = j;
-  }
-  std::sort(boundary.begin(), boundary.end(),
-            [](const VolumeBoundaryFace& x, const VolumeBoundaryFace& y) { return x.face < y.face; });
-  return boundary;
+                                                   std::span<const std::uint64_t> volumeOfGroup,
+                                                   bool severalVolumes) {
+  return severalVolumes ? boundaryOf<KeyedGroupedFace>(faces, volumeOfGroup) : boundaryOf<KeyedFace>(faces, {});
 }
 
 }  // namespace lancer

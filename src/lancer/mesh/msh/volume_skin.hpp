@@ -43,8 +43,11 @@ struct VolumeBoundaryFace {
 // The faces that occur once among `faces` (skin) and the faces that occur twice with two different
 // volumes (volumeOfGroup[face.group], any 64-bit identity per group); faces shared by two elements
 // of one volume, or by more than two elements, are interior. On an interface the kept side is the
-// element of the smaller volume identity. Ascending by `face`. O(n log n): one sort of the keys.
+// element of the smaller volume identity. `severalVolumes` false: every face is of one volume (then
+// there are no interfaces, and the sort moves smaller entries). Ascending by `face`. O(n log n): one
+// sort of the keys.
 std::vector<VolumeBoundaryFace> findVolumeBoundary(std::span<const MshVolumeFace> faces,
-                                                   std::span<const std::uint64_t> volumeOfGroup);
+                                                   std::span<const std::uint64_t> volumeOfGroup,
+                                                   bool severalVolumes);
 
 }  // namespace lancer

@@ -1,0 +1,40 @@
+// What a scene may ask for, and the names of its choices: one table read by the scene loader and by
+// the command line, so that a value one accepts the other accepts too, with the same words.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string_view>
+
+#include "lancer/scene/scene_description.hpp"
+
+namespace lancer {
+
+// An image side of more pixels than this is refused before anything is allocated (a whole
+// 32768 x 32768 image already takes 16 GiB as float RGBA); the Image class itself allows up to
+// kMaxImageSide (image.hpp), GIF's format limit.
+inline constexpr int kMaxRenderSide = 32768;
+inline constexpr int kMaxSamples = 1024;
+inline constexpr int kMaxDepth = 64;
+inline constexpr int kMaxFrames = 10000;
+inline constexpr int kMaxThreads = 1024;
+
+// In the order of the enums they name (checked below).
+inline constexpr std::array<std::string_view, 3> kShadingNames = {"flat", "gouraud", "phong"};
+inline constexpr std::array<std::string_view, 2> kProjectionNames = {"perspective", "orthographic"};
+inline constexpr std::array<std::string_view, 3> kSamplerNames = {"regular", "stratified", "adaptive"};
+static_assert(kShadingNames[static_cast<int>(ShadingMode::Gouraud)] == "gouraud" &&
+              kShadingNames[static_cast<int>(ShadingMode::Phong)] == "phong");
+static_assert(kProjectionNames[static_cast<int>(Projection::Orthographic)] == "orthographic");
+static_assert(kSamplerNames[static_cast<int>(SamplerKind::Stratified)] == "stratified" &&
+              kSamplerNames[static_cast<int>(SamplerKind::Adaptive)] == "adaptive");
+
+// The enum value a name stands for, or nothing for a name not in the table.
+template <typename Enum, std::size_t N>
+std::optional<Enum> enumFromName(const std::array<std::string_view, N>& names, std::string_view name) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (names[i] == name) return static_cast<Enum>(i);
+  return std::nullopt;
+}
+
+}  // namespace lancer
