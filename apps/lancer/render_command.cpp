@@ -8,6 +8,7 @@
 #include "lancer/image/image_io.hpp"
 #include "lancer/image/image_row_writer.hpp"
 #include "lancer/render/renderer.hpp"
+#include "lancer/util/stopwatch.hpp"
 #include "scene_setup.hpp"
 
 namespace lancer::cli {
@@ -82,7 +83,7 @@ bool renderToFile(const PreparedScene& prepared, const Renderer& renderer, const
 }
 
 int runRender(const RenderCommandOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   PreparedScene prepared = prepareScene(options.input, options.overrides, [&](const RenderSettings& s) {
     return streamsToFile(outputPath(options, s)) ? ImageBuffer::Bands : ImageBuffer::Whole;
   });
@@ -123,7 +124,7 @@ int runRender(const RenderCommandOptions& options) {
                colorBarImage(legend.map, legend.low, legend.high, kLegendWidth, kLegendHeight));
   }
   if (!options.overrides.quiet) {
-    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double total = stopwatch.seconds();
     std::fprintf(stderr,
                  "%s: %dx%d, %zu faces, %.2f samples/pixel, load %.3f s, build %.3f s, trace %.3f s "
                  "(%.2f Mrays/s), total %.3f s\n",

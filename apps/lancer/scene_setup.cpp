@@ -21,6 +21,7 @@
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "lancer/util/memory_budget.hpp"
+#include "lancer/util/stopwatch.hpp"
 
 namespace lancer::cli {
 namespace {
@@ -28,9 +29,6 @@ namespace {
 std::atomic<bool> gInterrupted{false};
 extern "C" void onInterrupt(int) { gInterrupted.store(true); }
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // A .msh by name, or a file that is no scene: a mesh by content, or a file that is neither (a .geo,
 // STL, STEP, ...), which the mesh reader names with the gmsh command that makes a mesh of it.
@@ -102,7 +100,7 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
 
 PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides,
                            const ImageBufferChoice& imageBuffer) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch load;
   std::optional<UpAxis> up;
   if (!overrides.up.empty()) {
     up = parseUpAxis(overrides.up);
@@ -148,11 +146,11 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
   Scene scene = preloaded.empty() ? buildScene(description) : buildScene(description, std::move(preloaded));
   if (!overrides.quiet)
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
-  const double loadSeconds = secondsSince(start);
-  const auto buildStart = std::chrono::steady_clock::now();
+  const double loadSeconds = load.seconds();
+  const Stopwatch build;
   Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, parseAccelKind(overrides.accel));
   return PreparedScene{std::move(description), std::move(scene), std::move(accelerator), loadSeconds,
-                       secondsSince(buildStart)};
+                       build.seconds()};
 }
 
 const std::atomic<bool>& installInterruptHandler() {

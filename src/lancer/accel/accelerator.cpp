@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "lancer/util/stopwatch.hpp"
+
 namespace lancer {
 
 AccelKind parseAccelKind(std::string_view name) {
@@ -48,7 +50,7 @@ Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const 
     }
     case AccelKind::Naive: break;
   }
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   NaiveAccel naive(positions, faces);
   AccelStats stats;
   stats.kind = "naive";
@@ -59,7 +61,7 @@ Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const 
   stats.meanTrianglesPerLeaf = double(stats.triangles);
   stats.sahCost = options.intersectionCost * double(stats.triangles);
   stats.bytes = naive.memoryBytes();
-  stats.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.buildSeconds = stopwatch.seconds();
   return Accelerator(std::move(naive), kind, std::move(stats));
 }
 

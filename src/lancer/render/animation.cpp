@@ -5,6 +5,8 @@
 #include <numbers>
 #include <vector>
 
+#include "lancer/util/stopwatch.hpp"
+
 namespace lancer {
 
 double orbitAngleDegrees(const AnimationSettings& animation, int frame) {
@@ -56,8 +58,7 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
                                const RenderOptions& options,
                                const std::function<void(int frame, const Image&)>& onFrame,
                                const std::function<void(const AnimationProgress&)>& onProgress) {
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
+  const Stopwatch stopwatch;
   const RenderSettings& settings = description.render;
   AnimationStats stats;
   const bool lightOrbit = animation.orbitLight >= 0;
@@ -98,7 +99,7 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
         p.frame = frame;
         p.frames = animation.frames;
         p.frameProgress = progress;
-        p.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        p.seconds = stopwatch.seconds();
         onProgress(p);
       };
     }
@@ -111,7 +112,7 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
     }
     onFrame(frame, image);
   }
-  stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  stats.seconds = stopwatch.seconds();
   return stats;
 }
 

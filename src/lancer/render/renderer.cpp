@@ -11,6 +11,7 @@
 
 #include "lancer/render/adaptive_sampler.hpp"
 #include "lancer/render/pixel_sampler.hpp"
+#include "lancer/util/stopwatch.hpp"
 #include "lancer/util/thread_count.hpp"
 
 namespace lancer {
@@ -170,7 +171,7 @@ Rgba Renderer::renderPixel(int x, int y, TraceCounters& counters, std::uint64_t&
 
 void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, RenderStats* stats) const {
   using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
+  const Stopwatch stopwatch;
   const Tracer& tracer = tracer_;
   const Camera& camera = camera_;
   const RenderSettings& settings = settings_;
@@ -226,7 +227,7 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
     RenderProgress progress;
     progress.fraction = static_cast<double>(pixelsDone.load(std::memory_order_relaxed)) / totalPixels;
     progress.rays = raysTraced.load(std::memory_order_relaxed);
-    progress.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    progress.seconds = stopwatch.seconds();
     options.onProgress(progress);
   };
   {
@@ -252,7 +253,7 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
   report();
 
   if (stats != nullptr) {
-    stats->seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    stats->seconds = stopwatch.seconds();
     stats->rays = raysTraced.load();
     stats->samplesPerPixel = static_cast<double>(samplesTraced.load()) / totalPixels;
     stats->cancelled = bands.flushed() < bandCount;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "lancer/render/ray_offset.hpp"
+#include "lancer/render/shading.hpp"
 
 namespace lancer {
 namespace {
@@ -146,15 +147,7 @@ SurfacePoint makeSurfacePoint(const Scene& scene, const Ray& ray, const Hit& hit
   // Two-sided faces: shade the side the ray arrives on.
   sp.normalSign = dot(ng, ray.direction) <= 0.0f ? 1.0f : -1.0f;
   sp.geometricNormal = ng * sp.normalSign;
-  if (scene.faceShading[hit.face] == ShadingMode::Flat) {
-    sp.shadingNormal = sp.geometricNormal;
-  } else {
-    Vec3 n{0, 0, 0};
-    const auto& corners = scene.cornerNormals.faceCorner[hit.face];
-    for (int c = 0; c < face.cornerCount(); ++c) n += scene.cornerNormals.normals[corners[c]] * sp.cornerWeight[c];
-    n = normalize(n) * sp.normalSign;
-    sp.shadingNormal = dot(n, n) > 0.5f ? n : sp.geometricNormal;
-  }
+  sp.shadingNormal = shadingNormal(scene, hit.face, sp.cornerWeight, sp.geometricNormal, sp.normalSign);
   return sp;
 }
 

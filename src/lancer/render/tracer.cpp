@@ -8,6 +8,7 @@
 #include "lancer/render/lighting.hpp"
 #include "lancer/render/optics.hpp"
 #include "lancer/render/ray_offset.hpp"
+#include "lancer/render/shading.hpp"
 
 namespace lancer {
 namespace {
@@ -162,31 +163,13 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
   const Vec3& kd = colored ? fieldColor : material.kd;
   Vec3 color = scene_.ambient * (colored ? fieldColor : material.ka);
   const Vec3 toViewer = normalize(-ray.direction);
-  const MeshFace& face = scene_.faces[surface.face];
-  const bool gouraud = !surface.isCap && scene_.faceShading[surface.face] == ShadingMode::Gouraud;
   for (const SceneLight& light : scene_.lights) {
     const Vec3 toLight = light.position - surface.position;
     const float distance = length(toLight);
     if (!(distance > 0.0f)) continue;
     const Vec3 lightDirection = toLight * (1.0f / distance);
-    Vec3 contribution{0, 0, 0};
-    if (gouraud) {
-      // The light's response at each corner, with the corner's own normal and view direction,
-      // interpolated across the face; only the shadow test is per pixel.
-      const auto& corners = scene_.cornerNormals.faceCorner[surface.face];
-      for (int c = 0; c < face.cornerCount(); ++c) {
-        const Vec3& corner = scene_.positions[face.vertex[c]];
-        const Vec3 cornerNormal = scene_.cornerNormals.normals[corners[c]] * surface.normalSign;
-        const Vec3 cornerToViewer = parallelView ? toViewer : normalize(ray.origin - corner);
-        const Vec3 cornerToLight = light.position - corner;
-        const float cornerDistance = length(cornerToLight);
-        contribution += directLighting(material, kd, light, cornerNormal, cornerToViewer,
-                                       cornerToLight * (1.0f / cornerDistance), cornerDistance) *
-                        surface.cornerWeight[c];
-      }
-    } else {
-      contribution = directLighting(material, kd, light, surface.shadingNormal, toViewer, lightDirection, distance);
-    }
+    const Vec3 contribution =
+        lightResponse(scene_, surface, material, kd, light, ray, parallelView, toViewer, lightDirection, distance);
     if (maxComponent(contribution) <= 0.0f) continue;
     // A light behind the geometric surface is blocked by the surface itself.
     if (dot(surface.geometricNormal, lightDirection) <= 0.0f) continue;

@@ -19,6 +19,7 @@
 #include "lancer/mesh/shell_orientation.hpp"
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/scene.hpp"
+#include "lancer/util/check.hpp"
 
 namespace lancer {
 namespace {
@@ -275,6 +276,15 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
         if (onLine[face.vertex[c]]) scene.faceLineCorners[f] |= static_cast<std::uint8_t>(1u << c);
     }
   }
+
+  // Every per-face array in step with the faces (the tracer indexes them all by face).
+  LANCER_DCHECK(scene.faceNormals.size(), ==, scene.faces.size());
+  LANCER_DCHECK(scene.cornerNormals.faceCorner.size(), ==, scene.faces.size());
+  LANCER_DCHECK(scene.faceMaterial.size(), ==, scene.faces.size());
+  LANCER_DCHECK(scene.faceShading.size(), ==, scene.faces.size());
+  LANCER_DCHECK(scene.faceEdgeMask.size(), ==, scene.faces.size());
+  LANCER_DCHECK(scene.faceBoundsSolid.size(), ==, scene.faces.size());
+  if (!scene.faceOuterMaterial.empty()) LANCER_DCHECK(scene.faceOuterMaterial.size(), ==, scene.faces.size());
 
   if (description.floor) {
     scene.hasShadowCatcher = true;

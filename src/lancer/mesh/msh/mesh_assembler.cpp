@@ -5,6 +5,7 @@
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/msh/high_order.hpp"
 #include "lancer/mesh/msh/huge_pages.hpp"
+#include "lancer/util/check.hpp"
 #include "lancer/util/input_error.hpp"
 
 #include <algorithm>
@@ -406,6 +407,10 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
     source.warnings.push_back(formatInputWarning(
         SourceLocation{source.path},
         fmt::format("{} degenerate (zero-area) faces dropped", source.degenerateFacesDropped)));
+  LANCER_DCHECK(facePhysical_.size(), ==, faces_.size());
+  LANCER_DCHECK(faceEntity_.size(), ==, faces_.size());
+  LANCER_DCHECK(faceEdgeMask_.size(), ==, faces_.size());
+  if (trackSides_) LANCER_DCHECK(sides_.side.size(), ==, faces_.size());
   if (trackSides_) mesh.volumeSides = std::move(sides_);
   mesh.faces = std::move(faces_);
   mesh.facePhysicalTag = std::move(facePhysical_);
