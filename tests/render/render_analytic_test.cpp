@@ -20,15 +20,8 @@ Material plainMaterial() {
 
 // An orthographic camera at height 5 looking down -z at a window `viewHeight` tall.
 SceneDescription topDownScene(int width, int height, double viewHeight) {
-  SceneDescription d;
-  d.render.width = width;
-  d.render.height = height;
-  d.render.maxDepth = 0;
+  SceneDescription d = test::topDownView(width, height, viewHeight);
   d.render.background = {0, 0, 0};
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = Vec3d{0, 0, 5};
-  d.camera.lookAt = Vec3d{0, 0, 0};
-  d.camera.viewHeight = viewHeight;
   d.ambient = {0.2f, 0.2f, 0.2f};
   d.materials = {plainMaterial()};
   return d;
