@@ -108,10 +108,10 @@ TEST(MultiMaterialRender, UncappedCutsShowTheInnerVolumesSurfaces) {
   // Through the ball: inside the circle the ball's far wall, outside it the cube's.
   const SceneDescription through = cutAlongZ(0.0, false, "Cube", "Ball");
   const Mesh mesh = readMsh(multimaterial("cube_sphere_v41.msh"));
-  EXPECT_EQ(pixelsOffTheCircle(test::renderScene(through, test::sceneFromMeshes(through, {mesh}))), 0);
+  EXPECT_EQ(pixelsOffTheCircle(test::renderMeshes(through, {mesh})), 0);
   // In front of the ball: the ball's own outer surface, seen through the removed part of the cube.
   const SceneDescription before = cutAlongZ(0.8, false, "Cube", "Ball");
-  EXPECT_EQ(pixelsOffTheCircle(test::renderScene(before, test::sceneFromMeshes(before, {mesh}))), 0);
+  EXPECT_EQ(pixelsOffTheCircle(test::renderMeshes(before, {mesh})), 0);
   // Capped in front of the ball, the cube's cap hides it.
   const SceneDescription capped = cutAlongZ(0.8, true, "Cube", "Ball");
   const Image image = test::renderMeshes(capped, {mesh});
