@@ -10,8 +10,8 @@
 namespace lancer::test {
 
 // The PSNR floor of the render goldens: differences of about one 8-bit step everywhere stay far
-// above it; a shifted shadow, a wrong normal, a missing cap or a face in another colour falls far
-// below (each golden test file also checks that its own variants do).
+// above it; a shifted shadow, a wrong normal, a missing or moved cap or a face in another colour
+// falls far below (the shading, cut and multi-material goldens each have a test that checks this).
 inline constexpr double kRenderGoldenMinPsnrDb = 40.0;
 
 // PSNR in dB over the 8-bit encoded R, G, B (and alpha when either image has transparency):
