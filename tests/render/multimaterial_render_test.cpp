@@ -31,16 +31,9 @@ const Vec3 kCubeColour{1, 0, 0}, kBallColour{0, 0, 1};
 // The cube [-1, 1]^3 ("Cube" or "Box") with a ball or cylinder of radius 0.6 ("Ball" or "Cylinder")
 // on the z axis, seen orthographically along -z after removing z > cut.
 SceneDescription cutAlongZ(double cut, bool cap, const char* outerGroup, const char* innerGroup) {
-  SceneDescription d;
-  d.render.width = d.render.height = kSize;
-  d.render.maxDepth = 0;
+  SceneDescription d = test::topDownView(kSize, kSize, kViewHeight);
   d.render.shading = ShadingMode::Flat;
   d.render.background = {0, 1, 0};
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = Vec3d{0, 0, 5};
-  d.camera.lookAt = Vec3d{0, 0, 0};
-  d.camera.up = Vec3d{0, 1, 0};
-  d.camera.viewHeight = kViewHeight;
   d.ambient = {1, 1, 1};
   d.materials = {flatColour("outer", kCubeColour), flatColour("inner", kBallColour)};
   d.meshes.resize(1);
@@ -115,13 +108,13 @@ TEST(MultiMaterialRender, UncappedCutsShowTheInnerVolumesSurfaces) {
   // Through the ball: inside the circle the ball's far wall, outside it the cube's.
   const SceneDescription through = cutAlongZ(0.0, false, "Cube", "Ball");
   const Mesh mesh = readMsh(multimaterial("cube_sphere_v41.msh"));
-  EXPECT_EQ(pixelsOffTheCircle(test::renderScene(through, test::sceneFromMeshes(through, {mesh}))), 0);
+  EXPECT_EQ(pixelsOffTheCircle(test::renderMeshes(through, {mesh})), 0);
   // In front of the ball: the ball's own outer surface, seen through the removed part of the cube.
   const SceneDescription before = cutAlongZ(0.8, false, "Cube", "Ball");
-  EXPECT_EQ(pixelsOffTheCircle(test::renderScene(before, test::sceneFromMeshes(before, {mesh}))), 0);
+  EXPECT_EQ(pixelsOffTheCircle(test::renderMeshes(before, {mesh})), 0);
   // Capped in front of the ball, the cube's cap hides it.
   const SceneDescription capped = cutAlongZ(0.8, true, "Cube", "Ball");
-  const Image image = test::renderScene(capped, test::sceneFromMeshes(capped, {mesh}));
+  const Image image = test::renderMeshes(capped, {mesh});
   const Rgba centre = image.at(kSize / 2, kSize / 2);
   EXPECT_EQ((Vec3{centre.r, centre.g, centre.b}), kCubeColour);
 }
@@ -258,21 +251,14 @@ int measuredEdgeColumn(double nGlass, double nWater, Vec3d& cameraPosition) {
   glass.transparency = water.transparency = 1;
   glass.ior = static_cast<float>(nGlass);
   water.ior = static_cast<float>(nWater);
-  SceneDescription d;
-  d.render.width = kWidth;
-  d.render.height = 4;
+  const Vec3d direction{std::sin(kTilt), 0, -std::cos(kTilt)};
+  const Vec3d lookAt{kEdge - 1.45, 0, 1};
+  cameraPosition = lookAt - direction * 5.0;
+  SceneDescription d = test::orthographicView(kWidth, 4, cameraPosition, lookAt, 4 * kPixel);
   d.render.maxDepth = 8;
   d.render.background = {0, 0, 0};
   d.ambient = {1, 1, 1};
   d.materials = {glass, water, flatColour("red", {1, 0, 0}), flatColour("green", {0, 1, 0})};
-  const Vec3d direction{std::sin(kTilt), 0, -std::cos(kTilt)};
-  const Vec3d lookAt{kEdge - 1.45, 0, 1};
-  cameraPosition = lookAt - direction * 5.0;
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = cameraPosition;
-  d.camera.lookAt = lookAt;
-  d.camera.up = Vec3d{0, 1, 0};
-  d.camera.viewHeight = 4 * kPixel;
   d.meshes.resize(3);
   d.meshes[0].groupMaterials = {{"Glass", 0, {}}, {"Water", 1, {}}};
   d.meshes[0].rotateDegrees = {90, 0, 0};  // (x, y, z) -> (x, -z, y): the slabs stack along z
@@ -332,7 +318,7 @@ TEST(MultiMaterialRender, IndexMatchedBallInGlassIsInvisible) {
       const float x0 = -4 + static_cast<float>(k);
       meshes.push_back(test::squareMesh(x0, -4, x0 + 1, 4, -2.5f));
     }
-    return test::renderScene(d, test::sceneFromMeshes(d, std::move(meshes)));
+    return test::renderMeshes(d, std::move(meshes));
   };
   const Image glassOnly = render(readMsh(LANCER_TEST_DATA_DIR "/msh/cube_tet4_v41_bin.msh"), 1.5f, true);
   const Mesh cubeAndBall = readMsh(multimaterial("cube_sphere_v41.msh"));
