@@ -182,6 +182,45 @@ TEST(MultiMaterialRender, SurfacesNestedInAnotherGroupsSolidAreCappedByTheInnerm
   EXPECT_EQ(wrong, 0);
 }
 
+// Surfaces only, meeting three on the rim of the shared wall (tests/data/multimaterial/
+// slabs_surfaces.geo: glass over water, each slab's boundary a Physical Surface): cut at x = 0.3 and
+// seen along -x, each slab's region of the cut is a flat cap in its group's colour, lit by a far
+// light up and to the front. Before, the regions were not found and the far walls showed instead,
+// in the shadow of the slabs' tops.
+TEST(MultiMaterialRender, SurfacesMeetingThreeOnAnEdgeAreCappedRegionByRegion) {
+  SceneDescription d = cutAlongZ(0.0, true, "Glass", "Water");
+  d.clips = {{Vec3d{0.3, 0, 0}, Vec3d{1, 0, 0}, true}};
+  d.camera.position = Vec3d{6, 0, 0};
+  d.camera.viewHeight = 3.0;
+  d.ambient = {0.2f, 0.2f, 0.2f};
+  d.lights = {{Vec3d{1e5, 1e5, 0}, {0.8f, 0.8f, 0.8f}, {1, 0, 0}}};
+  for (Material& m : d.materials) m.kd = m.ka;
+  const Scene scene = test::sceneFromMeshes(d, {readMsh(multimaterial("slabs_surfaces_v41.msh"))});
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) ASSERT_TRUE(scene.faceBoundsSolid[f]) << f;
+  const Image image = test::renderScene(d, scene);
+  const float lit = 0.2f + 0.8f * std::sqrt(0.5f);  // cap normal +x, light along (1, 1, 0)
+  const double pixel = 3.0 / kSize;
+  int glass = 0, water = 0, wrong = 0;
+  for (int j = 0; j < kSize; ++j) {
+    const double y = (kSize / 2.0 - j - 0.5) * pixel;
+    for (int i = 0; i < kSize; ++i) {
+      const double z = (i + 0.5 - kSize / 2.0) * pixel;  // the image's right is -z seen from +x
+      if (std::abs(z) > 2 - 2 * pixel) continue;
+      const Rgba seen = image.at(i, j);
+      if (y > 2 * pixel && y < 1 - 2 * pixel) {
+        ++glass;
+        wrong += std::abs(seen.r - lit) > 1e-3f || seen.b != 0.0f;
+      } else if (y < -2 * pixel && y > -1 + 2 * pixel) {
+        ++water;
+        wrong += std::abs(seen.b - lit) > 1e-3f || seen.r != 0.0f;
+      }
+    }
+  }
+  EXPECT_GT(glass, 1000);
+  EXPECT_GT(water, 1000);
+  EXPECT_EQ(wrong, 0);
+}
+
 // Three volumes, capped and lit: the kd-tree and brute force, and 1 and 3 threads, agree exactly.
 TEST(MultiMaterialRender, KdTreeAndBruteForceGiveTheSameCutView) {
   SceneDescription d = cutAlongZ(0.0, true, "Housing", "Bushing");
