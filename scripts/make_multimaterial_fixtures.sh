@@ -22,3 +22,5 @@ mesh box_cylinder_hex box_cylinder_hex_v41 msh41 -bin
 mesh box_cylinder_hex box_cylinder_hex27_v41 msh41 -bin -order 2 -clscale 1.5
 mesh glass_water_slabs glass_water_slabs_v41 msh41 -bin
 mesh three_materials three_materials_v41 msh41 -bin
+# Surfaces only: the slabs' boundaries, meshed in 2D.
+gmsh slabs_surfaces.geo -2 -format msh41 -o slabs_surfaces_v41.msh >/dev/null

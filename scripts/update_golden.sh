@@ -7,6 +7,4 @@ cd "$(dirname "$0")/.."
 build=${LANCER_BUILD_DIR:-build}
 cmake --build "$build" -j"$(nproc)"
 LANCER_UPDATE_GOLDEN=1 ctest --test-dir "$build" -L golden --output-on-failure "$@"
-# Golden comparisons kept beside their module's unit tests (label unit), by name.
-LANCER_UPDATE_GOLDEN=1 ctest --test-dir "$build" -R '^(EdgesGolden\.|FieldColor\.Golden)' --output-on-failure "$@"
 git status --short -- '*.png'

@@ -6,7 +6,7 @@
 #include <random>
 #include <string>
 
-#include "accel/accel_test_geometry.hpp"
+#include "support/accel_test_geometry.hpp"
 #include "lancer/accel/accelerator.hpp"
 #include "lancer/math/face_clip_sets.hpp"
 

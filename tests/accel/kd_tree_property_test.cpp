@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "accel/accel_test_geometry.hpp"
+#include "support/accel_test_geometry.hpp"
 #include "lancer/accel/accelerator.hpp"
 #include "lancer/accel/naive_accel.hpp"
 #include "lancer/mesh/msh_reader.hpp"

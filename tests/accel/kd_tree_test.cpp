@@ -8,7 +8,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "accel/accel_test_geometry.hpp"
+#include "support/accel_test_geometry.hpp"
 #include "lancer/accel/accelerator.hpp"
 #include "lancer/accel/kd_tree.hpp"
 

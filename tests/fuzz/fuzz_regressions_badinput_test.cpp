@@ -5,19 +5,19 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "lancer/util/input_error.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {
 
 namespace fs = std::filesystem;
+using test::readText;
 
 std::vector<fs::path> regressionInputs(const std::string& target) {
   std::vector<fs::path> files;
@@ -29,17 +29,12 @@ std::vector<fs::path> regressionInputs(const std::string& target) {
   return files;
 }
 
-std::string readBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 TEST(FuzzRegressions, MshReaderInputsFailCleanly) {
   const std::vector<fs::path> inputs = regressionInputs("msh_reader");
   ASSERT_FALSE(inputs.empty());
   for (const fs::path& path : inputs) {
     SCOPED_TRACE(path.filename().string());
-    const std::string bytes = readBytes(path);
+    const std::string bytes = readText(path);
     try {
       (void)readMshFromMemory(std::span(bytes.data(), bytes.size()), "fuzz.msh");
     } catch (const InputError& e) {
@@ -52,8 +47,8 @@ TEST(FuzzRegressions, MshReaderInputsFailCleanly) {
 // The first finding: a v4.1 binary $Nodes block with zero nodes made copyRaw call memcpy with the
 // empty vector's null data() (UBSan: null pointer passed as argument 1). It is a valid empty block.
 TEST(FuzzRegressions, EmptyBinaryNodeBlockIsNotUndefinedBehaviour) {
-  const std::string bytes = readBytes(fs::path(LANCER_SOURCE_DIR) /
-                                      "fuzz/regressions/msh_reader/empty_node_block_memcpy_null.msh");
+  const std::string bytes =
+      readText(fs::path(LANCER_SOURCE_DIR) / "fuzz/regressions/msh_reader/empty_node_block_memcpy_null.msh");
   try {
     (void)readMshFromMemory(std::span(bytes.data(), bytes.size()), "fuzz.msh");
   } catch (const InputError& e) {
@@ -65,7 +60,7 @@ TEST(FuzzRegressions, SceneLoaderInputsFailCleanly) {
   for (const fs::path& path : regressionInputs("scene_loader")) {
     SCOPED_TRACE(path.filename().string());
     try {
-      (void)parseScene(readBytes(path), "/fuzz/scene.toml");
+      (void)parseScene(readText(path), "/fuzz/scene.toml");
     } catch (const InputError& e) {
       EXPECT_EQ(e.location().file, "/fuzz/scene.toml");
     }

@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -12,41 +11,22 @@
 #include <string>
 #include <vector>
 
-#include "image/image_test_util.hpp"
 #include "lancer/image/gif_writer.hpp"
 #include "lancer/image/image_io.hpp"
-#include "lancer/util/input_error.hpp"
+#include "support/file_size_limit.hpp"
+#include "support/files.hpp"
+#include "support/input_errors.hpp"
+#include "support/test_images.hpp"
 
 namespace lancer {
 namespace {
 
+using test::messageOf;
+using test::noise;
 using test::readBytes;
 using test::ScratchFolder;
 
 const std::vector<std::uint8_t> kOldContent = {'o', 'l', 'd', '\n'};
-
-std::string messageOf(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
-
-// Noise does not compress: every format's file is about 3 bytes per pixel.
-Image noise(int width, int height) {
-  Image image(width, height);
-  std::uint32_t state = 12345;
-  for (Rgba& p : image.pixels()) {
-    auto next = [&] {
-      state = state * 1664525u + 1013904223u;
-      return static_cast<float>(state >> 24) / 255.0f;
-    };
-    p = {next(), next(), next(), 1};
-  }
-  return image;
-}
 
 TEST(AtomicFile, CommitPublishesTheFileAndLeavesNoTemporary) {
   ScratchFolder folder;
@@ -55,16 +35,14 @@ TEST(AtomicFile, CommitPublishesTheFileAndLeavesNoTemporary) {
   EXPECT_TRUE(file.write(kOldContent));
   EXPECT_EQ(folder.entries().size(), 1u);  // only the temporary file so far
   file.commit();
-  EXPECT_EQ(readBytes(folder.file("a.bin")), kOldContent);
-  EXPECT_EQ(folder.entries(), std::vector<std::string>{"a.bin"});
+  test::expectOnlyFile(folder, "a.bin", kOldContent);
 }
 
 TEST(AtomicFile, ReplacesAnExistingFileWhole) {
   ScratchFolder folder;
   test::writeBytes(folder.file("a.bin"), std::vector<std::uint8_t>(10000, 'x'));
   writeFileAtomically(folder.file("a.bin"), kOldContent);
-  EXPECT_EQ(readBytes(folder.file("a.bin")), kOldContent);
-  EXPECT_EQ(folder.entries(), std::vector<std::string>{"a.bin"});
+  test::expectOnlyFile(folder, "a.bin", kOldContent);
 }
 
 TEST(AtomicFile, AbandonedWriteLeavesTheOldFileAndNoTemporary) {
@@ -74,8 +52,7 @@ TEST(AtomicFile, AbandonedWriteLeavesTheOldFileAndNoTemporary) {
     AtomicFileWriter file(folder.file("a.png"));
     file.write(std::vector<std::uint8_t>(5000, 'n'));
   }  // e.g. an exception while rendering unwinds past the writer
-  EXPECT_EQ(readBytes(folder.file("a.png")), kOldContent);
-  EXPECT_EQ(folder.entries(), std::vector<std::string>{"a.png"});
+  test::expectOnlyFile(folder, "a.png", kOldContent);
   {
     GifWriter gif(folder.file("b.gif"), 8, 8);
     gif.addFrame(Image(8, 8));
@@ -121,8 +98,7 @@ TEST(AtomicFile, ReadOnlyFolderIsAClearErrorAndKeepsTheOldFile) {
   EXPECT_EQ(message, folder.file("a.png") +
                          ": error: cannot write here: no permission to create files in the folder '" +
                          folder.path().string() + "'");
-  EXPECT_EQ(readBytes(folder.file("a.png")), kOldContent);
-  EXPECT_EQ(folder.entries(), std::vector<std::string>{"a.png"});
+  test::expectOnlyFile(folder, "a.png", kOldContent);
 }
 
 TEST(AtomicFile, NewFileGetsUmaskPermissionsAndAReplacedOneKeepsItsOwn) {
@@ -145,8 +121,7 @@ TEST(AtomicFile, RelativePathWritesIntoTheCurrentFolder) {
   std::filesystem::current_path(folder.path());
   writeFileAtomically("plain.bin", kOldContent);
   std::filesystem::current_path(previous);
-  EXPECT_EQ(readBytes(folder.file("plain.bin")), kOldContent);
-  EXPECT_EQ(folder.entries(), std::vector<std::string>{"plain.bin"});
+  test::expectOnlyFile(folder, "plain.bin", kOldContent);
 }
 
 TEST(AtomicFile, InterruptHandlerRemovesTheTemporaryFile) {
@@ -168,8 +143,7 @@ TEST(AtomicFile, InterruptHandlerRemovesTheTemporaryFile) {
   int status = 0;
   ::waitpid(child, &status, 0);
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
-  EXPECT_EQ(readBytes(folder.file("a.png")), kOldContent);
-  EXPECT_EQ(folder.entries(), std::vector<std::string>{"a.png"});
+  test::expectOnlyFile(folder, "a.png", kOldContent);
 }
 
 TEST(AtomicFile, CommittedOrDiscardedFilesAreNoLongerTracked) {
@@ -182,20 +156,10 @@ TEST(AtomicFile, CommittedOrDiscardedFilesAreNoLongerTracked) {
   EXPECT_EQ(folder.entries(), (std::vector<std::string>{".a.bin.tmp-reused", "a.bin"}));
 }
 
-// Writes `extension` in a forked child limited to 4 KiB per file (RLIMIT_FSIZE, as `ulimit -f`),
-// with SIGXFSZ ignored so the write fails with EFBIG instead of killing the process. Returns the
-// InputError's message, sent back through a pipe.
+// Writes `path` under a 4 KiB file size limit; returns the InputError's message.
 std::string writeUnderFileSizeLimit(const std::string& path) {
-  int pipeEnds[2];
-  if (::pipe(pipeEnds) != 0) return "(pipe failed)";
-  const pid_t child = ::fork();
-  if (child == 0) {
-    ::close(pipeEnds[0]);
-    ::signal(SIGXFSZ, SIG_IGN);
-    const rlimit limit{4096, 4096};
-    ::setrlimit(RLIMIT_FSIZE, &limit);
-    std::string message = "(no InputError)";
-    try {
+  return test::underFileSizeLimit(4096, [&] {
+    return messageOf([&] {
       if (path.ends_with(".gif")) {
         GifOptions options;
         options.palette = GifPalette::PerFrame;  // streams frames: fails part-way through the file
@@ -205,24 +169,8 @@ std::string writeUnderFileSizeLimit(const std::string& path) {
       } else {
         writeImage(path, noise(64, 64));
       }
-    } catch (const InputError& e) {
-      message = e.what();
-    }
-    const ssize_t written = ::write(pipeEnds[1], message.data(), message.size());
-    ::_exit(written == static_cast<ssize_t>(message.size()) ? 0 : 1);
-  }
-  ::close(pipeEnds[1]);
-  std::string message;
-  char buffer[512];
-  ssize_t n;
-  while ((n = ::read(pipeEnds[0], buffer, sizeof buffer)) > 0)
-    message.append(buffer, static_cast<std::size_t>(n));
-  ::close(pipeEnds[0]);
-  int status = 0;
-  ::waitpid(child, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    return "(child failed: status " + std::to_string(status) + ")";
-  return message;
+    });
+  });
 }
 
 class FileSizeLimit : public testing::TestWithParam<std::string> {};
@@ -235,8 +183,7 @@ TEST_P(FileSizeLimit, FailedWriteKeepsTheOldFileAndLeavesNoTemporary) {
             path +
                 ": error: writing failed: the file would exceed the file size limit (see 'ulimit -f'); "
                 "the existing file was left unchanged");
-  EXPECT_EQ(readBytes(path), kOldContent);
-  EXPECT_EQ(folder.entries(), std::vector<std::string>{"out" + GetParam()});
+  test::expectOnlyFile(folder, "out" + GetParam(), kOldContent);
 }
 
 TEST_P(FileSizeLimit, FailedFirstWriteLeavesNothing) {

@@ -12,7 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "image/image_test_util.hpp"
+#include "support/cli.hpp"
+#include "support/files.hpp"
+#include "support/gif_decoder.hpp"
+#include "support/test_images.hpp"
 
 namespace lancer {
 namespace {
@@ -223,13 +226,8 @@ TEST(GifWriter, MisuseIsALogicError) {
 
 // Runs a command, returning its standard output; nullopt when it fails.
 std::optional<std::string> run(const std::string& command) {
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return std::nullopt;
-  std::string out;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-  return ::pclose(pipe) == 0 ? std::optional(out) : std::nullopt;
+  const test::CommandResult result = test::runShell(command);
+  return result.exitCode == 0 ? std::optional(result.output) : std::nullopt;
 }
 
 void writeTestAnimation(const std::string& path) {
@@ -241,16 +239,8 @@ void writeTestAnimation(const std::string& path) {
   writer.finish();
 }
 
-// The first python3 that has Pillow: the one on PATH, else the system's (Debian's python3-pil).
-std::optional<std::string> pythonWithPillow() {
-  for (const char* python : {"python3", "/usr/bin/python3"}) {
-    if (std::system((std::string(python) + " -c 'import PIL' >/dev/null 2>&1").c_str()) == 0) return python;
-  }
-  return std::nullopt;
-}
-
 TEST(GifWriterIndependentDecoders, Pillow) {
-  const std::optional<std::string> python = pythonWithPillow();
+  const std::optional<std::string> python = test::pythonWithPillow();
   if (!python) GTEST_SKIP() << "no python3 with PIL (Debian: python3-pil)";
   ScratchFolder folder;
   writeTestAnimation(folder.file("a.gif"));
@@ -280,7 +270,7 @@ TEST(GifWriterIndependentDecoders, Pillow) {
 }
 
 TEST(GifWriterIndependentDecoders, ImageMagick) {
-  if (std::system("identify -version >/dev/null 2>&1") != 0) GTEST_SKIP() << "ImageMagick not installed";
+  if (!test::imageMagickInstalled()) GTEST_SKIP() << "ImageMagick not installed";
   ScratchFolder folder;
   writeTestAnimation(folder.file("a.gif"));
   const std::optional<std::string> out = run("identify -format '%W %H %T %n|' " + folder.file("a.gif"));

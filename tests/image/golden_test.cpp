@@ -11,8 +11,8 @@
 #include <optional>
 #include <string>
 
-#include "image/image_test_util.hpp"
 #include "lancer/image/image_io.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {

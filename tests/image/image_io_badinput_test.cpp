@@ -4,23 +4,15 @@
 #include <string>
 #include <vector>
 
-#include "image/image_test_util.hpp"
 #include "lancer/image/image_io.hpp"
-#include "lancer/util/input_error.hpp"
+#include "support/files.hpp"
+#include "support/input_errors.hpp"
 
 namespace lancer {
 namespace {
 
+using test::messageOf;
 using test::ScratchFolder;
-
-std::string messageOf(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
 
 TEST(ImageIoBadInput, UnknownExtensionNamesTheFileAndTheSupportedOnes) {
   ScratchFolder folder;

@@ -6,7 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "image/image_test_util.hpp"
+#include "support/files.hpp"
+#include "support/gif_decoder.hpp"
 
 namespace lancer {
 namespace {

@@ -3,22 +3,20 @@
 #include "lancer/image/image_row_writer.hpp"
 
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "image/image_test_util.hpp"
-#include "lancer/util/input_error.hpp"
+#include "support/file_size_limit.hpp"
+#include "support/files.hpp"
+#include "support/input_errors.hpp"
+#include "support/test_images.hpp"
 
 namespace lancer {
 namespace {
 
+using test::messageOf;
 using test::readBytes;
 using test::ScratchFolder;
 
@@ -37,15 +35,6 @@ Image picture() {
 void writeInBands(ImageRowWriter& writer, const Image& image, int bandRows) {
   for (int y0 = 0; y0 < image.height(); y0 += bandRows)
     writer.writeRows(image.crop(0, y0, image.width(), std::min(bandRows, image.height() - y0)));
-}
-
-std::string messageOf(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
 }
 
 struct Case {
@@ -106,8 +95,7 @@ TEST(ImageRowWriter, AbandonedPartWayLeavesTheOldFileAndNoTemporary) {
       writer.writeRows(picture().crop(0, 0, 77, 32));  // then the render stops (Ctrl-C, an error)
       EXPECT_EQ(folder.entries().size(), 2u);          // the file and the temporary beside it
     }
-    EXPECT_EQ(readBytes(path), kOldContent);
-    EXPECT_EQ(folder.entries(), std::vector<std::string>{"out" + extension});
+    test::expectOnlyFile(folder, "out" + extension, kOldContent);
   }
 }
 
@@ -132,60 +120,22 @@ TEST(ImageRowWriter, RefusesWhatCannotBeStreamed) {
   EXPECT_TRUE(folder.entries().empty());
 }
 
-// Noise does not compress: every format's file is about 3 bytes per pixel.
-Image noise(int width, int height) {
-  Image image(width, height);
-  std::uint32_t state = 12345;
-  for (Rgba& p : image.pixels()) {
-    auto next = [&] {
-      state = state * 1664525u + 1013904223u;
-      return static_cast<float>(state >> 24) / 255.0f;
-    };
-    p = {next(), next(), next(), 1};
-  }
-  return image;
-}
-
-// Streams `extension` in a forked child limited to 4 KiB per file (RLIMIT_FSIZE, as `ulimit -f`),
-// with SIGXFSZ ignored so the write fails with EFBIG. Returns the InputError's message and the row
-// it was thrown at, sent back through a pipe.
+// Streams `path` under a 4 KiB file size limit. Returns the InputError's message, marked
+// " (at commit)" when every row got through and only the commit failed.
 std::string streamUnderFileSizeLimit(const std::string& path) {
-  int pipeEnds[2];
-  if (::pipe(pipeEnds) != 0) return "(pipe failed)";
-  const pid_t child = ::fork();
-  if (child == 0) {
-    ::close(pipeEnds[0]);
-    ::signal(SIGXFSZ, SIG_IGN);
-    const rlimit limit{4096, 4096};
-    ::setrlimit(RLIMIT_FSIZE, &limit);
-    std::string message = "(no InputError)";
+  return test::underFileSizeLimit(4096, [&] {
     ImageWriteOptions options;
     options.alpha = AlphaChannel::Never;
-    const Image image = noise(200, 200);  // 120 KB in every format
+    const Image image = test::noise(200, 200);  // 120 KB in every format
     int row = 0;
-    try {
+    std::string message = messageOf([&] {
       ImageRowWriter writer(path, image.width(), image.height(), options);
       for (; row < image.height(); ++row) writer.writeRow(image.row(row));
       writer.commit();
-    } catch (const InputError& e) {
-      message = e.what();
-    }
+    });
     if (row == image.height()) message += " (at commit)";
-    const ssize_t written = ::write(pipeEnds[1], message.data(), message.size());
-    ::_exit(written == static_cast<ssize_t>(message.size()) ? 0 : 1);
-  }
-  ::close(pipeEnds[1]);
-  std::string message;
-  char buffer[512];
-  ssize_t n;
-  while ((n = ::read(pipeEnds[0], buffer, sizeof buffer)) > 0)
-    message.append(buffer, static_cast<std::size_t>(n));
-  ::close(pipeEnds[0]);
-  int status = 0;
-  ::waitpid(child, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    return "(child failed: status " + std::to_string(status) + ")";
-  return message;
+    return message;
+  });
 }
 
 TEST(ImageRowWriter, FailedWriteStopsEarlyAndKeepsTheOldFile) {
@@ -200,8 +150,7 @@ TEST(ImageRowWriter, FailedWriteStopsEarlyAndKeepsTheOldFile) {
               path +
                   ": error: writing failed: the file would exceed the file size limit (see 'ulimit -f'); "
                   "the existing file was left unchanged");
-    EXPECT_EQ(readBytes(path), kOldContent);
-    EXPECT_EQ(folder.entries(), std::vector<std::string>{"out" + extension});
+    test::expectOnlyFile(folder, "out" + extension, kOldContent);
   }
 }
 

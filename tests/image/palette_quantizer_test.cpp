@@ -8,8 +8,8 @@
 #include <set>
 #include <vector>
 
-#include "image/image_test_util.hpp"
 #include "lancer/image/dither.hpp"
+#include "support/test_images.hpp"
 
 namespace lancer {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "lancer/mesh/feature_edges.hpp"
 #include "lancer/mesh/msh_reader.hpp"
-#include "mesh/msh_test_util.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {

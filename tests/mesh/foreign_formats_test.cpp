@@ -7,7 +7,7 @@
 #include <string>
 
 #include "lancer/mesh/msh/foreign_formats.hpp"
-#include "mesh/msh_test_util.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {

@@ -1,68 +1,50 @@
 // `lancer info` through the built CLI: text and --json output for a fixture, and exit code 2 with a
 // one-line compiler-style message for a broken file.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
-#include "mesh/msh_test_util.hpp"
+#include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {
 
-struct CommandResult {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr together
-};
-
-CommandResult runCli(const std::string& arguments) {
-  const std::string command = std::string("'") + LANCER_CLI_PATH + "' " + arguments + " 2>&1";
-  CommandResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  char buffer[4096];
-  std::size_t got;
-  while ((got = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, got);
-  const int status = pclose(pipe);
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+using test::CommandResult;
+using test::contains;
+using test::runCli;
 
 TEST(InfoCli, TextReport) {
   const CommandResult result = runCli("info '" + test::mshFixture("square_tri6_v41_bin.msh") + "'");
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  const std::string& out = result.output;
-  EXPECT_TRUE(contains(out, "format:          MSH 4.1 binary")) << out;
-  EXPECT_TRUE(contains(out, "nodes:           81")) << out;
-  EXPECT_TRUE(contains(out, "32  6-node triangle (type 9)")) << out;
-  EXPECT_TRUE(contains(out, "16  3-node line (type 8)")) << out;
-  EXPECT_TRUE(contains(out, "faces rendered:  128 (128 triangles, 0 quads)")) << out;
-  EXPECT_TRUE(contains(out, "dim 2 tag 1      \"plate\"                  128 faces")) << out;
-  EXPECT_TRUE(contains(out, "bounding box:    [0, 0, 0] .. [1, 1, 0]")) << out;
-  EXPECT_TRUE(contains(out, "surface area:    1\n")) << out;
-  EXPECT_TRUE(contains(out, "shells:          1 (0 closed, 0 closed and consistently oriented)")) << out;
-  EXPECT_TRUE(contains(out, "load time:")) << out;
+  test::expectContainsAll(result.output,
+                          {
+                              "format:          MSH 4.1 binary",
+                              "nodes:           81",
+                              "32  6-node triangle (type 9)",
+                              "16  3-node line (type 8)",
+                              "faces rendered:  128 (128 triangles, 0 quads)",
+                              "dim 2 tag 1      \"plate\"                  128 faces",
+                              "bounding box:    [0, 0, 0] .. [1, 1, 0]",
+                              "surface area:    1\n",
+                              "shells:          1 (0 closed, 0 closed and consistently oriented)",
+                              "load time:",
+                          });
 }
 
 TEST(InfoCli, TextReportOfAClosedSkinAndUnrenderableElements) {
   const CommandResult skin = runCli("info '" + test::mshFixture("cube_hex8_v22_bin.msh") + "'");
   ASSERT_EQ(skin.exitCode, 0) << skin.output;
-  EXPECT_TRUE(contains(skin.output, "volume skin:     54 faces from 27 volume elements")) << skin.output;
-  EXPECT_TRUE(contains(skin.output, "closed, consistently oriented (normals point outward, volume 1)"))
-      << skin.output;
+  test::expectContainsAll(skin.output, {"volume skin:     54 faces from 27 volume elements",
+                                        "closed, consistently oriented (normals point outward, volume 1)"});
   const CommandResult cubic = runCli("info '" + test::mshFixture("square_tri10_v41_ascii.msh") + "'");
   ASSERT_EQ(cubic.exitCode, 0) << cubic.output;
-  EXPECT_TRUE(contains(cubic.output,
-                       "          32  10-node triangle (type 21): split into flat faces through all its nodes\n"))
-      << cubic.output;
-  EXPECT_TRUE(contains(cubic.output, "faces rendered:  288 (288 triangles, 0 quads)")) << cubic.output;
+  test::expectContainsAll(
+      cubic.output,
+      {"          32  10-node triangle (type 21): split into flat faces through all its nodes\n",
+       "faces rendered:  288 (288 triangles, 0 quads)"});
   EXPECT_FALSE(contains(cubic.output, "not rendered:")) << cubic.output;
 }
 
@@ -71,17 +53,21 @@ TEST(InfoCli, JsonReport) {
   ASSERT_EQ(result.exitCode, 0) << result.output;
   const std::string& out = result.output;
   EXPECT_EQ(out.front(), '{');
-  EXPECT_TRUE(contains(out, "\"version\": \"2.2\",\n  \"binary\": false,")) << out;
-  EXPECT_TRUE(contains(out, "\"nodes\": 25,")) << out;
-  EXPECT_TRUE(contains(out, "\"elementsByType\": {\"1\": 16, \"3\": 16},")) << out;
-  EXPECT_TRUE(contains(out, "\"faces\": {\"total\": 16, \"triangles\": 0, \"quads\": 16},")) << out;
-  // gmsh writes each quad once per physical group ("plate", "everything"): 16 second copies skipped.
-  EXPECT_TRUE(contains(out, "\"duplicateElementsSkipped\": 16,")) << out;
-  EXPECT_TRUE(contains(out, "{\"dimension\": 2, \"tag\": 1, \"name\": \"plate\", \"faces\": 16, \"interfaceFaces\": 0}")) << out;
-  EXPECT_TRUE(contains(out, "\"boundingBox\": {\"min\": [0, 0, 0], \"max\": [1, 1, 0]},")) << out;
-  EXPECT_TRUE(contains(out, "\"area\": 1,")) << out;
-  EXPECT_TRUE(contains(out, "\"closed\": false, \"consistentlyOriented\": true")) << out;
-  EXPECT_TRUE(contains(out, "\"loadSeconds\": ")) << out;
+  test::expectContainsAll(
+      out,
+      {
+          "\"version\": \"2.2\",\n  \"binary\": false,",
+          "\"nodes\": 25,",
+          "\"elementsByType\": {\"1\": 16, \"3\": 16},",
+          "\"faces\": {\"total\": 16, \"triangles\": 0, \"quads\": 16},",
+          // gmsh writes each quad once per physical group ("plate", "everything"): 16 second copies skipped.
+          "\"duplicateElementsSkipped\": 16,",
+          "{\"dimension\": 2, \"tag\": 1, \"name\": \"plate\", \"faces\": 16, \"interfaceFaces\": 0}",
+          "\"boundingBox\": {\"min\": [0, 0, 0], \"max\": [1, 1, 0]},",
+          "\"area\": 1,",
+          "\"closed\": false, \"consistentlyOriented\": true",
+          "\"loadSeconds\": ",
+      });
 }
 
 TEST(InfoCli, BrokenFileExitsWithCodeTwoAndOneLine) {
@@ -108,41 +94,40 @@ TEST(InfoCli, MissingFileExitsWithCodeTwo) {
 
 TEST(InfoCli, CavityWallIsReportedAsSuch) {
   // gmsh's hollow sphere: the tetrahedra's skin faces out of the material, into the cavity inside.
-  const std::string path = std::string(LANCER_TEST_DATA_DIR) + "/render/hollow_sphere.msh";
+  const std::string path = test::dataFile("render/hollow_sphere.msh");
   const CommandResult text = runCli("info '" + path + "'");
   ASSERT_EQ(text.exitCode, 0) << text.output;
-  EXPECT_TRUE(contains(text.output, "shells:          2 (2 closed, 2 closed and consistently oriented)"))
-      << text.output;
-  EXPECT_TRUE(contains(text.output, "(normals point outward, volume ")) << text.output;
-  EXPECT_TRUE(contains(text.output, "(cavity wall, normals point into the cavity, volume 0.")) << text.output;
+  test::expectContainsAll(text.output, {"shells:          2 (2 closed, 2 closed and consistently oriented)",
+                                        "(normals point outward, volume ",
+                                        "(cavity wall, normals point into the cavity, volume 0."});
   const CommandResult json = runCli("info --json '" + path + "'");
   ASSERT_EQ(json.exitCode, 0) << json.output;
-  EXPECT_TRUE(contains(json.output, ", \"cavity\": true, \"interface\": false}")) << json.output;
-  EXPECT_TRUE(contains(json.output, ", \"cavity\": false, \"interface\": false}")) << json.output;
+  test::expectContainsAll(json.output, {", \"cavity\": true, \"interface\": false}",
+                                        ", \"cavity\": false, \"interface\": false}"});
 }
 
 TEST(InfoCli, VolumesListTheirSkinAndInterfaceFacesAndNameTheInterfaces) {
   // tests/data/multimaterial/three_materials.geo: housing around bushing around shaft, meshed together.
-  const std::string path = std::string(LANCER_TEST_DATA_DIR) + "/multimaterial/three_materials_v41.msh";
+  const std::string path = test::dataFile("multimaterial/three_materials_v41.msh");
   const CommandResult text = runCli("info '" + path + "'");
   ASSERT_EQ(text.exitCode, 0) << text.output;
-  EXPECT_TRUE(contains(text.output, "interfaces:      1004 faces shared by two volumes")) << text.output;
-  EXPECT_TRUE(contains(text.output, "\"Housing\"                2618 faces (1980 skin, 638 interface)\n"))
-      << text.output;
-  EXPECT_TRUE(contains(text.output, "\"Bushing\"                1342 faces (338 skin, 1004 interface)\n"))
-      << text.output;
-  EXPECT_TRUE(contains(text.output, "\"Shaft\"                  722 faces (356 skin, 366 interface)\n"))
-      << text.output;
-  EXPECT_TRUE(contains(text.output, "  interface \"Housing\" (1) | \"Bushing\" (2): 638 faces\n")) << text.output;
-  EXPECT_TRUE(contains(text.output, "  interface \"Bushing\" (2) | \"Shaft\" (3): 366 faces\n")) << text.output;
+  test::expectContainsAll(text.output,
+                          {
+                              "interfaces:      1004 faces shared by two volumes",
+                              "\"Housing\"                2618 faces (1980 skin, 638 interface)\n",
+                              "\"Bushing\"                1342 faces (338 skin, 1004 interface)\n",
+                              "\"Shaft\"                  722 faces (356 skin, 366 interface)\n",
+                              "  interface \"Housing\" (1) | \"Bushing\" (2): 638 faces\n",
+                              "  interface \"Bushing\" (2) | \"Shaft\" (3): 366 faces\n",
+                          });
   const CommandResult json = runCli("info --json '" + path + "'");
   ASSERT_EQ(json.exitCode, 0) << json.output;
-  EXPECT_TRUE(contains(json.output, "\"name\": \"Bushing\", \"faces\": 1342, \"interfaceFaces\": 1004}"))
-      << json.output;
-  EXPECT_TRUE(contains(json.output, "\"interfaceFaces\": 1004,\n  \"interfaces\": [\n    {\"tags\": [1, 2], "
-                                    "\"entities\": [0, 0], \"names\": [\"Housing\", \"Bushing\"], \"faces\": 638},\n    {\"tags\": [2, 3], "
-                                    "\"entities\": [0, 0], \"names\": [\"Bushing\", \"Shaft\"], \"faces\": 366}\n  ],"))
-      << json.output;
+  test::expectContainsAll(
+      json.output, {"\"name\": \"Bushing\", \"faces\": 1342, \"interfaceFaces\": 1004}",
+                    "\"interfaceFaces\": 1004,\n  \"interfaces\": [\n    {\"tags\": [1, 2], "
+                    "\"entities\": [0, 0], \"names\": [\"Housing\", \"Bushing\"], \"faces\": 638},\n    "
+                    "{\"tags\": [2, 3], "
+                    "\"entities\": [0, 0], \"names\": [\"Bushing\", \"Shaft\"], \"faces\": 366}\n  ],"});
 }
 
 // render and animate say what info says about a mesh: faces dropped as degenerate (and element types

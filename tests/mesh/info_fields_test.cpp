@@ -1,60 +1,45 @@
 // `lancer info` lists the fields of a file with $NodeData (text and --json), through the built CLI.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <string>
+
+#include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {
 
-std::string runInfo(const std::string& arguments, int& exitCode) {
-  const std::string command = std::string("'") + LANCER_CLI_PATH + "' info " + arguments + " 2>&1";
-  std::string output;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return output;
-  char buffer[4096];
-  std::size_t got;
-  while ((got = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0) output.append(buffer, got);
-  const int status = pclose(pipe);
-  exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return output;
-}
+using test::CommandResult;
+using test::quoted;
+using test::runCli;
 
-const std::string kFile = std::string("'") + LANCER_TEST_DATA_DIR + "/fields/node_xy_v41_bin.msh'";
+const std::string kFile = quoted(test::dataFile("fields/node_xy_v41_bin.msh"));
+const std::string kNoFields = quoted(test::mshFixture("square_tri3_v41_ascii.msh"));
 
 TEST(InfoFields, TextListsTheField) {
-  int code = -1;
-  const std::string out = runInfo(kFile, code);
-  ASSERT_EQ(code, 0) << out;
+  const CommandResult result = runCli("info " + kFile);
+  ASSERT_EQ(result.exitCode, 0) << result.output;
   // x + 2 y over the unit square spans 0 .. 3.
-  EXPECT_NE(
-      out.find(
-          "fields:\n  \"temperature\"            node data, 1 component, step 0 (time -1), values 0 .. 3\n"),
-      std::string::npos)
-      << out;
+  test::expectContainsAll(
+      result.output,
+      {"fields:\n  \"temperature\"            node data, 1 component, step 0 (time -1), values 0 .. 3\n"});
 }
 
 TEST(InfoFields, JsonListsTheField) {
-  int code = -1;
-  const std::string out = runInfo(kFile + " --json", code);
-  ASSERT_EQ(code, 0) << out;
-  EXPECT_NE(
-      out.find("\"fields\": [\n    {\"name\": \"temperature\", \"location\": \"node\", \"components\": 1, "
-               "\"step\": 0, \"time\": -1, \"min\": 0, \"max\": 3}\n  ],"),
-      std::string::npos)
-      << out;
+  const CommandResult result = runCli("info " + kFile + " --json");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  test::expectContainsAll(
+      result.output,
+      {"\"fields\": [\n    {\"name\": \"temperature\", \"location\": \"node\", \"components\": 1, "
+       "\"step\": 0, \"time\": -1, \"min\": 0, \"max\": 3}\n  ],"});
 }
 
 TEST(InfoFields, NoFieldsGivesAnEmptyJsonList) {
-  int code = -1;
-  const std::string out =
-      runInfo(std::string("'") + LANCER_TEST_DATA_DIR + "/msh/square_tri3_v41_ascii.msh' --json", code);
-  ASSERT_EQ(code, 0) << out;
+  const CommandResult result = runCli("info " + kNoFields + " --json");
+  const std::string& out = result.output;
+  ASSERT_EQ(result.exitCode, 0) << out;
   EXPECT_NE(out.find("\"fields\": [],"), std::string::npos) << out;
-  EXPECT_EQ(runInfo(std::string("'") + LANCER_TEST_DATA_DIR + "/msh/square_tri3_v41_ascii.msh'", code)
-                .find("fields:"),
-            std::string::npos);
+  EXPECT_EQ(runCli("info " + kNoFields).output.find("fields:"), std::string::npos);
 }
 
 }  // namespace

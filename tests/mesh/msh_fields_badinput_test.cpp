@@ -7,7 +7,7 @@
 #include <string>
 
 #include "lancer/mesh/msh_reader.hpp"
-#include "mesh/msh_test_util.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {

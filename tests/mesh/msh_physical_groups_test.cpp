@@ -8,7 +8,7 @@
 
 #include "lancer/mesh/mesh_stats.hpp"
 #include "lancer/mesh/msh_reader.hpp"
-#include "mesh/msh_test_util.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {

@@ -8,7 +8,8 @@
 
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
-#include "mesh/msh_test_util.hpp"
+#include "support/files.hpp"
+#include "support/input_errors.hpp"
 
 namespace lancer {
 namespace {
@@ -115,12 +116,7 @@ TEST(BrokenMsh, EveryCorpusFileHasACase) {
 }
 
 std::string errorOf(const std::string& path) {
-  try {
-    readMsh(path);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "no error";
+  return test::messageOf([&] { readMsh(path); });
 }
 
 TEST(BrokenMsh, MissingFileAndDirectory) {
@@ -172,11 +168,7 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, MutatedMshTest,
                                          "square_quad8_v22_bin.msh", "square_tri3_v40_ascii.msh",
                                          "sphere_part2_v41_bin.msh", "cube_tet10_v22_ascii.msh"),
                          [](const testing::TestParamInfo<const char*>& param) {
-                           std::string name = param.param;
-                           name = name.substr(0, name.size() - 4);
-                           for (char& ch : name)
-                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-                           return name;
+                           return test::fixtureTestName(param.param);
                          });
 
 }  // namespace

@@ -13,7 +13,7 @@
 #include "lancer/mesh/mesh_stats.hpp"
 #include "lancer/mesh/msh/element_types.hpp"
 #include "lancer/mesh/msh/node_table.hpp"
-#include "mesh/msh_test_util.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {
@@ -119,11 +119,7 @@ const FixtureCase kFixtures[] = {
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, MshFixtureTest, testing::ValuesIn(kFixtures),
                          [](const testing::TestParamInfo<FixtureCase>& param) {
-                           std::string name = param.param.file;
-                           name = name.substr(0, name.size() - 4);
-                           for (char& ch : name)
-                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-                           return name;
+                           return test::fixtureTestName(param.param.file);
                          });
 
 TEST(MshReader, TetrahedraBecomeTheirSkinInEveryFormat) {

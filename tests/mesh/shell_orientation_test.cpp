@@ -9,7 +9,7 @@
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/mesh_stats.hpp"
 #include "lancer/scene/scene.hpp"
-#include "msh_test_util.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {

@@ -8,23 +8,28 @@
 namespace lancer {
 namespace {
 
-// A unit cube of 6 quads, outward winding.
-void makeCube(std::vector<Vec3>& positions, std::vector<MeshFace>& faces) {
-  positions.clear();
-  for (int i = 0; i < 8; ++i) positions.push_back({float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)});
+// A unit cube of 6 quads, outward winding, all in physical group 0.
+struct Cube {
+  std::vector<Vec3> positions;
+  std::vector<MeshFace> faces;
+  std::vector<std::int32_t> tags;
+};
+
+Cube unitCube() {
+  Cube cube;
+  for (int i = 0; i < 8; ++i)
+    cube.positions.push_back({float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)});
   const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  faces.clear();
-  for (const auto& q : quads) faces.push_back({{q[0], q[1], q[2], q[3]}});
+  for (const auto& q : quads) cube.faces.push_back({{q[0], q[1], q[2], q[3]}});
+  cube.tags.assign(cube.faces.size(), 0);
+  return cube;
 }
 
 TEST(VertexNormals, CubeKeepsSharpEdgesBelowCreaseAngle) {
-  std::vector<Vec3> positions;
-  std::vector<MeshFace> faces;
-  makeCube(positions, faces);
-  const std::vector<std::int32_t> tags(faces.size(), 0);
-  const CornerNormals normals = computeCornerNormals(positions, faces, tags, 60.0f);
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const Vec3 n = faceNormal(positions, faces[f]);
+  const Cube cube = unitCube();
+  const CornerNormals normals = computeCornerNormals(cube.positions, cube.faces, cube.tags, 60.0f);
+  for (std::size_t f = 0; f < cube.faces.size(); ++f) {
+    const Vec3 n = faceNormal(cube.positions, cube.faces[f]);
     for (int c = 0; c < 4; ++c) {
       const Vec3 corner = normals.normals[normals.faceCorner[f][c]];
       EXPECT_NEAR(dot(corner, n), 1.0f, 1e-6f);
@@ -34,11 +39,8 @@ TEST(VertexNormals, CubeKeepsSharpEdgesBelowCreaseAngle) {
 }
 
 TEST(VertexNormals, CubeSmoothedAboveCreaseAngle) {
-  std::vector<Vec3> positions;
-  std::vector<MeshFace> faces;
-  makeCube(positions, faces);
-  const std::vector<std::int32_t> tags(faces.size(), 0);
-  const CornerNormals normals = computeCornerNormals(positions, faces, tags, 95.0f);
+  const Cube cube = unitCube();
+  const CornerNormals normals = computeCornerNormals(cube.positions, cube.faces, cube.tags, 95.0f);
   // Each cube corner gets the diagonal direction, shared by its three faces.
   EXPECT_EQ(normals.normals.size(), 8u);
   const Vec3 corner7 = normals.normals[normals.faceCorner[1][2]];  // vertex 7 = (1,1,1)

@@ -12,7 +12,7 @@
 #include "lancer/mesh/mesh_stats.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/scene.hpp"
-#include "msh_test_util.hpp"
+#include "support/files.hpp"
 #include "support/test_scenes.hpp"
 
 namespace lancer {

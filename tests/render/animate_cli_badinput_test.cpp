@@ -5,8 +5,8 @@
 
 #include <fstream>
 
-#include "image/image_test_util.hpp"
-#include "render/animate_cli_util.hpp"
+#include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {
@@ -84,8 +84,7 @@ TEST(AnimateCliBadInput, LightOrbitInASceneWithoutLights) {
 
 TEST(AnimateCliBadInput, BadAnimationKeysPointAtTheSceneFile) {
   ScratchFolder folder;
-  std::ifstream in(test::kTurntableScene);
-  std::string base((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string base = test::readText(test::kTurntableScene);
   for (const char* mesh : {"bracket_coarse.msh", "floor.msh"}) {
     const std::string name = fmt::format("\"{}\"", mesh);
     base.replace(base.find(name), name.size(), fmt::format("\"{}/render/{}\"", LANCER_TEST_DATA_DIR, mesh));

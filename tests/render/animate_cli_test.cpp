@@ -10,16 +10,18 @@
 #include <fstream>
 #include <sstream>
 
-#include "image/image_test_util.hpp"
+#include "lancer/image/image_io.hpp"
 #include "lancer/render/animation.hpp"
 #include "lancer/scene/scene_loader.hpp"
-#include "render/animate_cli_util.hpp"
+#include "support/cli.hpp"
+#include "support/files.hpp"
+#include "support/gif_decoder.hpp"
 #include "support/golden.hpp"
+#include "support/test_images.hpp"
 
 namespace lancer {
 namespace {
 
-using test::contains;
 using test::quoted;
 using test::runCli;
 using test::ScratchFolder;
@@ -41,8 +43,7 @@ TEST(AnimateCli, GifHasTheFramesSizeDelayAndLoopCountAndIsCloseToTheTrueColourFr
       runCli("animate " + quoted(test::kTurntableScene) + " --loop 3 -o " + quoted(folder.file("t.gif")));
   ASSERT_EQ(result.exitCode, 0) << result.output;
   // The scene asks for 12 fps; 100/12 hundredths rounds to 8, and the command says so.
-  EXPECT_TRUE(contains(result.output, "12 fps plays at 12.5 fps (a delay of 8/100 s)")) << result.output;
-  EXPECT_TRUE(contains(result.output, "4 frames 64x48")) << result.output;
+  test::expectContainsAll(result.output, {"12 fps plays at 12.5 fps (a delay of 8/100 s)", "4 frames 64x48"});
 
   const test::DecodedGif gif = test::decodeGif(folder.file("t.gif"));
   ASSERT_EQ(gif.error, "");
@@ -85,13 +86,6 @@ TEST(AnimateCli, PerFramePalettesErrorDiffusionAndPlayOnce) {
   }
 }
 
-// The first python3 with Pillow: the one on PATH, else the system's (Debian's python3-pil).
-std::optional<std::string> pythonWithPillow() {
-  for (const char* python : {"python3", "/usr/bin/python3"})
-    if (std::system((std::string(python) + " -c 'import PIL' >/dev/null 2>&1").c_str()) == 0) return python;
-  return std::nullopt;
-}
-
 std::string writeScript(const ScratchFolder& folder, const std::string& text) {
   const std::string path = folder.file("check.py");
   std::ofstream(path) << text;
@@ -111,7 +105,7 @@ for k, f in enumerate(ImageSequence.Iterator(im)):
 )";
 
 TEST(AnimateCliIndependentDecoders, PillowReadsTheGifAndTheAnimatedPng) {
-  const std::optional<std::string> python = pythonWithPillow();
+  const std::optional<std::string> python = test::pythonWithPillow();
   if (!python) GTEST_SKIP() << "no python3 with PIL (Debian: python3-pil)";
   ScratchFolder folder;
   trueColourFrames(folder);
@@ -125,7 +119,7 @@ TEST(AnimateCliIndependentDecoders, PillowReadsTheGifAndTheAnimatedPng) {
   const std::string script = writeScript(folder, kPillowCheck);
   const test::CommandResult gif =
       test::runShell(*python + " " + quoted(script) + " " + quoted(folder.file("t.gif")) + " " +
-                     quoted(folder.file("f_%04d.png")));
+                     quoted(folder.file("f_%04d.png")) + " 2>&1");
   ASSERT_EQ(gif.exitCode, 0) << gif.output;
   std::istringstream lines(gif.output);
   std::string line;
@@ -142,23 +136,23 @@ TEST(AnimateCliIndependentDecoders, PillowReadsTheGifAndTheAnimatedPng) {
   // The animated PNG is lossless: every frame equals the numbered PNG exactly; 1/12 s is 83.3 ms.
   const test::CommandResult apng =
       test::runShell(*python + " " + quoted(script) + " " + quoted(folder.file("t.png")) + " " +
-                     quoted(folder.file("f_%04d.png")));
+                     quoted(folder.file("f_%04d.png")) + " 2>&1");
   ASSERT_EQ(apng.exitCode, 0) << apng.output;
   EXPECT_EQ(apng.output, "PNG 64 48 4 0\n83 0.00\n83 0.00\n83 0.00\n83 0.00\n");
 }
 
 TEST(AnimateCliIndependentDecoders, ImageMagickReadsTheGif) {
-  if (std::system("identify -version >/dev/null 2>&1") != 0) GTEST_SKIP() << "ImageMagick not installed";
+  if (!test::imageMagickInstalled()) GTEST_SKIP() << "ImageMagick not installed";
   ScratchFolder folder;
   const auto truth = trueColourFrames(folder);
   ASSERT_EQ(
       runCli("animate -q " + quoted(test::kTurntableScene) + " -o " + quoted(folder.file("t.gif"))).exitCode,
       0);
   const test::CommandResult identify =
-      test::runShell("identify -format '%W %H %T %n|' " + quoted(folder.file("t.gif")));
+      test::runShell("identify -format '%W %H %T %n|' " + quoted(folder.file("t.gif")) + " 2>&1");
   EXPECT_EQ(identify.output, "64 48 8 4|64 48 8 4|64 48 8 4|64 48 8 4|");  // canvas, delay, frame count
   const test::CommandResult iterations = test::runShell(
-      "identify -verbose " + quoted(folder.file("t.gif") + "[0]") + " | grep -m1 'Iterations:'");
+      "identify -verbose " + quoted(folder.file("t.gif") + "[0]") + " | grep -m1 'Iterations:' 2>&1");
   EXPECT_EQ(iterations.output, "  Iterations: 0\n");  // 0 = forever, the default
   const std::string raw = folder.file("frames.rgb");
   ASSERT_EQ(
@@ -252,8 +246,7 @@ TEST(AnimateCli, NumberedFramesAreBitIdenticalToRenderAtEachAngle) {
   const auto truth = trueColourFrames(folder);
   const SceneDescription description = loadScene(test::kTurntableScene);
   const Scene scene = buildScene(description);
-  std::ifstream in(test::kTurntableScene);
-  const std::string base((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string base = test::readText(test::kTurntableScene);
   for (int k = 0; k < 4; ++k) {
     const CameraSettings camera = orbitCamera(description.camera, *description.animation, scene,
                                               description.render.width, description.render.height, k);
@@ -280,8 +273,7 @@ TEST(AnimateCli, LightOrbitFramesMatchRendersWithTheLightMoved) {
   const test::CommandResult result = runCli("animate -q " + quoted(test::kTurntableScene) +
                                             " --orbit light:0 -o " + quoted(folder.file("l_%d.png")));
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  std::ifstream in(test::kTurntableScene);
-  const std::string base((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string base = test::readText(test::kTurntableScene);
   const SceneDescription description = loadScene(test::kTurntableScene);
   const Image frame0 = readPng(folder.file("l_0.png"));
   for (int k = 0; k < 4; ++k) {
@@ -316,7 +308,7 @@ TEST(AnimateCli, InterruptLeavesExistingOutputUntouched) {
         "animate -q " + quoted(test::kTurntableScene) + " --frames 10000 -o " + quoted(folder.file(output)),
         "timeout -s INT --preserve-status 1.5");
     EXPECT_EQ(result.exitCode, 130) << result.output;
-    EXPECT_TRUE(contains(result.output, "lancer: interrupted; ")) << result.output;
+    EXPECT_TRUE(test::contains(result.output, "lancer: interrupted; ")) << result.output;
     for (const char* name : {"t.gif", "t.png", "f_0000.png", "f_0001.png"})
       EXPECT_EQ(test::readBytes(folder.file(name)), old) << name;
     EXPECT_EQ(folder.entries(), (std::vector<std::string>{"f_0000.png", "f_0001.png", "t.gif", "t.png"}));

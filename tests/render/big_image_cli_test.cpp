@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "image/image_test_util.hpp"
-#include "render/animate_cli_util.hpp"
+#include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {
@@ -49,8 +49,7 @@ TEST(BigImageCli, InterruptWhileStreamingLeavesTheOldFile) {
                "timeout -s INT --preserve-status 1.5");
     EXPECT_EQ(result.exitCode, 130) << result.output;
     EXPECT_TRUE(contains(result.output, "lancer: interrupted; ")) << result.output;
-    EXPECT_EQ(test::readBytes(folder.file(name)), old);
-    EXPECT_EQ(folder.entries(), std::vector<std::string>{name});
+    test::expectOnlyFile(folder, name, old);
   }
 }
 

@@ -12,32 +12,27 @@
 namespace lancer {
 namespace {
 
-// 8-bit PSNR floor, as for the other render goldens: a one-step difference everywhere stays far
-// above it; a missing cap, a cap in the wrong group's colour or a moved plane falls far below.
-constexpr double kMinPsnrDb = 40.0;
-
 const std::string kDataDir = LANCER_TEST_DATA_DIR "/render/";
-
-Image render(const SceneDescription& description) { return test::renderScene(description); }
 
 TEST(ClipGolden, CappedCutsOfTwoVolumesInTheirGroupsColours) {
   const SceneDescription description = loadScene(kDataDir + "cut_bushing.toml");
   ASSERT_EQ(description.clips.size(), 1u);
   ASSERT_EQ(description.meshes.at(0).clips.size(), 1u);
-  test::expectImageNear(render(description), kDataDir + "golden/cut_bushing.png", kMinPsnrDb);
+  test::expectImageNear(test::renderScene(description), kDataDir + "golden/cut_bushing.png",
+                        test::kRenderGoldenMinPsnrDb);
 }
 
 TEST(ClipGolden, EachCapChangesThePictureBeyondTheFloor) {
   // Guards the golden itself: with either cap off the hollow inside shows instead, and the PSNR
   // floor must tell that apart, or a renderer that lost that cap would still pass.
   const SceneDescription description = loadScene(kDataDir + "cut_bushing.toml");
-  const Image capped = render(description);
+  const Image capped = test::renderScene(description);
   SceneDescription sceneCapOff = description;
   sceneCapOff.clips[0].cap = false;
-  EXPECT_LT(test::psnr8(render(sceneCapOff), capped), kMinPsnrDb);
+  EXPECT_LT(test::psnr8(test::renderScene(sceneCapOff), capped), test::kRenderGoldenMinPsnrDb);
   SceneDescription meshCapOff = description;
   meshCapOff.meshes[0].clips[0].cap = false;
-  EXPECT_LT(test::psnr8(render(meshCapOff), capped), kMinPsnrDb);
+  EXPECT_LT(test::psnr8(test::renderScene(meshCapOff), capped), test::kRenderGoldenMinPsnrDb);
 }
 
 }  // namespace

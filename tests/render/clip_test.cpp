@@ -7,7 +7,8 @@
 
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/scene_loader.hpp"
-#include "mesh/msh_test_util.hpp"
+#include "support/files.hpp"
+#include "support/input_errors.hpp"
 #include "support/test_scenes.hpp"
 
 namespace lancer {
@@ -17,31 +18,19 @@ constexpr int kSize = 48;
 
 // The unit cube seen orthographically from +x, one light straight along the view axis.
 SceneDescription cubeFromPlusX() {
-  SceneDescription d;
-  d.render.width = kSize;
-  d.render.height = kSize;
-  d.render.maxDepth = 0;
+  SceneDescription d =
+      test::orthographicView(kSize, kSize, Vec3d{5, 0.5, 0.5}, Vec3d{0, 0.5, 0.5}, 1.5, Vec3d{0, 0, 1});
   d.render.shading = ShadingMode::Flat;
   d.render.background = {0, 0, 1};
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = Vec3d{5, 0.5, 0.5};
-  d.camera.lookAt = Vec3d{0, 0.5, 0.5};
-  d.camera.up = Vec3d{0, 0, 1};
-  d.camera.viewHeight = 1.5;
   d.ambient = {0.2f, 0.2f, 0.2f};
   d.lights = {{Vec3d{20, 0.5, 0.5}, {0.7f, 0.7f, 0.7f}, {1, 0, 0}}};
-  Material m;
-  m.name = "solid";
-  m.ka = {0.5f, 0.4f, 0.3f};
-  m.kd = {0.6f, 0.5f, 0.4f};
-  m.ks = {0, 0, 0};
-  d.materials = {m};
+  d.materials = {test::matteMaterial("solid", {0.5f, 0.4f, 0.3f}, {0.6f, 0.5f, 0.4f})};
   d.meshes.resize(1);
   return d;
 }
 
 Image renderCube(const SceneDescription& d) {
-  return test::renderScene(d, test::sceneFromMeshes(d, {readMsh(test::mshFixture("cube_tet4_v41_ascii.msh"))}));
+  return test::renderMeshes(d, {readMsh(test::mshFixture("cube_tet4_v41_ascii.msh"))});
 }
 
 TEST(Clip, CapIsAFlatFaceInTheShellsMaterialLitByTheModel) {
@@ -92,14 +81,8 @@ TEST(Clip, WithoutCapTheInsideShowsAndTheCutIsOpen) {
 TEST(Clip, RemovedGeometryCastsNoShadowAndAllClippedShowsBackground) {
   // A floor-like square at z = 0 and an occluder square at z = 1 between it and the light, seen
   // from above: clipping z > 0.5 removes the occluder and its shadow.
-  SceneDescription d;
-  d.render.width = d.render.height = 32;
-  d.render.maxDepth = 0;
+  SceneDescription d = test::topDownView(32, 32, 2);
   d.render.shading = ShadingMode::Flat;
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = Vec3d{0, 0, 5};
-  d.camera.lookAt = Vec3d{0, 0, 0};
-  d.camera.viewHeight = 2;
   d.lights = {{Vec3d{0, 0, 10}, {1, 1, 1}, {1, 0, 0}}};
   Material m;
   m.name = "m";
@@ -112,9 +95,9 @@ TEST(Clip, RemovedGeometryCastsNoShadowAndAllClippedShowsBackground) {
     list.push_back(test::squareMesh(-0.5f, -0.5f, 0.5f, 0.5f, 1));
     return list;
   };
-  const Image shadowed = test::renderScene(d, test::sceneFromMeshes(d, meshes()));
+  const Image shadowed = test::renderMeshes(d, meshes());
   d.clips = {{Vec3d{0, 0, 0.5}, Vec3d{0, 0, 1}, true}};
-  const Image clipped = test::renderScene(d, test::sceneFromMeshes(d, meshes()));
+  const Image clipped = test::renderMeshes(d, meshes());
   // Centre: the occluder (lit) before; the floor, lit because nothing shadows it any more, after.
   const float floorLit = d.ambient.x * m.ka.x + m.kd.x * 1.0f;
   EXPECT_NEAR(clipped.at(16, 16).r, floorLit, 1e-3f);
@@ -123,7 +106,7 @@ TEST(Clip, RemovedGeometryCastsNoShadowAndAllClippedShowsBackground) {
   EXPECT_NEAR(clipped.at(16 + 8, 16).r, floorLit, 1e-3f);
   d.clips = {{Vec3d{0, 0, -1}, Vec3d{0, 0, 1}, true}};
   d.render.background = {0.25f, 0.5f, 0.75f};
-  const Image empty = test::renderScene(d, test::sceneFromMeshes(d, meshes()));
+  const Image empty = test::renderMeshes(d, meshes());
   EXPECT_EQ(empty.at(16, 16).g, 0.5f);
 }
 
@@ -138,14 +121,7 @@ TEST(Clip, SceneKeysAreRead) {
 }
 
 TEST(ClipBadInput, MissingOrZeroNormalIsAClearError) {
-  auto messageOf = [](const std::string& text) {
-    try {
-      parseScene(text, "cut.toml");
-    } catch (const InputError& error) {
-      return std::string(error.what());
-    }
-    return std::string("no error");
-  };
+  auto messageOf = [](const std::string& text) { return test::sceneErrorOf(text, "cut.toml"); };
   EXPECT_NE(messageOf("[[clip]]\npoint = [0, 0, 0]\n").find("normal"), std::string::npos);
   EXPECT_NE(messageOf("[[clip]]\npoint = [0, 0, 0]\nnormal = [0, 0, 0]\n").find("clip[0].normal must not be [0, 0, 0]"),
             std::string::npos);

@@ -6,7 +6,7 @@
 
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/scene_loader.hpp"
-#include "mesh/msh_test_util.hpp"
+#include "support/files.hpp"
 #include "support/golden.hpp"
 #include "support/test_scenes.hpp"
 
@@ -18,23 +18,11 @@ constexpr int kSize = 96;
 // The unit square of tests/data/geo/square.geo (4 x 4 elements) seen from above, orthographic,
 // filling the image with a small margin; red edges 1.5 pixels wide.
 SceneDescription topDownEdges() {
-  SceneDescription d;
-  d.render.width = kSize;
-  d.render.height = kSize;
-  d.render.maxDepth = 0;
+  SceneDescription d = test::orthographicView(kSize, kSize, Vec3d{0.5, 0.5, 3}, Vec3d{0.5, 0.5, 0}, 1.2);
   d.render.shading = ShadingMode::Flat;
   d.render.background = {1, 1, 1};  // so that a pixel just outside the square is not "red"
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = Vec3d{0.5, 0.5, 3};
-  d.camera.lookAt = Vec3d{0.5, 0.5, 0};
-  d.camera.viewHeight = 1.2;
   d.ambient = {1, 1, 1};
-  Material white;
-  white.name = "white";
-  white.ka = {1, 1, 1};
-  white.kd = {0, 0, 0};
-  white.ks = {0, 0, 0};
-  d.materials = {white};
+  d.materials = {test::ambientOnlyMaterial("white", {1, 1, 1})};
   d.meshes.resize(1);
   d.meshes[0].edges = EdgeSettings{1.5f, {1, 0, 0}, false, 30};
   return d;
@@ -42,7 +30,7 @@ SceneDescription topDownEdges() {
 
 Image renderTopDown(const std::string& fixture) {
   const SceneDescription d = topDownEdges();
-  return test::renderScene(d, test::sceneFromMeshes(d, {readMsh(test::mshFixture(fixture))}));
+  return test::renderMeshes(d, {readMsh(test::mshFixture(fixture))});
 }
 
 // Pixel whose centre is nearest the world point (x, y) of the square; points on the square's
@@ -94,19 +82,11 @@ TEST(Edges, WidthIsInPixels) {
   for (float width : {1.0f, 3.0f}) {
     SceneDescription d = topDownEdges();
     d.meshes[0].edges->widthPixels = width;
-    const Image image = test::renderScene(d, test::sceneFromMeshes(d, {readMsh(test::mshFixture("square_quad4_v41_bin.msh"))}));
+    const Image image = test::renderMeshes(d, {readMsh(test::mshFixture("square_quad4_v41_bin.msh"))});
     const int row = kSize / 2 + 7;
     float coverage = 0;  // summed redness across the x = 0.5 line's neighbourhood
     for (int x = kSize / 2 - 8; x <= kSize / 2 + 8; ++x) coverage += 1.0f - image.at(x, row).g;
     EXPECT_NEAR(coverage, width, 0.35f) << width;
-  }
-}
-
-TEST(EdgesGolden, QuadAndSecondOrderMeshesInPerspective) {
-  for (const char* scene : {"edges_quad8.toml", "edges_tri6.toml"}) {
-    const SceneDescription d = loadScene(std::string(LANCER_TEST_DATA_DIR) + "/render/" + scene);
-    const Image image = test::renderScene(d, buildScene(d));
-    test::expectImageNear(image, std::string(LANCER_TEST_DATA_DIR) + "/render/golden/" + scene + ".png", 40.0);
   }
 }
 
@@ -140,7 +120,7 @@ TEST(Edges, OutlineEdgesAreAsWideAsInteriorEdges) {
       d.meshes.resize(2);  // a white floor without edges, a unit below
       meshes.push_back(test::squareMesh(-1, -1, 2, 2, -1));
     }
-    const Image image = test::renderScene(d, test::sceneFromMeshes(d, std::move(meshes)));
+    const Image image = test::renderMeshes(d, std::move(meshes));
     for (double y : {0.375, 0.625}) {
       const double interior = inkAcross(image, 0.25, y);
       EXPECT_NEAR(interior, 3.0, 0.05) << "y " << y;

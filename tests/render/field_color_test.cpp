@@ -1,6 +1,7 @@
 // color_by through the renderer: a gmsh-made square with the field x + 2 y, seen from above with
 // ambient-only white light, shows at each pixel the colour map's colour at (x + 2 y) / 3 (the
-// oracle), with linear or sRGB output; and a golden image of a lit, tilted, field-coloured square.
+// oracle), with linear or sRGB output. The golden image of a lit, tilted one is in
+// field_color_golden_test.cpp.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -8,7 +9,6 @@
 #include "lancer/image/color_map.hpp"
 #include "lancer/image/pixel_encoding.hpp"
 #include "lancer/scene/scene_loader.hpp"
-#include "support/golden.hpp"
 #include "support/test_scenes.hpp"
 
 namespace lancer {
@@ -83,15 +83,6 @@ TEST(FieldColor, ElementDataIsConstantPerFace) {
     const double low = scene.legend->low, high = scene.legend->high;  // the triangles' range
     EXPECT_NEAR(scene.faceFieldT[f], (p.x + 2 * p.y - low) / (high - low), 1e-5) << f;
   }
-}
-
-TEST(FieldColor, GoldenTiltedSquare) {
-  const SceneDescription description = loadScene(kDataDir + "field_square.toml");
-  const Scene scene = buildScene(description);
-  ASSERT_TRUE(scene.legend);
-  EXPECT_EQ(scene.legend->map, ColorMapKind::Magma);
-  EXPECT_EQ(scene.legend->low, 0.5);
-  test::expectImageNear(test::renderScene(description, scene), kDataDir + "golden/field_square.png", 40.0);
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/scene_loader.hpp"
-#include "mesh/msh_test_util.hpp"
+#include "support/files.hpp"
 #include "support/test_scenes.hpp"
 
 namespace lancer {
@@ -20,26 +20,14 @@ const ClipSettings kRemovePlusX{Vec3d{0, 0, 0}, Vec3d{1, 0, 0}, true};
 // World x of the centre of pixel column i in the views from +z below (4 units wide).
 float columnX(int i) { return (static_cast<float>(i) + 0.5f) * 4.0f / kSize - 2.0f; }
 
-Material flatMaterial(const char* name, Vec3 color) {
-  Material m;
-  m.name = name;
-  m.ka = m.kd = color;
-  m.ks = {0, 0, 0};
-  return m;
-}
+Material flatMaterial(const char* name, Vec3 color) { return test::matteMaterial(name, color, color); }
 
 // Seen orthographically from +z: a red square (mesh 0, z = 2, [-0.5, 0.5]^2) above a green one
 // (mesh 1, z = 0, [-2, 2]^2), lit from (0, 0, 4), so the red one's shadow on the green is twice its size.
 SceneDescription twoSquares() {
-  SceneDescription d;
-  d.render.width = d.render.height = kSize;
-  d.render.maxDepth = 0;
+  SceneDescription d = test::topDownView(kSize, kSize, 4);
   d.render.shading = ShadingMode::Flat;
   d.render.background = {0, 0, 1};
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = Vec3d{0, 0, 5};
-  d.camera.lookAt = Vec3d{0, 0, 0};
-  d.camera.viewHeight = 4;
   d.ambient = {0.2f, 0.2f, 0.2f};
   d.lights = {{Vec3d{0, 0, 4}, {1, 1, 1}, {1, 0, 0}}};
   d.materials = {flatMaterial("front", {0.8f, 0.1f, 0.1f}), flatMaterial("back", {0.1f, 0.8f, 0.1f})};
@@ -57,7 +45,7 @@ std::vector<Mesh> twoSquareMeshes() {
 }
 
 Image renderSquares(const SceneDescription& d, AccelKind accel = AccelKind::KdTreeSah, int threads = 0) {
-  return test::renderScene(d, test::sceneFromMeshes(d, twoSquareMeshes()), accel, threads);
+  return test::renderMeshes(d, twoSquareMeshes(), accel, threads);
 }
 
 // The green square alone: what the cut-away half of the red one must reveal.
@@ -65,7 +53,7 @@ Image renderBackOnly(SceneDescription d) {
   d.meshes.erase(d.meshes.begin());
   std::vector<Mesh> meshes = twoSquareMeshes();
   meshes.erase(meshes.begin());
-  return test::renderScene(d, test::sceneFromMeshes(d, std::move(meshes)));
+  return test::renderMeshes(d, std::move(meshes));
 }
 
 TEST(MeshClip, CutAwayPartRevealsTheMeshBehindUncutAndUnshadowed) {
@@ -139,10 +127,10 @@ TEST(MeshClip, AMirrorDoesNotSeeTheCutAwayPart) {
   mirrorOnly.meshes.erase(mirrorOnly.meshes.begin());
   std::vector<Mesh> mirrorMesh = meshes();
   mirrorMesh.erase(mirrorMesh.begin());
-  const Image empty = test::renderScene(mirrorOnly, test::sceneFromMeshes(mirrorOnly, std::move(mirrorMesh)));
-  const Image whole = test::renderScene(d, test::sceneFromMeshes(d, meshes()));
+  const Image empty = test::renderMeshes(mirrorOnly, std::move(mirrorMesh));
+  const Image whole = test::renderMeshes(d, meshes());
   d.meshes[0].clips = {kRemovePlusX};
-  const Image cut = test::renderScene(d, test::sceneFromMeshes(d, meshes()));
+  const Image cut = test::renderMeshes(d, meshes());
   int reflectedKept = 0, reflectedRemoved = 0;
   for (int y = 0; y < kSize; ++y) {
     for (int x = 0; x < kSize; ++x) {
@@ -164,7 +152,7 @@ Image renderCubes(const SceneDescription& d) {
   std::vector<Mesh> meshes;
   for (std::size_t i = 0; i < d.meshes.size(); ++i)
     meshes.push_back(readMsh(test::mshFixture("cube_tet4_v41_ascii.msh")));
-  return test::renderScene(d, test::sceneFromMeshes(d, std::move(meshes)));
+  return test::renderMeshes(d, std::move(meshes));
 }
 
 // The unit cube from an oblique perspective view that sees into a cut at x = 0.5 and z = 0.8.
@@ -216,15 +204,9 @@ TEST(MeshClip, CapShowsTheShellsColourInFrontOfAnUncutMesh) {
   // another colour fills the view behind it. The light at 45 degrees over the cap tells it from
   // what an uncapped or uncut cube would show there (the inner wall x = 0, lit at 40 degrees; the
   // face x = 1, at 51).
-  SceneDescription d;
-  d.render.width = d.render.height = 48;
-  d.render.maxDepth = 0;
+  SceneDescription d =
+      test::orthographicView(48, 48, Vec3d{5, 0.5, 0.5}, Vec3d{0, 0.5, 0.5}, 1.5, Vec3d{0, 0, 1});
   d.render.shading = ShadingMode::Flat;
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = Vec3d{5, 0.5, 0.5};
-  d.camera.lookAt = Vec3d{0, 0.5, 0.5};
-  d.camera.up = Vec3d{0, 0, 1};
-  d.camera.viewHeight = 1.5;
   d.ambient = {0.2f, 0.2f, 0.2f};
   d.lights = {{Vec3d{3, 0.5, 3}, {0.7f, 0.7f, 0.7f}, {1, 0, 0}}};
   d.materials = {flatMaterial("solid", {0.6f, 0.5f, 0.4f}), flatMaterial("behind", {0.1f, 0.3f, 0.9f})};

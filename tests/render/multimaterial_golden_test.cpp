@@ -12,30 +12,25 @@
 namespace lancer {
 namespace {
 
-// 8-bit PSNR floor, as for the other render goldens.
-constexpr double kMinPsnrDb = 40.0;
-
 const std::string kDataDir = LANCER_TEST_DATA_DIR "/multimaterial/";
 
-Image render(const SceneDescription& description) { return test::renderScene(description); }
-
 TEST(MultiMaterialGolden, CutPartShowsEachVolumesCapInItsMaterial) {
-  test::expectImageNear(render(loadScene(kDataDir + "cut_three_materials.toml")),
-                        kDataDir + "golden/cut_three_materials.png", kMinPsnrDb);
+  test::expectImageNear(test::renderScene(loadScene(kDataDir + "cut_three_materials.toml")),
+                        kDataDir + "golden/cut_three_materials.png", test::kRenderGoldenMinPsnrDb);
 }
 
 TEST(MultiMaterialGolden, TheGoldenTellsAMissingCapAndAVolumeInAnotherMaterial) {
   // Guards the golden itself: without caps, or with the bushing in the housing's material (an
   // interface that lost its second volume), the PSNR must fall below the floor.
   const SceneDescription description = loadScene(kDataDir + "cut_three_materials.toml");
-  const Image expected = render(description);
+  const Image expected = test::renderScene(description);
   SceneDescription uncapped = description;
   uncapped.clips[0].cap = false;
-  EXPECT_LT(test::psnr8(render(uncapped), expected), kMinPsnrDb);
+  EXPECT_LT(test::psnr8(test::renderScene(uncapped), expected), test::kRenderGoldenMinPsnrDb);
   SceneDescription oneMaterial = description;
   for (GroupMaterial& group : oneMaterial.meshes[0].groupMaterials)
     if (group.group == "Bushing") group.material = oneMaterial.meshes[0].material;
-  EXPECT_LT(test::psnr8(render(oneMaterial), expected), kMinPsnrDb);
+  EXPECT_LT(test::psnr8(test::renderScene(oneMaterial), expected), test::kRenderGoldenMinPsnrDb);
 }
 
 }  // namespace

@@ -31,16 +31,9 @@ const Vec3 kCubeColour{1, 0, 0}, kBallColour{0, 0, 1};
 // The cube [-1, 1]^3 ("Cube" or "Box") with a ball or cylinder of radius 0.6 ("Ball" or "Cylinder")
 // on the z axis, seen orthographically along -z after removing z > cut.
 SceneDescription cutAlongZ(double cut, bool cap, const char* outerGroup, const char* innerGroup) {
-  SceneDescription d;
-  d.render.width = d.render.height = kSize;
-  d.render.maxDepth = 0;
+  SceneDescription d = test::topDownView(kSize, kSize, kViewHeight);
   d.render.shading = ShadingMode::Flat;
   d.render.background = {0, 1, 0};
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = Vec3d{0, 0, 5};
-  d.camera.lookAt = Vec3d{0, 0, 0};
-  d.camera.up = Vec3d{0, 1, 0};
-  d.camera.viewHeight = kViewHeight;
   d.ambient = {1, 1, 1};
   d.materials = {flatColour("outer", kCubeColour), flatColour("inner", kBallColour)};
   d.meshes.resize(1);
@@ -115,13 +108,13 @@ TEST(MultiMaterialRender, UncappedCutsShowTheInnerVolumesSurfaces) {
   // Through the ball: inside the circle the ball's far wall, outside it the cube's.
   const SceneDescription through = cutAlongZ(0.0, false, "Cube", "Ball");
   const Mesh mesh = readMsh(multimaterial("cube_sphere_v41.msh"));
-  EXPECT_EQ(pixelsOffTheCircle(test::renderScene(through, test::sceneFromMeshes(through, {mesh}))), 0);
+  EXPECT_EQ(pixelsOffTheCircle(test::renderMeshes(through, {mesh})), 0);
   // In front of the ball: the ball's own outer surface, seen through the removed part of the cube.
   const SceneDescription before = cutAlongZ(0.8, false, "Cube", "Ball");
-  EXPECT_EQ(pixelsOffTheCircle(test::renderScene(before, test::sceneFromMeshes(before, {mesh}))), 0);
+  EXPECT_EQ(pixelsOffTheCircle(test::renderMeshes(before, {mesh})), 0);
   // Capped in front of the ball, the cube's cap hides it.
   const SceneDescription capped = cutAlongZ(0.8, true, "Cube", "Ball");
-  const Image image = test::renderScene(capped, test::sceneFromMeshes(capped, {mesh}));
+  const Image image = test::renderMeshes(capped, {mesh});
   const Rgba centre = image.at(kSize / 2, kSize / 2);
   EXPECT_EQ((Vec3{centre.r, centre.g, centre.b}), kCubeColour);
 }
@@ -186,6 +179,45 @@ TEST(MultiMaterialRender, SurfacesNestedInAnotherGroupsSolidAreCappedByTheInnerm
   });
   EXPECT_GT(ring, 1000);
   EXPECT_GT(core, 500);
+  EXPECT_EQ(wrong, 0);
+}
+
+// Surfaces only, meeting three on the rim of the shared wall (tests/data/multimaterial/
+// slabs_surfaces.geo: glass over water, each slab's boundary a Physical Surface): cut at x = 0.3 and
+// seen along -x, each slab's region of the cut is a flat cap in its group's colour, lit by a far
+// light up and to the front. Before, the regions were not found and the far walls showed instead,
+// in the shadow of the slabs' tops.
+TEST(MultiMaterialRender, SurfacesMeetingThreeOnAnEdgeAreCappedRegionByRegion) {
+  SceneDescription d = cutAlongZ(0.0, true, "Glass", "Water");
+  d.clips = {{Vec3d{0.3, 0, 0}, Vec3d{1, 0, 0}, true}};
+  d.camera.position = Vec3d{6, 0, 0};
+  d.camera.viewHeight = 3.0;
+  d.ambient = {0.2f, 0.2f, 0.2f};
+  d.lights = {{Vec3d{1e5, 1e5, 0}, {0.8f, 0.8f, 0.8f}, {1, 0, 0}}};
+  for (Material& m : d.materials) m.kd = m.ka;
+  const Scene scene = test::sceneFromMeshes(d, {readMsh(multimaterial("slabs_surfaces_v41.msh"))});
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) ASSERT_TRUE(scene.faceBoundsSolid[f]) << f;
+  const Image image = test::renderScene(d, scene);
+  const float lit = 0.2f + 0.8f * std::sqrt(0.5f);  // cap normal +x, light along (1, 1, 0)
+  const double pixel = 3.0 / kSize;
+  int glass = 0, water = 0, wrong = 0;
+  for (int j = 0; j < kSize; ++j) {
+    const double y = (kSize / 2.0 - j - 0.5) * pixel;
+    for (int i = 0; i < kSize; ++i) {
+      const double z = (i + 0.5 - kSize / 2.0) * pixel;  // the image's right is -z seen from +x
+      if (std::abs(z) > 2 - 2 * pixel) continue;
+      const Rgba seen = image.at(i, j);
+      if (y > 2 * pixel && y < 1 - 2 * pixel) {
+        ++glass;
+        wrong += std::abs(seen.r - lit) > 1e-3f || seen.b != 0.0f;
+      } else if (y < -2 * pixel && y > -1 + 2 * pixel) {
+        ++water;
+        wrong += std::abs(seen.b - lit) > 1e-3f || seen.r != 0.0f;
+      }
+    }
+  }
+  EXPECT_GT(glass, 1000);
+  EXPECT_GT(water, 1000);
   EXPECT_EQ(wrong, 0);
 }
 
@@ -258,21 +290,14 @@ int measuredEdgeColumn(double nGlass, double nWater, Vec3d& cameraPosition) {
   glass.transparency = water.transparency = 1;
   glass.ior = static_cast<float>(nGlass);
   water.ior = static_cast<float>(nWater);
-  SceneDescription d;
-  d.render.width = kWidth;
-  d.render.height = 4;
+  const Vec3d direction{std::sin(kTilt), 0, -std::cos(kTilt)};
+  const Vec3d lookAt{kEdge - 1.45, 0, 1};
+  cameraPosition = lookAt - direction * 5.0;
+  SceneDescription d = test::orthographicView(kWidth, 4, cameraPosition, lookAt, 4 * kPixel);
   d.render.maxDepth = 8;
   d.render.background = {0, 0, 0};
   d.ambient = {1, 1, 1};
   d.materials = {glass, water, flatColour("red", {1, 0, 0}), flatColour("green", {0, 1, 0})};
-  const Vec3d direction{std::sin(kTilt), 0, -std::cos(kTilt)};
-  const Vec3d lookAt{kEdge - 1.45, 0, 1};
-  cameraPosition = lookAt - direction * 5.0;
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = cameraPosition;
-  d.camera.lookAt = lookAt;
-  d.camera.up = Vec3d{0, 1, 0};
-  d.camera.viewHeight = 4 * kPixel;
   d.meshes.resize(3);
   d.meshes[0].groupMaterials = {{"Glass", 0, {}}, {"Water", 1, {}}};
   d.meshes[0].rotateDegrees = {90, 0, 0};  // (x, y, z) -> (x, -z, y): the slabs stack along z
@@ -332,7 +357,7 @@ TEST(MultiMaterialRender, IndexMatchedBallInGlassIsInvisible) {
       const float x0 = -4 + static_cast<float>(k);
       meshes.push_back(test::squareMesh(x0, -4, x0 + 1, 4, -2.5f));
     }
-    return test::renderScene(d, test::sceneFromMeshes(d, std::move(meshes)));
+    return test::renderMeshes(d, std::move(meshes));
   };
   const Image glassOnly = render(readMsh(LANCER_TEST_DATA_DIR "/msh/cube_tet4_v41_bin.msh"), 1.5f, true);
   const Mesh cubeAndBall = readMsh(multimaterial("cube_sphere_v41.msh"));

@@ -321,12 +321,12 @@ TEST(OpticsAnalytic, DepthZeroRendersExactlyTheLocalModel) {
   }
   local.render.maxDepth = 5;
   const std::vector<Mesh> meshes = {unitSphere(), unitSphere(), unitSphere()};
-  const Image depthZero = test::renderScene(optical, test::sceneFromMeshes(optical, meshes));
-  const Image reference = test::renderScene(local, test::sceneFromMeshes(local, meshes));
+  const Image depthZero = test::renderMeshes(optical, meshes);
+  const Image reference = test::renderMeshes(local, meshes);
   EXPECT_TRUE(depthZero == reference);
   // And the optics do change the picture once the depth allows it (the test can fail).
   optical.render.maxDepth = 1;
-  EXPECT_FALSE(test::renderScene(optical, test::sceneFromMeshes(optical, meshes)) == reference);
+  EXPECT_FALSE(test::renderMeshes(optical, meshes) == reference);
 }
 
 TEST(OpticsAnalytic, FurnaceKeepsEnergyAtEveryDepth) {

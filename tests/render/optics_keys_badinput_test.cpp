@@ -6,32 +6,27 @@
 #include <string>
 
 #include "lancer/scene/scene_loader.hpp"
-#include "lancer/util/input_error.hpp"
+#include "support/input_errors.hpp"
 
 namespace lancer {
 namespace {
 
-std::string errorOf(std::string_view text) {
-  try {
-    parseScene(text, "scene.toml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
+using test::sceneErrorOf;
 
 TEST(OpticsKeysBadInput, ReflectivityPlusTransparencyAboveOne) {
-  EXPECT_EQ(errorOf("[material.glass]\nreflectivity = [0.1, 0.3, 0.2]\ntransparency = 0.8\n"),
-            "scene.toml:3:16: error: material.glass: reflectivity + transparency must not exceed 1 in any channel "
-            "(found 0.3 + 0.8): they share the light leaving the surface with the local colour; lower one of them");
+  EXPECT_EQ(
+      sceneErrorOf("[material.glass]\nreflectivity = [0.1, 0.3, 0.2]\ntransparency = 0.8\n"),
+      "scene.toml:3:16: error: material.glass: reflectivity + transparency must not exceed 1 in any channel "
+      "(found 0.3 + 0.8): they share the light leaving the surface with the local colour; lower one of them");
   // Exactly 1 is allowed: a perfect glass with a coloured mirror share.
-  EXPECT_EQ(errorOf("[material.glass]\nreflectivity = 0.25\ntransparency = 0.75\n"), "(no InputError)");
+  EXPECT_EQ(sceneErrorOf("[material.glass]\nreflectivity = 0.25\ntransparency = 0.75\n"), "(no InputError)");
 }
 
 TEST(OpticsKeysBadInput, AdaptiveThresholdMustBePositive) {
-  const std::string error = errorOf("[render]\nsampler = \"adaptive\"\nadaptive_threshold = 0\n");
+  const std::string error = sceneErrorOf("[render]\nsampler = \"adaptive\"\nadaptive_threshold = 0\n");
   EXPECT_TRUE(error.starts_with("scene.toml:3:22: error: render.adaptive_threshold")) << error;
-  EXPECT_EQ(errorOf("[render]\nsampler = \"adaptive\"\nsamples = 12\nadaptive_threshold = 0.02\n"), "(no InputError)");
+  EXPECT_EQ(sceneErrorOf("[render]\nsampler = \"adaptive\"\nsamples = 12\nadaptive_threshold = 0.02\n"),
+            "(no InputError)");
 }
 
 TEST(OpticsKeysBadInput, OpticalMaterialKeysAreRead) {

@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <vector>
 
-#include "image/image_test_util.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/render/animation.hpp"
 #include "lancer/scene/quick_look.hpp"
-#include "render/animate_cli_util.hpp"
+#include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {

@@ -20,15 +20,8 @@ Material plainMaterial() {
 
 // An orthographic camera at height 5 looking down -z at a window `viewHeight` tall.
 SceneDescription topDownScene(int width, int height, double viewHeight) {
-  SceneDescription d;
-  d.render.width = width;
-  d.render.height = height;
-  d.render.maxDepth = 0;
+  SceneDescription d = test::topDownView(width, height, viewHeight);
   d.render.background = {0, 0, 0};
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = Vec3d{0, 0, 5};
-  d.camera.lookAt = Vec3d{0, 0, 0};
-  d.camera.viewHeight = viewHeight;
   d.ambient = {0.2f, 0.2f, 0.2f};
   d.materials = {plainMaterial()};
   return d;
@@ -141,16 +134,16 @@ TEST(RenderAnalytic, FarFromOriginRendersLikeAtOrigin) {
   SceneDescription d = topDownScene(48, 48, 2.0);
   d.lights = {{{0.5, 0.5, 3}, {1, 1, 1}, {1, 0, 0}}};
   d.meshes.resize(2);
-  const Image atOrigin = test::renderScene(
-      d, test::sceneFromMeshes(d, {test::squareMesh(-2, -2, 2, 2, 0), test::squareMesh(-0.5f, -0.5f, 0.5f, 0.5f, 1)}));
+  const Image atOrigin = test::renderMeshes(
+      d, {test::squareMesh(-2, -2, 2, 2, 0), test::squareMesh(-0.5f, -0.5f, 0.5f, 0.5f, 1)});
   SceneDescription far = d;
   const double offset = 1e6;
   far.camera.position->x += offset;
   far.camera.lookAt->x += offset;
   far.lights[0].position.x += offset;
   for (MeshInstance& instance : far.meshes) instance.translate = {offset, 0, 0};
-  const Image translated = test::renderScene(
-      far, test::sceneFromMeshes(far, {test::squareMesh(-2, -2, 2, 2, 0), test::squareMesh(-0.5f, -0.5f, 0.5f, 0.5f, 1)}));
+  const Image translated = test::renderMeshes(
+      far, {test::squareMesh(-2, -2, 2, 2, 0), test::squareMesh(-0.5f, -0.5f, 0.5f, 0.5f, 1)});
   double maxDifference = 0;
   for (int y = 0; y < 48; ++y)
     for (int x = 0; x < 48; ++x) maxDifference = std::max(maxDifference, double(std::abs(atOrigin.at(x, y).r - translated.at(x, y).r)));

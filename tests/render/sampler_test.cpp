@@ -42,22 +42,12 @@ constexpr double kEdgeOffset = 0.0123;  // keeps the edge off pixel corners
 // A white half-plane {p : p . (cos a, sin a) >= kEdgeOffset} on black, seen straight down by an
 // orthographic camera, ambient light only: a pixel's value is the fraction of its samples inside.
 SceneDescription halfPlaneScene(double angleDegrees, int samples, SamplerKind sampler) {
-  SceneDescription d;
-  d.render.width = d.render.height = kSize;
+  SceneDescription d = test::topDownView(kSize, kSize, kViewHeight);
   d.render.samples = samples;
   d.render.sampler = sampler;
-  d.render.maxDepth = 0;
   d.render.background = {0, 0, 0};
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = Vec3d{0, 0, 5};
-  d.camera.lookAt = Vec3d{0, 0, 0};
-  d.camera.viewHeight = kViewHeight;
   d.ambient = {1, 1, 1};
-  Material white;
-  white.name = "white";
-  white.ka = {1, 1, 1};
-  white.kd = white.ks = {0, 0, 0};
-  d.materials = {white};
+  d.materials = {test::ambientOnlyMaterial("white", {1, 1, 1})};
   d.meshes.resize(1);
   d.meshes[0].rotateDegrees = {0, 0, angleDegrees};
   return d;
@@ -65,11 +55,7 @@ SceneDescription halfPlaneScene(double angleDegrees, int samples, SamplerKind sa
 
 Image renderHalfPlane(const SceneDescription& d, int threads = 0, RenderStats* stats = nullptr) {
   const Scene scene = test::sceneFromMeshes(d, {test::squareMesh(float(kEdgeOffset), -20, 20, 20, 0)});
-  const Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, AccelKind::KdTreeSah);
-  const Camera camera = makeCamera(d.camera, scene, d.render);
-  RenderOptions options;
-  options.threads = threads;
-  return Renderer(scene, accelerator, camera, d.render).renderImage(options, stats);
+  return test::renderScene(d, scene, AccelKind::KdTreeSah, threads, stats);
 }
 
 TEST(Sampler, RegularGridCoverageWithinHalfASampleRowOfTheExactArea) {

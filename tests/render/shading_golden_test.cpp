@@ -3,6 +3,7 @@
 // material. Scenes and meshes are in tests/data/render; regenerate with scripts/update_golden.sh.
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <string>
 
 #include "lancer/scene/scene_loader.hpp"
@@ -11,10 +12,6 @@
 
 namespace lancer {
 namespace {
-
-// 8-bit PSNR floor: differences of about one 8-bit step everywhere stay far above it, a shifted
-// shadow or a wrong normal falls far below.
-constexpr double kMinPsnrDb = 40.0;
 
 const std::string kDataDir = LANCER_TEST_DATA_DIR "/render/";
 
@@ -25,24 +22,31 @@ Image renderSceneFile(const std::string& sceneFile, ShadingMode shading, AccelKi
   return test::renderScene(description, scene, accel);
 }
 
-TEST(ShadingGolden, FlatSphereShowsItsFacets) {
-  test::expectImageNear(renderSceneFile("ball_on_floor.toml", ShadingMode::Flat), kDataDir + "golden/ball_flat.png",
-                        kMinPsnrDb);
+struct SphereCase {
+  const char* name;  // ShadingGolden/ShadedSphere.MatchesItsGolden/<name>
+  ShadingMode shading;
+  const char* golden;  // in tests/data/render/golden
+};
+
+std::ostream& operator<<(std::ostream& out, const SphereCase& c) { return out << c.golden; }
+
+class ShadedSphere : public testing::TestWithParam<SphereCase> {};
+
+TEST_P(ShadedSphere, MatchesItsGolden) {
+  test::expectImageNear(renderSceneFile("ball_on_floor.toml", GetParam().shading),
+                        kDataDir + "golden/" + GetParam().golden, test::kRenderGoldenMinPsnrDb);
 }
 
-TEST(ShadingGolden, GouraudSphere) {
-  test::expectImageNear(renderSceneFile("ball_on_floor.toml", ShadingMode::Gouraud),
-                        kDataDir + "golden/ball_gouraud.png", kMinPsnrDb);
-}
-
-TEST(ShadingGolden, PhongSphere) {
-  test::expectImageNear(renderSceneFile("ball_on_floor.toml", ShadingMode::Phong), kDataDir + "golden/ball_phong.png",
-                        kMinPsnrDb);
-}
+// Flat shading shows the sphere's facets; Gouraud and Phong differ in the highlights.
+INSTANTIATE_TEST_SUITE_P(ShadingGolden, ShadedSphere,
+                         testing::Values(SphereCase{"Flat", ShadingMode::Flat, "ball_flat.png"},
+                                         SphereCase{"Gouraud", ShadingMode::Gouraud, "ball_gouraud.png"},
+                                         SphereCase{"Phong", ShadingMode::Phong, "ball_phong.png"}),
+                         [](const testing::TestParamInfo<SphereCase>& param) { return param.param.name; });
 
 TEST(ShadingGolden, OrthographicPartWithGroupMaterial) {
   test::expectImageNear(renderSceneFile("bracket_ortho.toml", ShadingMode::Phong),
-                        kDataDir + "golden/bracket_ortho.png", kMinPsnrDb);
+                        kDataDir + "golden/bracket_ortho.png", test::kRenderGoldenMinPsnrDb);
 }
 
 TEST(ShadingGolden, ShadingModesReallyDiffer) {
@@ -51,9 +55,9 @@ TEST(ShadingGolden, ShadingModesReallyDiffer) {
   const Image flat = renderSceneFile("ball_on_floor.toml", ShadingMode::Flat);
   const Image gouraud = renderSceneFile("ball_on_floor.toml", ShadingMode::Gouraud);
   const Image phong = renderSceneFile("ball_on_floor.toml", ShadingMode::Phong);
-  EXPECT_LT(test::psnr8(flat, phong), kMinPsnrDb);
-  EXPECT_LT(test::psnr8(gouraud, phong), kMinPsnrDb);
-  EXPECT_LT(test::psnr8(flat, gouraud), kMinPsnrDb);
+  EXPECT_LT(test::psnr8(flat, phong), test::kRenderGoldenMinPsnrDb);
+  EXPECT_LT(test::psnr8(gouraud, phong), test::kRenderGoldenMinPsnrDb);
+  EXPECT_LT(test::psnr8(flat, gouraud), test::kRenderGoldenMinPsnrDb);
 }
 
 TEST(ShadingGolden, BruteForceRendersTheSameImage) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "lancer/scene/scene_loader.hpp"
+#include "support/input_errors.hpp"
 #include "support/test_scenes.hpp"
 
 namespace lancer {
@@ -11,15 +12,9 @@ namespace {
 // A 1 x 1 occluder at z = 1 over a catcher floor at z = 0, a light straight above at z = 10, seen
 // from above; the occluder's shadow is |x|, |y| < 0.5 * 10 / 9.
 SceneDescription occluderOverCatcher() {
-  SceneDescription d;
-  d.render.width = d.render.height = 40;
-  d.render.maxDepth = 0;
+  SceneDescription d = test::topDownView(40, 40, 2);
   d.render.shading = ShadingMode::Flat;
   d.render.background = {0.8f, 0.6f, 0.4f};
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = Vec3d{0, 0, 5};
-  d.camera.lookAt = Vec3d{0, 0, 0};
-  d.camera.viewHeight = 2;
   d.ambient = {0.25f, 0.25f, 0.25f};
   d.lights = {{Vec3d{0, 0, 10}, {0.75f, 0.75f, 0.75f}, {1, 0, 0}}};
   d.materials = {defaultMaterial()};
@@ -29,7 +24,7 @@ SceneDescription occluderOverCatcher() {
 }
 
 Image render(const SceneDescription& d) {
-  return test::renderScene(d, test::sceneFromMeshes(d, {test::squareMesh(-0.5f, -0.5f, 0.5f, 0.5f, 1)}));
+  return test::renderMeshes(d, {test::squareMesh(-0.5f, -0.5f, 0.5f, 0.5f, 1)});
 }
 
 TEST(ShadowCatcher, DarkensTheBackgroundByTheShareOfLightTakenAway) {
@@ -67,14 +62,7 @@ TEST(ShadowCatcher, DefaultHeightIsTheLowestPointAndKeysAreChecked) {
   ASSERT_TRUE(parsed.floor.has_value());
   EXPECT_EQ(*parsed.floor->height, -2.0);
   EXPECT_EQ(parsed.floor->normal, (Vec3d{0, 0, 1}));
-  auto messageOf = [](const std::string& text) {
-    try {
-      parseScene(text, "f.toml");
-    } catch (const InputError& error) {
-      return std::string(error.what());
-    }
-    return std::string("no error");
-  };
+  auto messageOf = [](const std::string& text) { return test::sceneErrorOf(text, "f.toml"); };
   EXPECT_EQ(messageOf("[floor]\nheight = 0\n"), "f.toml:1:1: error: [floor] has no 'shadow_catcher'; add shadow_catcher = true");
   EXPECT_NE(messageOf("[floor]\nshadow_catcher = false\n").find("f.toml:2:18: error: floor.shadow_catcher = false is not supported"),
             std::string::npos);

@@ -16,23 +16,11 @@ constexpr double kViewHeight = 2.4;
 const Vec3d kLight{3.0, 4.0, 6.0};
 
 SceneDescription sphereScene(ShadingMode shading) {
-  SceneDescription d;
-  d.render.width = kSize;
-  d.render.height = kSize;
-  d.render.maxDepth = 0;
+  SceneDescription d = test::topDownView(kSize, kSize, kViewHeight);
   d.render.shading = shading;
-  d.camera.projection = Projection::Orthographic;
-  d.camera.position = Vec3d{0, 0, 5};
-  d.camera.lookAt = Vec3d{0, 0, 0};
-  d.camera.viewHeight = kViewHeight;
   d.ambient = {0.15f, 0.15f, 0.15f};
   d.lights = {{kLight, {0.9f, 0.8f, 0.7f}, {1, 0, 0}}};
-  Material m;
-  m.name = "matte";
-  m.ka = {0.4f, 0.5f, 0.6f};
-  m.kd = {0.7f, 0.6f, 0.5f};
-  m.ks = {0, 0, 0};
-  d.materials = {m};
+  d.materials = {test::matteMaterial("matte", {0.4f, 0.5f, 0.6f}, {0.7f, 0.6f, 0.5f})};
   d.meshes.resize(1);
   d.meshes[0].smoothAngleDegrees = 80;
   return d;

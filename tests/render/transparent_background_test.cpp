@@ -12,21 +12,16 @@ namespace {
 TEST(TransparentBackground, AlphaIsTheCoveredFractionOfEachPixel) {
   for (SamplerKind sampler : {SamplerKind::Regular, SamplerKind::Stratified}) {
     for (int n : {2, 4, 8}) {
-      SceneDescription d;
-      d.render.width = d.render.height = 8;
+      // One world unit per pixel; pixel column 4 spans x in [0, 1].
+      SceneDescription d = test::topDownView(8, 8, 8);
       d.render.samples = n * n;
       d.render.sampler = sampler;
       d.render.transparentBackground = true;
-      d.render.maxDepth = 0;
-      d.camera.projection = Projection::Orthographic;
-      d.camera.position = Vec3d{0, 0, 5};
-      d.camera.lookAt = Vec3d{0, 0, 0};
-      d.camera.viewHeight = 8;  // one world unit per pixel; pixel column 4 spans x in [0, 1]
       d.lights = {{Vec3d{0, 0, 9}, {1, 1, 1}, {1, 0, 0}}};
       d.materials = {defaultMaterial()};
       d.meshes.resize(1);
       // Covers x < 0.3: column 4 is 30% covered, columns 0..3 fully, 5..7 not at all.
-      const Image image = test::renderScene(d, test::sceneFromMeshes(d, {test::squareMesh(-10, -10, 0.3f, 10, 0)}));
+      const Image image = test::renderMeshes(d, {test::squareMesh(-10, -10, 0.3f, 10, 0)});
       double meanAlpha = 0;
       for (int y = 0; y < 8; ++y) {
         meanAlpha += image.at(4, y).a / 8.0;

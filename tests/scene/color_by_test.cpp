@@ -8,6 +8,8 @@
 #include <cmath>
 
 #include "lancer/mesh/msh_reader.hpp"
+#include "support/files.hpp"
+#include "support/input_errors.hpp"
 
 namespace lancer {
 namespace {
@@ -21,15 +23,10 @@ std::optional<ColorBy> parse(const std::string& text) {
 }
 
 std::string parseError(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::messageOf([&] { parse(text); });
 }
 
-Mesh fieldMesh() { return readMsh(std::string(LANCER_TEST_DATA_DIR) + "/fields/node_xy_v41_ascii.msh"); }
+Mesh fieldMesh() { return readMsh(test::dataFile("fields/node_xy_v41_ascii.msh")); }
 
 TEST(ColorByTest, ReadsAllKeys) {
   const auto spec =
@@ -95,12 +92,7 @@ TEST(ColorByTest, ExplicitRangeClamps) {
 }
 
 std::string resolveError(const ColorBy& spec, const Mesh& mesh) {
-  try {
-    resolveColorBy(spec, mesh);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
+  return test::messageOf([&] { resolveColorBy(spec, mesh); });
 }
 
 TEST(ColorByTest, UnknownFieldNamesTheFieldsPresent) {

@@ -7,24 +7,18 @@
 
 #include "lancer/scene/scene_loader.hpp"
 #include "lancer/util/input_error.hpp"
+#include "support/input_errors.hpp"
 
 namespace lancer {
 namespace {
 
 const std::string kDataDir = LANCER_TEST_DATA_DIR "/scene";
 
-std::string errorOf(std::string_view text) {
-  try {
-    parseScene(text, "scene.toml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
+using test::sceneErrorOf;
 
 // `where` is "LINE:COL"; `message` must appear in the text after "scene.toml:LINE:COL: error: ".
 testing::AssertionResult failsAt(std::string_view text, std::string_view where, std::string_view message) {
-  const std::string actual = errorOf(text);
+  const std::string actual = sceneErrorOf(text);
   const std::string prefix = "scene.toml:" + std::string(where) + ": error: ";
   if (actual.starts_with(prefix) && actual.find(message, prefix.size()) != std::string::npos)
     return testing::AssertionSuccess();
@@ -35,7 +29,7 @@ testing::AssertionResult failsAt(std::string_view text, std::string_view where, 
 // ---- TOML syntax: toml++'s description and position, passed through as they are -------------------
 
 TEST(SceneLoaderBadInput, SyntaxErrorKeepsTomlPosition) {
-  EXPECT_EQ(errorOf("[render]\nwidth = 800\nheight = = 600\n"),
+  EXPECT_EQ(sceneErrorOf("[render]\nwidth = 800\nheight = = 600\n"),
             "scene.toml:3:10: error: Error while parsing value: could not determine value type");
 }
 
@@ -91,7 +85,7 @@ TEST(SceneLoaderBadInput, DirectoryInsteadOfFile) {
 // ---- unknown keys and tables ---------------------------------------------------------------------------
 
 TEST(SceneLoaderBadInput, MisspeltKeySuggestsTheClosest) {
-  EXPECT_EQ(errorOf("[render]\nwidht = 800\n"),
+  EXPECT_EQ(sceneErrorOf("[render]\nwidht = 800\n"),
             "scene.toml:2:1: error: unknown key 'widht' in [render] (did you mean 'width'?)");
   EXPECT_TRUE(failsAt("[material.steel]\nshinyness = 50\n", "2:1",
                       "unknown key 'shinyness' in [material.steel] (did you mean 'shininess'?)"));
@@ -101,7 +95,7 @@ TEST(SceneLoaderBadInput, MisspeltKeySuggestsTheClosest) {
 
 TEST(SceneLoaderBadInput, UnknownKeyWithNothingCloseListsTheKnownOnes) {
   EXPECT_EQ(
-      errorOf("[render]\nwidth = 10\ncolour = [1, 0, 0]\n"),
+      sceneErrorOf("[render]\nwidth = 10\ncolour = [1, 0, 0]\n"),
       "scene.toml:3:1: error: unknown key 'colour' in [render]; expected one of: width, height, samples, "
       "max_depth, sampler, shading, background, output, srgb, adaptive_threshold");
   EXPECT_TRUE(failsAt("[[light]]\nposition = [0, 0, 0]\ncolor = [1, 1, 1]\n", "3:1",
@@ -118,7 +112,7 @@ TEST(SceneLoaderBadInput, UnknownKeyWrittenAsDottedKey) {
 }
 
 TEST(SceneLoaderBadInput, UnknownTopLevelTable) {
-  EXPECT_EQ(errorOf("[ground]\nshadow_catcher = true\n"),
+  EXPECT_EQ(sceneErrorOf("[ground]\nshadow_catcher = true\n"),
             "scene.toml:1:2: error: unknown key 'ground'; expected one of: render, camera, ambient, light, "
             "material, mesh, animation, clip, floor");
   EXPECT_TRUE(failsAt("[[clip]]\npoint = [0, 0, 0]\n", "1:1", "clip[0] has no 'normal'"));
@@ -176,13 +170,13 @@ TEST(SceneLoaderBadInput, UnknownAnimationKey) {
 // ---- wrong types ---------------------------------------------------------------------------------------
 
 TEST(SceneLoaderBadInput, StringWhereIntegerExpected) {
-  EXPECT_EQ(errorOf("[render]\nwidth = \"800\"\n"),
+  EXPECT_EQ(sceneErrorOf("[render]\nwidth = \"800\"\n"),
             "scene.toml:2:9: error: render.width must be an integer, found string \"800\"");
 }
 
 TEST(SceneLoaderBadInput, FloatWhereIntegerExpected) {
   EXPECT_EQ(
-      errorOf("[render]\nheight = 600.0\n"),
+      sceneErrorOf("[render]\nheight = 600.0\n"),
       "scene.toml:2:10: error: render.height must be an integer, found floating-point number 600; write it "
       "without a decimal point");
   EXPECT_TRUE(failsAt("[render]\nsamples = 4.5\n", "2:11",
@@ -262,7 +256,7 @@ TEST(SceneLoaderBadInput, GroupsNotATable) {
 
 TEST(SceneLoaderBadInput, MisspeltShading) {
   EXPECT_EQ(
-      errorOf("[render]\nshading = \"phnog\"\n"),
+      sceneErrorOf("[render]\nshading = \"phnog\"\n"),
       "scene.toml:2:11: error: render.shading must be \"flat\", \"gouraud\" or \"phong\", found \"phnog\" "
       "(did you mean 'phong'?)");
   EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\nshading = \"smooth\"\n", "3:11",
@@ -308,7 +302,7 @@ TEST(SceneLoaderBadInput, SampleCount) {
 }
 
 TEST(SceneLoaderBadInput, SamplesNotASquareForGridSamplers) {
-  EXPECT_EQ(errorOf("[render]\nsamples = 8\n"),
+  EXPECT_EQ(sceneErrorOf("[render]\nsamples = 8\n"),
             "scene.toml:2:11: error: render.samples must be a perfect square (n x n sub-pixel grid) for the "
             "regular "
             "sampler, found 8; use 4 or 9, or sampler = \"adaptive\"");
@@ -356,7 +350,7 @@ TEST(SceneLoaderBadInput, AttenuationThatDividesByZero) {
 }
 
 TEST(SceneLoaderBadInput, MaterialCoefficientAboveOne) {
-  EXPECT_EQ(errorOf("[material.steel]\nka = [1.5, 0, 0]\n"),
+  EXPECT_EQ(sceneErrorOf("[material.steel]\nka = [1.5, 0, 0]\n"),
             "scene.toml:2:7: error: material.steel.ka[0] must be between 0 and 1, found 1.5");
   EXPECT_TRUE(failsAt("[material.steel]\nks = [0, 0, 2]\n", "2:13",
                       "material.steel.ks[2] must be between 0 and 1, found 2"));
@@ -433,7 +427,7 @@ TEST(SceneLoaderBadInput, AnimationZeroAxis) {
 
 TEST(SceneLoaderBadInput, UpParallelToViewDirection) {
   EXPECT_EQ(
-      errorOf("[camera]\nposition = [0, 5, 0]\nlook_at = [0, 0, 0]\nup = [0, 2, 0]\n"),
+      sceneErrorOf("[camera]\nposition = [0, 5, 0]\nlook_at = [0, 0, 0]\nup = [0, 2, 0]\n"),
       "scene.toml:4:6: error: camera.up [0, 2, 0] is parallel to the view direction (look_at - position = "
       "[0, -5, 0]); choose an up across the line of sight, e.g. up = [0, 0, 1]");
 }
@@ -453,7 +447,7 @@ TEST(SceneLoaderBadInput, LookAtEqualsPosition) {
 // ---- missing required keys -----------------------------------------------------------------------------
 
 TEST(SceneLoaderBadInput, LightWithoutPosition) {
-  EXPECT_EQ(errorOf("[[light]]\nintensity = [1, 1, 1]\n"),
+  EXPECT_EQ(sceneErrorOf("[[light]]\nintensity = [1, 1, 1]\n"),
             "scene.toml:1:1: error: light[0] has no 'position'; add position = [x, y, z]");
 }
 
@@ -466,7 +460,7 @@ TEST(SceneLoaderBadInput, MeshWithoutFile) {
 
 TEST(SceneLoaderBadInput, UnknownMeshMaterialSuggestsTheClosest) {
   EXPECT_EQ(
-      errorOf("[material.steel]\n[[mesh]]\nfile = \"a.msh\"\nmaterial = \"stel\"\n"),
+      sceneErrorOf("[material.steel]\n[[mesh]]\nfile = \"a.msh\"\nmaterial = \"stel\"\n"),
       "scene.toml:4:12: error: mesh[0].material names material 'stel', which is not defined (did you mean "
       "'steel'?); defined materials: default, steel");
 }
@@ -487,7 +481,7 @@ TEST(SceneLoaderBadInput, EmptyGroupName) {
 
 TEST(SceneLoaderBadInput, OrbitLightOutOfRange) {
   EXPECT_EQ(
-      errorOf("[[light]]\nposition = [0, 0, 0]\n[animation]\norbit = \"light:1\"\n"),
+      sceneErrorOf("[[light]]\nposition = [0, 0, 0]\n[animation]\norbit = \"light:1\"\n"),
       "scene.toml:4:9: error: animation.orbit names light 1, but the scene has 1 light (use \"light:0\")");
   EXPECT_TRUE(failsAt(
       "[[light]]\nposition = [0, 0, 0]\n[[light]]\nposition = [1, 0, 0]\n[animation]\norbit = \"light:2\"\n",

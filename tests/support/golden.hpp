@@ -9,6 +9,11 @@
 
 namespace lancer::test {
 
+// The PSNR floor of the render goldens: differences of about one 8-bit step everywhere stay far
+// above it; a shifted shadow, a wrong normal, a missing or moved cap or a face in another colour
+// falls far below (the shading, cut and multi-material goldens each have a test that checks this).
+inline constexpr double kRenderGoldenMinPsnrDb = 40.0;
+
 // PSNR in dB over the 8-bit encoded R, G, B (and alpha when either image has transparency):
 // 10 log10(255^2 / MSE); +infinity for identical images. Sizes must match.
 double psnr8(const Image& a, const Image& b, TransferCurve curve = TransferCurve::Linear);

@@ -12,11 +12,31 @@ Mesh squareMesh(float x0, float y0, float x1, float y1, float height, std::int32
   return mesh;
 }
 
-Material ambientOnlyMaterial(const char* name, Vec3 ka) {
+SceneDescription orthographicView(int width, int height, Vec3d position, Vec3d lookAt, double viewHeight,
+                                  Vec3d up) {
+  SceneDescription d;
+  d.render.width = width;
+  d.render.height = height;
+  d.render.maxDepth = 0;
+  d.camera.projection = Projection::Orthographic;
+  d.camera.position = position;
+  d.camera.lookAt = lookAt;
+  d.camera.up = up;
+  d.camera.viewHeight = viewHeight;
+  return d;
+}
+
+SceneDescription topDownView(int width, int height, double viewHeight) {
+  return orthographicView(width, height, Vec3d{0, 0, 5}, Vec3d{0, 0, 0}, viewHeight);
+}
+
+Material ambientOnlyMaterial(const char* name, Vec3 ka) { return matteMaterial(name, ka, {0, 0, 0}); }
+
+Material matteMaterial(const char* name, Vec3 ka, Vec3 kd) {
   Material m;
   m.name = name;
   m.ka = ka;
-  m.kd = {0, 0, 0};
+  m.kd = kd;
   m.ks = {0, 0, 0};
   return m;
 }
@@ -25,12 +45,18 @@ Scene sceneFromMeshes(const SceneDescription& description, std::vector<Mesh> mes
   return buildScene(description, std::move(meshes));
 }
 
-Image renderScene(const SceneDescription& description, const Scene& scene, AccelKind accel, int threads) {
+Image renderScene(const SceneDescription& description, const Scene& scene, AccelKind accel, int threads,
+                  RenderStats* stats) {
   const Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, accel);
   const Camera camera = makeCamera(description.camera, scene, description.render);
   RenderOptions options;
   options.threads = threads;
-  return Renderer(scene, accelerator, camera, description.render).renderImage(options);
+  return Renderer(scene, accelerator, camera, description.render).renderImage(options, stats);
+}
+
+Image renderMeshes(const SceneDescription& description, std::vector<Mesh> meshes, AccelKind accel,
+                   int threads) {
+  return renderScene(description, sceneFromMeshes(description, std::move(meshes)), accel, threads);
 }
 
 Image renderScene(const SceneDescription& description) { return renderScene(description, buildScene(description)); }

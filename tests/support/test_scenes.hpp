@@ -18,12 +18,27 @@ Mesh squareMesh(float x0, float y0, float x1, float y1, float height, std::int32
 // Builds the scene from in-memory meshes (one per description.meshes entry).
 Scene sceneFromMeshes(const SceneDescription& description, std::vector<Mesh> meshes);
 
+// An orthographic view of width x height pixels from `position` towards `lookAt`, `viewHeight`
+// world units tall, primary rays only (maxDepth 0): the camera of the analytic render tests, where
+// the world point behind each pixel is known exactly. Lights, materials and meshes are the caller's.
+SceneDescription orthographicView(int width, int height, Vec3d position, Vec3d lookAt, double viewHeight,
+                                  Vec3d up = {0, 1, 0});
+
+// orthographicView straight down -z from (0, 0, 5) onto the origin: +x to the right, +y up.
+SceneDescription topDownView(int width, int height, double viewHeight);
+
 // A material that shows only ambient light: under ambient 1 a pixel's value is exactly its ka.
 Material ambientOnlyMaterial(const char* name, Vec3 ka);
 
+// A material without specular highlights, so that flat shading gives one colour per face.
+Material matteMaterial(const char* name, Vec3 ka, Vec3 kd);
+
 // Renders with the given accelerator kind and thread count.
-Image renderScene(const SceneDescription& description, const Scene& scene, AccelKind accel = AccelKind::KdTreeSah,
-                  int threads = 0);
+Image renderScene(const SceneDescription& description, const Scene& scene,
+                  AccelKind accel = AccelKind::KdTreeSah, int threads = 0, RenderStats* stats = nullptr);
+// Builds the scene from in-memory meshes (one per description.meshes entry) and renders it.
+Image renderMeshes(const SceneDescription& description, std::vector<Mesh> meshes,
+                   AccelKind accel = AccelKind::KdTreeSah, int threads = 0);
 // Reads the description's meshes, builds its scene and renders it (kd-tree, all cores).
 Image renderScene(const SceneDescription& description);
 

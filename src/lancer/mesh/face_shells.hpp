@@ -18,7 +18,8 @@ struct FaceEdge {
 };
 
 // The shells of a face set, shared by the mesh statistics (mesh_stats.hpp), shell orientation
-// (shell_orientation.hpp) and cavity finding (shell_nesting.hpp), which need the same edge table.
+// (shell_orientation.hpp), cavity finding (shell_nesting.hpp) and the regions of non-manifold shells
+// (shell_regions.hpp), which need the same edge table.
 struct FaceShells {
   std::vector<FaceEdge> edges;             // every face's edges, sorted by key
   std::vector<std::uint32_t> shellOfFace;  // shells numbered in order of their first face

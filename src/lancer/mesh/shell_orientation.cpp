@@ -1,10 +1,12 @@
 #include "lancer/mesh/shell_orientation.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/face_shells.hpp"
 #include "lancer/mesh/shell_nesting.hpp"
+#include "lancer/mesh/shell_regions.hpp"
 
 namespace lancer {
 namespace {
@@ -46,6 +48,55 @@ FaceLinks manifoldLinks(const std::vector<FaceEdge>& edges, std::size_t faceCoun
     result.links[fill[b.face]++] = {a.face, same};
   });
   return result;
+}
+
+// Surfaces only, meeting three or more on edges (shell_regions.hpp): each face is turned to face
+// out of a bounded region behind it and bounds a solid; a face between two regions becomes an
+// interface whose sides take their regions' groups (the group most of a region's outer faces
+// carry, or of all its faces when none is outer).
+void orientShellRegions(std::span<const Vec3> positions, std::vector<MeshFace>& faces,
+                        std::vector<std::uint8_t>& edgeMasks, std::span<const std::int32_t> facePhysicalTag,
+                        const FaceShells& shells, ShellOrientationReport& report) {
+  const ShellRegions regions = findShellRegions(positions, faces, shells);
+  if (regions.empty()) return;
+  const std::size_t faceCount = faces.size();
+  std::vector<std::int32_t> regionTag(regions.bounded.size(), 0);
+  if (!facePhysicalTag.empty()) {
+    // Votes per region: outer faces first; a region with none counts all its faces.
+    std::vector<std::map<std::int32_t, std::uint64_t>> outerVotes(regions.bounded.size()),
+        allVotes(regions.bounded.size());
+    for (std::size_t f = 0; f < faceCount; ++f) {
+      if (regions.front[f] == kNoRegion) continue;
+      for (const std::uint32_t region : {regions.front[f], regions.back[f]}) {
+        if (!regions.bounded[region]) continue;
+        ++allVotes[region][facePhysicalTag[f]];
+        const std::uint32_t other = region == regions.front[f] ? regions.back[f] : regions.front[f];
+        if (!regions.bounded[other]) ++outerVotes[region][facePhysicalTag[f]];
+      }
+    }
+    for (std::size_t r = 0; r < regionTag.size(); ++r) {
+      const auto& votes = outerVotes[r].empty() ? allVotes[r] : outerVotes[r];
+      std::uint64_t best = 0;
+      for (const auto& [tag, count] : votes)
+        if (count > best) best = count, regionTag[r] = tag;
+    }
+  }
+  std::uint8_t unusedMask = kAllEdges;
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    if (regions.front[f] == kNoRegion) continue;
+    report.faceBoundsSolid[f] = 1;
+    const std::uint32_t front = regions.front[f], back = regions.back[f];
+    if (!regions.bounded[back]) {  // the bounded region is in front: turn the face out of it
+      reverseWinding(faces[f], edgeMasks.empty() ? unusedMask : edgeMasks[f]);
+      ++report.flippedFaces;
+      continue;
+    }
+    if (!regions.bounded[front] || facePhysicalTag.empty()) continue;
+    // Between two regions: behind it the back region's group, in front the front region's.
+    report.faceRegionTags.push_back({static_cast<std::uint32_t>(f), regionTag[back]});
+    if (report.faceEnclosedBy.empty()) report.faceEnclosedBy.assign(faceCount, ShellOrientationReport::kNotEnclosed);
+    report.faceEnclosedBy[f] = regionTag[front];
+  }
 }
 
 }  // namespace
@@ -122,6 +173,7 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
     if (interfaceShell[s]) cavity[s] = 0;
 
   std::uint8_t unusedMask = kAllEdges;
+  if (faceSide.empty()) orientShellRegions(positions, faces, edgeMasks, facePhysicalTag, shells, report);
   for (std::size_t f = 0; f < faceCount; ++f) {
     const std::uint32_t shell = shells.shellOfFace[f];
     if (!solidShell[shell]) {

@@ -4,6 +4,7 @@
 
 #include <climits>
 #include <cstdint>
+#include <utility>
 #include <span>
 #include <vector>
 
@@ -30,6 +31,10 @@ struct ShellOrientationReport {
   // solid lies in another.
   static constexpr std::int32_t kNotEnclosed = INT32_MIN;
   std::vector<std::int32_t> faceEnclosedBy;
+  // Faces between two regions of a surface that meets three or more on edges (shell_regions.hpp):
+  // the group of the region behind each, in face order (its material is that group's, whatever
+  // groups the face itself is in); faceEnclosedBy holds the group of the region in front.
+  std::vector<std::pair<std::uint32_t, std::int32_t>> faceRegionTags;
 };
 
 // For each shell (faces joined through shared edges, see findFaceShells): when every edge is shared

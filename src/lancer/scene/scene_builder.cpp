@@ -223,6 +223,7 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     scene.positions.insert(scene.positions.end(), positions.begin(), positions.end());
     scene.cornerNormals.normals.insert(scene.cornerNormals.normals.end(), normals.normals.begin(),
                                        normals.normals.end());
+    std::size_t nextRegionTag = 0;  // orientation.faceRegionTags is in face order
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
       MeshFace face = mesh.faces[f];
       auto corners = normals.faceCorner[f];
@@ -230,7 +231,11 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
         face.vertex[c] += vertexBase;
         corners[c] += normalBase;
       }
-      scene.faceMaterial.push_back(materialOf(mesh.facePhysicalTag[f], mesh.faceEntityTag[f]));
+      // A face between two regions of a surface-only mesh takes its region's group, that one alone.
+      const bool regionTagged = nextRegionTag < orientation.faceRegionTags.size() &&
+                                orientation.faceRegionTags[nextRegionTag].first == f;
+      scene.faceMaterial.push_back(regionTagged ? materialOf(orientation.faceRegionTags[nextRegionTag++].second, 0)
+                                                : materialOf(mesh.facePhysicalTag[f], mesh.faceEntityTag[f]));
       // The material in front of the face: the outer volume of an interface, or the solid of another
       // group that a closed surface lies in (a steel ball drawn inside a glass one).
       std::optional<std::uint32_t> outer;

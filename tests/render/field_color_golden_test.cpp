@@ -1,0 +1,25 @@
+// Golden image of a field-coloured part: a gmsh-made square with the field x + 2 y, tilted and lit,
+// coloured with magma over a given range. Regenerate with scripts/update_golden.sh.
+#include <gtest/gtest.h>
+
+#include "lancer/image/color_map.hpp"
+#include "lancer/scene/scene_loader.hpp"
+#include "support/files.hpp"
+#include "support/golden.hpp"
+#include "support/test_scenes.hpp"
+
+namespace lancer {
+namespace {
+
+TEST(FieldColorGolden, TiltedSquare) {
+  const SceneDescription description = loadScene(test::dataFile("render/field_square.toml"));
+  const Scene scene = buildScene(description);
+  ASSERT_TRUE(scene.legend);
+  EXPECT_EQ(scene.legend->map, ColorMapKind::Magma);
+  EXPECT_EQ(scene.legend->low, 0.5);
+  test::expectImageNear(test::renderScene(description, scene),
+                        test::dataFile("render/golden/field_square.png"), test::kRenderGoldenMinPsnrDb);
+}
+
+}  // namespace
+}  // namespace lancer

@@ -1,0 +1,17 @@
+// The message of the InputError a call throws, for the tests that check what the user is told
+// (every bad-input path has a test of its message, not just of the failure).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <string_view>
+
+namespace lancer::test {
+
+// What `action` throws as an InputError, or "(no InputError)" when it throws none.
+std::string messageOf(const std::function<void()>& action);
+
+// The message of parseScene(text, fileName), as a scene file of that name would give it.
+std::string sceneErrorOf(std::string_view text, const std::string& fileName = "scene.toml");
+
+}  // namespace lancer::test

@@ -1,0 +1,61 @@
+#include "support/test_images.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "lancer/image/image_io.hpp"
+
+namespace lancer::test {
+
+SampleError sampleError(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+  SampleError e;
+  if (a.size() != b.size() || a.empty()) return {1e9, 255};
+  double sum = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const int d = std::abs(int{a[i]} - int{b[i]});
+    sum += d;
+    e.max = std::max(e.max, d);
+  }
+  e.mean = sum / static_cast<double>(a.size());
+  return e;
+}
+
+Image shadedSphere(int width, int height, float phase) {
+  Image image(width, height);
+  const float cx = width * (0.3f + 0.4f * phase), cy = height * 0.5f, radius = height * 0.35f;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const float dx = (x + 0.5f - cx) / radius, dy = (y + 0.5f - cy) / radius;
+      const float r2 = dx * dx + dy * dy;
+      if (r2 < 1) {
+        const float nz = std::sqrt(1 - r2);
+        const float diffuse = std::max(0.0f, -0.4f * dx - 0.5f * dy + 0.77f * nz);
+        image.at(x, y) = {0.1f + 0.8f * diffuse, 0.08f + 0.5f * diffuse, 0.05f + 0.3f * diffuse, 1};
+      } else {
+        const float t = static_cast<float>(y) / static_cast<float>(height);
+        image.at(x, y) = {0.2f * t, 0.25f * t, 0.5f * t + 0.1f, 1};
+      }
+    }
+  }
+  return image;
+}
+
+Image noise(int width, int height) {
+  Image image(width, height);
+  std::uint32_t state = 12345;
+  for (Rgba& p : image.pixels()) {
+    auto next = [&] {
+      state = state * 1664525u + 1013904223u;
+      return static_cast<float>(state >> 24) / 255.0f;
+    };
+    p = {next(), next(), next(), 1};
+  }
+  return image;
+}
+
+std::vector<std::uint8_t> pngRgb8(const std::string& path) {
+  return encodeImage8(readPng(path), TransferCurve::Linear, 3);
+}
+
+}  // namespace lancer::test

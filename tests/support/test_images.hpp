@@ -1,0 +1,33 @@
+// Pictures made in code for the image tests (a smooth-shaded sphere, incompressible noise) and the
+// 8-bit comparisons the writers' tests make against them.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lancer/image/image.hpp"
+
+namespace lancer::test {
+
+// Mean and largest absolute difference between 8-bit samples.
+struct SampleError {
+  double mean = 0;
+  int max = 0;
+};
+
+// {1e9, 255} when the sizes differ or both are empty.
+SampleError sampleError(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b);
+
+// A smooth-shaded test picture: a lit sphere over a vertical gradient, shifted by `phase` (0..1),
+// with far more than 256 colours, like a render.
+Image shadedSphere(int width, int height, float phase);
+
+// Opaque noise from a fixed linear congruential sequence: it does not compress, so every format's
+// file is about 3 bytes per pixel.
+Image noise(int width, int height);
+
+// A PNG as interleaved 8-bit RGB: exactly what lancer stored (linear curve, no alpha).
+std::vector<std::uint8_t> pngRgb8(const std::string& path);
+
+}  // namespace lancer::test
