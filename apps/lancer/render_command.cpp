@@ -94,7 +94,7 @@ int runRender(const RenderCommandOptions& options) {
   if (!output.empty()) imageFormatFromPath(output);  // refuse a bad extension before rendering
   if (!options.legend.empty()) {
     imageFormatFromPath(options.legend);
-    if (!prepared.scene.legend)
+    if (!prepared.scene.fieldColors)
       throw InputError(
           SourceLocation{options.input},
           "--legend needs a mesh coloured by a field (color_by = { field = \"...\" } in a [[mesh]])");
@@ -119,7 +119,7 @@ int runRender(const RenderCommandOptions& options) {
   if (!written) return interruptedExit(output);
   if (!options.legend.empty()) {
     // The bar holds the map's display values: written as they are, like the picture's field colours.
-    const Scene::FieldLegend& legend = *prepared.scene.legend;
+    const FieldColors::Legend& legend = prepared.scene.fieldColors->legend;
     writeImage(options.legend,
                colorBarImage(legend.map, legend.low, legend.high, kLegendWidth, kLegendHeight));
   }

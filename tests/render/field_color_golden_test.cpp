@@ -14,9 +14,9 @@ namespace {
 TEST(FieldColorGolden, TiltedSquare) {
   const SceneDescription description = loadScene(test::dataFile("render/field_square.toml"));
   const Scene scene = buildScene(description);
-  ASSERT_TRUE(scene.legend);
-  EXPECT_EQ(scene.legend->map, ColorMapKind::Magma);
-  EXPECT_EQ(scene.legend->low, 0.5);
+  ASSERT_TRUE(scene.fieldColors);
+  EXPECT_EQ(scene.fieldColors->legend.map, ColorMapKind::Magma);
+  EXPECT_EQ(scene.fieldColors->legend.low, 0.5);
   test::expectImageNear(test::renderScene(description, scene),
                         test::dataFile("render/golden/field_square.png"), test::kRenderGoldenMinPsnrDb);
 }

@@ -49,9 +49,7 @@ TEST(FieldColor, UncolouredMeshesCostNothing) {
   SceneDescription description = loadScene(kDataDir + "field_square_top.toml");
   description.meshes[0].colorBy.reset();
   const Scene scene = buildScene(description);
-  EXPECT_TRUE(scene.faceColorMap.empty());
-  EXPECT_TRUE(scene.vertexFieldT.empty());
-  EXPECT_FALSE(scene.legend);
+  EXPECT_FALSE(scene.fieldColors);  // no per-face or per-vertex arrays at all
 }
 
 TEST(FieldColor, UnknownFieldIsAnErrorAtTheSceneKey) {
@@ -74,14 +72,15 @@ TEST(FieldColor, ElementDataIsConstantPerFace) {
   SceneDescription description = loadScene(kDataDir + "field_square_top.toml");
   description.meshes[0].file = LANCER_TEST_DATA_DIR "/fields/element_xy_v41_bin.msh";
   const Scene scene = buildScene(description);
-  ASSERT_EQ(scene.faceFieldT.size(), scene.faces.size());
-  ASSERT_TRUE(scene.legend);
-  EXPECT_TRUE(scene.vertexFieldT.empty());
+  ASSERT_TRUE(scene.fieldColors);
+  const FieldColors& fields = *scene.fieldColors;
+  ASSERT_EQ(fields.faceFieldT.size(), scene.faces.size());
+  EXPECT_TRUE(fields.vertexFieldT.empty());
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-    EXPECT_EQ(scene.faceColorMap[f], (1 + static_cast<int>(ColorMapKind::Viridis)) | Scene::kFaceFieldColor);
+    EXPECT_EQ(fields.faceColorMap[f], (1 + static_cast<int>(ColorMapKind::Viridis)) | FieldColors::kPerFace);
     const Vec3d p = scene.origin + toDouble(scene.positions[scene.faces[f].vertex[2]]);
-    const double low = scene.legend->low, high = scene.legend->high;  // the triangles' range
-    EXPECT_NEAR(scene.faceFieldT[f], (p.x + 2 * p.y - low) / (high - low), 1e-5) << f;
+    const double low = fields.legend.low, high = fields.legend.high;  // the triangles' range
+    EXPECT_NEAR(fields.faceFieldT[f], (p.x + 2 * p.y - low) / (high - low), 1e-5) << f;
   }
 }
 

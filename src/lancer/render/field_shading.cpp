@@ -8,19 +8,20 @@
 namespace lancer {
 
 bool fieldColorAt(const Scene& scene, const SurfacePoint& surface, bool linearize, Vec3& color) {
-  if (scene.faceColorMap.empty() || surface.isCap) return false;
-  const std::uint8_t map = scene.faceColorMap[surface.face];
+  if (!scene.fieldColors || surface.isCap) return false;
+  const FieldColors& fields = *scene.fieldColors;
+  const std::uint8_t map = fields.faceColorMap[surface.face];
   if (map == 0) return false;
   float t = 0;
-  if (map & Scene::kFaceFieldColor) {
-    t = scene.faceFieldT[surface.face];  // element data: constant over the face
+  if (map & FieldColors::kPerFace) {
+    t = fields.faceFieldT[surface.face];  // element data: constant over the face
   } else {
     const MeshFace& face = scene.faces[surface.face];
     for (int c = 0; c < face.cornerCount(); ++c)
-      t += surface.cornerWeight[c] * scene.vertexFieldT[face.vertex[c]];
+      t += surface.cornerWeight[c] * fields.vertexFieldT[face.vertex[c]];
   }
   if (std::isnan(t)) return false;
-  color = colorMapLookup(static_cast<ColorMapKind>((map & ~Scene::kFaceFieldColor) - 1), t);
+  color = colorMapLookup(static_cast<ColorMapKind>((map & ~FieldColors::kPerFace) - 1), t);
   if (linearize) color = {linearFromSrgb(color.x), linearFromSrgb(color.y), linearFromSrgb(color.z)};
   return true;
 }

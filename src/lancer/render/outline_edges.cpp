@@ -17,7 +17,8 @@ std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
 
 OutlineEdges::OutlineEdges(const Scene& scene, const Camera& camera, int imageWidth, int imageHeight)
     : scene_(&scene), camera_(&camera) {
-  if (scene.edgeStyles.size() <= 1 || scene.faceEdgeStyle.empty()) return;
+  if (!scene.edges) return;
+  const EdgeOverlay& overlay = *scene.edges;
   // The drawn edges and the faces on each (a drawn edge is marked by every element it belongs to).
   struct Sides {
     std::uint32_t faces[2] = {kNoFace, kNoFace};
@@ -25,11 +26,11 @@ OutlineEdges::OutlineEdges(const Scene& scene, const Camera& camera, int imageWi
   };
   std::unordered_map<std::uint64_t, Sides> edges;
   for (std::uint32_t f = 0; f < scene.faces.size(); ++f) {
-    if (scene.faceEdgeStyle[f] == 0) continue;
+    if (overlay.faceEdgeStyle[f] == 0) continue;
     const MeshFace& face = scene.faces[f];
     const int n = face.cornerCount();
     for (int i = 0; i < n; ++i) {
-      if (!(scene.faceEdgeMask[f] & (1u << i))) continue;
+      if (!(overlay.faceEdgeMask[f] & (1u << i))) continue;
       Sides& sides = edges[edgeKey(face.vertex[i], face.vertex[(i + 1) % n])];
       if (sides.count < 2) sides.faces[sides.count] = f;
       ++sides.count;
@@ -50,7 +51,7 @@ OutlineEdges::OutlineEdges(const Scene& scene, const Camera& camera, int imageWi
     segment.b = scene.positions[static_cast<std::uint32_t>(key & 0xFFFFFFFFu)];
     segment.faces[0] = sides.faces[0];
     segment.faces[1] = sides.count >= 2 ? sides.faces[1] : kNoFace;
-    segment.style = scene.faceEdgeStyle[sides.faces[0]];
+    segment.style = overlay.faceEdgeStyle[sides.faces[0]];
     segments_.push_back(segment);
   }
   if (segments_.empty()) return;
@@ -73,7 +74,7 @@ OutlineEdges::OutlineEdges(const Scene& scene, const Camera& camera, int imageWi
     float ax, ay, bx, by;
     // An edge crossing the plane of a perspective eye is skipped (not binned).
     if (!camera.project(segments_[s].a, ax, ay) || !camera.project(segments_[s].b, bx, by)) return;
-    const float margin = 0.5f * scene.edgeStyles[segments_[s].style].widthPixels + 1.0f;
+    const float margin = 0.5f * overlay.styles[segments_[s].style].widthPixels + 1.0f;
     // Liang-Barsky: the part of the segment inside the image widened by the margin.
     float t0 = 0.0f, t1 = 1.0f;
     const float dx = bx - ax, dy = by - ay;
@@ -163,7 +164,7 @@ float OutlineEdges::coverage(const Ray& ray, std::uint32_t hitFace, float hitDis
     if (const FaceClipRange* range = scene_->meshClips.rangeOf(segment.faces[0]);
         range != nullptr && isClipped(nearest, scene_->meshClips.planesOf(*range)))
       continue;
-    const EdgeStyle& style = scene_->edgeStyles[segment.style];
+    const EdgeStyle& style = scene_->edges->styles[segment.style];
     const float pixels = length(wAcross + eAcross * u) / footprint.at(along);
     const float covered = lineCoverage(pixels, style.widthPixels);
     if (covered > best) {

@@ -183,7 +183,7 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
 Vec3 Tracer::shadeShadowCatcher(const Vec3& point, TraceCounters& counters, float& coverage) const {
   // The share of the light the floor would get that the meshes let through, per channel: ambient
   // plus the lights' diffuse irradiance with shadows, over the same without them.
-  const Vec3& normal = scene_.floorNormal;
+  const Vec3& normal = scene_.shadowCatcher->normal;
   Vec3 lit = scene_.ambient, shadowed = scene_.ambient;
   const Vec3 shadowOrigin = offsetRayOrigin(point, normal);
   for (const SceneLight& light : scene_.lights) {
@@ -236,7 +236,9 @@ Vec3 Tracer::shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::u
 }
 
 float Tracer::edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) const {
-  const std::uint16_t style = scene_.faceEdgeStyle.empty() ? 0 : scene_.faceEdgeStyle[hit.face];
+  if (!scene_.edges) return 0.0f;
+  const EdgeOverlay& overlay = *scene_.edges;
+  const std::uint16_t style = overlay.faceEdgeStyle[hit.face];
   if (style == 0) return 0.0f;
   const MeshFace& face = scene_.faces[hit.face];
   Vec3 corners[4];
@@ -244,8 +246,8 @@ float Tracer::edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) c
   const float directionLength = length(ray.direction);
   const float pixelSize = footprint_.at(pathLength + hit.t * directionLength);
   return edgeCoverage(ray.origin, ray.direction * (1.0f / directionLength), corners, face.cornerCount(),
-                      scene_.faceEdgeMask[hit.face], scene_.faceLineCorners[hit.face], pixelSize,
-                      scene_.edgeStyles[style].widthPixels);
+                      overlay.faceEdgeMask[hit.face], overlay.faceLineCorners[hit.face], pixelSize,
+                      overlay.styles[style].widthPixels);
 }
 
 Tracer::Sighting Tracer::firstSighting(const Ray& ray) const {
@@ -273,11 +275,11 @@ Tracer::Sighting Tracer::firstSighting(const Ray& ray) const {
       }
     }
   }
-  if (scene_.hasShadowCatcher) {
+  if (const std::optional<ShadowCatcher>& catcher = scene_.shadowCatcher) {
     // The catcher is a plane seen from above, in front of what the ray sees (a cap or a face) and
     // inside the kept part.
-    const float rate = dot(ray.direction, scene_.floorNormal);
-    const float t = rate < 0.0f ? (scene_.floorOffset - dot(ray.origin, scene_.floorNormal)) / rate : kInfinity;
+    const float rate = dot(ray.direction, catcher->normal);
+    const float t = rate < 0.0f ? (catcher->offset - dot(ray.origin, catcher->normal)) / rate : kInfinity;
     if (t > kept.enter && t < kept.exit && t < (hitMesh ? seen.t : kInfinity)) {
       seen.kind = Sighting::Kind::kShadowCatcher;
       seen.t = t;
@@ -320,7 +322,7 @@ Vec3 Tracer::shadeSurface(const Ray& ray, const Hit& hit, float distance, int de
                           float pathLength, bool parallelView, TraceCounters& counters) const {
   // Edges are paint on the surface: fully covered pixels need no shading, partial ones blend.
   const float edge = edgeCoverageAt(ray, hit, pathLength);
-  const Vec3 edgeColor = edge > 0.0f ? scene_.edgeStyles[scene_.faceEdgeStyle[hit.face]].color : Vec3{};
+  const Vec3 edgeColor = edge > 0.0f ? scene_.edges->styles[scene_.edges->faceEdgeStyle[hit.face]].color : Vec3{};
   if (edge >= 1.0f) return edgeColor;
   auto withEdge = [&](const Vec3& color) { return edge > 0.0f ? color * (1.0f - edge) + edgeColor * edge : color; };
   const SurfacePoint surface = makeSurfacePoint(scene_, ray, hit);

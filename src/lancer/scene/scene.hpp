@@ -23,58 +23,78 @@ struct SceneLight {
   Vec3 attenuation;  // constant, linear, quadratic
 };
 
-// How a mesh's element edges are drawn (Scene::edgeStyles[0] means "not drawn").
+// How a mesh's element edges are drawn (EdgeOverlay::styles[0] means "not drawn").
 struct EdgeStyle {
   float widthPixels = 0;
   Vec3 color{0, 0, 0};
 };
 
+// Element or feature edges painted on the meshes that draw theirs (edge_overlay.hpp).
+struct EdgeOverlay {
+  std::vector<std::uint8_t> faceEdgeMask;     // per face: its edges to draw (element or feature edges)
+  std::vector<std::uint16_t> faceEdgeStyle;   // per face: index into styles; 0: its mesh draws none
+  std::vector<std::uint8_t> faceLineCorners;  // per face: bit c, corner c ends a drawn edge of some face
+  std::vector<EdgeStyle> styles{EdgeStyle{}};
+};
+
+// Field colouring (color_by, field_shading.hpp): per face 0 (not coloured) or 1 + the ColorMapKind,
+// plus kPerFace for element data; the normalised field value t in [0, 1] (NaN: none) per vertex
+// (node data: interpolated per pixel, then mapped) or per face (element data); each of the two is
+// empty when no mesh is coloured by that kind of data.
+struct FieldColors {
+  static constexpr std::uint8_t kPerFace = 0x80;
+  std::vector<std::uint8_t> faceColorMap;
+  std::vector<float> vertexFieldT;
+  std::vector<float> faceFieldT;
+  // The first coloured mesh's map and range, for the --legend colour bar.
+  struct Legend {
+    ColorMapKind map = ColorMapKind::Viridis;
+    double low = 0;
+    double high = 1;
+  } legend;
+};
+
+// The shadow-catcher floor: points p with dot(p, normal) = offset (scene space).
+struct ShadowCatcher {
+  Vec3 normal{0, 1, 0};
+  float offset = 0;
+};
+
+// The scene as the tracer reads it, by feature; structure of arrays, indexed by face or vertex. A
+// feature no mesh uses is absent (std::nullopt), not a set of empty arrays.
 struct Scene {
+  // Geometry: every mesh instance transformed into one scene space.
   Vec3d origin;  // world = origin + scene-space position; keeps float precision far from 0
   std::vector<Vec3> positions;
   std::vector<MeshFace> faces;
   std::vector<Vec3> faceNormals;  // geometric, unit; outward on closed shells, else the file's winding
   CornerNormals cornerNormals;    // smooth normals per face corner
+  // 1 when the face belongs to a closed, outward-oriented shell or bounds a volume (refraction
+  // enters and leaves it); 0 for open surfaces, which transparency treats as thin sheets.
+  std::vector<std::uint8_t> faceBoundsSolid;
+  Aabb bounds;  // scene space
+
+  // Appearance: materials per face side, shading per face, the lights.
+  std::vector<Material> materials;
   std::vector<std::uint32_t> faceMaterial;  // of the volume behind the face (its inner side)
   // Of the volume in front of an interface face (on its normal's side), kNoMaterial elsewhere: air.
   // Empty when no mesh has interfaces between volumes.
   static constexpr std::uint32_t kNoMaterial = 0xFFFFFFFFu;
   std::vector<std::uint32_t> faceOuterMaterial;
   std::vector<ShadingMode> faceShading;
-  std::vector<std::uint8_t> faceEdgeMask;     // element edges (or feature edges) of each face
-  std::vector<std::uint16_t> faceEdgeStyle;   // index into edgeStyles; 0: edges not drawn
-  std::vector<std::uint8_t> faceLineCorners;  // bit c: corner c is the end of a drawn edge of some face
-  std::vector<EdgeStyle> edgeStyles{EdgeStyle{}};
-  // 1 when the face belongs to a closed, outward-oriented shell (it bounds a solid: refraction
-  // enters and leaves it); 0 for open surfaces, which transparency treats as thin sheets.
-  std::vector<std::uint8_t> faceBoundsSolid;
-  // Field colouring (color_by): per face 0 (not coloured) or 1 + the ColorMapKind, plus
-  // kFaceFieldColor for element data; the normalised field value t in [0, 1] (NaN: none) per vertex
-  // (node data: interpolated per pixel, then mapped) or per face (element data). All are empty when
-  // no mesh is coloured (faceFieldT also when none is coloured by element data).
-  static constexpr std::uint8_t kFaceFieldColor = 0x80;
-  std::vector<std::uint8_t> faceColorMap;
-  std::vector<float> vertexFieldT;
-  std::vector<float> faceFieldT;
-  // The first coloured mesh's map and range, for the --legend colour bar.
-  struct FieldLegend {
-    ColorMapKind map = ColorMapKind::Viridis;
-    double low = 0;
-    double high = 1;
-  };
-  std::optional<FieldLegend> legend;
-  std::vector<Material> materials;
   std::vector<SceneLight> lights;
+  Vec3 ambient{0, 0, 0};
+
+  std::optional<EdgeOverlay> edges;
+  std::optional<FieldColors> fieldColors;
+
+  // Cut views: the scene's planes (they cut every mesh) and each mesh's own ([[mesh.clip]]).
   std::vector<ClipPlane> clipPlanes;   // scene space
   std::vector<std::uint8_t> clipCaps;  // 1: cap closed shells cut by clipPlanes[i]
-  // Each mesh's own planes ([[mesh.clip]]), which remove only its faces; empty when no mesh has any.
-  FaceClipSets meshClips;
-  // The shadow-catcher floor: points p with dot(p, floorNormal) = floorOffset (scene space).
-  bool hasShadowCatcher = false;
-  Vec3 floorNormal{0, 1, 0};
-  float floorOffset = 0;
-  Vec3 ambient{0, 0, 0};
-  Aabb bounds;  // scene space
+  FaceClipSets meshClips;              // empty when no mesh has planes of its own
+
+  std::optional<ShadowCatcher> shadowCatcher;
+
   // What the mesh readers warned about (MeshSourceInfo::warnings), for the CLI to print.
   std::vector<std::string> warnings;
 

@@ -111,19 +111,68 @@ std::vector<std::pair<std::int32_t, std::uint32_t>> resolveGroupMaterials(const 
 
 // Records a coloured mesh whose vertices start at vertexBase and faces at faceBase: its faces get
 // the map, its vertices the field's t (the mesh's vertices are the scene's from vertexBase on, in
-// order). Earlier meshes' entries are filled with "not coloured" first.
-void addFieldColoring(Scene& scene, const FieldColoring& coloring, std::uint32_t vertexBase,
-                      std::size_t faceBase) {
-  const int perFace = coloring.perFace ? Scene::kFaceFieldColor : 0;
-  scene.faceColorMap.resize(faceBase, 0);
-  scene.faceColorMap.resize(scene.faces.size(),
-                            static_cast<std::uint8_t>((1 + static_cast<int>(coloring.map)) | perFace));
+// order). Earlier meshes' entries are filled with "not coloured" first; the first coloured mesh
+// gives the legend.
+void addFieldColoring(const Scene& scene, std::optional<FieldColors>& fields, const FieldColoring& coloring,
+                      std::uint32_t vertexBase, std::size_t faceBase) {
+  if (!fields) {
+    fields.emplace();
+    fields->legend = {coloring.map, coloring.low, coloring.high};
+  }
+  const int perFace = coloring.perFace ? FieldColors::kPerFace : 0;
+  fields->faceColorMap.resize(faceBase, 0);
+  fields->faceColorMap.resize(scene.faces.size(),
+                              static_cast<std::uint8_t>((1 + static_cast<int>(coloring.map)) | perFace));
   // The mesh's faces and vertices are the scene's from the bases on, in order.
-  std::vector<float>& t = coloring.perFace ? scene.faceFieldT : scene.vertexFieldT;
+  std::vector<float>& t = coloring.perFace ? fields->faceFieldT : fields->vertexFieldT;
   t.resize(coloring.perFace ? faceBase : vertexBase, std::nanf(""));
   t.insert(t.end(), coloring.t.begin(), coloring.t.end());
   t.resize(coloring.perFace ? scene.faces.size() : scene.positions.size(), std::nanf(""));
-  if (!scene.legend) scene.legend = Scene::FieldLegend{coloring.map, coloring.low, coloring.high};
+}
+
+// Meshes after the last coloured one are not coloured.
+void finishFieldColors(Scene& scene, std::optional<FieldColors> fields) {
+  if (!fields) return;
+  fields->faceColorMap.resize(scene.faces.size(), 0);
+  if (!fields->vertexFieldT.empty()) fields->vertexFieldT.resize(scene.positions.size(), std::nanf(""));
+  if (!fields->faceFieldT.empty()) fields->faceFieldT.resize(scene.faces.size(), std::nanf(""));
+  scene.fieldColors = std::move(fields);
+}
+
+// Kept when some mesh draws its edges, with the corners where drawn edges end, so that faces
+// meeting a line only at a corner draw its end too.
+void finishEdgeOverlay(Scene& scene, EdgeOverlay overlay) {
+  if (overlay.styles.size() <= 1) return;
+  std::vector<std::uint8_t> onLine(scene.positions.size(), 0);
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+    if (overlay.faceEdgeStyle[f] == 0) continue;
+    const MeshFace& face = scene.faces[f];
+    const int n = face.cornerCount();
+    for (int c = 0; c < n; ++c)
+      if (overlay.faceEdgeMask[f] & (1u << c)) onLine[face.vertex[c]] = onLine[face.vertex[(c + 1) % n]] = 1;
+  }
+  overlay.faceLineCorners.assign(scene.faces.size(), 0);
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+    const MeshFace& face = scene.faces[f];
+    for (int c = 0; c < face.cornerCount(); ++c)
+      if (onLine[face.vertex[c]]) overlay.faceLineCorners[f] |= static_cast<std::uint8_t>(1u << c);
+  }
+  LANCER_DCHECK(overlay.faceEdgeMask.size(), ==, scene.faces.size());
+  LANCER_DCHECK(overlay.faceEdgeStyle.size(), ==, scene.faces.size());
+  scene.edges = std::move(overlay);
+}
+
+ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const Scene& scene) {
+  ShadowCatcher catcher;
+  catcher.normal = toFloat(floor.normal);
+  if (floor.height) {
+    catcher.offset = static_cast<float>(*floor.height - dot(scene.origin, floor.normal));
+  } else {  // touch the lowest vertex along the normal, so the part stands on it
+    float lowest = std::numeric_limits<float>::infinity();
+    for (const Vec3& p : scene.positions) lowest = std::min(lowest, dot(p, catcher.normal));
+    catcher.offset = std::isfinite(lowest) ? lowest : 0.0f;
+  }
+  return catcher;
 }
 
 // The planes of a mesh whose faces start at faceBase and run to the scene's last face.
@@ -166,6 +215,9 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
   }
   scene.origin = worldBounds.empty() ? Vec3d{} : worldBounds.center();
 
+  // Gathered mesh by mesh, kept at the end when some mesh uses them.
+  EdgeOverlay overlay;
+  std::optional<FieldColors> fields;
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const MeshInstance& instance = description.meshes[i];
     Mesh& mesh = meshes[i];
@@ -205,8 +257,8 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
         computeCornerNormals(positions, mesh.faces, mesh.facePhysicalTag, instance.smoothAngleDegrees);
     std::uint16_t edgeStyle = 0;
     if (instance.edges) {
-      scene.edgeStyles.push_back({instance.edges->widthPixels, instance.edges->color});
-      edgeStyle = static_cast<std::uint16_t>(scene.edgeStyles.size() - 1);
+      overlay.styles.push_back({instance.edges->widthPixels, instance.edges->color});
+      edgeStyle = static_cast<std::uint16_t>(overlay.styles.size() - 1);
       if (instance.edges->featuresOnly) {
         mesh.faceEdgeMask = edgeMasks;  // in step with the oriented faces
         edgeMasks = featureEdgeMasks(mesh, instance.edges->featureAngleDegrees);
@@ -251,58 +303,26 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
       scene.faceNormals.push_back(faceNormal(scene.positions, face));
       scene.cornerNormals.faceCorner.push_back(corners);
       scene.faceShading.push_back(shading);
-      scene.faceEdgeMask.push_back(edgeMasks[f]);
-      scene.faceEdgeStyle.push_back(edgeStyle);
+      overlay.faceEdgeMask.push_back(edgeMasks[f]);
+      overlay.faceEdgeStyle.push_back(edgeStyle);
       scene.faceBoundsSolid.push_back(orientation.faceBoundsSolid[f]);
     }
-    if (coloring) addFieldColoring(scene, *coloring, vertexBase, faceBase);
+    if (coloring) addFieldColoring(scene, fields, *coloring, vertexBase, faceBase);
     if (!instance.clips.empty() && !mesh.faces.empty()) addMeshClips(scene, instance.clips, faceBase);
   }
   if (!scene.faceOuterMaterial.empty()) scene.faceOuterMaterial.resize(scene.faces.size(), Scene::kNoMaterial);
-  // Meshes after the last coloured one are not coloured.
-  if (!scene.faceColorMap.empty()) scene.faceColorMap.resize(scene.faces.size(), 0);
-  if (!scene.vertexFieldT.empty()) scene.vertexFieldT.resize(scene.positions.size(), std::nanf(""));
-  if (!scene.faceFieldT.empty()) scene.faceFieldT.resize(scene.faces.size(), std::nanf(""));
-
-  // Corners where drawn edges end, so faces meeting a line only at a corner draw its end too.
-  if (scene.edgeStyles.size() > 1) {
-    std::vector<std::uint8_t> onLine(scene.positions.size(), 0);
-    for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-      if (scene.faceEdgeStyle[f] == 0) continue;
-      const MeshFace& face = scene.faces[f];
-      const int n = face.cornerCount();
-      for (int c = 0; c < n; ++c)
-        if (scene.faceEdgeMask[f] & (1u << c)) onLine[face.vertex[c]] = onLine[face.vertex[(c + 1) % n]] = 1;
-    }
-    scene.faceLineCorners.assign(scene.faces.size(), 0);
-    for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-      const MeshFace& face = scene.faces[f];
-      for (int c = 0; c < face.cornerCount(); ++c)
-        if (onLine[face.vertex[c]]) scene.faceLineCorners[f] |= static_cast<std::uint8_t>(1u << c);
-    }
-  }
+  finishFieldColors(scene, std::move(fields));
+  finishEdgeOverlay(scene, std::move(overlay));
 
   // Every per-face array in step with the faces (the tracer indexes them all by face).
   LANCER_DCHECK(scene.faceNormals.size(), ==, scene.faces.size());
   LANCER_DCHECK(scene.cornerNormals.faceCorner.size(), ==, scene.faces.size());
   LANCER_DCHECK(scene.faceMaterial.size(), ==, scene.faces.size());
   LANCER_DCHECK(scene.faceShading.size(), ==, scene.faces.size());
-  LANCER_DCHECK(scene.faceEdgeMask.size(), ==, scene.faces.size());
   LANCER_DCHECK(scene.faceBoundsSolid.size(), ==, scene.faces.size());
   if (!scene.faceOuterMaterial.empty()) LANCER_DCHECK(scene.faceOuterMaterial.size(), ==, scene.faces.size());
 
-  if (description.floor) {
-    scene.hasShadowCatcher = true;
-    scene.floorNormal = toFloat(description.floor->normal);
-    if (description.floor->height) {
-      scene.floorOffset =
-          static_cast<float>(*description.floor->height - dot(scene.origin, description.floor->normal));
-    } else {  // touch the lowest vertex along the normal, so the part stands on it
-      float lowest = std::numeric_limits<float>::infinity();
-      for (const Vec3& p : scene.positions) lowest = std::min(lowest, dot(p, scene.floorNormal));
-      scene.floorOffset = std::isfinite(lowest) ? lowest : 0.0f;
-    }
-  }
+  if (description.floor) scene.shadowCatcher = shadowCatcherOf(*description.floor, scene);
   for (const ClipSettings& clip : description.clips) {
     scene.clipPlanes.push_back({scene.toSceneSpace(clip.point), toFloat(clip.normal)});
     scene.clipCaps.push_back(clip.cap ? 1 : 0);
