@@ -117,7 +117,8 @@ double runChunked(std::size_t count, int threads, Trace&& trace) {
   constexpr std::size_t kChunk = 4096;
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
-    for (std::size_t begin; (begin = next.fetch_add(kChunk)) < count;) trace(begin, std::min(count, begin + kChunk));
+    for (std::size_t begin; (begin = next.fetch_add(kChunk)) < count;)
+      trace(begin, std::min(count, begin + kChunk));
   };
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::thread> pool;
@@ -149,8 +150,9 @@ struct MeshContext {
     if (!slot) {
       KdBuildOptions options;
       options.threads = 2;
-      slot = std::make_unique<KdTree>(kind == "kdtree-median" ? KdTree::buildMedian(mesh.positions, mesh.faces, options)
-                                                              : KdTree::buildSah(mesh.positions, mesh.faces, options));
+      slot = std::make_unique<KdTree>(kind == "kdtree-median"
+                                          ? KdTree::buildMedian(mesh.positions, mesh.faces, options)
+                                          : KdTree::buildSah(mesh.positions, mesh.faces, options));
     }
     return *slot;
   }
@@ -223,50 +225,57 @@ void traceBenchmark(benchmark::State& state, const RaySet& set, int threads, Que
 inline void registerLancer(const std::string& kind, const std::string& mesh) {
   {
     for (int threads : {1, 2}) {
-      benchmark::RegisterBenchmark(("build/" + kind + "/" + mesh + "/threads:" + std::to_string(threads)).c_str(),
-                                   [=](benchmark::State& state) {
-                                     MeshContext& ctx = meshContext(mesh);
-                                     KdBuildOptions options;
-                                     options.threads = threads;
-                                     AccelStats stats;
-                                     for (auto _ : state) {
-                                       KdTree tree = kind == "kdtree-median"
-                                                         ? KdTree::buildMedian(ctx.mesh.positions, ctx.mesh.faces, options)
-                                                         : KdTree::buildSah(ctx.mesh.positions, ctx.mesh.faces, options);
-                                       stats = tree.stats();
-                                       state.SetIterationTime(stats.buildSeconds);
-                                     }
-                                     state.counters["Mtris_per_s"] = stats.buildMillionTrianglesPerSecond();
-                                     state.counters["triangles"] = double(stats.triangles);
-                                     state.counters["bytes_per_tri"] = stats.bytesPerTriangle();
-                                     state.counters["nodes"] = double(stats.nodes);
-                                     state.counters["leaves"] = double(stats.leaves);
-                                     state.counters["depth"] = double(stats.depth);
-                                     state.counters["tris_per_leaf"] = stats.meanTrianglesPerLeaf;
-                                     state.counters["sah_cost"] = stats.sahCost;
-                                   })
-          ->UseManualTime()->Iterations(1)->Repetitions(3)->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(
+          ("build/" + kind + "/" + mesh + "/threads:" + std::to_string(threads)).c_str(),
+          [=](benchmark::State& state) {
+            MeshContext& ctx = meshContext(mesh);
+            KdBuildOptions options;
+            options.threads = threads;
+            AccelStats stats;
+            for (auto _ : state) {
+              KdTree tree = kind == "kdtree-median"
+                                ? KdTree::buildMedian(ctx.mesh.positions, ctx.mesh.faces, options)
+                                : KdTree::buildSah(ctx.mesh.positions, ctx.mesh.faces, options);
+              stats = tree.stats();
+              state.SetIterationTime(stats.buildSeconds);
+            }
+            state.counters["Mtris_per_s"] = stats.buildMillionTrianglesPerSecond();
+            state.counters["triangles"] = double(stats.triangles);
+            state.counters["bytes_per_tri"] = stats.bytesPerTriangle();
+            state.counters["nodes"] = double(stats.nodes);
+            state.counters["leaves"] = double(stats.leaves);
+            state.counters["depth"] = double(stats.depth);
+            state.counters["tris_per_leaf"] = stats.meanTrianglesPerLeaf;
+            state.counters["sah_cost"] = stats.sahCost;
+          })
+          ->UseManualTime()
+          ->Iterations(1)
+          ->Repetitions(3)
+          ->Unit(benchmark::kMillisecond);
     }
     for (const char* rayKind : kRayKinds) {
       for (int threads : {1, 2}) {
         const std::string rk = rayKind;
-        benchmark::RegisterBenchmark(("trace/" + kind + "/" + mesh + "/" + rk + "/threads:" + std::to_string(threads)).c_str(),
-                                     [=](benchmark::State& state) {
-                                       MeshContext& ctx = meshContext(mesh);
-                                       const KdTree& tree = ctx.tree(kind);
-                                       const RaySet& set = ctx.rays(rk);
-                                       if (set.anyHit) {
-                                         traceBenchmark(state, set, threads, [&](const Ray& r, float t0, float t1) {
-                                           return tree.occluded(r, t0, t1);
-                                         });
-                                       } else {
-                                         traceBenchmark(state, set, threads, [&](const Ray& r, float t0, float t1) {
-                                           Hit hit;
-                                           return tree.intersect(r, t0, t1, hit);
-                                         });
-                                       }
-                                     })
-            ->UseManualTime()->Iterations(1)->Repetitions(3)->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(
+            ("trace/" + kind + "/" + mesh + "/" + rk + "/threads:" + std::to_string(threads)).c_str(),
+            [=](benchmark::State& state) {
+              MeshContext& ctx = meshContext(mesh);
+              const KdTree& tree = ctx.tree(kind);
+              const RaySet& set = ctx.rays(rk);
+              if (set.anyHit) {
+                traceBenchmark(state, set, threads,
+                               [&](const Ray& r, float t0, float t1) { return tree.occluded(r, t0, t1); });
+              } else {
+                traceBenchmark(state, set, threads, [&](const Ray& r, float t0, float t1) {
+                  Hit hit;
+                  return tree.intersect(r, t0, t1, hit);
+                });
+              }
+            })
+            ->UseManualTime()
+            ->Iterations(1)
+            ->Repetitions(3)
+            ->Unit(benchmark::kMillisecond);
       }
     }
   }

@@ -95,49 +95,55 @@ struct EmbreeScene {
 
 void registerEmbree(const std::string& mesh) {
   for (int threads : {1, 2}) {
-    benchmark::RegisterBenchmark(("build/embree-high/" + mesh + "/threads:" + std::to_string(threads)).c_str(),
-                                 [=](benchmark::State& state) {
-                                   MeshContext& ctx = meshContext(mesh);
-                                   double seconds = 0;
-                                   std::int64_t bytes = 0;
-                                   std::size_t triangles = 0;
-                                   for (auto _ : state) {
-                                     EmbreeScene scene(ctx.mesh, threads);
-                                     seconds = scene.buildSeconds;
-                                     bytes = scene.bytes;
-                                     triangles = scene.indices.size() / 3;
-                                     state.SetIterationTime(seconds);
-                                   }
-                                   state.counters["Mtris_per_s"] = double(triangles) / seconds * 1e-6;
-                                   state.counters["triangles"] = double(triangles);
-                                   state.counters["bytes_per_tri"] = double(bytes) / double(triangles);
-                                 })
-        ->UseManualTime()->Iterations(1)->Repetitions(3)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(
+        ("build/embree-high/" + mesh + "/threads:" + std::to_string(threads)).c_str(),
+        [=](benchmark::State& state) {
+          MeshContext& ctx = meshContext(mesh);
+          double seconds = 0;
+          std::int64_t bytes = 0;
+          std::size_t triangles = 0;
+          for (auto _ : state) {
+            EmbreeScene scene(ctx.mesh, threads);
+            seconds = scene.buildSeconds;
+            bytes = scene.bytes;
+            triangles = scene.indices.size() / 3;
+            state.SetIterationTime(seconds);
+          }
+          state.counters["Mtris_per_s"] = double(triangles) / seconds * 1e-6;
+          state.counters["triangles"] = double(triangles);
+          state.counters["bytes_per_tri"] = double(bytes) / double(triangles);
+        })
+        ->UseManualTime()
+        ->Iterations(1)
+        ->Repetitions(3)
+        ->Unit(benchmark::kMillisecond);
   }
   static std::map<std::string, std::shared_ptr<EmbreeScene>> scenes;
   for (const char* rayKind : kRayKinds) {
     for (int threads : {1, 2}) {
       const std::string rk = rayKind;
-      benchmark::RegisterBenchmark(("trace/embree-high/" + mesh + "/" + rk + "/threads:" + std::to_string(threads)).c_str(),
-                                   [=](benchmark::State& state) {
-                                     MeshContext& ctx = meshContext(mesh);
-                                     if (!scenes.count(mesh)) {
-                                       scenes.clear();  // one mesh's scene in memory at a time
-                                       scenes[mesh] = std::make_shared<EmbreeScene>(ctx.mesh, 2);
-                                     }
-                                     const RaySet& set = ctx.rays(rk);
-                                     const EmbreeScene& s = *scenes[mesh];
-                                     if (set.anyHit) {
-                                       traceBenchmark(state, set, threads, [&](const Ray& r, float t0, float t1) {
-                                         return s.occluded(r, t0, t1);
-                                       });
-                                     } else {
-                                       traceBenchmark(state, set, threads, [&](const Ray& r, float t0, float t1) {
-                                         return s.intersect(r, t0, t1);
-                                       });
-                                     }
-                                   })
-          ->UseManualTime()->Iterations(1)->Repetitions(3)->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(
+          ("trace/embree-high/" + mesh + "/" + rk + "/threads:" + std::to_string(threads)).c_str(),
+          [=](benchmark::State& state) {
+            MeshContext& ctx = meshContext(mesh);
+            if (!scenes.count(mesh)) {
+              scenes.clear();  // one mesh's scene in memory at a time
+              scenes[mesh] = std::make_shared<EmbreeScene>(ctx.mesh, 2);
+            }
+            const RaySet& set = ctx.rays(rk);
+            const EmbreeScene& s = *scenes[mesh];
+            if (set.anyHit) {
+              traceBenchmark(state, set, threads,
+                             [&](const Ray& r, float t0, float t1) { return s.occluded(r, t0, t1); });
+            } else {
+              traceBenchmark(state, set, threads,
+                             [&](const Ray& r, float t0, float t1) { return s.intersect(r, t0, t1); });
+            }
+          })
+          ->UseManualTime()
+          ->Iterations(1)
+          ->Repetitions(3)
+          ->Unit(benchmark::kMillisecond);
     }
   }
 }

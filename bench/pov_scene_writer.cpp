@@ -1,6 +1,7 @@
 // Writes one scene twice, for bench/povray_compare.sh: a lancer scene (.toml) and a POV-Ray 3.7
-// scene (.pov, a mesh2 with lancer's own smoothed vertex normals, in the mesh's origin-relative frame), with the same camera, point light,
-// material, resolution and anti-aliasing, so the two renderers' wall times can be compared.
+// scene (.pov, a mesh2 with lancer's own smoothed vertex normals, in the mesh's origin-relative frame), with
+// the same camera, point light, material, resolution and anti-aliasing, so the two renderers' wall times can
+// be compared.
 //   pov_scene_writer MESH.msh OUT_BASE WIDTH HEIGHT    -> OUT_BASE.toml, OUT_BASE.pov
 #include <fmt/format.h>
 
@@ -45,13 +46,18 @@ void writeToml(const std::string& path, const std::string& mesh, const std::stri
   std::FILE* out = std::fopen(path.c_str(), "w");
   if (!out) throw std::runtime_error("cannot write " + path);
   auto arr = [](const Vec3& p) { return fmt::format("[{:.9g}, {:.9g}, {:.9g}]", p.x, p.y, p.z); };
-  fmt::print(out, "[render]\nwidth = {}\nheight = {}\nsamples = 4\nshading = \"phong\"\nmax_depth = 1\n", width, height);
+  fmt::print(out, "[render]\nwidth = {}\nheight = {}\nsamples = 4\nshading = \"phong\"\nmax_depth = 1\n",
+             width, height);
   fmt::print(out, "background = [0, 0, 0]\noutput = \"{}\"\n\n", png);
-  fmt::print(out, "[camera]\nprojection = \"perspective\"\nposition = {}\nlook_at = {}\nup = [0, 0, 1]\nfov = {}\n\n",
-             arr(v.eye), arr(v.center), v.fovDegrees);
-  fmt::print(out, "[ambient]\nintensity = [0.1, 0.1, 0.1]\n\n[[light]]\nposition = {}\nintensity = [1, 1, 1]\n\n",
+  fmt::print(
+      out,
+      "[camera]\nprojection = \"perspective\"\nposition = {}\nlook_at = {}\nup = [0, 0, 1]\nfov = {}\n\n",
+      arr(v.eye), arr(v.center), v.fovDegrees);
+  fmt::print(out,
+             "[ambient]\nintensity = [0.1, 0.1, 0.1]\n\n[[light]]\nposition = {}\nintensity = [1, 1, 1]\n\n",
              arr(v.light));
-  fmt::print(out, "[material.part]\nka = [1, 1, 1]\nkd = [0.7, 0.7, 0.7]\nks = [0.3, 0.3, 0.3]\nshininess = 32\n\n");
+  fmt::print(
+      out, "[material.part]\nka = [1, 1, 1]\nkd = [0.7, 0.7, 0.7]\nks = [0.3, 0.3, 0.3]\nshininess = 32\n\n");
   fmt::print(out, "[[mesh]]\nfile = \"{}\"\nmaterial = \"part\"\nsmooth_angle = 60\n", mesh);
   std::fclose(out);
 }
@@ -63,9 +69,12 @@ void writePov(const std::string& path, const lancer::Mesh& mesh, const View& v, 
   // POV-Ray's angle is horizontal; `right -x` makes its left-handed frame right-handed like gmsh's.
   const float horizontal =
       2.0f * std::atan(std::tan(0.5f * v.fovDegrees * 3.14159265f / 180.0f) * aspect) * 180.0f / 3.14159265f;
-  fmt::print(out, "#version 3.7;\nglobal_settings {{ assumed_gamma 1.0 max_trace_level 1 ambient_light rgb 1 }}\n");
+  fmt::print(
+      out, "#version 3.7;\nglobal_settings {{ assumed_gamma 1.0 max_trace_level 1 ambient_light rgb 1 }}\n");
   fmt::print(out, "background {{ rgb 0 }}\n");
-  fmt::print(out, "camera {{ perspective location {} sky <0, 0, 1> up <0, 0, 1> right <{:.9g}, 0, 0> look_at {} angle {:.9g} }}\n",
+  fmt::print(out,
+             "camera {{ perspective location {} sky <0, 0, 1> up <0, 0, 1> right <{:.9g}, 0, 0> look_at {} "
+             "angle {:.9g} }}\n",
              vec(v.eye), -aspect, vec(v.center), horizontal);
   fmt::print(out, "light_source {{ {} color rgb 1 }}\n", vec(v.light));
   const lancer::CornerNormals normals =
@@ -81,12 +90,15 @@ void writePov(const std::string& path, const lancer::Mesh& mesh, const View& v, 
     fmt::print(out, "\n }}\n {} {{ {}", name, triangles);
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
       const int halves = mesh.faces[f].isQuad() ? 2 : 1;
-      for (int h = 0; h < halves; ++h) fmt::print(out, ",\n<{}, {}, {}>", index(f, 0), index(f, 1 + h), index(f, 2 + h));
+      for (int h = 0; h < halves; ++h)
+        fmt::print(out, ",\n<{}, {}, {}>", index(f, 0), index(f, 1 + h), index(f, 2 + h));
     }
   };
   faces("face_indices", [&](std::size_t f, int c) { return mesh.faces[f].vertex[c]; });
   faces("normal_indices", [&](std::size_t f, int c) { return normals.faceCorner[f][c]; });
-  fmt::print(out, "\n }}\n texture {{ pigment {{ rgb 1 }} finish {{ ambient 0.1 diffuse 0.7 phong 0.3 phong_size 32 }} }}\n}}\n");
+  fmt::print(out,
+             "\n }}\n texture {{ pigment {{ rgb 1 }} finish {{ ambient 0.1 diffuse 0.7 phong 0.3 phong_size "
+             "32 }} }}\n}}\n");
   std::fclose(out);
 }
 

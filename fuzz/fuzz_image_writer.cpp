@@ -51,7 +51,8 @@ void expectFolderEmpty() {
 }
 
 void clearFolder() {
-  for (const auto& entry : std::filesystem::directory_iterator(gFolder)) std::filesystem::remove(entry.path());
+  for (const auto& entry : std::filesystem::directory_iterator(gFolder))
+    std::filesystem::remove(entry.path());
 }
 
 void fuzzReadPng(const std::uint8_t* data, std::size_t size) {

@@ -152,7 +152,8 @@ int runAnimate(const AnimateCommandOptions& options) {
       },
       progress ? std::function<void(const AnimationProgress&)>(onProgress) : nullptr);
   if (progress) std::fputc('\n', stderr);
-  if (stats.cancelled) return interruptedExit(output);  // the writers' destructors remove their temporary files
+  if (stats.cancelled)
+    return interruptedExit(output);  // the writers' destructors remove their temporary files
   if (gif) gif->finish();
   if (apng) apng->finish();
   if (pattern) frames.publish();

@@ -9,11 +9,12 @@ AccelStats buildAccelStats(const Mesh& mesh, AccelKind kind) {
 }
 
 std::string accelStatsText(const AccelStats& s) {
-  std::string out = fmt::format("accelerator:     {} over {} triangles ({} faces)\n", s.kind, s.triangles, s.faces);
+  std::string out =
+      fmt::format("accelerator:     {} over {} triangles ({} faces)\n", s.kind, s.triangles, s.faces);
   out += fmt::format("  nodes:         {} ({} leaves, {} empty)\n", s.nodes, s.leaves, s.emptyLeaves);
   out += fmt::format("  depth:         {}\n", s.depth);
-  out += fmt::format("  faces/leaf:    {:.2f} mean over non-empty leaves ({} references)\n", s.meanTrianglesPerLeaf,
-                     s.triangleReferences);
+  out += fmt::format("  faces/leaf:    {:.2f} mean over non-empty leaves ({} references)\n",
+                     s.meanTrianglesPerLeaf, s.triangleReferences);
   out += fmt::format("  SAH cost:      {:.2f}\n", s.sahCost);
   out += fmt::format("  build time:    {:.3f} ms ({:.2f} M triangles/s)\n", s.buildSeconds * 1e3,
                      s.buildMillionTrianglesPerSecond());

@@ -87,8 +87,8 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
   if (!source.unrenderableByType.empty()) {
     fmt::print("not rendered:\n");
     for (const auto& [type, count] : source.unrenderableByType)
-      fmt::print("  {:>10}  {} (type {}): lancer does not draw this type\n", count,
-                 mshElementTypeName(type), type);
+      fmt::print("  {:>10}  {} (type {}): lancer does not draw this type\n", count, mshElementTypeName(type),
+                 type);
   }
   if (source.duplicateElementsSkipped)
     fmt::print(
@@ -101,14 +101,15 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
     const auto faces = stats.facesByPhysicalTag.find(group.tag);
     const std::uint64_t count =
         group.dimension >= 2 && faces != stats.facesByPhysicalTag.end() ? faces->second : 0;
-    const std::uint64_t shared = group.dimension == 3 ? countOf(stats.interfaceFacesByPhysicalTag, group.tag) : 0;
+    const std::uint64_t shared =
+        group.dimension == 3 ? countOf(stats.interfaceFacesByPhysicalTag, group.tag) : 0;
     fmt::print("  dim {} tag {:<6} {:<24} {} faces{}\n", group.dimension, group.tag,
                group.name.empty() ? "(unnamed)" : fmt::format("\"{}\"", group.name), count,
                shared ? fmt::format(" ({} skin, {} interface)", count - shared, shared) : "");
   }
   for (const auto& [pair, count] : stats.interfaces)
-    fmt::print("  interface {} | {}: {} faces\n", volumeLabel(mesh, pair.first), volumeLabel(mesh, pair.second),
-               count);
+    fmt::print("  interface {} | {}: {} faces\n", volumeLabel(mesh, pair.first),
+               volumeLabel(mesh, pair.second), count);
   if (const auto none = stats.facesByPhysicalTag.find(0); none != stats.facesByPhysicalTag.end())
     fmt::print("  (no physical group)                    {} faces\n", none->second);
   if (!mesh.fields.empty()) {
@@ -176,7 +177,8 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
     const auto faces = stats.facesByPhysicalTag.find(group.tag);
     const std::uint64_t count =
         group.dimension >= 2 && faces != stats.facesByPhysicalTag.end() ? faces->second : 0;
-    const std::uint64_t shared = group.dimension == 3 ? countOf(stats.interfaceFacesByPhysicalTag, group.tag) : 0;
+    const std::uint64_t shared =
+        group.dimension == 3 ? countOf(stats.interfaceFacesByPhysicalTag, group.tag) : 0;
     out += fmt::format(
         "{}\n    {{\"dimension\": {}, \"tag\": {}, \"name\": {}, \"faces\": {}, \"interfaceFaces\": {}}}",
         i ? "," : "", group.dimension, group.tag, jsonString(group.name), count, shared);
@@ -188,10 +190,13 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
     // A volume in no physical group is tag 0 with its elementary entity; a grouped one, entity 0.
     const auto tag = [](std::int64_t v) { return v > 0 ? v : 0; };
     const auto entity = [](std::int64_t v) { return v < 0 ? -v : 0; };
-    const auto name = [&](std::int64_t v) { return jsonString(mesh.physicalName(static_cast<std::int32_t>(tag(v)))); };
-    out += fmt::format("{}\n    {{\"tags\": [{}, {}], \"entities\": [{}, {}], \"names\": [{}, {}], \"faces\": {}}}",
-                       firstInterface ? "" : ",", tag(pair.first), tag(pair.second), entity(pair.first),
-                       entity(pair.second), name(pair.first), name(pair.second), count);
+    const auto name = [&](std::int64_t v) {
+      return jsonString(mesh.physicalName(static_cast<std::int32_t>(tag(v))));
+    };
+    out += fmt::format(
+        "{}\n    {{\"tags\": [{}, {}], \"entities\": [{}, {}], \"names\": [{}, {}], \"faces\": {}}}",
+        firstInterface ? "" : ",", tag(pair.first), tag(pair.second), entity(pair.first), entity(pair.second),
+        name(pair.first), name(pair.second), count);
     firstInterface = false;
   }
   out += stats.interfaces.empty() ? "],\n" : "\n  ],\n";

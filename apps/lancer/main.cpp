@@ -49,7 +49,8 @@ int main(int argc, char** argv) {
          "--max-memory",
          [](const std::string& text) {
            const auto bytes = lancer::parseByteSize(text);
-           if (!bytes) throw CLI::ValidationError("--max-memory", "'" + text + "' is not a size like 4G, 512M or 50%");
+           if (!bytes)
+             throw CLI::ValidationError("--max-memory", "'" + text + "' is not a size like 4G, 512M or 50%");
            lancer::setMemoryBudget(*bytes);
          },
          "Memory budget: inputs that need more fail with a clear message (e.g. 8G, 512M, 50%; "

@@ -76,7 +76,8 @@ bool renderToFile(const PreparedScene& prepared, const Renderer& renderer, const
     return true;
   }
   ImageRowWriter writer(output, settings.width, settings.height, writeOptions);  // a bad folder fails now
-  renderer.renderBands(renderOptions, [&](int, const Image& band) { writer.writeRows(band); }, &stats);
+  renderer.renderBands(
+      renderOptions, [&](int, const Image& band) { writer.writeRows(band); }, &stats);
   if (stats.cancelled || (cancellable && renderOptions.cancel->load())) return false;  // ~writer discards
   writer.commit();
   return true;

@@ -29,7 +29,6 @@ namespace {
 std::atomic<bool> gInterrupted{false};
 extern "C" void onInterrupt(int) { gInterrupted.store(true); }
 
-
 // A .msh by name, or a file that is no scene: a mesh by content, or a file that is neither (a .geo,
 // STL, STEP, ...), which the mesh reader names with the gmsh command that makes a mesh of it.
 bool isMeshFile(const std::string& path) {
@@ -67,17 +66,20 @@ void requireImageMemory(const RenderSettings& settings, int threads, ImageBuffer
   }
   const std::uint64_t bytes = bandMemoryBytes(settings.width, settings.height, threads) +
                               static_cast<std::uint64_t>(settings.width) * 4 + kWriterStateBytes;
-  requireMemory(bytes, SourceLocation{input},
-                fmt::format("a {}x{} image rendered in bands of {} rows", settings.width, settings.height,
-                            kTileSize));
+  requireMemory(
+      bytes, SourceLocation{input},
+      fmt::format("a {}x{} image rendered in bands of {} rows", settings.width, settings.height, kTileSize));
 }
 
 }  // namespace
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
-  command.add_option("--width", overrides.width, "Image width in pixels")->check(CLI::Range(1, kMaxRenderSide));
-  command.add_option("--height", overrides.height, "Image height in pixels")->check(CLI::Range(1, kMaxRenderSide));
-  command.add_option("--samples", overrides.samples, "Samples per pixel (a perfect square for the regular grid)")
+  command.add_option("--width", overrides.width, "Image width in pixels")
+      ->check(CLI::Range(1, kMaxRenderSide));
+  command.add_option("--height", overrides.height, "Image height in pixels")
+      ->check(CLI::Range(1, kMaxRenderSide));
+  command
+      .add_option("--samples", overrides.samples, "Samples per pixel (a perfect square for the regular grid)")
       ->check(CLI::Range(1, kMaxSamples));
   command.add_option("--sampler", overrides.sampler, "Anti-aliasing: regular, stratified or adaptive")
       ->check(CLI::IsMember(choices(kSamplerNames)));
@@ -124,16 +126,18 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
   if (overrides.height) settings.height = *overrides.height;
   if (overrides.maxDepth) settings.maxDepth = *overrides.maxDepth;
   if (overrides.srgb) settings.srgb = true;
-  if (!overrides.sampler.empty()) settings.sampler = *enumFromName<SamplerKind>(kSamplerNames, overrides.sampler);
+  if (!overrides.sampler.empty())
+    settings.sampler = *enumFromName<SamplerKind>(kSamplerNames, overrides.sampler);
   if (overrides.samples) settings.samples = *overrides.samples;
   // The quick look's fill sits at the automatic camera, whose distance depends on the image's aspect.
   if (!preloaded.empty() && (overrides.width || overrides.height))
     placeQuickLookLights(description, preloaded.front());
   const int root = static_cast<int>(std::lround(std::sqrt(settings.samples)));
   if (settings.sampler != SamplerKind::Adaptive && root * root != settings.samples)
-    throw InputError(SourceLocation{"--samples"},
-                     fmt::format("{} samples cannot form an n x n grid: use a perfect square (1, 4, 9, 16, ...)",
-                                 settings.samples));
+    throw InputError(
+        SourceLocation{"--samples"},
+        fmt::format("{} samples cannot form an n x n grid: use a perfect square (1, 4, 9, 16, ...)",
+                    settings.samples));
   requireImageMemory(settings, overrides.threads, imageBuffer ? imageBuffer(settings) : ImageBuffer::Whole,
                      input);
   if (overrides.edges)

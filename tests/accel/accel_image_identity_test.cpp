@@ -20,7 +20,8 @@ SceneDescription blockScene() {
   d.camera.position = Vec3d{7.5, -5.0, 6.0};
   d.camera.up = Vec3d{0, 0, 1};
   d.ambient = {0.1f, 0.1f, 0.1f};
-  d.lights = {{{6.0, -3.0, 8.0}, {0.8f, 0.8f, 0.8f}, {1, 0, 0}}, {{-2.0, 5.0, 3.0}, {0.4f, 0.3f, 0.3f}, {1, 0, 0}}};
+  d.lights = {{{6.0, -3.0, 8.0}, {0.8f, 0.8f, 0.8f}, {1, 0, 0}},
+              {{-2.0, 5.0, 3.0}, {0.4f, 0.3f, 0.3f}, {1, 0, 0}}};
   Material m;
   m.name = "shiny";
   m.reflectivity = {0.3f, 0.3f, 0.3f};

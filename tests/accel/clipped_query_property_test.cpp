@@ -6,9 +6,9 @@
 #include <random>
 #include <string>
 
-#include "support/accel_test_geometry.hpp"
 #include "lancer/accel/accelerator.hpp"
 #include "lancer/math/face_clip_sets.hpp"
+#include "support/accel_test_geometry.hpp"
 
 namespace lancer {
 namespace {
@@ -40,7 +40,8 @@ void addPlanes(FaceClipSets& clips, FaceClipRange range, std::vector<ClipPlane> 
 }
 
 // The definition, written without any accelerator: every triangle, keep what the planes keep.
-bool closestKept(const Soup& soup, const FaceClipSets& clips, const Ray& ray, float tMin, float tMax, Hit& hit) {
+bool closestKept(const Soup& soup, const FaceClipSets& clips, const Ray& ray, float tMin, float tMax,
+                 Hit& hit) {
   Hit best;
   for (const PackedTriangle& tri : packTriangles(soup.positions, soup.faces)) {
     const float t = intersectTriangle(tri, ray, tMin, tMax);
@@ -95,7 +96,8 @@ TEST(ClippedQueryProperty, EveryAcceleratorMatchesTheDefinition) {
                         (!expectHit || (expected.face == actual.face && expected.t == actual.t));
       if (!same && ++failures <= 5)
         ADD_FAILURE() << "ray " << i << ": expected " << (expectHit ? std::to_string(expected.face) : "miss")
-                      << " got " << (gotHit ? std::to_string(actual.face) : "miss") << " occluded " << gotOccluded;
+                      << " got " << (gotHit ? std::to_string(actual.face) : "miss") << " occluded "
+                      << gotOccluded;
     }
     EXPECT_EQ(failures, 0);
     EXPECT_GT(hits, 1000);
@@ -109,7 +111,8 @@ TEST(ClippedQueryProperty, CoincidentFacesOfTwoMeshesAtEqualT) {
   // same t, which a restart from t would skip.
   Soup soup;
   Soup square;
-  square.quad(square.vertex({0, 0, 0}), square.vertex({1, 0, 0}), square.vertex({1, 1, 0}), square.vertex({0, 1, 0}));
+  square.quad(square.vertex({0, 0, 0}), square.vertex({1, 0, 0}), square.vertex({1, 1, 0}),
+              square.vertex({0, 1, 0}));
   const FaceClipRange a = append(soup, square);
   append(soup, square);
   FaceClipSets clips;

@@ -9,10 +9,10 @@
 #include <sstream>
 #include <string>
 
-#include "support/accel_test_geometry.hpp"
 #include "lancer/accel/accelerator.hpp"
 #include "lancer/accel/naive_accel.hpp"
 #include "lancer/mesh/msh_reader.hpp"
+#include "support/accel_test_geometry.hpp"
 
 namespace lancer {
 namespace {
@@ -65,8 +65,8 @@ std::string describe(const test::TestRay& r) {
   std::ostringstream out;
   out.precision(9);
   out << "origin (" << r.ray.origin.x << ", " << r.ray.origin.y << ", " << r.ray.origin.z << ") direction ("
-      << r.ray.direction.x << ", " << r.ray.direction.y << ", " << r.ray.direction.z << ") t in (" << r.tMin << ", "
-      << r.tMax << ")";
+      << r.ray.direction.x << ", " << r.ray.direction.y << ", " << r.ray.direction.z << ") t in (" << r.tMin
+      << ", " << r.tMax << ")";
   return out.str();
 }
 
@@ -85,15 +85,17 @@ void expectSameAnswers(const Soup& soup, int rayCount, std::uint32_t seed) {
       hits += expectHit;
       bool same = expectHit == gotHit;
       if (same && expectHit) {
-        same = expected.face == actual.face && std::abs(expected.t - actual.t) <= 1e-6f * std::abs(expected.t);
+        same =
+            expected.face == actual.face && std::abs(expected.t - actual.t) <= 1e-6f * std::abs(expected.t);
       }
       const bool expectOccluded = naive.occluded(r.ray, r.tMin, r.tMax);
       const bool gotOccluded = tree.occluded(r.ray, r.tMin, r.tMax);
       if ((!same || expectOccluded != gotOccluded) && ++failures <= 5) {
-        ADD_FAILURE() << describe(r) << "\n  naive: " << (expectHit ? "face " + std::to_string(expected.face) : "miss")
-                      << " t " << expected.t << " occluded " << expectOccluded << "\n  kd:    "
-                      << (gotHit ? "face " + std::to_string(actual.face) : "miss") << " t " << actual.t
-                      << " occluded " << gotOccluded;
+        ADD_FAILURE() << describe(r)
+                      << "\n  naive: " << (expectHit ? "face " + std::to_string(expected.face) : "miss")
+                      << " t " << expected.t << " occluded " << expectOccluded
+                      << "\n  kd:    " << (gotHit ? "face " + std::to_string(actual.face) : "miss") << " t "
+                      << actual.t << " occluded " << gotOccluded;
       }
     }
     EXPECT_EQ(failures, 0) << "of " << rays.size() << " rays";
@@ -143,7 +145,8 @@ TEST(KdTreeProperty, GmshHoledBlockMatchesBruteForce) {
 
 TEST(KdTreeProperty, GmshQuadBoxMatchesBruteForce) {
   const Soup soup = loadFixture("quad_box.msh");
-  ASSERT_TRUE(std::any_of(soup.faces.begin(), soup.faces.end(), [](const MeshFace& f) { return f.isQuad(); }));
+  ASSERT_TRUE(
+      std::any_of(soup.faces.begin(), soup.faces.end(), [](const MeshFace& f) { return f.isQuad(); }));
   expectSameAnswers(soup, 5000, 16);
 }
 

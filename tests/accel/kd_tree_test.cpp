@@ -8,9 +8,9 @@
 #include <set>
 #include <stdexcept>
 
-#include "support/accel_test_geometry.hpp"
 #include "lancer/accel/accelerator.hpp"
 #include "lancer/accel/kd_tree.hpp"
+#include "support/accel_test_geometry.hpp"
 
 namespace lancer {
 namespace {
@@ -28,7 +28,8 @@ TEST(KdTree, EmptyMeshHasNoHits) {
 TEST(KdTree, SingleTriangleHitAndOpenInterval) {
   Soup soup;
   soup.triangle({0, 0, 2}, {1, 0, 2}, {0, 1, 2});
-  for (const KdTree& tree : {KdTree::buildSah(soup.positions, soup.faces), KdTree::buildMedian(soup.positions, soup.faces)}) {
+  for (const KdTree& tree :
+       {KdTree::buildSah(soup.positions, soup.faces), KdTree::buildMedian(soup.positions, soup.faces)}) {
     Hit hit;
     const Ray ray({0.25f, 0.25f, 0}, {0, 0, 1});
     ASSERT_TRUE(tree.intersect(ray, 0.0f, 10.0f, hit));
@@ -44,10 +45,11 @@ TEST(KdTree, SingleTriangleHitAndOpenInterval) {
 
 TEST(KdTree, QuadIsOneFaceAndDuplicateTiesGoToLowerFace) {
   Soup soup;
-  const auto a = soup.vertex({0, 0, 1}), b = soup.vertex({1, 0, 1}), c = soup.vertex({1, 1, 1}), d = soup.vertex({0, 1, 1});
+  const auto a = soup.vertex({0, 0, 1}), b = soup.vertex({1, 0, 1}), c = soup.vertex({1, 1, 1}),
+             d = soup.vertex({0, 1, 1});
   soup.triangle({5, 5, 5}, {6, 5, 5}, {5, 6, 5});
-  soup.quad(a, b, c, d);   // face 1
-  soup.quad(a, b, c, d);   // face 2, same place
+  soup.quad(a, b, c, d);  // face 1
+  soup.quad(a, b, c, d);  // face 2, same place
   const KdTree tree = KdTree::buildSah(soup.positions, soup.faces);
   EXPECT_EQ(tree.stats().faces, 3u);
   EXPECT_EQ(tree.stats().triangles, 5u);
@@ -70,7 +72,8 @@ TEST(KdTree, RayInsideSplitPlaneSeesFacesOnBothSides) {
 TEST(KdTree, LayoutInvariants) {
   std::mt19937 rng(3);
   const Soup soup = test::randomSoup(rng, 2000);
-  for (const KdTree& tree : {KdTree::buildSah(soup.positions, soup.faces), KdTree::buildMedian(soup.positions, soup.faces)}) {
+  for (const KdTree& tree :
+       {KdTree::buildSah(soup.positions, soup.faces), KdTree::buildMedian(soup.positions, soup.faces)}) {
     const auto nodes = tree.layout();
     std::set<std::uint32_t> seen;
     std::uint64_t leaves = 0, inner = 0;
@@ -95,7 +98,8 @@ TEST(KdTree, LayoutInvariants) {
     }
     EXPECT_EQ(inner + leaves, tree.stats().nodes);
     EXPECT_EQ(leaves, tree.stats().leaves);
-    EXPECT_EQ(seen.size() + tree.slivers().size(), tree.stats().triangles) << "every triangle is in some leaf";
+    EXPECT_EQ(seen.size() + tree.slivers().size(), tree.stats().triangles)
+        << "every triangle is in some leaf";
     std::set<std::uint32_t> faces;
     for (std::uint32_t offset : seen) faces.insert(tree.triangleAt(offset).face);
     for (const PackedTriangle& t : tree.slivers()) faces.insert(t.face);

@@ -24,7 +24,8 @@ std::vector<fs::path> regressionInputs(const std::string& target) {
   const fs::path folder = fs::path(LANCER_SOURCE_DIR) / "fuzz" / "regressions" / target;
   for (const auto& entry : fs::directory_iterator(folder))
     if (entry.is_regular_file() && entry.path().filename() != "README.md" &&
-        entry.path().filename().string().front() != '.') files.push_back(entry.path());
+        entry.path().filename().string().front() != '.')
+      files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
 }

@@ -23,11 +23,13 @@ std::string readerFile(const std::string& name) {
 
 TEST(ForeignFormats, IgesIsRecognisedByItsEightyColumnRecords) {
   // The start of an IGES file: a Start section line, 80 columns, 'S' in column 73.
-  const std::string line = std::string("IGES file written by a CAD system") + std::string(39, ' ') + "S      1\n";
+  const std::string line =
+      std::string("IGES file written by a CAD system") + std::string(39, ' ') + "S      1\n";
   ASSERT_EQ(line.size(), 81u);
-  EXPECT_EQ(messageFor(line + line, "part.dat"),
-            "this is an IGES CAD model, not a mesh: rename it to part.iges, then mesh it with 'gmsh part.iges -2 "
-            "-o part.msh'");
+  EXPECT_EQ(
+      messageFor(line + line, "part.dat"),
+      "this is an IGES CAD model, not a mesh: rename it to part.iges, then mesh it with 'gmsh part.iges -2 "
+      "-o part.msh'");
   EXPECT_EQ(messageFor("anything", "part.igs"),
             "this is an IGES CAD model, not a mesh: mesh it with 'gmsh part.igs -2 -o part.msh'");
 }
@@ -40,12 +42,15 @@ TEST(ForeignFormats, ObjIsRecognisedByItsVertexAndFaceLines) {
 TEST(ForeignFormats, ContentWinsOverTheName) {
   EXPECT_NE(messageFor(readerFile("box.step"), "box.txt").find("rename it to box.step, then mesh it"),
             std::string::npos);
-  EXPECT_NE(messageFor(readerFile("sphere.stl"), "sphere.msh").find("STL surface (ASCII)"), std::string::npos);
+  EXPECT_NE(messageFor(readerFile("sphere.stl"), "sphere.msh").find("STL surface (ASCII)"),
+            std::string::npos);
   const std::string binary = readerFile("sphere_binary.stl");
   EXPECT_NE(messageFor(binary, "sphere.bin").find("STL surface (binary)"), std::string::npos);
   EXPECT_NE(messageFor(readerFile("sphere.vtk"), "sphere").find("VTK file"), std::string::npos);
-  EXPECT_NE(messageFor(readerFile("temperature.pos"), "t.txt").find("post-processing view"), std::string::npos);
-  EXPECT_NE(messageFor("SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n", "model").find("-3 -o model.msh"),
+  EXPECT_NE(messageFor(readerFile("temperature.pos"), "t.txt").find("post-processing view"),
+            std::string::npos);
+  EXPECT_NE(messageFor("SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n", "model")
+                .find("-3 -o model.msh"),
             std::string::npos);
   EXPECT_NE(messageFor("Point(1) = {0, 0, 0};\n", "sketch.txt").find("-2 -o sketch.msh"), std::string::npos);
 }

@@ -13,7 +13,9 @@
 namespace lancer {
 namespace {
 
-std::string readerFixture(const std::string& name) { return std::string(LANCER_TEST_DATA_DIR) + "/reader/" + name; }
+std::string readerFixture(const std::string& name) {
+  return std::string(LANCER_TEST_DATA_DIR) + "/reader/" + name;
+}
 
 const MeshField* fieldNamed(const Mesh& mesh, const std::string& name) {
   for (const MeshField& field : mesh.fields)
@@ -31,7 +33,8 @@ void expectXField(const Mesh& mesh) {
 }
 
 TEST(MshAppendedViews, ARepeatedIdenticalMeshIsAcceptedAndItsViewKept) {
-  for (const char* file : {"appended_view_v41_ascii.msh", "appended_view_v41_bin.msh", "appended_view_v22_ascii.msh"}) {
+  for (const char* file :
+       {"appended_view_v41_ascii.msh", "appended_view_v41_bin.msh", "appended_view_v22_ascii.msh"}) {
     SCOPED_TRACE(file);
     const Mesh mesh = readMsh(readerFixture(file));
     EXPECT_GT(mesh.faceCount(), 0u);
@@ -46,8 +49,9 @@ TEST(MshAppendedViews, ADifferentSecondMeshIsRefused) {
     readMsh(readerFixture("appended_view_changed_v41_ascii.msh"));
     FAIL() << "no error";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find(":287:1: error: a second $Nodes section that differs from the first"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(error.what()).find(":287:1: error: a second $Nodes section that differs from the first"),
+        std::string::npos)
         << error.what();
   }
 }
@@ -90,9 +94,10 @@ TEST(MshAppendedViews, AnUnreadableFieldSectionIsSkippedWithAWarningAndTheMeshLo
   EXPECT_EQ(mesh.faceCount(), 32u);
   EXPECT_TRUE(mesh.fields.empty());
   ASSERT_EQ(mesh.source.warnings.size(), 1u);
-  const std::string expected = readerFixture("unreadable_nodedata_v41_ascii.msh") +
-                               ":194:1: warning: $NodeData \"temperature\" skipped: 0 components in $NodeData: "
-                               "expected 1 to 9";
+  const std::string expected =
+      readerFixture("unreadable_nodedata_v41_ascii.msh") +
+      ":194:1: warning: $NodeData \"temperature\" skipped: 0 components in $NodeData: "
+      "expected 1 to 9";
   EXPECT_EQ(mesh.source.warnings[0], expected);
   ASSERT_EQ(mesh.source.skippedFields.size(), 1u);
   EXPECT_EQ(mesh.source.skippedFields[0].first, "temperature");

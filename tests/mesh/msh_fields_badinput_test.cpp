@@ -48,12 +48,13 @@ TEST(MshFieldsBadInput, TheFixtureHeaderIsAsExpected) {
 
 TEST(MshFieldsBadInput, MissingNode) {
   std::size_t fields = 0;
-  const std::string what =
-      errorOf(replaceOnce(fixture("node_xy_v41_ascii.msh"), kHeader + "1 0\n", kHeader + "9001 0\n"), &fields);
+  const std::string what = errorOf(
+      replaceOnce(fixture("node_xy_v41_ascii.msh"), kHeader + "1 0\n", kHeader + "9001 0\n"), &fields);
   EXPECT_EQ(what.rfind("f.msh:196:1: warning: ", 0), 0u) << what;
-  EXPECT_NE(what.find("$NodeData 'temperature' gives values for 1 node that $Nodes does not define (the first: "
-                      "node 9001); they were dropped and the other 24 kept"),
-            std::string::npos)
+  EXPECT_NE(
+      what.find("$NodeData 'temperature' gives values for 1 node that $Nodes does not define (the first: "
+                "node 9001); they were dropped and the other 24 kept"),
+      std::string::npos)
       << what;
   EXPECT_EQ(fields, 1u);
 }

@@ -21,7 +21,8 @@ namespace {
 using test::mshFixture;
 
 // Element families in the column order of the table.
-constexpr const char* kFamilies[] = {"triangle", "quadrangle", "tetrahedron", "hexahedron", "prism", "pyramid"};
+constexpr const char* kFamilies[] = {"triangle",   "quadrangle", "tetrahedron",
+                                     "hexahedron", "prism",      "pyramid"};
 constexpr int kFamilyCount = 6;
 
 struct GmshReference {
@@ -44,7 +45,8 @@ std::vector<GmshReference> readReferenceTable() {
     GmshReference row;
     fields >> row.file >> row.nodes;
     for (auto& count : row.elements) fields >> count;
-    fields >> row.lower.x >> row.lower.y >> row.lower.z >> row.upper.x >> row.upper.y >> row.upper.z >> row.area;
+    fields >> row.lower.x >> row.lower.y >> row.lower.z >> row.upper.x >> row.upper.y >> row.upper.z >>
+        row.area;
     if (!fields) throw std::runtime_error("gmsh_reference.tsv: bad line: " + line);
     rows.push_back(row);
   }

@@ -16,7 +16,9 @@
 namespace lancer {
 namespace {
 
-std::string readerFixture(const std::string& name) { return std::string(LANCER_TEST_DATA_DIR) + "/reader/" + name; }
+std::string readerFixture(const std::string& name) {
+  return std::string(LANCER_TEST_DATA_DIR) + "/reader/" + name;
+}
 
 TEST(MshHighOrder, CompleteElementsAreSplitIntoOrderSquaredFacesUsingEveryNode) {
   for (const int type : {21, 23, 25, 42, 43, 44, 45, 46, 36, 37, 38, 47, 48, 49, 50, 51}) {
@@ -53,7 +55,8 @@ TEST(MshHighOrder, CubicQuadsAndQuarticTrianglesCoverTheSquareAsOneSheet) {
   };
   // gmsh -order 3 of square.geo's 16 quads: 16 nodes each, 9 quads; -order 4 of its 32 triangles:
   // 15 nodes each, 16 triangles (MSH 2 binary, each element twice: two physical groups).
-  for (const Case& c : {Case{"square_quad16_v41_ascii.msh", 16 * 9, 13 * 13}, Case{"square_tri15_v22_bin.msh", 32 * 16, 17 * 17}}) {
+  for (const Case& c : {Case{"square_quad16_v41_ascii.msh", 16 * 9, 13 * 13},
+                        Case{"square_tri15_v22_bin.msh", 32 * 16, 17 * 17}}) {
     SCOPED_TRACE(c.file);
     const Mesh mesh = readMsh(readerFixture(c.file));
     EXPECT_EQ(mesh.faceCount(), c.faces);
@@ -68,7 +71,8 @@ TEST(MshHighOrder, CubicQuadsAndQuarticTrianglesCoverTheSquareAsOneSheet) {
 }
 
 TEST(MshHighOrder, VolumesOfOrderThreeGiveTheirClosedSkinThroughTheirCorners) {
-  for (const char* file : {"cube_tet20_v41_bin.msh", "cube_tet20_v22_ascii.msh", "cube_hex64_v41_ascii.msh"}) {
+  for (const char* file :
+       {"cube_tet20_v41_bin.msh", "cube_tet20_v22_ascii.msh", "cube_hex64_v41_ascii.msh"}) {
     SCOPED_TRACE(file);
     const Mesh mesh = readMsh(readerFixture(file));
     EXPECT_GT(mesh.faceCount(), 0u);
@@ -82,7 +86,8 @@ TEST(MshHighOrder, VolumesOfOrderThreeGiveTheirClosedSkinThroughTheirCorners) {
   }
   EXPECT_EQ(mshElementRenderNote(29), "drawn through its corner nodes (its skin's faces are flat)");
   EXPECT_EQ(mshElementRenderNote(36), "split into flat faces through all its nodes");
-  EXPECT_EQ(mshElementRenderNote(39), "drawn through its corner nodes (incomplete element: no interior nodes)");
+  EXPECT_EQ(mshElementRenderNote(39),
+            "drawn through its corner nodes (incomplete element: no interior nodes)");
   EXPECT_EQ(mshElementRenderNote(11), "");
 }
 

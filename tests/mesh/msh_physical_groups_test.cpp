@@ -13,7 +13,9 @@
 namespace lancer {
 namespace {
 
-std::string readerFixture(const std::string& name) { return std::string(LANCER_TEST_DATA_DIR) + "/reader/" + name; }
+std::string readerFixture(const std::string& name) {
+  return std::string(LANCER_TEST_DATA_DIR) + "/reader/" + name;
+}
 
 constexpr const char* kTwoPlates[] = {"two_plates_groups_v41_ascii.msh", "two_plates_groups_v41_bin.msh",
                                       "two_plates_groups_v22_ascii.msh", "two_plates_groups_v22_bin.msh"};

@@ -259,7 +259,8 @@ TEST(MshReader, ThirdOrderTrianglesAreSplitThroughAllTheirNodes) {
     EXPECT_TRUE(stats.shells[0].consistentlyOriented);
     // Element edges: the outer edges of the 9 faces, 3 per element edge.
     std::size_t drawnEdges = 0;
-    for (const std::uint8_t mask : mesh.faceEdgeMask) drawnEdges += static_cast<std::size_t>(std::popcount(mask));
+    for (const std::uint8_t mask : mesh.faceEdgeMask)
+      drawnEdges += static_cast<std::size_t>(std::popcount(mask));
     EXPECT_EQ(drawnEdges, 32u * 9u);
   }
 }
@@ -404,12 +405,12 @@ TEST(MshElementTypes, NodeCountsAndRolesFollowGmsh) {
   EXPECT_EQ(mshElementType(26).role, MshElementRole::kIgnored);
   EXPECT_EQ(mshElementType(9).role, MshElementRole::kSurface);
   EXPECT_EQ(mshElementType(19).role, MshElementRole::kVolume);
-  EXPECT_EQ(mshElementType(21).role, MshElementRole::kSurface);   // 10-node triangle
-  EXPECT_EQ(mshElementType(36).role, MshElementRole::kSurface);   // 16-node quadrangle
-  EXPECT_EQ(mshElementType(29).role, MshElementRole::kVolume);    // 20-node tetrahedron
-  EXPECT_EQ(mshElementType(92).role, MshElementRole::kVolume);    // 64-node hexahedron
-  EXPECT_EQ(mshElementType(34).role, MshElementRole::kUnrenderable);  // polygon
-  EXPECT_EQ(mshElementType(84).role, MshElementRole::kUnrenderable);  // 1-node line
+  EXPECT_EQ(mshElementType(21).role, MshElementRole::kSurface);        // 10-node triangle
+  EXPECT_EQ(mshElementType(36).role, MshElementRole::kSurface);        // 16-node quadrangle
+  EXPECT_EQ(mshElementType(29).role, MshElementRole::kVolume);         // 20-node tetrahedron
+  EXPECT_EQ(mshElementType(92).role, MshElementRole::kVolume);         // 64-node hexahedron
+  EXPECT_EQ(mshElementType(34).role, MshElementRole::kUnrenderable);   // polygon
+  EXPECT_EQ(mshElementType(84).role, MshElementRole::kUnrenderable);   // 1-node line
   EXPECT_EQ(mshElementType(140).role, MshElementRole::kUnrenderable);  // trihedron
   EXPECT_EQ(mshCompleteSurfaceOrder(21), 3);
   EXPECT_EQ(mshCompleteSurfaceOrder(40), 0);  // 16-node quadrangle of order 4, incomplete

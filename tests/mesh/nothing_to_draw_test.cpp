@@ -21,11 +21,13 @@ TEST(NothingToDraw, Msh22And41Agree) {
     EXPECT_FALSE(v41.empty());
     EXPECT_EQ(reasonFor(std::string(base) + "_v22_ascii.msh"), v41);
   }
-  EXPECT_EQ(reasonFor("outline_only_v41_ascii.msh"),
-            "it holds only lines and points (16 2-node lines); lancer draws surfaces and volumes: mesh it with "
-            "gmsh -2 or -3");
-  EXPECT_EQ(reasonFor("box_volume_group_2d_v22_ascii.msh"),
-            "it holds no elements, and its physical groups are volumes: mesh it with -3 (or save with -save_all)");
+  EXPECT_EQ(
+      reasonFor("outline_only_v41_ascii.msh"),
+      "it holds only lines and points (16 2-node lines); lancer draws surfaces and volumes: mesh it with "
+      "gmsh -2 or -3");
+  EXPECT_EQ(
+      reasonFor("box_volume_group_2d_v22_ascii.msh"),
+      "it holds no elements, and its physical groups are volumes: mesh it with -3 (or save with -save_all)");
   EXPECT_EQ(reasonFor("two_plates_groups_v41_ascii.msh"), "");
 }
 

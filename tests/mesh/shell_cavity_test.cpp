@@ -95,8 +95,8 @@ TEST(ShellCavity, ConcentricSpheresOfOneGroupAreAHollowSolid) {
 
 TEST(ShellCavity, EmptyTagListMeansOneGroup) {
   Mesh mesh = readMsh(std::string(kDataDir) + "nested_spheres.msh");
-  const ShellOrientationReport report =
-      orientClosedShellsOutward(mesh.positions, mesh.faces, mesh.faceEdgeMask, std::span<const std::int32_t>{});
+  const ShellOrientationReport report = orientClosedShellsOutward(
+      mesh.positions, mesh.faces, mesh.faceEdgeMask, std::span<const std::int32_t>{});
   EXPECT_EQ(report.cavityShells, 1u);
   expectVolumes(mesh, 1, -1);
 }

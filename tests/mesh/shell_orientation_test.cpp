@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "lancer/mesh/face_geometry.hpp"
-#include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/mesh_stats.hpp"
+#include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/scene.hpp"
 #include "support/files.hpp"
 
@@ -31,7 +31,8 @@ Vec3d faceNormalOf(const Mesh& mesh, const MeshFace& face) {
 int outwardFaces(const Mesh& mesh) {
   const Vec3d centre = toDouble(faceBounds(mesh).center());
   int outward = 0;
-  for (const MeshFace& face : mesh.faces) outward += dot(faceNormalOf(mesh, face), faceCentroid(mesh, face) - centre) > 0;
+  for (const MeshFace& face : mesh.faces)
+    outward += dot(faceNormalOf(mesh, face), faceCentroid(mesh, face) - centre) > 0;
   return outward;
 }
 

@@ -19,7 +19,8 @@ Cube unitCube() {
   Cube cube;
   for (int i = 0; i < 8; ++i)
     cube.positions.push_back({float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)});
-  const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                     {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (const auto& q : quads) cube.faces.push_back({{q[0], q[1], q[2], q[3]}});
   cube.tags.assign(cube.faces.size(), 0);
   return cube;

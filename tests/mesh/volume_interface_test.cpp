@@ -23,9 +23,7 @@ std::string multimaterial(const std::string& name) {
 }
 
 double radius(const Vec3d& p) { return std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z); }
-double largestCoordinate(const Vec3d& p) {
-  return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-}
+double largestCoordinate(const Vec3d& p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); }
 
 // Cube [-1, 1]^3 ("Cube", tag 1) around a ball of radius 0.6 ("Ball", tag 2).
 void expectCubeAroundBall(const Mesh& mesh, const std::string& file) {
@@ -42,7 +40,8 @@ void expectCubeAroundBall(const Mesh& mesh, const std::string& file) {
     } else {
       ASSERT_EQ(mesh.facePhysicalTag[f], 1) << file << " face " << f;  // the cube's skin, in the cube's group
       for (int c = 0; c < face.cornerCount(); ++c)
-        ASSERT_NEAR(largestCoordinate(mesh.worldPosition(face.vertex[c])), 1.0, 1e-9) << file << " face " << f;
+        ASSERT_NEAR(largestCoordinate(mesh.worldPosition(face.vertex[c])), 1.0, 1e-9)
+            << file << " face " << f;
     }
   }
   EXPECT_EQ(interfaces, mesh.source.interfaceFaces * (mesh.faceCount() / mesh.source.skinFaces)) << file;
@@ -81,7 +80,8 @@ TEST(VolumeInterface, VolumesInNoPhysicalGroupAreToldApartByTheirEntities) {
   EXPECT_EQ(mesh.source.interfaceSurfaceElementsMerged, grouped.source.interfaceFaces);
   const MeshStats stats = computeMeshStats(mesh);
   ASSERT_EQ(stats.interfaces.size(), 1u);
-  EXPECT_EQ(stats.interfaces.begin()->first, (std::pair<std::int64_t, std::int64_t>{-3, -2}));  // entities 3, 2
+  EXPECT_EQ(stats.interfaces.begin()->first,
+            (std::pair<std::int64_t, std::int64_t>{-3, -2}));  // entities 3, 2
   EXPECT_EQ(stats.interfaces.begin()->second, grouped.source.interfaceFaces);
 }
 

@@ -46,7 +46,8 @@ TEST(Clip, CapIsAFlatFaceInTheShellsMaterialLitByTheModel) {
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x)
       if (image.at(x, y).b != 1.0f) {
-        EXPECT_NEAR(image.at(x, y).r, centre.r, 2e-3f) << x << "," << y;  // the light is 20 away, not at infinity
+        EXPECT_NEAR(image.at(x, y).r, centre.r, 2e-3f)
+            << x << "," << y;  // the light is 20 away, not at infinity
         ++capPixels;
       }
   EXPECT_NEAR(capPixels, (kSize / 1.5) * (kSize / 1.5), 2 * kSize);
@@ -112,7 +113,8 @@ TEST(Clip, RemovedGeometryCastsNoShadowAndAllClippedShowsBackground) {
 
 TEST(Clip, SceneKeysAreRead) {
   const SceneDescription d = parseScene(
-      "[[clip]]\npoint = [0, 1, 0]\nnormal = [0, 2, 0]\ncap = false\n[[clip]]\npoint = [0, 0, 0]\nnormal = [1, 0, 0]\n",
+      "[[clip]]\npoint = [0, 1, 0]\nnormal = [0, 2, 0]\ncap = false\n[[clip]]\npoint = [0, 0, 0]\nnormal = "
+      "[1, 0, 0]\n",
       "cut.toml");
   ASSERT_EQ(d.clips.size(), 2u);
   EXPECT_EQ(d.clips[0].normal, (Vec3d{0, 1, 0}));
@@ -123,10 +125,12 @@ TEST(Clip, SceneKeysAreRead) {
 TEST(ClipBadInput, MissingOrZeroNormalIsAClearError) {
   auto messageOf = [](const std::string& text) { return test::sceneErrorOf(text, "cut.toml"); };
   EXPECT_NE(messageOf("[[clip]]\npoint = [0, 0, 0]\n").find("normal"), std::string::npos);
-  EXPECT_NE(messageOf("[[clip]]\npoint = [0, 0, 0]\nnormal = [0, 0, 0]\n").find("clip[0].normal must not be [0, 0, 0]"),
+  EXPECT_NE(messageOf("[[clip]]\npoint = [0, 0, 0]\nnormal = [0, 0, 0]\n")
+                .find("clip[0].normal must not be [0, 0, 0]"),
             std::string::npos);
-  EXPECT_NE(messageOf("[[clip]]\npoint = [0, 0, 0]\nnormal = [0, 0, 1]\ncpa = true\n").find("did you mean 'cap'"),
-            std::string::npos);
+  EXPECT_NE(
+      messageOf("[[clip]]\npoint = [0, 0, 0]\nnormal = [0, 0, 1]\ncpa = true\n").find("did you mean 'cap'"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -22,7 +22,9 @@ TEST(EdgeOverlay, CoverageIsOneOnTheLineAndFadesOverOnePixel) {
   const Vec3 corners[3] = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}};
   const Vec3 down{0, 0, -1};
   const float pixel = 0.1f, width = 2.0f;  // the line is 0.2 wide, centred on the edge
-  auto coverageAt = [&](float x, float y) { return edgeCoverage({x, y, 1}, down, corners, 3, 0x1, 0, pixel, width); };
+  auto coverageAt = [&](float x, float y) {
+    return edgeCoverage({x, y, 1}, down, corners, 3, 0x1, 0, pixel, width);
+  };
   EXPECT_FLOAT_EQ(coverageAt(5, 0.0f), 1.0f);
   EXPECT_FLOAT_EQ(coverageAt(5, 0.05f), 1.0f);
   EXPECT_NEAR(coverageAt(5, 0.1f), 0.5f, 1e-5f);  // the line's border: half covered
@@ -43,7 +45,8 @@ TEST(EdgeOverlay, LinesKeepTheirPixelWidthAtAnyDistance) {
         edgeCoverage(origin, {0, 0, -1}, corners, 4, 0x1, 0, perspective.at(distance), 2.0f);
     EXPECT_NEAR(coverage, 0.0f, 1e-5f) << distance;
     const Vec3 closer{0, -distance * 0.0018f, distance};  // 0.9 pixel off: inside a 2-pixel line
-    EXPECT_NEAR(edgeCoverage(closer, {0, 0, -1}, corners, 4, 0x1, 0, perspective.at(distance), 2.0f), 0.6f, 1e-3f);
+    EXPECT_NEAR(edgeCoverage(closer, {0, 0, -1}, corners, 4, 0x1, 0, perspective.at(distance), 2.0f), 0.6f,
+                1e-3f);
   }
 }
 

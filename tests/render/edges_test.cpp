@@ -39,12 +39,14 @@ Rgba pixelAt(const Image& image, double x, double y) {
   const double pixel = 1.2 / kSize;
   x = std::clamp(x, 1e-3, 1 - 1e-3);
   y = std::clamp(y, 1e-3, 1 - 1e-3);
-  return image.at(static_cast<int>((x - 0.5) / pixel + kSize / 2.0), static_cast<int>((0.5 - y) / pixel + kSize / 2.0));
+  return image.at(static_cast<int>((x - 0.5) / pixel + kSize / 2.0),
+                  static_cast<int>((0.5 - y) / pixel + kSize / 2.0));
 }
 
 TEST(Edges, DrawnOnElementEdgesOnlyForEverySquareMesh) {
-  for (const char* fixture : {"square_tri3_v41_bin.msh", "square_quad4_v41_bin.msh", "square_tri6_v41_bin.msh",
-                              "square_quad8_v41_bin.msh", "square_quad9_v41_bin.msh"}) {
+  for (const char* fixture :
+       {"square_tri3_v41_bin.msh", "square_quad4_v41_bin.msh", "square_tri6_v41_bin.msh",
+        "square_quad8_v41_bin.msh", "square_quad9_v41_bin.msh"}) {
     const Image image = renderTopDown(fixture);
     // Element edges at multiples of 0.25 are red: pixel centres sit half a pixel off the lines, so
     // a 1.5-pixel line covers them by 3/4 (a little less next to a mid-edge node, where the middle
@@ -72,9 +74,12 @@ TEST(Edges, DrawnOnElementEdgesOnlyForEverySquareMesh) {
 TEST(Edges, SecondOrderMeshesLookLikeTheirLinearMeshes) {
   // gmsh makes the order-2 mesh from the same linear mesh, so with only element edges drawn the
   // pictures must agree: a drawn split edge would differ by whole lines of pixels.
-  EXPECT_GT(test::psnr8(renderTopDown("square_tri6_v41_bin.msh"), renderTopDown("square_tri3_v41_bin.msh")), 40);
-  EXPECT_GT(test::psnr8(renderTopDown("square_quad8_v41_bin.msh"), renderTopDown("square_quad4_v41_bin.msh")), 40);
-  EXPECT_GT(test::psnr8(renderTopDown("square_quad9_v41_bin.msh"), renderTopDown("square_quad4_v41_bin.msh")), 40);
+  EXPECT_GT(test::psnr8(renderTopDown("square_tri6_v41_bin.msh"), renderTopDown("square_tri3_v41_bin.msh")),
+            40);
+  EXPECT_GT(test::psnr8(renderTopDown("square_quad8_v41_bin.msh"), renderTopDown("square_quad4_v41_bin.msh")),
+            40);
+  EXPECT_GT(test::psnr8(renderTopDown("square_quad9_v41_bin.msh"), renderTopDown("square_quad4_v41_bin.msh")),
+            40);
 }
 
 TEST(Edges, WidthIsInPixels) {

@@ -94,7 +94,8 @@ TEST(MultiMaterialRender, VolumesWithoutPhysicalGroupsAreCappedEverywhere) {
   int inSquare = 0, other = 0;
   for (int j = 4; j < kSize - 4; ++j) {
     for (int i = 4; i < kSize - 4; ++i) {
-      const double x = (i + 0.5 - kSize / 2.0) * kViewHeight / kSize, y = (kSize / 2.0 - j - 0.5) * kViewHeight / kSize;
+      const double x = (i + 0.5 - kSize / 2.0) * kViewHeight / kSize,
+                   y = (kSize / 2.0 - j - 0.5) * kViewHeight / kSize;
       if (std::max(std::abs(x), std::abs(y)) > 0.97) continue;
       ++inSquare;
       other += std::abs(image.at(i, j).r - cap.r) > 1e-4f;
@@ -129,7 +130,8 @@ void forEachPixelOnTheCut(const Image& image, const Vec3d& position, Visit&& vis
   const double pixel = kViewHeight / kSize;
   for (int j = 0; j < kSize; ++j) {
     for (int i = 0; i < kSize; ++i) {
-      const Vec3d origin = position + right * ((i + 0.5 - kSize / 2.0) * pixel) + up * ((kSize / 2.0 - j - 0.5) * pixel);
+      const Vec3d origin =
+          position + right * ((i + 0.5 - kSize / 2.0) * pixel) + up * ((kSize / 2.0 - j - 0.5) * pixel);
       const Rgba seen = image.at(i, j);
       visit(Vec3{seen.r, seen.g, seen.b}, origin + forward * (-origin.z / forward.z));
     }

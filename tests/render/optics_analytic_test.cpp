@@ -31,14 +31,16 @@ Mesh meshOf(std::vector<Vec3> positions, std::vector<MeshFace> faces) {
 Mesh inwardBox(float a, float b, float c) {
   std::vector<Vec3> p;
   for (int i = 0; i < 8; ++i) p.push_back({i & 1 ? a : -a, i & 2 ? b : -b, i & 4 ? c : -c});
-  return meshOf(p, {{{0, 1, 3, 2}}, {{4, 6, 7, 5}}, {{0, 4, 5, 1}}, {{2, 3, 7, 6}}, {{0, 2, 6, 4}}, {{1, 5, 7, 3}}});
+  return meshOf(
+      p, {{{0, 1, 3, 2}}, {{4, 6, 7, 5}}, {{0, 4, 5, 1}}, {{2, 3, 7, 6}}, {{0, 2, 6, 4}}, {{1, 5, 7, 3}}});
 }
 
 // Right-angle prism along y in [-1, 1], cross-section (x, z): (0, 1), (2, 1), (0, -1). Its top face
 // z = 1 and its side x = 0 are the legs, the hypotenuse runs from (2, 1) to (0, -1). Mixed winding.
 Mesh rightAnglePrism() {
   const std::vector<Vec3> p = {{0, -1, 1}, {2, -1, 1}, {0, -1, -1}, {0, 1, 1}, {2, 1, 1}, {0, 1, -1}};
-  return meshOf(p, {{{0, 1, 2, kNoVertex}}, {{3, 4, 5, kNoVertex}}, {{0, 1, 4, 3}}, {{0, 3, 5, 2}}, {{1, 2, 5, 4}}});
+  return meshOf(
+      p, {{{0, 1, 2, kNoVertex}}, {{3, 4, 5, kNoVertex}}, {{0, 1, 4, 3}}, {{0, 3, 5, 2}}, {{1, 2, 5, 4}}});
 }
 
 // A material that only shows ambient light: local colour = ambient * ka exactly.
@@ -105,8 +107,10 @@ TEST(Optics, SnellsLawAndTotalInternalReflection) {
   // Critical angle of glass to air: asin(1/1.5) = 41.81 degrees.
   Vec3 t;
   const double critical = std::asin(1.0 / 1.5);
-  EXPECT_TRUE(refract({float(std::sin(critical - 1e-3)), 0, float(-std::cos(critical - 1e-3))}, normal, 1.5f, t));
-  EXPECT_FALSE(refract({float(std::sin(critical + 1e-3)), 0, float(-std::cos(critical + 1e-3))}, normal, 1.5f, t));
+  EXPECT_TRUE(
+      refract({float(std::sin(critical - 1e-3)), 0, float(-std::cos(critical - 1e-3))}, normal, 1.5f, t));
+  EXPECT_FALSE(
+      refract({float(std::sin(critical + 1e-3)), 0, float(-std::cos(critical + 1e-3))}, normal, 1.5f, t));
 }
 
 TEST(Optics, FresnelAtNormalIncidenceAndReciprocity) {
@@ -117,8 +121,8 @@ TEST(Optics, FresnelAtNormalIncidenceAndReciprocity) {
   for (double degrees = 1; degrees < 41; degrees += 2) {
     const double inside = degrees * kDegree;
     const double outside = std::asin(1.5 * std::sin(inside));
-    EXPECT_NEAR(dielectricFresnel(float(std::cos(inside)), 1.5f), dielectricFresnel(float(std::cos(outside)), 1 / 1.5f),
-                1e-5);
+    EXPECT_NEAR(dielectricFresnel(float(std::cos(inside)), 1.5f),
+                dielectricFresnel(float(std::cos(outside)), 1 / 1.5f), 1e-5);
   }
 }
 
@@ -145,7 +149,8 @@ TEST(OpticsAnalytic, GlassSlabExitsParallelDisplacedByTheAnalyticAmount) {
       d.meshes[1].material = 1;
       d.meshes[1].rotateDegrees = {0, tiltDegrees, 0};
       // The floor is white where x > kEdge; the slab's faces are wound inward on purpose.
-      const RayProbe probe(d, {test::squareMesh(kEdge, -6, 6, 6, floorDepth[k]), inwardBox(6, 6, kThickness / 2)});
+      const RayProbe probe(
+          d, {test::squareMesh(kEdge, -6, 6, 6, floorDepth[k]), inwardBox(6, 6, kThickness / 2)});
       edgeSeen[k] = apparentEdge(probe, kEdge - 2.0, kEdge + 2.0);
     }
     const double theta = tiltDegrees * kDegree;
@@ -165,13 +170,15 @@ TEST(OpticsAnalytic, GlassSlabExitsParallelDisplacedByTheAnalyticAmount) {
 // angle asin(1/n) when n > sqrt(2), it is reflected towards -x onto a green wall at x = -3;
 // otherwise it leaves through the hypotenuse and lands on the red floor at z = -3.
 Vec3 prismRay(float ior) {
-  SceneDescription d = ambientOnly({emitter("floor", {1, 0, 0}), clearGlass(ior), emitter("wall", {0, 1, 0})});
+  SceneDescription d =
+      ambientOnly({emitter("floor", {1, 0, 0}), clearGlass(ior), emitter("wall", {0, 1, 0})});
   d.meshes.resize(3);
   d.meshes[1].material = 1;
   d.meshes[2].material = 2;
   d.meshes[2].rotateDegrees = {0, -90, 0};  // the square's +z normal turned to +x
   d.meshes[2].translate = {-3, 0, 0};
-  const RayProbe probe(d, {test::squareMesh(-2.9f, -5, 6, 5, -3), rightAnglePrism(), test::squareMesh(-5, -5, 2.9f, 5, 0)});
+  const RayProbe probe(
+      d, {test::squareMesh(-2.9f, -5, 6, 5, -3), rightAnglePrism(), test::squareMesh(-5, -5, 2.9f, 5, 0)});
   return probe.trace({0.5, 0.2, 10}, {0, 0, -1});
 }
 
@@ -269,7 +276,6 @@ TEST(OpticsAnalytic, LightIsAbsorbedAlongTheShadowRayAlsoWhenItStartsInsideTheSo
   EXPECT_NEAR(seen.x, std::exp(-2.0), 2e-3);
   EXPECT_NEAR(seen.y, std::exp(-4.0), 2e-3);
 }
-
 
 // A mirror ball and a glass ball side by side, seen in perspective.
 SceneDescription twoBalls(std::vector<Material> materials) {

@@ -31,7 +31,8 @@ TEST(OpticsKeysBadInput, AdaptiveThresholdMustBePositive) {
 
 TEST(OpticsKeysBadInput, OpticalMaterialKeysAreRead) {
   const SceneDescription scene = parseScene(
-      "[render]\nadaptive_threshold = 0.125\n[material.g]\nreflectivity = [0.1, 0.2, 0.05]\ntransparency = 0.7\n"
+      "[render]\nadaptive_threshold = 0.125\n[material.g]\nreflectivity = [0.1, 0.2, 0.05]\ntransparency = "
+      "0.7\n"
       "ior = 1.33\nfresnel = true\nabsorption = [0.5, 0.25, 0]\n",
       "scene.toml");
   EXPECT_FLOAT_EQ(scene.render.adaptiveThreshold, 0.125f);

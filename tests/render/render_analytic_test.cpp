@@ -63,12 +63,13 @@ TEST(RenderAnalytic, PlaneMatchesLightingModelEveryPixel) {
           for (int c = 0; c < 4; ++c) {
             const Vec3 lc = normalize(Vec3{1, 2, 3} - corners[c]);
             const Vec3 r = n * (2 * dot(n, lc)) - lc;
-            expected += Vec3{0.9f, 0.8f, 0.7f} * (m.kd * dot(n, lc) + m.ks * std::pow(std::max(0.f, dot(r, v)), 12.f)) *
-                        weights[c];
+            expected += Vec3{0.9f, 0.8f, 0.7f} *
+                        (m.kd * dot(n, lc) + m.ks * std::pow(std::max(0.f, dot(r, v)), 12.f)) * weights[c];
           }
         } else {
           const Vec3 r = n * (2 * cosTheta) - l;
-          expected += Vec3{0.9f, 0.8f, 0.7f} * (m.kd * cosTheta + m.ks * std::pow(std::max(0.f, dot(r, v)), 12.f));
+          expected +=
+              Vec3{0.9f, 0.8f, 0.7f} * (m.kd * cosTheta + m.ks * std::pow(std::max(0.f, dot(r, v)), 12.f));
         }
         const Rgba got = image.at(x, y);
         ASSERT_NEAR(got.r, expected.x, 2e-4) << "pixel " << x << "," << y << " shading " << int(shading);
@@ -90,8 +91,8 @@ TEST(RenderAnalytic, SquareOccluderShadowsExactlyItsProjection) {
   floor.ks = {0, 0, 0};
   d.materials = {floor};
   d.meshes.resize(2);
-  const Scene scene =
-      test::sceneFromMeshes(d, {test::squareMesh(-2, -2, 2, 2, 0), test::squareMesh(-0.5f, -0.5f, 0.5f, 0.5f, 1)});
+  const Scene scene = test::sceneFromMeshes(
+      d, {test::squareMesh(-2, -2, 2, 2, 0), test::squareMesh(-0.5f, -0.5f, 0.5f, 0.5f, 1)});
   const Image image = test::renderScene(d, scene);
   const float ambientOnly = d.ambient.x * floor.ka.x;
   int shadowed = 0;
@@ -121,8 +122,8 @@ TEST(RenderAnalytic, BitIdenticalForAnyThreadCount) {
   d.render.sampler = SamplerKind::Stratified;
   d.lights = {{{0.3, -0.2, 4}, {1, 1, 1}, {1, 0, 0}}};
   d.meshes.resize(2);
-  const Scene scene =
-      test::sceneFromMeshes(d, {test::squareMesh(-2, -2, 2, 2, 0), test::squareMesh(-0.4f, -0.7f, 0.6f, 0.2f, 1)});
+  const Scene scene = test::sceneFromMeshes(
+      d, {test::squareMesh(-2, -2, 2, 2, 0), test::squareMesh(-0.4f, -0.7f, 0.6f, 0.2f, 1)});
   const Image one = test::renderScene(d, scene, AccelKind::KdTreeSah, 1);
   EXPECT_TRUE(one == test::renderScene(d, scene, AccelKind::KdTreeSah, 2));
   EXPECT_TRUE(one == test::renderScene(d, scene, AccelKind::KdTreeSah, 3));
@@ -146,7 +147,8 @@ TEST(RenderAnalytic, FarFromOriginRendersLikeAtOrigin) {
       far, {test::squareMesh(-2, -2, 2, 2, 0), test::squareMesh(-0.5f, -0.5f, 0.5f, 0.5f, 1)});
   double maxDifference = 0;
   for (int y = 0; y < 48; ++y)
-    for (int x = 0; x < 48; ++x) maxDifference = std::max(maxDifference, double(std::abs(atOrigin.at(x, y).r - translated.at(x, y).r)));
+    for (int x = 0; x < 48; ++x)
+      maxDifference = std::max(maxDifference, double(std::abs(atOrigin.at(x, y).r - translated.at(x, y).r)));
   EXPECT_LT(maxDifference, 1.0 / 255);
 }
 

@@ -75,7 +75,8 @@ TEST(Sampler, RegularGridCoverageWithinHalfASampleRowOfTheExactArea) {
           const double x0 = (x - kSize / 2) * pixel, y1 = (kSize / 2 - y) * pixel;
           const double exact = coveredFraction(nx, ny, kEdgeOffset, x0, y1 - pixel, x0 + pixel, y1);
           const double error = std::abs(image.at(x, y).r - exact);
-          ASSERT_LE(error, 1.0 / (2 * n) + 1e-4) << "n " << n << ", angle " << angle << ", pixel " << x << "," << y;
+          ASSERT_LE(error, 1.0 / (2 * n) + 1e-4)
+              << "n " << n << ", angle " << angle << ", pixel " << x << "," << y;
           worstRatio = std::max(worstRatio, error * 2 * n);
         }
       }
@@ -101,7 +102,8 @@ TEST(Sampler, AdaptiveUsesFarFewerSamplesYetMatchesTheRegularGrid) {
   for (double angle : {0.0, 30.0}) {
     RenderStats regularStats, adaptiveStats;
     const Image regular = renderHalfPlane(halfPlaneScene(angle, 16, SamplerKind::Regular), 0, &regularStats);
-    const Image adaptive = renderHalfPlane(halfPlaneScene(angle, 16, SamplerKind::Adaptive), 0, &adaptiveStats);
+    const Image adaptive =
+        renderHalfPlane(halfPlaneScene(angle, 16, SamplerKind::Adaptive), 0, &adaptiveStats);
     EXPECT_DOUBLE_EQ(regularStats.samplesPerPixel, 16.0);
     EXPECT_LT(adaptiveStats.samplesPerPixel, 4.0) << "angle " << angle;
     EXPECT_GT(adaptiveStats.samplesPerPixel, 1.0);

@@ -15,7 +15,8 @@ namespace {
 
 const std::string kDataDir = LANCER_TEST_DATA_DIR "/render/";
 
-Image renderSceneFile(const std::string& sceneFile, ShadingMode shading, AccelKind accel = AccelKind::KdTreeSah) {
+Image renderSceneFile(const std::string& sceneFile, ShadingMode shading,
+                      AccelKind accel = AccelKind::KdTreeSah) {
   SceneDescription description = loadScene(kDataDir + sceneFile);
   description.render.shading = shading;
   const Scene scene = buildScene(description);

@@ -48,9 +48,9 @@ TEST(ShadowCatcher, OverATransparentBackgroundTheShadowIsOpacity) {
   d.render.transparentBackground = true;
   d.render.background = {0, 0, 0};
   const Image image = render(d);
-  EXPECT_EQ(image.at(1, 20).a, 0.0f);                 // bare floor: transparent
+  EXPECT_EQ(image.at(1, 20).a, 0.0f);                   // bare floor: transparent
   EXPECT_NEAR(image.at(9, 20).a, 1.0f - 0.25f, 2e-3f);  // shadow: 1 - kept
-  EXPECT_EQ(image.at(20, 20).a, 1.0f);                // the part: opaque
+  EXPECT_EQ(image.at(20, 20).a, 1.0f);                  // the part: opaque
 }
 
 TEST(ShadowCatcher, DefaultHeightIsTheLowestPointAndKeysAreChecked) {
@@ -58,16 +58,20 @@ TEST(ShadowCatcher, DefaultHeightIsTheLowestPointAndKeysAreChecked) {
   d.floor->height.reset();  // the occluder's own plane z = 1: it casts no shadow on itself
   const Image image = render(d);
   EXPECT_FLOAT_EQ(image.at(9, 20).r, 0.8f);
-  const SceneDescription parsed = parseScene("[floor]\nshadow_catcher = true\nheight = -2\nnormal = [0, 0, 3]\n", "f.toml");
+  const SceneDescription parsed =
+      parseScene("[floor]\nshadow_catcher = true\nheight = -2\nnormal = [0, 0, 3]\n", "f.toml");
   ASSERT_TRUE(parsed.floor.has_value());
   EXPECT_EQ(*parsed.floor->height, -2.0);
   EXPECT_EQ(parsed.floor->normal, (Vec3d{0, 0, 1}));
   auto messageOf = [](const std::string& text) { return test::sceneErrorOf(text, "f.toml"); };
-  EXPECT_EQ(messageOf("[floor]\nheight = 0\n"), "f.toml:1:1: error: [floor] has no 'shadow_catcher'; add shadow_catcher = true");
-  EXPECT_NE(messageOf("[floor]\nshadow_catcher = false\n").find("f.toml:2:18: error: floor.shadow_catcher = false is not supported"),
+  EXPECT_EQ(messageOf("[floor]\nheight = 0\n"),
+            "f.toml:1:1: error: [floor] has no 'shadow_catcher'; add shadow_catcher = true");
+  EXPECT_NE(messageOf("[floor]\nshadow_catcher = false\n")
+                .find("f.toml:2:18: error: floor.shadow_catcher = false is not supported"),
             std::string::npos);
-  EXPECT_NE(messageOf("[floor]\nshadow_catcher = true\nnormal = [0, 0, 0]\n").find("floor.normal must not be"),
-            std::string::npos);
+  EXPECT_NE(
+      messageOf("[floor]\nshadow_catcher = true\nnormal = [0, 0, 0]\n").find("floor.normal must not be"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -53,7 +53,8 @@ SphereErrors compareWithExactSphere(ShadingMode shading) {
                                   d.ambient.y * m.ka.y + 0.8 * m.kd.y * cosTheta,
                                   d.ambient.z * m.ka.z + 0.7 * m.kd.z * cosTheta};
       const double actual[3] = {got.r, got.g, got.b};
-      for (int c = 0; c < 3; ++c) errors.maxInside = std::max(errors.maxInside, 255 * std::abs(actual[c] - expected[c]));
+      for (int c = 0; c < 3; ++c)
+        errors.maxInside = std::max(errors.maxInside, 255 * std::abs(actual[c] - expected[c]));
       ++errors.pixelsChecked;
     }
   }

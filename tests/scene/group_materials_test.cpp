@@ -14,10 +14,13 @@
 namespace lancer {
 namespace {
 
-std::string readerFixture(const std::string& name) { return std::string(LANCER_TEST_DATA_DIR) + "/reader/" + name; }
+std::string readerFixture(const std::string& name) {
+  return std::string(LANCER_TEST_DATA_DIR) + "/reader/" + name;
+}
 
 // Materials 0 (default), 1, 2, 3; mappings (group, material) in file order.
-std::vector<std::uint32_t> faceMaterials(const char* file, const std::vector<std::pair<std::string, int>>& groups) {
+std::vector<std::uint32_t> faceMaterials(const char* file,
+                                         const std::vector<std::pair<std::string, int>>& groups) {
   SceneDescription description;
   description.materials.resize(4);
   MeshInstance instance;
@@ -30,8 +33,8 @@ std::vector<std::uint32_t> faceMaterials(const char* file, const std::vector<std
 }
 
 // (left square's material, right square's material), every face of a square the same.
-std::pair<std::uint32_t, std::uint32_t> squareMaterials(const char* file,
-                                                        const std::vector<std::pair<std::string, int>>& groups) {
+std::pair<std::uint32_t, std::uint32_t> squareMaterials(
+    const char* file, const std::vector<std::pair<std::string, int>>& groups) {
   const Mesh mesh = readMsh(readerFixture(file));
   const std::vector<std::uint32_t> materials = faceMaterials(file, groups);
   std::set<std::uint32_t> left, right;

@@ -128,16 +128,20 @@ TEST(SceneLoaderBadInput, MeshClipIsCheckedLikeSceneClip) {
                       "mesh[0].clip[0].normal must not be [0, 0, 0]"));
   EXPECT_TRUE(failsAt(mesh + "[[mesh.clip]]\npoint = [0, 0, 0]\nnormal = [0, 0, 1]\ncpa = true\n", "6:1",
                       "unknown key 'cpa' in mesh[0].clip[0] (did you mean 'cap'?)"));
-  EXPECT_TRUE(failsAt(mesh + "[[mesh.clip]]\npoint = [0, 0]\nnormal = [0, 0, 1]\n", "4:9", "mesh[0].clip[0].point"));
+  EXPECT_TRUE(
+      failsAt(mesh + "[[mesh.clip]]\npoint = [0, 0]\nnormal = [0, 0, 1]\n", "4:9", "mesh[0].clip[0].point"));
   EXPECT_TRUE(failsAt(mesh + "[[mesh.clip]]\npoint = [0, 0, 0]\nnormal = [0, 0, 1]\ncap = \"yes\"\n", "6:7",
                       "mesh[0].clip[0].cap"));
   // The second mesh's second plane is named as such.
-  EXPECT_TRUE(failsAt(mesh + mesh + "[[mesh.clip]]\npoint = [0, 0, 0]\nnormal = [0, 0, 1]\n[[mesh.clip]]\npoint = [0, 0, 0]\n",
-                      "8:1", "mesh[1].clip[1] has no 'normal'"));
+  EXPECT_TRUE(
+      failsAt(mesh + mesh +
+                  "[[mesh.clip]]\npoint = [0, 0, 0]\nnormal = [0, 0, 1]\n[[mesh.clip]]\npoint = [0, 0, 0]\n",
+              "8:1", "mesh[1].clip[1] has no 'normal'"));
   EXPECT_TRUE(failsAt(mesh + "clip = 3\n", "3:8",
                       "mesh[0].clip must be an array of tables: write [[mesh.clip]] for each one, not"));
-  EXPECT_TRUE(failsAt(mesh + "[mesh.clip]\npoint = [0, 0, 0]\n", "3:1",
-                      "mesh[0].clip must be an array of tables: write [[mesh.clip]] for each one, not [mesh.clip]"));
+  EXPECT_TRUE(
+      failsAt(mesh + "[mesh.clip]\npoint = [0, 0, 0]\n", "3:1",
+              "mesh[0].clip must be an array of tables: write [[mesh.clip]] for each one, not [mesh.clip]"));
   EXPECT_TRUE(failsAt(mesh + "clip = [1]\n", "3:9", "mesh[0].clip[0] must be a table written [[mesh.clip]]"));
   EXPECT_TRUE(failsAt(mesh + "clp = []\n", "3:1", "unknown key 'clp' in mesh[0] (did you mean 'clip'?)"));
 }

@@ -22,8 +22,12 @@ struct Soup {
     positions.push_back(p);
     return static_cast<std::uint32_t>(positions.size() - 1);
   }
-  void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) { faces.push_back({{a, b, c, kNoVertex}}); }
-  void quad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) { faces.push_back({{a, b, c, d}}); }
+  void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    faces.push_back({{a, b, c, kNoVertex}});
+  }
+  void quad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    faces.push_back({{a, b, c, d}});
+  }
   void triangle(Vec3 a, Vec3 b, Vec3 c) { triangle(vertex(a), vertex(b), vertex(c)); }
 };
 
@@ -95,8 +99,9 @@ inline Soup sphere(int rings, int segments, Vec3 center = {0.5f, 0.5f, 0.5f}, fl
     const float theta = pi * float(r) / float(rings);
     for (int s = 0; s < segments; ++s) {
       const float phi = 2.0f * pi * float(s) / float(segments);
-      ring.push_back(soup.vertex(center + Vec3{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                                               std::cos(theta)} * radius));
+      ring.push_back(soup.vertex(
+          center +
+          Vec3{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)} * radius));
     }
   }
   const std::uint32_t south = soup.vertex(center - Vec3{0, 0, radius});
@@ -117,9 +122,9 @@ inline Soup adversarialSoup(std::mt19937& rng) {
   for (int i = 0; i < 40; ++i) {
     const Vec3 a = randomPoint(rng, {0, 0, 0}, {1, 1, 1});
     const Vec3 d = randomDirection(rng) * 0.3f;
-    soup.triangle(a, a + d, a + d * 2.0f);                                // collinear
-    soup.triangle(a, a, a + d);                                           // repeated corner
-    soup.triangle(a, a + d, a + d * 0.5f + Vec3{1e-7f, 0, 0});            // sliver
+    soup.triangle(a, a + d, a + d * 2.0f);                      // collinear
+    soup.triangle(a, a, a + d);                                 // repeated corner
+    soup.triangle(a, a + d, a + d * 0.5f + Vec3{1e-7f, 0, 0});  // sliver
   }
   for (int i = 0; i < 200; ++i) {
     // Axis-aligned triangles on a few planes shared with the grid coordinates 0.25, 0.5, 0.75.
@@ -148,11 +153,14 @@ struct TestRay {
   float tMax = std::numeric_limits<float>::infinity();
 };
 
-inline Vec3 corner(const Soup& soup, std::uint32_t face, int c) { return soup.positions[soup.faces[face].vertex[c]]; }
+inline Vec3 corner(const Soup& soup, std::uint32_t face, int c) {
+  return soup.positions[soup.faces[face].vertex[c]];
+}
 
 // Random rays plus rays aimed at vertices, edge points, face centres and the tree's split planes,
 // and axis-parallel rays whose origins lie in split planes.
-inline std::vector<TestRay> adversarialRays(const Soup& soup, const KdTree& tree, std::mt19937& rng, int count) {
+inline std::vector<TestRay> adversarialRays(const Soup& soup, const KdTree& tree, std::mt19937& rng,
+                                            int count) {
   std::vector<TestRay> rays;
   Aabb box;
   for (const Vec3& p : soup.positions) box.extend(p);
@@ -194,10 +202,16 @@ inline std::vector<TestRay> adversarialRays(const Soup& soup, const KdTree& tree
         rays.push_back(r);
         break;
       }
-      case 1: aimAt(a, i / 8 % 3); break;                                    // vertex
-      case 2: aimAt(a + (b - a) * 0.5f, i / 8 % 3); break;                   // edge midpoint
-      case 3: aimAt(a + (b - a) * unit(rng), i / 8 % 3); break;              // edge point
-      case 4: {                                                              // split plane point
+      case 1:
+        aimAt(a, i / 8 % 3);
+        break;  // vertex
+      case 2:
+        aimAt(a + (b - a) * 0.5f, i / 8 % 3);
+        break;  // edge midpoint
+      case 3:
+        aimAt(a + (b - a) * unit(rng), i / 8 % 3);
+        break;   // edge point
+      case 4: {  // split plane point
         Vec3 target = randomPoint(rng, box.lower, box.upper);
         const int axis = static_cast<int>(rng() % 3);
         target[axis] = pickSplit(axis, target[axis]);

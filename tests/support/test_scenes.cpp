@@ -59,6 +59,8 @@ Image renderMeshes(const SceneDescription& description, std::vector<Mesh> meshes
   return renderScene(description, sceneFromMeshes(description, std::move(meshes)), accel, threads);
 }
 
-Image renderScene(const SceneDescription& description) { return renderScene(description, buildScene(description)); }
+Image renderScene(const SceneDescription& description) {
+  return renderScene(description, buildScene(description));
+}
 
 }  // namespace lancer::test

@@ -50,9 +50,10 @@ TEST(MemoryBudget, RequireMemoryThrowsALocatedErrorOverTheBudget) {
     requireMemory(3ull << 30, SourceLocation{"a.msh", 3, 1}, "$Nodes with 50331648 entries");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "a.msh:3:1: error: $Nodes with 50331648 entries needs 3.0 GiB, more than the memory budget of "
-                 "1.0 MiB; use a smaller input or raise --max-memory");
+    EXPECT_STREQ(
+        e.what(),
+        "a.msh:3:1: error: $Nodes with 50331648 entries needs 3.0 GiB, more than the memory budget of "
+        "1.0 MiB; use a smaller input or raise --max-memory");
   }
   setMemoryBudget(saved);
 }

@@ -8,18 +8,18 @@
 namespace lancer {
 
 struct AccelStats {
-  std::string kind;                  // "kdtree-sah", "kdtree-median" or "naive"
-  std::uint64_t faces = 0;           // mesh faces (a quad is one face)
-  std::uint64_t triangles = 0;       // primitives in the structure (a quad is two triangles)
-  std::uint64_t nodes = 0;           // inner nodes + leaves
+  std::string kind;             // "kdtree-sah", "kdtree-median" or "naive"
+  std::uint64_t faces = 0;      // mesh faces (a quad is one face)
+  std::uint64_t triangles = 0;  // primitives in the structure (a quad is two triangles)
+  std::uint64_t nodes = 0;      // inner nodes + leaves
   std::uint64_t leaves = 0;
   std::uint64_t emptyLeaves = 0;
-  std::uint64_t depth = 0;           // deepest leaf; the root has depth 0
+  std::uint64_t depth = 0;               // deepest leaf; the root has depth 0
   std::uint64_t triangleReferences = 0;  // sum over leaves of their triangle counts
-  double meanTrianglesPerLeaf = 0;   // over non-empty leaves
-  double sahCost = 0;                // expected cost of a random ray, in the build's cost units
+  double meanTrianglesPerLeaf = 0;       // over non-empty leaves
+  double sahCost = 0;                    // expected cost of a random ray, in the build's cost units
   double buildSeconds = 0;
-  std::uint64_t bytes = 0;           // nodes + leaf index array + precomputed triangles
+  std::uint64_t bytes = 0;  // nodes + leaf index array + precomputed triangles
 
   double bytesPerTriangle() const { return triangles ? double(bytes) / double(triangles) : 0.0; }
   double buildMillionTrianglesPerSecond() const {

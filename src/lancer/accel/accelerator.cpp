@@ -18,14 +18,18 @@ AccelKind parseAccelKind(std::string_view name) {
 
 std::string_view accelKindName(AccelKind kind) {
   switch (kind) {
-    case AccelKind::KdTreeSah: return "kdtree-sah";
-    case AccelKind::KdTreeMedian: return "kdtree-median";
-    case AccelKind::Naive: return "naive";
+    case AccelKind::KdTreeSah:
+      return "kdtree-sah";
+    case AccelKind::KdTreeMedian:
+      return "kdtree-median";
+    case AccelKind::Naive:
+      return "naive";
   }
   return "unknown";
 }
 
-bool Accelerator::intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips, Hit& hit) const {
+bool Accelerator::intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips,
+                            Hit& hit) const {
   if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(ray, tMin, tMax, clips, hit);
   return std::get<NaiveAccel>(impl_).intersect(ray, tMin, tMax, clips, hit);
 }
@@ -35,8 +39,8 @@ bool Accelerator::occluded(const Ray& ray, float tMin, float tMax, const FaceCli
   return std::get<NaiveAccel>(impl_).occluded(ray, tMin, tMax, clips);
 }
 
-Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const MeshFace> faces, AccelKind kind,
-                               const KdBuildOptions& options) {
+Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                               AccelKind kind, const KdBuildOptions& options) {
   switch (kind) {
     case AccelKind::KdTreeSah: {
       KdTree tree = KdTree::buildSah(positions, faces, options);
@@ -48,7 +52,8 @@ Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const 
       AccelStats stats = tree.stats();
       return Accelerator(std::move(tree), kind, std::move(stats));
     }
-    case AccelKind::Naive: break;
+    case AccelKind::Naive:
+      break;
   }
   const Stopwatch stopwatch;
   NaiveAccel naive(positions, faces);

@@ -100,8 +100,8 @@ class KdTree {
   // Near-degenerate triangles, whose computed hits can land far from the triangle: tested
   // for every ray (outside the tree) so answers still equal brute force. Empty for sane meshes.
   std::vector<PackedTriangle> slivers_;
-  Aabb bounds_;                               // scene box, padded so boundary hits are inside
-  float magnitude_ = 0;                       // largest absolute coordinate, for rounding slack
+  Aabb bounds_;          // scene box, padded so boundary hits are inside
+  float magnitude_ = 0;  // largest absolute coordinate, for rounding slack
   AccelStats stats_;
 };
 

@@ -19,11 +19,13 @@ class NaiveAccel {
 
   // Closest hit with t in (tMin, tMax); returns false (hit untouched) when there is none.
   bool intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
-    return closest(ray, tMin, tMax, [](std::uint32_t, float) { return true; }, hit);
+    return closest(
+        ray, tMin, tMax, [](std::uint32_t, float) { return true; }, hit);
   }
   // The same among the hits per-mesh clip planes keep: a removed face is passed through.
   bool intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips, Hit& hit) const {
-    return closest(ray, tMin, tMax, [&](std::uint32_t face, float t) { return clips.keeps(ray, face, t); }, hit);
+    return closest(
+        ray, tMin, tMax, [&](std::uint32_t face, float t) { return clips.keeps(ray, face, t); }, hit);
   }
 
   // Any hit with t in (tMin, tMax): the shadow-ray query, stops at the first blocker.

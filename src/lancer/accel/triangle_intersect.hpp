@@ -36,7 +36,9 @@ inline float intersectTriangle(const PackedTriangle& tri, const Ray& ray, float 
   const int kx = ray.kx, ky = ray.ky, kz = ray.kz;
   const float az = a[kz], bz = b[kz], cz = c[kz];
   // Sheared x and y, rounded to float once (the same value for a vertex in every triangle).
-  const auto shear = [](float x, float s, float z) { return static_cast<float>(double(x) - double(s) * double(z)); };
+  const auto shear = [](float x, float s, float z) {
+    return static_cast<float>(double(x) - double(s) * double(z));
+  };
   const float ax = shear(a[kx], ray.shearX, az), ay = shear(a[ky], ray.shearY, az);
   const float bx = shear(b[kx], ray.shearX, bz), by = shear(b[ky], ray.shearY, bz);
   const float cx = shear(c[kx], ray.shearX, cz), cy = shear(c[ky], ray.shearY, cz);
@@ -46,8 +48,7 @@ inline float intersectTriangle(const PackedTriangle& tri, const Ray& ray, float 
   const double w = double(bx) * double(ay) - double(by) * double(ax);
   const double det = u + v + w;
   // Scaled hit distance; t = scaledT / det.
-  const double scaledT =
-      (u * double(az) + v * double(bz) + w * double(cz)) * double(ray.shearZ);
+  const double scaledT = (u * double(az) + v * double(bz) + w * double(cz)) * double(ray.shearZ);
   const double t = scaledT / det;
   const bool sameSign = ((u >= 0.0) & (v >= 0.0) & (w >= 0.0)) | ((u <= 0.0) & (v <= 0.0) & (w <= 0.0));
   const auto tf = static_cast<float>(t);

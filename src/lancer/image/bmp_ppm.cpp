@@ -32,8 +32,9 @@ std::uint64_t bmpRowBytes(int width) { return (static_cast<std::uint64_t>(width)
 std::vector<std::uint8_t> bmpHeader(int width, int height) {
   const std::uint64_t pixelBytes = bmpRowBytes(width) * static_cast<std::uint64_t>(height);
   if (pixelBytes + kBmpHeaderSize > std::numeric_limits<std::uint32_t>::max()) {
-    throw InputError(SourceLocation{}, fmt::format("a {}x{} image is too large for BMP (4 GiB at most); use .png",
-                                                   width, height));
+    throw InputError(
+        SourceLocation{},
+        fmt::format("a {}x{} image is too large for BMP (4 GiB at most); use .png", width, height));
   }
   std::vector<std::uint8_t> out;
   out.reserve(kBmpHeaderSize);

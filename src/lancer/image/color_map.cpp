@@ -69,10 +69,14 @@ std::optional<ColorMapKind> parseColorMap(std::string_view name) {
 
 std::string_view colorMapName(ColorMapKind kind) {
   switch (kind) {
-    case ColorMapKind::Viridis: return "viridis";
-    case ColorMapKind::Magma: return "magma";
-    case ColorMapKind::Coolwarm: return "coolwarm";
-    case ColorMapKind::Grey: return "grey";
+    case ColorMapKind::Viridis:
+      return "viridis";
+    case ColorMapKind::Magma:
+      return "magma";
+    case ColorMapKind::Coolwarm:
+      return "coolwarm";
+    case ColorMapKind::Grey:
+      return "grey";
   }
   return "viridis";
 }
@@ -82,10 +86,14 @@ std::string_view colorMapNames() { return "viridis, magma, coolwarm, grey"; }
 Vec3 colorMapLookup(ColorMapKind kind, float t) {
   t = std::isnan(t) ? 0.0f : std::clamp(t, 0.0f, 1.0f);
   switch (kind) {
-    case ColorMapKind::Viridis: return interpolate(kViridis, t);
-    case ColorMapKind::Magma: return interpolate(kMagma, t);
-    case ColorMapKind::Coolwarm: return interpolate(kCoolwarm, t);
-    case ColorMapKind::Grey: return {t, t, t};
+    case ColorMapKind::Viridis:
+      return interpolate(kViridis, t);
+    case ColorMapKind::Magma:
+      return interpolate(kMagma, t);
+    case ColorMapKind::Coolwarm:
+      return interpolate(kCoolwarm, t);
+    case ColorMapKind::Grey:
+      return {t, t, t};
   }
   return {t, t, t};
 }

@@ -13,7 +13,8 @@ constexpr std::size_t kCells = kSide * kSide * kSide;
 
 constexpr std::size_t cell(int r, int g, int b) {
   constexpr auto side = static_cast<std::size_t>(kSide);
-  return (static_cast<std::size_t>(r) * side + static_cast<std::size_t>(g)) * side + static_cast<std::size_t>(b);
+  return (static_cast<std::size_t>(r) * side + static_cast<std::size_t>(g)) * side +
+         static_cast<std::size_t>(b);
 }
 
 constexpr std::uint32_t pack(int r, int g, int b) {

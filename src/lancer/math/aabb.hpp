@@ -15,8 +15,14 @@ struct AabbT {
                  -std::numeric_limits<T>::max()};
 
   bool empty() const { return lower.x > upper.x || lower.y > upper.y || lower.z > upper.z; }
-  void extend(const Vec3T<T>& p) { lower = min(lower, p); upper = max(upper, p); }
-  void extend(const AabbT& b) { lower = min(lower, b.lower); upper = max(upper, b.upper); }
+  void extend(const Vec3T<T>& p) {
+    lower = min(lower, p);
+    upper = max(upper, p);
+  }
+  void extend(const AabbT& b) {
+    lower = min(lower, b.lower);
+    upper = max(upper, b.upper);
+  }
   Vec3T<T> extent() const { return empty() ? Vec3T<T>{} : upper - lower; }
   Vec3T<T> center() const { return (lower + upper) * T(0.5); }
   int longestAxis() const {

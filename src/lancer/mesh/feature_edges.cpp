@@ -61,7 +61,8 @@ std::vector<std::uint8_t> featureEdgeMasks(const Mesh& mesh, float creaseDegrees
       feature = otherGroup || crease;
     }
     if (feature)
-      for (std::size_t u = begin; u < end; ++u) masks[uses[u].face] |= static_cast<std::uint8_t>(1u << uses[u].corner);
+      for (std::size_t u = begin; u < end; ++u)
+        masks[uses[u].face] |= static_cast<std::uint8_t>(1u << uses[u].corner);
     begin = end;
   }
   for (std::size_t f = 0; f < faceCount; ++f)

@@ -73,16 +73,16 @@ struct MeshSourceInfo {
   bool binary = false;
   std::uint64_t fileBytes = 0;
   std::uint64_t nodeCount = 0;
-  std::map<int, std::uint64_t> elementsByType;     // gmsh element type -> count in the file
-  std::map<int, std::uint64_t> unrenderableByType;  // element types lancer could not turn into faces
-  std::uint64_t degenerateFacesDropped = 0;        // zero-area faces, removed with a warning
-  std::uint64_t duplicateElementsSkipped = 0;      // MSH 2 copies of an element in further physical groups
-  std::uint64_t volumeElements = 0;                // volume elements replaced by their skin
-  std::uint64_t skinFaces = 0;                     // faces that came from volume elements' skins
-  std::uint64_t skinFacesCoveredBySurfaces = 0;    // skin faces already present as surface elements
-  std::uint64_t interfaceFaces = 0;                // faces shared by two volumes (counted in skinFaces)
+  std::map<int, std::uint64_t> elementsByType;       // gmsh element type -> count in the file
+  std::map<int, std::uint64_t> unrenderableByType;   // element types lancer could not turn into faces
+  std::uint64_t degenerateFacesDropped = 0;          // zero-area faces, removed with a warning
+  std::uint64_t duplicateElementsSkipped = 0;        // MSH 2 copies of an element in further physical groups
+  std::uint64_t volumeElements = 0;                  // volume elements replaced by their skin
+  std::uint64_t skinFaces = 0;                       // faces that came from volume elements' skins
+  std::uint64_t skinFacesCoveredBySurfaces = 0;      // skin faces already present as surface elements
+  std::uint64_t interfaceFaces = 0;                  // faces shared by two volumes (counted in skinFaces)
   std::uint64_t interfaceSurfaceElementsMerged = 0;  // surface elements on interfaces, merged into them
-  std::uint32_t partitionCount = 0;                // mesh partitions the file declares (0: none)
+  std::uint32_t partitionCount = 0;                  // mesh partitions the file declares (0: none)
   // Things the reader accepted but the user should know, each "file:line:col: warning: ..." (values
   // for nodes the file does not save, a field section it could not read and skipped, ...).
   std::vector<std::string> warnings;
@@ -125,7 +125,8 @@ struct Mesh {
   // The same for the entity `entity` whose first group is `first` (an interface's outer volume too).
   bool inPhysicalGroup(std::int32_t first, std::int32_t entity, std::int32_t tag) const {
     if (first == tag) return true;
-    const std::vector<std::int32_t>* more = extraPhysicalGroups.empty() ? nullptr : findMorePhysicalTags(entity, first);
+    const std::vector<std::int32_t>* more =
+        extraPhysicalGroups.empty() ? nullptr : findMorePhysicalTags(entity, first);
     return more && std::find(more->begin(), more->end(), tag) != more->end();
   }
 

@@ -38,12 +38,11 @@ std::string nothingToDrawReason(const Mesh& mesh) {
     drawable |= role == MshElementRole::kSurface || role == MshElementRole::kVolume;
   }
   if (linesAndPoints)
-    return fmt::format("it holds only lines and points ({}); lancer draws surfaces and volumes: mesh it with "
-                       "gmsh -2 or -3{}",
-                       elementList(source),
-                       onlyVolumeGroups ? " (its physical groups are volumes: -3)" : "");
-  if (!drawable)
-    return fmt::format("it holds only elements lancer does not draw ({})", elementList(source));
+    return fmt::format(
+        "it holds only lines and points ({}); lancer draws surfaces and volumes: mesh it with "
+        "gmsh -2 or -3{}",
+        elementList(source), onlyVolumeGroups ? " (its physical groups are volumes: -3)" : "");
+  if (!drawable) return fmt::format("it holds only elements lancer does not draw ({})", elementList(source));
   if (source.degenerateFacesDropped)
     return fmt::format("all its {} faces are degenerate (zero area) and were dropped",
                        source.degenerateFacesDropped);

@@ -10,11 +10,11 @@ namespace {
 // Directions that are not axis-aligned and not along a box diagonal, so a ray from a vertex of a
 // structured mesh rarely runs along an edge or through a vertex; each later one is a retry.
 constexpr std::array<Vec3d, 6> kRayDirections = {{{0.5773, 0.6123, 0.5403},
-                                                 {-0.4132, 0.7071, -0.5739},
-                                                 {0.8017, -0.2672, 0.5345},
-                                                 {-0.6247, -0.5164, 0.5855},
-                                                 {0.1951, -0.8315, -0.5199},
-                                                 {0.7419, 0.3310, -0.5831}}};
+                                                  {-0.4132, 0.7071, -0.5739},
+                                                  {0.8017, -0.2672, 0.5345},
+                                                  {-0.6247, -0.5164, 0.5855},
+                                                  {0.1951, -0.8315, -0.5199},
+                                                  {0.7419, 0.3310, -0.5831}}};
 constexpr double kBarycentricMargin = 1e-9;  // closer to an edge than this (relative): ambiguous
 constexpr double kParallelMargin = 1e-12;    // |cos| between ray and face plane below this: ambiguous
 constexpr int kVerticesTried = 4;
@@ -24,8 +24,8 @@ enum class Crossings { kEven, kOdd, kAmbiguousRay, kOnSurface };
 // Parity of a ray's crossings with the triangles of one shell (quads fanned from corner 0).
 // Möller–Trumbore (J. Graphics Tools 2(1), 1997) in double.
 Crossings countCrossings(std::span<const Vec3> positions, const std::vector<MeshFace>& faces,
-                         std::span<const std::uint32_t> shellFaces, const Vec3d& origin, const Vec3d& direction,
-                         double distanceEpsilon) {
+                         std::span<const std::uint32_t> shellFaces, const Vec3d& origin,
+                         const Vec3d& direction, double distanceEpsilon) {
   bool odd = false;
   for (const std::uint32_t f : shellFaces) {
     const MeshFace& face = faces[f];
@@ -66,7 +66,8 @@ bool shellInside(std::span<const Vec3> positions, const std::vector<MeshFace>& f
   for (std::size_t i = 0; i < vertexCount; ++i) {
     const Vec3d origin = toDouble(positions[faces[innerFaces[i]].vertex[0]]);
     for (const Vec3d& direction : kRayDirections) {
-      const Crossings crossings = countCrossings(positions, faces, outerFaces, origin, direction, distanceEpsilon);
+      const Crossings crossings =
+          countCrossings(positions, faces, outerFaces, origin, direction, distanceEpsilon);
       if (crossings == Crossings::kOnSurface) break;  // this vertex touches `outer`: try the next one
       if (crossings != Crossings::kAmbiguousRay) return crossings == Crossings::kOdd;
     }
@@ -85,8 +86,9 @@ bool shareTag(std::span<const std::int32_t> a, std::span<const std::int32_t> b) 
 
 }  // namespace
 
-std::vector<std::uint8_t> findCavityShells(std::span<const Vec3> positions, const std::vector<MeshFace>& faces,
-                                           const FaceShells& shells, std::span<const std::int32_t> facePhysicalTag,
+std::vector<std::uint8_t> findCavityShells(std::span<const Vec3> positions,
+                                           const std::vector<MeshFace>& faces, const FaceShells& shells,
+                                           std::span<const std::int32_t> facePhysicalTag,
                                            std::span<const std::uint8_t> candidates) {
   return findShellNesting(positions, faces, shells, facePhysicalTag, candidates, false).cavity;
 }

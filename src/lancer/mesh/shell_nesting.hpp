@@ -36,8 +36,9 @@ ShellNesting findShellNesting(std::span<const Vec3> positions, const std::vector
                               const FaceShells& shells, std::span<const std::int32_t> facePhysicalTag,
                               std::span<const std::uint8_t> candidates, bool withEnclosing);
 
-std::vector<std::uint8_t> findCavityShells(std::span<const Vec3> positions, const std::vector<MeshFace>& faces,
-                                           const FaceShells& shells, std::span<const std::int32_t> facePhysicalTag,
+std::vector<std::uint8_t> findCavityShells(std::span<const Vec3> positions,
+                                           const std::vector<MeshFace>& faces, const FaceShells& shells,
+                                           std::span<const std::int32_t> facePhysicalTag,
                                            std::span<const std::uint8_t> candidates);
 
 }  // namespace lancer

@@ -94,14 +94,16 @@ void orientShellRegions(std::span<const Vec3> positions, std::vector<MeshFace>& 
     if (!regions.bounded[front] || facePhysicalTag.empty()) continue;
     // Between two regions: behind it the back region's group, in front the front region's.
     report.faceRegionTags.push_back({static_cast<std::uint32_t>(f), regionTag[back]});
-    if (report.faceEnclosedBy.empty()) report.faceEnclosedBy.assign(faceCount, ShellOrientationReport::kNotEnclosed);
+    if (report.faceEnclosedBy.empty())
+      report.faceEnclosedBy.assign(faceCount, ShellOrientationReport::kNotEnclosed);
     report.faceEnclosedBy[f] = regionTag[front];
   }
 }
 
 }  // namespace
 
-ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions, std::vector<MeshFace>& faces,
+ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions,
+                                                 std::vector<MeshFace>& faces,
                                                  std::vector<std::uint8_t>& edgeMasks,
                                                  std::span<const std::int32_t> facePhysicalTag,
                                                  std::span<const FaceSide> faceSide) {
@@ -153,16 +155,19 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
   // Without interfaces, solids nested in solids of another group (surfaces only: a steel ball drawn
   // inside a glass ball) learn which group surrounds them, as interfaces know their outer volume.
   const bool findEnclosing = faceSide.empty() && !facePhysicalTag.empty();
-  ShellNesting nesting = findShellNesting(positions, faces, shells, facePhysicalTag, solidShell, findEnclosing);
+  ShellNesting nesting =
+      findShellNesting(positions, faces, shells, facePhysicalTag, solidShell, findEnclosing);
   std::vector<std::uint8_t>& cavity = nesting.cavity;
   if (findEnclosing) {
     std::vector<std::uint32_t> firstFace(shells.shellCount(), kNoShell);
-    for (std::size_t f = faceCount; f-- > 0;) firstFace[shells.shellOfFace[f]] = static_cast<std::uint32_t>(f);
+    for (std::size_t f = faceCount; f-- > 0;)
+      firstFace[shells.shellOfFace[f]] = static_cast<std::uint32_t>(f);
     for (std::size_t f = 0; f < faceCount; ++f) {
       const std::uint32_t shell = shells.shellOfFace[f];
       const std::uint32_t around = nesting.enclosing[shell];
       if (!solidShell[shell] || cavity[shell] || around == kNoShell || cavity[around]) continue;
-      if (report.faceEnclosedBy.empty()) report.faceEnclosedBy.assign(faceCount, ShellOrientationReport::kNotEnclosed);
+      if (report.faceEnclosedBy.empty())
+        report.faceEnclosedBy.assign(faceCount, ShellOrientationReport::kNotEnclosed);
       report.faceEnclosedBy[f] = facePhysicalTag[firstFace[around]];
     }
   }

@@ -4,8 +4,8 @@
 
 #include <climits>
 #include <cstdint>
-#include <utility>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "lancer/mesh/mesh.hpp"
@@ -50,7 +50,8 @@ struct ShellOrientationReport {
 // (a ball inside a block) faces out of the volume it encloses and is never a cavity wall; a volume's
 // faces in a shell that is not a closed 2-manifold (where an interface meets the skin, three faces
 // share each edge of the rim) keep their elements' winding, out of their volume, and bound solids.
-ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions, std::vector<MeshFace>& faces,
+ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions,
+                                                 std::vector<MeshFace>& faces,
                                                  std::vector<std::uint8_t>& edgeMasks,
                                                  std::span<const std::int32_t> facePhysicalTag,
                                                  std::span<const FaceSide> faceSide = {});

@@ -32,7 +32,8 @@ Vec3d cornerOf(std::span<const Vec3> positions, const MeshFace& face, int c) {
 
 // Twice the vector area: the face normal's direction, with its winding (a quad: its diagonals).
 Vec3d areaNormal(std::span<const Vec3> positions, const MeshFace& face) {
-  const Vec3d a = cornerOf(positions, face, 0), b = cornerOf(positions, face, 1), c = cornerOf(positions, face, 2);
+  const Vec3d a = cornerOf(positions, face, 0), b = cornerOf(positions, face, 1),
+              c = cornerOf(positions, face, 2);
   if (!face.isQuad()) return cross(b - a, c - a);
   return cross(c - a, cornerOf(positions, face, 3) - b);
 }
@@ -75,7 +76,8 @@ ShellRegions findShellRegions(std::span<const Vec3> positions, const std::vector
       i = j;
       continue;
     }
-    const auto lo = static_cast<std::uint32_t>(edges[i].key >> 32), hi = static_cast<std::uint32_t>(edges[i].key);
+    const auto lo = static_cast<std::uint32_t>(edges[i].key >> 32),
+               hi = static_cast<std::uint32_t>(edges[i].key);
     const Vec3d origin = toDouble(positions[lo]);
     const Vec3d axis = normalize(toDouble(positions[hi]) - origin);
     wings.clear();
@@ -86,7 +88,8 @@ ShellRegions findShellRegions(std::span<const Vec3> positions, const std::vector
       Vec3d away{0, 0, 0};
       int others = 0;
       for (int c = 0; c < face.cornerCount(); ++c)
-        if (face.vertex[c] != lo && face.vertex[c] != hi) away += cornerOf(positions, face, c) - origin, ++others;
+        if (face.vertex[c] != lo && face.vertex[c] != hi)
+          away += cornerOf(positions, face, c) - origin, ++others;
       away = away * (1.0 / std::max(others, 1));
       away = away - axis * dot(away, axis);
       if (k == i) {
@@ -136,13 +139,16 @@ ShellRegions findShellRegions(std::span<const Vec3> positions, const std::vector
   std::vector<int> outsides(shells.shellCount(), 0);
   result.bounded.assign(volume.size(), 0);
   for (std::size_t r = 0; r < volume.size(); ++r) {
-    if (volume[r] > 0) result.bounded[r] = 1;
-    else ++outsides[regionShell[r]];
+    if (volume[r] > 0)
+      result.bounded[r] = 1;
+    else
+      ++outsides[regionShell[r]];
   }
   for (std::size_t s = 0; s < shells.shellCount(); ++s)
     if (candidate[s] && outsides[s] != 1) rejected[s] = 1;
   for (std::size_t f = 0; f < faces.size(); ++f) {
-    if (result.front[f] != kNoRegion && rejected[shells.shellOfFace[f]]) result.front[f] = result.back[f] = kNoRegion;
+    if (result.front[f] != kNoRegion && rejected[shells.shellOfFace[f]])
+      result.front[f] = result.back[f] = kNoRegion;
   }
   return result;
 }

@@ -12,7 +12,7 @@
 namespace lancer {
 
 struct CornerNormals {
-  std::vector<Vec3> normals;                           // unit vectors, shared by corners that agree
+  std::vector<Vec3> normals;                             // unit vectors, shared by corners that agree
   std::vector<std::array<std::uint32_t, 4>> faceCorner;  // per face, per corner: index into normals
 };
 

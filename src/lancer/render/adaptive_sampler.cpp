@@ -33,9 +33,9 @@ bool AdaptiveSampler::differ(const Sample& a, const Sample& b, const Sample& c, 
   const Vec3 high = max(max(a.color, b.color), max(c.color, d.color));
   const Vec3 low = min(min(a.color, b.color), min(c.color, d.color));
   if (maxComponent(high - low) > threshold_) return true;
-  return compareAlpha_ && std::max({a.alpha, b.alpha, c.alpha, d.alpha}) -
-                                  std::min({a.alpha, b.alpha, c.alpha, d.alpha}) >
-                              threshold_;
+  return compareAlpha_ &&
+         std::max({a.alpha, b.alpha, c.alpha, d.alpha}) - std::min({a.alpha, b.alpha, c.alpha, d.alpha}) >
+             threshold_;
 }
 
 AdaptiveSampler::Sample& AdaptiveSampler::latticeSample(int i, int j, TraceCounters& counters,
@@ -107,7 +107,8 @@ void AdaptiveSampler::renderTile(int x0, int y0, int x1, int y1, Image& band, in
 Rgba AdaptiveSampler::renderPixel(int x, int y, TraceCounters& counters, std::uint64_t& samples) {
   Sample corners[4];
   for (int c = 0; c < 4; ++c)
-    corners[c] = traceAt(static_cast<float>(x + (c & 1)), static_cast<float>(y + (c >> 1)), counters, samples);
+    corners[c] =
+        traceAt(static_cast<float>(x + (c & 1)), static_cast<float>(y + (c >> 1)), counters, samples);
   return shadePixel(x, y, corners, counters, samples);
 }
 

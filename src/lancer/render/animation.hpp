@@ -23,8 +23,8 @@ Vec3d orbitCenter(const AnimationSettings& animation, const Scene& scene);
 
 // The camera of frame k of a camera orbit: position, look-at and up turned about the axis. A camera
 // without a position starts from the default 3/4 view, as `lancer render` would place it.
-CameraSettings orbitCamera(const CameraSettings& camera, const AnimationSettings& animation, const Scene& scene,
-                           int imageWidth, int imageHeight, int frame);
+CameraSettings orbitCamera(const CameraSettings& camera, const AnimationSettings& animation,
+                           const Scene& scene, int imageWidth, int imageHeight, int frame);
 
 struct AnimationProgress {
   int frame = 0;  // 0-based frame being rendered
@@ -43,8 +43,9 @@ struct AnimationStats {
 // parallel over tiles) and hands each finished frame to `onFrame`. `scene` is modified while a light
 // orbits (or, with description.lightsFollowCamera, while the lights turn with the camera) and restored
 // before returning.
-AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator, const SceneDescription& description,
-                               const AnimationSettings& animation, const RenderOptions& options,
+AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
+                               const SceneDescription& description, const AnimationSettings& animation,
+                               const RenderOptions& options,
                                const std::function<void(int frame, const Image&)>& onFrame,
                                const std::function<void(const AnimationProgress&)>& onProgress = {});
 

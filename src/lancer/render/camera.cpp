@@ -11,17 +11,19 @@ constexpr double kDegrees = std::numbers::pi / 180.0;
 
 }  // namespace
 
-Camera::Camera(const CameraSettings& settings, const Vec3d& sceneOrigin, const Aabb& sceneBounds, int imageWidth,
-               int imageHeight)
+Camera::Camera(const CameraSettings& settings, const Vec3d& sceneOrigin, const Aabb& sceneBounds,
+               int imageWidth, int imageHeight)
     : projection_(settings.projection) {
   const double aspect = static_cast<double>(imageWidth) / imageHeight;
-  const Aabbd worldBounds{sceneOrigin + toDouble(sceneBounds.lower), sceneOrigin + toDouble(sceneBounds.upper)};
+  const Aabbd worldBounds{sceneOrigin + toDouble(sceneBounds.lower),
+                          sceneOrigin + toDouble(sceneBounds.upper)};
   const Vec3d lookAt = settings.lookAt.value_or(worldBounds.empty() ? Vec3d{} : worldBounds.center());
   const Vec3d position = settings.position.value_or(defaultCameraPosition(worldBounds, settings, aspect));
 
   const Vec3d forward = normalize(lookAt - position);
   Vec3d right = normalize(cross(forward, settings.up));
-  if (!(dot(right, right) > 0.5)) right = normalize(cross(forward, std::abs(forward.y) < 0.9 ? Vec3d{0, 1, 0} : Vec3d{1, 0, 0}));
+  if (!(dot(right, right) > 0.5))
+    right = normalize(cross(forward, std::abs(forward.y) < 0.9 ? Vec3d{0, 1, 0} : Vec3d{1, 0, 0}));
   const Vec3d up = cross(right, forward);
   position_ = toFloat(position - sceneOrigin);
   forward_ = toFloat(forward);

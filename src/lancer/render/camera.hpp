@@ -33,7 +33,7 @@ class Camera {
  private:
   Projection projection_;
   Vec3 position_;
-  Vec3 forward_, right_, up_;  // unit, orthogonal
+  Vec3 forward_, right_, up_;     // unit, orthogonal
   float halfWidth_, halfHeight_;  // of the view window at distance 1 (perspective) or in world units
   float invWidth_, invHeight_;
 };

@@ -22,7 +22,8 @@ float edgeCoverage(const Vec3& origin, const Vec3& unitDirection, const Vec3* co
   float nearest = INFINITY;
   for (int i = 0; i < cornerCount; ++i) {
     if (edgeMask & (1u << i))
-      nearest = std::min(nearest, rayToSegmentDistance(origin, unitDirection, corners[i], corners[(i + 1) % cornerCount]));
+      nearest = std::min(
+          nearest, rayToSegmentDistance(origin, unitDirection, corners[i], corners[(i + 1) % cornerCount]));
     else if (lineCornerMask & (1u << i))
       nearest = std::min(nearest, rayToSegmentDistance(origin, unitDirection, corners[i], corners[i]));
   }

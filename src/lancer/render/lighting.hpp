@@ -19,8 +19,9 @@ inline float lightAttenuation(const SceneLight& light, float distance) {
 
 // `normal` and `toViewer` are unit vectors; `toLight` is unit, `lightDistance` the distance to the light.
 // `kd`: the diffuse colour to use, the material's or a field colour map's (color_by).
-inline Vec3 directLighting(const Material& material, const Vec3& kd, const SceneLight& light, const Vec3& normal,
-                           const Vec3& toViewer, const Vec3& toLight, float lightDistance) {
+inline Vec3 directLighting(const Material& material, const Vec3& kd, const SceneLight& light,
+                           const Vec3& normal, const Vec3& toViewer, const Vec3& toLight,
+                           float lightDistance) {
   const float cosTheta = dot(normal, toLight);
   if (cosTheta <= 0.0f) return {0, 0, 0};
   const Vec3 reflected = normal * (2.0f * cosTheta) - toLight;

@@ -49,9 +49,9 @@ struct InterfaceSplit {
   Vec3 transmittedDirection;
 };
 
-inline InterfaceSplit splitAtInterface(const Vec3& direction, const Vec3& shadingNormal, const Vec3& geometricNormal,
-                                       bool refracts, float eta, bool fresnel, float sheetEta, const Vec3& reflect,
-                                       float transmit) {
+inline InterfaceSplit splitAtInterface(const Vec3& direction, const Vec3& shadingNormal,
+                                       const Vec3& geometricNormal, bool refracts, float eta, bool fresnel,
+                                       float sheetEta, const Vec3& reflect, float transmit) {
   InterfaceSplit split{reflect, transmit, direction};
   if (transmit <= 0.0f) return split;
   Vec3 normal = shadingNormal;
@@ -75,7 +75,8 @@ inline InterfaceSplit splitAtInterface(const Vec3& direction, const Vec3& shadin
 }
 
 inline Vec3 beerLambert(const Vec3& absorption, float distance) {
-  return {std::exp(-absorption.x * distance), std::exp(-absorption.y * distance), std::exp(-absorption.z * distance)};
+  return {std::exp(-absorption.x * distance), std::exp(-absorption.y * distance),
+          std::exp(-absorption.z * distance)};
 }
 
 }  // namespace lancer

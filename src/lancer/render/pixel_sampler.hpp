@@ -20,7 +20,8 @@ inline std::uint32_t hashBits(std::uint32_t x) {
 
 // Uniform float in [0, 1) from a hash of (pixel, sample, dimension).
 inline float sampleJitter(int x, int y, int sample, int dimension) {
-  std::uint32_t h = hashBits(static_cast<std::uint32_t>(x) * 0x9E3779B1u ^ hashBits(static_cast<std::uint32_t>(y)));
+  std::uint32_t h =
+      hashBits(static_cast<std::uint32_t>(x) * 0x9E3779B1u ^ hashBits(static_cast<std::uint32_t>(y)));
   h = hashBits(h ^ static_cast<std::uint32_t>(sample * 2 + dimension) * 0x85EBCA77u);
   return static_cast<float>(h >> 8) * (1.0f / 16777216.0f);
 }

@@ -43,9 +43,9 @@ inline Vec3 offsetRayOrigin(const Vec3& p, const Vec3& error, const Vec3& normal
 // point (its error follows the camera's distance and its largest coordinate): see the overload above.
 // `normal` must point to the side the new ray leaves from (towards the light, the reflection, ...).
 inline Vec3 offsetRayOrigin(const Vec3& p, const Vec3& normal) {
-  constexpr float kOrigin = 1.0f / 32.0f;       // below this magnitude, offset in absolute terms
+  constexpr float kOrigin = 1.0f / 32.0f;  // below this magnitude, offset in absolute terms
   constexpr float kFloatScale = 1.0f / 65536.0f;
-  constexpr float kIntScale = 256.0f;           // offset in units in the last place elsewhere
+  constexpr float kIntScale = 256.0f;  // offset in units in the last place elsewhere
   auto offsetComponent = [&](float position, float n) {
     const auto ulps = static_cast<std::int32_t>(kIntScale * n);
     const float byUlps =

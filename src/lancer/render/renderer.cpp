@@ -263,7 +263,8 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
 
 Image Renderer::renderImage(const RenderOptions& options, RenderStats* stats) const {
   Image image(settings_.width, settings_.height);
-  renderBands(options, [&](int y0, const Image& band) { image.pasteTile(band, 0, y0); }, stats);
+  renderBands(
+      options, [&](int y0, const Image& band) { image.pasteTile(band, 0, y0); }, stats);
   return image;
 }
 

@@ -49,7 +49,8 @@ using BandSink = std::function<void(int y0, const Image& band)>;
 // that rendering takes only where the pixels go). The scene, accelerator and camera must outlive it.
 class Renderer {
  public:
-  Renderer(const Scene& scene, const Accelerator& accelerator, const Camera& camera, const RenderSettings& settings);
+  Renderer(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
+           const RenderSettings& settings);
 
   // The image band by band into `sink`. When cancelled, the sink has received only some of the
   // bands (stats->cancelled is then true).

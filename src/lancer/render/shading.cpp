@@ -4,12 +4,13 @@
 
 namespace lancer {
 
-Vec3 shadingNormal(const Scene& scene, std::uint32_t face, const float cornerWeight[4], const Vec3& geometricNormal,
-                   float normalSign) {
+Vec3 shadingNormal(const Scene& scene, std::uint32_t face, const float cornerWeight[4],
+                   const Vec3& geometricNormal, float normalSign) {
   if (scene.faceShading[face] == ShadingMode::Flat) return geometricNormal;
   Vec3 n{0, 0, 0};
   const auto& corners = scene.cornerNormals.faceCorner[face];
-  for (int c = 0; c < scene.faces[face].cornerCount(); ++c) n += scene.cornerNormals.normals[corners[c]] * cornerWeight[c];
+  for (int c = 0; c < scene.faces[face].cornerCount(); ++c)
+    n += scene.cornerNormals.normals[corners[c]] * cornerWeight[c];
   n = normalize(n) * normalSign;
   return dot(n, n) > 0.5f ? n : geometricNormal;
 }
@@ -30,8 +31,8 @@ Vec3 lightResponse(const Scene& scene, const SurfacePoint& surface, const Materi
     const Vec3 cornerToViewer = parallelView ? toViewer : normalize(ray.origin - corner);
     const Vec3 cornerToLight = light.position - corner;
     const float cornerDistance = length(cornerToLight);
-    response += directLighting(material, kd, light, cornerNormal, cornerToViewer, cornerToLight * (1.0f / cornerDistance),
-                               cornerDistance) *
+    response += directLighting(material, kd, light, cornerNormal, cornerToViewer,
+                               cornerToLight * (1.0f / cornerDistance), cornerDistance) *
                 surface.cornerWeight[c];
   }
   return response;

@@ -18,8 +18,8 @@ namespace lancer {
 // The unit normal that `face` is shaded with at the point of corner weights `cornerWeight`, on the
 // side the ray arrived on (`geometricNormal` is the face normal turned to that side, `normalSign`
 // the turn). A degenerate interpolated normal falls back to the face's.
-Vec3 shadingNormal(const Scene& scene, std::uint32_t face, const float cornerWeight[4], const Vec3& geometricNormal,
-                   float normalSign);
+Vec3 shadingNormal(const Scene& scene, std::uint32_t face, const float cornerWeight[4],
+                   const Vec3& geometricNormal, float normalSign);
 
 // The unshadowed response to `light` at `surface` (a cap shades flat), for a viewer along `ray`
 // (at infinity along it for a parallel view): `kd` is the material's diffuse colour or a field's;

@@ -15,9 +15,9 @@ struct SurfacePoint {
   // the ray's origin and length (a camera 7,500 units away puts it 1e-4 off), which no offset
   // proportional to the point's own coordinates covers where they are small.
   Vec3 position;
-  Vec3 positionError;    // bound per coordinate, for offsetRayOrigin (ray_offset.hpp)
-  Vec3 geometricNormal;  // unit, on the side the ray came from
-  Vec3 shadingNormal;    // unit, interpolated corner normals (flat: the geometric normal)
+  Vec3 positionError;     // bound per coordinate, for offsetRayOrigin (ray_offset.hpp)
+  Vec3 geometricNormal;   // unit, on the side the ray came from
+  Vec3 shadingNormal;     // unit, interpolated corner normals (flat: the geometric normal)
   float cornerWeight[4];  // weights of the face's corners; 0 for the missing fourth of a triangle
   float normalSign;       // +1 when the ray hit the side the file's winding faces, else -1
   std::uint32_t face;

@@ -66,7 +66,8 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderS
 
 // Inlined into every caller: as a call they cost 1% of the trace of scenes without per-mesh planes
 // (callgrind, examples/demo.toml); inlined, 0.2%, the one test of anyMeshClips_.
-[[gnu::always_inline]] inline bool Tracer::nearestHit(const Ray& ray, float tMin, float tMax, Hit& hit) const {
+[[gnu::always_inline]] inline bool Tracer::nearestHit(const Ray& ray, float tMin, float tMax,
+                                                      Hit& hit) const {
   if (!anyMeshClips_) return accelerator_.intersect(ray, tMin, tMax, hit);
   return accelerator_.intersect(ray, tMin, tMax, scene_.meshClips, hit);
 }
@@ -88,7 +89,8 @@ TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounter
 MediumCrossing Tracer::crossingAt(std::uint32_t face, bool entering) const {
   const std::uint32_t inner = scene_.faceMaterial[face];
   if (!scene_.faceBoundsSolid[face]) return {Scene::kNoMaterial, Scene::kNoMaterial, inner};
-  const std::uint32_t outer = scene_.faceOuterMaterial.empty() ? Scene::kNoMaterial : scene_.faceOuterMaterial[face];
+  const std::uint32_t outer =
+      scene_.faceOuterMaterial.empty() ? Scene::kNoMaterial : scene_.faceOuterMaterial[face];
   if (entering) return {outer, inner, inner};
   // Leaving by an interface: out of a transparent volume the ray sees the next volume's surface;
   // inside an opaque one (only a cut view without caps gets there) its own wall, as on the skin.
@@ -155,8 +157,8 @@ Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, Trac
   return {0, 0, 0};
 }
 
-Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Material& material, bool parallelView,
-                        TraceCounters& counters) const {
+Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Material& material,
+                        bool parallelView, TraceCounters& counters) const {
   // A field-coloured face (color_by) shows the map's colour as ka and kd; ks and shininess stay.
   Vec3 fieldColor;
   const bool colored = fieldColorAt(scene_, surface, linearFieldColors_, fieldColor);
@@ -168,8 +170,8 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
     const float distance = length(toLight);
     if (!(distance > 0.0f)) continue;
     const Vec3 lightDirection = toLight * (1.0f / distance);
-    const Vec3 contribution =
-        lightResponse(scene_, surface, material, kd, light, ray, parallelView, toViewer, lightDirection, distance);
+    const Vec3 contribution = lightResponse(scene_, surface, material, kd, light, ray, parallelView, toViewer,
+                                            lightDirection, distance);
     if (maxComponent(contribution) <= 0.0f) continue;
     // A light behind the geometric surface is blocked by the surface itself.
     if (dot(surface.geometricNormal, lightDirection) <= 0.0f) continue;
@@ -202,7 +204,8 @@ Vec3 Tracer::shadeShadowCatcher(const Vec3& point, TraceCounters& counters, floa
   return background_ * kept;
 }
 
-const ClipPlane* Tracer::capPlane(const Ray& ray, const ClipInterval& kept, std::uint32_t face, float& tCap) const {
+const ClipPlane* Tracer::capPlane(const Ray& ray, const ClipInterval& kept, std::uint32_t face,
+                                  float& tCap) const {
   // The mesh's own planes and the scene's together keep a convex region, entered at the later of
   // the two entries, by that entry's plane.
   if (const FaceClipRange* range = anyMeshClips_ ? scene_.meshClips.rangeOf(face) : nullptr) {
@@ -295,8 +298,8 @@ Tracer::Sighting Tracer::firstSighting(const Ray& ray) const {
 // that is not traced (depth limit, or a path weight below 1/512) takes the local colour instead, so
 // every node is a weighted mean of non-negative terms with weights summing to 1: light can only be
 // lost (absorption), never created, and depth 0 is exactly the local model.
-Tracer::TracedRay Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
-                                TraceCounters& counters) const {
+Tracer::TracedRay Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength,
+                                bool parallelView, TraceCounters& counters) const {
   ++counters.rays;
   const Sighting seen = firstSighting(ray);
   const float distance = seen.t * length(ray.direction);
@@ -314,17 +317,20 @@ Tracer::TracedRay Tracer::trace(const Ray& ray, int depth, float pathWeight, flo
     case Sighting::Kind::kSurface:
       break;
   }
-  return {shadeSurface(ray, seen.hit, distance, depth, pathWeight, pathLength, parallelView, counters), distance,
-          1.0f};
+  return {shadeSurface(ray, seen.hit, distance, depth, pathWeight, pathLength, parallelView, counters),
+          distance, 1.0f};
 }
 
 Vec3 Tracer::shadeSurface(const Ray& ray, const Hit& hit, float distance, int depth, float pathWeight,
                           float pathLength, bool parallelView, TraceCounters& counters) const {
   // Edges are paint on the surface: fully covered pixels need no shading, partial ones blend.
   const float edge = edgeCoverageAt(ray, hit, pathLength);
-  const Vec3 edgeColor = edge > 0.0f ? scene_.edges->styles[scene_.edges->faceEdgeStyle[hit.face]].color : Vec3{};
+  const Vec3 edgeColor =
+      edge > 0.0f ? scene_.edges->styles[scene_.edges->faceEdgeStyle[hit.face]].color : Vec3{};
   if (edge >= 1.0f) return edgeColor;
-  auto withEdge = [&](const Vec3& color) { return edge > 0.0f ? color * (1.0f - edge) + edgeColor * edge : color; };
+  auto withEdge = [&](const Vec3& color) {
+    return edge > 0.0f ? color * (1.0f - edge) + edgeColor * edge : color;
+  };
   const SurfacePoint surface = makeSurfacePoint(scene_, ray, hit);
   // Closed shells and volumes face out of their material, so the side hit says whether the ray enters.
   const MediumCrossing media = crossingAt(hit.face, surface.normalSign > 0.0f);
@@ -336,9 +342,9 @@ Vec3 Tracer::shadeSurface(const Ray& ray, const Hit& hit, float distance, int de
   const Vec3 direction = normalize(ray.direction);
   // Glass into water bends by n_glass / n_water; an open surface is a thin sheet.
   const InterfaceSplit weights =
-      splitAtInterface(direction, surface.shadingNormal, surface.geometricNormal, scene_.faceBoundsSolid[hit.face] != 0,
-                       iorOf(media.from) / iorOf(media.to), material.fresnel, 1.0f / material.ior, split.reflect,
-                       split.transmit);
+      splitAtInterface(direction, surface.shadingNormal, surface.geometricNormal,
+                       scene_.faceBoundsSolid[hit.face] != 0, iorOf(media.from) / iorOf(media.to),
+                       material.fresnel, 1.0f / material.ior, split.reflect, split.transmit);
   const float branchLength = pathLength + distance;
   Vec3 color = local * split.local;
   // Reflected: the ray stays in the medium it came from (Beer-Lambert inside a solid).
@@ -346,21 +352,24 @@ Vec3 Tracer::shadeSurface(const Ray& ray, const Hit& hit, float distance, int de
       weights.reflect, absorptionOf(media.from), local,
       [&] {
         Vec3 reflected = reflect(direction, surface.shadingNormal);
-        if (dot(reflected, surface.geometricNormal) <= 0.0f) reflected = reflect(direction, surface.geometricNormal);
+        if (dot(reflected, surface.geometricNormal) <= 0.0f)
+          reflected = reflect(direction, surface.geometricNormal);
         return Ray(offsetRayOrigin(surface.position, surface.geometricNormal), reflected);
       },
       depth, pathWeight, branchLength, counters);
   // Transmitted: into the medium beyond, absorbed along the segment inside it.
   color += traceBranch(
       Vec3{1, 1, 1} * weights.transmit, absorptionOf(media.to), local,
-      [&] { return Ray(offsetRayOrigin(surface.position, -surface.geometricNormal), weights.transmittedDirection); },
+      [&] {
+        return Ray(offsetRayOrigin(surface.position, -surface.geometricNormal), weights.transmittedDirection);
+      },
       depth, pathWeight, branchLength, counters);
   return withEdge(color);
 }
 
 template <typename MakeRay>
-Vec3 Tracer::traceBranch(const Vec3& weight, const Vec3& absorption, const Vec3& local, MakeRay&& makeRay, int depth,
-                         float pathWeight, float pathLength, TraceCounters& counters) const {
+Vec3 Tracer::traceBranch(const Vec3& weight, const Vec3& absorption, const Vec3& local, MakeRay&& makeRay,
+                         int depth, float pathWeight, float pathLength, TraceCounters& counters) const {
   const float branchWeight = pathWeight * maxComponent(weight);
   if (branchWeight < kMinPathWeight) return local * weight;
   const TracedRay traced = trace(makeRay(), depth + 1, branchWeight, pathLength, false, counters);

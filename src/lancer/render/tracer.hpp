@@ -71,9 +71,9 @@ class Tracer {
   struct Sighting {
     enum class Kind { kNothing, kShadowCatcher, kCap, kSurface } kind = Kind::kNothing;
     float t = 0;
-    Hit hit;                               // the face hit (for a cap: the face the ray leaves the solid by)
-    const ClipPlane* capPlane = nullptr;   // kCap
-    std::uint32_t capMaterial = 0;         // kCap: the cut solid's
+    Hit hit;                              // the face hit (for a cap: the face the ray leaves the solid by)
+    const ClipPlane* capPlane = nullptr;  // kCap
+    std::uint32_t capMaterial = 0;        // kCap: the cut solid's
   };
   // `pathLength` is how far the ray's origin is from the eye along the path, for edge widths.
   TracedRay trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
@@ -81,13 +81,13 @@ class Tracer {
   Sighting firstSighting(const Ray& ray) const;
   // The Whitted step at a surface hit `distance` along the ray: the local model, then the reflected
   // and transmitted branches.
-  Vec3 shadeSurface(const Ray& ray, const Hit& hit, float distance, int depth, float pathWeight, float pathLength,
-                    bool parallelView, TraceCounters& counters) const;
+  Vec3 shadeSurface(const Ray& ray, const Hit& hit, float distance, int depth, float pathWeight,
+                    float pathLength, bool parallelView, TraceCounters& counters) const;
   // One branch of the ray tree with its weight: traced (and absorbed by the medium it runs in) when
   // its path weight is worth it, else the point's local colour in its place.
   template <typename MakeRay>
-  Vec3 traceBranch(const Vec3& weight, const Vec3& absorption, const Vec3& local, MakeRay&& makeRay, int depth,
-                   float pathWeight, float pathLength, TraceCounters& counters) const;
+  Vec3 traceBranch(const Vec3& weight, const Vec3& absorption, const Vec3& local, MakeRay&& makeRay,
+                   int depth, float pathWeight, float pathLength, TraceCounters& counters) const;
   // The shadow-catcher floor at `point`: the background darkened by the meshes' shadows.
   Vec3 shadeShadowCatcher(const Vec3& point, TraceCounters& counters, float& coverage) const;
   // The accelerator's closest-hit and any-hit queries, seeing through the faces that per-mesh clip
@@ -100,12 +100,14 @@ class Tracer {
   const ClipPlane* capPlane(const Ray& ray, const ClipInterval& kept, std::uint32_t face, float& tCap) const;
   // The flat face a capped clip plane shows where it cuts a solid, at ray parameter `tCap`, in the
   // solid's `material` (`face`: the face the ray would leave the solid by, for field colours).
-  Vec3 shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::uint32_t face, std::uint32_t material,
-                bool parallelView, TraceCounters& counters) const;
+  Vec3 shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::uint32_t face,
+                std::uint32_t material, bool parallelView, TraceCounters& counters) const;
   // What a ray meets at `face`: closed shells and volume faces are wound out of their inner volume,
   // so the side hit (`entering`: against the normal) says which volume it leaves and which it enters.
   MediumCrossing crossingAt(std::uint32_t face, bool entering) const;
-  float iorOf(std::uint32_t material) const { return material == Scene::kNoMaterial ? 1.0f : scene_.materials[material].ior; }
+  float iorOf(std::uint32_t material) const {
+    return material == Scene::kNoMaterial ? 1.0f : scene_.materials[material].ior;
+  }
   Vec3 absorptionOf(std::uint32_t material) const {
     return material == Scene::kNoMaterial ? Vec3{0, 0, 0} : scene_.materials[material].absorption;
   }
@@ -126,8 +128,8 @@ class Tracer {
   bool anyTransparent_ = false;
   std::vector<EnergySplit> splits_;  // per material
   PixelFootprint footprint_;
-  bool linearFieldColors_ = false;  // --srgb: field colours are decoded to linear (field_shading.hpp)
-  bool anyMeshClips_ = false;       // some mesh has planes of its own: use the clipped queries
+  bool linearFieldColors_ = false;        // --srgb: field colours are decoded to linear (field_shading.hpp)
+  bool anyMeshClips_ = false;             // some mesh has planes of its own: use the clipped queries
   std::optional<OutlineEdges> outlines_;  // with a camera, when some mesh draws its edges
 };
 

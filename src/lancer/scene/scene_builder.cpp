@@ -247,8 +247,8 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     }
     // Refraction and caps tell entering from leaving by the side a ray hits, so solids must face out
     // of their material (cavity walls into the cavity).
-    const ShellOrientationReport orientation =
-        orientClosedShellsOutward(positions, mesh.faces, edgeMasks, mesh.facePhysicalTag, mesh.volumeSides.side);
+    const ShellOrientationReport orientation = orientClosedShellsOutward(
+        positions, mesh.faces, edgeMasks, mesh.facePhysicalTag, mesh.volumeSides.side);
     for (const std::uint32_t f : orientation.reversedInterfaces) {
       std::swap(mesh.facePhysicalTag[f], mesh.volumeSides.outerPhysicalTag[f]);
       std::swap(mesh.faceEntityTag[f], mesh.volumeSides.outerEntityTag[f]);
@@ -286,14 +286,16 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
       // A face between two regions of a surface-only mesh takes its region's group, that one alone.
       const bool regionTagged = nextRegionTag < orientation.faceRegionTags.size() &&
                                 orientation.faceRegionTags[nextRegionTag].first == f;
-      scene.faceMaterial.push_back(regionTagged ? materialOf(orientation.faceRegionTags[nextRegionTag++].second, 0)
-                                                : materialOf(mesh.facePhysicalTag[f], mesh.faceEntityTag[f]));
+      scene.faceMaterial.push_back(regionTagged
+                                       ? materialOf(orientation.faceRegionTags[nextRegionTag++].second, 0)
+                                       : materialOf(mesh.facePhysicalTag[f], mesh.faceEntityTag[f]));
       // The material in front of the face: the outer volume of an interface, or the solid of another
       // group that a closed surface lies in (a steel ball drawn inside a glass one).
       std::optional<std::uint32_t> outer;
       if (mesh.volumeSides.isInterface(f))
         outer = materialOf(mesh.volumeSides.outerPhysicalTag[f], mesh.volumeSides.outerEntityTag[f]);
-      if (!orientation.faceEnclosedBy.empty() && orientation.faceEnclosedBy[f] != ShellOrientationReport::kNotEnclosed)
+      if (!orientation.faceEnclosedBy.empty() &&
+          orientation.faceEnclosedBy[f] != ShellOrientationReport::kNotEnclosed)
         outer = materialOf(orientation.faceEnclosedBy[f], 0);
       if (outer) {
         scene.faceOuterMaterial.resize(scene.faces.size(), Scene::kNoMaterial);
@@ -310,7 +312,8 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     if (coloring) addFieldColoring(scene, fields, *coloring, vertexBase, faceBase);
     if (!instance.clips.empty() && !mesh.faces.empty()) addMeshClips(scene, instance.clips, faceBase);
   }
-  if (!scene.faceOuterMaterial.empty()) scene.faceOuterMaterial.resize(scene.faces.size(), Scene::kNoMaterial);
+  if (!scene.faceOuterMaterial.empty())
+    scene.faceOuterMaterial.resize(scene.faces.size(), Scene::kNoMaterial);
   finishFieldColors(scene, std::move(fields));
   finishEdgeOverlay(scene, std::move(overlay));
 

@@ -42,7 +42,7 @@ struct CameraSettings {
   // Without a position, the camera looks at the scene from this direction (any length): the 3/4 view
   // from the right, above and in front for y up. `up_axis` and `--up` turn it with `up`.
   Vec3d viewFrom{0.9, 0.65, 1.3};
-  double fovDegrees = 40;  // vertical, perspective
+  double fovDegrees = 40;            // vertical, perspective
   std::optional<double> viewHeight;  // world units, orthographic; default frames the scene
 };
 
@@ -77,8 +77,8 @@ struct GroupMaterial {
 struct EdgeSettings {
   float widthPixels = 1;
   Vec3 color{0, 0, 0};
-  bool featuresOnly = false;          // only boundaries, group borders and creases
-  float featureAngleDegrees = 30;     // crease angle for featuresOnly
+  bool featuresOnly = false;       // only boundaries, group borders and creases
+  float featureAngleDegrees = 30;  // crease angle for featuresOnly
 };
 
 // `[[clip]] point = [..], normal = [..], cap = true`: geometry on the side the normal points to is
@@ -91,9 +91,9 @@ struct ClipSettings {
 };
 
 struct MeshInstance {
-  std::string file;  // resolved against the scene file's folder
+  std::string file;      // resolved against the scene file's folder
   SourceLocation where;  // of the [[mesh]] table, for errors found when the mesh is loaded
-  int material = 0;  // index into SceneDescription::materials
+  int material = 0;      // index into SceneDescription::materials
   std::optional<ShadingMode> shading;
   float smoothAngleDegrees = 60;
   std::optional<ColorBy> colorBy;  // colour the surface by a field of the mesh file
@@ -108,7 +108,7 @@ struct MeshInstance {
 struct AnimationSettings {
   int frames = 36;
   double fps = 12;
-  int orbitLight = -1;  // -1: the camera orbits; k >= 0: light k orbits
+  int orbitLight = -1;          // -1: the camera orbits; k >= 0: light k orbits
   std::optional<Vec3d> axis;    // default: the camera's up (a turntable about the up axis)
   std::optional<Vec3d> center;  // default: centre of the scene's bounding box
   double degrees = 360;

@@ -21,8 +21,8 @@
 namespace lancer {
 namespace {
 
-constexpr std::array<std::string_view, 9> kSceneTables = {"render",   "camera", "ambient",  "light",
-                                                          "material", "mesh",   "animation", "clip", "floor"};
+constexpr std::array<std::string_view, 9> kSceneTables = {
+    "render", "camera", "ambient", "light", "material", "mesh", "animation", "clip", "floor"};
 constexpr std::array<std::string_view, 10> kRenderKeys = {
     "width",   "height",     "samples", "max_depth", "sampler",
     "shading", "background", "output",  "srgb",      "adaptive_threshold"};
@@ -39,7 +39,6 @@ constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only",
 constexpr std::array<std::string_view, 2> kEdgeSelections = {"elements", "features"};
 constexpr std::array<std::string_view, 6> kAnimationKeys = {"frames", "fps",    "orbit",
                                                             "axis",   "center", "degrees"};
-
 
 // State shared by the section readers: the file for messages and the folder paths are relative to.
 struct SceneFile {
@@ -75,15 +74,17 @@ const toml::table* sectionTable(const SceneFile& file, const toml::table& root, 
 // `[[light]]`, `[[mesh]]`, `[[mesh.clip]]`: the elements of the array of tables `key` of `parent`
 // (empty if absent). `name` is how messages call it ("mesh[2].clip"), `header` how it is written
 // ("mesh.clip").
-std::vector<const toml::table*> tableArray(const SceneFile& file, const toml::table& parent, std::string_view key,
-                                           std::string_view name, std::string_view header) {
+std::vector<const toml::table*> tableArray(const SceneFile& file, const toml::table& parent,
+                                           std::string_view key, std::string_view name,
+                                           std::string_view header) {
   std::vector<const toml::table*> tables;
   const toml::node* node = parent.get(key);
   if (!node) return tables;
   const auto* array = node->as_array();
   if (!array)
-    file.fail(*node, fmt::format("{} must be an array of tables: write [[{}]] for each one, not {}", name, header,
-                                 node->is_table() ? fmt::format("[{}]", header) : describeValue(*node)));
+    file.fail(*node,
+              fmt::format("{} must be an array of tables: write [[{}]] for each one, not {}", name, header,
+                          node->is_table() ? fmt::format("[{}]", header) : describeValue(*node)));
   for (std::size_t i = 0; i < array->size(); ++i) {
     const toml::node& element = *array->get(i);
     if (!element.is_table())
@@ -94,7 +95,8 @@ std::vector<const toml::table*> tableArray(const SceneFile& file, const toml::ta
   return tables;
 }
 
-std::vector<const toml::table*> tableArray(const SceneFile& file, const toml::table& root, std::string_view name) {
+std::vector<const toml::table*> tableArray(const SceneFile& file, const toml::table& root,
+                                           std::string_view name) {
   return tableArray(file, root, name, name, name);
 }
 
@@ -213,8 +215,9 @@ FloorSettings readFloor(const SceneFile& file, const toml::table& table) {
   const std::optional<bool> catcher = reader.boolean("shadow_catcher");
   if (!catcher || !*catcher) {
     if (const toml::node* node = reader.find("shadow_catcher"))
-      reader.fail(*node, "floor.shadow_catcher = false is not supported: [floor] is only a shadow catcher; "
-                         "for a visible floor add a floor mesh (see examples/demo.toml)");
+      reader.fail(*node,
+                  "floor.shadow_catcher = false is not supported: [floor] is only a shadow catcher; "
+                  "for a visible floor add a floor mesh (see examples/demo.toml)");
     reader.failMissing("shadow_catcher", "shadow_catcher = true");
   }
   FloorSettings floor;
@@ -279,11 +282,12 @@ Material readMaterial(const SceneFile& file, const toml::table& table, const std
   // let each bounce add light (the tracer's energy split, tracer.cpp).
   const float shared = maxComponent(material.reflectivity) + material.transparency;
   if (shared > 1.0f + 1e-6f)
-    reader.fail(*(reader.find("transparency") ? reader.find("transparency") : reader.find("reflectivity")),
-                fmt::format("material.{}: reflectivity + transparency must not exceed 1 in any channel (found "
-                            "{:g} + {:g}): they share the light leaving the surface with the local colour; "
-                            "lower one of them",
-                            name, maxComponent(material.reflectivity), material.transparency));
+    reader.fail(
+        *(reader.find("transparency") ? reader.find("transparency") : reader.find("reflectivity")),
+        fmt::format("material.{}: reflectivity + transparency must not exceed 1 in any channel (found "
+                    "{:g} + {:g}): they share the light leaving the surface with the local colour; "
+                    "lower one of them",
+                    name, maxComponent(material.reflectivity), material.transparency));
   return material;
 }
 
@@ -366,13 +370,15 @@ std::optional<EdgeSettings> readEdges(const SceneFile& file, const TomlTableRead
     return enabled->get() ? std::optional<EdgeSettings>(EdgeSettings{}) : std::nullopt;
   const auto* table = node->as_table();
   if (!table)
-    mesh.fail(*node, fmt::format("{} must be true, false or a table like {{ width = 1.0, color = [0, 0, 0] }}, "
-                                 "found {}",
-                                 mesh.qualified("edges"), describeValue(*node)));
+    mesh.fail(*node,
+              fmt::format("{} must be true, false or a table like {{ width = 1.0, color = [0, 0, 0] }}, "
+                          "found {}",
+                          mesh.qualified("edges"), describeValue(*node)));
   const TomlTableReader reader(*table, mesh.qualified("edges"), file.path, kEdgeKeys);
   EdgeSettings edges;
   if (auto width = reader.number("width", NumberRange::between(0.1, 100))) edges.widthPixels = float(*width);
-  if (auto color = reader.vector("color", Triple::Rgb, NumberRange::between(0, 1))) edges.color = toFloat(*color);
+  if (auto color = reader.vector("color", Triple::Rgb, NumberRange::between(0, 1)))
+    edges.color = toFloat(*color);
   if (auto only = reader.choice("only", kEdgeSelections)) edges.featuresOnly = *only == 1;
   if (auto angle = reader.number("feature_angle", NumberRange::between(0, 180)))
     edges.featureAngleDegrees = float(*angle);

@@ -21,13 +21,13 @@ std::string dcheckValues(const A& a, const B& b) {
 }  // namespace lancer
 
 #if defined(LANCER_DCHECKS)
-#define LANCER_DCHECK(a, op, b)                                                                    \
-  do {                                                                                             \
-    const auto& lancerCheckA = (a);                                                                \
-    const auto& lancerCheckB = (b);                                                                \
-    if (!(lancerCheckA op lancerCheckB))                                                           \
+#define LANCER_DCHECK(a, op, b)                                                                     \
+  do {                                                                                              \
+    const auto& lancerCheckA = (a);                                                                 \
+    const auto& lancerCheckB = (b);                                                                 \
+    if (!(lancerCheckA op lancerCheckB))                                                            \
       ::lancer::dcheckFailed(#a " " #op " " #b, ::lancer::dcheckValues(lancerCheckA, lancerCheckB), \
-                             __FILE__, __LINE__);                                                  \
+                             __FILE__, __LINE__);                                                   \
   } while (false)
 #else
 #define LANCER_DCHECK(a, op, b) \

@@ -11,9 +11,9 @@ namespace lancer {
 // A location in a user's file: a line (and optional column) for text, a byte offset for binary.
 struct SourceLocation {
   std::string file;
-  std::int64_t line = 0;        // 1-based; 0 when unknown or not a text position
-  std::int64_t column = 0;      // 1-based; 0 when unknown
-  std::int64_t byteOffset = -1; // >= 0 for binary files, where lines mean nothing
+  std::int64_t line = 0;         // 1-based; 0 when unknown or not a text position
+  std::int64_t column = 0;       // 1-based; 0 when unknown
+  std::int64_t byteOffset = -1;  // >= 0 for binary files, where lines mean nothing
 };
 
 // Thrown for bad input. what() is the full compiler-style line:

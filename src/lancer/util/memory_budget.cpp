@@ -39,7 +39,8 @@ std::optional<std::uint64_t> parseByteSize(std::string_view text) {
   const char* begin = copy.c_str();
   char* end = nullptr;
   const double number = std::strtod(begin, &end);
-  if (end == begin || !std::isfinite(number) || !(number > 0) || *begin == '-' || *begin == '+') return std::nullopt;
+  if (end == begin || !std::isfinite(number) || !(number > 0) || *begin == '-' || *begin == '+')
+    return std::nullopt;
   std::string_view unit(end);
   double scale = 1;
   if (unit == "%") {
@@ -48,13 +49,20 @@ std::optional<std::uint64_t> parseByteSize(std::string_view text) {
     if (physical == 0) return std::nullopt;
     scale = static_cast<double>(physical) / 100;
   } else {
-    if (unit.ends_with("iB")) unit.remove_suffix(2);
-    else if (unit.size() == 2 && unit.back() == 'B') unit.remove_suffix(1);
-    if (unit == "K" || unit == "k") scale = 1024.0;
-    else if (unit == "M") scale = 1024.0 * 1024;
-    else if (unit == "G") scale = 1024.0 * 1024 * 1024;
-    else if (unit == "T") scale = 1024.0 * 1024 * 1024 * 1024;
-    else if (!unit.empty() && unit != "B") return std::nullopt;
+    if (unit.ends_with("iB"))
+      unit.remove_suffix(2);
+    else if (unit.size() == 2 && unit.back() == 'B')
+      unit.remove_suffix(1);
+    if (unit == "K" || unit == "k")
+      scale = 1024.0;
+    else if (unit == "M")
+      scale = 1024.0 * 1024;
+    else if (unit == "G")
+      scale = 1024.0 * 1024 * 1024;
+    else if (unit == "T")
+      scale = 1024.0 * 1024 * 1024 * 1024;
+    else if (!unit.empty() && unit != "B")
+      return std::nullopt;
   }
   const double bytes = std::floor(number * scale);
   if (bytes < 1 || bytes >= 1.8e19) return std::nullopt;
@@ -76,9 +84,10 @@ std::string formatBytes(std::uint64_t bytes) {
 void requireMemory(std::uint64_t bytes, const SourceLocation& where, std::string_view what) {
   const std::uint64_t budget = memoryBudget();
   if (bytes <= budget) return;
-  throw InputError(where, fmt::format("{} needs {}, more than the memory budget of {}; use a smaller input or "
-                                      "raise --max-memory",
-                                      what, formatBytes(bytes), formatBytes(budget)));
+  throw InputError(where,
+                   fmt::format("{} needs {}, more than the memory budget of {}; use a smaller input or "
+                               "raise --max-memory",
+                               what, formatBytes(bytes), formatBytes(budget)));
 }
 
 }  // namespace lancer

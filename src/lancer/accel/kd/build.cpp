@@ -60,7 +60,8 @@ KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const Me
 int resolveMaxDepth(const KdBuildOptions& options, std::size_t triangleCount) {
   int depth = options.maxDepth;
   if (depth <= 0) {
-    depth = static_cast<int>(std::lround(8.0 + 1.3 * std::log2(double(std::max<std::size_t>(triangleCount, 1)))));
+    depth =
+        static_cast<int>(std::lround(8.0 + 1.3 * std::log2(double(std::max<std::size_t>(triangleCount, 1)))));
   }
   return std::clamp(depth, 0, KdTree::kMaxDepth);
 }
@@ -88,8 +89,8 @@ BuildNode* BuildArena::inner(int axis, float split, BuildNode* left, BuildNode* 
 namespace {
 
 struct Layout {
-  std::vector<KdNode> words;                 // the tree's layout_ stream
-  std::vector<std::uint32_t> triangleWord;   // build triangle id -> word offset, or kUnset
+  std::vector<KdNode> words;                // the tree's layout_ stream
+  std::vector<std::uint32_t> triangleWord;  // build triangle id -> word offset, or kUnset
   const std::vector<PackedTriangle>* triangles = nullptr;
   AccelStats stats;
   double rootArea = 0;
@@ -134,7 +135,8 @@ struct Layout {
       const std::uint32_t list = allocate((node.count + 1) / 2);
       for (std::uint32_t i = 0; i < node.count; ++i) {
         const std::uint32_t offset = placeTriangle(tris[i]);  // may grow `words`: index afresh
-        std::memcpy(reinterpret_cast<char*>(words.data() + list) + i * sizeof(std::uint32_t), &offset, sizeof offset);
+        std::memcpy(reinterpret_cast<char*>(words.data() + list) + i * sizeof(std::uint32_t), &offset,
+                    sizeof offset);
       }
       words[index] = KdNode::leaf(list, node.count);
     }
@@ -162,7 +164,8 @@ struct Layout {
     childBox[1].lower[node.axis] = node.split;
     for (int leafPass : {1, 0}) {
       for (int k = 0; k < 2; ++k) {
-        if ((node.child[k]->axis < 0) == bool(leafPass)) place(children + k, *node.child[k], childBox[k], depth + 1);
+        if ((node.child[k]->axis < 0) == bool(leafPass))
+          place(children + k, *node.child[k], childBox[k], depth + 1);
       }
     }
   }
@@ -202,7 +205,8 @@ KdTree KdTreeAssembler::assemble(const BuildNode& root, KdBuildInput&& input, co
   tree.layout_.shrink_to_fit();
   tree.slivers_ = std::move(input.slivers);
   tree.bounds_ = paddedBounds(input.bounds);
-  if (!input.bounds.empty()) tree.magnitude_ = std::max(maxComponent(abs(input.bounds.lower)), maxComponent(abs(input.bounds.upper)));
+  if (!input.bounds.empty())
+    tree.magnitude_ = std::max(maxComponent(abs(input.bounds.lower)), maxComponent(abs(input.bounds.upper)));
 
   AccelStats& stats = tree.stats_;
   stats = layout.stats;

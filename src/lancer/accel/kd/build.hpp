@@ -16,10 +16,10 @@ namespace lancer {
 
 // The triangles to build over, with their exact corners (the builders clip and bound these).
 struct KdBuildInput {
-  std::vector<PackedTriangle> triangles;         // tree triangles, index = build triangle id
-  std::vector<std::array<Vec3, 3>> corners;      // parallel to triangles
-  std::vector<PackedTriangle> slivers;           // kept out of the tree, see KdTree::slivers_
-  Aabb bounds;                                   // of the tree triangles
+  std::vector<PackedTriangle> triangles;     // tree triangles, index = build triangle id
+  std::vector<std::array<Vec3, 3>> corners;  // parallel to triangles
+  std::vector<PackedTriangle> slivers;       // kept out of the tree, see KdTree::slivers_
+  Aabb bounds;                               // of the tree triangles
   std::uint64_t faceCount = 0;
 };
 KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces);

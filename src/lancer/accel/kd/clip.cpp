@@ -1,8 +1,8 @@
 #include "lancer/accel/kd/clip.hpp"
 
 #include <cmath>
-#include <utility>
 #include <limits>
+#include <utility>
 
 namespace lancer {
 

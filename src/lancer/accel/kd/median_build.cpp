@@ -15,7 +15,8 @@ namespace {
 class MedianBuilder {
  public:
   MedianBuilder(const KdBuildInput& input, const KdBuildOptions& options, BuildArenas& arenas)
-      : arenas_(arenas), maxDepth_(resolveMaxDepth(options, input.triangles.size())),
+      : arenas_(arenas),
+        maxDepth_(resolveMaxDepth(options, input.triangles.size())),
         leafSize_(static_cast<std::uint32_t>(std::max(1, options.medianLeafSize))) {
     bounds_.reserve(input.triangles.size());
     for (const std::array<Vec3, 3>& c : input.corners) {
@@ -56,7 +57,8 @@ class MedianBuilder {
     rightBox.lower[axis] = split;
     BuildNode *leftNode, *rightNode;
     if (depth < forkDepth_) {
-      auto task = std::async(std::launch::async, [&] { return build(left, leftBox, depth + 1, badSplits, arenas_.create()); });
+      auto task = std::async(std::launch::async,
+                             [&] { return build(left, leftBox, depth + 1, badSplits, arenas_.create()); });
       rightNode = build(right, rightBox, depth + 1, badSplits, arena);
       leftNode = task.get();
     } else {

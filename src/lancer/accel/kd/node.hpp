@@ -21,7 +21,9 @@ struct KdNode {
   static KdNode inner(int axis, float split, std::uint32_t firstChild) {
     return {std::bit_cast<std::uint32_t>(split), (firstChild << 2) | static_cast<std::uint32_t>(axis)};
   }
-  static KdNode leaf(std::uint32_t payload, std::uint32_t count) { return {payload, (count << 2) | kLeafTag}; }
+  static KdNode leaf(std::uint32_t payload, std::uint32_t count) {
+    return {payload, (count << 2) | kLeafTag};
+  }
 
   bool isLeaf() const { return (bits & 3u) == kLeafTag; }
   int axis() const { return static_cast<int>(bits & 3u); }

@@ -104,7 +104,7 @@ struct Scratch {
   std::vector<std::uint8_t> side;        // per id, kBoth between splits
   std::vector<std::uint32_t> straddlers;
   std::vector<std::uint32_t> leafTriangles;
-  EventLists fresh[2];                   // clipped straddlers' events, left and right
+  EventLists fresh[2];  // clipped straddlers' events, left and right
   // The children's event lists of the node being split at depth d live in levels[d + 1]: the left
   // child's are consumed (its whole subtree built) before the right child's are read, and only
   // deeper levels are written meanwhile.
@@ -114,7 +114,9 @@ struct Scratch {
 class SahBuilder {
  public:
   SahBuilder(const KdBuildInput& input, const KdBuildOptions& options, BuildArenas& arenas)
-      : input_(input), options_(options), arenas_(arenas),
+      : input_(input),
+        options_(options),
+        arenas_(arenas),
         maxDepth_(resolveMaxDepth(options, input.triangles.size())) {
     // A few more tasks than threads balance uneven subtrees; each task below this depth forks.
     const int threads = resolveThreads(options);
@@ -204,7 +206,8 @@ class SahBuilder {
 
     BuildNode *leftNode, *rightNode;
     if (depth < forkDepth_) {
-      auto task = std::async(std::launch::async, [&] { return binnedTask(std::move(left), leftBox, depth + 1); });
+      auto task =
+          std::async(std::launch::async, [&] { return binnedTask(std::move(left), leftBox, depth + 1); });
       rightNode = buildBinned(std::move(right), rightBox, depth + 1, arena, scratch);
       leftNode = task.get();
     } else {
@@ -250,7 +253,9 @@ class SahBuilder {
 
     BuildNode *leftNode, *rightNode;
     if (depth < forkDepth_) {
-      auto task = std::async(std::launch::async, [&] { return buildTask(std::move(left), leftCount, leftBox, depth + 1, &scratch); });
+      auto task = std::async(std::launch::async, [&] {
+        return buildTask(std::move(left), leftCount, leftBox, depth + 1, &scratch);
+      });
       rightNode = build(right, rightCount, rightBox, depth + 1, arena, scratch);
       leftNode = task.get();
     } else {
@@ -334,9 +339,9 @@ class SahBuilder {
 
   // Section 4.3: classify, keep the sorted order of one-sided events, clip the straddlers and
   // merge their fresh (sorted) events in.
-  void splitEvents(const EventLists& events, const SplitPlane& plane, const Aabb& leftBox, const Aabb& rightBox,
-                   Scratch& scratch, EventLists& left, EventLists& right, std::uint32_t& leftCount,
-                   std::uint32_t& rightCount) const {
+  void splitEvents(const EventLists& events, const SplitPlane& plane, const Aabb& leftBox,
+                   const Aabb& rightBox, Scratch& scratch, EventLists& left, EventLists& right,
+                   std::uint32_t& leftCount, std::uint32_t& rightCount) const {
     std::vector<std::uint8_t>& side = scratch.side;
     const int k = plane.axis;
     const float p = plane.pos;
@@ -365,8 +370,10 @@ class SahBuilder {
       right[axis].clear();
       for (const Event& e : events[axis]) {
         const std::uint8_t s = side[e.triangle()];
-        if (s == kLeftOnly) left[axis].push_back(e);
-        else if (s == kRightOnly) right[axis].push_back(e);
+        if (s == kLeftOnly)
+          left[axis].push_back(e);
+        else if (s == kRightOnly)
+          right[axis].push_back(e);
       }
     }
     EventLists& newLeft = scratch.fresh[0];

@@ -177,15 +177,32 @@ MshElementType mshElementType(int type) {
 
 int mshCompleteSurfaceOrder(int type) {
   switch (type) {
-    case 21: case 36: return 3;
-    case 23: case 37: return 4;
-    case 25: case 38: return 5;
-    case 42: case 47: return 6;
-    case 43: case 48: return 7;
-    case 44: case 49: return 8;
-    case 45: case 50: return 9;
-    case 46: case 51: return 10;
-    default: return 0;
+    case 21:
+    case 36:
+      return 3;
+    case 23:
+    case 37:
+      return 4;
+    case 25:
+    case 38:
+      return 5;
+    case 42:
+    case 47:
+      return 6;
+    case 43:
+    case 48:
+      return 7;
+    case 44:
+    case 49:
+      return 8;
+    case 45:
+    case 50:
+      return 9;
+    case 46:
+    case 51:
+      return 10;
+    default:
+      return 0;
   }
 }
 
@@ -197,8 +214,10 @@ int mshSurfaceCorners(int type) {
 
 std::string mshElementRenderNote(int type) {
   const MshElementType info = mshElementType(type);
-  if (type <= 19 || (info.role != MshElementRole::kSurface && info.role != MshElementRole::kVolume)) return {};
-  if (info.role == MshElementRole::kVolume) return "drawn through its corner nodes (its skin's faces are flat)";
+  if (type <= 19 || (info.role != MshElementRole::kSurface && info.role != MshElementRole::kVolume))
+    return {};
+  if (info.role == MshElementRole::kVolume)
+    return "drawn through its corner nodes (its skin's faces are flat)";
   if (mshCompleteSurfaceOrder(type)) return "split into flat faces through all its nodes";
   return "drawn through its corner nodes (incomplete element: no interior nodes)";
 }

@@ -126,8 +126,8 @@ void readMshNodeData(MshReadState& state, const char* sectionStart) {
     state.warnAt(firstDroppedAt,
                  fmt::format("$NodeData '{}' gives values for {} node{} that $Nodes does not define (the "
                              "first: node {}); they were dropped and the other {} kept",
-                             field.name, dropped, dropped == 1 ? "" : "s", static_cast<std::int64_t>(firstDropped),
-                             header.count - dropped));
+                             field.name, dropped, dropped == 1 ? "" : "s",
+                             static_cast<std::int64_t>(firstDropped), header.count - dropped));
   expectFieldSectionEnd(cursor, "$EndNodeData", "after the node data values");
   state.assembler.nodeFields.push_back(std::move(field));
 }

@@ -43,12 +43,37 @@ bool startsWithWord(std::string_view line, std::string_view word) {
 
 // gmsh's .geo language: a statement like Point(1) = {...}; SetFactory("OpenCASCADE"); Merge "x";
 bool looksLikeGeo(std::string_view text) {
-  static constexpr std::string_view kWords[] = {
-      "Point",  "Line",     "Curve",      "Circle",    "Spline",    "Surface", "Plane Surface", "Volume",
-      "Box",    "Sphere",   "Cylinder",   "Rectangle", "Disk",      "Torus",   "Cone",          "Wedge",
-      "Merge",  "Include",  "SetFactory", "Physical",  "Extrude",   "BooleanUnion", "BooleanDifference",
-      "BooleanFragments", "BooleanIntersection", "Transfinite", "Field", "ShapeFromFile", "Curve Loop",
-      "Line Loop", "Surface Loop"};
+  static constexpr std::string_view kWords[] = {"Point",
+                                                "Line",
+                                                "Curve",
+                                                "Circle",
+                                                "Spline",
+                                                "Surface",
+                                                "Plane Surface",
+                                                "Volume",
+                                                "Box",
+                                                "Sphere",
+                                                "Cylinder",
+                                                "Rectangle",
+                                                "Disk",
+                                                "Torus",
+                                                "Cone",
+                                                "Wedge",
+                                                "Merge",
+                                                "Include",
+                                                "SetFactory",
+                                                "Physical",
+                                                "Extrude",
+                                                "BooleanUnion",
+                                                "BooleanDifference",
+                                                "BooleanFragments",
+                                                "BooleanIntersection",
+                                                "Transfinite",
+                                                "Field",
+                                                "ShapeFromFile",
+                                                "Curve Loop",
+                                                "Line Loop",
+                                                "Surface Loop"};
   int statements = 0;
   forEachLine(text, [&](std::string_view line) {
     for (const std::string_view word : kWords)
@@ -90,7 +115,8 @@ Format byContent(std::string_view text, std::uint64_t fileBytes) {
   const std::string_view start = trimmedStart(text);
   if (start.starts_with("ISO-10303-21")) return Format::kStep;
   if (start.starts_with("DBRep_DrawableShape") || start.starts_with("CASCADE Topology")) return Format::kBrep;
-  if (start.starts_with("# vtk DataFile") || (start.starts_with("<?xml") && text.find("<VTKFile") != text.npos))
+  if (start.starts_with("# vtk DataFile") ||
+      (start.starts_with("<?xml") && text.find("<VTKFile") != text.npos))
     return Format::kVtk;
   if (start.starts_with("solid") && text.find("facet") != std::string_view::npos) return Format::kStlAscii;
   // Binary STL: an 80-byte header, a 32-bit triangle count, 50 bytes per triangle.
@@ -101,8 +127,9 @@ Format byContent(std::string_view text, std::uint64_t fileBytes) {
   }
   // IGES: 80-column records with the section letter (S, G, ...) in column 73.
   if ((text.size() >= 81 && text[80] == '\n') || (text.size() >= 82 && text[80] == '\r')) {
-    if (text[72] == 'S' && std::all_of(text.begin() + 73, text.begin() + 80,
-                                       [](char c) { return c == ' ' || std::isdigit(static_cast<unsigned char>(c)); }))
+    if (text[72] == 'S' && std::all_of(text.begin() + 73, text.begin() + 80, [](char c) {
+          return c == ' ' || std::isdigit(static_cast<unsigned char>(c));
+        }))
       return Format::kIges;
   }
   if (looksLikePos(text)) return Format::kPos;
@@ -126,16 +153,25 @@ Format byExtension(const std::string& path) {
 
 const char* nativeExtension(Format format) {
   switch (format) {
-    case Format::kGeo: return ".geo";
+    case Format::kGeo:
+      return ".geo";
     case Format::kStlAscii:
-    case Format::kStlBinary: return ".stl";
-    case Format::kStep: return ".step";
-    case Format::kIges: return ".iges";
-    case Format::kBrep: return ".brep";
-    case Format::kPos: return ".pos";
-    case Format::kVtk: return ".vtk";
-    case Format::kObj: return ".obj";
-    case Format::kNone: break;
+    case Format::kStlBinary:
+      return ".stl";
+    case Format::kStep:
+      return ".step";
+    case Format::kIges:
+      return ".iges";
+    case Format::kBrep:
+      return ".brep";
+    case Format::kPos:
+      return ".pos";
+    case Format::kVtk:
+      return ".vtk";
+    case Format::kObj:
+      return ".obj";
+    case Format::kNone:
+      break;
   }
   return nullptr;
 }
@@ -150,34 +186,39 @@ std::string describe(Format format, std::string_view text, const std::string& pa
       // A script that makes volumes wants -3; otherwise surfaces are what lancer draws.
       const bool volumes = text.find("Volume") != std::string_view::npos || text.find("Box(") != text.npos ||
                            text.find("Sphere(") != text.npos || text.find("Cylinder(") != text.npos;
-      return fmt::format("this is a gmsh geometry script (.geo), not a mesh: {}mesh it with 'gmsh {} -{} -o {}'",
-                         rename, path, volumes ? 3 : 2, out);
+      return fmt::format(
+          "this is a gmsh geometry script (.geo), not a mesh: {}mesh it with 'gmsh {} -{} -o {}'", rename,
+          path, volumes ? 3 : 2, out);
     }
     case Format::kStlAscii:
     case Format::kStlBinary:
-      return fmt::format("this is an STL surface ({}), not a gmsh mesh: {}convert it with 'gmsh {} -save -o {}'",
-                         format == Format::kStlBinary ? "binary" : "ASCII", rename, path, out);
+      return fmt::format(
+          "this is an STL surface ({}), not a gmsh mesh: {}convert it with 'gmsh {} -save -o {}'",
+          format == Format::kStlBinary ? "binary" : "ASCII", rename, path, out);
     case Format::kStep:
-      return fmt::format("this is a STEP CAD model, not a mesh: {}mesh it with 'gmsh {} -2 -o {}' (-3 to mesh "
-                         "its volumes)",
-                         rename, path, out);
+      return fmt::format(
+          "this is a STEP CAD model, not a mesh: {}mesh it with 'gmsh {} -2 -o {}' (-3 to mesh "
+          "its volumes)",
+          rename, path, out);
     case Format::kIges:
-      return fmt::format("this is an IGES CAD model, not a mesh: {}mesh it with 'gmsh {} -2 -o {}'", rename, path,
-                         out);
+      return fmt::format("this is an IGES CAD model, not a mesh: {}mesh it with 'gmsh {} -2 -o {}'", rename,
+                         path, out);
     case Format::kBrep:
       return fmt::format("this is an OpenCASCADE BREP model, not a mesh: {}mesh it with 'gmsh {} -2 -o {}'",
                          rename, path, out);
     case Format::kPos:
-      return fmt::format("this is a gmsh post-processing view (.pos), not a mesh: save it as a mesh with its "
-                         "data: {}write 'Save View[0] \"{}\";' in save.geo and run 'gmsh {} save.geo -0'",
-                         rename, name, path);
+      return fmt::format(
+          "this is a gmsh post-processing view (.pos), not a mesh: save it as a mesh with its "
+          "data: {}write 'Save View[0] \"{}\";' in save.geo and run 'gmsh {} save.geo -0'",
+          rename, name, path);
     case Format::kVtk:
-      return fmt::format("this is a VTK file, not a gmsh mesh: {}convert it with 'gmsh {} -save -o {}'", rename,
-                         path, out);
+      return fmt::format("this is a VTK file, not a gmsh mesh: {}convert it with 'gmsh {} -save -o {}'",
+                         rename, path, out);
     case Format::kObj:
-      return fmt::format("this is a Wavefront OBJ mesh, which gmsh does not read: convert it, e.g. with "
-                         "meshio: 'meshio convert {} {}'",
-                         path, out);
+      return fmt::format(
+          "this is a Wavefront OBJ mesh, which gmsh does not read: convert it, e.g. with "
+          "meshio: 'meshio convert {} {}'",
+          path, out);
     case Format::kNone:
       break;
   }

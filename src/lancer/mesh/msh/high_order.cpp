@@ -56,7 +56,8 @@ std::vector<MshSubFace> splitTriangle(int p) {
   std::vector<MshSubFace> faces;
   for (int j = 0; j < p; ++j) {
     for (int i = 0; i + j < p; ++i) {
-      const auto mask = static_cast<std::uint8_t>((j == 0 ? 1 : 0) | (i + j + 1 == p ? 2 : 0) | (i == 0 ? 4 : 0));
+      const auto mask =
+          static_cast<std::uint8_t>((j == 0 ? 1 : 0) | (i + j + 1 == p ? 2 : 0) | (i == 0 ? 4 : 0));
       faces.push_back({{node(at, i, j), node(at, i + 1, j), node(at, i, j + 1), kNoSubCorner}, mask});
       if (i + j + 1 < p)
         faces.push_back({{node(at, i + 1, j), node(at, i + 1, j + 1), node(at, i, j + 1), kNoSubCorner}, 0});
@@ -86,9 +87,12 @@ std::vector<MshSubFace> facesOf(int type) {
   if (order && mshSurfaceCorners(type) == 3) return splitTriangle(order);
   if (order) return splitQuad(order);
   switch (mshSurfaceCorners(type)) {
-    case 3: return {{{0, 1, 2, kNoSubCorner}, 0b111}};
-    case 4: return {{{0, 1, 2, 3}, 0x0F}};
-    default: return {};
+    case 3:
+      return {{{0, 1, 2, kNoSubCorner}, 0b111}};
+    case 4:
+      return {{{0, 1, 2, 3}, 0x0F}};
+    default:
+      return {};
   }
 }
 

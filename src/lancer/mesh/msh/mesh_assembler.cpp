@@ -110,7 +110,17 @@ void MshMeshAssembler::addOtherElement(int type, const std::uint32_t* n) {
       secondOrderSurfaces_.push_back({mshFaceKey(n, 4), {n[0], n[1], n[2], n[3]}, first, 4});
       addSplitQuad(n, n + 4, addDerivedCentre(n, n + 4));
       return;
-    case 4: case 5: case 6: case 7: case 11: case 12: case 13: case 14: case 17: case 18: case 19:
+    case 4:
+    case 5:
+    case 6:
+    case 7:
+    case 11:
+    case 12:
+    case 13:
+    case 14:
+    case 17:
+    case 18:
+    case 19:
       addVolumeElement(type, n);  // first and second order: no table lookup per element
       return;
     default:
@@ -211,7 +221,8 @@ void MshMeshAssembler::addVolumeFace(const MshVolumeFace& face) {
   if (face.mid[0] != kNoVertex && face.corner[3] == kNoVertex) {
     addSplitTriangle(face.corner, face.mid);
   } else if (face.mid[0] != kNoVertex) {
-    const std::uint32_t centre = face.centre != kNoVertex ? face.centre : addDerivedCentre(face.corner, face.mid);
+    const std::uint32_t centre =
+        face.centre != kNoVertex ? face.centre : addDerivedCentre(face.corner, face.mid);
     addSplitQuad(face.corner, face.mid, centre);
   } else if (face.corner[3] == kNoVertex) {
     addTriangle(face.corner[0], face.corner[1], face.corner[2], 0b111);
@@ -234,12 +245,14 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
     volumeOfGroup[g] = physical != 0 ? std::uint64_t{static_cast<std::uint32_t>(physical)}
                                      : (std::uint64_t{1} << 32) | static_cast<std::uint32_t>(entity);
   }
-  const bool severalVolumes =
-      std::any_of(volumeGroups_.begin(), volumeGroups_.end(),
-                  [&](std::uint32_t g) { return volumeOfGroup[g] != volumeOfGroup[volumeGroups_.front()]; });
-  const std::vector<VolumeBoundaryFace> boundary = findVolumeBoundary(volumeFaces_, volumeOfGroup, severalVolumes);
-  const bool anyInterface = std::any_of(boundary.begin(), boundary.end(),
-                                        [](const VolumeBoundaryFace& face) { return face.outer != kNoVertex; });
+  const bool severalVolumes = std::any_of(volumeGroups_.begin(), volumeGroups_.end(), [&](std::uint32_t g) {
+    return volumeOfGroup[g] != volumeOfGroup[volumeGroups_.front()];
+  });
+  const std::vector<VolumeBoundaryFace> boundary =
+      findVolumeBoundary(volumeFaces_, volumeOfGroup, severalVolumes);
+  const bool anyInterface = std::any_of(boundary.begin(), boundary.end(), [](const VolumeBoundaryFace& face) {
+    return face.outer != kNoVertex;
+  });
   if (anyInterface) {
     trackSides_ = true;
     sides_.side.assign(faces_.size(), FaceSide::kSurface);
@@ -259,12 +272,13 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
       const auto [begin, end] = std::equal_range(surfaces.begin(), surfaces.end(), probe);
       if (begin == end) continue;
       const bool interface = boundary[b].outer != kNoVertex;
-      const bool surfaceGrouped =
-          std::any_of(begin, end, [&](const SurfaceElementFaces& e) { return facePhysical_[e.firstFace] != 0; });
+      const bool surfaceGrouped = std::any_of(
+          begin, end, [&](const SurfaceElementFaces& e) { return facePhysical_[e.firstFace] != 0; });
       const bool volumeGrouped = groups_[volumeFace.group].first != 0;
       if (interface || (!surfaceGrouped && volumeGrouped)) {
         if (removedSurface.empty()) removedSurface.assign(faces_.size(), 0);
-        for (auto e = begin; e != end; ++e) std::fill_n(removedSurface.begin() + e->firstFace, e->faceCount, 1);
+        for (auto e = begin; e != end; ++e)
+          std::fill_n(removedSurface.begin() + e->firstFace, e->faceCount, 1);
         source.interfaceSurfaceElementsMerged += interface ? static_cast<std::uint64_t>(end - begin) : 0;
         continue;
       }
@@ -401,8 +415,8 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   // What was read and is not drawn, said by every command that loads the mesh (info lists it too).
   for (const auto& [type, count] : source.unrenderableByType)
     source.warnings.push_back(formatInputWarning(
-        SourceLocation{source.path},
-        fmt::format("{} {} (type {}) not drawn: lancer does not draw this type", count, mshElementTypeName(type), type)));
+        SourceLocation{source.path}, fmt::format("{} {} (type {}) not drawn: lancer does not draw this type",
+                                                 count, mshElementTypeName(type), type)));
   if (source.degenerateFacesDropped)
     source.warnings.push_back(formatInputWarning(
         SourceLocation{source.path},

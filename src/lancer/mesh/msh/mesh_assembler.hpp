@@ -1,6 +1,6 @@
 // Builds a Mesh from the nodes and elements a .msh parser reads: splits second-order faces, turns
-// volume elements into their skin and the interfaces between volumes, drops degenerate faces, keeps only the nodes faces use and
-// recentres them on the bounding-box centre as float. Independent of the MSH version.
+// volume elements into their skin and the interfaces between volumes, drops degenerate faces, keeps only the
+// nodes faces use and recentres them on the bounding-box centre as float. Independent of the MSH version.
 #pragma once
 
 #include <array>
@@ -133,7 +133,7 @@ class MshMeshAssembler {
   std::int32_t outerEntity_ = 0;
   std::vector<std::pair<std::int32_t, std::int32_t>> groups_;  // (physical, entity) of volume faces
   std::vector<std::uint32_t> volumeGroups_;  // the groups of volume elements (each run of one, once)
-  std::set<std::pair<int, std::int32_t>> physicalsSeen_;       // (dimension, physical tag)
+  std::set<std::pair<int, std::int32_t>> physicalsSeen_;  // (dimension, physical tag)
   std::array<std::uint64_t, kMaxMshElementType + 1> countByType_{};
   int dimension_ = -1;
   std::int32_t physical_ = 0;

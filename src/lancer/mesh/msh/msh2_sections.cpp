@@ -186,7 +186,8 @@ void readMsh2Elements(MshReadState& state) {
         const char* at = cursor.position();
         cursor.copyRaw(record.data(), values);
         const std::int32_t* tags = record.data() + 1;
-        Msh2Element element{record[0], type, tagCount > 0 ? std::abs(tags[0]) : 0, tagCount > 1 ? tags[1] : 0, 0};
+        Msh2Element element{record[0], type, tagCount > 0 ? std::abs(tags[0]) : 0, tagCount > 1 ? tags[1] : 0,
+                            0};
         for (int k = 3; k < tagCount; ++k)
           element.partitions = std::max(element.partitions, std::abs(tags[k]));
         for (int n = 0; n < info.nodeCount; ++n)

@@ -266,7 +266,8 @@ bool readSections(MshReadState& state) {
       // $Parametrizations, $ElementNodeData, $InterpolationScheme and any unknown one.
       skipSection(cursor, name, start);
     }
-    if (meshSection) state.meshSections.emplace(std::string(name), std::string_view(start, cursor.position()));
+    if (meshSection)
+      state.meshSections.emplace(std::string(name), std::string_view(start, cursor.position()));
   }
   // No $Nodes and no $Elements is an empty mesh (gmsh writes only $Entities for a model whose
   // physical groups have no elements in the dimension meshed); render refuses it with the reason
@@ -310,8 +311,8 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64
     MshCursor cursor(bytes, name);
     if (bytes.empty()) cursor.failFile("the file is empty");
     if (!looksLikeMsh(bytes)) {
-      const std::string foreign = foreignFileMessage(bytes.first(std::min<std::size_t>(bytes.size(), 1 << 20)),
-                                                     fileBytes, name);
+      const std::string foreign =
+          foreignFileMessage(bytes.first(std::min<std::size_t>(bytes.size(), 1 << 20)), fileBytes, name);
       if (!foreign.empty()) cursor.failFile(foreign);
     }
     MshMeshAssembler assembler;

@@ -36,7 +36,8 @@ void MshReadState::addExtraGroup(int dimension, std::int32_t entity, std::int32_
     extraGroups.push_back({dimension, entity, first, {}});
     found = extraGroups.end() - 1;
   }
-  if (std::find(found->more.begin(), found->more.end(), more) == found->more.end()) found->more.push_back(more);
+  if (std::find(found->more.begin(), found->more.end(), more) == found->more.end())
+    found->more.push_back(more);
 }
 
 void MshReadState::warnAt(const char* at, const std::string& message) {

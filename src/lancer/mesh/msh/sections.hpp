@@ -17,8 +17,8 @@ namespace lancer {
 
 // What an MSH 4 element block's entity contributes to its faces.
 struct MshEntity {
-  std::int32_t physical = 0;   // first physical group, 0 if none
-  std::int32_t geometric = 0;  // the model entity's tag (the parent, for a partitioned entity)
+  std::int32_t physical = 0;                // first physical group, 0 if none
+  std::int32_t geometric = 0;               // the model entity's tag (the parent, for a partitioned entity)
   std::vector<std::int32_t> morePhysicals;  // its further physical groups (usually none)
 };
 

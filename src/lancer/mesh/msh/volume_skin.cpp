@@ -106,8 +106,23 @@ void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_
   switch (type) {
     case 4:
     // Order 3 and up: the skin through the corners, which every gmsh volume element lists first.
-    case 29: case 30: case 31: case 32: case 33: case 71: case 72: case 73: case 74: case 75:
-    case 79: case 80: case 81: case 82: case 83: case 137: case 139:
+    case 29:
+    case 30:
+    case 31:
+    case 32:
+    case 33:
+    case 71:
+    case 72:
+    case 73:
+    case 74:
+    case 75:
+    case 79:
+    case 80:
+    case 81:
+    case 82:
+    case 83:
+    case 137:
+    case 139:
       appendFaces(kTetFaces, nodes, group, faces);
       break;
     case 11:
@@ -118,8 +133,20 @@ void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_
       }
       break;
     case 5:
-    case 92: case 93: case 94: case 95: case 96: case 97: case 98:
-    case 99: case 100: case 101: case 102: case 103: case 104: case 105:
+    case 92:
+    case 93:
+    case 94:
+    case 95:
+    case 96:
+    case 97:
+    case 98:
+    case 99:
+    case 100:
+    case 101:
+    case 102:
+    case 103:
+    case 104:
+    case 105:
       appendFaces(kHexFaces, nodes, group, faces);
       break;
     case 12:
@@ -134,15 +161,39 @@ void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_
     case 6:
     case 13:
     case 18:
-    case 90: case 91: case 106: case 107: case 108: case 109: case 110:
-    case 111: case 112: case 113: case 114: case 115: case 116: case 117:
+    case 90:
+    case 91:
+    case 106:
+    case 107:
+    case 108:
+    case 109:
+    case 110:
+    case 111:
+    case 112:
+    case 113:
+    case 114:
+    case 115:
+    case 116:
+    case 117:
       appendFaces(kPrismFaces, nodes, group, faces);
       break;
     case 7:
     case 14:
     case 19:
-    case 118: case 119: case 120: case 121: case 122: case 123: case 124:
-    case 125: case 126: case 127: case 128: case 129: case 130: case 131:
+    case 118:
+    case 119:
+    case 120:
+    case 121:
+    case 122:
+    case 123:
+    case 124:
+    case 125:
+    case 126:
+    case 127:
+    case 128:
+    case 129:
+    case 130:
+    case 131:
       appendFaces(kPyramidFaces, nodes, group, faces);
       break;
     default:
@@ -153,7 +204,8 @@ void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_
 std::vector<VolumeBoundaryFace> findVolumeBoundary(std::span<const MshVolumeFace> faces,
                                                    std::span<const std::uint64_t> volumeOfGroup,
                                                    bool severalVolumes) {
-  return severalVolumes ? boundaryOf<KeyedGroupedFace>(faces, volumeOfGroup) : boundaryOf<KeyedFace>(faces, {});
+  return severalVolumes ? boundaryOf<KeyedGroupedFace>(faces, volumeOfGroup)
+                        : boundaryOf<KeyedFace>(faces, {});
 }
 
 }  // namespace lancer
