@@ -1,4 +1,4 @@
-// Issue 4: whole images rendered with the brute-force reference and with the kd-trees are
+// Whole images rendered with the brute-force reference and with the kd-trees are
 // identical, pixel for pixel: primary rays, shadow rays to two lights and mirror bounces on a
 // gmsh part, so every query the renderer makes goes through the accelerator under test.
 #include <gtest/gtest.h>

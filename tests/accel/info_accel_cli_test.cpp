@@ -1,4 +1,4 @@
-// `lancer info --accel` through the built CLI: the build statistics of issue 4 in text and JSON.
+// `lancer info --accel` through the built CLI: its build statistics in text and JSON.
 #include <gtest/gtest.h>
 
 #include <string>

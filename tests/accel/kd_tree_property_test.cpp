@@ -41,7 +41,7 @@ std::vector<BuildCase> buildCases() {
   shallow.maxDepth = 4;
   KdBuildOptions tinyLeaves = parallel;
   tinyLeaves.medianLeafSize = 1;
-  // The binned top levels (kd_tree_sah_binning.hpp) on test-sized meshes: binning down to 8
+  // The binned top levels (accel/kd/sah_binning.hpp) on test-sized meshes: binning down to 8
   // triangles, the sweep from the root, and binning on 3 threads (sweeps forked with local ids).
   KdBuildOptions binnedDeep = serial;
   binnedDeep.binnedAbove = 8;

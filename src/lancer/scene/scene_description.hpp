@@ -29,7 +29,7 @@ struct RenderSettings {
   ShadingMode shading = ShadingMode::Phong;
   Vec3 background{0, 0, 0};
   bool transparentBackground = false;  // background = "transparent": PNG with alpha
-  bool srgb = false;                   // encode output with the sRGB curve instead of the brief's linear
+  bool srgb = false;                   // encode output with the sRGB curve instead of linear
   std::string output;                  // resolved against the scene file's folder; may be empty
 };
 

@@ -1,5 +1,6 @@
-// Reads a TOML scene file (the contract of issue 3, with the optics, sampling and animation keys)
-// into a checked SceneDescription; every error points at the offending key or value as file:line:col.
+// Reads a TOML scene file (render, camera, lights, materials, meshes, optics, sampling, animation and
+// cut-view keys, as examples/*.toml show them) into a checked SceneDescription; every error points
+// at the offending key or value as file:line:col.
 #pragma once
 
 #include <string>
