@@ -4,27 +4,11 @@
 #include <cmath>
 #include <numeric>
 
+#include "lancer/mesh/disjoint_sets.hpp"
 #include "lancer/mesh/face_geometry.hpp"
 
 namespace lancer {
 namespace {
-
-// Union-find over face sides: side 2f is in front of face f (its normal's side), 2f + 1 behind it.
-class SideSets {
- public:
-  explicit SideSets(std::size_t count) : parent_(count) { std::iota(parent_.begin(), parent_.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a), b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<std::uint32_t> parent_;
-};
 
 Vec3d cornerOf(std::span<const Vec3> positions, const MeshFace& face, int c) {
   return toDouble(positions[face.vertex[c]]);
@@ -60,7 +44,8 @@ ShellRegions findShellRegions(std::span<const Vec3> positions, const std::vector
   if (!any) return result;
 
   // Around each edge, the wedge between neighbouring faces joins the sides that face into it.
-  SideSets sides(2 * faces.size());
+  // Face sides: side 2f is in front of face f (its normal's side), 2f + 1 behind it.
+  DisjointSets sides(2 * faces.size());
   std::vector<std::uint8_t> rejected(shells.shellCount(), 0);
   struct Wing {
     std::uint32_t face;
