@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "lancer/mesh/disjoint_sets.hpp"
 #include "lancer/mesh/face_geometry.hpp"
