@@ -130,6 +130,10 @@ MshElementType mshElementType(int type) {
   if (type < 1 || type > kMaxMshElementType) return {};
   const TypeEntry& entry = kTypes[type];
   MshElementType result{entry.nodes, familyDimension(entry.family), MshElementRole::kUnrenderable};
+  if (mshIsLowOrderVolume(type)) {
+    result.role = MshElementRole::kVolume;
+    return result;
+  }
   switch (type) {
     case 1:
     case 8:
@@ -150,19 +154,6 @@ MshElementType mshElementType(int type) {
     case 10:
     case 16:
       result.role = MshElementRole::kSurface;
-      break;
-    case 4:
-    case 5:
-    case 6:
-    case 7:
-    case 11:
-    case 12:
-    case 13:
-    case 14:
-    case 17:
-    case 18:
-    case 19:
-      result.role = MshElementRole::kVolume;
       break;
     default:
       // Order 3 and up: surfaces are split through their nodes (high_order.cpp), volumes give

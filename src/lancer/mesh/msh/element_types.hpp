@@ -26,6 +26,12 @@ inline constexpr int kMaxMshElementNodes = 1000;  // MSH_HEX_1000
 // The type's description; nodeCount == 0 when lancer does not know the type.
 MshElementType mshElementType(int type);
 
+// Tetrahedra, hexahedra, prisms and pyramids of first and second order (types 4-7, 11-14, 17-19):
+// the volumes whose skin keeps their edge nodes, and the bulk of every volume mesh.
+inline constexpr bool mshIsLowOrderVolume(int type) {
+  return (type >= 4 && type <= 7) || (type >= 11 && type <= 14) || (type >= 17 && type <= 19);
+}
+
 // "3-node triangle", "10-node tetrahedron", ... for `lancer info`; "type N" for rare ones.
 std::string mshElementTypeName(int type);
 

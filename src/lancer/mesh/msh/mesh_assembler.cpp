@@ -110,21 +110,9 @@ void MshMeshAssembler::addOtherElement(int type, const std::uint32_t* n) {
       secondOrderSurfaces_.push_back({mshFaceKey(n, 4), {n[0], n[1], n[2], n[3]}, first, 4});
       addSplitQuad(n, n + 4, addDerivedCentre(n, n + 4));
       return;
-    case 4:
-    case 5:
-    case 6:
-    case 7:
-    case 11:
-    case 12:
-    case 13:
-    case 14:
-    case 17:
-    case 18:
-    case 19:
-      addVolumeElement(type, n);  // first and second order: no table lookup per element
-      return;
     default:
-      if (mshSurfaceCorners(type)) {
+      // First and second order volumes, the bulk of a volume mesh, skip the high-order table lookup.
+      if (!mshIsLowOrderVolume(type) && mshSurfaceCorners(type)) {
         addHighOrderSurface(type, n);
         return;
       }
