@@ -12,17 +12,8 @@ out=tests/data/msh
 mkdir -p "$out" "$out/broken"
 rm -f "$out"/*.msh "$out"/broken/*.msh
 
-# Runs gmsh, showing its output only when it fails or reports an error.
-quiet() {
-  local log
-  log=$(mktemp)
-  if ! "$@" >"$log" 2>&1 || grep -q '^Error' "$log"; then
-    cat "$log" >&2
-    rm -f "$log"
-    return 1
-  fi
-  rm -f "$log"
-}
+# quiet: runs gmsh, showing its output only when it fails or reports an error.
+source scripts/gmsh_quiet.sh
 
 # mesh NAME GEO DIM FORMAT(msh22|msh40|msh41) ENCODING(ascii|bin) [gmsh options...]
 mesh() {

@@ -14,17 +14,8 @@ geo=tests/data/geo
 out=tests/data/reader
 rm -f "$out"/*.msh "$out"/*.stl "$out"/*.step "$out"/*.brep "$out"/*.vtk "$out"/*.pos
 
-# Runs gmsh, showing its output only when it fails or reports an error.
-quiet() {
-  local log
-  log=$(mktemp)
-  if ! "$@" >"$log" 2>&1 || grep -q '^Error' "$log"; then
-    cat "$log" >&2
-    rm -f "$log"
-    return 1
-  fi
-  rm -f "$log"
-}
+# quiet: runs gmsh, showing its output only when it fails or reports an error.
+source scripts/gmsh_quiet.sh
 
 # Physical groups: an entity in two groups, a group taking a surface reversed (tag -3 in MSH 4.1).
 for spec in "msh41 0 v41_ascii" "msh41 1 v41_bin" "msh22 0 v22_ascii" "msh22 1 v22_bin"; do
