@@ -7,6 +7,7 @@
 
 #include "lancer/accel/kd/build.hpp"
 #include "lancer/accel/kd_tree.hpp"
+#include "lancer/util/stopwatch.hpp"
 
 namespace lancer {
 
@@ -81,13 +82,13 @@ class MedianBuilder {
 
 KdTree KdTree::buildMedian(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                            const KdBuildOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   KdBuildInput input = gatherTriangles(positions, faces);
   BuildArenas arenas;
   MedianBuilder builder(input, options, arenas);
   const BuildNode* root = builder.buildRoot(input.bounds);
   KdTree tree = KdTreeAssembler::assemble(*root, std::move(input), options, "kdtree-median", 0.0);
-  tree.stats_.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  tree.stats_.buildSeconds = stopwatch.seconds();
   return tree;
 }
 

@@ -15,6 +15,7 @@
 #include "lancer/accel/kd/clip.hpp"
 #include "lancer/accel/kd/sah_binning.hpp"
 #include "lancer/accel/kd_tree.hpp"
+#include "lancer/util/stopwatch.hpp"
 
 namespace lancer {
 
@@ -426,14 +427,14 @@ class SahBuilder {
 
 KdTree KdTree::buildSah(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                         const KdBuildOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   KdBuildInput input = gatherTriangles(positions, faces);
   BuildArenas arenas;
   SahBuilder builder(input, options, arenas);
   const BuildNode* root = builder.buildRoot();
   // The layout pass is part of the build the user waits for, so it is inside the timing.
   KdTree tree = KdTreeAssembler::assemble(*root, std::move(input), options, "kdtree-sah", 0.0);
-  tree.stats_.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  tree.stats_.buildSeconds = stopwatch.seconds();
   return tree;
 }
 

@@ -18,6 +18,7 @@
 #include "lancer/mesh/msh/foreign_formats.hpp"
 #include "lancer/mesh/msh/sections.hpp"
 #include "lancer/util/input_error.hpp"
+#include "lancer/util/stopwatch.hpp"
 
 namespace lancer {
 namespace {
@@ -330,24 +331,20 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64
   throw std::logic_error("readBytes: the tracking read stopped at $ElementData");
 }
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
 Mesh readMshFromMemory(std::span<const char> bytes, const std::string& nameForErrors) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   Mesh mesh = readBytes(bytes, nameForErrors, bytes.size());
-  mesh.source.loadSeconds = secondsSince(start);
+  mesh.source.loadSeconds = stopwatch.seconds();
   return mesh;
 }
 
 Mesh readMsh(const std::string& path) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   const MappedFile file(path);
   Mesh mesh = readBytes(file.bytes(), path, file.bytes().size());
-  mesh.source.loadSeconds = secondsSince(start);
+  mesh.source.loadSeconds = stopwatch.seconds();
   return mesh;
 }
 
