@@ -8,6 +8,11 @@
 namespace lancer {
 namespace {
 
+// A field record's node or element tag: a 4-byte int in binary files, a number in text ones.
+std::uint64_t readRecordTag(MshCursor& cursor, bool binary, const char* what) {
+  return binary ? static_cast<std::uint64_t>(cursor.readRaw<std::int32_t>(what)) : cursor.readCount(what);
+}
+
 // Largest component count gmsh writes (a 3x3 tensor).
 constexpr int kMaxComponents = 9;
 
@@ -106,9 +111,7 @@ void readMshNodeData(MshReadState& state, const char* sectionStart) {
   for (std::uint64_t i = 0; i < header.count; ++i) {
     // Binary records may start with bytes that look like whitespace: only text skips to the token.
     const char* recordAt = state.binary ? cursor.position() : cursor.tokenStart();
-    const std::uint64_t tag = state.binary
-                                  ? static_cast<std::uint64_t>(cursor.readRaw<std::int32_t>("a node tag"))
-                                  : cursor.readCount("a node tag");
+    const std::uint64_t tag = readRecordTag(cursor, state.binary, "a node tag");
     const std::uint32_t index = nodes.find(tag);
     if (index == kNoVertex && dropped++ == 0) firstDropped = tag, firstDroppedAt = recordAt;
     float* out = index == kNoVertex ? nullptr : field.values.data() + index * components;
@@ -157,9 +160,7 @@ void readMshElementData(MshReadState& state, const char* sectionStart) {
   const char* firstDroppedAt = nullptr;
   for (std::uint64_t i = 0; i < header.count; ++i) {
     const char* recordAt = state.binary ? cursor.position() : cursor.tokenStart();
-    const std::uint64_t tag = state.binary
-                                  ? static_cast<std::uint64_t>(cursor.readRaw<std::int32_t>("an element tag"))
-                                  : cursor.readCount("an element tag");
+    const std::uint64_t tag = readRecordTag(cursor, state.binary, "an element tag");
     // Tag 0 is gmsh's placeholder for an element it did not save (Save View writes one for each
     // point of a model without physical points): dropped without a word, as gmsh itself reads it.
     if (tag != 0 && (tag < state.minElementTag || tag > state.maxElementTag) && dropped++ == 0)

@@ -145,10 +145,7 @@ void readMsh2Nodes(MshReadState& state) {
     for (std::uint64_t i = 0; i < count; ++i) {
       const char* at = cursor.tokenStart();
       const std::uint64_t tag = cursor.readCount("a node tag");
-      Vec3d p;
-      p.x = cursor.readDouble("the node's x coordinate");
-      p.y = cursor.readDouble("the node's y coordinate");
-      p.z = cursor.readDouble("the node's z coordinate");
+      const Vec3d p = readTextNodeCoordinates(cursor);
       checkFinite(state, p, tag, at);
       nodes.add(tag, p);
     }

@@ -195,10 +195,7 @@ void readMsh4Nodes(MshReadState& state) {
       std::vector<Vec3d>& coords = nodes.coords();
       for (std::uint64_t i = 0; i < inBlock; ++i) {
         const char* at = values.here();
-        Vec3d p;
-        p.x = cursor.readDouble("the node's x coordinate");
-        p.y = cursor.readDouble("the node's y coordinate");
-        p.z = cursor.readDouble("the node's z coordinate");
+        const Vec3d p = readTextNodeCoordinates(cursor);
         for (int k = 0; k < extra; ++k) cursor.readDouble("a parametric coordinate");
         checkFinite(state, p, tags[first + i], at);
         coords.push_back(p);
@@ -207,10 +204,7 @@ void readMsh4Nodes(MshReadState& state) {
       for (std::uint64_t i = 0; i < inBlock; ++i) {
         const char* at = values.here();
         const std::uint64_t nodeTag = cursor.readCount("a node tag");
-        Vec3d p;
-        p.x = cursor.readDouble("the node's x coordinate");
-        p.y = cursor.readDouble("the node's y coordinate");
-        p.z = cursor.readDouble("the node's z coordinate");
+        const Vec3d p = readTextNodeCoordinates(cursor);
         for (int k = 0; k < extra; ++k) cursor.readDouble("a parametric coordinate");
         checkFinite(state, p, nodeTag, at);
         nodes.add(nodeTag, p);

@@ -69,6 +69,14 @@ void readMsh4Elements(MshReadState& state);
 void finishNodes(MshReadState& state, const char* sectionStart);
 // Refuses a non-finite coordinate; `at` is where the node's record starts.
 void checkFinite(const MshReadState& state, const Vec3d& p, std::uint64_t tag, const char* at);
+// A node's x, y, z in a text $Nodes section (every version writes them the same way).
+inline Vec3d readTextNodeCoordinates(MshCursor& cursor) {
+  Vec3d p;
+  p.x = cursor.readDouble("the node's x coordinate");
+  p.y = cursor.readDouble("the node's y coordinate");
+  p.z = cursor.readDouble("the node's z coordinate");
+  return p;
+}
 // The error for an element naming a node that $Nodes does not define.
 [[noreturn]] void failMissingNode(const MshReadState& state, const char* at, std::uint64_t elementTag,
                                   int type, std::uint64_t nodeTag);
