@@ -72,7 +72,8 @@ int runAnimate(const AnimateCommandOptions& options) {
   AnimationSettings animation = prepared.description.animation.value_or(AnimationSettings{});
   if (options.frames) animation.frames = *options.frames;
   if (options.fps) animation.fps = *options.fps;
-  if (!options.orbit.empty()) animation.orbitLight = parseOrbit(options.orbit, prepared.scene.lights.size());
+  if (!options.orbit.empty())
+    animation.orbitLight = parseOrbit(options.orbit, prepared.scene.appearance.lights.size());
 
   // render.output names `lancer render`'s still image: an animation never writes over it unasked.
   const std::string& output = options.output;
@@ -162,8 +163,8 @@ int runAnimate(const AnimateCommandOptions& options) {
                  "%s: %d frames %dx%d, %zu faces, load %.3f s, build %.3f s (once), frames %.3f s "
                  "(%.3f s/frame, %.2f Mrays/s)\n",
                  output.c_str(), animation.frames, settings.width, settings.height,
-                 prepared.scene.faces.size(), prepared.loadSeconds, prepared.buildSeconds, stats.seconds,
-                 stats.seconds / animation.frames,
+                 prepared.scene.geometry.faces.size(), prepared.loadSeconds, prepared.buildSeconds,
+                 stats.seconds, stats.seconds / animation.frames,
                  stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0);
   }
   return kExitOk;

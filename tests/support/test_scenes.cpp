@@ -47,7 +47,7 @@ Scene sceneFromMeshes(const SceneDescription& description, std::vector<Mesh> mes
 
 Image renderScene(const SceneDescription& description, const Scene& scene, AccelKind accel, int threads,
                   RenderStats* stats) {
-  const Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, accel);
+  const Accelerator accelerator = Accelerator::build(scene.geometry.positions, scene.geometry.faces, accel);
   const Camera camera = makeCamera(description.camera, scene, description.render);
   RenderOptions options;
   options.threads = threads;
