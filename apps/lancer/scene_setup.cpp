@@ -147,13 +147,16 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
     settings.shading = *enumFromName<ShadingMode>(kShadingNames, overrides.shading);
     for (MeshInstance& mesh : description.meshes) mesh.shading.reset();
   }
-  Scene scene = preloaded.empty() ? buildScene(description) : buildScene(description, std::move(preloaded));
+  Scene scene = preloaded.empty() ? buildScene(description, overrides.threads)
+                                  : buildScene(description, std::move(preloaded), overrides.threads);
   if (!overrides.quiet)
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
   const double loadSeconds = load.seconds();
   const Stopwatch build;
-  Accelerator accelerator =
-      Accelerator::build(scene.geometry.positions, scene.geometry.faces, parseAccelKind(overrides.accel));
+  KdBuildOptions buildOptions;
+  buildOptions.threads = overrides.threads;  // --threads bounds the build too, not only the trace
+  Accelerator accelerator = Accelerator::build(scene.geometry.positions, scene.geometry.faces,
+                                               parseAccelKind(overrides.accel), buildOptions);
   return PreparedScene{std::move(description), std::move(scene), std::move(accelerator), loadSeconds,
                        build.seconds()};
 }

@@ -50,6 +50,11 @@ std::vector<BuildCase> buildCases() {
   KdBuildOptions binnedParallel = serial;
   binnedParallel.threads = 3;
   binnedParallel.binnedAbove = 40;
+  // Straddlers kept with their box cut at the plane instead of clipped (all of them, or the small).
+  KdBuildOptions unclipped = binnedDeep;
+  unclipped.clipAboveFraction = 2.0f;
+  KdBuildOptions bigClipped = binnedDeep;
+  bigClipped.clipAboveFraction = 0.5f;
   return {{"sah", sah(serial)},
           {"sah-2-threads", sah(parallel)},
           {"sah-deep", sah(cheapTraversal)},
@@ -57,6 +62,8 @@ std::vector<BuildCase> buildCases() {
           {"sah-binned-8", sah(binnedDeep)},
           {"sah-sweep-only", sah(sweepOnly)},
           {"sah-binned-3-threads", sah(binnedParallel)},
+          {"sah-binned-unclipped", sah(unclipped)},
+          {"sah-binned-big-clipped", sah(bigClipped)},
           {"median", median(serial)},
           {"median-leaf-1", median(tinyLeaves)}};
 }

@@ -1,7 +1,6 @@
 #include "lancer/mesh/face_shells.hpp"
 
 #include <algorithm>
-#include <map>
 #include <utility>
 
 #include "lancer/mesh/disjoint_sets.hpp"
@@ -9,30 +8,52 @@
 namespace lancer {
 namespace {
 
-// LSD radix sort by key, 11 bits a pass over the bits the keys use (twice the vertex index width):
-// std::sort of the 3 edges per face took a quarter of a million-triangle mesh's preparation.
-// Stable, so the result is as deterministic as the input.
-void sortEdgesByKey(std::vector<FaceEdge>& edges) {
-  if (edges.size() < 4096) {
-    std::sort(edges.begin(), edges.end());
-    return;
+// Every face's edges grouped by key, in key order, and in face order among equal keys: a counting
+// sort on the smaller vertex (one pass to count, one to scatter, in face order), then each
+// vertex's few edges ordered by the larger vertex. Two passes over the edges where a radix sort on
+// the 64-bit key took eight (Manifold pairs its half-edges the same way).
+std::vector<FaceEdge> sortedFaceEdges(const std::vector<MeshFace>& faces) {
+  std::uint32_t vertexCount = 0;
+  std::size_t edgeCount = 0;
+  for (const MeshFace& face : faces) {
+    for (int c = 0; c < face.cornerCount(); ++c) vertexCount = std::max(vertexCount, face.vertex[c] + 1);
+    edgeCount += static_cast<std::size_t>(face.cornerCount());
   }
-  std::uint64_t all = 0;
-  for (const FaceEdge& e : edges) all |= e.key;
-  constexpr int kBits = 11;
-  constexpr std::size_t kBuckets = std::size_t(1) << kBits;
-  std::vector<FaceEdge> buffer(edges.size());
-  std::vector<std::size_t> count(kBuckets);
-  for (int shift = 0; shift < 64 && (all >> shift) != 0; shift += kBits) {
-    // Skip a digit every key has equal (the high vertex word of small meshes).
-    if (((all >> shift) & (kBuckets - 1)) == 0) continue;
-    std::fill(count.begin(), count.end(), 0);
-    for (const FaceEdge& e : edges) ++count[(e.key >> shift) & (kBuckets - 1)];
-    std::size_t sum = 0;
-    for (std::size_t& c : count) sum += std::exchange(c, sum);
-    for (const FaceEdge& e : edges) buffer[count[(e.key >> shift) & (kBuckets - 1)]++] = e;
-    edges.swap(buffer);
+  std::vector<std::uint32_t> bucketStart(std::size_t(vertexCount) + 1, 0);
+  for (const MeshFace& face : faces) {
+    const int n = face.cornerCount();
+    for (int c = 0; c < n; ++c) ++bucketStart[std::min(face.vertex[c], face.vertex[(c + 1) % n]) + 1];
   }
+  for (std::size_t v = 0; v < vertexCount; ++v) bucketStart[v + 1] += bucketStart[v];
+  std::vector<FaceEdge> edges(edgeCount);
+  std::vector<std::uint32_t> fill(bucketStart.begin(), bucketStart.end() - 1);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const MeshFace& face = faces[f];
+    const int n = face.cornerCount();
+    for (int c = 0; c < n; ++c) {
+      const std::uint32_t a = face.vertex[c];
+      const std::uint32_t b = face.vertex[(c + 1) % n];
+      const std::uint64_t lo = std::min(a, b), hi = std::max(a, b);
+      edges[fill[lo]++] = {(lo << 32) | hi, static_cast<std::uint32_t>(f), a < b};
+    }
+  }
+  // Within a bucket: stable insertion sort by key (a vertex has a handful of edges; a fan centre
+  // with hundreds takes the library's stable sort).
+  for (std::size_t v = 0; v < vertexCount; ++v) {
+    FaceEdge* first = edges.data() + bucketStart[v];
+    FaceEdge* last = edges.data() + bucketStart[v + 1];
+    if (last - first > 32) {
+      std::stable_sort(first, last);
+      continue;
+    }
+    for (FaceEdge* i = first + 1; i < last; ++i) {
+      const FaceEdge e = *i;
+      FaceEdge* j = i;
+      for (; j > first && e.key < (j - 1)->key; --j) *j = *(j - 1);
+      *j = e;
+    }
+  }
+  return edges;
 }
 
 }  // namespace
@@ -40,18 +61,7 @@ void sortEdgesByKey(std::vector<FaceEdge>& edges) {
 FaceShells findFaceShells(const std::vector<MeshFace>& faces) {
   FaceShells result;
   const std::size_t faceCount = faces.size();
-  result.edges.reserve(faceCount * 4);
-  for (std::size_t f = 0; f < faceCount; ++f) {
-    const MeshFace& face = faces[f];
-    const int n = face.cornerCount();
-    for (int c = 0; c < n; ++c) {
-      const std::uint32_t a = face.vertex[c];
-      const std::uint32_t b = face.vertex[(c + 1) % n];
-      const std::uint64_t lo = std::min(a, b), hi = std::max(a, b);
-      result.edges.push_back({(lo << 32) | hi, static_cast<std::uint32_t>(f), a < b});
-    }
-  }
-  sortEdgesByKey(result.edges);
+  result.edges = sortedFaceEdges(faces);
 
   // Faces sharing an edge belong to one shell; an edge decides closedness and orientation.
   const std::vector<FaceEdge>& edges = result.edges;
@@ -66,18 +76,19 @@ FaceShells findFaceShells(const std::vector<MeshFace>& faces) {
       edgeMisoriented[edges[i].face] = 1;
     i = j;
   }
-  std::map<std::uint32_t, std::uint32_t> shellOfRoot;
+  constexpr std::uint32_t kUnnumbered = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> shellOfRoot(faceCount, kUnnumbered);
   result.shellOfFace.resize(faceCount);
   for (std::size_t f = 0; f < faceCount; ++f) {
-    const std::uint32_t root = sets.find(static_cast<std::uint32_t>(f));
-    auto [it, inserted] = shellOfRoot.emplace(root, static_cast<std::uint32_t>(result.closed.size()));
-    if (inserted) {
+    std::uint32_t& shell = shellOfRoot[sets.find(static_cast<std::uint32_t>(f))];
+    if (shell == kUnnumbered) {
+      shell = static_cast<std::uint32_t>(result.closed.size());
       result.closed.push_back(1);
       result.consistent.push_back(1);
     }
-    result.shellOfFace[f] = it->second;
-    if (edgeOpen[f]) result.closed[it->second] = 0;
-    if (edgeMisoriented[f]) result.consistent[it->second] = 0;
+    result.shellOfFace[f] = shell;
+    if (edgeOpen[f]) result.closed[shell] = 0;
+    if (edgeMisoriented[f]) result.consistent[shell] = 0;
   }
   return result;
 }

@@ -18,7 +18,9 @@ struct CornerNormals {
 
 // Two faces sharing a vertex are smoothed together when the angle between their normals is at most
 // creaseAngleDegrees and they have the same physical tag (Thurmer & Wuthrich 1998 angle weights).
+// On `threads` threads (0: every core); the result is the same for any number.
 CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<const MeshFace> faces,
-                                   std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees);
+                                   std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
+                                   int threads = 0);
 
 }  // namespace lancer

@@ -111,8 +111,9 @@ struct Scene {
 };
 
 // Reads every mesh of the description (errors point at the [[mesh]] entry or into the mesh file).
-Scene buildScene(const SceneDescription& description);
+// The preparation runs on `threads` threads (0: every core), with the same result for any number.
+Scene buildScene(const SceneDescription& description, int threads = 0);
 // Same, with the meshes already read: meshes[i] belongs to description.meshes[i].
-Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes);
+Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads = 0);
 
 }  // namespace lancer

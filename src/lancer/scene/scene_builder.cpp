@@ -20,6 +20,7 @@
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/scene.hpp"
 #include "lancer/util/check.hpp"
+#include "lancer/util/parallel_for.hpp"
 
 namespace lancer {
 namespace {
@@ -109,6 +110,9 @@ std::vector<std::pair<std::int32_t, std::uint32_t>> resolveGroupMaterials(const 
   return result;
 }
 
+// Items per chunk of the parallel loops over a mesh's vertices and faces.
+constexpr std::size_t kFacesPerChunk = 16384;
+
 // One mesh instance in scene space, before it joins the scene: its positions, its closed shells
 // oriented outward (the mesh's faces and tags changed in place to match), its smooth normals.
 struct PlacedMesh {
@@ -119,12 +123,13 @@ struct PlacedMesh {
 };
 
 PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTransform& transform,
-                     const Vec3d& origin) {
+                     const Vec3d& origin, int threads) {
   PlacedMesh placed;
   placed.positions.resize(mesh.positions.size());
-  for (std::size_t v = 0; v < placed.positions.size(); ++v)
+  parallelFor(placed.positions.size(), threads, kFacesPerChunk, [&](std::size_t v) {
     placed.positions[v] =
         toFloat(transform.apply(mesh.worldPosition(static_cast<std::uint32_t>(v))) - origin);
+  });
   placed.edgeMasks = mesh.faceEdgeMask;
   placed.edgeMasks.resize(mesh.faces.size(), kAllEdges);
   // A mirroring scale (odd number of negative factors) reverses the winding; keep the file's
@@ -141,31 +146,37 @@ PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTra
     std::swap(mesh.facePhysicalTag[f], mesh.volumeSides.outerPhysicalTag[f]);
     std::swap(mesh.faceEntityTag[f], mesh.volumeSides.outerEntityTag[f]);
   }
-  placed.normals =
-      computeCornerNormals(placed.positions, mesh.faces, mesh.facePhysicalTag, instance.smoothAngleDegrees);
+  placed.normals = computeCornerNormals(placed.positions, mesh.faces, mesh.facePhysicalTag,
+                                        instance.smoothAngleDegrees, threads);
   return placed;
 }
 
 // The mesh's vertices, faces and normals, renumbered after those already in the scene.
-void appendGeometry(SceneGeometry& geometry, const std::vector<MeshFace>& faces, const PlacedMesh& placed) {
+void appendGeometry(SceneGeometry& geometry, const std::vector<MeshFace>& faces, const PlacedMesh& placed,
+                    int threads) {
   const auto vertexBase = static_cast<std::uint32_t>(geometry.positions.size());
   const auto normalBase = static_cast<std::uint32_t>(geometry.cornerNormals.normals.size());
   for (const Vec3& p : placed.positions) geometry.bounds.extend(p);
   geometry.positions.insert(geometry.positions.end(), placed.positions.begin(), placed.positions.end());
   geometry.cornerNormals.normals.insert(geometry.cornerNormals.normals.end(), placed.normals.normals.begin(),
                                         placed.normals.normals.end());
-  for (std::size_t f = 0; f < faces.size(); ++f) {
+  const std::size_t faceBase = geometry.faces.size();
+  geometry.faces.resize(faceBase + faces.size());
+  geometry.faceNormals.resize(faceBase + faces.size());
+  geometry.cornerNormals.faceCorner.resize(faceBase + faces.size());
+  geometry.faceBoundsSolid.insert(geometry.faceBoundsSolid.end(), placed.orientation.faceBoundsSolid.begin(),
+                                  placed.orientation.faceBoundsSolid.end());
+  parallelFor(faces.size(), threads, kFacesPerChunk, [&](std::size_t f) {
     MeshFace face = faces[f];
     auto corners = placed.normals.faceCorner[f];
     for (int c = 0; c < face.cornerCount(); ++c) {
       face.vertex[c] += vertexBase;
       corners[c] += normalBase;
     }
-    geometry.faces.push_back(face);
-    geometry.faceNormals.push_back(faceNormal(geometry.positions, face));
-    geometry.cornerNormals.faceCorner.push_back(corners);
-    geometry.faceBoundsSolid.push_back(placed.orientation.faceBoundsSolid[f]);
-  }
+    geometry.faces[faceBase + f] = face;
+    geometry.faceNormals[faceBase + f] = faceNormal(geometry.positions, face);
+    geometry.cornerNormals.faceCorner[faceBase + f] = corners;
+  });
 }
 
 // The materials on both sides of each of the mesh's faces (the scene's from faceBase on), and their
@@ -308,14 +319,14 @@ ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const SceneGeometry& g
 
 }  // namespace
 
-Scene buildScene(const SceneDescription& description) {
+Scene buildScene(const SceneDescription& description, int threads) {
   std::vector<Mesh> meshes;
   meshes.reserve(description.meshes.size());
   for (const MeshInstance& instance : description.meshes) meshes.push_back(readInstanceMesh(instance));
-  return buildScene(description, std::move(meshes));
+  return buildScene(description, std::move(meshes), threads);
 }
 
-Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) {
+Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads) {
   Scene scene;
   SceneGeometry& geometry = scene.geometry;
   SceneAppearance& appearance = scene.appearance;
@@ -341,13 +352,13 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     Mesh& mesh = meshes[i];
     scene.warnings.insert(scene.warnings.end(), mesh.source.warnings.begin(), mesh.source.warnings.end());
     const auto groupMaterials = resolveGroupMaterials(instance, mesh);
-    const PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin);
+    const PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin, threads);
     std::optional<FieldColoring> coloring;
     if (instance.colorBy) coloring = resolveColorBy(*instance.colorBy, mesh);
 
     const auto vertexBase = static_cast<std::uint32_t>(geometry.positions.size());
     const std::size_t faceBase = geometry.faces.size();
-    appendGeometry(geometry, mesh.faces, placed);
+    appendGeometry(geometry, mesh.faces, placed, threads);
     appendAppearance(appearance, faceBase, instance, mesh, placed.orientation, groupMaterials,
                      instance.shading.value_or(description.render.shading));
     appendEdges(overlay, instance, mesh, placed.edgeMasks);

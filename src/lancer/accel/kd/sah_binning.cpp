@@ -9,19 +9,29 @@ namespace lancer {
 
 namespace {
 
-// Bins per axis. Counting costs the same for any number; more bins put the planes closer to where
-// the exact sweep would (measured on the 1M-triangle bench bracket: 256 bins leave the tree's SAH
-// cost within 1% of the all-exact build's).
+// Most bins per axis. Counting costs the same for any number; more bins put the planes closer to
+// where the exact sweep would (measured on the 1M-triangle bench bracket: 256 bins leave the tree's
+// SAH cost within 1% of the all-exact build's). Small cells take fewer (binsFor): sweeping 256 bins
+// on three axes would cost more than counting their few triangles.
 constexpr int kBins = 256;
+constexpr int kMinBins = 16;
 
+int binsFor(std::size_t refs) { return static_cast<int>(std::clamp<std::size_t>(refs / 4, kMinBins, kBins)); }
+
+// Left uninitialised: only the bins a cell uses are cleared (clearing all 256 for each of a million
+// small cells cost more than counting their triangles).
 struct AxisBins {
-  std::array<std::uint32_t, kBins> starts{};  // references whose lower bound falls in the bin
-  std::array<std::uint32_t, kBins> ends{};    // ... whose upper bound does
+  std::array<std::uint32_t, kBins> starts;  // references whose lower bound falls in the bin
+  std::array<std::uint32_t, kBins> ends;    // ... whose upper bound does
+  void clear(int bins) {
+    std::fill_n(starts.begin(), bins, 0u);
+    std::fill_n(ends.begin(), bins, 0u);
+  }
 };
 
-inline int binOf(float x, float lo, float scale) {
+inline int binOf(float x, float lo, float scale, int bins) {
   const int bin = static_cast<int>((x - lo) * scale);
-  return std::clamp(bin, 0, kBins - 1);
+  return std::clamp(bin, 0, bins - 1);
 }
 
 // A bound inside the window around the best bin boundary, for the exact sweep there.
@@ -46,6 +56,18 @@ AxisCost axisCost(const Aabb& cell, int axis, float invArea, const KdBuildOption
           options.traversalCost, options.intersectionCost};
 }
 
+// Whether a triangle crossing the plane on `axis` is worth clipping: only one whose box spans a
+// good part of the cell across the plane's normal, where cutting at the plane alone would leave a
+// loose box (a long sliver of a big CAD face). Small triangles lose little by a box cut at the plane.
+bool clipsStraddler(const Aabb& box, const Aabb& cell, int axis, float clipAboveFraction) {
+  if (clipAboveFraction <= 0.0f) return true;
+  for (const int other : {(axis + 1) % 3, (axis + 2) % 3}) {
+    const float side = cell.upper[other] - cell.lower[other];
+    if (box.upper[other] - box.lower[other] >= clipAboveFraction * side) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 BinnedSplit findBinnedSplit(std::span<const BuildRef> refs, const Aabb& cell, const KdBuildOptions& options) {
@@ -63,19 +85,21 @@ BinnedSplit findBinnedSplit(std::span<const BuildRef> refs, const Aabb& cell, co
   const float invArea = 1.0f / area;
   const float kt = options.traversalCost, ki = options.intersectionCost;
   const auto n = static_cast<std::uint32_t>(refs.size());
+  const int bins = binsFor(refs.size());
   float binLo[3], binScale[3];
   for (int axis = 0; axis < 3; ++axis) {
     const float width = used.upper[axis] - used.lower[axis];
     binLo[axis] = used.lower[axis];
-    binScale[axis] = width > 0.0f ? float(kBins) / width : 0.0f;
+    binScale[axis] = width > 0.0f ? float(bins) / width : 0.0f;
   }
-  AxisBins bins[3];
+  AxisBins counts[3];
+  for (AxisBins& axisBins : counts) axisBins.clear(bins);
   for (const BuildRef& r : refs) {
     const float lo[3] = {r.box.lower.x, r.box.lower.y, r.box.lower.z};
     const float hi[3] = {r.box.upper.x, r.box.upper.y, r.box.upper.z};
     for (int axis = 0; axis < 3; ++axis) {
-      ++bins[axis].starts[static_cast<std::size_t>(binOf(lo[axis], binLo[axis], binScale[axis]))];
-      ++bins[axis].ends[static_cast<std::size_t>(binOf(hi[axis], binLo[axis], binScale[axis]))];
+      ++counts[axis].starts[static_cast<std::size_t>(binOf(lo[axis], binLo[axis], binScale[axis], bins))];
+      ++counts[axis].ends[static_cast<std::size_t>(binOf(hi[axis], binLo[axis], binScale[axis], bins))];
     }
   }
 
@@ -105,11 +129,11 @@ BinnedSplit findBinnedSplit(std::span<const BuildRef> refs, const Aabb& cell, co
     if (binScale[axis] == 0.0f) continue;
     // Plane b lies between bins b-1 and b: references starting below it reach the left, those
     // ending at or above it the right (exact for the counts up to where in its bin a bound falls).
-    const float step = (used.upper[axis] - used.lower[axis]) / float(kBins);
+    const float step = (used.upper[axis] - used.lower[axis]) / float(bins);
     std::uint32_t nl = 0, nr = n;
-    for (int bin = 1; bin < kBins; ++bin) {
-      nl += bins[axis].starts[static_cast<std::size_t>(bin - 1)];
-      nr -= bins[axis].ends[static_cast<std::size_t>(bin - 1)];
+    for (int bin = 1; bin < bins; ++bin) {
+      nl += counts[axis].starts[static_cast<std::size_t>(bin - 1)];
+      nr -= counts[axis].ends[static_cast<std::size_t>(bin - 1)];
       const float p = used.lower[axis] + step * float(bin);
       if (!(p > lo && p < hi)) continue;
       const float cost = planeCost(p, nl, nr);
@@ -125,18 +149,18 @@ BinnedSplit findBinnedSplit(std::span<const BuildRef> refs, const Aabb& cell, co
     // that fall there exactly (few: about 2/kBins of them), as the event sweep would, starting
     // from the counts below the window. This recovers most of what binning loses in quality.
     const int axis = best.axis;
-    const int first = std::max(bestBin - 1, 0), last = std::min(bestBin, kBins - 1);
+    const int first = std::max(bestBin - 1, 0), last = std::min(bestBin, bins - 1);
     std::uint32_t nl = 0, nr = n;
     for (int bin = 0; bin < first; ++bin) {
-      nl += bins[axis].starts[static_cast<std::size_t>(bin)];
-      nr -= bins[axis].ends[static_cast<std::size_t>(bin)];
+      nl += counts[axis].starts[static_cast<std::size_t>(bin)];
+      nr -= counts[axis].ends[static_cast<std::size_t>(bin)];
     }
-    std::vector<WindowEvent> events;
-    events.reserve(4 * (std::size_t(n) / kBins + 8));
+    thread_local std::vector<WindowEvent> events;  // reused: one allocation per thread, not per cell
+    events.clear();
     for (const BuildRef& r : refs) {
       const float lo = r.box.lower[axis], hi = r.box.upper[axis];
-      const int loBin = binOf(lo, binLo[axis], binScale[axis]);
-      const int hiBin = binOf(hi, binLo[axis], binScale[axis]);
+      const int loBin = binOf(lo, binLo[axis], binScale[axis], bins);
+      const int hiBin = binOf(hi, binLo[axis], binScale[axis], bins);
       if (lo == hi) {
         if (loBin >= first && loBin <= last) events.push_back({lo, 1});
         continue;
@@ -171,7 +195,7 @@ BinnedSplit findBinnedSplit(std::span<const BuildRef> refs, const Aabb& cell, co
 
 void partitionRefs(std::span<const BuildRef> refs, std::span<const std::array<Vec3, 3>> corners,
                    const BinnedSplit& split, const Aabb& leftCell, const Aabb& rightCell,
-                   std::vector<BuildRef>& left, std::vector<BuildRef>& right) {
+                   float clipAboveFraction, std::vector<BuildRef>& left, std::vector<BuildRef>& right) {
   const int k = split.axis;
   const float p = split.pos;
   // The same classification as the exact sweep's: a bound on the plane counts as on its side.
@@ -183,12 +207,18 @@ void partitionRefs(std::span<const BuildRef> refs, std::span<const std::array<Ve
       left.push_back(r);
     } else if (lo >= p) {
       right.push_back(r);
-    } else {
+    } else if (clipsStraddler(r.box, leftCell, k, clipAboveFraction)) {
       const std::array<Vec3, 3>& c = corners[r.triangle];
       const Aabb l = clippedTriangleBounds(c, leftCell);
       if (!l.empty()) left.push_back({r.triangle, l});
       const Aabb rr = clippedTriangleBounds(c, rightCell);
       if (!rr.empty()) right.push_back({r.triangle, rr});
+    } else {
+      BuildRef l = r, rr = r;
+      l.box.upper[k] = p;
+      rr.box.lower[k] = p;
+      left.push_back(l);
+      right.push_back(rr);
     }
   }
 }

@@ -34,11 +34,12 @@ struct BinnedSplit {
 // cell at its references' bounds, by the same cost model as the exact sweep (options' constants).
 BinnedSplit findBinnedSplit(std::span<const BuildRef> refs, const Aabb& cell, const KdBuildOptions& options);
 
-// Sends each reference to the side(s) of the plane it lies on; a triangle that crosses the plane is
+// Sends each reference to the side(s) of the plane it lies on. A triangle that crosses the plane is
 // clipped to each child cell ("perfect splits") and dropped from a side it only touches at a point
-// outside the cell. Appends to `left` and `right`.
+// outside the cell, when it is big enough for that to pay (KdBuildOptions::clipAboveFraction);
+// a smaller one goes to both sides with its box cut at the plane. Appends to `left` and `right`.
 void partitionRefs(std::span<const BuildRef> refs, std::span<const std::array<Vec3, 3>> corners,
                    const BinnedSplit& split, const Aabb& leftCell, const Aabb& rightCell,
-                   std::vector<BuildRef>& left, std::vector<BuildRef>& right);
+                   float clipAboveFraction, std::vector<BuildRef>& left, std::vector<BuildRef>& right);
 
 }  // namespace lancer

@@ -202,7 +202,7 @@ class SahBuilder {
     std::vector<BuildRef> left, right;
     left.reserve(refs.size() / 2 + refs.size() / 8);
     right.reserve(refs.size() / 2 + refs.size() / 8);
-    partitionRefs(refs, input_.corners, split, leftBox, rightBox, left, right);
+    partitionRefs(refs, input_.corners, split, leftBox, rightBox, options_.clipAboveFraction, left, right);
     std::vector<BuildRef>().swap(refs);  // free before recursing
 
     BuildNode *leftNode, *rightNode;
