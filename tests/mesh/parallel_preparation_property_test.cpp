@@ -1,0 +1,120 @@
+// Scene preparation gives the same bytes on any number of threads: the face shells' edge table
+// equals a plain sort of every face's edges, and corner normals and the whole scene agree between
+// 1 and 5 threads on meshes big enough to be cut into many chunks.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "lancer/mesh/face_geometry.hpp"
+#include "lancer/mesh/face_shells.hpp"
+#include "lancer/mesh/vertex_normals.hpp"
+#include "lancer/scene/scene.hpp"
+#include "lancer/util/parallel_for.hpp"
+#include "support/accel_test_geometry.hpp"
+
+namespace lancer {
+namespace {
+
+// A UV sphere of ~100K vertices (quads, triangle fans at the poles), with two physical groups, so
+// corner normals split along the group boundary and at the poles' creases.
+struct TaggedSoup {
+  test::Soup soup;
+  std::vector<std::int32_t> tags;
+};
+
+TaggedSoup bigSphere() {
+  TaggedSoup mesh{test::sphere(300, 330), {}};
+  for (std::size_t f = 0; f < mesh.soup.faces.size(); ++f) mesh.tags.push_back(f % 7 == 0 ? 2 : 1);
+  return mesh;
+}
+
+template <typename T>
+bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+TEST(ParallelPreparation, ChunksCoverTheRangeOnceWhateverTheThreads) {
+  for (const std::size_t count : {0u, 1u, 1000u, 100000u, 123457u}) {
+    for (const int threads : {1, 2, 7}) {
+      std::vector<int> seen(count, 0);
+      parallelFor(count, threads, 1000, [&](std::size_t i) { ++seen[i]; });
+      EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }))
+          << count << " " << threads;
+    }
+  }
+}
+
+TEST(ParallelPreparation, AnExceptionInAChunkReachesTheCaller) {
+  EXPECT_THROW(parallelFor(100000, 3, 1000,
+                           [](std::size_t i) {
+                             if (i == 54321) throw std::runtime_error("x");
+                           }),
+               std::runtime_error);
+}
+
+TEST(ParallelPreparation, FaceShellEdgesEqualAStableSortOfAllEdges) {
+  const TaggedSoup mesh = bigSphere();
+  const FaceShells shells = findFaceShells(mesh.soup.faces);
+  std::vector<FaceEdge> expected;
+  for (std::size_t f = 0; f < mesh.soup.faces.size(); ++f) {
+    const MeshFace& face = mesh.soup.faces[f];
+    const int n = face.cornerCount();
+    for (int c = 0; c < n; ++c) {
+      const std::uint32_t a = face.vertex[c], b = face.vertex[(c + 1) % n];
+      expected.push_back(
+          {(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), static_cast<std::uint32_t>(f), a < b});
+    }
+  }
+  std::stable_sort(expected.begin(), expected.end());
+  ASSERT_EQ(shells.edges.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    ASSERT_EQ(shells.edges[i].key, expected[i].key) << i;
+    ASSERT_EQ(shells.edges[i].face, expected[i].face) << i;
+    ASSERT_EQ(shells.edges[i].forward, expected[i].forward) << i;
+  }
+}
+
+TEST(ParallelPreparation, CornerNormalsAreTheSameOnOneAndFiveThreads) {
+  const TaggedSoup mesh = bigSphere();
+  ASSERT_GT(mesh.soup.positions.size(), 60000u);  // several chunks of the parallel loops
+  const CornerNormals one = computeCornerNormals(mesh.soup.positions, mesh.soup.faces, mesh.tags, 30.0f, 1);
+  const CornerNormals five = computeCornerNormals(mesh.soup.positions, mesh.soup.faces, mesh.tags, 30.0f, 5);
+  EXPECT_TRUE(sameBytes(one.normals, five.normals));
+  EXPECT_TRUE(sameBytes(one.faceCorner, five.faceCorner));
+  // The group boundary and the poles split some vertices: more normals than vertices.
+  EXPECT_GT(one.normals.size(), mesh.soup.positions.size());
+  // Every corner points at its own vertex's normal (chunks' indices joined right): on a fine
+  // sphere that is nearly the face's normal, and a normal of another chunk's vertex would not be.
+  std::size_t far = 0;
+  for (std::size_t f = 0; f < mesh.soup.faces.size(); ++f) {
+    const MeshFace& face = mesh.soup.faces[f];
+    const Vec3 n = faceNormal(mesh.soup.positions, face);
+    for (int c = 0; c < face.cornerCount(); ++c) far += dot(n, one.normals[one.faceCorner[f][c]]) < 0.9f;
+  }
+  EXPECT_EQ(far, 0u);
+}
+
+TEST(ParallelPreparation, BuiltScenesAreTheSameOnOneAndFiveThreads) {
+  const TaggedSoup sphere = bigSphere();
+  Mesh mesh;
+  for (const Vec3& p : sphere.soup.positions) mesh.positions.push_back(p);
+  mesh.faces = sphere.soup.faces;
+  mesh.facePhysicalTag = sphere.tags;
+  mesh.faceEntityTag.assign(mesh.faces.size(), 1);
+  SceneDescription description;
+  description.materials.push_back(Material{});
+  description.meshes.push_back(MeshInstance{});
+  const Scene one = buildScene(description, {mesh}, 1);
+  const Scene five = buildScene(description, {mesh}, 5);
+  EXPECT_TRUE(sameBytes(one.geometry.positions, five.geometry.positions));
+  EXPECT_TRUE(sameBytes(one.geometry.faces, five.geometry.faces));
+  EXPECT_TRUE(sameBytes(one.geometry.faceNormals, five.geometry.faceNormals));
+  EXPECT_TRUE(sameBytes(one.geometry.cornerNormals.normals, five.geometry.cornerNormals.normals));
+  EXPECT_TRUE(sameBytes(one.geometry.cornerNormals.faceCorner, five.geometry.cornerNormals.faceCorner));
+  EXPECT_TRUE(sameBytes(one.geometry.faceBoundsSolid, five.geometry.faceBoundsSolid));
+  EXPECT_TRUE(sameBytes(one.appearance.faceMaterial, five.appearance.faceMaterial));
+}
+
+}  // namespace
+}  // namespace lancer
