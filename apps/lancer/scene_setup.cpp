@@ -19,6 +19,7 @@
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/render_overrides.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "lancer/util/memory_budget.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -121,32 +122,20 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
     description = loadScene(input);
     if (up) applyUpAxis(description.camera, *up);
   }
-  RenderSettings& settings = description.render;
-  if (overrides.width) settings.width = *overrides.width;
-  if (overrides.height) settings.height = *overrides.height;
-  if (overrides.maxDepth) settings.maxDepth = *overrides.maxDepth;
-  if (overrides.srgb) settings.srgb = true;
+  RenderOverrides applied;
+  applied.width = overrides.width;
+  applied.height = overrides.height;
+  applied.samples = overrides.samples;
+  applied.maxDepth = overrides.maxDepth;
+  if (overrides.srgb) applied.srgb = true;
   if (!overrides.sampler.empty())
-    settings.sampler = *enumFromName<SamplerKind>(kSamplerNames, overrides.sampler);
-  if (overrides.samples) settings.samples = *overrides.samples;
-  // The quick look's fill sits at the automatic camera, whose distance depends on the image's aspect.
-  if (!preloaded.empty() && (overrides.width || overrides.height))
-    placeQuickLookLights(description, preloaded.front());
-  const int root = static_cast<int>(std::lround(std::sqrt(settings.samples)));
-  if (settings.sampler != SamplerKind::Adaptive && root * root != settings.samples)
-    throw InputError(
-        SourceLocation{"--samples"},
-        fmt::format("{} samples cannot form an n x n grid: use a perfect square (1, 4, 9, 16, ...)",
-                    settings.samples));
-  requireImageMemory(settings, overrides.threads, imageBuffer ? imageBuffer(settings) : ImageBuffer::Whole,
-                     input);
-  if (overrides.edges)
-    for (MeshInstance& mesh : description.meshes)
-      if (!mesh.edges) mesh.edges = EdgeSettings{};
-  if (!overrides.shading.empty()) {
-    settings.shading = *enumFromName<ShadingMode>(kShadingNames, overrides.shading);
-    for (MeshInstance& mesh : description.meshes) mesh.shading.reset();
-  }
+    applied.sampler = enumFromName<SamplerKind>(kSamplerNames, overrides.sampler);
+  if (!overrides.shading.empty())
+    applied.shading = enumFromName<ShadingMode>(kShadingNames, overrides.shading);
+  applied.edges = overrides.edges;
+  applyRenderOverrides(description, applied, preloaded.empty() ? nullptr : &preloaded.front());
+  requireImageMemory(description.render, overrides.threads,
+                     imageBuffer ? imageBuffer(description.render) : ImageBuffer::Whole, input);
   Scene scene = preloaded.empty() ? buildScene(description) : buildScene(description, std::move(preloaded));
   if (!overrides.quiet)
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
