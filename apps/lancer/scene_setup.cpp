@@ -17,6 +17,7 @@
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/render/renderer.hpp"
+#include "lancer/scene/gmsh_view.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/render_overrides.hpp"
@@ -98,6 +99,11 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
   command.add_option("--up", overrides.up,
                      "Up axis of the automatic camera: x, y, z, -x, -y or -z (a bare mesh: guessed; a scene: "
                      "y)");
+  command
+      .add_option("--gmsh-view", overrides.gmshView,
+                  "The view set up in gmsh: its options file (File > Save Model Options; default: the mesh's "
+                  "MESH.msh.opt)")
+      ->expected(0, 1);
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
 }
 
@@ -121,6 +127,12 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
   } else {
     description = loadScene(input);
     if (up) applyUpAxis(description.camera, *up);
+  }
+  if (overrides.gmshView) {
+    // gmsh reads part.msh.opt beside part.msh whenever it opens it: the same file by default.
+    std::string path = *overrides.gmshView;
+    if (path.empty() && !description.meshes.empty()) path = description.meshes.front().file + ".opt";
+    description.camera.gmshView = readGmshView(path);
   }
   RenderOverrides applied;
   applied.width = overrides.width;

@@ -89,14 +89,23 @@ def from_gmsh(dim=2, name=None):
     return _lancer._mesh_from_elements(points, blocks, group_names, name or f"gmsh:{gmsh.model.getCurrent()}", fields)
 
 
+# The General.* options that make gmsh's view (lancer/scene/gmsh_view.hpp reads the same ones).
+_VIEW_OPTIONS = ["Trackball", "TrackballQuaternion0", "TrackballQuaternion1", "TrackballQuaternion2",
+                 "TrackballQuaternion3", "RotationX", "RotationY", "RotationZ", "TranslationX", "TranslationY",
+                 "TranslationZ", "ScaleX", "ScaleY", "ScaleZ", "Orthographic", "ClipFactor",
+                 "DisplayBorderFactor", "GraphicsWidth", "GraphicsHeight", "MenuWidth", "ShowModuleMenu",
+                 "DetachedMenu"]
+
+
 def camera_from_gmsh():
-    """The camera of gmsh's current view (its General.* options): see lancer/_gmsh_view.py."""
-    from ._gmsh_view import camera_from_gmsh_options
-
+    """The camera of gmsh's current view, from the live General.* options (what the GUI shows, or
+    what a script set): rotation, translation, scale and projection, orthographic by default as in
+    gmsh. The model is framed by its bounding box when rendered, as gmsh frames it."""
     gmsh = _gmsh()
-    return camera_from_gmsh_options(gmsh.option.getNumber, _model_bounds(gmsh))
-
-
-def _model_bounds(gmsh):
-    xmin, ymin, zmin, xmax, ymax, zmax = gmsh.model.getBoundingBox(-1, -1)
-    return (xmin, ymin, zmin), (xmax, ymax, zmax)
+    options = {}
+    for name in _VIEW_OPTIONS:
+        try:
+            options[name] = gmsh.option.getNumber("General." + name)
+        except Exception:  # an option this gmsh does not have: lancer uses gmsh 4.8's default
+            pass
+    return _lancer._camera_from_gmsh_options(options)

@@ -6,6 +6,7 @@
 
 #include "bindings.hpp"
 #include "lancer/image/image_io.hpp"
+#include "lancer/image/pixel_encoding.hpp"
 
 namespace lancer::python {
 namespace {
@@ -45,8 +46,24 @@ void writeArray(const std::string& path, const py::array& array, bool srgb) {
 
 }  // namespace
 
+// Any PNG as (H, W, 4) uint8 RGBA, rows top to bottom (libpng through the library's reader).
+py::array_t<std::uint8_t> readPngArray(const std::string& path) {
+  Image image;
+  {
+    const py::gil_scoped_release release;
+    image = readPng(path);
+  }
+  py::array_t<std::uint8_t> array(
+      {static_cast<py::ssize_t>(image.height()), static_cast<py::ssize_t>(image.width()), py::ssize_t{4}});
+  std::uint8_t* out = array.mutable_data();
+  for (int y = 0; y < image.height(); ++y)
+    encodeRow8(image.row(y), TransferCurve::Linear, 4, out + static_cast<std::size_t>(y) * image.width() * 4);
+  return array;
+}
+
 void bindImage(py::module_& module) {
   module.def("_write_image", &writeArray, py::arg("path"), py::arg("array"), py::arg("srgb"));
+  module.def("read_png", &readPngArray, py::arg("path"), "A PNG file as an (H, W, 4) uint8 RGBA array");
 }
 
 }  // namespace lancer::python

@@ -4,8 +4,11 @@
 
 #include <fmt/format.h>
 
+#include <map>
 #include "bindings.hpp"
+
 #include "lancer/mesh/nothing_to_draw.hpp"
+#include "lancer/scene/gmsh_view.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/scene_loader.hpp"
@@ -54,6 +57,7 @@ CameraSettings makeCameraSettings(const std::optional<Triple>& position, const s
 }
 
 std::string describeCamera(const CameraSettings& camera) {
+  if (camera.gmshView) return fmt::format("lancer.Camera.from_gmsh_file('{}')", camera.gmshView->source);
   auto vec = [](const std::optional<Vec3d>& v) {
     return v ? fmt::format("({:g}, {:g}, {:g})", v->x, v->y, v->z) : std::string("None");
   };
@@ -100,7 +104,31 @@ void bindScene(py::module_& module) {
                                return std::string(kProjectionNames[static_cast<int>(c.projection)]);
                              })
       .def_property_readonly("view_height", [](const CameraSettings& c) { return c.viewHeight; })
+      .def_property_readonly(
+          "gmsh_view", [](const CameraSettings& c) { return c.gmshView.has_value(); },
+          "True for a camera that reproduces a gmsh view (from_gmsh, from_gmsh_file)")
+      .def_static(
+          "from_gmsh_file",
+          [](const std::string& path) {
+            CameraSettings camera;
+            camera.gmshView = readGmshView(path);
+            return camera;
+          },
+          py::arg("path"), "The view of a gmsh options file (File > Save Model Options writes part.msh.opt)")
       .def("__repr__", &describeCamera);
+  module.def(
+      "_camera_from_gmsh_options",
+      [](const std::map<std::string, double>& options) {
+        CameraSettings camera;
+        camera.gmshView = gmshViewFromOptions(
+            [&](const std::string& name) -> std::optional<double> {
+              const auto found = options.find(name);
+              return found == options.end() ? std::nullopt : std::optional<double>(found->second);
+            },
+            "gmsh");
+        return camera;
+      },
+      py::arg("options"));
 
   py::class_<PythonScene>(module, "Scene", "A scene: a scene file, or the quick look of a mesh")
       .def_static(

@@ -39,10 +39,11 @@ Vec3d orbitCenter(const AnimationSettings& animation, const Scene& scene) {
   return scene.origin + toDouble(scene.bounds.empty() ? Vec3{} : scene.bounds.center());
 }
 
-CameraSettings orbitCamera(const CameraSettings& camera, const AnimationSettings& animation,
+CameraSettings orbitCamera(const CameraSettings& givenCamera, const AnimationSettings& animation,
                            const Scene& scene, int imageWidth, int imageHeight, int frame) {
   const Aabbd worldBounds{scene.origin + toDouble(scene.bounds.lower),
                           scene.origin + toDouble(scene.bounds.upper)};
+  const CameraSettings camera = resolveGmshView(givenCamera, worldBounds);
   CameraSettings result = camera;
   const Vec3d sceneCentre = worldBounds.empty() ? Vec3d{} : worldBounds.center();
   const Vec3d position = camera.position.value_or(
