@@ -76,6 +76,9 @@ def from_gmsh(dim=2, name=None):
         for element_type, nodes in zip(types, element_nodes):
             indices = tag_to_index[np.asarray(nodes, dtype=np.int64)]
             blocks.append((int(element_type), entity_dim, physical, entity, indices))
+    if not blocks and dim == 2 and any(d == 3 for d, _ in gmsh.model.getPhysicalGroups()):
+        raise ValueError("the gmsh model's physical groups are volumes: use from_gmsh(dim=3) after "
+                         "gmsh.model.mesh.generate(3), or add physical surfaces")
     if not blocks:
         raise ValueError(f"the gmsh model '{gmsh.model.getCurrent()}' has no {'surface or volume' if dim == 3 else 'surface'} "
                          f"elements{' in its physical groups' if gmsh.model.getPhysicalGroups() else ''}: call "

@@ -21,12 +21,15 @@ Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBloc
   for (std::size_t i = 0; i < points.size(); ++i) tags[i] = i + 1;
   assembler.nodes.coords().assign(points.begin(), points.end());
   std::size_t faceEstimate = 0;
-  for (const ElementBlock& block : blocks)
-    if (block.dimension == 2)
-      faceEstimate += block.nodes.size() / static_cast<std::size_t>(elementNodeCount(block.type));
+  for (const ElementBlock& block : blocks) {
+    const int nodeCount = elementNodeCount(block.type);
+    if (block.dimension == 2 && nodeCount > 0)
+      faceEstimate += block.nodes.size() / static_cast<std::size_t>(nodeCount);
+  }
   assembler.reserveFaces(faceEstimate);
   for (const ElementBlock& block : blocks) {
     const auto nodeCount = static_cast<std::size_t>(elementNodeCount(block.type));
+    if (nodeCount == 0) continue;  // the caller checked the types; an unknown one has no nodes to read
     assembler.setGroup(block.dimension, block.physical, block.entity);
     for (std::size_t at = 0; at + nodeCount <= block.nodes.size(); at += nodeCount)
       assembler.addElement(block.type, block.nodes.data() + at);
