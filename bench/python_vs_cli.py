@@ -1,11 +1,12 @@
 """Python against the CLI on the same ~1M-triangle mesh (bench/python_vs_cli.sh runs it):
   1. conversion: lancer.Mesh(points, faces, groups) from numpy arrays against lancer.read_msh of
-     the .msh file (MSH 4.1 binary) the arrays came from;
-  2. rendering: lancer.render(mesh) (scene build, kd-tree, trace, numpy image) against `lancer
-     render MESH -o x.png` (the whole process: load, build, trace, PNG).
-Each figure is the best of RUNS runs; the ratios are what to read on a shared machine."""
+     the .msh files the arrays came from (MSH 4.1 binary, and ASCII when given);
+  2. rendering: read_msh + lancer.render + Image.save against `lancer render MESH -o x.png` (the
+     whole process: load, kd-tree build, trace, PNG), runs interleaved, and the trace alone.
+Each figure is the best of RUNS runs; on a shared machine read the ratios."""
 
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -13,34 +14,47 @@ import time
 
 import lancer
 
-path, cli = sys.argv[1], sys.argv[2]
-runs = int(os.environ.get("RUNS", "3"))
-size = dict(width=800, height=600)
+binary, cli = sys.argv[1], sys.argv[2]
+ascii_path = sys.argv[3] if len(sys.argv) > 3 else None
+runs = int(os.environ.get("RUNS", "5"))
+width, height = 800, 600
 
 
 def best(function):
     times = []
     for _ in range(runs):
         start = time.perf_counter()
-        result = function()
+        function()
         times.append(time.perf_counter() - start)
-    return min(times), result
+    return min(times)
 
 
-read_seconds, mesh = best(lambda: lancer.read_msh(path))
-points, faces, groups = mesh.points, mesh.faces, mesh.groups
-convert_seconds, _ = best(lambda: lancer.Mesh(points, faces, groups, mesh.group_names))
+mesh = lancer.read_msh(binary)
+points, faces, groups, names = mesh.points, mesh.faces, mesh.groups, mesh.group_names
 print(f"mesh: {len(faces)} faces, {len(points)} points")
-print(f"read_msh (file)         {read_seconds:8.3f} s")
-print(f"Mesh(points, faces, ..) {convert_seconds:8.3f} s   ({convert_seconds / read_seconds:.2f} of the reader)")
+convert = best(lambda: lancer.Mesh(points, faces, groups, names))
+read_binary = best(lambda: lancer.read_msh(binary))
+print(f"Mesh(points, faces, groups) {convert:7.3f} s")
+print(f"read_msh, MSH 4.1 binary    {read_binary:7.3f} s   arrays / reader: {convert / read_binary:.2f}")
+if ascii_path:
+    read_ascii = best(lambda: lancer.read_msh(ascii_path))
+    print(f"read_msh, MSH 4.1 ASCII     {read_ascii:7.3f} s   arrays / reader: {convert / read_ascii:.2f}")
 
-render_seconds, _ = best(lambda: lancer.render(mesh, **size))
 with tempfile.TemporaryDirectory() as folder:
     out = os.path.join(folder, "x.png")
-    command = [cli, "render", path, "-o", out, "--width", str(size["width"]), "--height", str(size["height"]), "--quiet"]
-    cli_seconds, _ = best(lambda: subprocess.run(command, check=True))
-    load_and_render, _ = best(lambda: lancer.render(lancer.read_msh(path), **size).save(out))
-print(f"lancer.render(mesh)            {render_seconds:8.3f} s (mesh already read)")
-print(f"read_msh + render + save .png  {load_and_render:8.3f} s")
-print(f"lancer render MESH -o x.png    {cli_seconds:8.3f} s (whole process)")
-print(f"Python file-to-PNG / CLI: {load_and_render / cli_seconds:.2f}")
+    command = [cli, "render", binary, "-o", out, "--width", str(width), "--height", str(height)]
+    python_total, cli_total, python_trace, cli_trace = [], [], [], []
+    for _ in range(runs):  # interleaved, so that both see the same machine load
+        start = time.perf_counter()
+        stderr = subprocess.run(command, check=True, capture_output=True, text=True).stderr
+        cli_total.append(time.perf_counter() - start)
+        cli_trace.append(float(re.search(r"trace ([0-9.]+) s", stderr).group(1)))
+        start = time.perf_counter()
+        image = lancer.render(lancer.read_msh(binary), width=width, height=height)
+        image.save(out)
+        python_total.append(time.perf_counter() - start)
+        python_trace.append(image.stats["seconds"])
+print(f"file to PNG: Python {min(python_total):6.3f} s, CLI {min(cli_total):6.3f} s (whole process)   "
+      f"Python / CLI: {min(python_total) / min(cli_total):.2f}")
+print(f"trace only:  Python {min(python_trace):6.3f} s, CLI {min(cli_trace):6.3f} s   "
+      f"Python / CLI: {min(python_trace) / min(cli_trace):.2f}")

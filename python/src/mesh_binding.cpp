@@ -11,6 +11,7 @@
 
 #include "bindings.hpp"
 #include "lancer/mesh/mesh_from_elements.hpp"
+#include "lancer/mesh/msh/huge_pages.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 
 namespace lancer::python {
@@ -111,6 +112,7 @@ std::shared_ptr<Mesh> meshFromArrays(const py::array& pointsIn, const py::array&
   // Runs of faces of one type and group become element blocks; corners go to one index buffer.
   std::vector<std::uint32_t> nodes;
   nodes.reserve(static_cast<std::size_t>(faceCount) * static_cast<std::size_t>(corners));
+  adviseHugePages(nodes);
   struct Run {
     int type;
     std::int32_t physical, entity;
