@@ -7,7 +7,7 @@ import subprocess
 
 import pytest
 
-SOURCE_DIR = pathlib.Path(os.environ.get("LANCER_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
+SOURCE_DIR = pathlib.Path(os.environ.get("LANCER_SOURCE_DIR", pathlib.Path(__file__).parents[2])).resolve()
 CLI = os.environ.get("LANCER_CLI", str(SOURCE_DIR / "build" / "lancer"))
 
 
