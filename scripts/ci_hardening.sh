@@ -7,6 +7,8 @@
 #   5. clang-format on the sources: every .cpp and .hpp as .clang-format has it (FORMAT_STRICT=0 makes
 #      a difference a warning, for a local run).
 # Installs what is missing with apt-get, like scripts/setup.sh. Build folders: build-hardening-*.
+# The Python module is left out of these builds (-DLANCER_PYTHON=OFF): an extension built with ASan,
+# TSan or libFuzzer cannot be loaded into the uninstrumented /usr/bin/python3; scripts/test.sh tests it.
 # Skip steps with SKIP="asan tsan fuzz tidy format" (any subset), e.g. for a quick local run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -46,7 +48,7 @@ export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}
 if ! skipped asan; then
   begin "ASan + UBSan build and the whole test suite"
   cmake -S . -B build-hardening-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLANCER_SANITIZE=ON \
-        -DLANCER_BUILD_BENCH=OFF >/dev/null
+        -DLANCER_BUILD_BENCH=OFF -DLANCER_PYTHON=OFF >/dev/null
   cmake --build build-hardening-asan -j"$jobs"
   ctest --test-dir build-hardening-asan --output-on-failure -j"$jobs"
   end "ASan + UBSan"
@@ -55,7 +57,7 @@ fi
 if ! skipped tsan; then
   begin "ThreadSanitizer build and the parallel renderer / tile tests"
   cmake -S . -B build-hardening-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLANCER_TSAN=ON \
-        -DLANCER_BUILD_BENCH=OFF >/dev/null
+        -DLANCER_BUILD_BENCH=OFF -DLANCER_PYTHON=OFF >/dev/null
   cmake --build build-hardening-tsan -j"$jobs" --target render_analytic_test sampler_test image_test
   # The tests that run the tiled renderer with several threads or paste tiles from threads.
   ctest --test-dir build-hardening-tsan --output-on-failure -j"$jobs" \
@@ -66,7 +68,7 @@ fi
 if ! skipped fuzz; then
   begin "libFuzzer targets, ${FUZZ_SECONDS} s each on the committed corpus"
   CXX=clang++ cmake -S . -B build-hardening-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DLANCER_FUZZ=ON \
-        -DLANCER_BUILD_TESTS=OFF -DLANCER_BUILD_BENCH=OFF >/dev/null
+        -DLANCER_BUILD_TESTS=OFF -DLANCER_BUILD_BENCH=OFF -DLANCER_PYTHON=OFF >/dev/null
   cmake --build build-hardening-fuzz -j"$jobs" --target fuzzers
   # Scratch in memory where possible: the image writer fsyncs every file it writes.
   work=$(mktemp -d -p /dev/shm 2>/dev/null || mktemp -d)
@@ -94,7 +96,7 @@ if ! skipped tidy; then
   begin "clang-tidy on src/ (checks in .clang-tidy)"
   if [ ! -f build-hardening-fuzz/compile_commands.json ]; then
     CXX=clang++ cmake -S . -B build-hardening-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DLANCER_FUZZ=ON \
-          -DLANCER_BUILD_TESTS=OFF -DLANCER_BUILD_BENCH=OFF >/dev/null
+          -DLANCER_BUILD_TESTS=OFF -DLANCER_BUILD_BENCH=OFF -DLANCER_PYTHON=OFF >/dev/null
   fi
   # clang's compile database, so that every flag is one clang-tidy understands.
   mapfile -t sources < <(git ls-files 'src/*.cpp')

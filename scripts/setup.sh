@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Installs the Debian packages lancer needs (only those missing), then configures and builds it
-# in build/ (Release, x86-64-v3). Pass extra CMake options after the script name, for example
-#   scripts/setup.sh -DLANCER_PORTABLE=ON
+# in build/ (Release, x86-64-v3), the Python module included (build/python/lancer, for Debian's
+# /usr/bin/python3: see python/CMakeLists.txt). Pass extra CMake options after the script name, e.g.
+#   scripts/setup.sh -DLANCER_PORTABLE=ON        scripts/setup.sh -DLANCER_PYTHON=OFF
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(g++ cmake ninja-build pkg-config libfmt-dev libpng-dev libgif-dev libtomlplusplus-dev
-          libcli11-dev libgtest-dev libbenchmark-dev)
+          libcli11-dev libgtest-dev libbenchmark-dev
+          python3-dev pybind11-dev python3-numpy python3-pytest python3-gmsh)
 missing=()
 for package in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then

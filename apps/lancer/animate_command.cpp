@@ -2,18 +2,12 @@
 // accelerator build serves every frame. Output: an animated GIF, an animated PNG, or numbered frames.
 #include <fmt/format.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <optional>
 
 #include "commands.hpp"
-#include "frame_sequence.hpp"
-#include "lancer/image/apng_writer.hpp"
-#include "lancer/image/atomic_file.hpp"
-#include "lancer/image/gif_writer.hpp"
-#include "lancer/image/image_io.hpp"
+#include "lancer/image/animation_writer.hpp"
 #include "lancer/render/animation.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "scene_setup.hpp"
@@ -33,39 +27,6 @@ struct AnimateCommandOptions {
   SceneOverrides overrides;
 };
 
-int parseOrbit(const std::string& orbit, std::size_t lightCount) {
-  if (orbit == "camera") return -1;
-  // "light:K" with K plain decimal digits, as the scene file's animation.orbit accepts.
-  const std::string digits = orbit.rfind("light:", 0) == 0 ? orbit.substr(6) : std::string();
-  const bool number = !digits.empty() && digits.size() <= 9 &&
-                      std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
-  if (number && static_cast<std::size_t>(std::stoi(digits)) < lightCount) return std::stoi(digits);
-  if (lightCount == 0)
-    throw InputError(
-        SourceLocation{"--orbit"},
-        fmt::format("'{}' is not an orbit here: the scene has no [[light]]; use 'camera'", orbit));
-  throw InputError(
-      SourceLocation{"--orbit"},
-      fmt::format("'{}' is not an orbit: use 'camera' or 'light:K' with K from 0 to {} (the scene has "
-                  "{} light{})",
-                  orbit, lightCount - 1, lightCount, lightCount == 1 ? "" : "s"));
-}
-
-// A global palette needs every frame before the first can be written, so the GIF writer keeps them
-// all (3 bytes per pixel). Refused up front when that would take more than half the machine's memory.
-void checkGlobalPaletteMemory(int frames, int width, int height) {
-  const double bytes = 3.0 * frames * width * height;
-  const double memory =
-      static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
-  if (memory > 0 && bytes > 0.5 * memory)
-    throw InputError(
-        SourceLocation{"--palette"},
-        fmt::format("a global GIF palette keeps every frame until the end: {} frames of {}x{} need "
-                    "{:.1f} GiB, more than half of this machine's {:.1f} GiB; use --palette per-frame "
-                    "(frames are then written as they come), fewer frames or a smaller size",
-                    frames, width, height, bytes / (1 << 30), memory / (1 << 30)));
-}
-
 int runAnimate(const AnimateCommandOptions& options) {
   PreparedScene prepared = prepareScene(options.input, options.overrides);
   const RenderSettings& settings = prepared.description.render;
@@ -81,54 +42,17 @@ int runAnimate(const AnimateCommandOptions& options) {
     throw InputError(
         SourceLocation{options.input},
         "no output: give -o FILE.gif, -o FILE.png (animated PNG) or -o frame_%04d.png (numbered frames)");
-  const std::optional<FramePattern> pattern = parseFramePattern(output);
-  const ImageWriteOptions stillOptions = imageWriteOptions(settings);
-  std::optional<GifWriter> gif;
-  std::optional<ApngWriter> apng;
-  StagedFrames frames;
-  const ImageFormat format = imageFormatFromPath(pattern ? pattern->name(0) : output);
-  const bool animatedGif = !pattern && format == ImageFormat::Gif;
-  if (!animatedGif && !options.dither.empty())
-    throw InputError(SourceLocation{"--dither"}, "--dither applies to an animated .gif only");
-  if (!animatedGif && !options.palette.empty())
-    throw InputError(SourceLocation{"--palette"}, "--palette applies to an animated .gif only");
-  if (pattern && options.loop)
-    throw InputError(SourceLocation{"--loop"},
-                     "--loop applies to an animated .gif or .png, not to numbered frames");
-  const int loop = options.loop.value_or(kGifLoopForever);
-  if (pattern) {
-    AtomicFileWriter probe(pattern->name(0));  // a bad folder fails now, not after the first frame
-  } else if (format == ImageFormat::Gif) {
-    GifOptions gifOptions;
-    gifOptions.fps = animation.fps;
-    gifOptions.loopCount = loop;
-    gifOptions.curve = stillOptions.curve;
-    gifOptions.palette = options.palette == "per-frame" ? GifPalette::PerFrame : GifPalette::Global;
-    gifOptions.dither =
-        options.dither == "none"
-            ? Dither::None
-            : (options.dither == "floyd-steinberg" ? Dither::FloydSteinberg : Dither::Ordered);
-    if (gifOptions.palette == GifPalette::Global)
-      checkGlobalPaletteMemory(animation.frames, settings.width, settings.height);
-    gif.emplace(output, settings.width, settings.height, gifOptions);  // fails now on a bad folder
-    if (!options.overrides.quiet && std::abs(gifActualFrameRate(animation.fps) - animation.fps) > 1e-9)
-      std::fprintf(stderr,
-                   "lancer: GIF delays are whole 1/100 s: %g fps plays at %.4g fps (a delay of %d/100 s)\n",
-                   animation.fps, gifActualFrameRate(animation.fps), gifFrameDelay(animation.fps));
-  } else if (format == ImageFormat::Png) {
-    ApngOptions apngOptions;
-    apngOptions.fps = animation.fps;
-    // --loop counts repeats after the first showing (GIF's meaning); APNG counts plays.
-    apngOptions.loopCount = loop == kGifLoopForever ? 0 : (loop == kGifPlayOnce ? 1 : loop + 1);
-    apngOptions.curve = stillOptions.curve;
-    apngOptions.alpha = settings.transparentBackground;
-    apng.emplace(output, settings.width, settings.height, animation.frames, apngOptions);
-  } else {
-    throw InputError(
-        SourceLocation{output},
-        "an animation is written as .gif, as an animated .png, or as numbered frames with %04d in the "
-        "name (frame_%04d.png, .bmp or .ppm)");
-  }
+  AnimationOutputOptions outputOptions;
+  outputOptions.frames = animation.frames;
+  outputOptions.fps = animation.fps;
+  outputOptions.loop = options.loop;
+  outputOptions.dither = options.dither;
+  outputOptions.palette = options.palette;
+  outputOptions.still = imageWriteOptions(settings);
+  outputOptions.transparentBackground = settings.transparentBackground;
+  AnimationWriter writer(output, settings.width, settings.height, outputOptions);
+  if (!options.overrides.quiet && !writer.frameRateNote().empty())
+    std::fprintf(stderr, "%s\n", writer.frameRateNote().c_str());
 
   const RenderOptions renderOptions = commandRenderOptions(options.overrides);
   const bool progress = showProgress(options.overrides);
@@ -142,22 +66,12 @@ int runAnimate(const AnimateCommandOptions& options) {
   };
   const AnimationStats stats = renderAnimation(
       prepared.scene, prepared.accelerator, prepared.description, animation, renderOptions,
-      [&](int frame, const Image& image) {
-        if (gif) {
-          gif->addFrame(image);
-        } else if (apng) {
-          apng->addFrame(image);
-        } else {
-          frames.write(pattern->name(frame), image, stillOptions);
-        }
-      },
+      [&](int frame, const Image& image) { writer.addFrame(frame, image); },
       progress ? std::function<void(const AnimationProgress&)>(onProgress) : nullptr);
   if (progress) std::fputc('\n', stderr);
   if (stats.cancelled)
     return interruptedExit(output);  // the writers' destructors remove their temporary files
-  if (gif) gif->finish();
-  if (apng) apng->finish();
-  if (pattern) frames.publish();
+  writer.finish();
   if (!options.overrides.quiet) {
     std::fprintf(stderr,
                  "%s: %d frames %dx%d, %zu faces, load %.3f s, build %.3f s (once), frames %.3f s "

@@ -17,8 +17,10 @@
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/render/renderer.hpp"
+#include "lancer/scene/gmsh_view.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/render_overrides.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "lancer/util/memory_budget.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -97,6 +99,11 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
   command.add_option("--up", overrides.up,
                      "Up axis of the automatic camera: x, y, z, -x, -y or -z (a bare mesh: guessed; a scene: "
                      "y)");
+  command
+      .add_option("--gmsh-view", overrides.gmshView,
+                  "The view set up in gmsh: its options file (File > Save Model Options; default: the mesh's "
+                  "MESH.msh.opt)")
+      ->expected(0, 1);
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
 }
 
@@ -121,32 +128,26 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
     description = loadScene(input);
     if (up) applyUpAxis(description.camera, *up);
   }
-  RenderSettings& settings = description.render;
-  if (overrides.width) settings.width = *overrides.width;
-  if (overrides.height) settings.height = *overrides.height;
-  if (overrides.maxDepth) settings.maxDepth = *overrides.maxDepth;
-  if (overrides.srgb) settings.srgb = true;
-  if (!overrides.sampler.empty())
-    settings.sampler = *enumFromName<SamplerKind>(kSamplerNames, overrides.sampler);
-  if (overrides.samples) settings.samples = *overrides.samples;
-  // The quick look's fill sits at the automatic camera, whose distance depends on the image's aspect.
-  if (!preloaded.empty() && (overrides.width || overrides.height))
-    placeQuickLookLights(description, preloaded.front());
-  const int root = static_cast<int>(std::lround(std::sqrt(settings.samples)));
-  if (settings.sampler != SamplerKind::Adaptive && root * root != settings.samples)
-    throw InputError(
-        SourceLocation{"--samples"},
-        fmt::format("{} samples cannot form an n x n grid: use a perfect square (1, 4, 9, 16, ...)",
-                    settings.samples));
-  requireImageMemory(settings, overrides.threads, imageBuffer ? imageBuffer(settings) : ImageBuffer::Whole,
-                     input);
-  if (overrides.edges)
-    for (MeshInstance& mesh : description.meshes)
-      if (!mesh.edges) mesh.edges = EdgeSettings{};
-  if (!overrides.shading.empty()) {
-    settings.shading = *enumFromName<ShadingMode>(kShadingNames, overrides.shading);
-    for (MeshInstance& mesh : description.meshes) mesh.shading.reset();
+  if (overrides.gmshView) {
+    // gmsh reads part.msh.opt beside part.msh whenever it opens it: the same file by default.
+    std::string path = *overrides.gmshView;
+    if (path.empty() && !description.meshes.empty()) path = description.meshes.front().file + ".opt";
+    description.camera.gmshView = readGmshView(path);
   }
+  RenderOverrides applied;
+  applied.width = overrides.width;
+  applied.height = overrides.height;
+  applied.samples = overrides.samples;
+  applied.maxDepth = overrides.maxDepth;
+  if (overrides.srgb) applied.srgb = true;
+  if (!overrides.sampler.empty())
+    applied.sampler = enumFromName<SamplerKind>(kSamplerNames, overrides.sampler);
+  if (!overrides.shading.empty())
+    applied.shading = enumFromName<ShadingMode>(kShadingNames, overrides.shading);
+  applied.edges = overrides.edges;
+  applyRenderOverrides(description, applied, preloaded.empty() ? nullptr : &preloaded.front());
+  requireImageMemory(description.render, overrides.threads,
+                     imageBuffer ? imageBuffer(description.render) : ImageBuffer::Whole, input);
   Scene scene = preloaded.empty() ? buildScene(description, overrides.threads)
                                   : buildScene(description, std::move(preloaded), overrides.threads);
   if (!overrides.quiet)

@@ -25,6 +25,8 @@ struct SceneOverrides {
   bool srgb = false;
   bool edges = false;  // draw element edges on every mesh that does not set its own
   std::string up;      // --up: the automatic camera's up axis (x, y, z, -x, -y, -z)
+  // --gmsh-view [FILE]: the camera of a gmsh options file; "" for the mesh's own MESH.msh.opt.
+  std::optional<std::string> gmshView;
   bool quiet = false;
 };
 

@@ -26,6 +26,30 @@ ImageFormat imageFormatFromPath(const std::string& path) {
       fmt::format("unknown image format: {}; the supported extensions are {}", found, kImageExtensions));
 }
 
+void writeImage8(const std::string& path, int width, int height, int channels, TransferCurve curve,
+                 const std::uint8_t* samples) {
+  const ImageFormat format = imageFormatFromPath(path);
+  if (format == ImageFormat::Png) {
+    writePng8(path, width, height, channels, curve == TransferCurve::Srgb, samples);
+    return;
+  }
+  // The other writers encode from float: linear decoding gives back each byte exactly (v / 255 encodes
+  // as round(255 * v / 255) = v), and none of them marks the curve in the file.
+  Image image(width, height);
+  const std::size_t stride = static_cast<std::size_t>(channels);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const std::uint8_t* p = samples + (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                                         static_cast<std::size_t>(x)) *
+                                            stride;
+      image.at(x, y) =
+          Rgba{decode8(p[0]), decode8(p[1]), decode8(p[2]), channels == 4 ? decode8(p[3]) : 1.0f};
+    }
+  ImageWriteOptions options;
+  options.alpha = channels == 4 ? AlphaChannel::Always : AlphaChannel::Never;
+  writeImage(path, image, options);
+}
+
 void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options) {
   switch (imageFormatFromPath(path)) {
     case ImageFormat::Png:

@@ -33,6 +33,14 @@ ImageFormat imageFormatFromPath(const std::string& path);
 void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options = {});
 
 void writePng(const std::string& path, const Image& image, const ImageWriteOptions& options = {});
+// A PNG of samples already encoded: rows top to bottom, `channels` (3 or 4) bytes per pixel;
+// `srgbChunk` marks them as sRGB-encoded (what writePng does for TransferCurve::Srgb).
+void writePng8(const std::string& path, int width, int height, int channels, bool srgbChunk,
+               const std::uint8_t* samples);
+// Any format by extension from 8-bit samples encoded with `curve`: exactly the bytes writeImage writes
+// for the image they came from (with AlphaChannel::Always for 4 channels, Never for 3).
+void writeImage8(const std::string& path, int width, int height, int channels, TransferCurve curve,
+                 const std::uint8_t* samples);
 void writeBmp(const std::string& path, const Image& image, TransferCurve curve = TransferCurve::Linear);
 void writePpm(const std::string& path, const Image& image, TransferCurve curve = TransferCurve::Linear);
 

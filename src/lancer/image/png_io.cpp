@@ -188,10 +188,17 @@ void writePng(const std::string& path, const Image& image, const ImageWriteOptio
                      (options.alpha == AlphaChannel::Auto && image.hasTransparency());
   const int channels = alpha ? 4 : 3;
   const std::vector<std::uint8_t> samples = encodeImage8(image, options.curve, channels);
+  writePng8(path, image.width(), image.height(), channels, options.curve == TransferCurve::Srgb,
+            samples.data());
+}
+
+void writePng8(const std::string& path, int width, int height, int channels, bool srgbChunk,
+               const std::uint8_t* samples) {
+  if (width <= 0 || height <= 0)
+    throw InputError(SourceLocation{path}, "cannot write an empty (0-pixel) PNG");
   AtomicFileWriter file(path);
   PngErrorText error;
-  const bool ok = encodePng(&file, image.width(), image.height(), channels,
-                            options.curve == TransferCurve::Srgb, samples.data(), &error);
+  const bool ok = encodePng(&file, width, height, channels, srgbChunk, samples, &error);
   if (!ok && !file.failed()) {
     file.discard();
     throw InputError(SourceLocation{path}, fmt::format("PNG encoding failed: {}", error.text));

@@ -1,8 +1,12 @@
 #include "lancer/render/animation.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "lancer/util/stopwatch.hpp"
@@ -36,10 +40,11 @@ Vec3d orbitCenter(const AnimationSettings& animation, const Scene& scene) {
          toDouble(scene.geometry.bounds.empty() ? Vec3{} : scene.geometry.bounds.center());
 }
 
-CameraSettings orbitCamera(const CameraSettings& camera, const AnimationSettings& animation,
+CameraSettings orbitCamera(const CameraSettings& givenCamera, const AnimationSettings& animation,
                            const Scene& scene, int imageWidth, int imageHeight, int frame) {
   const Aabbd worldBounds{scene.geometry.origin + toDouble(scene.geometry.bounds.lower),
                           scene.geometry.origin + toDouble(scene.geometry.bounds.upper)};
+  const CameraSettings camera = resolveGmshView(givenCamera, worldBounds);
   CameraSettings result = camera;
   const Vec3d sceneCentre = worldBounds.empty() ? Vec3d{} : worldBounds.center();
   const Vec3d position = camera.position.value_or(
@@ -52,6 +57,24 @@ CameraSettings orbitCamera(const CameraSettings& camera, const AnimationSettings
   result.lookAt = rotateAbout(lookAt, centre, axis, degrees);
   result.up = rotateAbout(camera.up, Vec3d{}, axis, degrees);
   return result;
+}
+
+int parseOrbit(const std::string& orbit, std::size_t lightCount) {
+  if (orbit == "camera") return -1;
+  // "light:K" with K plain decimal digits, as the scene file's animation.orbit accepts.
+  const std::string digits = orbit.rfind("light:", 0) == 0 ? orbit.substr(6) : std::string();
+  const bool number = !digits.empty() && digits.size() <= 9 &&
+                      std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (number && static_cast<std::size_t>(std::stoi(digits)) < lightCount) return std::stoi(digits);
+  if (lightCount == 0)
+    throw InputError(
+        SourceLocation{"--orbit"},
+        fmt::format("'{}' is not an orbit here: the scene has no [[light]]; use 'camera'", orbit));
+  throw InputError(
+      SourceLocation{"--orbit"},
+      fmt::format("'{}' is not an orbit: use 'camera' or 'light:K' with K from 0 to {} (the scene has "
+                  "{} light{})",
+                  orbit, lightCount - 1, lightCount, lightCount == 1 ? "" : "s"));
 }
 
 AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,

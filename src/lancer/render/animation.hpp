@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 
 #include "lancer/render/renderer.hpp"
 
@@ -25,6 +26,10 @@ Vec3d orbitCenter(const AnimationSettings& animation, const Scene& scene);
 // without a position starts from the default 3/4 view, as `lancer render` would place it.
 CameraSettings orbitCamera(const CameraSettings& camera, const AnimationSettings& animation,
                            const Scene& scene, int imageWidth, int imageHeight, int frame);
+
+// --orbit's (and lancer.animate's orbit=) value: -1 for "camera", K for "light:K" with K below
+// lightCount. Throws InputError naming the choices otherwise.
+int parseOrbit(const std::string& orbit, std::size_t lightCount);
 
 struct AnimationProgress {
   int frame = 0;  // 0-based frame being rendered

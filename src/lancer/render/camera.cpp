@@ -11,12 +11,14 @@ constexpr double kDegrees = std::numbers::pi / 180.0;
 
 }  // namespace
 
-Camera::Camera(const CameraSettings& settings, const Vec3d& sceneOrigin, const Aabb& sceneBounds,
+Camera::Camera(const CameraSettings& givenSettings, const Vec3d& sceneOrigin, const Aabb& sceneBounds,
                int imageWidth, int imageHeight)
-    : projection_(settings.projection) {
+    : projection_(givenSettings.projection) {
   const double aspect = static_cast<double>(imageWidth) / imageHeight;
   const Aabbd worldBounds{sceneOrigin + toDouble(sceneBounds.lower),
                           sceneOrigin + toDouble(sceneBounds.upper)};
+  const CameraSettings settings = resolveGmshView(givenSettings, worldBounds);
+  projection_ = settings.projection;
   const Vec3d lookAt = settings.lookAt.value_or(worldBounds.empty() ? Vec3d{} : worldBounds.center());
   const Vec3d position = settings.position.value_or(defaultCameraPosition(worldBounds, settings, aspect));
 
@@ -39,13 +41,17 @@ Camera::Camera(const CameraSettings& settings, const Vec3d& sceneOrigin, const A
     halfHeight_ = static_cast<float>(0.5 * height);
   }
   halfWidth_ = static_cast<float>(halfHeight_ * aspect);
+  if (projection_ == Projection::Perspective) {
+    shiftX_ = static_cast<float>(settings.shiftX);
+    shiftY_ = static_cast<float>(settings.shiftY);
+  }
   invWidth_ = 1.0f / static_cast<float>(imageWidth);
   invHeight_ = 1.0f / static_cast<float>(imageHeight);
 }
 
 Ray Camera::generateRay(float x, float y) const {
-  const float sx = (2.0f * x * invWidth_ - 1.0f) * halfWidth_;
-  const float sy = (1.0f - 2.0f * y * invHeight_) * halfHeight_;
+  const float sx = (2.0f * x * invWidth_ - 1.0f) * halfWidth_ + shiftX_;
+  const float sy = (1.0f - 2.0f * y * invHeight_) * halfHeight_ + shiftY_;
   if (projection_ == Projection::Perspective) {
     return Ray(position_, normalize(forward_ + right_ * sx + up_ * sy));
   }
@@ -58,8 +64,8 @@ bool Camera::project(const Vec3& p, float& x, float& y) const {
   if (projection_ == Projection::Perspective) {
     const float depth = dot(v, forward_);
     if (!(depth > 0.0f)) return false;
-    sx /= depth;
-    sy /= depth;
+    sx = sx / depth - shiftX_;
+    sy = sy / depth - shiftY_;
   }
   x = 0.5f * (sx / halfWidth_ + 1.0f) / invWidth_;
   y = 0.5f * (1.0f - sy / halfHeight_) / invHeight_;

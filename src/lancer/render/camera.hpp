@@ -36,6 +36,7 @@ class Camera {
   Vec3 forward_, right_, up_;     // unit, orthogonal
   float halfWidth_, halfHeight_;  // of the view window at distance 1 (perspective) or in world units
   float invWidth_, invHeight_;
+  float shiftX_ = 0, shiftY_ = 0;  // perspective window off the axis (CameraSettings::shiftX, shiftY)
 };
 
 }  // namespace lancer

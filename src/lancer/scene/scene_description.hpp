@@ -9,6 +9,7 @@
 
 #include "lancer/math/vec3.hpp"
 #include "lancer/scene/color_by_spec.hpp"
+#include "lancer/scene/gmsh_view.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
@@ -44,7 +45,15 @@ struct CameraSettings {
   Vec3d viewFrom{0.9, 0.65, 1.3};
   double fovDegrees = 40;            // vertical, perspective
   std::optional<double> viewHeight;  // world units, orthographic; default frames the scene
+  // Perspective: the view window's centre off the view axis, in tan units (gmsh's perspective).
+  double shiftX = 0, shiftY = 0;
+  // `[camera] gmsh_view`, `--gmsh-view`: the view of a gmsh options file, resolved against the scene's
+  // bounds when the camera is made (resolveGmshView); it replaces every key above.
+  std::optional<GmshView> gmshView;
 };
+
+// The camera settings of `camera.gmshView` for a scene of these world bounds (camera itself without one).
+CameraSettings resolveGmshView(const CameraSettings& camera, const Aabbd& worldBounds);
 
 struct PointLight {
   Vec3d position;

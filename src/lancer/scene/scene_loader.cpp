@@ -26,8 +26,8 @@ constexpr std::array<std::string_view, 9> kSceneTables = {
 constexpr std::array<std::string_view, 10> kRenderKeys = {
     "width",   "height",     "samples", "max_depth", "sampler",
     "shading", "background", "output",  "srgb",      "adaptive_threshold"};
-constexpr std::array<std::string_view, 7> kCameraKeys = {"projection", "position", "look_at",    "up",
-                                                         "up_axis",    "fov",      "view_height"};
+constexpr std::array<std::string_view, 8> kCameraKeys = {
+    "projection", "position", "look_at", "up", "up_axis", "fov", "view_height", "gmsh_view"};
 constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
 constexpr std::array<std::string_view, 3> kLightKeys = {"position", "intensity", "attenuation"};
 constexpr std::array<std::string_view, 9> kMaterialKeys = {
@@ -195,6 +195,23 @@ CameraSettings readCamera(const SceneFile& file, const toml::table& table) {
   if (auto fov = reader.number("fov", NumberRange::strictlyBetween(0, 180))) camera.fovDegrees = *fov;
   camera.viewHeight = reader.number("view_height", NumberRange::above(0));
   checkCameraFrame(reader, camera);
+  // gmsh_view: the view saved by gmsh (File > Save Model Options), which sets the whole camera.
+  if (auto gmshView = reader.string("gmsh_view")) {
+    for (const std::string_view key :
+         {"projection", "position", "look_at", "up", "up_axis", "fov", "view_height"})
+      if (const toml::node* other = reader.find(key))
+        reader.fail(*other,
+                    fmt::format("camera.{} and camera.gmsh_view both set the camera; gmsh_view sets it "
+                                "whole, so keep one",
+                                key));
+    try {
+      camera.gmshView = readGmshView(file.resolve(*gmshView));
+    } catch (const InputError& error) {
+      if (error.location().line != 0) throw;
+      reader.fail(*reader.find("gmsh_view"),
+                  fmt::format("camera.gmsh_view: {}: {}", file.resolve(*gmshView), error.message()));
+    }
+  }
   return camera;
 }
 

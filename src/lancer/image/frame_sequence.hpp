@@ -9,7 +9,7 @@
 
 #include "lancer/image/image_io.hpp"
 
-namespace lancer::cli {
+namespace lancer {
 
 // A frame-sequence name such as "frames/turn_%04d.png": exactly one %d (optionally %0Nd), no other %.
 struct FramePattern {
@@ -40,4 +40,4 @@ class StagedFrames {
   std::vector<std::pair<std::string, std::string>> staged_;  // (hidden file, target)
 };
 
-}  // namespace lancer::cli
+}  // namespace lancer

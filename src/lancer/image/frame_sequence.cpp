@@ -1,4 +1,4 @@
-#include "frame_sequence.hpp"
+#include "lancer/image/frame_sequence.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -11,7 +11,7 @@
 
 #include "lancer/util/input_error.hpp"
 
-namespace lancer::cli {
+namespace lancer {
 
 std::string FramePattern::name(int frame) const {
   return fmt::format("{}{:0{}d}{}", prefix, frame, width, suffix);
@@ -59,4 +59,4 @@ void StagedFrames::publish() {
   }
 }
 
-}  // namespace lancer::cli
+}  // namespace lancer

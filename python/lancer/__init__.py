@@ -1,0 +1,64 @@
+"""lancer: a CPU ray tracer for gmsh meshes, from Python.
+
+    import lancer
+    mesh = lancer.read_msh("part.msh")
+    image = lancer.render(mesh, width=640, height=480, samples=4)   # (H, W, 3) uint8, row 0 on top
+    image.save("part.png")
+
+No display is needed (no X, no GL). The C++ library does the work; this package is a thin layer.
+"""
+
+from ._lancer import Camera, InputError, Mesh, Scene, read_msh, read_png
+from . import _lancer
+from ._image import Image
+from ._gmsh import camera_from_gmsh, from_gmsh
+
+__all__ = ["Camera", "Image", "InputError", "Mesh", "Scene", "animate", "from_gmsh", "read_msh", "read_png", "render"]
+
+Camera.from_gmsh = staticmethod(camera_from_gmsh)
+
+
+def _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads, progress,
+               sampler, max_depth):
+    arguments = _lancer._RenderArguments()
+    arguments.width = width
+    arguments.height = height
+    arguments.samples = samples
+    arguments.shading = shading
+    arguments.srgb = srgb
+    arguments.transparent_background = transparent_background
+    arguments.edges = edges
+    arguments.threads = threads
+    arguments.progress = progress
+    arguments.sampler = sampler
+    arguments.max_depth = max_depth
+    return arguments
+
+
+def render(scene, width=None, height=None, samples=None, shading=None, srgb=None,
+           transparent_background=None, edges=None, threads=0, progress=False, dtype="uint8",
+           sampler=None, max_depth=None):
+    """Renders a lancer.Scene, or the quick look of a lancer.Mesh (as `lancer render part.msh`).
+
+    None keeps the scene file's own value (for a mesh, the quick look's), as the CLI's options do.
+    Returns a lancer.Image: (H, W, 3) uint8, (H, W, 4) with transparent_background; with
+    dtype="float32", the linear floating-point RGBA the renderer made, (H, W, 4). Releases the GIL;
+    Ctrl-C raises KeyboardInterrupt within a tile's time.
+    """
+    if dtype not in ("uint8", "float32"):
+        raise ValueError(f"dtype={dtype!r}: use 'uint8' (encoded, as the image files) or 'float32' (linear)")
+    arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
+                           progress, sampler, max_depth)
+    array, info = _lancer._render(scene, arguments, dtype == "float32")
+    return Image._wrap(array, srgb=info["srgb"], stats=info)
+
+
+def animate(scene, output, frames=None, fps=None, orbit=None, width=None, height=None, samples=None,
+            shading=None, srgb=None, transparent_background=None, edges=None, threads=0, progress=False,
+            loop=None, dither=None, palette=None, sampler=None, max_depth=None):
+    """Writes an orbit of the camera (orbit="camera") or of light K (orbit="light:K") as `lancer
+    animate` does: an animated .gif, an animated .png, or numbered frames ("frame_%04d.png").
+    None keeps the scene's value (its [animation] table, else 36 frames at 12 fps, the camera)."""
+    arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
+                           progress, sampler, max_depth)
+    _lancer._animate(scene, str(output), arguments, frames, fps, orbit, loop, dither, palette)

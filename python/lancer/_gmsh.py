@@ -1,0 +1,114 @@
+"""lancer.from_gmsh: the current model of a live gmsh session (the `gmsh` Python module) as a
+lancer.Mesh, without writing a file. gmsh is imported only when this is called."""
+
+import numpy as np
+
+from . import _lancer
+
+
+def _gmsh():
+    try:
+        import gmsh
+    except ImportError as error:
+        raise ImportError("lancer.from_gmsh needs the gmsh Python module (Debian: apt-get install "
+                          "python3-gmsh)") from error
+    # gmsh 4.8 (Debian 12) has no gmsh.isInitialized(); there an uninitialized gmsh has no nodes.
+    initialized = getattr(gmsh, "isInitialized", None)
+    if initialized is not None and not initialized():
+        raise RuntimeError("gmsh is not initialized: call gmsh.initialize() and make a model first")
+    return gmsh
+
+
+def _entities_to_take(gmsh, dims):
+    """(dim, tag, physical) of the entities gmsh itself would save with Mesh.SaveAll = 0: those in a
+    physical group when the model has any (of any dimension), else all of them."""
+    has_physicals = len(gmsh.model.getPhysicalGroups()) > 0
+    taken = []
+    for dim in dims:
+        for _, tag in gmsh.model.getEntities(dim):
+            physicals = gmsh.model.getPhysicalGroupsForEntity(dim, tag)
+            if has_physicals and len(physicals) == 0:
+                continue
+            taken.append((dim, tag, int(physicals[0]) if len(physicals) else 0))
+    return taken
+
+
+def _node_fields(gmsh, tag_to_index, node_count):
+    """The first step of every view holding node data (gmsh.view.getModelData), per mesh node."""
+    fields = []
+    for view in gmsh.view.getTags():
+        try:
+            data_type, tags, data, _, components = gmsh.view.getModelData(view, 0)
+        except Exception:  # a list-based view (no model data): nothing to map onto the mesh
+            continue
+        if data_type != "NodeData" or components <= 0 or len(tags) == 0:
+            continue
+        index = gmsh.view.getIndex(view)
+        name = gmsh.option.getString(f"View[{index}].Name")
+        values = np.full((node_count, components), np.nan)
+        rows = np.array([np.asarray(d, dtype=float)[:components] for d in data])
+        slots = tag_to_index[np.asarray(tags, dtype=np.int64)]
+        values[slots[slots >= 0]] = rows[slots >= 0]
+        fields.append((name, int(components), values.reshape(-1)))
+    return fields
+
+
+def from_gmsh(dim=2, name=None):
+    """The mesh of gmsh's current model: dim=2 its surfaces, dim=3 also its volumes, whose skin and
+    interfaces become faces as the .msh reader makes them. Physical groups and their names come
+    along, and the first step of each view with node data becomes a field for color_by. Call it
+    after gmsh.model.mesh.generate(dim)."""
+    if dim not in (2, 3):
+        raise ValueError(f"dim={dim!r}: use 2 (surfaces) or 3 (surfaces and volumes)")
+    gmsh = _gmsh()
+    node_tags, coords, _ = gmsh.model.mesh.getNodes()
+    if len(node_tags) == 0:
+        raise ValueError(f"the current gmsh model ('{gmsh.model.getCurrent()}') has no mesh nodes: call "
+                         f"gmsh.model.mesh.generate({dim}) first (after gmsh.initialize() and making the model)")
+    node_tags = np.asarray(node_tags, dtype=np.int64)
+    points = np.asarray(coords, dtype=np.float64).reshape(-1, 3)
+    tag_to_index = np.full(int(node_tags.max()) + 1, -1, dtype=np.int64)
+    tag_to_index[node_tags] = np.arange(len(node_tags))
+
+    blocks = []
+    for entity_dim, entity, physical in _entities_to_take(gmsh, (2, 3) if dim == 3 else (2,)):
+        types, _, element_nodes = gmsh.model.mesh.getElements(entity_dim, entity)
+        for element_type, nodes in zip(types, element_nodes):
+            indices = tag_to_index[np.asarray(nodes, dtype=np.int64)]
+            blocks.append((int(element_type), entity_dim, physical, entity, indices))
+    if not blocks and dim == 2 and any(d == 3 for d, _ in gmsh.model.getPhysicalGroups()):
+        raise ValueError("the gmsh model's physical groups are volumes: use from_gmsh(dim=3) after "
+                         "gmsh.model.mesh.generate(3), or add physical surfaces")
+    if not blocks:
+        raise ValueError(f"the gmsh model '{gmsh.model.getCurrent()}' has no {'surface or volume' if dim == 3 else 'surface'} "
+                         f"elements{' in its physical groups' if gmsh.model.getPhysicalGroups() else ''}: call "
+                         f"gmsh.model.mesh.generate({dim}) first")
+    group_names = {}
+    for group_dim, tag in gmsh.model.getPhysicalGroups():
+        group_name = gmsh.model.getPhysicalName(group_dim, tag)
+        if group_name:
+            group_names[(group_dim, tag)] = group_name
+    fields = _node_fields(gmsh, tag_to_index, len(node_tags))
+    return _lancer._mesh_from_elements(points, blocks, group_names, name or f"gmsh:{gmsh.model.getCurrent()}", fields)
+
+
+# The General.* options that make gmsh's view (lancer/scene/gmsh_view.hpp reads the same ones).
+_VIEW_OPTIONS = ["Trackball", "TrackballQuaternion0", "TrackballQuaternion1", "TrackballQuaternion2",
+                 "TrackballQuaternion3", "RotationX", "RotationY", "RotationZ", "TranslationX", "TranslationY",
+                 "TranslationZ", "ScaleX", "ScaleY", "ScaleZ", "Orthographic", "ClipFactor",
+                 "DisplayBorderFactor", "GraphicsWidth", "GraphicsHeight", "MenuWidth", "ShowModuleMenu",
+                 "DetachedMenu"]
+
+
+def camera_from_gmsh():
+    """The camera of gmsh's current view, from the live General.* options (what the GUI shows, or
+    what a script set): rotation, translation, scale and projection, orthographic by default as in
+    gmsh. The model is framed by its bounding box when rendered, as gmsh frames it."""
+    gmsh = _gmsh()
+    options = {}
+    for name in _VIEW_OPTIONS:
+        try:
+            options[name] = gmsh.option.getNumber("General." + name)
+        except Exception:  # an option this gmsh does not have: lancer uses gmsh 4.8's default
+            pass
+    return _lancer._camera_from_gmsh_options(options)

@@ -1,0 +1,75 @@
+// lancer.animate: `lancer animate` from Python. One scene build and accelerator serve every frame;
+// the frames go to the library's AnimationWriter, as the CLI's do, so the files are the same.
+#include <pybind11/stl.h>
+
+#include <fmt/format.h>
+
+#include <cstdio>
+
+#include "bindings.hpp"
+#include "lancer/image/animation_writer.hpp"
+#include "lancer/render/animation.hpp"
+#include "lancer/scene/render_limits.hpp"
+#include "render_session.hpp"
+
+namespace lancer::python {
+namespace {
+
+void animate(const py::object& target, const std::string& output, const RenderArguments& arguments,
+             const std::optional<int>& frames, const std::optional<double>& fps,
+             const std::optional<std::string>& orbit, const std::optional<int>& loop,
+             const std::optional<std::string>& dither, const std::optional<std::string>& palette) {
+  if (frames && (*frames < 1 || *frames > kMaxFrames))
+    throw py::value_error(fmt::format("frames={} is out of range: use 1 to {}", *frames, kMaxFrames));
+  if (fps && !(*fps >= 0.01 && *fps <= 100))
+    throw py::value_error(fmt::format("fps={} is out of range: use 0.01 to 100", *fps));
+  if (loop && (*loop < -1 || *loop > 65535))
+    throw py::value_error(
+        fmt::format("loop={} is out of range: 0 forever, -1 play once, up to 65535 repeats", *loop));
+  if (dither && *dither != "ordered" && *dither != "floyd-steinberg" && *dither != "none")
+    throw py::value_error(fmt::format("dither='{}': use 'ordered', 'floyd-steinberg' or 'none'", *dither));
+  if (palette && *palette != "global" && *palette != "per-frame")
+    throw py::value_error(fmt::format("palette='{}': use 'global' or 'per-frame'", *palette));
+  PreparedRender prepared =
+      prepareRender(sceneOf(target), renderOverridesFromArguments(arguments), arguments.threads);
+  const RenderSettings& settings = prepared.description.render;
+  AnimationSettings animation = prepared.description.animation.value_or(AnimationSettings{});
+  if (frames) animation.frames = *frames;
+  if (fps) animation.fps = *fps;
+  if (orbit) animation.orbitLight = parseOrbit(*orbit, sceneLightCount(prepared.scene));
+
+  AnimationOutputOptions outputOptions;
+  outputOptions.frames = animation.frames;
+  outputOptions.fps = animation.fps;
+  outputOptions.loop = loop;
+  outputOptions.dither = dither.value_or("");
+  outputOptions.palette = palette.value_or("");
+  outputOptions.still.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
+  outputOptions.still.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
+  outputOptions.transparentBackground = settings.transparentBackground;
+  AnimationWriter writer(output, settings.width, settings.height, outputOptions);
+  if (!writer.frameRateNote().empty())
+    if (PyErr_WarnEx(PyExc_UserWarning, writer.frameRateNote().c_str(), 1) != 0)
+      throw py::error_already_set();
+
+  InterruptibleRender render(arguments.threads, arguments.progress);
+  AnimationStats stats;
+  {
+    py::gil_scoped_release release;
+    stats =
+        renderAnimation(prepared.scene, prepared.accelerator, prepared.description, animation, render.options,
+                        [&](int frame, const Image& image) { writer.addFrame(frame, image); });
+  }
+  render.finish();  // KeyboardInterrupt: the writer's destructor removes its temporary files
+  if (!stats.cancelled) writer.finish();
+}
+
+}  // namespace
+
+void bindAnimate(py::module_& module) {
+  module.def("_animate", &animate, py::arg("target"), py::arg("output"), py::arg("arguments"),
+             py::arg("frames"), py::arg("fps"), py::arg("orbit"), py::arg("loop"), py::arg("dither"),
+             py::arg("palette"));
+}
+
+}  // namespace lancer::python

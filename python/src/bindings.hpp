@@ -1,0 +1,35 @@
+// The pieces of the _lancer extension module, one concept per file (mesh arrays, scenes and cameras,
+// rendering, images, errors), and the Python-side scene they share.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <memory>
+
+#include "lancer/mesh/mesh.hpp"
+#include "lancer/scene/scene_description.hpp"
+#include "lancer/scene/up_axis.hpp"
+
+namespace lancer::python {
+
+namespace py = pybind11;
+
+// lancer.Scene: what a scene file or the quick look says, before any mesh is loaded. A quick look
+// keeps its mesh (the Python Mesh it was made from), which every render reuses instead of a file.
+struct PythonScene {
+  SceneDescription description;
+  std::shared_ptr<const Mesh> quickLookMesh;
+};
+
+// The quick look of a mesh, as `lancer render part.msh` makes it.
+PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh);
+PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh, std::optional<UpAxis> up);
+
+void bindErrors(py::module_& module);
+void bindMesh(py::module_& module);
+void bindScene(py::module_& module);
+void bindRender(py::module_& module);
+void bindAnimate(py::module_& module);
+void bindImage(py::module_& module);
+
+}  // namespace lancer::python

@@ -1,0 +1,289 @@
+// lancer.Mesh from numpy arrays (checked here, at the boundary: shapes, dtypes, index ranges, finite
+// coordinates) or from a .msh file (read_msh), and its arrays back as numpy arrays.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "bindings.hpp"
+#include "lancer/mesh/mesh_from_elements.hpp"
+#include "lancer/mesh/msh/huge_pages.hpp"
+#include "lancer/mesh/msh_reader.hpp"
+
+namespace lancer::python {
+namespace {
+
+using IndexArray = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+using PointArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+[[noreturn]] void valueError(const std::string& message) { throw py::value_error(message); }
+
+char dtypeKind(const py::array& array) { return array.dtype().kind(); }
+
+std::string shapeOf(const py::array& array) {
+  std::string shape = "(";
+  for (py::ssize_t i = 0; i < array.ndim(); ++i) shape += fmt::format("{}{}", i ? ", " : "", array.shape(i));
+  return shape + (array.ndim() == 1 ? ",)" : ")");
+}
+
+// (N, 3) real numbers, every coordinate finite, as one contiguous float64 array (a view when it is one).
+PointArray checkedPoints(const py::array& points) {
+  if (points.ndim() != 2 || points.shape(1) != 3)
+    valueError(fmt::format("points must be an (N, 3) array of coordinates; got shape {}", shapeOf(points)));
+  const char kind = dtypeKind(points);
+  if (kind != 'f' && kind != 'i' && kind != 'u')
+    valueError(fmt::format("points must hold real numbers (float64); got dtype {}",
+                           py::str(points.dtype()).cast<std::string>()));
+  PointArray contiguous = PointArray::ensure(points);
+  const double* xyz = contiguous.data();
+  for (py::ssize_t i = 0; i < contiguous.shape(0); ++i)
+    if (!std::isfinite(xyz[3 * i]) || !std::isfinite(xyz[3 * i + 1]) || !std::isfinite(xyz[3 * i + 2]))
+      valueError(fmt::format("points[{}] is ({}, {}, {}): every coordinate must be finite", i, xyz[3 * i],
+                             xyz[3 * i + 1], xyz[3 * i + 2]));
+  return contiguous;
+}
+
+// An integer array of the given number of dimensions (1 or 2), named for messages.
+IndexArray checkedIntegers(const py::array& array, const char* name) {
+  const char kind = dtypeKind(array);
+  if (kind != 'i' && kind != 'u')
+    valueError(
+        fmt::format("{} must hold integers; got dtype {}", name, py::str(array.dtype()).cast<std::string>()));
+  return IndexArray::ensure(array);
+}
+
+// Per-face physical tags or entity tags: (M,) non-negative integers that fit gmsh's int tags.
+std::vector<std::int32_t> checkedTags(const py::object& tags, py::ssize_t faceCount, const char* name) {
+  std::vector<std::int32_t> result(static_cast<std::size_t>(faceCount), 0);
+  if (tags.is_none()) return result;
+  const py::array array = py::array::ensure(tags);
+  if (!array) valueError(fmt::format("{} must be an array of one integer per face", name));
+  if (array.ndim() != 1 || array.shape(0) != faceCount)
+    valueError(fmt::format("{} must be an ({},) array, one tag per face; got shape {}", name, faceCount,
+                           shapeOf(array)));
+  const IndexArray values = checkedIntegers(array, name);
+  for (py::ssize_t f = 0; f < faceCount; ++f) {
+    const std::int64_t tag = values.data()[f];
+    if (tag < 0 || tag > std::numeric_limits<std::int32_t>::max())
+      valueError(fmt::format("{}[{}] is {}: tags are 0 (none) or positive 32-bit integers", name, f, tag));
+    result[static_cast<std::size_t>(f)] = static_cast<std::int32_t>(tag);
+  }
+  return result;
+}
+
+std::vector<PhysicalGroup> checkedGroupNames(const py::object& names, int dimension) {
+  std::vector<PhysicalGroup> groups;
+  if (names.is_none()) return groups;
+  if (!py::isinstance<py::dict>(names)) valueError("group_names must be a dict {tag: name}");
+  for (const auto& [key, value] : names.cast<py::dict>()) {
+    if (!py::isinstance<py::int_>(key) || !py::isinstance<py::str>(value))
+      valueError(fmt::format("group_names must map integer tags to strings; got {}: {}",
+                             py::repr(key).cast<std::string>(), py::repr(value).cast<std::string>()));
+    const auto tag = key.cast<long long>();
+    if (tag <= 0 || tag > std::numeric_limits<std::int32_t>::max())
+      valueError(fmt::format("group_names has tag {}: physical tags are positive 32-bit integers", tag));
+    groups.push_back({dimension, static_cast<int>(tag), value.cast<std::string>()});
+  }
+  return groups;
+}
+
+// Mesh(points, faces, groups=None, group_names=None, entities=None, name="<arrays>")
+std::shared_ptr<Mesh> meshFromArrays(const py::array& pointsIn, const py::array& facesIn,
+                                     const py::object& groupsIn, const py::object& groupNames,
+                                     const py::object& entitiesIn, const std::string& name) {
+  const PointArray points = checkedPoints(pointsIn);
+  if (facesIn.ndim() != 2 || (facesIn.shape(1) != 3 && facesIn.shape(1) != 4))
+    valueError(fmt::format("faces must be an (M, 3) or (M, 4) array of 0-based point indices; got shape {}",
+                           shapeOf(facesIn)));
+  const IndexArray faces = checkedIntegers(facesIn, "faces");
+  const py::ssize_t faceCount = faces.shape(0);
+  const auto corners = static_cast<int>(faces.shape(1));
+  const std::vector<std::int32_t> groups = checkedTags(groupsIn, faceCount, "groups");
+  const std::vector<std::int32_t> entities =
+      entitiesIn.is_none() ? groups : checkedTags(entitiesIn, faceCount, "entities");
+  const std::int64_t pointCount = points.shape(0);
+  if (pointCount > std::numeric_limits<std::int32_t>::max())
+    valueError(fmt::format("{} points are more than lancer's 32-bit indices allow", pointCount));
+
+  // Runs of faces of one type and group become element blocks; corners go to one index buffer.
+  std::vector<std::uint32_t> nodes;
+  nodes.reserve(static_cast<std::size_t>(faceCount) * static_cast<std::size_t>(corners));
+  adviseHugePages(nodes);
+  struct Run {
+    int type;
+    std::int32_t physical, entity;
+    std::size_t begin;
+  };
+  std::vector<Run> runs;
+  const std::int64_t* index = faces.data();
+  for (py::ssize_t f = 0; f < faceCount; ++f, index += corners) {
+    const bool triangle = corners == 3 || index[3] == -1;
+    const int used = triangle ? 3 : 4;
+    for (int c = 0; c < used; ++c) {
+      if (index[c] < 0 || index[c] >= pointCount)
+        valueError(fmt::format("faces[{}] uses point {}, but points has {} rows (indices are 0-based{})", f,
+                               index[c], pointCount, corners == 4 ? "; -1 last makes a triangle" : ""));
+      nodes.push_back(static_cast<std::uint32_t>(index[c]));
+    }
+    const int type = triangle ? 2 : 3;
+    const auto g = static_cast<std::size_t>(f);
+    if (runs.empty() || runs.back().type != type || runs.back().physical != groups[g] ||
+        runs.back().entity != entities[g])
+      runs.push_back({type, groups[g], entities[g], nodes.size() - static_cast<std::size_t>(used)});
+  }
+  std::vector<ElementBlock> blocks;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const std::size_t end = r + 1 < runs.size() ? runs[r + 1].begin : nodes.size();
+    blocks.push_back({runs[r].type, 2, runs[r].physical, runs[r].entity,
+                      std::span<const std::uint32_t>(nodes.data() + runs[r].begin, end - runs[r].begin)});
+  }
+  std::vector<PhysicalGroup> named = checkedGroupNames(groupNames, 2);
+  static_assert(sizeof(Vec3d) == 3 * sizeof(double));
+  const std::span<const Vec3d> xyz(reinterpret_cast<const Vec3d*>(points.data()),
+                                   static_cast<std::size_t>(pointCount));
+  py::gil_scoped_release release;
+  return std::make_shared<Mesh>(meshFromElements(xyz, blocks, std::move(named), name));
+}
+
+// _mesh_from_elements(points, blocks, group_names, name, node_fields): for lancer.from_gmsh. blocks:
+// [(type, dimension, physical, entity, nodes)], nodes 0-based, nodeCount per element; group_names:
+// {(dimension, tag): name}; node_fields: [(name, components, values (N * components,))].
+std::shared_ptr<Mesh> meshFromElementBlocks(const py::array& pointsIn, const py::list& blockList,
+                                            const py::dict& groupNames, const std::string& name,
+                                            const py::list& fieldList) {
+  const PointArray points = checkedPoints(pointsIn);
+  const std::int64_t pointCount = points.shape(0);
+  std::vector<IndexArray> keep;  // the converted index arrays the blocks' spans point into
+  std::vector<std::vector<std::uint32_t>> indices;
+  std::vector<ElementBlock> blocks;
+  for (const py::handle item : blockList) {
+    const auto [type, dimension, physical, entity, nodeArray] =
+        item.cast<std::tuple<int, int, std::int32_t, std::int32_t, py::array>>();
+    const int nodeCount = elementNodeCount(type);
+    if (nodeCount == 0) valueError(fmt::format("gmsh element type {} is not one lancer knows", type));
+    const IndexArray values = checkedIntegers(nodeArray, "element nodes");
+    if (values.size() % nodeCount != 0)
+      valueError(fmt::format("{} node indices are no whole number of type-{} elements ({} nodes each)",
+                             values.size(), type, nodeCount));
+    std::vector<std::uint32_t>& block = indices.emplace_back(static_cast<std::size_t>(values.size()));
+    for (py::ssize_t i = 0; i < values.size(); ++i) {
+      if (values.data()[i] < 0 || values.data()[i] >= pointCount)
+        valueError(
+            fmt::format("an element uses node index {}, outside the {} nodes", values.data()[i], pointCount));
+      block[static_cast<std::size_t>(i)] = static_cast<std::uint32_t>(values.data()[i]);
+    }
+  }
+  std::size_t b = 0;
+  for (const py::handle item : blockList) {
+    const auto [type, dimension, physical, entity, nodeArray] =
+        item.cast<std::tuple<int, int, std::int32_t, std::int32_t, py::array>>();
+    blocks.push_back({type, dimension, physical, entity, indices[b++]});
+  }
+  std::vector<PhysicalGroup> named;
+  for (const auto& [key, value] : groupNames) {
+    const auto [dimension, tag] = key.cast<std::pair<int, int>>();
+    named.push_back({dimension, tag, value.cast<std::string>()});
+  }
+  std::vector<py::array_t<double, py::array::c_style | py::array::forcecast>> fieldValues;
+  std::vector<NodeFieldInput> fields;
+  for (const py::handle item : fieldList) {
+    const auto [fieldName, components, values] = item.cast<std::tuple<std::string, int, py::array>>();
+    auto& array = fieldValues.emplace_back(
+        py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values));
+    if (components <= 0 || array.size() != pointCount * components)
+      valueError(fmt::format("field '{}' has {} values for {} nodes of {} components", fieldName,
+                             array.size(), pointCount, components));
+    fields.push_back({fieldName, components,
+                      std::span<const double>(array.data(), static_cast<std::size_t>(array.size()))});
+  }
+  const std::span<const Vec3d> xyz(reinterpret_cast<const Vec3d*>(points.data()),
+                                   static_cast<std::size_t>(pointCount));
+  py::gil_scoped_release release;
+  return std::make_shared<Mesh>(meshFromElements(xyz, blocks, std::move(named), name, fields));
+}
+
+py::array_t<double> pointsOf(const Mesh& mesh) {
+  py::array_t<double> points({static_cast<py::ssize_t>(mesh.positions.size()), py::ssize_t{3}});
+  double* out = points.mutable_data();
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3d p = mesh.worldPosition(static_cast<std::uint32_t>(v));
+    out[3 * v] = p.x, out[3 * v + 1] = p.y, out[3 * v + 2] = p.z;
+  }
+  return points;
+}
+
+// (M, 3) when every face is a triangle, else (M, 4) with -1 last for the triangles.
+py::array_t<std::int64_t> facesOf(const Mesh& mesh) {
+  bool quads = false;
+  for (const MeshFace& face : mesh.faces) quads = quads || face.isQuad();
+  const py::ssize_t corners = quads ? 4 : 3;
+  py::array_t<std::int64_t> faces({static_cast<py::ssize_t>(mesh.faces.size()), corners});
+  std::int64_t* out = faces.mutable_data();
+  for (const MeshFace& face : mesh.faces)
+    for (int c = 0; c < corners; ++c)
+      *out++ = face.vertex[c] == kNoVertex ? std::int64_t{-1} : std::int64_t{face.vertex[c]};
+  return faces;
+}
+
+py::array_t<std::int32_t> tagsOf(const std::vector<std::int32_t>& tags) {
+  return py::array_t<std::int32_t>(static_cast<py::ssize_t>(tags.size()), tags.data());
+}
+
+py::dict groupNamesOf(const Mesh& mesh) {
+  py::dict names;
+  for (const PhysicalGroup& group : mesh.physicalGroups)
+    if (!group.name.empty() && !names.contains(py::int_(group.tag))) names[py::int_(group.tag)] = group.name;
+  return names;
+}
+
+}  // namespace
+
+void bindMesh(py::module_& module) {
+  py::class_<Mesh, std::shared_ptr<Mesh>>(module, "Mesh",
+                                          "A surface mesh: points, triangle and quad faces, physical groups")
+      .def(py::init(&meshFromArrays), py::arg("points"), py::arg("faces"), py::arg("groups") = py::none(),
+           py::arg("group_names") = py::none(), py::arg("entities") = py::none(),
+           py::arg("name") = "<arrays>",
+           "points (N, 3) float64; faces (M, 3) or (M, 4) int, 0-based (a (M, 4) row with -1 last is a "
+           "triangle); groups (M,) physical tags (0: none); group_names {tag: name}; entities (M,) gmsh "
+           "elementary tags (default: the groups). Points no face uses are dropped, as are zero-area faces.")
+      .def_property_readonly("points", &pointsOf, "(N, 3) float64 world coordinates of the vertices")
+      .def_property_readonly("faces", &facesOf, "(M, 3) int64, or (M, 4) with -1 last for triangles")
+      .def_property_readonly(
+          "groups", [](const Mesh& mesh) { return tagsOf(mesh.facePhysicalTag); },
+          "(M,) int32 physical tag of each face (0: none)")
+      .def_property_readonly(
+          "entities", [](const Mesh& mesh) { return tagsOf(mesh.faceEntityTag); },
+          "(M,) int32 gmsh elementary entity of each face")
+      .def_property_readonly("group_names", &groupNamesOf, "{tag: name} of the named physical groups")
+      .def_property_readonly(
+          "fields",
+          [](const Mesh& mesh) {
+            std::vector<std::string> names;
+            for (const MeshField& field : mesh.fields) names.push_back(field.name);
+            return names;
+          },
+          "names of the fields (node and element data) color_by can use")
+      .def_property_readonly("name", [](const Mesh& mesh) { return mesh.source.path; })
+      .def_property_readonly("warnings", [](const Mesh& mesh) { return mesh.source.warnings; })
+      .def_property_readonly("load_seconds", [](const Mesh& mesh) { return mesh.source.loadSeconds; })
+      .def("__repr__", [](const Mesh& mesh) {
+        return fmt::format("<lancer.Mesh '{}': {} points, {} faces, {} physical groups>", mesh.source.path,
+                           mesh.positions.size(), mesh.faces.size(), mesh.physicalGroups.size());
+      });
+  module.def(
+      "read_msh",
+      [](const std::string& path) {
+        py::gil_scoped_release release;
+        return std::make_shared<Mesh>(readMsh(path));
+      },
+      py::arg("path"), "Reads a gmsh .msh file (MSH 2.2, 4.0, 4.1) as the lancer command does");
+  module.def("_mesh_from_elements", &meshFromElementBlocks, py::arg("points"), py::arg("blocks"),
+             py::arg("group_names"), py::arg("name"), py::arg("node_fields"));
+}
+
+}  // namespace lancer::python

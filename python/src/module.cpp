@@ -1,0 +1,12 @@
+// The _lancer extension module: the C++ library's reader, scenes and renderer for lancer/__init__.py.
+#include "bindings.hpp"
+
+PYBIND11_MODULE(_lancer, module) {
+  module.doc() = "lancer's C++ core; use the lancer package, which wraps it";
+  lancer::python::bindErrors(module);
+  lancer::python::bindMesh(module);
+  lancer::python::bindScene(module);
+  lancer::python::bindRender(module);
+  lancer::python::bindAnimate(module);
+  lancer::python::bindImage(module);
+}

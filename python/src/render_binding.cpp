@@ -1,0 +1,185 @@
+// lancer.render: the scene (or a mesh's quick look) with the keyword arguments over its own settings,
+// as the CLI's options are, traced with the GIL released; Ctrl-C stops it within a tile's time.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <cstdio>
+#include <cstring>
+
+#include "bindings.hpp"
+#include "lancer/image/pixel_encoding.hpp"
+#include "lancer/scene/render_limits.hpp"
+#include "lancer/util/memory_budget.hpp"
+#include "render_session.hpp"
+
+namespace lancer::python {
+namespace {
+
+void requireRange(const std::optional<int>& value, const char* name, int low, int high) {
+  if (value && (*value < low || *value > high))
+    throw py::value_error(fmt::format("{}={} is out of range: use {} to {}", name, *value, low, high));
+}
+
+template <typename Enum, std::size_t N>
+std::optional<Enum> choiceArgument(const std::optional<std::string>& value, const char* name,
+                                   const std::array<std::string_view, N>& names) {
+  if (!value) return std::nullopt;
+  if (const auto found = enumFromName<Enum>(names, *value)) return found;
+  std::string choices;
+  for (const std::string_view choice : names)
+    choices += (choices.empty() ? "'" : ", '") + std::string(choice) + "'";
+  throw py::value_error(fmt::format("{}='{}': use one of {}", name, *value, choices));
+}
+
+void printProgress(const RenderProgress& progress) {
+  const double raysPerSecond = progress.seconds > 0 ? progress.rays / progress.seconds : 0;
+  const double eta =
+      progress.fraction > 0 ? progress.seconds * (1 - progress.fraction) / progress.fraction : 0;
+  std::fprintf(stderr, "\r  %5.1f%%  %7.2f Mrays/s  ETA %5.1f s ", 100 * progress.fraction,
+               raysPerSecond * 1e-6, eta);
+  std::fflush(stderr);
+}
+
+// 8-bit (H, W, 3 or 4) encoded with the settings' curve, or linear float32 (H, W, 4).
+py::array toArray(const Image& image, const RenderSettings& settings, bool linearFloat) {
+  const auto height = static_cast<py::ssize_t>(image.height()),
+             width = static_cast<py::ssize_t>(image.width());
+  if (linearFloat) {
+    static_assert(sizeof(Rgba) == 4 * sizeof(float));
+    py::array_t<float> array({height, width, py::ssize_t{4}});
+    std::memcpy(array.mutable_data(), image.pixels().data(), image.pixels().size_bytes());
+    return array;
+  }
+  const int channels = settings.transparentBackground ? 4 : 3;
+  py::array_t<std::uint8_t> array({height, width, static_cast<py::ssize_t>(channels)});
+  const TransferCurve curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
+  std::uint8_t* out = array.mutable_data();
+  for (int y = 0; y < image.height(); ++y)
+    encodeRow8(image.row(y), curve, channels, out + static_cast<std::size_t>(y) * image.width() * channels);
+  return array;
+}
+
+}  // namespace
+
+RenderOverrides renderOverridesFromArguments(const RenderArguments& arguments) {
+  requireRange(arguments.width, "width", 1, kMaxRenderSide);
+  requireRange(arguments.height, "height", 1, kMaxRenderSide);
+  requireRange(arguments.samples, "samples", 1, kMaxSamples);
+  requireRange(arguments.maxDepth, "max_depth", 0, kMaxDepth);
+  if (arguments.threads < 0 || arguments.threads > kMaxThreads)
+    throw py::value_error(
+        fmt::format("threads={} is out of range: use 0 (all cores) to {}", arguments.threads, kMaxThreads));
+  RenderOverrides overrides;
+  overrides.width = arguments.width;
+  overrides.height = arguments.height;
+  overrides.samples = arguments.samples;
+  overrides.maxDepth = arguments.maxDepth;
+  overrides.shading = choiceArgument<ShadingMode>(arguments.shading, "shading", kShadingNames);
+  overrides.sampler = choiceArgument<SamplerKind>(arguments.sampler, "sampler", kSamplerNames);
+  overrides.srgb = arguments.srgb;
+  overrides.transparentBackground = arguments.transparentBackground;
+  overrides.edges = arguments.edges.value_or(false);
+  overrides.samplesName = "samples";
+  return overrides;
+}
+
+PythonScene sceneOf(const py::object& target) {
+  if (py::isinstance<Mesh>(target)) return quickLookOf(target.cast<std::shared_ptr<Mesh>>());
+  if (py::isinstance<PythonScene>(target)) return target.cast<PythonScene>();
+  throw py::type_error(fmt::format("render takes a lancer.Scene or a lancer.Mesh, not {}",
+                                   py::repr(py::type::of(target)).cast<std::string>()));
+}
+
+InterruptibleRender::InterruptibleRender(int threads, bool progress) {
+  options.threads = threads;
+  options.cancel = &cancel_;
+  options.progressInterval = 0.05;  // how often Python's signal handlers get a chance to run
+  options.onProgress = [this, progress](const RenderProgress& p) {
+    if (progress) printProgress(p);
+    if (cancel_.load()) return;
+    const py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) {
+      cancel_.store(true);
+      // Kept until the render returns on this thread: the error indicator is the thread's own.
+      pending_ = std::make_unique<py::error_already_set>();
+    }
+  };
+  progress_ = progress;
+}
+
+void InterruptibleRender::finish() {
+  if (progress_) std::fputc('\n', stderr);
+  if (pending_) {
+    const py::error_already_set error = *pending_;
+    pending_.reset();
+    throw error;
+  }
+}
+
+PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides, int threads) {
+  applyRenderOverrides(scene.description, overrides, scene.quickLookMesh.get());
+  const RenderSettings& settings = scene.description.render;
+  requireMemory(saturatingProduct(
+                    static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height),
+                    sizeof(Rgba) + 4),
+                SourceLocation{scene.description.path},
+                fmt::format("a {}x{} image", settings.width, settings.height));
+  PreparedRender prepared = [&] {
+    py::gil_scoped_release release;
+    std::vector<Mesh> meshes;
+    if (scene.quickLookMesh) meshes.push_back(*scene.quickLookMesh);
+    Scene built = meshes.empty() ? buildScene(scene.description, threads)
+                                 : buildScene(scene.description, std::move(meshes), threads);
+    Accelerator accelerator = buildSceneAccelerator(built, threads);
+    return PreparedRender{std::move(scene.description), std::move(built), std::move(accelerator)};
+  }();
+  for (const std::string& warning : sceneWarnings(prepared.scene))
+    if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
+  return prepared;
+}
+
+void bindRender(py::module_& module) {
+  module.def(
+      "_render",
+      [](const py::object& target, const RenderArguments& arguments, bool linearFloat) {
+        const RenderOverrides overrides = renderOverridesFromArguments(arguments);
+        PreparedRender prepared = prepareRender(sceneOf(target), overrides, arguments.threads);
+        const RenderSettings& settings = prepared.description.render;
+        const Camera camera = makeCamera(prepared.description.camera, prepared.scene, settings);
+        const Renderer renderer(prepared.scene, prepared.accelerator, camera, settings);
+        InterruptibleRender render(arguments.threads, arguments.progress);
+        RenderStats stats;
+        Image image;
+        {
+          py::gil_scoped_release release;
+          image = renderer.renderImage(render.options, &stats);
+        }
+        render.finish();
+        py::dict info;
+        info["srgb"] = settings.srgb;
+        info["seconds"] = stats.seconds;
+        info["rays"] = stats.rays;
+        info["samples_per_pixel"] = stats.samplesPerPixel;
+        return py::make_tuple(toArray(image, settings, linearFloat), info);
+      },
+      py::arg("target"), py::arg("arguments"), py::arg("linear_float"));
+
+  py::class_<RenderArguments>(module, "_RenderArguments")
+      .def(py::init<>())
+      .def_readwrite("width", &RenderArguments::width)
+      .def_readwrite("height", &RenderArguments::height)
+      .def_readwrite("samples", &RenderArguments::samples)
+      .def_readwrite("max_depth", &RenderArguments::maxDepth)
+      .def_readwrite("shading", &RenderArguments::shading)
+      .def_readwrite("sampler", &RenderArguments::sampler)
+      .def_readwrite("srgb", &RenderArguments::srgb)
+      .def_readwrite("transparent_background", &RenderArguments::transparentBackground)
+      .def_readwrite("edges", &RenderArguments::edges)
+      .def_readwrite("threads", &RenderArguments::threads)
+      .def_readwrite("progress", &RenderArguments::progress);
+}
+
+}  // namespace lancer::python

@@ -1,0 +1,167 @@
+// lancer.Scene (a scene file as `lancer render` reads it, or the quick look of a mesh) and
+// lancer.Camera (the scene file's [camera] keys).
+#include <pybind11/stl.h>
+
+#include <fmt/format.h>
+
+#include <map>
+#include "bindings.hpp"
+
+#include "lancer/mesh/nothing_to_draw.hpp"
+#include "lancer/scene/gmsh_view.hpp"
+#include "lancer/scene/quick_look.hpp"
+#include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/scene_loader.hpp"
+
+namespace lancer::python {
+namespace {
+
+using Triple = std::array<double, 3>;
+
+Vec3d toVec(const Triple& t) { return {t[0], t[1], t[2]}; }
+Triple toTriple(const Vec3d& v) { return {v.x, v.y, v.z}; }
+
+std::optional<UpAxis> upAxisArgument(const std::optional<std::string>& up) {
+  if (!up) return std::nullopt;
+  const std::optional<UpAxis> axis = parseUpAxis(*up);
+  if (!axis) throw py::value_error(fmt::format("up='{}' is not an axis: use x, y, z, -x, -y or -z", *up));
+  return axis;
+}
+
+Projection projectionArgument(const std::string& name) {
+  const auto projection = enumFromName<Projection>(kProjectionNames, name);
+  if (!projection)
+    throw py::value_error(fmt::format("projection='{}': use 'perspective' or 'orthographic'", name));
+  return *projection;
+}
+
+CameraSettings makeCameraSettings(const std::optional<Triple>& position, const std::optional<Triple>& lookAt,
+                                  const Triple& up, double fov, const std::string& projection,
+                                  const std::optional<double>& viewHeight) {
+  CameraSettings camera;
+  if (position) camera.position = toVec(*position);
+  if (lookAt) camera.lookAt = toVec(*lookAt);
+  camera.up = toVec(up);
+  if (!(fov > 0 && fov < 180))
+    throw py::value_error(fmt::format("fov={} degrees: use a value in (0, 180)", fov));
+  camera.fovDegrees = fov;
+  camera.projection = projectionArgument(projection);
+  if (viewHeight && !(*viewHeight > 0))
+    throw py::value_error(fmt::format("view_height={}: use a positive height in world units", *viewHeight));
+  camera.viewHeight = viewHeight;
+  if (camera.position && camera.lookAt && *camera.position == *camera.lookAt)
+    throw py::value_error("position and look_at are the same point: the camera would look nowhere");
+  if (!(dot(camera.up, camera.up) > 0))
+    throw py::value_error("up is the zero vector: give the screen's up direction");
+  return camera;
+}
+
+std::string describeCamera(const CameraSettings& camera) {
+  if (camera.gmshView) return fmt::format("lancer.Camera.from_gmsh_file('{}')", camera.gmshView->source);
+  auto vec = [](const std::optional<Vec3d>& v) {
+    return v ? fmt::format("({:g}, {:g}, {:g})", v->x, v->y, v->z) : std::string("None");
+  };
+  return fmt::format(
+      "lancer.Camera(position={}, look_at={}, up=({:g}, {:g}, {:g}), fov={:g}, projection='{}', "
+      "view_height={})",
+      vec(camera.position), vec(camera.lookAt), camera.up.x, camera.up.y, camera.up.z, camera.fovDegrees,
+      kProjectionNames[static_cast<int>(camera.projection)],
+      camera.viewHeight ? fmt::format("{:g}", *camera.viewHeight) : "None");
+}
+
+}  // namespace
+
+PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh, std::optional<UpAxis> up) {
+  if (const std::string reason = nothingToDrawReason(*mesh); !reason.empty())
+    throw InputError(SourceLocation{mesh->source.path}, "nothing to draw: " + reason);
+  PythonScene scene{quickLookScene(mesh->source.path, *mesh, up), std::move(mesh)};
+  return scene;
+}
+
+PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh) {
+  return quickLookOf(std::move(mesh), std::nullopt);
+}
+
+void bindScene(py::module_& module) {
+  py::class_<CameraSettings>(module, "Camera",
+                             "Where the camera is and how it projects; None: framed automatically")
+      .def(py::init(&makeCameraSettings), py::kw_only(), py::arg("position") = py::none(),
+           py::arg("look_at") = py::none(), py::arg("up") = Triple{0, 1, 0}, py::arg("fov") = 40.0,
+           py::arg("projection") = "perspective", py::arg("view_height") = py::none())
+      .def_property_readonly("position",
+                             [](const CameraSettings& c) {
+                               return c.position ? std::optional<Triple>(toTriple(*c.position))
+                                                 : std::nullopt;
+                             })
+      .def_property_readonly("look_at",
+                             [](const CameraSettings& c) {
+                               return c.lookAt ? std::optional<Triple>(toTriple(*c.lookAt)) : std::nullopt;
+                             })
+      .def_property_readonly("up", [](const CameraSettings& c) { return toTriple(c.up); })
+      .def_property_readonly("fov", [](const CameraSettings& c) { return c.fovDegrees; })
+      .def_property_readonly("projection",
+                             [](const CameraSettings& c) {
+                               return std::string(kProjectionNames[static_cast<int>(c.projection)]);
+                             })
+      .def_property_readonly("view_height", [](const CameraSettings& c) { return c.viewHeight; })
+      .def_property_readonly(
+          "gmsh_view", [](const CameraSettings& c) { return c.gmshView.has_value(); },
+          "True for a camera that reproduces a gmsh view (from_gmsh, from_gmsh_file)")
+      .def_static(
+          "from_gmsh_file",
+          [](const std::string& path) {
+            CameraSettings camera;
+            camera.gmshView = readGmshView(path);
+            return camera;
+          },
+          py::arg("path"), "The view of a gmsh options file (File > Save Model Options writes part.msh.opt)")
+      .def("__repr__", &describeCamera);
+  module.def(
+      "_camera_from_gmsh_options",
+      [](const std::map<std::string, double>& options) {
+        CameraSettings camera;
+        camera.gmshView = gmshViewFromOptions(
+            [&](const std::string& name) -> std::optional<double> {
+              const auto found = options.find(name);
+              return found == options.end() ? std::nullopt : std::optional<double>(found->second);
+            },
+            "gmsh");
+        return camera;
+      },
+      py::arg("options"));
+
+  py::class_<PythonScene>(module, "Scene", "A scene: a scene file, or the quick look of a mesh")
+      .def_static(
+          "load",
+          [](const std::string& path) {
+            py::gil_scoped_release release;
+            return PythonScene{loadScene(path), nullptr};
+          },
+          py::arg("path"), "Reads a scene file (.toml) exactly as `lancer render` does")
+      .def_static(
+          "quick_look",
+          [](std::shared_ptr<const Mesh> mesh, const std::optional<std::string>& up) {
+            return quickLookOf(std::move(mesh), upAxisArgument(up));
+          },
+          py::arg("mesh"), py::arg("up") = py::none(),
+          "The scene `lancer render part.msh` makes of a bare mesh (up: 'x', 'y', 'z', '-x', ...; None: "
+          "guessed)")
+      .def_property(
+          "camera", [](const PythonScene& scene) { return scene.description.camera; },
+          [](PythonScene& scene, const CameraSettings& camera) { scene.description.camera = camera; })
+      .def_property_readonly("path", [](const PythonScene& scene) { return scene.description.path; })
+      .def_property_readonly("width", [](const PythonScene& scene) { return scene.description.render.width; })
+      .def_property_readonly("height",
+                             [](const PythonScene& scene) { return scene.description.render.height; })
+      .def_property_readonly(
+          "mesh", [](const PythonScene& scene) { return scene.quickLookMesh; },
+          "The quick look's mesh; None for a scene file")
+      .def("__repr__", [](const PythonScene& scene) {
+        return fmt::format("<lancer.Scene '{}': {} mesh{}, {} light{}, {}x{}>", scene.description.path,
+                           scene.description.meshes.size(), scene.description.meshes.size() == 1 ? "" : "es",
+                           scene.description.lights.size(), scene.description.lights.size() == 1 ? "" : "s",
+                           scene.description.render.width, scene.description.render.height);
+      });
+}
+
+}  // namespace lancer::python

@@ -1,0 +1,94 @@
+#include "lancer/image/animation_writer.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cmath>
+
+#include "lancer/image/atomic_file.hpp"
+#include "lancer/util/input_error.hpp"
+
+namespace lancer {
+namespace {
+
+// A global palette needs every frame before the first can be written, so the GIF writer keeps them
+// all (3 bytes per pixel). Refused up front when that would take more than half the machine's memory.
+void checkGlobalPaletteMemory(int frames, int width, int height) {
+  const double bytes = 3.0 * frames * width * height;
+  const double memory =
+      static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
+  if (memory > 0 && bytes > 0.5 * memory)
+    throw InputError(
+        SourceLocation{"--palette"},
+        fmt::format("a global GIF palette keeps every frame until the end: {} frames of {}x{} need "
+                    "{:.1f} GiB, more than half of this machine's {:.1f} GiB; use --palette per-frame "
+                    "(frames are then written as they come), fewer frames or a smaller size",
+                    frames, width, height, bytes / (1 << 30), memory / (1 << 30)));
+}
+
+}  // namespace
+
+AnimationWriter::AnimationWriter(const std::string& output, int width, int height,
+                                 const AnimationOutputOptions& options)
+    : pattern_(parseFramePattern(output)), still_(options.still) {
+  const ImageFormat format = imageFormatFromPath(pattern_ ? pattern_->name(0) : output);
+  const bool animatedGif = !pattern_ && format == ImageFormat::Gif;
+  if (!animatedGif && !options.dither.empty())
+    throw InputError(SourceLocation{"--dither"}, "--dither applies to an animated .gif only");
+  if (!animatedGif && !options.palette.empty())
+    throw InputError(SourceLocation{"--palette"}, "--palette applies to an animated .gif only");
+  if (pattern_ && options.loop)
+    throw InputError(SourceLocation{"--loop"},
+                     "--loop applies to an animated .gif or .png, not to numbered frames");
+  const int loop = options.loop.value_or(kGifLoopForever);
+  if (pattern_) {
+    AtomicFileWriter probe(pattern_->name(0));  // a bad folder fails now, not after the first frame
+  } else if (format == ImageFormat::Gif) {
+    GifOptions gifOptions;
+    gifOptions.fps = options.fps;
+    gifOptions.loopCount = loop;
+    gifOptions.curve = still_.curve;
+    gifOptions.palette = options.palette == "per-frame" ? GifPalette::PerFrame : GifPalette::Global;
+    gifOptions.dither =
+        options.dither == "none"
+            ? Dither::None
+            : (options.dither == "floyd-steinberg" ? Dither::FloydSteinberg : Dither::Ordered);
+    if (gifOptions.palette == GifPalette::Global) checkGlobalPaletteMemory(options.frames, width, height);
+    gif_.emplace(output, width, height, gifOptions);  // fails now on a bad folder
+    if (std::abs(gifActualFrameRate(options.fps) - options.fps) > 1e-9)
+      frameRateNote_ = fmt::format(
+          "lancer: GIF delays are whole 1/100 s: {:g} fps plays at {:.4g} fps (a delay of {}/100 s)",
+          options.fps, gifActualFrameRate(options.fps), gifFrameDelay(options.fps));
+  } else if (format == ImageFormat::Png) {
+    ApngOptions apngOptions;
+    apngOptions.fps = options.fps;
+    // --loop counts repeats after the first showing (GIF's meaning); APNG counts plays.
+    apngOptions.loopCount = loop == kGifLoopForever ? 0 : (loop == kGifPlayOnce ? 1 : loop + 1);
+    apngOptions.curve = still_.curve;
+    apngOptions.alpha = options.transparentBackground;
+    apng_.emplace(output, width, height, options.frames, apngOptions);
+  } else {
+    throw InputError(
+        SourceLocation{output},
+        "an animation is written as .gif, as an animated .png, or as numbered frames with %04d in the "
+        "name (frame_%04d.png, .bmp or .ppm)");
+  }
+}
+
+void AnimationWriter::addFrame(int frame, const Image& image) {
+  if (gif_) {
+    gif_->addFrame(image);
+  } else if (apng_) {
+    apng_->addFrame(image);
+  } else {
+    frames_.write(pattern_->name(frame), image, still_);
+  }
+}
+
+void AnimationWriter::finish() {
+  if (gif_) gif_->finish();
+  if (apng_) apng_->finish();
+  if (pattern_) frames_.publish();
+}
+
+}  // namespace lancer

@@ -1,0 +1,48 @@
+// Where `lancer animate` (and lancer.animate in Python) puts its frames: an animated GIF, an animated
+// PNG, or numbered still frames ("turn_%04d.png"), chosen by the output's name. Every kind is
+// published only when finished: an interrupted or failed animation leaves existing files as they were.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "lancer/image/apng_writer.hpp"
+#include "lancer/image/frame_sequence.hpp"
+#include "lancer/image/gif_writer.hpp"
+#include "lancer/image/image_io.hpp"
+
+namespace lancer {
+
+struct AnimationOutputOptions {
+  int frames = 36;
+  double fps = 12;
+  std::optional<int> loop;  // repeats after the first showing: 0 forever (default), -1 play once
+  std::string dither;       // GIF: "ordered" (default), "floyd-steinberg" or "none"
+  std::string palette;      // GIF: "global" (default) or "per-frame"
+  ImageWriteOptions still;  // the curve and alpha of the scene's still images
+  bool transparentBackground = false;
+};
+
+class AnimationWriter {
+ public:
+  // Checks the name and the options against each other and opens the output now, so that a bad
+  // folder or a wrong extension fails before the first frame is rendered. Throws InputError.
+  AnimationWriter(const std::string& output, int width, int height, const AnimationOutputOptions& options);
+
+  void addFrame(int frame, const Image& image);
+  // After the last frame: publishes the file, or every numbered frame at once.
+  void finish();
+
+  // What the GIF's whole-1/100-s delays make of the frame rate, when they change it ("" otherwise).
+  const std::string& frameRateNote() const { return frameRateNote_; }
+
+ private:
+  std::optional<FramePattern> pattern_;
+  std::optional<GifWriter> gif_;
+  std::optional<ApngWriter> apng_;
+  StagedFrames frames_;
+  ImageWriteOptions still_;
+  std::string frameRateNote_;
+};
+
+}  // namespace lancer

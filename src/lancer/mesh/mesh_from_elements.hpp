@@ -1,0 +1,41 @@
+// A Mesh from nodes and gmsh elements held in memory (numpy arrays, the gmsh API), built by the same
+// assembler as the .msh reader: second-order faces split, volumes turned into their skin and
+// interfaces, degenerate faces dropped, nodes recentred, so an array gives the mesh its file gives.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "lancer/mesh/mesh.hpp"
+
+namespace lancer {
+
+// Elements of one gmsh type (2 triangle, 3 quad, 4 tetrahedron, ...: element_types.hpp) in one
+// physical group and elementary entity; `nodes` holds nodeCount 0-based node indices per element.
+struct ElementBlock {
+  int type = 2;
+  int dimension = 2;
+  std::int32_t physical = 0;  // 0: in no physical group
+  std::int32_t entity = 0;
+  std::span<const std::uint32_t> nodes;
+};
+
+// Nodal values of one field (a gmsh view's step): components values per node, in node order.
+struct NodeFieldInput {
+  std::string name;
+  int components = 1;
+  std::span<const double> values;
+};
+
+// The caller has checked the input (finite coordinates, indices below points.size(), known types
+// with whole elements): this trusts it. `name` is the mesh's name in messages.
+Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBlock> blocks,
+                      std::vector<PhysicalGroup> namedGroups, const std::string& name,
+                      std::span<const NodeFieldInput> nodeFields = {});
+
+// Nodes per element of a gmsh element type, 0 for a type lancer does not know.
+int elementNodeCount(int type);
+
+}  // namespace lancer

@@ -1,0 +1,57 @@
+// The view a gmsh user set up in gmsh's GUI (the General.* options "File > Save Model Options" writes
+// to part.msh.opt, or the live values of the gmsh API) and the camera that reproduces gmsh's
+// projection of the model: its rotation (trackball quaternion or Euler angles), translation, scale,
+// and orthographic or gmsh's perspective (drawContext::initProjection and initPosition, gmsh 4.8).
+#pragma once
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "lancer/math/aabb.hpp"
+#include "lancer/math/vec3.hpp"
+
+namespace lancer {
+
+// gmsh's defaults where the options file says nothing (it saves only the options that changed).
+struct GmshView {
+  std::string source;  // the options file, or "gmsh" for the live session, for messages
+  bool trackball = true;
+  std::array<double, 4> quaternion{0, 0, 0, 1};  // General.TrackballQuaternion0..3
+  Vec3d rotationDegrees{0, 0, 0};                // General.RotationX/Y/Z, used when Trackball = 0
+  Vec3d translation{0, 0, 0};                    // General.TranslationX/Y/Z
+  Vec3d scale{1, 1, 1};                          // General.ScaleX/Y/Z
+  bool orthographic = true;                      // General.Orthographic
+  double clipFactor = 5;                         // General.ClipFactor: sets the perspective eye distance
+  double displayBorderFactor = 0.2;              // General.DisplayBorderFactor: margin around the model
+  // The graphics area: General.GraphicsWidth less the module menu beside it, General.GraphicsHeight.
+  double graphicsWidth = 800, graphicsHeight = 600, menuWidth = 200;
+  bool moduleMenuBeside = true;  // General.ShowModuleMenu and not General.DetachedMenu
+};
+
+// Looks up one General.* option by its name without "General." (e.g. "RotationX"); nullopt: unset.
+using GmshOptionLookup = std::function<std::optional<double>(const std::string& name)>;
+GmshView gmshViewFromOptions(const GmshOptionLookup& option, const std::string& source);
+
+// Reads the General.* numbers of a gmsh options file (`General.RotationX = 30; // comment`); other
+// lines are skipped, as gmsh would apply them to other things. Throws InputError (file:line) for a
+// file that cannot be read or a view option whose value is not a number.
+GmshView readGmshView(const std::string& path);
+
+// The camera of that view for a model with these world bounds (what gmsh frames: its bounding box):
+// where it is, where it looks, its up, and either the orthographic window height or the perspective
+// field of view with the window's off-axis shift (gmsh's perspective eye sits at the model's centre
+// of gravity in view space while the window stays centred: tan units at distance 1).
+struct GmshCamera {
+  bool orthographic = true;
+  Vec3d position, lookAt, up;
+  double viewHeight = 1;   // orthographic: world units
+  double fovDegrees = 40;  // perspective: vertical
+  double shiftX = 0, shiftY = 0;
+  // The graphics area's aspect (width / height): gmsh's window, for an image of the same shape.
+  double aspect = 4.0 / 3.0;
+};
+GmshCamera gmshViewCamera(const GmshView& view, const Aabbd& worldBounds);
+
+}  // namespace lancer

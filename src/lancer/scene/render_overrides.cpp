@@ -1,0 +1,39 @@
+#include "lancer/scene/render_overrides.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "lancer/scene/quick_look.hpp"
+
+namespace lancer {
+
+void applyRenderOverrides(SceneDescription& description, const RenderOverrides& overrides,
+                          const Mesh* quickLookMesh) {
+  RenderSettings& settings = description.render;
+  if (overrides.width) settings.width = *overrides.width;
+  if (overrides.height) settings.height = *overrides.height;
+  if (overrides.maxDepth) settings.maxDepth = *overrides.maxDepth;
+  if (overrides.srgb) settings.srgb = *overrides.srgb;
+  if (overrides.transparentBackground) settings.transparentBackground = *overrides.transparentBackground;
+  if (overrides.sampler) settings.sampler = *overrides.sampler;
+  if (overrides.samples) settings.samples = *overrides.samples;
+  // The quick look's fill sits at the automatic camera, whose distance depends on the image's aspect.
+  if (quickLookMesh && (overrides.width || overrides.height))
+    placeQuickLookLights(description, *quickLookMesh);
+  const int root = static_cast<int>(std::lround(std::sqrt(settings.samples)));
+  if (settings.sampler != SamplerKind::Adaptive && root * root != settings.samples)
+    throw InputError(
+        SourceLocation{overrides.samplesName},
+        fmt::format("{} samples cannot form an n x n grid: use a perfect square (1, 4, 9, 16, ...)",
+                    settings.samples));
+  if (overrides.edges)
+    for (MeshInstance& mesh : description.meshes)
+      if (!mesh.edges) mesh.edges = EdgeSettings{};
+  if (overrides.shading) {
+    settings.shading = *overrides.shading;
+    for (MeshInstance& mesh : description.meshes) mesh.shading.reset();
+  }
+}
+
+}  // namespace lancer

@@ -1,0 +1,32 @@
+// Settings a caller puts over a scene's own (the CLI's --width, --samples, --shading, ...; the Python
+// module's keyword arguments): one function applies them, so both give the same image.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "lancer/mesh/mesh.hpp"
+#include "lancer/scene/scene_description.hpp"
+#include "lancer/scene/up_axis.hpp"
+
+namespace lancer {
+
+// Unset members keep the scene's value.
+struct RenderOverrides {
+  std::optional<int> width, height, samples, maxDepth;
+  std::optional<ShadingMode> shading;  // for every mesh (their own shading keys are dropped)
+  std::optional<SamplerKind> sampler;
+  std::optional<bool> srgb;
+  std::optional<bool> transparentBackground;
+  bool edges = false;  // draw element edges on every mesh that does not set its own
+  // Names the samples check's messages give the value (the CLI's "--samples", Python's "samples").
+  std::string samplesName = "--samples";
+};
+
+// Applies `overrides` to `description`. `quickLookMesh`: the mesh of a quick-look scene
+// (quickLookScene), whose lights are placed again when the image size changes. Throws InputError for
+// a sample count the sampler cannot use.
+void applyRenderOverrides(SceneDescription& description, const RenderOverrides& overrides,
+                          const Mesh* quickLookMesh = nullptr);
+
+}  // namespace lancer

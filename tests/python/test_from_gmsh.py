@@ -1,0 +1,74 @@
+"""lancer.from_gmsh: a live gmsh model gives the mesh (and the image) its .msh file gives."""
+
+import numpy as np
+import pytest
+
+import lancer
+
+import gmsh  # python3-gmsh: CMake checks it is there when the tests are built
+
+
+@pytest.fixture
+def session():
+    gmsh.initialize(["lancer-test"], readConfigFiles=False)
+    gmsh.option.setNumber("General.Terminal", 0)
+    yield gmsh
+    gmsh.finalize()
+
+
+def make_box(dim):
+    gmsh.model.add("box")
+    gmsh.model.occ.addBox(0, 0, 0, 1, 2, 3)
+    gmsh.model.occ.synchronize()
+    gmsh.option.setNumber("Mesh.MeshSizeMax", 0.5)
+    if dim == 2:
+        gmsh.model.addPhysicalGroup(2, [1, 2], 7)
+        gmsh.model.setPhysicalName(2, 7, "ends")
+        gmsh.model.addPhysicalGroup(2, [3, 4, 5, 6], 8)
+    else:
+        gmsh.model.addPhysicalGroup(3, [1], 1)
+        gmsh.model.setPhysicalName(3, 1, "solid")
+    gmsh.model.mesh.generate(dim)
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_live_model_is_its_file(session, tmp_path, dim):
+    make_box(dim)
+    live = lancer.from_gmsh(dim=dim)
+    path = tmp_path / "box.msh"
+    gmsh.option.setNumber("Mesh.Binary", 1)  # the coordinates exactly (text keeps 16 digits)
+    gmsh.write(str(path))
+    saved = lancer.read_msh(str(path))
+    assert live.faces.shape == saved.faces.shape and live.faces.shape[0] > 0
+    assert np.array_equal(live.faces, saved.faces)
+    assert np.array_equal(live.points, saved.points)
+    assert np.array_equal(live.groups, saved.groups)
+    assert live.group_names == saved.group_names
+    assert np.array_equal(lancer.render(live, width=48, height=36), lancer.render(saved, width=48, height=36))
+
+
+def test_view_node_data_becomes_a_field(session):
+    make_box(2)
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    view = gmsh.view.add("height")
+    gmsh.view.addModelData(view, 0, "box", "NodeData", list(tags), [[z] for z in coords[2::3]])
+    assert lancer.from_gmsh().fields == ["height"]
+
+
+def test_without_a_mesh(session):
+    gmsh.model.add("empty")
+    gmsh.model.occ.addBox(0, 0, 0, 1, 1, 1)
+    gmsh.model.occ.synchronize()
+    with pytest.raises(ValueError, match=r"no mesh nodes: call gmsh.model.mesh.generate\(2\)"):
+        lancer.from_gmsh()
+    with pytest.raises(ValueError, match="dim=4"):
+        lancer.from_gmsh(dim=4)
+
+
+def test_gmsh_is_not_imported_by_import_lancer():
+    import subprocess
+    import sys
+
+    code = "import sys, lancer; print('gmsh' in sys.modules)"
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert result.stdout.strip() == "False"

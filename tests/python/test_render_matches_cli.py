@@ -1,0 +1,95 @@
+"""lancer.render gives the CLI's bytes: for a mesh's quick look, a scene file, with overrides, with
+sRGB and transparency, and for animate's GIF."""
+
+import numpy as np
+import pytest
+
+import lancer
+from conftest import data, run_cli
+
+BRACKET = data("tests", "data", "render", "bracket_coarse.msh")
+
+
+def rendered_bytes(tmp_path, image, name="python.png"):
+    path = tmp_path / name
+    image.save(path)
+    return path.read_bytes()
+
+
+@pytest.mark.parametrize("extension", [".png", ".bmp", ".ppm"])
+def test_mesh_quick_look_is_the_cli_image(tmp_path, extension):
+    cli_path = tmp_path / f"cli{extension}"
+    run_cli("render", BRACKET, "-o", cli_path, "--width", 96, "--height", 72, "--quiet")
+    image = lancer.render(lancer.read_msh(str(BRACKET)), width=96, height=72)
+    assert isinstance(image, lancer.Image) and isinstance(image, np.ndarray)
+    assert image.shape == (72, 96, 3) and image.dtype == np.uint8
+    assert rendered_bytes(tmp_path, image, f"python{extension}") == cli_path.read_bytes()
+
+
+def test_scene_file_is_the_cli_image(tmp_path):
+    scene_file = data("tests", "data", "render", "bracket_ortho.toml")
+    cli_path = tmp_path / "cli.png"
+    run_cli("render", scene_file, "-o", cli_path, "--width", 80, "--height", 60, "--samples", 4, "--quiet")
+    image = lancer.render(lancer.Scene.load(str(scene_file)), width=80, height=60, samples=4)
+    assert rendered_bytes(tmp_path, image) == cli_path.read_bytes()
+
+
+def test_overrides_are_the_cli_options(tmp_path):
+    cli_path = tmp_path / "cli.png"
+    run_cli("render", BRACKET, "-o", cli_path, "--width", 64, "--height", 48, "--shading", "flat", "--srgb",
+            "--edges", "--samples", 4, "--quiet")
+    image = lancer.render(lancer.read_msh(str(BRACKET)), width=64, height=48, shading="flat", srgb=True,
+                          edges=True, samples=4)
+    assert image.srgb
+    assert rendered_bytes(tmp_path, image) == cli_path.read_bytes()
+
+
+def test_transparent_scene_gives_rgba(tmp_path):
+    scene_file = data("examples", "shadow_catcher.toml")
+    cli_path = tmp_path / "cli.png"
+    run_cli("render", scene_file, "-o", cli_path, "--width", 64, "--height", 48, "--quiet")
+    image = lancer.render(lancer.Scene.load(str(scene_file)), width=64, height=48)
+    assert image.shape == (48, 64, 4)
+    assert rendered_bytes(tmp_path, image) == cli_path.read_bytes()
+
+
+def test_linear_float_is_what_the_bytes_encode():
+    mesh = lancer.read_msh(str(BRACKET))
+    linear = lancer.render(mesh, width=40, height=30, dtype="float32")
+    encoded = lancer.render(mesh, width=40, height=30)
+    assert linear.shape == (30, 40, 4) and linear.dtype == np.float32
+    expected = np.round(255 * np.clip(linear[..., :3], 0, 1)).astype(np.uint8)
+    assert np.array_equal(expected, np.asarray(encoded))
+    assert np.all(linear[..., 3] == 1)
+
+
+def test_repr_png_is_a_png():
+    image = lancer.render(lancer.read_msh(str(BRACKET)), width=32, height=24)
+    assert image._repr_png_()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_arrays_give_the_file_image(tmp_path):
+    mesh = lancer.read_msh(str(BRACKET))
+    again = lancer.Mesh(mesh.points, mesh.faces, mesh.groups, mesh.group_names, entities=mesh.entities,
+                        name=str(BRACKET))
+    assert again.faces.shape == mesh.faces.shape
+    first = lancer.render(mesh, width=64, height=48)
+    second = lancer.render(again, width=64, height=48)
+    assert np.array_equal(first, second)
+
+
+def test_animate_is_the_cli_gif(tmp_path):
+    cli_path = tmp_path / "cli.gif"
+    run_cli("animate", BRACKET, "-o", cli_path, "--frames", 3, "--width", 48, "--height", 36, "--quiet")
+    python_path = tmp_path / "python.gif"
+    lancer.animate(lancer.read_msh(str(BRACKET)), python_path, frames=3, width=48, height=36)
+    assert python_path.read_bytes() == cli_path.read_bytes()
+
+
+def test_camera_set_from_python_moves_the_view():
+    scene = lancer.Scene.quick_look(lancer.read_msh(str(BRACKET)))
+    before = lancer.render(scene, width=48, height=36)
+    scene.camera = lancer.Camera(position=(0, 0, 20), look_at=(0, 0, 0), up=(0, 1, 0), fov=35)
+    assert tuple(scene.camera.position) == (0, 0, 20) and scene.camera.fov == 35
+    after = lancer.render(scene, width=48, height=36)
+    assert not np.array_equal(before, after)
