@@ -1,21 +1,21 @@
 // `lancer animate SCENE.toml -o turntable.gif`: the camera or a light orbits the scene; one
 // accelerator build serves every frame. Output: an animated GIF, an animated PNG, or numbered frames.
+// The frames are work items: one process renders them all, the ranks of an MPI job share them, or a
+// job-array task renders its share (--shard) as numbered frames for `lancer assemble`.
 #include <fmt/format.h>
-
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <optional>
 
+#include "animation_output.hpp"
+#include "command_distribution.hpp"
 #include "commands.hpp"
 #include "frame_sequence.hpp"
-#include "lancer/image/apng_writer.hpp"
-#include "lancer/image/atomic_file.hpp"
-#include "lancer/image/gif_writer.hpp"
-#include "lancer/image/image_io.hpp"
+#include "lancer/cluster/shard.hpp"
 #include "lancer/render/animation.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/util/stopwatch.hpp"
 #include "scene_setup.hpp"
 
 namespace lancer::cli {
@@ -27,9 +27,10 @@ struct AnimateCommandOptions {
   std::optional<int> frames;
   std::optional<double> fps;
   std::string orbit;
-  std::optional<int> loop;  // default: forever
-  std::string dither;       // default: ordered
-  std::string palette;      // default: global
+  AnimationOutputOptions writer;  // --loop, --dither, --palette
+  std::string shard;              // --shard I/N or auto
+  std::string frameRange;         // --frame-range A-B
+  bool skipExisting = false;
   SceneOverrides overrides;
 };
 
@@ -51,22 +52,40 @@ int parseOrbit(const std::string& orbit, std::size_t lightCount) {
                   orbit, lightCount - 1, lightCount, lightCount == 1 ? "" : "s"));
 }
 
-// A global palette needs every frame before the first can be written, so the GIF writer keeps them
-// all (3 bytes per pixel). Refused up front when that would take more than half the machine's memory.
-void checkGlobalPaletteMemory(int frames, int width, int height) {
-  const double bytes = 3.0 * frames * width * height;
-  const double memory =
-      static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
-  if (memory > 0 && bytes > 0.5 * memory)
-    throw InputError(
-        SourceLocation{"--palette"},
-        fmt::format("a global GIF palette keeps every frame until the end: {} frames of {}x{} need "
-                    "{:.1f} GiB, more than half of this machine's {:.1f} GiB; use --palette per-frame "
-                    "(frames are then written as they come), fewer frames or a smaller size",
-                    frames, width, height, bytes / (1 << 30), memory / (1 << 30)));
+// The frames this process renders: all of them, or a job-array task's share (--shard, --frame-range),
+// less those already on disk (--skip-existing).
+std::vector<int> framesToRender(const AnimateCommandOptions& options, const AnimationOutput& out,
+                                const AnimationFormat& format) {
+  const bool sharded = !options.shard.empty() || !options.frameRange.empty();
+  if ((sharded || options.skipExisting) && !out.pattern())
+    throw InputError(SourceLocation{!options.shard.empty()        ? "--shard"
+                                    : !options.frameRange.empty() ? "--frame-range"
+                                                                  : "--skip-existing"},
+                     "--shard, --frame-range and --skip-existing write numbered frames: give -o "
+                     "frames/%04d.png, then `lancer assemble 'frames/%04d.png' -o OUT.gif`");
+  std::optional<FrameRange> range;
+  if (!options.frameRange.empty()) range = parseFrameRange(options.frameRange, format.frames);
+  ScheduledShard shard{Shard{}, "one task"};
+  if (!options.shard.empty()) shard = resolveShard(options.shard, processEnvironment());
+  std::vector<int> frames = shardFrames(format.frames, range, shard.shard);
+  if (sharded && !options.overrides.quiet)
+    std::fprintf(stderr, "lancer: task %d of %d (%s) renders frames %s\n", shard.shard.index,
+                 shard.shard.count, shard.source.c_str(), describeFrames(frames).c_str());
+  if (options.skipExisting) {
+    const std::size_t before = frames.size();
+    std::erase_if(frames, [&](int k) {
+      return completeFrameExists(out.pattern()->name(k), format.width, format.height);
+    });
+    if (!options.overrides.quiet && before != frames.size())
+      std::fprintf(stderr, "lancer: --skip-existing: %zu of %zu frames are already there\n",
+                   before - frames.size(), before);
+  }
+  return frames;
 }
 
 int runAnimate(const AnimateCommandOptions& options) {
+  const bool sharded = !options.shard.empty() || !options.frameRange.empty();
+  const std::unique_ptr<WorkDistribution> distribution = commandDistribution(sharded);
   PreparedScene prepared = prepareScene(options.input, options.overrides);
   const RenderSettings& settings = prepared.description.render;
   AnimationSettings animation = prepared.description.animation.value_or(AnimationSettings{});
@@ -80,91 +99,82 @@ int runAnimate(const AnimateCommandOptions& options) {
     throw InputError(
         SourceLocation{options.input},
         "no output: give -o FILE.gif, -o FILE.png (animated PNG) or -o frame_%04d.png (numbered frames)");
-  const std::optional<FramePattern> pattern = parseFramePattern(output);
-  const ImageWriteOptions stillOptions = imageWriteOptions(settings);
-  std::optional<GifWriter> gif;
-  std::optional<ApngWriter> apng;
-  StagedFrames frames;
-  const ImageFormat format = imageFormatFromPath(pattern ? pattern->name(0) : output);
-  const bool animatedGif = !pattern && format == ImageFormat::Gif;
-  if (!animatedGif && !options.dither.empty())
-    throw InputError(SourceLocation{"--dither"}, "--dither applies to an animated .gif only");
-  if (!animatedGif && !options.palette.empty())
-    throw InputError(SourceLocation{"--palette"}, "--palette applies to an animated .gif only");
-  if (pattern && options.loop)
-    throw InputError(SourceLocation{"--loop"},
-                     "--loop applies to an animated .gif or .png, not to numbered frames");
-  const int loop = options.loop.value_or(kGifLoopForever);
-  if (pattern) {
-    AtomicFileWriter probe(pattern->name(0));  // a bad folder fails now, not after the first frame
-  } else if (format == ImageFormat::Gif) {
-    GifOptions gifOptions;
-    gifOptions.fps = animation.fps;
-    gifOptions.loopCount = loop;
-    gifOptions.curve = stillOptions.curve;
-    gifOptions.palette = options.palette == "per-frame" ? GifPalette::PerFrame : GifPalette::Global;
-    gifOptions.dither =
-        options.dither == "none"
-            ? Dither::None
-            : (options.dither == "floyd-steinberg" ? Dither::FloydSteinberg : Dither::Ordered);
-    if (gifOptions.palette == GifPalette::Global)
-      checkGlobalPaletteMemory(animation.frames, settings.width, settings.height);
-    gif.emplace(output, settings.width, settings.height, gifOptions);  // fails now on a bad folder
-    if (!options.overrides.quiet && std::abs(gifActualFrameRate(animation.fps) - animation.fps) > 1e-9)
-      std::fprintf(stderr,
-                   "lancer: GIF delays are whole 1/100 s: %g fps plays at %.4g fps (a delay of %d/100 s)\n",
-                   animation.fps, gifActualFrameRate(animation.fps), gifFrameDelay(animation.fps));
-  } else if (format == ImageFormat::Png) {
-    ApngOptions apngOptions;
-    apngOptions.fps = animation.fps;
-    // --loop counts repeats after the first showing (GIF's meaning); APNG counts plays.
-    apngOptions.loopCount = loop == kGifLoopForever ? 0 : (loop == kGifPlayOnce ? 1 : loop + 1);
-    apngOptions.curve = stillOptions.curve;
-    apngOptions.alpha = settings.transparentBackground;
-    apng.emplace(output, settings.width, settings.height, animation.frames, apngOptions);
-  } else {
-    throw InputError(
-        SourceLocation{output},
-        "an animation is written as .gif, as an animated .png, or as numbered frames with %04d in the "
-        "name (frame_%04d.png, .bmp or .ppm)");
-  }
+  const bool talks = distribution->delivers();  // rank 0 of an MPI job, or a single process
+  AnimationFormat format;
+  format.width = settings.width;
+  format.height = settings.height;
+  format.frames = animation.frames;
+  format.fps = animation.fps;
+  format.still = imageWriteOptions(settings);
+  format.quiet = options.overrides.quiet || !talks;
+  // Every rank checks the options the same way, so that all fail alike; only rank 0 keeps a writer.
+  std::optional<AnimationOutput> out;
+  out.emplace(output, format, options.writer, /*checkOnly=*/!talks);
+  const std::vector<int> frames = framesToRender(options, *out, format);
 
-  const RenderOptions renderOptions = commandRenderOptions(options.overrides);
-  const bool progress = showProgress(options.overrides);
-  auto onProgress = [&](const AnimationProgress& p) {
-    const double done = (p.frame + p.frameProgress.fraction) / p.frames;
-    const double eta = done > 0 ? p.seconds * (1 - done) / done : 0;
-    std::fprintf(
-        stderr, "\r  frame %d/%d  %5.1f%%  %7.2f Mrays/s  ETA %6.1f s ", p.frame + 1, p.frames, 100 * done,
-        p.frameProgress.seconds > 0 ? p.frameProgress.rays / p.frameProgress.seconds * 1e-6 : 0.0, eta);
-    std::fflush(stderr);
+  RenderOptions renderOptions = commandRenderOptions(options.overrides);
+  renderOptions.threads = commandThreads(options.overrides.threads, *distribution);
+  const bool progress = talks && showProgress(options.overrides);
+  const bool alone = distribution->ranks() == 1;
+  const Stopwatch stopwatch;
+  std::uint64_t rays = 0;
+  int current = 0;  // the item (index into `frames`) being rendered here
+  RenderOptions frameOptions = renderOptions;
+  if (progress && alone) {
+    frameOptions.onProgress = [&](const RenderProgress& p) {
+      const double done = (current + p.fraction) / static_cast<double>(frames.size());
+      const double seconds = stopwatch.seconds();
+      const double eta = done > 0 ? seconds * (1 - done) / done : 0;
+      std::fprintf(stderr, "\r  frame %d/%zu  %5.1f%%  %7.2f Mrays/s  ETA %6.1f s ", current + 1,
+                   frames.size(), 100 * done, p.seconds > 0 ? p.rays / p.seconds * 1e-6 : 0.0, eta);
+      std::fflush(stderr);
+    };
+  }
+  DistributedWork work;
+  work.itemCount = static_cast<int>(frames.size());
+  work.window = 2 * distribution->ranks() + 2;
+  work.cancel = renderOptions.cancel;
+  work.render = [&](int item) {
+    current = item;
+    RenderStats stats;
+    Image image = renderAnimationFrame(prepared.scene, prepared.accelerator, prepared.description, animation,
+                                       frames[static_cast<std::size_t>(item)], frameOptions, &stats);
+    rays += stats.rays;
+    return image;
   };
-  const AnimationStats stats = renderAnimation(
-      prepared.scene, prepared.accelerator, prepared.description, animation, renderOptions,
-      [&](int frame, const Image& image) {
-        if (gif) {
-          gif->addFrame(image);
-        } else if (apng) {
-          apng->addFrame(image);
-        } else {
-          frames.write(pattern->name(frame), image, stillOptions);
-        }
-      },
-      progress ? std::function<void(const AnimationProgress&)>(onProgress) : nullptr);
+  work.deliver = [&](int item, const Image& image) {
+    out->addFrame(frames[static_cast<std::size_t>(item)], image);
+  };
+  if (progress && !alone) {
+    work.onDelivered = [&](int done, int total) {
+      const double seconds = stopwatch.seconds();
+      std::fprintf(stderr, "\r  frame %d/%d on %d ranks  ETA %6.1f s ", done, total, distribution->ranks(),
+                   seconds * (total - done) / std::max(done, 1));
+      std::fflush(stderr);
+    };
+  }
+  bool finished = false;
+  try {
+    finished = distribution->run(work);
+  } catch (...) {
+    if (progress) std::fputc('\n', stderr);  // the error goes below the progress line
+    throw;
+  }
   if (progress) std::fputc('\n', stderr);
-  if (stats.cancelled)
-    return interruptedExit(output);  // the writers' destructors remove their temporary files
-  if (gif) gif->finish();
-  if (apng) apng->finish();
-  if (pattern) frames.publish();
+  if (!finished) return interruptedExit(output);  // the writers' destructors remove their temporary files
+  if (!talks) return kExitOk;
+  out->finish();
+  const double seconds = stopwatch.seconds();
   if (!options.overrides.quiet) {
+    const std::string speed = alone
+                                  ? fmt::format(", {:.2f} Mrays/s", seconds > 0 ? rays / seconds * 1e-6 : 0.0)
+                                  : fmt::format(" on {} ranks", distribution->ranks());
     std::fprintf(stderr,
-                 "%s: %d frames %dx%d, %zu faces, load %.3f s, build %.3f s (once), frames %.3f s "
-                 "(%.3f s/frame, %.2f Mrays/s)\n",
-                 output.c_str(), animation.frames, settings.width, settings.height,
-                 prepared.scene.faces.size(), prepared.loadSeconds, prepared.buildSeconds, stats.seconds,
-                 stats.seconds / animation.frames,
-                 stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0);
+                 "%s: %zu frames %dx%d, %zu faces, load %.3f s, build %.3f s (once), frames %.3f s "
+                 "(%.3f s/frame%s)\n",
+                 output.c_str(), frames.size(), settings.width, settings.height, prepared.scene.faces.size(),
+                 prepared.loadSeconds, prepared.buildSeconds, seconds,
+                 frames.empty() ? 0.0 : seconds / static_cast<double>(frames.size()), speed.c_str());
   }
   return kExitOk;
 }
@@ -185,14 +195,23 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
   command->add_option("--fps", options->fps, "Frames per second")->check(CLI::Range(0.01, 100.0));
   command->add_option("--orbit", options->orbit, "What turns: camera or light:K");
   command
-      ->add_option("--loop", options->loop,
+      ->add_option("--loop", options->writer.loop,
                    "Repeats after the first showing: 0 forever (default), -1 play once")
       ->check(CLI::Range(-1, 65535));
   command
-      ->add_option("--dither", options->dither, "GIF dithering: ordered (default), floyd-steinberg or none")
+      ->add_option("--dither", options->writer.dither,
+                   "GIF dithering: ordered (default), floyd-steinberg or none")
       ->check(CLI::IsMember({"none", "ordered", "floyd-steinberg"}));
-  command->add_option("--palette", options->palette, "GIF palette: global (default, no flicker) or per-frame")
+  command
+      ->add_option("--palette", options->writer.palette,
+                   "GIF palette: global (default, no flicker) or per-frame")
       ->check(CLI::IsMember({"global", "per-frame"}));
+  command->add_option("--shard", options->shard,
+                      "Job arrays: render only frames k with k % N == I (I/N), or take I and N from SLURM or "
+                      "mpirun (auto); writes numbered frames");
+  command->add_option("--frame-range", options->frameRange, "Render only frames A to B (A-B, both included)");
+  command->add_flag("--skip-existing", options->skipExisting,
+                    "Keep numbered frames that are already complete images (resume a pre-empted job)");
   addSceneOverrideOptions(*command, options->overrides);
   command->callback([options, &runner] { runner = [options] { return runAnimate(*options); }; });
 }
