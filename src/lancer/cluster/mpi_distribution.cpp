@@ -7,6 +7,7 @@
 
 #if LANCER_HAVE_MPI
 #include <mpi.h>
+#include <sched.h>
 
 #include <algorithm>
 #include <chrono>

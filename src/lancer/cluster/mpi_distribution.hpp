@@ -1,4 +1,4 @@
-// Work items shared by the ranks of an MPI job (Open MPI's mpirun, or srun): rank 0 hands items out
+// Work items shared by the ranks of an MPI job (Open MPI's mpirun): rank 0 hands items out
 // one at a time as ranks ask (dynamic balance), renders items itself between hand-outs, and delivers
 // every result in order. Waiting ranks sleep between MPI_Test calls instead of spinning in a blocking
 // call (Open MPI busy-polls there), so a rank's cores stay with its render threads.
@@ -15,8 +15,8 @@ namespace lancer {
 // Whether this lancer was built with MPI (LANCER_MPI, on when CMake finds MPI).
 bool mpiBuilt();
 
-// The number of processes a launcher started this job as (OMPI_COMM_WORLD_SIZE from mpirun,
-// PMI_SIZE from srun), nullopt when none did.
+// The number of processes a launcher started this job as (OMPI_COMM_WORLD_SIZE from Open MPI's
+// mpirun, PMI_SIZE from a PMI launcher), nullopt when none did.
 std::optional<int> mpiLaunchSize(const EnvironmentLookup& environment);
 
 // Initialises MPI (once) and returns the distribution over MPI_COMM_WORLD. Only when mpiBuilt().
