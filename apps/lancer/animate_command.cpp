@@ -161,7 +161,8 @@ int runAnimate(const AnimateCommandOptions& options) {
     throw;
   }
   if (progress) std::fputc('\n', stderr);
-  if (!finished) return interruptedExit(output);  // the writers' destructors remove their temporary files
+  // The writers' destructors remove their temporary files; rank 0 alone says so.
+  if (!finished) return talks ? interruptedExit(output) : kExitInterrupted;
   if (!talks) return kExitOk;
   out->finish();
   const double seconds = stopwatch.seconds();

@@ -217,7 +217,7 @@ int runRender(const RenderCommandOptions& options) {
     throw;
   }
   if (progress) std::fputc('\n', stderr);
-  if (!written) return interruptedExit(output);
+  if (!written) return talks ? interruptedExit(output) : kExitInterrupted;  // rank 0 alone says so
   if (!talks || shard) return kExitOk;
   if (!options.legend.empty()) {
     // The bar holds the map's display values: written as they are, like the picture's field colours.

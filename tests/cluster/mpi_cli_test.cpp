@@ -100,6 +100,23 @@ TEST(MpiCli, AKilledRankEndsTheJobAndLeavesTheOutputAsItWas) {
   EXPECT_EQ(folder.read("keep.gif"), "the old animation");
 }
 
+TEST(MpiCli, CtrlCOnMpirunLeavesTheOutputAsItWas) {
+  if (!mpirunInstalled()) GTEST_SKIP() << "mpirun is not installed";
+  ScratchFolder folder;
+  folder.write("keep.png", "the old poster");
+  // SIGINT to mpirun a moment into a streamed still that takes many seconds.
+  const test::CommandResult r =
+      runCli("render -q " + kScene + " --width 2000 --height 2000 --samples 16 -o " +
+                 quoted(folder.file("keep.png")),
+             "timeout --preserve-status -s INT 2 " + mpirun(2));
+  EXPECT_NE(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(
+      test::contains(r.output, "lancer: interrupted; " + folder.file("keep.png") + " was not written"))
+      << r.output;
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"keep.png"}));
+  EXPECT_EQ(folder.read("keep.png"), "the old poster");
+}
+
 TEST(MpiCli, BadInputOnOneRankIsNamedWithTheRank) {
   if (!mpirunInstalled()) GTEST_SKIP() << "mpirun is not installed";
   ScratchFolder folder;

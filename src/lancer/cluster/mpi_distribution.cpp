@@ -260,7 +260,13 @@ std::string mpiRankLabel() {
 
 void endMpi(int exitCode) {
   if (!gMpi.initialised) return;
-  if (exitCode != 0) MPI_Abort(MPI_COMM_WORLD, exitCode);
+  // Rank 0 has removed its temporary files by now and may end the others at once. Any other rank
+  // leaves without MPI_Finalize: the launcher then ends the job with SIGTERM, which rank 0 handles
+  // like Ctrl-C (an MPI_Abort here would SIGKILL rank 0 mid-write and leave its temporary file).
+  if (exitCode != 0) {
+    if (gMpi.rank == 0) MPI_Abort(MPI_COMM_WORLD, exitCode);
+    return;
+  }
   // Ranks that finish early wait here for rank 0's writing; MPI_Finalize alone would spin.
   MPI_Request barrier = MPI_REQUEST_NULL;
   MPI_Ibarrier(MPI_COMM_WORLD, &barrier);

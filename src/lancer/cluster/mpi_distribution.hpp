@@ -26,8 +26,9 @@ std::unique_ptr<WorkDistribution> makeMpiDistribution();
 std::string mpiRankLabel();
 
 // At the end of the process: with exit code 0 waits (sleeping, not spinning) for every rank and
-// finalises MPI; otherwise aborts the whole job with that code, so one failing rank ends them all.
-// Does nothing when MPI was never initialised.
+// finalises MPI. Otherwise the job must end: rank 0 aborts it; another rank exits without
+// finalising, and the launcher ends the others (rank 0 by SIGTERM, so it removes its temporary
+// files). Does nothing when MPI was never initialised.
 void endMpi(int exitCode);
 
 }  // namespace lancer
