@@ -194,8 +194,12 @@ class MpiDistribution final : public WorkDistribution {
           int header[3] = {};
           MPI_Recv(header, 3, MPI_INT, source, kTagResultHeader, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
           Image pixels(header[1], header[2]);
-          MPI_Recv(pixels.pixels().data(), pixelCount(pixels), MPI_FLOAT, source, kTagResultPixels,
-                   MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+          // Not a blocking receive: a rank stopped by Ctrl-C after its header never sends the pixels,
+          // and rank 0 must still notice the cancel and remove its temporary file.
+          MPI_Request request = MPI_REQUEST_NULL;
+          MPI_Irecv(pixels.pixels().data(), pixelCount(pixels), MPI_FLOAT, source, kTagResultPixels,
+                    MPI_COMM_WORLD, &request);
+          if (!waitQuietly(request, work.cancel)) return false;
           std::lock_guard lock(mutex);
           finished.emplace(header[0], std::move(pixels));
         }
