@@ -70,6 +70,9 @@ void initialiseMpi() {
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
   MPI_Comm_rank(MPI_COMM_WORLD, &gMpi.rank);
   MPI_Comm_size(MPI_COMM_WORLD, &gMpi.size);
+  // A lost peer makes a call fail instead of aborting this rank at once: rank 0 then unwinds and
+  // removes its temporary files before the job ends.
+  MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
   MPI_Comm node = MPI_COMM_NULL;
   MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
   if (node != MPI_COMM_NULL) {
@@ -79,11 +82,20 @@ void initialiseMpi() {
   gMpi.initialised = true;
 }
 
+// Throws when an MPI call failed (a rank died): the command fails, its outputs untouched.
+void check(int status, const char* what) {
+  if (status == MPI_SUCCESS) return;
+  char text[MPI_MAX_ERROR_STRING] = {};
+  int length = 0;
+  MPI_Error_string(status, text, &length);
+  throw std::runtime_error(fmt::format("MPI {} failed: {} (did another rank die?)", what, text));
+}
+
 // Completes `request` without spinning: MPI_Test, then a short sleep. False when cancelled first.
 bool waitQuietly(MPI_Request& request, const std::atomic<bool>* cancel) {
   for (;;) {
     int done = 0;
-    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    check(MPI_Test(&request, &done, MPI_STATUS_IGNORE), "MPI_Test");
     if (done != 0) return true;
     if (cancel != nullptr && cancel->load()) return false;
     std::this_thread::sleep_for(kPollPause);
@@ -112,20 +124,21 @@ class MpiDistribution final : public WorkDistribution {
   static bool follow(const DistributedWork& work) {
     int none = kNoMoreItems;
     MPI_Request request = MPI_REQUEST_NULL;
-    MPI_Isend(&none, 1, MPI_INT, 0, kTagRequest, MPI_COMM_WORLD, &request);
+    check(MPI_Isend(&none, 1, MPI_INT, 0, kTagRequest, MPI_COMM_WORLD, &request), "MPI_Isend");
     if (!waitQuietly(request, work.cancel)) return false;
     for (;;) {
       int item = kNoMoreItems;
-      MPI_Irecv(&item, 1, MPI_INT, 0, kTagAssign, MPI_COMM_WORLD, &request);
+      check(MPI_Irecv(&item, 1, MPI_INT, 0, kTagAssign, MPI_COMM_WORLD, &request), "MPI_Irecv");
       if (!waitQuietly(request, work.cancel)) return false;
       if (item == kNoMoreItems) return true;
       Image pixels = work.render(item);
       if (work.cancel != nullptr && work.cancel->load()) return false;
       int header[3] = {item, pixels.width(), pixels.height()};
       MPI_Request sends[2];
-      MPI_Isend(header, 3, MPI_INT, 0, kTagResultHeader, MPI_COMM_WORLD, &sends[0]);
-      MPI_Isend(pixels.pixels().data(), pixelCount(pixels), MPI_FLOAT, 0, kTagResultPixels, MPI_COMM_WORLD,
-                &sends[1]);
+      check(MPI_Isend(header, 3, MPI_INT, 0, kTagResultHeader, MPI_COMM_WORLD, &sends[0]), "MPI_Isend");
+      check(MPI_Isend(pixels.pixels().data(), pixelCount(pixels), MPI_FLOAT, 0, kTagResultPixels,
+                      MPI_COMM_WORLD, &sends[1]),
+            "MPI_Isend");
       if (!waitQuietly(sends[0], work.cancel) || !waitQuietly(sends[1], work.cancel)) return false;
     }
   }
@@ -183,22 +196,25 @@ class MpiDistribution final : public WorkDistribution {
       bool busy = false;
       int flag = 0;
       MPI_Status status;
-      MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+      check(MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status), "MPI_Iprobe");
       if (flag != 0) {
         busy = true;
         const int source = status.MPI_SOURCE;
         if (status.MPI_TAG == kTagRequest) {
           int ignored = 0;
-          MPI_Recv(&ignored, 1, MPI_INT, source, kTagRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+          check(MPI_Recv(&ignored, 1, MPI_INT, source, kTagRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+                "MPI_Recv");
         } else {
           int header[3] = {};
-          MPI_Recv(header, 3, MPI_INT, source, kTagResultHeader, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+          check(MPI_Recv(header, 3, MPI_INT, source, kTagResultHeader, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+                "MPI_Recv");
           Image pixels(header[1], header[2]);
           // Not a blocking receive: a rank stopped by Ctrl-C after its header never sends the pixels,
           // and rank 0 must still notice the cancel and remove its temporary file.
           MPI_Request request = MPI_REQUEST_NULL;
-          MPI_Irecv(pixels.pixels().data(), pixelCount(pixels), MPI_FLOAT, source, kTagResultPixels,
-                    MPI_COMM_WORLD, &request);
+          check(MPI_Irecv(pixels.pixels().data(), pixelCount(pixels), MPI_FLOAT, source, kTagResultPixels,
+                          MPI_COMM_WORLD, &request),
+                "MPI_Irecv");
           if (!waitQuietly(request, work.cancel)) return false;
           std::lock_guard lock(mutex);
           finished.emplace(header[0], std::move(pixels));
@@ -215,7 +231,7 @@ class MpiDistribution final : public WorkDistribution {
             break;  // the window is full: this rank waits for a delivery
           }
         }
-        MPI_Send(&item, 1, MPI_INT, waiting.front(), kTagAssign, MPI_COMM_WORLD);
+        check(MPI_Send(&item, 1, MPI_INT, waiting.front(), kTagAssign, MPI_COMM_WORLD), "MPI_Send");
         if (item == kNoMoreItems) ++released;
         waiting.pop_front();
         busy = true;
@@ -273,8 +289,12 @@ void endMpi(int exitCode) {
   }
   // Ranks that finish early wait here for rank 0's writing; MPI_Finalize alone would spin.
   MPI_Request barrier = MPI_REQUEST_NULL;
-  MPI_Ibarrier(MPI_COMM_WORLD, &barrier);
-  waitQuietly(barrier, nullptr);
+  try {
+    check(MPI_Ibarrier(MPI_COMM_WORLD, &barrier), "MPI_Ibarrier");
+    waitQuietly(barrier, nullptr);
+  } catch (const std::runtime_error&) {
+    return;  // a rank died after this one's work was done: nothing left to finalise with
+  }
   MPI_Finalize();
 }
 
