@@ -184,6 +184,8 @@ int runRender(const RenderCommandOptions& options) {
   if (output.empty() && options.pixel.empty())
     throw InputError(SourceLocation{options.input}, "no output image: give -o FILE or set render.output");
   if (!output.empty()) imageFormatFromPath(output);  // refuse a bad extension before rendering
+  if (shard && !options.legend.empty())
+    throw InputError(SourceLocation{"--legend"}, "--legend is written by a render without --shard");
   if (!options.legend.empty()) {
     imageFormatFromPath(options.legend);
     if (!prepared.scene.fieldColors)
@@ -195,8 +197,6 @@ int runRender(const RenderCommandOptions& options) {
   const Camera camera = makeCamera(prepared.description.camera, prepared.scene, settings);
   const Renderer renderer(prepared.scene, prepared.accelerator, camera, settings);
   if (!options.pixel.empty()) return tracePixel(prepared, renderer, options.pixel);
-  if (shard && !options.legend.empty())
-    throw InputError(SourceLocation{"--legend"}, "--legend is written by a render without --shard");
 
   RenderOptions renderOptions = commandRenderOptions(options.overrides);
   renderOptions.threads = commandThreads(options.overrides.threads, *distribution);
