@@ -55,7 +55,7 @@ int parseOrbit(const std::string& orbit, std::size_t lightCount) {
 // The frames this process renders: all of them, or a job-array task's share (--shard, --frame-range),
 // less those already on disk (--skip-existing).
 std::vector<int> framesToRender(const AnimateCommandOptions& options, const AnimationOutput& out,
-                                const AnimationFormat& format) {
+                                const AnimationFormat& format, bool quiet) {
   const bool sharded = !options.shard.empty() || !options.frameRange.empty();
   if ((sharded || options.skipExisting) && !out.pattern())
     throw InputError(SourceLocation{!options.shard.empty()        ? "--shard"
@@ -65,18 +65,21 @@ std::vector<int> framesToRender(const AnimateCommandOptions& options, const Anim
                      "frames/%04d.png, then `lancer assemble 'frames/%04d.png' -o OUT.gif`");
   std::optional<FrameRange> range;
   if (!options.frameRange.empty()) range = parseFrameRange(options.frameRange, format.frames);
-  ScheduledShard shard{Shard{}, "one task"};
+  ScheduledShard shard;
   if (!options.shard.empty()) shard = resolveShard(options.shard, processEnvironment());
   std::vector<int> frames = shardFrames(format.frames, range, shard.shard);
-  if (sharded && !options.overrides.quiet)
+  if (!options.shard.empty() && !quiet)
     std::fprintf(stderr, "lancer: task %d of %d (%s) renders frames %s\n", shard.shard.index,
                  shard.shard.count, shard.source.c_str(), describeFrames(frames).c_str());
+  else if (sharded && !quiet)
+    std::fprintf(stderr, "lancer: --frame-range %s renders frames %s\n", options.frameRange.c_str(),
+                 describeFrames(frames).c_str());
   if (options.skipExisting) {
     const std::size_t before = frames.size();
     std::erase_if(frames, [&](int k) {
       return completeFrameExists(out.pattern()->name(k), format.width, format.height);
     });
-    if (!options.overrides.quiet && before != frames.size())
+    if (!quiet && before != frames.size())
       std::fprintf(stderr, "lancer: --skip-existing: %zu of %zu frames are already there\n",
                    before - frames.size(), before);
   }
@@ -84,8 +87,8 @@ std::vector<int> framesToRender(const AnimateCommandOptions& options, const Anim
 }
 
 int runAnimate(const AnimateCommandOptions& options) {
-  const bool sharded = !options.shard.empty() || !options.frameRange.empty();
-  const std::unique_ptr<WorkDistribution> distribution = commandDistribution(sharded);
+  // A job-array task works alone; a --frame-range under mpirun is shared by the ranks.
+  const std::unique_ptr<WorkDistribution> distribution = commandDistribution(!options.shard.empty());
   PreparedScene prepared = prepareScene(options.input, options.overrides);
   const RenderSettings& settings = prepared.description.render;
   AnimationSettings animation = prepared.description.animation.value_or(AnimationSettings{});
@@ -110,7 +113,7 @@ int runAnimate(const AnimateCommandOptions& options) {
   // Every rank checks the options the same way, so that all fail alike; only rank 0 keeps a writer.
   std::optional<AnimationOutput> out;
   out.emplace(output, format, options.writer, /*checkOnly=*/!talks);
-  const std::vector<int> frames = framesToRender(options, *out, format);
+  const std::vector<int> frames = framesToRender(options, *out, format, format.quiet);
 
   RenderOptions renderOptions = commandRenderOptions(options.overrides);
   renderOptions.threads = commandThreads(options.overrides.threads, *distribution);
