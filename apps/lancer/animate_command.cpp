@@ -1,15 +1,21 @@
 // `lancer animate SCENE.toml -o turntable.gif`: the camera or a light orbits the scene; one
 // accelerator build serves every frame. Output: an animated GIF, an animated PNG, or numbered frames.
+// The frames are work items: one process renders them all, the ranks of an MPI job share them, or a
+// job-array task renders its share (--shard) as numbered frames for `lancer assemble`.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <optional>
 
+#include "animation_output.hpp"
+#include "command_distribution.hpp"
 #include "commands.hpp"
-#include "lancer/image/animation_writer.hpp"
+#include "lancer/cluster/shard.hpp"
+#include "lancer/image/frame_sequence.hpp"
 #include "lancer/render/animation.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/util/stopwatch.hpp"
 #include "scene_setup.hpp"
 
 namespace lancer::cli {
@@ -21,13 +27,50 @@ struct AnimateCommandOptions {
   std::optional<int> frames;
   std::optional<double> fps;
   std::string orbit;
-  std::optional<int> loop;  // default: forever
-  std::string dither;       // default: ordered
-  std::string palette;      // default: global
+  AnimationOutputOptions writer;  // --loop, --dither, --palette
+  std::string shard;              // --shard I/N or auto
+  std::string frameRange;         // --frame-range A-B
+  bool skipExisting = false;
   SceneOverrides overrides;
 };
 
+// The frames this process renders: all of them, or a job-array task's share (--shard, --frame-range),
+// less those already on disk (--skip-existing).
+std::vector<int> framesToRender(const AnimateCommandOptions& options, const AnimationOutput& out,
+                                const AnimationFormat& format, bool quiet) {
+  const bool sharded = !options.shard.empty() || !options.frameRange.empty();
+  if ((sharded || options.skipExisting) && !out.pattern())
+    throw InputError(SourceLocation{!options.shard.empty()        ? "--shard"
+                                    : !options.frameRange.empty() ? "--frame-range"
+                                                                  : "--skip-existing"},
+                     "--shard, --frame-range and --skip-existing write numbered frames: give -o "
+                     "frames/%04d.png, then `lancer assemble 'frames/%04d.png' -o OUT.gif`");
+  std::optional<FrameRange> range;
+  if (!options.frameRange.empty()) range = parseFrameRange(options.frameRange, format.frames);
+  ScheduledShard shard;
+  if (!options.shard.empty()) shard = resolveShard(options.shard, processEnvironment());
+  std::vector<int> frames = shardFrames(format.frames, range, shard.shard);
+  if (!options.shard.empty() && !quiet)
+    std::fprintf(stderr, "lancer: task %d of %d (%s) renders frames %s\n", shard.shard.index,
+                 shard.shard.count, shard.source.c_str(), describeFrames(frames).c_str());
+  else if (sharded && !quiet)
+    std::fprintf(stderr, "lancer: --frame-range %s renders frames %s\n", options.frameRange.c_str(),
+                 describeFrames(frames).c_str());
+  if (options.skipExisting) {
+    const std::size_t before = frames.size();
+    std::erase_if(frames, [&](int k) {
+      return completeFrameExists(out.pattern()->name(k), format.width, format.height);
+    });
+    if (!quiet && before != frames.size())
+      std::fprintf(stderr, "lancer: --skip-existing: %zu of %zu frames are already there\n",
+                   before - frames.size(), before);
+  }
+  return frames;
+}
+
 int runAnimate(const AnimateCommandOptions& options) {
+  // A job-array task works alone; a --frame-range under mpirun is shared by the ranks.
+  const std::unique_ptr<WorkDistribution> distribution = commandDistribution(!options.shard.empty());
   PreparedScene prepared = prepareScene(options.input, options.overrides);
   const RenderSettings& settings = prepared.description.render;
   AnimationSettings animation = prepared.description.animation.value_or(AnimationSettings{});
@@ -42,44 +85,83 @@ int runAnimate(const AnimateCommandOptions& options) {
     throw InputError(
         SourceLocation{options.input},
         "no output: give -o FILE.gif, -o FILE.png (animated PNG) or -o frame_%04d.png (numbered frames)");
-  AnimationOutputOptions outputOptions;
-  outputOptions.frames = animation.frames;
-  outputOptions.fps = animation.fps;
-  outputOptions.loop = options.loop;
-  outputOptions.dither = options.dither;
-  outputOptions.palette = options.palette;
-  outputOptions.still = imageWriteOptions(settings);
-  outputOptions.transparentBackground = settings.transparentBackground;
-  AnimationWriter writer(output, settings.width, settings.height, outputOptions);
-  if (!options.overrides.quiet && !writer.frameRateNote().empty())
-    std::fprintf(stderr, "%s\n", writer.frameRateNote().c_str());
+  const bool talks = distribution->delivers();  // rank 0 of an MPI job, or a single process
+  AnimationFormat format;
+  format.width = settings.width;
+  format.height = settings.height;
+  format.frames = animation.frames;
+  format.fps = animation.fps;
+  format.still = imageWriteOptions(settings);
+  format.quiet = options.overrides.quiet || !talks;
+  // Every rank checks the options the same way, so that all fail alike; only rank 0 keeps a writer.
+  std::optional<AnimationOutput> out;
+  out.emplace(output, format, options.writer, /*checkOnly=*/!talks);
+  const std::vector<int> frames = framesToRender(options, *out, format, format.quiet);
 
-  const RenderOptions renderOptions = commandRenderOptions(options.overrides);
-  const bool progress = showProgress(options.overrides);
-  auto onProgress = [&](const AnimationProgress& p) {
-    const double done = (p.frame + p.frameProgress.fraction) / p.frames;
-    const double eta = done > 0 ? p.seconds * (1 - done) / done : 0;
-    std::fprintf(
-        stderr, "\r  frame %d/%d  %5.1f%%  %7.2f Mrays/s  ETA %6.1f s ", p.frame + 1, p.frames, 100 * done,
-        p.frameProgress.seconds > 0 ? p.frameProgress.rays / p.frameProgress.seconds * 1e-6 : 0.0, eta);
-    std::fflush(stderr);
+  RenderOptions renderOptions = commandRenderOptions(options.overrides);
+  renderOptions.threads = commandThreads(options.overrides.threads, *distribution);
+  const bool progress = talks && showProgress(options.overrides);
+  const bool alone = distribution->ranks() == 1;
+  const Stopwatch stopwatch;
+  std::uint64_t rays = 0;
+  int current = 0;  // the item (index into `frames`) being rendered here
+  RenderOptions frameOptions = renderOptions;
+  if (progress && alone) {
+    frameOptions.onProgress = [&](const RenderProgress& p) {
+      const double done = (current + p.fraction) / static_cast<double>(frames.size());
+      const double seconds = stopwatch.seconds();
+      const double eta = done > 0 ? seconds * (1 - done) / done : 0;
+      std::fprintf(stderr, "\r  frame %d/%zu  %5.1f%%  %7.2f Mrays/s  ETA %6.1f s ", current + 1,
+                   frames.size(), 100 * done, p.seconds > 0 ? p.rays / p.seconds * 1e-6 : 0.0, eta);
+      std::fflush(stderr);
+    };
+  }
+  DistributedWork work;
+  work.itemCount = static_cast<int>(frames.size());
+  work.window = 2 * distribution->ranks() + 2;
+  work.cancel = renderOptions.cancel;
+  work.render = [&](int item) {
+    current = item;
+    RenderStats stats;
+    Image image = renderAnimationFrame(prepared.scene, prepared.accelerator, prepared.description, animation,
+                                       frames[static_cast<std::size_t>(item)], frameOptions, &stats);
+    rays += stats.rays;
+    return image;
   };
-  const AnimationStats stats = renderAnimation(
-      prepared.scene, prepared.accelerator, prepared.description, animation, renderOptions,
-      [&](int frame, const Image& image) { writer.addFrame(frame, image); },
-      progress ? std::function<void(const AnimationProgress&)>(onProgress) : nullptr);
+  work.deliver = [&](int item, const Image& image) {
+    out->addFrame(frames[static_cast<std::size_t>(item)], image);
+  };
+  if (progress && !alone) {
+    work.onDelivered = [&](int done, int total) {
+      const double seconds = stopwatch.seconds();
+      std::fprintf(stderr, "\r  frame %d/%d on %d ranks  ETA %6.1f s ", done, total, distribution->ranks(),
+                   seconds * (total - done) / std::max(done, 1));
+      std::fflush(stderr);
+    };
+  }
+  bool finished = false;
+  try {
+    finished = distribution->run(work);
+  } catch (...) {
+    if (progress) std::fputc('\n', stderr);  // the error goes below the progress line
+    throw;
+  }
   if (progress) std::fputc('\n', stderr);
-  if (stats.cancelled)
-    return interruptedExit(output);  // the writers' destructors remove their temporary files
-  writer.finish();
+  // The writers' destructors remove their temporary files; rank 0 alone says so.
+  if (!finished) return talks ? interruptedExit(output) : kExitInterrupted;
+  if (!talks) return kExitOk;
+  out->finish();
+  const double seconds = stopwatch.seconds();
   if (!options.overrides.quiet) {
+    const std::string speed = alone
+                                  ? fmt::format(", {:.2f} Mrays/s", seconds > 0 ? rays / seconds * 1e-6 : 0.0)
+                                  : fmt::format(" on {} ranks", distribution->ranks());
     std::fprintf(stderr,
-                 "%s: %d frames %dx%d, %zu faces, load %.3f s, build %.3f s (once), frames %.3f s "
-                 "(%.3f s/frame, %.2f Mrays/s)\n",
-                 output.c_str(), animation.frames, settings.width, settings.height,
-                 prepared.scene.geometry.faces.size(), prepared.loadSeconds, prepared.buildSeconds,
-                 stats.seconds, stats.seconds / animation.frames,
-                 stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0);
+                 "%s: %zu frames %dx%d, %zu faces, load %.3f s, build %.3f s (once), frames %.3f s "
+                 "(%.3f s/frame%s)\n",
+                 output.c_str(), frames.size(), settings.width, settings.height,
+                 prepared.scene.geometry.faces.size(), prepared.loadSeconds, prepared.buildSeconds, seconds,
+                 frames.empty() ? 0.0 : seconds / static_cast<double>(frames.size()), speed.c_str());
   }
   return kExitOk;
 }
@@ -100,14 +182,23 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
   command->add_option("--fps", options->fps, "Frames per second")->check(CLI::Range(0.01, 100.0));
   command->add_option("--orbit", options->orbit, "What turns: camera or light:K");
   command
-      ->add_option("--loop", options->loop,
+      ->add_option("--loop", options->writer.loop,
                    "Repeats after the first showing: 0 forever (default), -1 play once")
       ->check(CLI::Range(-1, 65535));
   command
-      ->add_option("--dither", options->dither, "GIF dithering: ordered (default), floyd-steinberg or none")
+      ->add_option("--dither", options->writer.dither,
+                   "GIF dithering: ordered (default), floyd-steinberg or none")
       ->check(CLI::IsMember({"none", "ordered", "floyd-steinberg"}));
-  command->add_option("--palette", options->palette, "GIF palette: global (default, no flicker) or per-frame")
+  command
+      ->add_option("--palette", options->writer.palette,
+                   "GIF palette: global (default, no flicker) or per-frame")
       ->check(CLI::IsMember({"global", "per-frame"}));
+  command->add_option("--shard", options->shard,
+                      "Job arrays: render only frames k with k % N == I (I/N), or take I and N from SLURM or "
+                      "mpirun (auto); writes numbered frames");
+  command->add_option("--frame-range", options->frameRange, "Render only frames A to B (A-B, both included)");
+  command->add_flag("--skip-existing", options->skipExisting,
+                    "Keep numbered frames that are already complete images (resume a pre-empted job)");
   addSceneOverrideOptions(*command, options->overrides);
   command->callback([options, &runner] { runner = [options] { return runAnimate(*options); }; });
 }

@@ -18,5 +18,6 @@ inline constexpr int kExitInterrupted = 130;  // Ctrl-C: 128 + SIGINT, as shells
 void addInfoCommand(CLI::App& app, CommandRunner& runner);
 void addRenderCommand(CLI::App& app, CommandRunner& runner);
 void addAnimateCommand(CLI::App& app, CommandRunner& runner);
+void addAssembleCommand(CLI::App& app, CommandRunner& runner);
 
 }  // namespace lancer::cli

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "lancer/cluster/mpi_distribution.hpp"
 #include "lancer/scene/suggest.hpp"
 #include "lancer/util/input_error.hpp"
 #include "lancer/util/memory_budget.hpp"
@@ -60,6 +61,7 @@ int main(int argc, char** argv) {
   addInfoCommand(app, runner);
   addRenderCommand(app, runner);
   addAnimateCommand(app, runner);
+  addAssembleCommand(app, runner);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -77,16 +79,24 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitBadInput;
   }
+  // In an MPI job a failing rank names itself, and endMpi ends every rank with its exit code.
+  const auto rankPrefix = [] {
+    const std::string label = lancer::mpiRankLabel();
+    return label.empty() ? std::string() : "lancer: " + label + ": ";
+  };
+  int code = kExitOk;
   try {
-    return runner ? runner() : kExitOk;
+    code = runner ? runner() : kExitOk;
   } catch (const lancer::InputError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return kExitBadInput;
+    std::fprintf(stderr, "%s%s\n", rankPrefix().c_str(), e.what());
+    code = kExitBadInput;
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "lancer: error: out of memory\n");
-    return kExitInternalError;
+    std::fprintf(stderr, "%slancer: error: out of memory\n", rankPrefix().c_str());
+    code = kExitInternalError;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "lancer: internal error: %s\n", e.what());
-    return kExitInternalError;
+    std::fprintf(stderr, "%slancer: internal error: %s\n", rankPrefix().c_str(), e.what());
+    code = kExitInternalError;
   }
+  lancer::endMpi(code);
+  return code;
 }

@@ -2,8 +2,11 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <optional>
 
+#include "command_distribution.hpp"
 #include "commands.hpp"
+#include "lancer/cluster/tile_parts.hpp"
 #include "lancer/image/color_map.hpp"
 #include "lancer/image/image_io.hpp"
 #include "lancer/image/image_row_writer.hpp"
@@ -23,6 +26,7 @@ struct RenderCommandOptions {
   std::string output;
   std::string pixel;
   std::string legend;  // --legend: colour bar of the first field-coloured mesh
+  std::string shard;   // --shard I/N or auto: a job-array task's part of the image
   SceneOverrides overrides;
 };
 
@@ -83,8 +87,95 @@ bool renderToFile(const PreparedScene& prepared, const Renderer& renderer, const
   return true;
 }
 
+// Renders the band items of a job-array task into its part file (atomically); false when interrupted.
+bool renderPart(const PreparedScene& prepared, const Renderer& renderer, const std::string& output,
+                const ScheduledShard& shard, const RenderOptions& renderOptions, bool quiet,
+                RenderStats& stats) {
+  const RenderSettings& settings = prepared.description.render;
+  const ImageWriteOptions writeOptions = imageWriteOptions(settings);
+  TilePartHeader header;
+  header.width = settings.width;
+  header.height = settings.height;
+  header.shard = shard.shard;
+  header.bandsPerItem = bandItems(settings.width, settings.height, shard.shard.count).bandsPerItem;
+  header.curve = writeOptions.curve;
+  header.alpha = writeOptions.alpha == AlphaChannel::Always;
+  const BandItems items = bandItemsOf(settings.height, header.bandsPerItem);
+  const std::vector<int> mine = tilePartItems(header);
+  const std::string path = tilePartPath(output, shard.shard);
+  if (!quiet)
+    std::fprintf(stderr, "lancer: task %d of %d (%s) renders %zu of %d band items into %s\n",
+                 shard.shard.index, shard.shard.count, shard.source.c_str(), mine.size(), items.itemCount,
+                 path.c_str());
+  TilePartWriter part(path, header);
+  for (const int item : mine) {
+    RenderStats itemStats;
+    const Image rows = renderer.renderRows(items.item(item), renderOptions, &itemStats);
+    stats.rays += itemStats.rays;
+    stats.seconds += itemStats.seconds;
+    if (itemStats.cancelled) return false;  // ~part removes the temporary file
+    part.writeItem(rows);
+  }
+  part.commit();
+  return true;
+}
+
+// The ranks of an MPI job share the band items; rank 0 writes them in order as they come (a few items
+// in memory at once for a streamed format). False when interrupted.
+bool renderDistributed(const PreparedScene& prepared, const Renderer& renderer, const std::string& output,
+                       WorkDistribution& distribution, const RenderOptions& renderOptions,
+                       RenderStats& stats) {
+  const RenderSettings& settings = prepared.description.render;
+  const ImageWriteOptions writeOptions = imageWriteOptions(settings);
+  const BandItems items = bandItems(settings.width, settings.height, distribution.ranks());
+  std::optional<ImageRowWriter> writer;
+  Image whole;
+  if (distribution.delivers()) {
+    if (streamsToFile(output))
+      writer.emplace(output, settings.width, settings.height, writeOptions);  // a bad folder fails now
+    else
+      whole = Image(settings.width, settings.height);
+  }
+  const Stopwatch stopwatch;
+  DistributedWork work;
+  work.itemCount = items.itemCount;
+  work.window = 2 * distribution.ranks() + 2;
+  work.cancel = renderOptions.cancel;
+  work.render = [&](int item) {
+    RenderStats itemStats;
+    Image rows = renderer.renderRows(items.item(item), renderOptions, &itemStats);
+    stats.rays += itemStats.rays;
+    return rows;
+  };
+  work.deliver = [&](int item, const Image& rows) {
+    if (writer)
+      writer->writeRows(rows);
+    else
+      whole.pasteTile(rows, 0, items.item(item).first * kTileSize);
+  };
+  if (renderOptions.onProgress)
+    work.onDelivered = [&](int done, int total) {
+      RenderProgress progress;
+      progress.fraction = static_cast<double>(done) / total;
+      progress.seconds = stopwatch.seconds();
+      renderOptions.onProgress(progress);
+    };
+  const bool finished = distribution.run(work);
+  stats.seconds = stopwatch.seconds();
+  stats.samplesPerPixel = settings.samples;
+  if (!finished || !distribution.delivers()) return finished;
+  if (writer)
+    writer->commit();
+  else
+    writeImage(output, whole, writeOptions);
+  return true;
+}
+
 int runRender(const RenderCommandOptions& options) {
   const Stopwatch stopwatch;
+  const std::unique_ptr<WorkDistribution> distribution = commandDistribution(!options.shard.empty());
+  std::optional<ScheduledShard> shard;
+  if (!options.shard.empty()) shard = resolveShard(options.shard, processEnvironment());
   PreparedScene prepared = prepareScene(options.input, options.overrides, [&](const RenderSettings& s) {
     return streamsToFile(outputPath(options, s)) ? ImageBuffer::Bands : ImageBuffer::Whole;
   });
@@ -93,6 +184,8 @@ int runRender(const RenderCommandOptions& options) {
   if (output.empty() && options.pixel.empty())
     throw InputError(SourceLocation{options.input}, "no output image: give -o FILE or set render.output");
   if (!output.empty()) imageFormatFromPath(output);  // refuse a bad extension before rendering
+  if (shard && !options.legend.empty())
+    throw InputError(SourceLocation{"--legend"}, "--legend is written by a render without --shard");
   if (!options.legend.empty()) {
     imageFormatFromPath(options.legend);
     if (!prepared.scene.fieldColors)
@@ -106,18 +199,26 @@ int runRender(const RenderCommandOptions& options) {
   if (!options.pixel.empty()) return tracePixel(prepared, renderer, options.pixel);
 
   RenderOptions renderOptions = commandRenderOptions(options.overrides);
-  const bool progress = showProgress(options.overrides);
+  renderOptions.threads = commandThreads(options.overrides.threads, *distribution);
+  const bool talks = distribution->delivers();  // rank 0 of an MPI job, or a single process
+  const bool progress = talks && showProgress(options.overrides);
   if (progress) renderOptions.onProgress = printProgress;
   RenderStats stats;
   bool written = false;
   try {
-    written = renderToFile(prepared, renderer, output, renderOptions, stats);
+    if (shard)
+      written = renderPart(prepared, renderer, output, *shard, renderOptions, options.overrides.quiet, stats);
+    else if (distribution->ranks() > 1)
+      written = renderDistributed(prepared, renderer, output, *distribution, renderOptions, stats);
+    else
+      written = renderToFile(prepared, renderer, output, renderOptions, stats);
   } catch (...) {
     if (progress) std::fputc('\n', stderr);  // the error goes below the progress line
     throw;
   }
   if (progress) std::fputc('\n', stderr);
-  if (!written) return interruptedExit(output);
+  if (!written) return talks ? interruptedExit(output) : kExitInterrupted;  // rank 0 alone says so
+  if (!talks || shard) return kExitOk;
   if (!options.legend.empty()) {
     // The bar holds the map's display values: written as they are, like the picture's field colours.
     const FieldColors::Legend& legend = prepared.scene.fieldColors->legend;
@@ -145,6 +246,10 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
   command->add_option("input", options->input, "Scene file (.toml) or gmsh mesh (.msh)")->required();
   command->add_option("-o,--output", options->output,
                       fmt::format("Output image ({}); overrides render.output", kImageExtensions));
+  command->add_option(
+      "--shard", options->shard,
+      "Job arrays: render task I of N's bands into OUTPUT.part-I-of-N (I/N, or auto from SLURM "
+      "or mpirun); `lancer assemble --tiles` stitches the parts");
   addSceneOverrideOptions(*command, options->overrides);
   command->add_option("--legend", options->legend,
                       "Also write the colour bar of the first field-coloured mesh (color_by) to this image");

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <vector>
 
+#include "lancer/image/atomic_file.hpp"
 #include "lancer/image/image.hpp"
 #include "lancer/mesh/msh/foreign_formats.hpp"
 #include "lancer/mesh/msh_reader.hpp"
@@ -29,7 +30,12 @@ namespace lancer::cli {
 namespace {
 
 std::atomic<bool> gInterrupted{false};
-extern "C" void onInterrupt(int) { gInterrupted.store(true); }
+// The temporary files go at once, not only when the command unwinds: under mpirun a SIGTERM can be
+// followed by SIGKILL before the render has stopped.
+extern "C" void onInterrupt(int) {
+  removePendingTemporaryFiles();
+  gInterrupted.store(true);
+}
 
 // A .msh by name, or a file that is no scene: a mesh by content, or a file that is neither (a .geo,
 // STL, STEP, ...), which the mesh reader names with the gmsh command that makes a mesh of it.

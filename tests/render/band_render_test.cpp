@@ -172,5 +172,22 @@ TEST(BandRender, AnExceptionFromTheSinkStopsTheWorkersAndPropagates) {
   EXPECT_EQ(bands, 3);
 }
 
+TEST(BandRender, RowsOfABandRangeAreThoseOfTheWholeImage) {
+  // A cluster's work item: bands [first, first + count) alone give the same pixels as the whole image.
+  const Rendering r(twoSquares(70, 140, true));
+  const Image expected = r.whole(2);
+  const Renderer renderer(r.scene, r.accelerator, r.camera, r.description.render);
+  ASSERT_EQ(bandCountOf(140), 5);
+  RenderOptions options;
+  options.threads = 3;
+  for (const BandRange range : {BandRange{0, 1}, BandRange{1, 3}, BandRange{4, 1}, BandRange{3, -1}}) {
+    SCOPED_TRACE(range.first);
+    const Image rows = renderer.renderRows(range, options);
+    const int y0 = range.first * kTileSize;
+    const int y1 = range.count < 0 ? 140 : std::min(140, (range.first + range.count) * kTileSize);
+    EXPECT_EQ(rows, expected.crop(0, y0, 70, y1 - y0));
+  }
+}
+
 }  // namespace
 }  // namespace lancer

@@ -36,6 +36,31 @@ std::optional<FramePattern> parseFramePattern(const std::string& path) {
   return pattern;
 }
 
+bool completeFrameExists(const std::string& path, int width, int height) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return false;
+  const std::uint64_t size = std::filesystem::file_size(path, error);
+  if (error) return false;
+  const auto pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  switch (imageFormatFromPath(path)) {
+    case ImageFormat::Png:
+      try {
+        const Image image = readPng(path);
+        return image.width() == width && image.height() == height;
+      } catch (const InputError&) {
+        return false;  // not a readable PNG: render it again
+      }
+    case ImageFormat::Ppm:
+      return size == fmt::format("P6\n{} {}\n255\n", width, height).size() + 3 * pixels;
+    case ImageFormat::Bmp:
+      return size ==
+             54 + ((3 * static_cast<std::uint64_t>(width) + 3) / 4 * 4) * static_cast<std::uint64_t>(height);
+    case ImageFormat::Gif:
+      return false;
+  }
+  return false;
+}
+
 StagedFrames::~StagedFrames() {
   for (const auto& [hidden, target] : staged_) std::remove(hidden.c_str());
 }

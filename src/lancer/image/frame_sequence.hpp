@@ -22,6 +22,11 @@ struct FramePattern {
 // nullopt when the path has no '%'; InputError for a malformed pattern.
 std::optional<FramePattern> parseFramePattern(const std::string& path);
 
+// Whether `path` holds a complete image of width x height (PNG decoded; BMP and PPM by their exact
+// size), so `--skip-existing` need not render it again. Atomic writes mean a half-written frame
+// cannot exist, but a frame from a render of another size can.
+bool completeFrameExists(const std::string& path, int width, int height);
+
 // Each frame is written (atomically) to a hidden file beside its target, ".lancer-PID-NAME", as
 // soon as it is rendered; publish() renames them all into place at the end. Destroying the object
 // before publish() (Ctrl-C, an error) removes the hidden files, and existing frames stay as they were.

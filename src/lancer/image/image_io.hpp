@@ -50,8 +50,16 @@ std::vector<std::uint8_t> encodeBmp(const Image& image, TransferCurve curve = Tr
 // PPM: binary P6, maxval 255; alpha is dropped.
 std::vector<std::uint8_t> encodePpm(const Image& image, TransferCurve curve = TransferCurve::Linear);
 
-// Any PNG (palette, grey, 16-bit, interlaced) as 8-bit RGBA decoded with `curve`.
-// Throws InputError for unreadable, non-PNG, corrupt or oversized (> 2^26 pixels) files.
-Image readPng(const std::string& path, TransferCurve curve = TransferCurve::Linear);
+// What a PNG's header says about how it was written: an alpha channel (or tRNS), an sRGB chunk.
+struct PngDescription {
+  bool alpha = false;
+  bool srgb = false;
+};
+
+// Any PNG (palette, grey, 16-bit, interlaced) as 8-bit RGBA decoded with `curve`; `description`, when
+// given, receives what the header says. Throws InputError for unreadable, non-PNG, corrupt or
+// oversized (> 2^26 pixels) files.
+Image readPng(const std::string& path, TransferCurve curve = TransferCurve::Linear,
+              PngDescription* description = nullptr);
 
 }  // namespace lancer

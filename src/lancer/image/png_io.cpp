@@ -78,6 +78,7 @@ bool encodePng(AtomicFileWriter* file, int width, int height, int channels, bool
 
 struct PngSize {
   png_uint_32 width = 0, height = 0;
+  bool alpha = false, srgb = false;
 };
 
 // Decodes to 8-bit RGBA in `pixels`. Returns false with error->text on failure.
@@ -98,6 +99,9 @@ bool decodePng(std::FILE* stream, std::vector<std::uint8_t>* pixels, PngSize* si
   png_read_info(png, info);
   size->width = png_get_image_width(png, info);
   size->height = png_get_image_height(png, info);
+  size->alpha = (png_get_color_type(png, info) & PNG_COLOR_MASK_ALPHA) != 0 ||
+                png_get_valid(png, info, PNG_INFO_tRNS) != 0;
+  size->srgb = png_get_valid(png, info, PNG_INFO_sRGB) != 0;
   if (static_cast<std::uint64_t>(size->width) * size->height > kMaxReadPixels) {
     std::snprintf(error->text, sizeof(error->text), "image too large: %ux%u pixels (at most %llu)",
                   size->width, size->height, static_cast<unsigned long long>(kMaxReadPixels));
@@ -206,7 +210,7 @@ void writePng8(const std::string& path, int width, int height, int channels, boo
   file.commit();  // reports a failed write with its reason
 }
 
-Image readPng(const std::string& path, TransferCurve curve) {
+Image readPng(const std::string& path, TransferCurve curve, PngDescription* description) {
   std::unique_ptr<std::FILE, FileCloser> stream(std::fopen(path.c_str(), "rb"));
   if (!stream) {
     throw InputError(SourceLocation{path}, fmt::format("cannot open the file: {}", std::strerror(errno)));
@@ -227,6 +231,7 @@ Image readPng(const std::string& path, TransferCurve curve) {
   if (!decodePng(stream.get(), &pixels, &size, &error)) {
     throw InputError(SourceLocation{path}, fmt::format("unreadable PNG: {}", error.text));
   }
+  if (description != nullptr) *description = PngDescription{size.alpha, size.srgb};
   Image image(static_cast<int>(size.width), static_cast<int>(size.height));
   const std::uint8_t* p = pixels.data();
   for (Rgba& pixel : image.pixels()) {

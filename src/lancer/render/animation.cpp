@@ -77,19 +77,15 @@ int parseOrbit(const std::string& orbit, std::size_t lightCount) {
                   orbit, lightCount - 1, lightCount, lightCount == 1 ? "" : "s"));
 }
 
-AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
-                               const SceneDescription& description, const AnimationSettings& animation,
-                               const RenderOptions& options,
-                               const std::function<void(int frame, const Image&)>& onFrame,
-                               const std::function<void(const AnimationProgress&)>& onProgress) {
-  const Stopwatch stopwatch;
+Image renderAnimationFrame(Scene& scene, const Accelerator& accelerator, const SceneDescription& description,
+                           const AnimationSettings& animation, int frame, const RenderOptions& options,
+                           RenderStats* stats) {
   const RenderSettings& settings = description.render;
-  AnimationStats stats;
   const bool lightOrbit = animation.orbitLight >= 0;
   // The lights that turn: the orbiting one, or (quick look) all of them with the camera.
   const bool lightsWithCamera = !lightOrbit && description.lightsFollowCamera;
   const std::vector<SceneLight> originalLights = scene.appearance.lights;
-  // The scene's lights come back as they were however the loop ends (onFrame may throw: a full disk).
+  // The scene's lights come back as they were however the frame ends (the render may throw).
   struct RestoreLights {
     Scene& scene;
     const std::vector<SceneLight>& lights;
@@ -104,18 +100,28 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
       scene.appearance.lights[index].position = scene.geometry.toSceneSpace(rotateAbout(
           scene.geometry.origin + toDouble(originalLights[index].position), centre, axis, degrees));
   };
+  CameraSettings cameraSettings = description.camera;
+  const double degrees = orbitAngleDegrees(animation, frame);
+  if (lightOrbit) {
+    turnLight(static_cast<std::size_t>(animation.orbitLight), degrees);
+  } else {
+    cameraSettings =
+        orbitCamera(description.camera, animation, scene, settings.width, settings.height, frame);
+    if (lightsWithCamera)
+      for (std::size_t i = 0; i < scene.appearance.lights.size(); ++i) turnLight(i, degrees);
+  }
+  const Camera camera = makeCamera(cameraSettings, scene, settings);
+  return Renderer(scene, accelerator, camera, settings).renderImage(options, stats);
+}
+
+AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
+                               const SceneDescription& description, const AnimationSettings& animation,
+                               const RenderOptions& options,
+                               const std::function<void(int frame, const Image&)>& onFrame,
+                               const std::function<void(const AnimationProgress&)>& onProgress) {
+  const Stopwatch stopwatch;
+  AnimationStats stats;
   for (int frame = 0; frame < animation.frames; ++frame) {
-    CameraSettings cameraSettings = description.camera;
-    const double degrees = orbitAngleDegrees(animation, frame);
-    if (lightOrbit) {
-      turnLight(static_cast<std::size_t>(animation.orbitLight), degrees);
-    } else {
-      cameraSettings =
-          orbitCamera(description.camera, animation, scene, settings.width, settings.height, frame);
-      if (lightsWithCamera)
-        for (std::size_t i = 0; i < scene.appearance.lights.size(); ++i) turnLight(i, degrees);
-    }
-    const Camera camera = makeCamera(cameraSettings, scene, settings);
     RenderOptions frameOptions = options;
     if (onProgress) {
       frameOptions.onProgress = [&](const RenderProgress& progress) {
@@ -128,7 +134,8 @@ AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,
       };
     }
     RenderStats frameStats;
-    const Image image = Renderer(scene, accelerator, camera, settings).renderImage(frameOptions, &frameStats);
+    const Image image =
+        renderAnimationFrame(scene, accelerator, description, animation, frame, frameOptions, &frameStats);
     stats.rays += frameStats.rays;
     if (frameStats.cancelled || (options.cancel != nullptr && options.cancel->load())) {
       stats.cancelled = true;

@@ -44,6 +44,12 @@ struct AnimationStats {
   bool cancelled = false;
 };
 
+// Frame `frame` alone, as renderAnimation renders it: a cluster job renders the frames it was given.
+// `scene`'s lights are turned for the frame and restored before returning.
+Image renderAnimationFrame(Scene& scene, const Accelerator& accelerator, const SceneDescription& description,
+                           const AnimationSettings& animation, int frame, const RenderOptions& options,
+                           RenderStats* stats = nullptr);
+
 // Renders every frame in order with all threads (frames one after another: each frame is already
 // parallel over tiles) and hands each finished frame to `onFrame`. `scene` is modified while a light
 // orbits (or, with description.lightsFollowCamera, while the lights turn with the camera) and restored

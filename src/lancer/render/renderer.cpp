@@ -25,9 +25,10 @@ int tilesAcross(int pixels) { return (pixels + kTileSize - 1) / kTileSize; }
 // below the one a waiting worker holds is already being traced: the wait always ends.
 class BandWindow {
  public:
-  BandWindow(int width, int height, int window)
+  BandWindow(int width, int height, int firstBand, int window)
       : width_(width),
         height_(height),
+        firstBand_(firstBand),
         tilesX_(tilesAcross(width)),
         slots_(static_cast<std::size_t>(window)) {}
 
@@ -39,7 +40,7 @@ class BandWindow {
     if (stopping_) return nullptr;
     Slot& slot = slotOf(band);
     if (slot.pixels.empty()) {
-      const int rows = std::min(kTileSize, height_ - band * kTileSize);
+      const int rows = std::min(kTileSize, height_ - (firstBand_ + band) * kTileSize);
       slot.pixels = Image(width_, rows);
       slot.tilesLeft = tilesX_;
       bufferedRows_ += rows;
@@ -96,7 +97,7 @@ class BandWindow {
   int windowSize() const { return static_cast<int>(slots_.size()); }
   Slot& slotOf(int band) { return slots_[static_cast<std::size_t>(band % windowSize())]; }
 
-  int width_, height_, tilesX_;
+  int width_, height_, firstBand_, tilesX_;  // bands are counted from firstBand_
   std::vector<Slot> slots_;
   mutable std::mutex mutex_;
   std::condition_variable bandDone_;   // a band's last tile finished
@@ -169,7 +170,10 @@ Rgba Renderer::renderPixel(int x, int y, TraceCounters& counters, std::uint64_t&
   return tracePixel(tracer_, camera_, settings_, x, y, counters, samplesTraced);
 }
 
-void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, RenderStats* stats) const {
+int bandCountOf(int height) { return tilesAcross(height); }
+
+void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, RenderStats* stats,
+                           BandRange range) const {
   using Clock = std::chrono::steady_clock;
   const Stopwatch stopwatch;
   const Tracer& tracer = tracer_;
@@ -177,11 +181,13 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
   const RenderSettings& settings = settings_;
 
   const int tilesX = tilesAcross(settings.width);
-  const int bandCount = tilesAcross(settings.height);
+  const int firstBand = std::clamp(range.first, 0, tilesAcross(settings.height));
+  const int bandsLeft = tilesAcross(settings.height) - firstBand;
+  const int bandCount = range.count < 0 ? bandsLeft : std::min(range.count, bandsLeft);
   const int tileCount = tilesX * bandCount;
-  const int threadCount = std::min(resolveThreadCount(options.threads), tileCount);
-  BandWindow bands(settings.width, settings.height,
-                   std::min(bandWindow(settings.width, threadCount), bandCount));
+  const int threadCount = std::max(1, std::min(resolveThreadCount(options.threads), tileCount));
+  BandWindow bands(settings.width, settings.height, firstBand,
+                   std::max(1, std::min(bandWindow(settings.width, threadCount), bandCount)));
   std::atomic<int> nextTile{0};
   std::atomic<std::uint64_t> pixelsDone{0};
   std::atomic<std::uint64_t> raysTraced{0};
@@ -200,7 +206,7 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
       const int band = tile / tilesX;
       Image* pixels = bands.enter(band);
       if (pixels == nullptr) break;
-      const int bandY0 = band * kTileSize;
+      const int bandY0 = (firstBand + band) * kTileSize;
       const int x0 = (tile % tilesX) * kTileSize;
       const int x1 = std::min(x0 + kTileSize, settings.width),
                 y1 = std::min(bandY0 + kTileSize, settings.height);
@@ -221,7 +227,9 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
     }
   };
 
-  const double totalPixels = static_cast<double>(settings.width) * settings.height;
+  const double totalPixels =
+      static_cast<double>(settings.width) *
+      std::max(0, std::min(settings.height, (firstBand + bandCount) * kTileSize) - firstBand * kTileSize);
   auto report = [&] {
     if (!options.onProgress) return;
     RenderProgress progress;
@@ -241,7 +249,7 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
     auto lastReport = Clock::now();
     while (bands.flushed() < bandCount && !cancelled()) {
       if (const Image* band = bands.waitForNext(poll)) {
-        sink(bands.flushed() * kTileSize, *band);
+        sink((firstBand + bands.flushed()) * kTileSize, *band);
         bands.release();
       }
       if (options.onProgress && Clock::now() - lastReport >= interval) {
@@ -255,10 +263,22 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
   if (stats != nullptr) {
     stats->seconds = stopwatch.seconds();
     stats->rays = raysTraced.load();
-    stats->samplesPerPixel = static_cast<double>(samplesTraced.load()) / totalPixels;
+    stats->samplesPerPixel = totalPixels > 0 ? static_cast<double>(samplesTraced.load()) / totalPixels : 0;
     stats->cancelled = bands.flushed() < bandCount;
     stats->peakBufferedRows = bands.peakBufferedRows();
   }
+}
+
+Image Renderer::renderRows(BandRange range, const RenderOptions& options, RenderStats* stats) const {
+  const int first = std::clamp(range.first, 0, bandCountOf(settings_.height));
+  const int last = range.count < 0 ? bandCountOf(settings_.height)
+                                   : std::min(bandCountOf(settings_.height), first + range.count);
+  const int y0 = first * kTileSize;
+  Image rows(settings_.width, std::max(0, std::min(settings_.height, last * kTileSize) - y0));
+  renderBands(
+      options, [&](int bandY0, const Image& band) { rows.pasteTile(band, 0, bandY0 - y0); }, stats,
+      BandRange{first, last - first});
+  return rows;
 }
 
 Image Renderer::renderImage(const RenderOptions& options, RenderStats* stats) const {

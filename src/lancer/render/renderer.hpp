@@ -44,6 +44,16 @@ struct RenderStats {
 // workers finish their tiles) and propagates.
 using BandSink = std::function<void(int y0, const Image& band)>;
 
+// Consecutive bands of an image, from `first` (0: the top band); count < 0 means to the bottom. A
+// cluster job renders a range per work item; the tiles, and so the pixels, are those of the whole image.
+struct BandRange {
+  int first = 0;
+  int count = -1;
+};
+
+// The number of bands (rows of tiles) of an image `height` pixels high.
+int bandCountOf(int height);
+
 // What a frame needs, held together: the scene and its accelerator, the camera, the settings, and
 // the tracer built from them once (as pbrt-v4's integrator holds its aggregate, lights and camera, so
 // that rendering takes only where the pixels go). The scene, accelerator and camera must outlive it.
@@ -54,7 +64,10 @@ class Renderer {
 
   // The image band by band into `sink`. When cancelled, the sink has received only some of the
   // bands (stats->cancelled is then true).
-  void renderBands(const RenderOptions& options, const BandSink& sink, RenderStats* stats = nullptr) const;
+  void renderBands(const RenderOptions& options, const BandSink& sink, RenderStats* stats = nullptr,
+                   BandRange range = {}) const;
+  // The rows of `range` as one image (a cluster job's work item), full width.
+  Image renderRows(BandRange range, const RenderOptions& options, RenderStats* stats = nullptr) const;
   // The whole image at once (animations, GIF output, tests): renderBands into one Image.
   Image renderImage(const RenderOptions& options, RenderStats* stats = nullptr) const;
   // Radiance of one pixel (all its samples), for `--pixel x,y` debugging and for tests.

@@ -1,0 +1,126 @@
+// Job arrays through the built CLI on the committed 4-frame turntable: numbered frames rendered as
+// shards (explicit, and --shard auto from faked SLURM variables) and assembled give the bytes of
+// `lancer animate -o` directly (GIF and APNG); --skip-existing resumes; a missing or foreign frame is
+// named; `render --shard` parts stitched by `assemble --tiles` are the single render's file.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "support/cli.hpp"
+#include "support/files.hpp"
+
+namespace lancer {
+namespace {
+
+using test::quoted;
+using test::runCli;
+using test::ScratchFolder;
+
+const std::string kScene = quoted(test::kTurntableScene);
+
+void expectSameFile(const std::string& actual, const std::string& expected) {
+  ASSERT_TRUE(std::filesystem::exists(actual)) << actual;
+  EXPECT_TRUE(test::readBytes(actual) == test::readBytes(expected)) << actual << " differs from " << expected;
+}
+
+TEST(AssembleCli, ShardsAssembledAreTheDirectGifAndApng) {
+  ScratchFolder folder;
+  ASSERT_EQ(runCli("animate -q " + kScene + " -o " + quoted(folder.file("direct.gif"))).exitCode, 0);
+  ASSERT_EQ(runCli("animate -q " + kScene + " --loop 2 -o " + quoted(folder.file("direct.png"))).exitCode, 0);
+  const std::string frames = quoted(folder.file("f/%04d.png"));
+  std::filesystem::create_directory(folder.file("f"));
+  for (const char* shard : {"0/3", "1/3", "2/3"}) {
+    const test::CommandResult r = runCli("animate " + kScene + " -o " + frames + " --shard " + shard);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    if (std::string(shard) == "1/3") {
+      EXPECT_TRUE(test::contains(r.output, "task 1 of 3 (--shard 1/3) renders frames 1 (1 frame)"))
+          << r.output;
+    }
+  }
+  const test::CommandResult gif = runCli("assemble " + frames + " -o " + quoted(folder.file("a.gif")));
+  ASSERT_EQ(gif.exitCode, 0) << gif.output;
+  EXPECT_TRUE(test::contains(gif.output, "4 frames 64x48 assembled")) << gif.output;
+  expectSameFile(folder.file("a.gif"), folder.file("direct.gif"));
+  ASSERT_EQ(runCli("assemble -q --loop 2 " + frames + " -o " + quoted(folder.file("a.png"))).exitCode, 0);
+  expectSameFile(folder.file("a.png"), folder.file("direct.png"));
+}
+
+TEST(AssembleCli, ShardAutoTakesTheSlurmArrayTaskAndRefusesADisagreeingSpec) {
+  ScratchFolder folder;
+  const std::string frames = quoted(folder.file("f_%04d.png"));
+  // sbatch --array=1-3:2 (ids 1 and 3) as task id 3: the second of two tasks, frames 1 and 3.
+  const std::string slurm =
+      "env SLURM_ARRAY_TASK_ID=3 SLURM_ARRAY_TASK_COUNT=2 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_STEP=2";
+  const test::CommandResult r = runCli("animate " + kScene + " -o " + frames + " --shard auto", slurm);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(test::contains(r.output,
+                             "task 1 of 2 (SLURM_ARRAY_TASK_ID=3 (of SLURM_ARRAY_TASK_COUNT=2, min 1, "
+                             "step 2)) renders frames 1, 3 (2 frames)"))
+      << r.output;
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"f_0001.png", "f_0003.png"}));
+  const test::CommandResult wrong = runCli("animate " + kScene + " -o " + frames + " --shard 0/2", slurm);
+  EXPECT_EQ(wrong.exitCode, 2);
+  EXPECT_TRUE(test::contains(wrong.output, "--shard 0/2 disagrees with the scheduler")) << wrong.output;
+  // The missing frames are named, then --skip-existing renders only them.
+  const test::CommandResult missing = runCli("assemble " + frames + " -o " + quoted(folder.file("a.gif")));
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_TRUE(test::contains(missing.output, folder.file("f_0000.png") + ": error: frame 0 of 4 is missing"))
+      << missing.output;
+  const test::CommandResult resumed = runCli("animate " + kScene + " -o " + frames + " --skip-existing");
+  ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
+  EXPECT_TRUE(test::contains(resumed.output, "--skip-existing: 2 of 4 frames are already there"))
+      << resumed.output;
+  EXPECT_TRUE(test::contains(resumed.output, "2 frames 64x48")) << resumed.output;
+  EXPECT_EQ(runCli("assemble -q " + frames + " -o " + quoted(folder.file("a.gif"))).exitCode, 0);
+}
+
+TEST(AssembleCli, AForeignFrameIsNamedAndNothingIsWritten) {
+  ScratchFolder folder;
+  const std::string frames = quoted(folder.file("f_%04d.png"));
+  ASSERT_EQ(runCli("animate -q " + kScene + " -o " + frames).exitCode, 0);
+  ASSERT_EQ(runCli("render -q " + kScene + " --width 32 -o " + quoted(folder.file("f_0002.png"))).exitCode,
+            0);
+  folder.write("a.gif", "old");
+  const test::CommandResult r = runCli("assemble " + frames + " -o " + quoted(folder.file("a.gif")));
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_TRUE(
+      test::contains(r.output, folder.file("f_0002.png") +
+                                   ": error: frame 2 is 32x48, but frame 0 is 64x48: not from the same "
+                                   "animation"))
+      << r.output;
+  EXPECT_EQ(folder.read("a.gif"), "old");
+  // --skip-existing renders the foreign frame again (it is not a complete frame of this animation).
+  const test::CommandResult resumed = runCli("animate " + kScene + " -o " + frames + " --skip-existing");
+  EXPECT_TRUE(test::contains(resumed.output, "3 of 4 frames are already there")) << resumed.output;
+  const test::CommandResult animated =
+      runCli("animate " + kScene + " -o " + quoted(folder.file("x.gif")) + " --shard 0/2");
+  EXPECT_EQ(animated.exitCode, 2);
+  EXPECT_TRUE(test::contains(animated.output,
+                             "--shard: error: --shard, --frame-range and --skip-existing write "
+                             "numbered frames"))
+      << animated.output;
+}
+
+TEST(AssembleCli, RenderShardPartsStitchedAreTheSingleRender) {
+  ScratchFolder folder;
+  const std::string size = " --width 70 --height 230 --srgb";
+  ASSERT_EQ(runCli("render -q " + kScene + size + " -o " + quoted(folder.file("direct.png"))).exitCode, 0);
+  for (const char* shard : {"0/3", "1/3", "2/3"}) {
+    const test::CommandResult r =
+        runCli("render " + kScene + size + " -o " + quoted(folder.file("t.png")) + " --shard " + shard);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(folder.file("t.png")));
+  const test::CommandResult missing =
+      runCli("assemble --tiles " + quoted(folder.file("t.png.part-0-of-3")) + " " +
+             quoted(folder.file("t.png.part-2-of-3")) + " -o " + quoted(folder.file("t.png")));
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_TRUE(test::contains(missing.output, "part 1 of 3 is missing")) << missing.output;
+  const test::CommandResult r = runCli("assemble --tiles " + quoted(folder.path().string()) +
+                                       "/t.png.part-* -o " + quoted(folder.file("t.png")));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  expectSameFile(folder.file("t.png"), folder.file("direct.png"));
+}
+
+}  // namespace
+}  // namespace lancer
