@@ -53,10 +53,9 @@ class NaiveAccel {
     best.t = tMax;
     for (const PackedTriangle& tri : triangles_) {
       // Upper bound one ulp past the best so an equal-t hit on a shared edge reaches the tie-break.
-      const float t = intersectTriangle(tri, ray, tMin, std::nextafter(best.t, INFINITY));
-      if (t >= 0.0f && t < tMax && closerThan(t, tri.face, best) && keep(tri.face, t)) {
-        best.t = t;
-        best.face = tri.face;
+      const TriangleHit h = testTriangle(tri, ray, tMin, std::nextafter(best.t, INFINITY));
+      if (h.t >= 0.0f && h.t < tMax && closerThan(h.t, tri.face, best) && keep(tri.face, h.t)) {
+        best = {h.t, tri.face, h.b1, h.b2};
       }
     }
     if (!best.valid()) return false;

@@ -54,11 +54,10 @@ struct ClosestHit {
   float upper;  // triangles are tested on (tMin, upper): t <= best.t once something was hit
 
   bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
-    const float t = intersectTriangle(tri, ray, tMin, upper);
-    if (t >= 0.0f && t < tMax && closerThan(t, tri.face, best)) {
-      best.t = t;
-      best.face = tri.face;
-      upper = nextUp(t);
+    const TriangleHit h = testTriangle(tri, ray, tMin, upper);
+    if (h.t >= 0.0f && h.t < tMax && closerThan(h.t, tri.face, best)) {
+      best = {h.t, tri.face, h.b1, h.b2};
+      upper = nextUp(h.t);
     }
     return false;
   }
@@ -79,11 +78,10 @@ struct ClippedClosestHit {
   const FaceClipSets& clips;
 
   bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
-    const float t = intersectTriangle(tri, ray, tMin, upper);
-    if (t >= 0.0f && t < tMax && closerThan(t, tri.face, best) && clips.keeps(ray, tri.face, t)) {
-      best.t = t;
-      best.face = tri.face;
-      upper = nextUp(t);
+    const TriangleHit h = testTriangle(tri, ray, tMin, upper);
+    if (h.t >= 0.0f && h.t < tMax && closerThan(h.t, tri.face, best) && clips.keeps(ray, tri.face, h.t)) {
+      best = {h.t, tri.face, h.b1, h.b2};
+      upper = nextUp(h.t);
     }
     return false;
   }
