@@ -48,59 +48,49 @@ inline float nextUp(float t) {
   return std::bit_cast<float>(t > 0.0f ? bits + 1 : bits - 1);
 }
 
-// Closest-hit bookkeeping identical to NaiveAccel::intersect.
+// Every hit counts: the filter of the unfiltered queries, compiled away.
+struct KeepEveryHit {
+  bool operator()(const Ray&, std::uint32_t, float) const { return true; }
+};
+
+// Closest-hit bookkeeping identical to NaiveAccel::intersect. With a filter (per-mesh cut views), a
+// hit it refuses is not a hit: pruning by the closest kept hit stays exact, and so does the mailbox
+// (a repeated test of a triangle gets the same answer, kept or not).
+template <typename Filter>
 struct ClosestHit {
+  static constexpr bool kAnyHit = false;
   Hit best;
   float upper;  // triangles are tested on (tMin, upper): t <= best.t once something was hit
+  const Filter& keeps;
 
   bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
     const TriangleHit h = testTriangle(tri, ray, tMin, upper);
-    if (h.t >= 0.0f && h.t < tMax && closerThan(h.t, tri.face, best)) {
+    if (h.t >= 0.0f && h.t < tMax && closerThan(h.t, tri.face, best) && keeps(ray, tri.face, h.t)) {
       best = {h.t, tri.face, h.b1, h.b2};
       upper = nextUp(h.t);
     }
     return false;
   }
+  float bound(float) const { return best.t; }
 };
 
+template <typename Filter>
 struct AnyHit {
-  bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) const {
-    return intersectTriangle(tri, ray, tMin, tMax) >= 0.0f;
-  }
-};
-
-// ClosestHit and AnyHit for scenes with per-mesh clip planes: a hit those planes remove is not a
-// hit. Pruning by the closest kept hit stays exact, and so does the mailbox (a repeated test of a
-// triangle gets the same answer, kept or not).
-struct ClippedClosestHit {
-  Hit best;
-  float upper;
-  const FaceClipSets& clips;
-
-  bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
-    const TriangleHit h = testTriangle(tri, ray, tMin, upper);
-    if (h.t >= 0.0f && h.t < tMax && closerThan(h.t, tri.face, best) && clips.keeps(ray, tri.face, h.t)) {
-      best = {h.t, tri.face, h.b1, h.b2};
-      upper = nextUp(h.t);
-    }
-    return false;
-  }
-};
-
-struct ClippedAnyHit {
-  const FaceClipSets& clips;
+  static constexpr bool kAnyHit = true;
+  const Filter& keeps;
 
   bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) const {
     const float t = intersectTriangle(tri, ray, tMin, tMax);
-    return t >= 0.0f && clips.keeps(ray, tri.face, t);
+    return t >= 0.0f && keeps(ray, tri.face, t);
   }
+  float bound(float tMax) const { return tMax; }
 };
 
-// Walks the tree; Query::test returns true to stop (any hit). `bound` reads the current pruning
+// Walks the tree; Query::test returns true to stop (any hit). Query::bound is the current pruning
 // distance: the closest hit so far, or tMax for any-hit.
-template <typename Query, typename Bound>
+template <typename Query>
 bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, const Ray& ray, float tMin,
-          float tMax, Query& query, Bound bound) {
+          float tMax, Query& query) {
   float tEnter, tExit;
   if (!intersectAabb(bounds, ray, tMin, tMax, tEnter, tExit)) return false;
   const float eps = kSlack * std::max(std::abs(tEnter), std::abs(tExit));
@@ -174,48 +164,47 @@ bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, c
       node = base + stack[top].node;
       tEnter = stack[top].tEnter;
       tExit = stack[top].tExit;
-    } while (tEnter > bound() + eps);
+    } while (tEnter > query.bound(tMax) + eps);
   }
 }
 
 }  // namespace
 
-bool KdTree::intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
+template <typename Filter>
+bool KdTree::closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const {
   LANCER_KD_COUNT(rays);
-  ClosestHit query{Hit{tMax, Hit{}.face}, tMax};
+  ClosestHit<Filter> query{Hit{tMax, Hit{}.face}, tMax, keeps};
   for (const PackedTriangle& tri : slivers_) query.test(tri, ray, tMin, tMax);
-  walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return query.best.t; });
+  walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query);
   if (!query.best.valid()) return false;
   hit = query.best;
   return true;
+}
+
+template <typename Filter>
+bool KdTree::anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const {
+  LANCER_KD_COUNT(rays);
+  AnyHit<Filter> query{keeps};
+  for (const PackedTriangle& tri : slivers_) {
+    if (query.test(tri, ray, tMin, tMax)) return true;
+  }
+  return walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query);
+}
+
+bool KdTree::intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
+  return closestHit(ray, tMin, tMax, KeepEveryHit{}, hit);
 }
 
 bool KdTree::occluded(const Ray& ray, float tMin, float tMax) const {
-  LANCER_KD_COUNT(rays);
-  AnyHit query;
-  for (const PackedTriangle& tri : slivers_) {
-    if (query.test(tri, ray, tMin, tMax)) return true;
-  }
-  return walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return tMax; });
+  return anyHit(ray, tMin, tMax, KeepEveryHit{});
 }
 
-bool KdTree::intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips, Hit& hit) const {
-  LANCER_KD_COUNT(rays);
-  ClippedClosestHit query{Hit{tMax, Hit{}.face}, tMax, clips};
-  for (const PackedTriangle& tri : slivers_) query.test(tri, ray, tMin, tMax);
-  walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return query.best.t; });
-  if (!query.best.valid()) return false;
-  hit = query.best;
-  return true;
+bool KdTree::intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const {
+  return closestHit(ray, tMin, tMax, filter, hit);
 }
 
-bool KdTree::occluded(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips) const {
-  LANCER_KD_COUNT(rays);
-  ClippedAnyHit query{clips};
-  for (const PackedTriangle& tri : slivers_) {
-    if (query.test(tri, ray, tMin, tMax)) return true;
-  }
-  return walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return tMax; });
+bool KdTree::occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const {
+  return anyHit(ray, tMin, tMax, filter);
 }
 
 }  // namespace lancer
