@@ -100,8 +100,16 @@ bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, c
   // Half-width of the band around each split plane that counts as on both sides (kPlaneSlack),
   // signed along the ray so that the ray is inside the band for t in [tNear, tFar] below.
   const float band = kPlaneSlack * std::max(magnitude, maxComponent(abs(ray.origin)));
-  const float signedBand[3] = {invDirection[0] < 0.0f ? -band : band, invDirection[1] < 0.0f ? -band : band,
-                               invDirection[2] < 0.0f ? -band : band};
+  // Per axis, once per ray: where the band's near and far edges sit relative to the origin, and
+  // which child the ray meets first (the right one when it runs towards -axis).
+  float nearEdge[3], farEdge[3];
+  std::uint32_t firstIsRight[3];
+  for (int a = 0; a < 3; ++a) {
+    const float signedBand = invDirection[a] < 0.0f ? -band : band;
+    nearEdge[a] = origin[a] + signedBand;
+    farEdge[a] = origin[a] - signedBand;
+    firstIsRight[a] = invDirection[a] < 0.0f ? 1u : 0u;
+  }
   StackEntry stack[KdTree::kMaxDepth + 2];  // one push per level at most
   std::uint32_t mailbox[kMailboxSize];
   std::fill(std::begin(mailbox), std::end(mailbox), 0xFFFFFFFFu);
@@ -117,11 +125,10 @@ bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, c
       // (the side it starts on) holds t < tFar, the second t > tNear. A ray inside the band and
       // parallel to the plane gets infinite or NaN values, which fail every test below and so
       // visit both children over the whole span.
-      const float tNear = (split - signedBand[axis] - origin[axis]) * invDirection[axis];
-      const float tFar = (split + signedBand[axis] - origin[axis]) * invDirection[axis];
-      const std::uint32_t firstIsRight = invDirection[axis] < 0.0f ? 1u : 0u;
-      const KdNode* first = base + node->firstChild() + firstIsRight;
-      const KdNode* second = base + node->firstChild() + (firstIsRight ^ 1u);
+      const float tNear = (split - nearEdge[axis]) * invDirection[axis];
+      const float tFar = (split - farEdge[axis]) * invDirection[axis];
+      const KdNode* first = base + node->firstChild() + firstIsRight[axis];
+      const KdNode* second = base + node->firstChild() + (firstIsRight[axis] ^ 1u);
       if (tNear > tExit + eps) {
         node = first;
       } else if (tFar < tEnter - eps) {
