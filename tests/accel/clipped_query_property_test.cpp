@@ -7,7 +7,7 @@
 #include <string>
 
 #include "lancer/accel/accelerator.hpp"
-#include "lancer/math/face_clip_sets.hpp"
+#include "lancer/scene/face_clip_sets.hpp"
 #include "support/accel_test_geometry.hpp"
 
 namespace lancer {
@@ -37,6 +37,13 @@ void addPlanes(FaceClipSets& clips, FaceClipRange range, std::vector<ClipPlane> 
   }
   range.planeEnd = static_cast<std::uint32_t>(clips.planes.size());
   clips.ranges.push_back(range);
+}
+
+// The filter the renderer hands the accelerators for its per-mesh planes (as in Tracer).
+HitFilter filterOf(const FaceClipSets& clips) {
+  return {&clips, [](const void* c, const Ray& ray, std::uint32_t face, float t) {
+            return static_cast<const FaceClipSets*>(c)->keeps(ray, face, t);
+          }};
 }
 
 // The definition, written without any accelerator: every triangle, keep what the planes keep.
@@ -87,8 +94,8 @@ TEST(ClippedQueryProperty, EveryAcceleratorMatchesTheDefinition) {
       const float tMax = i % 3 ? 1e30f : 1.0f;
       Hit expected, actual, unclipped;
       const bool expectHit = closestKept(scene.soup, scene.clips, ray, 0.0f, tMax, expected);
-      const bool gotHit = accel.intersect(ray, 0.0f, tMax, scene.clips, actual);
-      const bool gotOccluded = accel.occluded(ray, 0.0f, tMax, scene.clips);
+      const bool gotHit = accel.intersect(ray, 0.0f, tMax, filterOf(scene.clips), actual);
+      const bool gotOccluded = accel.occluded(ray, 0.0f, tMax, filterOf(scene.clips));
       hits += expectHit;
       if (accel.intersect(ray, 0.0f, tMax, unclipped) && (!expectHit || unclipped.face != expected.face))
         ++passedRemoved;
@@ -123,15 +130,15 @@ TEST(ClippedQueryProperty, CoincidentFacesOfTwoMeshesAtEqualT) {
     Hit plain, clipped;
     ASSERT_TRUE(accel.intersect(ray, 0.0f, 1e30f, plain));
     EXPECT_EQ(plain.face, 0u);
-    ASSERT_TRUE(accel.intersect(ray, 0.0f, 1e30f, clips, clipped));
+    ASSERT_TRUE(accel.intersect(ray, 0.0f, 1e30f, filterOf(clips), clipped));
     EXPECT_EQ(clipped.face, 1u);
     EXPECT_EQ(clipped.t, plain.t);
-    EXPECT_TRUE(accel.occluded(ray, 0.0f, 1e30f, clips));
+    EXPECT_TRUE(accel.occluded(ray, 0.0f, 1e30f, filterOf(clips)));
     // With B cut too nothing is left: no hit, no shadow.
     FaceClipSets both = clips;
     addPlanes(both, {1, 2, 0, 0}, {{{0, 0, -1}, {0, 0, 1}}});
-    EXPECT_FALSE(accel.intersect(ray, 0.0f, 1e30f, both, clipped));
-    EXPECT_FALSE(accel.occluded(ray, 0.0f, 1e30f, both));
+    EXPECT_FALSE(accel.intersect(ray, 0.0f, 1e30f, filterOf(both), clipped));
+    EXPECT_FALSE(accel.occluded(ray, 0.0f, 1e30f, filterOf(both)));
   }
 }
 

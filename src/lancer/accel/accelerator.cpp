@@ -28,15 +28,14 @@ std::string_view accelKindName(AccelKind kind) {
   return "unknown";
 }
 
-bool Accelerator::intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips,
-                            Hit& hit) const {
-  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(ray, tMin, tMax, clips, hit);
-  return std::get<NaiveAccel>(impl_).intersect(ray, tMin, tMax, clips, hit);
+bool Accelerator::intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const {
+  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(ray, tMin, tMax, filter, hit);
+  return std::get<NaiveAccel>(impl_).intersect(ray, tMin, tMax, filter, hit);
 }
 
-bool Accelerator::occluded(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips) const {
-  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(ray, tMin, tMax, clips);
-  return std::get<NaiveAccel>(impl_).occluded(ray, tMin, tMax, clips);
+bool Accelerator::occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const {
+  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(ray, tMin, tMax, filter);
+  return std::get<NaiveAccel>(impl_).occluded(ray, tMin, tMax, filter);
 }
 
 Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,

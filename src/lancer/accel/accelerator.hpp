@@ -8,6 +8,7 @@
 
 #include "lancer/accel/accel_stats.hpp"
 #include "lancer/accel/hit.hpp"
+#include "lancer/accel/hit_filter.hpp"
 #include "lancer/accel/kd_tree.hpp"
 #include "lancer/accel/naive_accel.hpp"
 
@@ -36,11 +37,11 @@ class Accelerator {
     return std::get<NaiveAccel>(impl_).occluded(ray, tMin, tMax);
   }
 
-  // The same two queries seeing only the hits per-mesh clip planes keep (see face_clip_sets.hpp).
+  // The same two queries seeing only the hits `filter` keeps (the renderer's per-mesh cut views).
   // Out of line: the rare path stays out of the code of callers that choose between these and the
   // plain queries once per ray (the tracer).
-  bool intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips, Hit& hit) const;
-  bool occluded(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips) const;
+  bool intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const;
+  bool occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const;
 
   AccelKind kind() const { return kind_; }
   AccelStats stats() const { return stats_; }

@@ -9,10 +9,10 @@
 
 #include "lancer/accel/accel_stats.hpp"
 #include "lancer/accel/hit.hpp"
+#include "lancer/accel/hit_filter.hpp"
 #include "lancer/accel/kd/node.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/aabb.hpp"
-#include "lancer/math/face_clip_sets.hpp"
 #include "lancer/math/ray.hpp"
 #include "lancer/mesh/mesh.hpp"
 
@@ -68,10 +68,10 @@ class KdTree {
   bool intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const;
   // Any hit with t in (tMin, tMax): the shadow-ray query, stops at the first blocker.
   bool occluded(const Ray& ray, float tMin, float tMax) const;
-  // The same two queries seeing only the hits per-mesh clip planes keep (a removed face is passed
-  // through, and casts no shadow). Separate entry points: scenes without such planes pay nothing.
-  bool intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips, Hit& hit) const;
-  bool occluded(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips) const;
+  // The same two queries seeing only the hits `filter` keeps (a refused face is passed through, and
+  // casts no shadow). Separate entry points: queries without a filter pay nothing for it.
+  bool intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const;
+  bool occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const;
 
   const AccelStats& stats() const { return stats_; }
   const Aabb& bounds() const { return bounds_; }
@@ -96,6 +96,13 @@ class KdTree {
 
  private:
   friend class KdTreeAssembler;
+
+  // The one traversal behind the four queries (kd/traversal.cpp), instantiated there for no filter
+  // and for HitFilter.
+  template <typename Filter>
+  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const;
+  template <typename Filter>
+  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const;
 
   // Depth first from the root at 0 (then a pad): each inner node's child pair (16-byte aligned),
   // followed at once by what its leaf children hold: the list of a leaf of 2+ triangles (32-bit

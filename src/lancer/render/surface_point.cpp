@@ -131,12 +131,19 @@ void pointOnHitTriangle(const Scene& scene, const MeshFace& face, const Vec3& p,
 SurfacePoint makeSurfacePoint(const Scene& scene, const Ray& ray, const Hit& hit) {
   SurfacePoint sp;
   sp.face = hit.face;
-  const Vec3 alongRay = ray.at(hit.t);
   const MeshFace& face = scene.geometry.faces[hit.face];
-  faceCornerWeights(scene, face, alongRay, sp.cornerWeight);
   if (face.isQuad()) {
+    // Bilinear weights are not the hit half's barycentric ones: found again from the point.
+    const Vec3 alongRay = ray.at(hit.t);
+    faceCornerWeights(scene, face, alongRay, sp.cornerWeight);
     pointOnHitTriangle(scene, face, alongRay, sp.position, sp.positionError);
-  } else {  // the corner weights are the barycentric ones already
+  } else {
+    // The triangle test's own weights (the accelerators' triangle is the face, corners in order):
+    // exact to a few ulps of the triangle, where projecting ray.at(t) errs with the ray's length.
+    sp.cornerWeight[0] = 1.0f - hit.b1 - hit.b2;
+    sp.cornerWeight[1] = hit.b1;
+    sp.cornerWeight[2] = hit.b2;
+    sp.cornerWeight[3] = 0.0f;
     const Vec3 &a = scene.geometry.positions[face.vertex[0]], &b = scene.geometry.positions[face.vertex[1]],
                &c = scene.geometry.positions[face.vertex[2]];
     sp.position = a * sp.cornerWeight[0] + b * sp.cornerWeight[1] + c * sp.cornerWeight[2];

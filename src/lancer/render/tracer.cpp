@@ -50,7 +50,11 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderS
       maxDepth_(settings.maxDepth),
       footprint_(footprint),
       linearFieldColors_(settings.srgb),
-      anyMeshClips_(!scene.clipping.perMesh.empty()) {
+      anyMeshClips_(!scene.clipping.perMesh.empty()),
+      meshClipFilter_{&scene.clipping.perMesh,
+                      [](const void* clips, const Ray& ray, std::uint32_t face, float t) {
+                        return static_cast<const FaceClipSets*>(clips)->keeps(ray, face, t);
+                      }} {
   for (const Material& material : scene.appearance.materials) {
     anyTransparent_ = anyTransparent_ || material.transparency > 0;
     splits_.push_back(energySplit(material));
@@ -69,12 +73,12 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderS
 [[gnu::always_inline]] inline bool Tracer::nearestHit(const Ray& ray, float tMin, float tMax,
                                                       Hit& hit) const {
   if (!anyMeshClips_) return accelerator_.intersect(ray, tMin, tMax, hit);
-  return accelerator_.intersect(ray, tMin, tMax, scene_.clipping.perMesh, hit);
+  return accelerator_.intersect(ray, tMin, tMax, meshClipFilter_, hit);
 }
 
 [[gnu::always_inline]] inline bool Tracer::blocked(const Ray& ray, float tMin, float tMax) const {
   if (!anyMeshClips_) return accelerator_.occluded(ray, tMin, tMax);
-  return accelerator_.occluded(ray, tMin, tMax, scene_.clipping.perMesh);
+  return accelerator_.occluded(ray, tMin, tMax, meshClipFilter_);
 }
 
 TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const {

@@ -131,6 +131,7 @@ class Tracer {
   PixelFootprint footprint_;
   bool linearFieldColors_ = false;        // --srgb: field colours are decoded to linear (field_shading.hpp)
   bool anyMeshClips_ = false;             // some mesh has planes of its own: use the clipped queries
+  HitFilter meshClipFilter_;              // the hits those planes keep (FaceClipSets::keeps)
   std::optional<OutlineEdges> outlines_;  // with a camera, when some mesh draws its edges
 };
 

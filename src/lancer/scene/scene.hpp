@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "lancer/math/aabb.hpp"
-#include "lancer/math/clip_planes.hpp"
-#include "lancer/math/face_clip_sets.hpp"
 #include "lancer/mesh/mesh.hpp"
 #include "lancer/mesh/vertex_normals.hpp"
+#include "lancer/scene/clip_planes.hpp"
+#include "lancer/scene/face_clip_sets.hpp"
 #include "lancer/scene/scene_description.hpp"
 
 namespace lancer {

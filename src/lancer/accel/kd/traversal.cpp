@@ -48,61 +48,49 @@ inline float nextUp(float t) {
   return std::bit_cast<float>(t > 0.0f ? bits + 1 : bits - 1);
 }
 
-// Closest-hit bookkeeping identical to NaiveAccel::intersect.
+// Every hit counts: the filter of the unfiltered queries, compiled away.
+struct KeepEveryHit {
+  bool operator()(const Ray&, std::uint32_t, float) const { return true; }
+};
+
+// Closest-hit bookkeeping identical to NaiveAccel::intersect. With a filter (per-mesh cut views), a
+// hit it refuses is not a hit: pruning by the closest kept hit stays exact, and so does the mailbox
+// (a repeated test of a triangle gets the same answer, kept or not).
+template <typename Filter>
 struct ClosestHit {
+  static constexpr bool kAnyHit = false;
   Hit best;
   float upper;  // triangles are tested on (tMin, upper): t <= best.t once something was hit
+  const Filter& keeps;
 
   bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
-    const float t = intersectTriangle(tri, ray, tMin, upper);
-    if (t >= 0.0f && t < tMax && closerThan(t, tri.face, best)) {
-      best.t = t;
-      best.face = tri.face;
-      upper = nextUp(t);
+    const TriangleHit h = testTriangle(tri, ray, tMin, upper);
+    if (h.t >= 0.0f && h.t < tMax && closerThan(h.t, tri.face, best) && keeps(ray, tri.face, h.t)) {
+      best = {h.t, tri.face, h.b1, h.b2};
+      upper = nextUp(h.t);
     }
     return false;
   }
+  float bound(float) const { return best.t; }
 };
 
+template <typename Filter>
 struct AnyHit {
-  bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) const {
-    return intersectTriangle(tri, ray, tMin, tMax) >= 0.0f;
-  }
-};
-
-// ClosestHit and AnyHit for scenes with per-mesh clip planes: a hit those planes remove is not a
-// hit. Pruning by the closest kept hit stays exact, and so does the mailbox (a repeated test of a
-// triangle gets the same answer, kept or not).
-struct ClippedClosestHit {
-  Hit best;
-  float upper;
-  const FaceClipSets& clips;
-
-  bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
-    const float t = intersectTriangle(tri, ray, tMin, upper);
-    if (t >= 0.0f && t < tMax && closerThan(t, tri.face, best) && clips.keeps(ray, tri.face, t)) {
-      best.t = t;
-      best.face = tri.face;
-      upper = nextUp(t);
-    }
-    return false;
-  }
-};
-
-struct ClippedAnyHit {
-  const FaceClipSets& clips;
+  static constexpr bool kAnyHit = true;
+  const Filter& keeps;
 
   bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) const {
     const float t = intersectTriangle(tri, ray, tMin, tMax);
-    return t >= 0.0f && clips.keeps(ray, tri.face, t);
+    return t >= 0.0f && keeps(ray, tri.face, t);
   }
+  float bound(float tMax) const { return tMax; }
 };
 
-// Walks the tree; Query::test returns true to stop (any hit). `bound` reads the current pruning
+// Walks the tree; Query::test returns true to stop (any hit). Query::bound is the current pruning
 // distance: the closest hit so far, or tMax for any-hit.
-template <typename Query, typename Bound>
+template <typename Query>
 bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, const Ray& ray, float tMin,
-          float tMax, Query& query, Bound bound) {
+          float tMax, Query& query) {
   float tEnter, tExit;
   if (!intersectAabb(bounds, ray, tMin, tMax, tEnter, tExit)) return false;
   const float eps = kSlack * std::max(std::abs(tEnter), std::abs(tExit));
@@ -112,8 +100,16 @@ bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, c
   // Half-width of the band around each split plane that counts as on both sides (kPlaneSlack),
   // signed along the ray so that the ray is inside the band for t in [tNear, tFar] below.
   const float band = kPlaneSlack * std::max(magnitude, maxComponent(abs(ray.origin)));
-  const float signedBand[3] = {invDirection[0] < 0.0f ? -band : band, invDirection[1] < 0.0f ? -band : band,
-                               invDirection[2] < 0.0f ? -band : band};
+  // Per axis, once per ray: where the band's near and far edges sit relative to the origin, and
+  // which child the ray meets first (the right one when it runs towards -axis).
+  float nearEdge[3], farEdge[3];
+  std::uint32_t firstIsRight[3];
+  for (int a = 0; a < 3; ++a) {
+    const float signedBand = invDirection[a] < 0.0f ? -band : band;
+    nearEdge[a] = origin[a] + signedBand;
+    farEdge[a] = origin[a] - signedBand;
+    firstIsRight[a] = invDirection[a] < 0.0f ? 1u : 0u;
+  }
   StackEntry stack[KdTree::kMaxDepth + 2];  // one push per level at most
   std::uint32_t mailbox[kMailboxSize];
   std::fill(std::begin(mailbox), std::end(mailbox), 0xFFFFFFFFu);
@@ -129,11 +125,10 @@ bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, c
       // (the side it starts on) holds t < tFar, the second t > tNear. A ray inside the band and
       // parallel to the plane gets infinite or NaN values, which fail every test below and so
       // visit both children over the whole span.
-      const float tNear = (split - signedBand[axis] - origin[axis]) * invDirection[axis];
-      const float tFar = (split + signedBand[axis] - origin[axis]) * invDirection[axis];
-      const std::uint32_t firstIsRight = invDirection[axis] < 0.0f ? 1u : 0u;
-      const KdNode* first = base + node->firstChild() + firstIsRight;
-      const KdNode* second = base + node->firstChild() + (firstIsRight ^ 1u);
+      const float tNear = (split - nearEdge[axis]) * invDirection[axis];
+      const float tFar = (split - farEdge[axis]) * invDirection[axis];
+      const KdNode* first = base + node->firstChild() + firstIsRight[axis];
+      const KdNode* second = base + node->firstChild() + (firstIsRight[axis] ^ 1u);
       if (tNear > tExit + eps) {
         node = first;
       } else if (tFar < tEnter - eps) {
@@ -176,48 +171,47 @@ bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, c
       node = base + stack[top].node;
       tEnter = stack[top].tEnter;
       tExit = stack[top].tExit;
-    } while (tEnter > bound() + eps);
+    } while (tEnter > query.bound(tMax) + eps);
   }
 }
 
 }  // namespace
 
-bool KdTree::intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
+template <typename Filter>
+bool KdTree::closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const {
   LANCER_KD_COUNT(rays);
-  ClosestHit query{Hit{tMax, Hit{}.face}, tMax};
+  ClosestHit<Filter> query{Hit{tMax, Hit{}.face}, tMax, keeps};
   for (const PackedTriangle& tri : slivers_) query.test(tri, ray, tMin, tMax);
-  walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return query.best.t; });
+  walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query);
   if (!query.best.valid()) return false;
   hit = query.best;
   return true;
+}
+
+template <typename Filter>
+bool KdTree::anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const {
+  LANCER_KD_COUNT(rays);
+  AnyHit<Filter> query{keeps};
+  for (const PackedTriangle& tri : slivers_) {
+    if (query.test(tri, ray, tMin, tMax)) return true;
+  }
+  return walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query);
+}
+
+bool KdTree::intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
+  return closestHit(ray, tMin, tMax, KeepEveryHit{}, hit);
 }
 
 bool KdTree::occluded(const Ray& ray, float tMin, float tMax) const {
-  LANCER_KD_COUNT(rays);
-  AnyHit query;
-  for (const PackedTriangle& tri : slivers_) {
-    if (query.test(tri, ray, tMin, tMax)) return true;
-  }
-  return walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return tMax; });
+  return anyHit(ray, tMin, tMax, KeepEveryHit{});
 }
 
-bool KdTree::intersect(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips, Hit& hit) const {
-  LANCER_KD_COUNT(rays);
-  ClippedClosestHit query{Hit{tMax, Hit{}.face}, tMax, clips};
-  for (const PackedTriangle& tri : slivers_) query.test(tri, ray, tMin, tMax);
-  walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return query.best.t; });
-  if (!query.best.valid()) return false;
-  hit = query.best;
-  return true;
+bool KdTree::intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const {
+  return closestHit(ray, tMin, tMax, filter, hit);
 }
 
-bool KdTree::occluded(const Ray& ray, float tMin, float tMax, const FaceClipSets& clips) const {
-  LANCER_KD_COUNT(rays);
-  ClippedAnyHit query{clips};
-  for (const PackedTriangle& tri : slivers_) {
-    if (query.test(tri, ray, tMin, tMax)) return true;
-  }
-  return walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query, [&] { return tMax; });
+bool KdTree::occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const {
+  return anyHit(ray, tMin, tMax, filter);
 }
 
 }  // namespace lancer

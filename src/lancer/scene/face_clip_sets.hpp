@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "lancer/math/clip_planes.hpp"
+#include "lancer/scene/clip_planes.hpp"
 
 namespace lancer {
 

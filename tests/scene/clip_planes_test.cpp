@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "lancer/math/clip_planes.hpp"
+#include "lancer/scene/clip_planes.hpp"
 
 namespace lancer {
 namespace {

@@ -1,0 +1,21 @@
+// A filter on candidate hits, for queries that must see through some faces (the renderer's per-mesh
+// cut views): the accelerators know that a hit can be refused, not why.
+#pragma once
+
+#include <cstdint>
+
+#include "lancer/math/ray.hpp"
+
+namespace lancer {
+
+// `keeps(context, ray, face, t)` says whether the hit of `face` at t counts. Called only for a hit
+// that would otherwise be taken, never per triangle test, so an indirect call is cheap enough there;
+// scenes without a filter use the unfiltered queries, which make no call at all.
+struct HitFilter {
+  const void* context = nullptr;
+  bool (*keeps)(const void* context, const Ray& ray, std::uint32_t face, float t) = nullptr;
+
+  bool operator()(const Ray& ray, std::uint32_t face, float t) const { return keeps(context, ray, face, t); }
+};
+
+}  // namespace lancer
