@@ -139,6 +139,7 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
     std::string path = *overrides.gmshView;
     if (path.empty() && !description.meshes.empty()) path = description.meshes.front().file + ".opt";
     description.camera.gmshView = readGmshView(path);
+    if (!preloaded.empty()) placeQuickLookLights(description, preloaded.front());  // lit from gmsh's side
   }
   RenderOverrides applied;
   applied.width = overrides.width;

@@ -148,7 +148,11 @@ void bindScene(py::module_& module) {
           "guessed)")
       .def_property(
           "camera", [](const PythonScene& scene) { return scene.description.camera; },
-          [](PythonScene& scene, const CameraSettings& camera) { scene.description.camera = camera; })
+          [](PythonScene& scene, const CameraSettings& camera) {
+            scene.description.camera = camera;
+            // The quick look's key and fill follow its camera, wherever it is put.
+            if (scene.quickLookMesh) placeQuickLookLights(scene.description, *scene.quickLookMesh);
+          })
       .def_property_readonly("path", [](const PythonScene& scene) { return scene.description.path; })
       .def_property_readonly("width", [](const PythonScene& scene) { return scene.description.render.width; })
       .def_property_readonly("height",

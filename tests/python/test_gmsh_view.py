@@ -111,3 +111,21 @@ def test_live_gmsh_view(tmp_path):
     scene.camera = camera
     image = lancer.render(scene, width=theirs.shape[1], height=theirs.shape[0], transparent_background=True)
     assert_same_silhouette(np.asarray(image)[..., 3] > 127, theirs, "Camera.from_gmsh()")
+
+
+def test_quick_look_lights_follow_a_gmsh_view(tmp_path):
+    """Seen from behind (gmsh's RotationY = 160), the part is lit as well as in the default view:
+    the quick look's key and fill follow the gmsh camera instead of staying at the automatic one."""
+    behind = tmp_path / "behind.opt"
+    behind.write_text("General.Trackball = 0;\nGeneral.RotationY = 160;\nGeneral.RotationX = 25;\n")
+    mesh = lancer.read_msh(str(VIEWS / "part.msh"))
+
+    def part_brightness(scene):
+        image = np.asarray(lancer.render(scene, width=160, height=120, transparent_background=True), dtype=float)
+        covered = image[..., 3] > 127
+        return image[..., :3][covered].mean()
+
+    default = part_brightness(lancer.Scene.quick_look(mesh))
+    scene = lancer.Scene.quick_look(mesh)
+    scene.camera = lancer.Camera.from_gmsh_file(str(behind))
+    assert part_brightness(scene) > 0.8 * default

@@ -93,10 +93,13 @@ void placeQuickLookLights(SceneDescription& scene, const Mesh& mesh) {
                           : Aabbd{mesh.origin + toDouble(bounds.lower), mesh.origin + toDouble(bounds.upper)};
   const Vec3d centre = world.center();
   const double radius = std::max(0.5 * length(world.extent()), 1e-12);
-  const CameraSettings& camera = scene.camera;
+  // A camera placed by the user (a position, a gmsh view) takes the lights along: its frame, its eye.
+  const CameraSettings camera = resolveGmshView(scene.camera, world);
+  const Vec3d viewFrom =
+      camera.position ? *camera.position - camera.lookAt.value_or(centre) : camera.viewFrom;
   // The camera's frame: screen right, up, and the front (towards the viewer's side of the model).
   const Vec3d up = normalize(camera.up);
-  const Vec3d right = normalize(cross(-camera.viewFrom, up));
+  const Vec3d right = normalize(cross(-viewFrom, up));
   const Vec3d front = cross(right, up);
   const double aspect = static_cast<double>(scene.render.width) / scene.render.height;
   scene.lights.clear();
@@ -106,7 +109,9 @@ void placeQuickLookLights(SceneDescription& scene, const Mesh& mesh) {
                           {0.9f, 0.9f, 0.9f},
                           {1, 0, 0}});
   // The fill sits at the eye: whatever the camera sees, it lights (the shadow ray retraces the view).
-  scene.lights.push_back({defaultCameraPosition(world, camera, aspect), {0.5f, 0.5f, 0.52f}, {1, 0, 0}});
+  scene.lights.push_back({camera.position.value_or(defaultCameraPosition(world, camera, aspect)),
+                          {0.5f, 0.5f, 0.52f},
+                          {1, 0, 0}});
 }
 
 }  // namespace lancer

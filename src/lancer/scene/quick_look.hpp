@@ -18,7 +18,8 @@ SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh, s
 // Places the quick look's two lights for its automatic camera at the description's image size (the
 // camera's distance depends on the aspect): a key above, left and in front of the camera, and a
 // fill at the camera itself, so every face the camera sees is lit from the camera's side. Called
-// again when the image size changes after quickLookScene (command-line --width, --height).
+// again when the image size changes after quickLookScene (command-line --width, --height) and when
+// the camera is placed (a gmsh view, a Python Camera with a position): the lights then follow it.
 void placeQuickLookLights(SceneDescription& scene, const Mesh& mesh);
 
 }  // namespace lancer
