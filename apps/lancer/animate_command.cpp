@@ -94,7 +94,8 @@ int runAnimate(const AnimateCommandOptions& options) {
   AnimationSettings animation = prepared.description.animation.value_or(AnimationSettings{});
   if (options.frames) animation.frames = *options.frames;
   if (options.fps) animation.fps = *options.fps;
-  if (!options.orbit.empty()) animation.orbitLight = parseOrbit(options.orbit, prepared.scene.lights.size());
+  if (!options.orbit.empty())
+    animation.orbitLight = parseOrbit(options.orbit, prepared.scene.appearance.lights.size());
 
   // render.output names `lancer render`'s still image: an animation never writes over it unasked.
   const std::string& output = options.output;
@@ -176,8 +177,8 @@ int runAnimate(const AnimateCommandOptions& options) {
     std::fprintf(stderr,
                  "%s: %zu frames %dx%d, %zu faces, load %.3f s, build %.3f s (once), frames %.3f s "
                  "(%.3f s/frame%s)\n",
-                 output.c_str(), frames.size(), settings.width, settings.height, prepared.scene.faces.size(),
-                 prepared.loadSeconds, prepared.buildSeconds, seconds,
+                 output.c_str(), frames.size(), settings.width, settings.height,
+                 prepared.scene.geometry.faces.size(), prepared.loadSeconds, prepared.buildSeconds, seconds,
                  frames.empty() ? 0.0 : seconds / static_cast<double>(frames.size()), speed.c_str());
   }
   return kExitOk;

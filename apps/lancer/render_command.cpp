@@ -230,7 +230,7 @@ int runRender(const RenderCommandOptions& options) {
     std::fprintf(stderr,
                  "%s: %dx%d, %zu faces, %.2f samples/pixel, load %.3f s, build %.3f s, trace %.3f s "
                  "(%.2f Mrays/s), total %.3f s\n",
-                 output.c_str(), settings.width, settings.height, prepared.scene.faces.size(),
+                 output.c_str(), settings.width, settings.height, prepared.scene.geometry.faces.size(),
                  stats.samplesPerPixel, prepared.loadSeconds, prepared.buildSeconds, stats.seconds,
                  stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, total);
   }

@@ -158,7 +158,8 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
   const double loadSeconds = load.seconds();
   const Stopwatch build;
-  Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, parseAccelKind(overrides.accel));
+  Accelerator accelerator =
+      Accelerator::build(scene.geometry.positions, scene.geometry.faces, parseAccelKind(overrides.accel));
   return PreparedScene{std::move(description), std::move(scene), std::move(accelerator), loadSeconds,
                        build.seconds()};
 }

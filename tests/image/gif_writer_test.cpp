@@ -71,17 +71,9 @@ TEST(GifWriter, FewColourAnimationDecodesExactly) {
   GifOptions options;
   options.fps = 25;
   const DecodedGif gif = writeAndDecode(folder.file("a.gif"), frames, options);
-  ASSERT_EQ(gif.error, "");
-  EXPECT_EQ(gif.width, 40);
-  EXPECT_EQ(gif.height, 30);
-  EXPECT_TRUE(gif.globalPalette);
-  EXPECT_EQ(gif.loopCount, 0);
-  ASSERT_EQ(gif.frames.size(), 4u);
-  for (std::size_t k = 0; k < 4; ++k) {
-    EXPECT_EQ(gif.frames[k].delay, 4);
-    EXPECT_FALSE(gif.frames[k].localPalette);
-    EXPECT_EQ(gif.frames[k].canvas, rgb8(frames[k])) << "frame " << k;
-  }
+  ASSERT_NO_FATAL_FAILURE(
+      test::expectGifLayout(gif, {.width = 40, .height = 30, .loopCount = 0, .frames = 4, .delay = 4}));
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(gif.frames[k].canvas, rgb8(frames[k])) << "frame " << k;
   // After the first, frames store only the rectangle that changed: the square's old and new place.
   EXPECT_EQ(gif.frames[0].width, 40);
   EXPECT_EQ(gif.frames[1].left, 5);

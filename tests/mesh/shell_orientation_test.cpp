@@ -131,16 +131,17 @@ TEST(ShellOrientation, SceneBuilderOrientsEvenUnderAMirroringScale) {
   flipEvery(sphere, 2, 1);
   const std::size_t faceCount = sphere.faces.size();
   const Scene scene = buildScene(description, {sphere, sphere});
-  ASSERT_EQ(scene.faces.size(), 2 * faceCount);
+  ASSERT_EQ(scene.geometry.faces.size(), 2 * faceCount);
   int outward = 0;
-  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+  for (std::size_t f = 0; f < scene.geometry.faces.size(); ++f) {
     const Vec3d centre = f < faceCount ? Vec3d{0, 0, 0} : Vec3d{5, 0, 0};
     Vec3 centroid{0, 0, 0};
-    for (int c = 0; c < 3; ++c) centroid += scene.positions[scene.faces[f].vertex[c]] * (1.0f / 3);
-    outward += dot(scene.faceNormals[f], centroid - scene.toSceneSpace(centre)) > 0;
-    EXPECT_EQ(scene.faceBoundsSolid[f], 1);
+    for (int c = 0; c < 3; ++c)
+      centroid += scene.geometry.positions[scene.geometry.faces[f].vertex[c]] * (1.0f / 3);
+    outward += dot(scene.geometry.faceNormals[f], centroid - scene.geometry.toSceneSpace(centre)) > 0;
+    EXPECT_EQ(scene.geometry.faceBoundsSolid[f], 1);
   }
-  EXPECT_EQ(outward, static_cast<int>(scene.faces.size()));
+  EXPECT_EQ(outward, static_cast<int>(scene.geometry.faces.size()));
 }
 
 }  // namespace

@@ -122,27 +122,27 @@ SceneDescription twoMaterials(const char* first, const char* second) {
 
 Vec3 centroid(const Scene& scene, std::size_t f) {
   Vec3 sum{0, 0, 0};
-  const MeshFace& face = scene.faces[f];
-  for (int c = 0; c < face.cornerCount(); ++c) sum += scene.positions[face.vertex[c]];
+  const MeshFace& face = scene.geometry.faces[f];
+  for (int c = 0; c < face.cornerCount(); ++c) sum += scene.geometry.positions[face.vertex[c]];
   return sum * (1.0f / static_cast<float>(face.cornerCount()));
 }
 
 TEST(VolumeInterface, ClosedInterfacesFaceOutOfTheVolumeTheyEnclose) {
   const Scene scene =
       test::sceneFromMeshes(twoMaterials("Cube", "Ball"), {readMsh(multimaterial("cube_sphere_v41.msh"))});
-  ASSERT_EQ(scene.faceOuterMaterial.size(), scene.faces.size());
+  ASSERT_EQ(scene.appearance.faceOuterMaterial.size(), scene.geometry.faces.size());
   std::size_t interfaces = 0;
-  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-    ASSERT_TRUE(scene.faceBoundsSolid[f]) << f;
-    const Vec3 outward = centroid(scene, f) - scene.toSceneSpace({0, 0, 0});
-    ASSERT_GT(dot(scene.faceNormals[f], outward), 0.0f) << f;
-    if (scene.faceOuterMaterial[f] == Scene::kNoMaterial) {
-      ASSERT_EQ(scene.faceMaterial[f], 0u) << f;
+  for (std::size_t f = 0; f < scene.geometry.faces.size(); ++f) {
+    ASSERT_TRUE(scene.geometry.faceBoundsSolid[f]) << f;
+    const Vec3 outward = centroid(scene, f) - scene.geometry.toSceneSpace({0, 0, 0});
+    ASSERT_GT(dot(scene.geometry.faceNormals[f], outward), 0.0f) << f;
+    if (scene.appearance.faceOuterMaterial[f] == SceneAppearance::kNoMaterial) {
+      ASSERT_EQ(scene.appearance.faceMaterial[f], 0u) << f;
       continue;
     }
     ++interfaces;
-    ASSERT_EQ(scene.faceMaterial[f], 1u) << f;       // the ball behind
-    ASSERT_EQ(scene.faceOuterMaterial[f], 0u) << f;  // the cube in front
+    ASSERT_EQ(scene.appearance.faceMaterial[f], 1u) << f;       // the ball behind
+    ASSERT_EQ(scene.appearance.faceOuterMaterial[f], 0u) << f;  // the cube in front
   }
   EXPECT_GT(interfaces, 500u);
 }
@@ -150,26 +150,26 @@ TEST(VolumeInterface, ClosedInterfacesFaceOutOfTheVolumeTheyEnclose) {
 TEST(VolumeInterface, FacesOnNonManifoldRimsBoundSolidsWoundOutOfTheirVolume) {
   const Scene slabs = test::sceneFromMeshes(twoMaterials("Glass", "Water"),
                                             {readMsh(multimaterial("glass_water_slabs_v41.msh"))});
-  for (std::size_t f = 0; f < slabs.faces.size(); ++f) {
-    ASSERT_TRUE(slabs.faceBoundsSolid[f]) << f;
+  for (std::size_t f = 0; f < slabs.geometry.faces.size(); ++f) {
+    ASSERT_TRUE(slabs.geometry.faceBoundsSolid[f]) << f;
     // Glass is y in [0, 1], water y in [-1, 0]: a face points away from its own slab's middle.
-    const float middle = slabs.faceMaterial[f] == 0 ? 0.5f : -0.5f;
-    const Vec3 fromMiddle = centroid(slabs, f) - slabs.toSceneSpace({0, middle, 0});
-    ASSERT_GT(dot(slabs.faceNormals[f], fromMiddle), 0.0f) << f;
-    if (slabs.faceOuterMaterial[f] != Scene::kNoMaterial) {
-      ASSERT_NE(slabs.faceOuterMaterial[f], slabs.faceMaterial[f]) << f;
+    const float middle = slabs.appearance.faceMaterial[f] == 0 ? 0.5f : -0.5f;
+    const Vec3 fromMiddle = centroid(slabs, f) - slabs.geometry.toSceneSpace({0, middle, 0});
+    ASSERT_GT(dot(slabs.geometry.faceNormals[f], fromMiddle), 0.0f) << f;
+    if (slabs.appearance.faceOuterMaterial[f] != SceneAppearance::kNoMaterial) {
+      ASSERT_NE(slabs.appearance.faceOuterMaterial[f], slabs.appearance.faceMaterial[f]) << f;
     }
   }
   const Scene hexes = test::sceneFromMeshes(twoMaterials("Box", "Cylinder"),
                                             {readMsh(multimaterial("box_cylinder_hex_v41.msh"))});
-  for (std::size_t f = 0; f < hexes.faces.size(); ++f) {
-    ASSERT_TRUE(hexes.faceBoundsSolid[f]) << f;
-    if (hexes.faceOuterMaterial[f] == Scene::kNoMaterial) continue;
+  for (std::size_t f = 0; f < hexes.geometry.faces.size(); ++f) {
+    ASSERT_TRUE(hexes.geometry.faceBoundsSolid[f]) << f;
+    if (hexes.appearance.faceOuterMaterial[f] == SceneAppearance::kNoMaterial) continue;
     // On the cylinder's side: out of the cylinder means away from the axis, out of the box towards it.
-    Vec3 radial = centroid(hexes, f) - hexes.toSceneSpace({0, 0, 0});
+    Vec3 radial = centroid(hexes, f) - hexes.geometry.toSceneSpace({0, 0, 0});
     radial.z = 0;
-    const float sign = hexes.faceMaterial[f] == 1 ? 1.0f : -1.0f;
-    ASSERT_GT(sign * dot(hexes.faceNormals[f], radial), 0.0f) << f;
+    const float sign = hexes.appearance.faceMaterial[f] == 1 ? 1.0f : -1.0f;
+    ASSERT_GT(sign * dot(hexes.geometry.faceNormals[f], radial), 0.0f) << f;
   }
 }
 

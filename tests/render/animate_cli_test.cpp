@@ -36,6 +36,17 @@ std::vector<std::vector<std::uint8_t>> trueColourFrames(const ScratchFolder& fol
   return frames;
 }
 
+// Each frame of `gif` close to the same frame of `truth`, as close as a dithered 256-colour palette gets.
+void expectCloseToTheTrueColourFrames(const test::DecodedGif& gif,
+                                      const std::vector<std::vector<std::uint8_t>>& truth) {
+  ASSERT_EQ(gif.frames.size(), truth.size());
+  for (std::size_t k = 0; k < truth.size(); ++k) {
+    const test::SampleError error = test::sampleError(gif.frames[k].canvas, truth[k]);
+    EXPECT_LT(error.mean, 3.0) << "frame " << k;
+    EXPECT_LE(error.max, 40) << "frame " << k;
+  }
+}
+
 TEST(AnimateCli, GifHasTheFramesSizeDelayAndLoopCountAndIsCloseToTheTrueColourFrames) {
   ScratchFolder folder;
   const auto truth = trueColourFrames(folder);
@@ -46,19 +57,9 @@ TEST(AnimateCli, GifHasTheFramesSizeDelayAndLoopCountAndIsCloseToTheTrueColourFr
   test::expectContainsAll(result.output, {"12 fps plays at 12.5 fps (a delay of 8/100 s)", "4 frames 64x48"});
 
   const test::DecodedGif gif = test::decodeGif(folder.file("t.gif"));
-  ASSERT_EQ(gif.error, "");
-  EXPECT_EQ(gif.width, 64);
-  EXPECT_EQ(gif.height, 48);
-  EXPECT_TRUE(gif.globalPalette);
-  EXPECT_EQ(gif.loopCount, 3);
-  ASSERT_EQ(gif.frames.size(), 4u);
-  for (std::size_t k = 0; k < 4; ++k) {
-    EXPECT_EQ(gif.frames[k].delay, 8);
-    EXPECT_FALSE(gif.frames[k].localPalette);
-    const test::SampleError error = test::sampleError(gif.frames[k].canvas, truth[k]);
-    EXPECT_LT(error.mean, 3.0) << "frame " << k;  // ordered dither over a 256-colour palette
-    EXPECT_LE(error.max, 40) << "frame " << k;
-  }
+  ASSERT_NO_FATAL_FAILURE(
+      test::expectGifLayout(gif, {.width = 64, .height = 48, .loopCount = 3, .frames = 4, .delay = 8}));
+  expectCloseToTheTrueColourFrames(gif, truth);  // ordered dither over a 256-colour palette
   EXPECT_EQ(folder.entries(),
             (std::vector<std::string>{"f_0000.png", "f_0001.png", "f_0002.png", "f_0003.png", "t.gif"}));
 }
@@ -74,15 +75,13 @@ TEST(AnimateCli, PerFramePalettesErrorDiffusionAndPlayOnce) {
     ASSERT_EQ(result.exitCode, 0) << result.output;
     EXPECT_EQ(result.output, "");  // 25 fps is exact: nothing to say, and -q
     const test::DecodedGif gif = test::decodeGif(folder.file("t.gif"));
-    ASSERT_EQ(gif.frames.size(), 4u);
-    EXPECT_FALSE(gif.loopCount.has_value());
-    for (std::size_t k = 0; k < 4; ++k) {
-      EXPECT_EQ(gif.frames[k].delay, 4);
-      EXPECT_TRUE(gif.frames[k].localPalette);
-      const test::SampleError error = test::sampleError(gif.frames[k].canvas, truth[k]);
-      EXPECT_LT(error.mean, 3.0) << "frame " << k;
-      EXPECT_LE(error.max, 40) << "frame " << k;
-    }
+    ASSERT_NO_FATAL_FAILURE(test::expectGifLayout(gif, {.width = 64,
+                                                        .height = 48,
+                                                        .globalPalette = false,
+                                                        .loopCount = std::nullopt,
+                                                        .frames = 4,
+                                                        .delay = 4}));
+    expectCloseToTheTrueColourFrames(gif, truth);
   }
 }
 

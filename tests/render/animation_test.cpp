@@ -20,7 +20,8 @@ const std::string kTurntable = std::string(LANCER_TEST_DATA_DIR) + "/render/turn
 struct LoadedScene {
   SceneDescription description = loadScene(kTurntable);
   Scene scene = buildScene(description);
-  Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, AccelKind::KdTreeSah);
+  Accelerator accelerator =
+      Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah);
 };
 
 std::vector<Image> animate(LoadedScene& s, const AnimationSettings& animation, int threads = 2) {
@@ -88,9 +89,9 @@ TEST(OrbitCamera, DefaultCentreIsTheSceneBoundsCentre) {
   AnimationSettings animation = *s.description.animation;
   animation.center.reset();
   const Vec3d centre = orbitCenter(animation, s.scene);
-  const Aabb& b = s.scene.bounds;
-  EXPECT_NEAR(centre.x, s.scene.origin.x + 0.5 * (b.lower.x + b.upper.x), 1e-6);
-  EXPECT_NEAR(centre.z, s.scene.origin.z + 0.5 * (b.lower.z + b.upper.z), 1e-6);
+  const Aabb& b = s.scene.geometry.bounds;
+  EXPECT_NEAR(centre.x, s.scene.geometry.origin.x + 0.5 * (b.lower.x + b.upper.x), 1e-6);
+  EXPECT_NEAR(centre.z, s.scene.geometry.origin.z + 0.5 * (b.lower.z + b.upper.z), 1e-6);
 }
 
 // The issue's oracle: half way round a 4-frame full turn, the camera looks from the opposite side.
@@ -156,13 +157,14 @@ TEST(Animation, LightOrbitHalfTurnEqualsTheLightOnTheOppositeSide) {
   LoadedScene s;
   AnimationSettings animation = *s.description.animation;
   animation.orbitLight = 0;
-  const Vec3 before = s.scene.lights[0].position;
+  const Vec3 before = s.scene.appearance.lights[0].position;
   const std::vector<Image> frames = animate(s, animation);
   ASSERT_EQ(frames.size(), 4u);
-  EXPECT_EQ(s.scene.lights[0].position, before);  // restored after the animation
+  EXPECT_EQ(s.scene.appearance.lights[0].position, before);  // restored after the animation
 
   EXPECT_TRUE(bitIdentical(frames[0], renderWith(s, s.description.camera)));  // the camera never moves
-  s.scene.lights[0].position = s.scene.toSceneSpace({4, 8, -5});  // [-4, 8, 5] turned 180 degrees about y
+  s.scene.appearance.lights[0].position =
+      s.scene.geometry.toSceneSpace({4, 8, -5});  // [-4, 8, 5] turned 180 degrees about y
   const Image expected = renderWith(s, s.description.camera);
   EXPECT_GT(test::psnr8(frames[2], expected), 40.0);
   EXPECT_LT(test::psnr8(frames[0], expected), 35.0);
@@ -175,7 +177,7 @@ TEST(Animation, CancellingStopsBeforeTheNextFrame) {
   options.threads = 2;
   options.cancel = &cancel;
   int delivered = 0;
-  const Vec3 lightBefore = s.scene.lights[1].position;
+  const Vec3 lightBefore = s.scene.appearance.lights[1].position;
   AnimationSettings animation = *s.description.animation;
   animation.orbitLight = 1;
   const AnimationStats stats =
@@ -185,7 +187,7 @@ TEST(Animation, CancellingStopsBeforeTheNextFrame) {
       });
   EXPECT_TRUE(stats.cancelled);
   EXPECT_EQ(delivered, 1);
-  EXPECT_EQ(s.scene.lights[1].position, lightBefore);
+  EXPECT_EQ(s.scene.appearance.lights[1].position, lightBefore);
 }
 
 // A frame writer that fails (a full disk) ends the animation with its exception, and the orbiting
@@ -194,7 +196,7 @@ TEST(Animation, AFailingFrameWriterLeavesTheLightsAsTheyWere) {
   LoadedScene s;
   RenderOptions options;
   options.threads = 2;
-  const Vec3 lightBefore = s.scene.lights[0].position;
+  const Vec3 lightBefore = s.scene.appearance.lights[0].position;
   AnimationSettings animation = *s.description.animation;
   animation.orbitLight = 0;
   int delivered = 0;
@@ -204,7 +206,7 @@ TEST(Animation, AFailingFrameWriterLeavesTheLightsAsTheyWere) {
                                }),
                std::runtime_error);
   EXPECT_EQ(delivered, 2);
-  EXPECT_EQ(s.scene.lights[0].position, lightBefore);
+  EXPECT_EQ(s.scene.appearance.lights[0].position, lightBefore);
 }
 
 }  // namespace

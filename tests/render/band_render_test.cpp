@@ -45,8 +45,8 @@ struct Rendering {
       : description(d),
         scene(test::sceneFromMeshes(d, {test::squareMesh(-1.5f, -1.5f, 1.5f, 1.5f, 0),
                                         test::squareMesh(-0.3f, -0.4f, 0.2f, 0.3f, 0.6f)})),
-        accelerator(Accelerator::build(scene.positions, scene.faces, AccelKind::KdTreeSah)),
-        camera(d.camera, scene.origin, scene.bounds, d.render.width, d.render.height) {}
+        accelerator(Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah)),
+        camera(d.camera, scene.geometry.origin, scene.geometry.bounds, d.render.width, d.render.height) {}
 
   Image whole(int threads) const {
     RenderOptions options;

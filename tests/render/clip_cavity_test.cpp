@@ -20,12 +20,9 @@ constexpr double kViewHeight = 2.5;
 // at x = 0 with cos = 1/sqrt(5), and the far cavity wall near the axis lies in the shadow of the
 // cavity's upper wall.
 SceneDescription cutHollowSphere() {
-  SceneDescription d =
-      test::orthographicView(kSize, kSize, Vec3d{5, 0, 0}, Vec3d{0, 0, 0}, kViewHeight, Vec3d{0, 0, 1});
-  d.render.shading = ShadingMode::Flat;
-  d.render.background = {0, 0, 1};
-  d.ambient = {0.2f, 0.2f, 0.2f};
-  d.lights = {{Vec3d{1000, 0, 2000}, {0.7f, 0.7f, 0.7f}, {1, 0, 0}}};
+  SceneDescription d = test::flatLitOnBlue(
+      test::orthographicView(kSize, kSize, Vec3d{5, 0, 0}, Vec3d{0, 0, 0}, kViewHeight, Vec3d{0, 0, 1}),
+      Vec3d{1000, 0, 2000});
   d.materials = {test::matteMaterial("solid", {0.5f, 0.4f, 0.0f}, {0.6f, 0.5f, 0.0f})};
   d.meshes.resize(1);
   d.clips = {{Vec3d{0, 0, 0}, Vec3d{1, 0, 0}, true}};

@@ -18,12 +18,9 @@ constexpr int kSize = 48;
 
 // The unit cube seen orthographically from +x, one light straight along the view axis.
 SceneDescription cubeFromPlusX() {
-  SceneDescription d =
-      test::orthographicView(kSize, kSize, Vec3d{5, 0.5, 0.5}, Vec3d{0, 0.5, 0.5}, 1.5, Vec3d{0, 0, 1});
-  d.render.shading = ShadingMode::Flat;
-  d.render.background = {0, 0, 1};
-  d.ambient = {0.2f, 0.2f, 0.2f};
-  d.lights = {{Vec3d{20, 0.5, 0.5}, {0.7f, 0.7f, 0.7f}, {1, 0, 0}}};
+  SceneDescription d = test::flatLitOnBlue(
+      test::orthographicView(kSize, kSize, Vec3d{5, 0.5, 0.5}, Vec3d{0, 0.5, 0.5}, 1.5, Vec3d{0, 0, 1}),
+      Vec3d{20, 0.5, 0.5});
   d.materials = {test::matteMaterial("solid", {0.5f, 0.4f, 0.3f}, {0.6f, 0.5f, 0.4f})};
   d.meshes.resize(1);
   return d;
@@ -123,14 +120,11 @@ TEST(Clip, SceneKeysAreRead) {
 }
 
 TEST(ClipBadInput, MissingOrZeroNormalIsAClearError) {
-  auto messageOf = [](const std::string& text) { return test::sceneErrorOf(text, "cut.toml"); };
-  EXPECT_NE(messageOf("[[clip]]\npoint = [0, 0, 0]\n").find("normal"), std::string::npos);
-  EXPECT_NE(messageOf("[[clip]]\npoint = [0, 0, 0]\nnormal = [0, 0, 0]\n")
-                .find("clip[0].normal must not be [0, 0, 0]"),
-            std::string::npos);
-  EXPECT_NE(
-      messageOf("[[clip]]\npoint = [0, 0, 0]\nnormal = [0, 0, 1]\ncpa = true\n").find("did you mean 'cap'"),
-      std::string::npos);
+  test::expectSceneErrorContains("[[clip]]\npoint = [0, 0, 0]\n", "normal", "cut.toml");
+  test::expectSceneErrorContains("[[clip]]\npoint = [0, 0, 0]\nnormal = [0, 0, 0]\n",
+                                 "clip[0].normal must not be [0, 0, 0]", "cut.toml");
+  test::expectSceneErrorContains("[[clip]]\npoint = [0, 0, 0]\nnormal = [0, 0, 1]\ncpa = true\n",
+                                 "did you mean 'cap'", "cut.toml");
 }
 
 }  // namespace

@@ -74,11 +74,12 @@ TEST(FieldColor, ElementDataIsConstantPerFace) {
   const Scene scene = buildScene(description);
   ASSERT_TRUE(scene.fieldColors);
   const FieldColors& fields = *scene.fieldColors;
-  ASSERT_EQ(fields.faceFieldT.size(), scene.faces.size());
+  ASSERT_EQ(fields.faceFieldT.size(), scene.geometry.faces.size());
   EXPECT_TRUE(fields.vertexFieldT.empty());
-  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+  for (std::size_t f = 0; f < scene.geometry.faces.size(); ++f) {
     EXPECT_EQ(fields.faceColorMap[f], (1 + static_cast<int>(ColorMapKind::Viridis)) | FieldColors::kPerFace);
-    const Vec3d p = scene.origin + toDouble(scene.positions[scene.faces[f].vertex[2]]);
+    const Vec3d p =
+        scene.geometry.origin + toDouble(scene.geometry.positions[scene.geometry.faces[f].vertex[2]]);
     const double low = fields.legend.low, high = fields.legend.high;  // the triangles' range
     EXPECT_NEAR(fields.faceFieldT[f], (p.x + 2 * p.y - low) / (high - low), 1e-5) << f;
   }

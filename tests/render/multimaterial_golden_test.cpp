@@ -22,15 +22,13 @@ TEST(MultiMaterialGolden, CutPartShowsEachVolumesCapInItsMaterial) {
 TEST(MultiMaterialGolden, TheGoldenTellsAMissingCapAndAVolumeInAnotherMaterial) {
   // Guards the golden itself: without caps, or with the bushing in the housing's material (an
   // interface that lost its second volume), the PSNR must fall below the floor.
-  const SceneDescription description = loadScene(kDataDir + "cut_three_materials.toml");
-  const Image expected = test::renderScene(description);
-  SceneDescription uncapped = description;
-  uncapped.clips[0].cap = false;
-  EXPECT_LT(test::psnr8(test::renderScene(uncapped), expected), test::kRenderGoldenMinPsnrDb);
-  SceneDescription oneMaterial = description;
-  for (GroupMaterial& group : oneMaterial.meshes[0].groupMaterials)
-    if (group.group == "Bushing") group.material = oneMaterial.meshes[0].material;
-  EXPECT_LT(test::psnr8(test::renderScene(oneMaterial), expected), test::kRenderGoldenMinPsnrDb);
+  auto uncapped = [](SceneDescription& d) { d.clips[0].cap = false; };
+  auto bushingInHousing = [](SceneDescription& d) {
+    for (GroupMaterial& group : d.meshes[0].groupMaterials)
+      if (group.group == "Bushing") group.material = d.meshes[0].material;
+  };
+  test::expectEachChangeBelowGoldenFloor(loadScene(kDataDir + "cut_three_materials.toml"),
+                                         {uncapped, bushingInHousing});
 }
 
 }  // namespace

@@ -198,7 +198,8 @@ TEST(MultiMaterialRender, SurfacesMeetingThreeOnAnEdgeAreCappedRegionByRegion) {
   d.lights = {{Vec3d{1e5, 1e5, 0}, {0.8f, 0.8f, 0.8f}, {1, 0, 0}}};
   for (Material& m : d.materials) m.kd = m.ka;
   const Scene scene = test::sceneFromMeshes(d, {readMsh(multimaterial("slabs_surfaces_v41.msh"))});
-  for (std::size_t f = 0; f < scene.faces.size(); ++f) ASSERT_TRUE(scene.faceBoundsSolid[f]) << f;
+  for (std::size_t f = 0; f < scene.geometry.faces.size(); ++f)
+    ASSERT_TRUE(scene.geometry.faceBoundsSolid[f]) << f;
   const Image image = test::renderScene(d, scene);
   const float lit = 0.2f + 0.8f * std::sqrt(0.5f);  // cap normal +x, light along (1, 1, 0)
   const double pixel = 3.0 / kSize;

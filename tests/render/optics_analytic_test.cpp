@@ -67,12 +67,14 @@ class RayProbe {
  public:
   RayProbe(const SceneDescription& d, std::vector<Mesh> meshes)
       : scene_(test::sceneFromMeshes(d, std::move(meshes))),
-        accelerator_(Accelerator::build(scene_.positions, scene_.faces, AccelKind::KdTreeSah)),
+        accelerator_(
+            Accelerator::build(scene_.geometry.positions, scene_.geometry.faces, AccelKind::KdTreeSah)),
         tracer_(scene_, accelerator_, d.render) {}
 
   Vec3 trace(const Vec3d& origin, const Vec3d& direction) const {
     TraceCounters counters;
-    return tracer_.tracePrimary(Ray(scene_.toSceneSpace(origin), toFloat(direction)), true, counters).color;
+    return tracer_.tracePrimary(Ray(scene_.geometry.toSceneSpace(origin), toFloat(direction)), true, counters)
+        .color;
   }
   const Scene& scene() const { return scene_; }
 

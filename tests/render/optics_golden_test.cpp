@@ -37,9 +37,9 @@ TEST(OpticsGolden, ExampleSceneBuildsWithItsSolidsOriented) {
   const SceneDescription description = loadScene(LANCER_SOURCE_DIR "/examples/glass_and_mirror.toml");
   const Scene scene = buildScene(description);
   std::size_t solidFaces = 0;
-  for (std::uint8_t solid : scene.faceBoundsSolid) solidFaces += solid;
+  for (std::uint8_t solid : scene.geometry.faceBoundsSolid) solidFaces += solid;
   const std::size_t floorFaces = 400;  // 10 x 10 squares of 2 x 2 quads
-  EXPECT_EQ(solidFaces, scene.faces.size() - floorFaces);
+  EXPECT_EQ(solidFaces, scene.geometry.faces.size() - floorFaces);
   EXPECT_EQ(description.render.sampler, SamplerKind::Adaptive);
 }
 

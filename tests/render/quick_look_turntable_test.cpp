@@ -40,7 +40,8 @@ std::vector<double> turntableBrightness(const std::string& name, bool lightsFoll
   std::vector<Mesh> meshes;
   meshes.push_back(std::move(mesh));
   Scene scene = buildScene(d, std::move(meshes));
-  const Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, AccelKind::KdTreeSah);
+  const Accelerator accelerator =
+      Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah);
   AnimationSettings animation;
   animation.frames = 12;
   std::vector<double> brightness;

@@ -41,7 +41,7 @@ TEST(RenderAnalytic, PlaneMatchesLightingModelEveryPixel) {
     d.lights = {{{1.0, 2.0, 3.0}, {0.9f, 0.8f, 0.7f}, {1, 0, 0}}};
     d.meshes.resize(1);
     const Scene scene = test::sceneFromMeshes(d, {test::squareMesh(-4, -4, 4, 4, 0)});
-    ASSERT_EQ(scene.origin.x, 0.0);
+    ASSERT_EQ(scene.geometry.origin.x, 0.0);
     const Image image = test::renderScene(d, scene);
     const Material m = plainMaterial();
     for (int y = 0; y < d.render.height; ++y) {

@@ -173,7 +173,8 @@ TEST(Sampler, StratifiedAndAdaptiveAreBitIdenticalForAnyThreadCount) {
     EXPECT_TRUE(one == test::renderScene(d, scene, AccelKind::KdTreeSah, 3));
     EXPECT_TRUE(one == test::renderScene(d, scene, AccelKind::KdTreeSah, 1));  // and across runs
     // Every pixel equals what `--pixel x,y` computes for it alone.
-    const Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, AccelKind::KdTreeSah);
+    const Accelerator accelerator =
+        Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah);
     const Camera camera = makeCamera(d.camera, scene, d.render);
     const Renderer renderer(scene, accelerator, camera, d.render);
     for (int y = 0; y < d.render.height; y += 7)

@@ -63,15 +63,13 @@ TEST(ShadowCatcher, DefaultHeightIsTheLowestPointAndKeysAreChecked) {
   ASSERT_TRUE(parsed.floor.has_value());
   EXPECT_EQ(*parsed.floor->height, -2.0);
   EXPECT_EQ(parsed.floor->normal, (Vec3d{0, 0, 1}));
-  auto messageOf = [](const std::string& text) { return test::sceneErrorOf(text, "f.toml"); };
-  EXPECT_EQ(messageOf("[floor]\nheight = 0\n"),
+  EXPECT_EQ(test::sceneErrorOf("[floor]\nheight = 0\n", "f.toml"),
             "f.toml:1:1: error: [floor] has no 'shadow_catcher'; add shadow_catcher = true");
-  EXPECT_NE(messageOf("[floor]\nshadow_catcher = false\n")
-                .find("f.toml:2:18: error: floor.shadow_catcher = false is not supported"),
-            std::string::npos);
-  EXPECT_NE(
-      messageOf("[floor]\nshadow_catcher = true\nnormal = [0, 0, 0]\n").find("floor.normal must not be"),
-      std::string::npos);
+  test::expectSceneErrorContains("[floor]\nshadow_catcher = false\n",
+                                 "f.toml:2:18: error: floor.shadow_catcher = false is not supported",
+                                 "f.toml");
+  test::expectSceneErrorContains("[floor]\nshadow_catcher = true\nnormal = [0, 0, 0]\n",
+                                 "floor.normal must not be", "f.toml");
 }
 
 }  // namespace

@@ -29,7 +29,7 @@ std::vector<std::uint32_t> faceMaterials(const char* file,
   for (const auto& [group, material] : groups)
     instance.groupMaterials.push_back({group, material, SourceLocation{"scene.toml", line++, 1}});
   description.meshes.push_back(instance);
-  return test::sceneFromMeshes(description, {readMsh(instance.file)}).faceMaterial;
+  return test::sceneFromMeshes(description, {readMsh(instance.file)}).appearance.faceMaterial;
 }
 
 // (left square's material, right square's material), every face of a square the same.

@@ -1,6 +1,7 @@
 #include "support/gif_decoder.hpp"
 
 #include <gif_lib.h>
+#include <gtest/gtest.h>
 
 namespace lancer::test {
 namespace {
@@ -67,6 +68,19 @@ DecodedGif decodeGif(const std::string& path) {
   }
   DGifCloseFile(gif, &error);
   return out;
+}
+
+void expectGifLayout(const DecodedGif& gif, const GifLayout& layout) {
+  ASSERT_EQ(gif.error, "");
+  EXPECT_EQ(gif.width, layout.width);
+  EXPECT_EQ(gif.height, layout.height);
+  EXPECT_EQ(gif.globalPalette, layout.globalPalette);
+  EXPECT_EQ(gif.loopCount, layout.loopCount);
+  ASSERT_EQ(gif.frames.size(), layout.frames);
+  for (std::size_t k = 0; k < gif.frames.size(); ++k) {
+    EXPECT_EQ(gif.frames[k].delay, layout.delay) << "frame " << k;
+    EXPECT_EQ(gif.frames[k].localPalette, !layout.globalPalette) << "frame " << k;
+  }
 }
 
 }  // namespace lancer::test

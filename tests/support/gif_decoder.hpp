@@ -26,4 +26,18 @@ struct DecodedGif {
 
 DecodedGif decodeGif(const std::string& path);
 
+// What a whole decoded GIF should be, apart from its pictures.
+struct GifLayout {
+  int width = 0, height = 0;
+  bool globalPalette = true;     // one palette for all frames, else each frame its own
+  std::optional<int> loopCount;  // std::nullopt: plays once (no NETSCAPE2.0 block)
+  std::size_t frames = 0;
+  int delay = 0;  // of every frame, hundredths
+};
+
+// Adds gtest failures where `gif` differs from `layout`: decoded without error, its screen's size,
+// its palettes, its loop count, and each frame's delay. A decoding error or another number of frames
+// is a fatal failure: call it in ASSERT_NO_FATAL_FAILURE before reading the frames.
+void expectGifLayout(const DecodedGif& gif, const GifLayout& layout);
+
 }  // namespace lancer::test

@@ -14,4 +14,8 @@ std::string messageOf(const std::function<void()>& action);
 // The message of parseScene(text, fileName), as a scene file of that name would give it.
 std::string sceneErrorOf(std::string_view text, const std::string& fileName = "scene.toml");
 
+// Adds a gtest failure, with the whole message, unless sceneErrorOf(text, fileName) contains `part`.
+void expectSceneErrorContains(std::string_view text, std::string_view part,
+                              const std::string& fileName = "scene.toml");
+
 }  // namespace lancer::test

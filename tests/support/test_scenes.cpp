@@ -1,5 +1,9 @@
 #include "support/test_scenes.hpp"
 
+#include <gtest/gtest.h>
+
+#include "support/golden.hpp"
+
 namespace lancer::test {
 
 Mesh squareMesh(float x0, float y0, float x1, float y1, float height, std::int32_t physicalTag) {
@@ -30,6 +34,14 @@ SceneDescription topDownView(int width, int height, double viewHeight) {
   return orthographicView(width, height, Vec3d{0, 0, 5}, Vec3d{0, 0, 0}, viewHeight);
 }
 
+SceneDescription flatLitOnBlue(SceneDescription view, Vec3d light) {
+  view.render.shading = ShadingMode::Flat;
+  view.render.background = {0, 0, 1};
+  view.ambient = {0.2f, 0.2f, 0.2f};
+  view.lights = {{light, {0.7f, 0.7f, 0.7f}, {1, 0, 0}}};
+  return view;
+}
+
 Material ambientOnlyMaterial(const char* name, Vec3 ka) { return matteMaterial(name, ka, {0, 0, 0}); }
 
 Material matteMaterial(const char* name, Vec3 ka, Vec3 kd) {
@@ -47,7 +59,7 @@ Scene sceneFromMeshes(const SceneDescription& description, std::vector<Mesh> mes
 
 Image renderScene(const SceneDescription& description, const Scene& scene, AccelKind accel, int threads,
                   RenderStats* stats) {
-  const Accelerator accelerator = Accelerator::build(scene.positions, scene.faces, accel);
+  const Accelerator accelerator = Accelerator::build(scene.geometry.positions, scene.geometry.faces, accel);
   const Camera camera = makeCamera(description.camera, scene, description.render);
   RenderOptions options;
   options.threads = threads;
@@ -61,6 +73,17 @@ Image renderMeshes(const SceneDescription& description, std::vector<Mesh> meshes
 
 Image renderScene(const SceneDescription& description) {
   return renderScene(description, buildScene(description));
+}
+
+void expectEachChangeBelowGoldenFloor(const SceneDescription& description,
+                                      std::initializer_list<std::function<void(SceneDescription&)>> changes) {
+  const Image unchanged = renderScene(description);
+  int index = 0;
+  for (const auto& change : changes) {
+    SceneDescription changed = description;
+    change(changed);
+    EXPECT_LT(psnr8(renderScene(changed), unchanged), kRenderGoldenMinPsnrDb) << "change " << index++;
+  }
 }
 
 }  // namespace lancer::test

@@ -2,6 +2,8 @@
 // (planes and squares at known places) rather than a mesh file.
 #pragma once
 
+#include <functional>
+#include <initializer_list>
 #include <vector>
 
 #include "lancer/accel/accelerator.hpp"
@@ -27,6 +29,10 @@ SceneDescription orthographicView(int width, int height, Vec3d position, Vec3d l
 // orthographicView straight down -z from (0, 0, 5) onto the origin: +x to the right, +y up.
 SceneDescription topDownView(int width, int height, double viewHeight);
 
+// `view` lit like the cut-view tests: flat shading over a blue background, ambient 0.2 and one
+// unattenuated light of 0.7 at `light`.
+SceneDescription flatLitOnBlue(SceneDescription view, Vec3d light);
+
 // A material that shows only ambient light: under ambient 1 a pixel's value is exactly its ka.
 Material ambientOnlyMaterial(const char* name, Vec3 ka);
 
@@ -41,5 +47,11 @@ Image renderMeshes(const SceneDescription& description, std::vector<Mesh> meshes
                    AccelKind accel = AccelKind::KdTreeSah, int threads = 0);
 // Reads the description's meshes, builds its scene and renders it (kd-tree, all cores).
 Image renderScene(const SceneDescription& description);
+
+// For the tests that guard a golden: renders `description`, then each of `changes` applied to it (a
+// lost cap, a volume in another material), and adds a gtest failure for each change whose picture
+// the golden's PSNR floor (kRenderGoldenMinPsnrDb) would not tell from the unchanged one.
+void expectEachChangeBelowGoldenFloor(const SceneDescription& description,
+                                      std::initializer_list<std::function<void(SceneDescription&)>> changes);
 
 }  // namespace lancer::test

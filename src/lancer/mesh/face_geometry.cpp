@@ -15,13 +15,17 @@ Vec3 faceNormal(std::span<const Vec3> positions, const MeshFace& face) {
   return normalize(cross(b - a, c - a));
 }
 
-double faceArea(std::span<const Vec3> positions, const MeshFace& face) {
+Vec3d twiceVectorArea(std::span<const Vec3> positions, const MeshFace& face) {
   const Vec3d a = toDouble(positions[face.vertex[0]]);
   const Vec3d b = toDouble(positions[face.vertex[1]]);
   const Vec3d c = toDouble(positions[face.vertex[2]]);
-  if (!face.isQuad()) return 0.5 * length(cross(b - a, c - a));
+  if (!face.isQuad()) return cross(b - a, c - a);
   const Vec3d d = toDouble(positions[face.vertex[3]]);
-  return 0.5 * length(cross(c - a, d - b));
+  return cross(c - a, d - b);
+}
+
+double faceArea(std::span<const Vec3> positions, const MeshFace& face) {
+  return 0.5 * length(twiceVectorArea(positions, face));
 }
 
 double sixfoldConeVolume(std::span<const Vec3> positions, const MeshFace& face) {

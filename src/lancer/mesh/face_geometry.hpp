@@ -13,8 +13,13 @@ namespace lancer {
 // the mean plane's normal for a non-planar quad). Zero for a degenerate face.
 Vec3 faceNormal(std::span<const Vec3> positions, const MeshFace& face);
 
-// Area of a face in the frame of `positions` (a quad: half the cross product of its diagonals), in
-// double.
+// Twice the vector area of a face, in double: the direction of its normal, with its winding, and
+// twice its area as its length (a quad: the cross product of its diagonals, which in exact arithmetic
+// is the sum of its two triangles' and Newell's normal, for a non-planar quad too). Zero for a
+// degenerate face.
+Vec3d twiceVectorArea(std::span<const Vec3> positions, const MeshFace& face);
+
+// Area of a face in the frame of `positions`: half the length of twiceVectorArea.
 double faceArea(std::span<const Vec3> positions, const MeshFace& face);
 
 // Six times the signed volume of the cone from the origin over the face (its triple products, the

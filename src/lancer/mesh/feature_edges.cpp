@@ -12,8 +12,11 @@ struct EdgeUse {
   std::uint8_t corner;
 };
 
-Vec3 faceNormal(const Mesh& mesh, const MeshFace& face) {
-  // Newell's normal: also right for a slightly non-planar quad.
+// Newell's normal: also right for a slightly non-planar quad. The same vector as face_geometry.hpp's
+// faceNormal in exact arithmetic, but not in float: where a crease is exactly the feature angle
+// (render/bracket_coarse.msh and bracket_zup.msh at 45 degrees) the rounding decides, and the other
+// formula draws other edges there; so this one stays, to keep the pictures.
+Vec3 newellNormal(const Mesh& mesh, const MeshFace& face) {
   Vec3 normal{0, 0, 0};
   const int n = face.cornerCount();
   for (int i = 0; i < n; ++i) {
@@ -34,7 +37,7 @@ std::vector<std::uint8_t> featureEdgeMasks(const Mesh& mesh, float creaseDegrees
   uses.reserve(faceCount * 4);
   for (std::uint32_t f = 0; f < faceCount; ++f) {
     const MeshFace& face = mesh.faces[f];
-    normals[f] = faceNormal(mesh, face);
+    normals[f] = newellNormal(mesh, face);
     const int n = face.cornerCount();
     for (int i = 0; i < n; ++i) {
       const std::uint64_t a = face.vertex[i], b = face.vertex[(i + 1) % n];

@@ -13,14 +13,6 @@ Vec3d cornerOf(std::span<const Vec3> positions, const MeshFace& face, int c) {
   return toDouble(positions[face.vertex[c]]);
 }
 
-// Twice the vector area: the face normal's direction, with its winding (a quad: its diagonals).
-Vec3d areaNormal(std::span<const Vec3> positions, const MeshFace& face) {
-  const Vec3d a = cornerOf(positions, face, 0), b = cornerOf(positions, face, 1),
-              c = cornerOf(positions, face, 2);
-  if (!face.isQuad()) return cross(b - a, c - a);
-  return cross(c - a, cornerOf(positions, face, 3) - b);
-}
-
 }  // namespace
 
 ShellRegions findShellRegions(std::span<const Vec3> positions, const std::vector<MeshFace>& faces,
@@ -82,7 +74,7 @@ ShellRegions findShellRegions(std::span<const Vec3> positions, const std::vector
       }
       const double angle = std::atan2(dot(away, v), dot(away, u));
       const Vec3d forward = cross(axis, away);  // the direction of increasing angle, at the face
-      wings.push_back({edges[k].face, angle, dot(areaNormal(positions, face), forward) > 0});
+      wings.push_back({edges[k].face, angle, dot(twiceVectorArea(positions, face), forward) > 0});
     }
     std::sort(wings.begin(), wings.end(), [](const Wing& a, const Wing& b) { return a.angle < b.angle; });
     for (std::size_t k = 0; k + 1 < wings.size(); ++k)

@@ -32,13 +32,14 @@ Vec3d orbitAxis(const AnimationSettings& animation, const CameraSettings& camera
 
 Vec3d orbitCenter(const AnimationSettings& animation, const Scene& scene) {
   if (animation.center) return *animation.center;
-  return scene.origin + toDouble(scene.bounds.empty() ? Vec3{} : scene.bounds.center());
+  return scene.geometry.origin +
+         toDouble(scene.geometry.bounds.empty() ? Vec3{} : scene.geometry.bounds.center());
 }
 
 CameraSettings orbitCamera(const CameraSettings& camera, const AnimationSettings& animation,
                            const Scene& scene, int imageWidth, int imageHeight, int frame) {
-  const Aabbd worldBounds{scene.origin + toDouble(scene.bounds.lower),
-                          scene.origin + toDouble(scene.bounds.upper)};
+  const Aabbd worldBounds{scene.geometry.origin + toDouble(scene.geometry.bounds.lower),
+                          scene.geometry.origin + toDouble(scene.geometry.bounds.upper)};
   CameraSettings result = camera;
   const Vec3d sceneCentre = worldBounds.empty() ? Vec3d{} : worldBounds.center();
   const Vec3d position = camera.position.value_or(
@@ -60,21 +61,21 @@ Image renderAnimationFrame(Scene& scene, const Accelerator& accelerator, const S
   const bool lightOrbit = animation.orbitLight >= 0;
   // The lights that turn: the orbiting one, or (quick look) all of them with the camera.
   const bool lightsWithCamera = !lightOrbit && description.lightsFollowCamera;
-  const std::vector<SceneLight> originalLights = scene.lights;
+  const std::vector<SceneLight> originalLights = scene.appearance.lights;
   // The scene's lights come back as they were however the frame ends (the render may throw).
   struct RestoreLights {
     Scene& scene;
     const std::vector<SceneLight>& lights;
-    ~RestoreLights() { scene.lights = lights; }
+    ~RestoreLights() { scene.appearance.lights = lights; }
   } restoreLights{scene, originalLights};
   const Vec3d centre = orbitCenter(animation, scene);
   const Vec3d axis = orbitAxis(animation, description.camera);
   auto turnLight = [&](std::size_t index, double degrees) {
     // Scene space and back is not exact, so an unturned light keeps its own coordinates.
-    scene.lights[index] = originalLights[index];
+    scene.appearance.lights[index] = originalLights[index];
     if (degrees != 0)
-      scene.lights[index].position = scene.toSceneSpace(
-          rotateAbout(scene.origin + toDouble(originalLights[index].position), centre, axis, degrees));
+      scene.appearance.lights[index].position = scene.geometry.toSceneSpace(rotateAbout(
+          scene.geometry.origin + toDouble(originalLights[index].position), centre, axis, degrees));
   };
   CameraSettings cameraSettings = description.camera;
   const double degrees = orbitAngleDegrees(animation, frame);
@@ -84,7 +85,7 @@ Image renderAnimationFrame(Scene& scene, const Accelerator& accelerator, const S
     cameraSettings =
         orbitCamera(description.camera, animation, scene, settings.width, settings.height, frame);
     if (lightsWithCamera)
-      for (std::size_t i = 0; i < scene.lights.size(); ++i) turnLight(i, degrees);
+      for (std::size_t i = 0; i < scene.appearance.lights.size(); ++i) turnLight(i, degrees);
   }
   const Camera camera = makeCamera(cameraSettings, scene, settings);
   return Renderer(scene, accelerator, camera, settings).renderImage(options, stats);

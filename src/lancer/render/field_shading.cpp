@@ -16,7 +16,7 @@ bool fieldColorAt(const Scene& scene, const SurfacePoint& surface, bool lineariz
   if (map & FieldColors::kPerFace) {
     t = fields.faceFieldT[surface.face];  // element data: constant over the face
   } else {
-    const MeshFace& face = scene.faces[surface.face];
+    const MeshFace& face = scene.geometry.faces[surface.face];
     for (int c = 0; c < face.cornerCount(); ++c)
       t += surface.cornerWeight[c] * fields.vertexFieldT[face.vertex[c]];
   }

@@ -25,9 +25,9 @@ OutlineEdges::OutlineEdges(const Scene& scene, const Camera& camera, int imageWi
     int count = 0;
   };
   std::unordered_map<std::uint64_t, Sides> edges;
-  for (std::uint32_t f = 0; f < scene.faces.size(); ++f) {
+  for (std::uint32_t f = 0; f < scene.geometry.faces.size(); ++f) {
     if (overlay.faceEdgeStyle[f] == 0) continue;
-    const MeshFace& face = scene.faces[f];
+    const MeshFace& face = scene.geometry.faces[f];
     const int n = face.cornerCount();
     for (int i = 0; i < n; ++i) {
       if (!(overlay.faceEdgeMask[f] & (1u << i))) continue;
@@ -40,15 +40,15 @@ OutlineEdges::OutlineEdges(const Scene& scene, const Camera& camera, int imageWi
   // (more than two faces: taken as an outline when its first two disagree).
   const bool perspective = camera.projection() == Projection::Perspective;
   auto facesEye = [&](std::uint32_t f) {
-    const Vec3& corner = scene.positions[scene.faces[f].vertex[0]];
+    const Vec3& corner = scene.geometry.positions[scene.geometry.faces[f].vertex[0]];
     const Vec3 toEye = perspective ? camera.position() - corner : -camera.forward();
-    return dot(scene.faceNormals[f], toEye) > 0.0f;
+    return dot(scene.geometry.faceNormals[f], toEye) > 0.0f;
   };
   for (const auto& [key, sides] : edges) {
     if (sides.count == 2 && facesEye(sides.faces[0]) == facesEye(sides.faces[1])) continue;
     Segment segment;
-    segment.a = scene.positions[static_cast<std::uint32_t>(key >> 32)];
-    segment.b = scene.positions[static_cast<std::uint32_t>(key & 0xFFFFFFFFu)];
+    segment.a = scene.geometry.positions[static_cast<std::uint32_t>(key >> 32)];
+    segment.b = scene.geometry.positions[static_cast<std::uint32_t>(key & 0xFFFFFFFFu)];
     segment.faces[0] = sides.faces[0];
     segment.faces[1] = sides.count >= 2 ? sides.faces[1] : kNoFace;
     segment.style = overlay.faceEdgeStyle[sides.faces[0]];
@@ -160,9 +160,9 @@ float OutlineEdges::coverage(const Ray& ray, std::uint32_t hitFace, float hitDis
     const Vec3 nearest = segment.a + e * u;
     const float along = dot(nearest - ray.origin, direction);
     if (!(along > 0.0f) || !(along < hitDistance)) continue;
-    if (isClipped(nearest, scene_->clipPlanes)) continue;
-    if (const FaceClipRange* range = scene_->meshClips.rangeOf(segment.faces[0]);
-        range != nullptr && isClipped(nearest, scene_->meshClips.planesOf(*range)))
+    if (isClipped(nearest, scene_->clipping.planes)) continue;
+    if (const FaceClipRange* range = scene_->clipping.perMesh.rangeOf(segment.faces[0]);
+        range != nullptr && isClipped(nearest, scene_->clipping.perMesh.planesOf(*range)))
       continue;
     const EdgeStyle& style = scene_->edges->styles[segment.style];
     const float pixels = length(wAcross + eAcross * u) / footprint.at(along);

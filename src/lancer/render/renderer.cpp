@@ -159,7 +159,7 @@ Rgba tracePixel(const Tracer& tracer, const Camera& camera, const RenderSettings
 }  // namespace
 
 Camera makeCamera(const CameraSettings& camera, const Scene& scene, const RenderSettings& settings) {
-  return Camera(camera, scene.origin, scene.bounds, settings.width, settings.height);
+  return Camera(camera, scene.geometry.origin, scene.geometry.bounds, settings.width, settings.height);
 }
 
 Renderer::Renderer(const Scene& scene, const Accelerator& accelerator, const Camera& camera,

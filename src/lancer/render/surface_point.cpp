@@ -68,15 +68,15 @@ bool inverseBilinear(Vec2 p, Vec2 a, Vec2 b, Vec2 c, Vec2 d, float& u, float& v)
 }  // namespace
 
 void faceCornerWeights(const Scene& scene, const MeshFace& face, const Vec3& p, float weights[4]) {
-  const Vec3& a = scene.positions[face.vertex[0]];
-  const Vec3& b = scene.positions[face.vertex[1]];
-  const Vec3& c = scene.positions[face.vertex[2]];
+  const Vec3& a = scene.geometry.positions[face.vertex[0]];
+  const Vec3& b = scene.geometry.positions[face.vertex[1]];
+  const Vec3& c = scene.geometry.positions[face.vertex[2]];
   weights[3] = 0;
   if (!face.isQuad()) {
     barycentric(a, b, c, p, weights);
     return;
   }
-  const Vec3& d = scene.positions[face.vertex[3]];
+  const Vec3& d = scene.geometry.positions[face.vertex[3]];
   // Project on the plane of the quad's dominant normal axis.
   const Vec3 n = abs(cross(c - a, d - b));
   const int dropped = n.x >= n.y && n.x >= n.z ? 0 : (n.y >= n.z ? 1 : 2);
@@ -115,12 +115,12 @@ Vec3 surfacePointError(const Vec3& a, const Vec3& b, const Vec3& c) {
 // The point of the triangle the accelerators tested (a quad is corners 0,1,2 and 0,2,3) nearest
 // to p, as a convex combination of its corners, with the bound on its coordinates' error.
 void pointOnHitTriangle(const Scene& scene, const MeshFace& face, const Vec3& p, Vec3& point, Vec3& error) {
-  const Vec3& a = scene.positions[face.vertex[0]];
-  Vec3 b = scene.positions[face.vertex[1]];
-  Vec3 c = scene.positions[face.vertex[2]];
+  const Vec3& a = scene.geometry.positions[face.vertex[0]];
+  Vec3 b = scene.geometry.positions[face.vertex[1]];
+  Vec3 c = scene.geometry.positions[face.vertex[2]];
   if (face.isQuad() && dot(cross(c - a, p - a), cross(c - a, b - a)) < 0) {
     b = c;
-    c = scene.positions[face.vertex[3]];
+    c = scene.geometry.positions[face.vertex[3]];
   }
   float w[3];
   barycentric(a, b, c, p, w);
@@ -132,18 +132,18 @@ SurfacePoint makeSurfacePoint(const Scene& scene, const Ray& ray, const Hit& hit
   SurfacePoint sp;
   sp.face = hit.face;
   const Vec3 alongRay = ray.at(hit.t);
-  const MeshFace& face = scene.faces[hit.face];
+  const MeshFace& face = scene.geometry.faces[hit.face];
   faceCornerWeights(scene, face, alongRay, sp.cornerWeight);
   if (face.isQuad()) {
     pointOnHitTriangle(scene, face, alongRay, sp.position, sp.positionError);
   } else {  // the corner weights are the barycentric ones already
-    const Vec3 &a = scene.positions[face.vertex[0]], &b = scene.positions[face.vertex[1]],
-               &c = scene.positions[face.vertex[2]];
+    const Vec3 &a = scene.geometry.positions[face.vertex[0]], &b = scene.geometry.positions[face.vertex[1]],
+               &c = scene.geometry.positions[face.vertex[2]];
     sp.position = a * sp.cornerWeight[0] + b * sp.cornerWeight[1] + c * sp.cornerWeight[2];
     sp.positionError = surfacePointError(a, b, c);
   }
 
-  const Vec3 ng = scene.faceNormals[hit.face];
+  const Vec3 ng = scene.geometry.faceNormals[hit.face];
   // Two-sided faces: shade the side the ray arrives on.
   sp.normalSign = dot(ng, ray.direction) <= 0.0f ? 1.0f : -1.0f;
   sp.geometricNormal = ng * sp.normalSign;

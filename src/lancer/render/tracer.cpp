@@ -50,8 +50,8 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderS
       maxDepth_(settings.maxDepth),
       footprint_(footprint),
       linearFieldColors_(settings.srgb),
-      anyMeshClips_(!scene.meshClips.empty()) {
-  for (const Material& material : scene.materials) {
+      anyMeshClips_(!scene.clipping.perMesh.empty()) {
+  for (const Material& material : scene.appearance.materials) {
     anyTransparent_ = anyTransparent_ || material.transparency > 0;
     splits_.push_back(energySplit(material));
   }
@@ -69,12 +69,12 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderS
 [[gnu::always_inline]] inline bool Tracer::nearestHit(const Ray& ray, float tMin, float tMax,
                                                       Hit& hit) const {
   if (!anyMeshClips_) return accelerator_.intersect(ray, tMin, tMax, hit);
-  return accelerator_.intersect(ray, tMin, tMax, scene_.meshClips, hit);
+  return accelerator_.intersect(ray, tMin, tMax, scene_.clipping.perMesh, hit);
 }
 
 [[gnu::always_inline]] inline bool Tracer::blocked(const Ray& ray, float tMin, float tMax) const {
   if (!anyMeshClips_) return accelerator_.occluded(ray, tMin, tMax);
-  return accelerator_.occluded(ray, tMin, tMax, scene_.meshClips);
+  return accelerator_.occluded(ray, tMin, tMax, scene_.clipping.perMesh);
 }
 
 TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const {
@@ -87,14 +87,17 @@ TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounter
 }
 
 MediumCrossing Tracer::crossingAt(std::uint32_t face, bool entering) const {
-  const std::uint32_t inner = scene_.faceMaterial[face];
-  if (!scene_.faceBoundsSolid[face]) return {Scene::kNoMaterial, Scene::kNoMaterial, inner};
-  const std::uint32_t outer =
-      scene_.faceOuterMaterial.empty() ? Scene::kNoMaterial : scene_.faceOuterMaterial[face];
+  const std::uint32_t inner = scene_.appearance.faceMaterial[face];
+  if (!scene_.geometry.faceBoundsSolid[face])
+    return {SceneAppearance::kNoMaterial, SceneAppearance::kNoMaterial, inner};
+  const std::uint32_t outer = scene_.appearance.faceOuterMaterial.empty()
+                                  ? SceneAppearance::kNoMaterial
+                                  : scene_.appearance.faceOuterMaterial[face];
   if (entering) return {outer, inner, inner};
   // Leaving by an interface: out of a transparent volume the ray sees the next volume's surface;
   // inside an opaque one (only a cut view without caps gets there) its own wall, as on the skin.
-  const bool seesOuter = outer != Scene::kNoMaterial && scene_.materials[inner].transparency > 0.0f;
+  const bool seesOuter =
+      outer != SceneAppearance::kNoMaterial && scene_.appearance.materials[inner].transparency > 0.0f;
   return {inner, outer, seesOuter ? outer : inner};
 }
 
@@ -102,7 +105,7 @@ void Tracer::paintOutlines(const Ray& ray, float hitDistance, TraceResult& resul
                            TraceCounters& counters) const {
   // The face the ray hit draws its own edges; the query is repeated only near outlines.
   ++counters.rays;
-  const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
+  const ClipInterval kept = clipRay(ray, scene_.clipping.planes);
   Hit hit;
   if (!kept.empty()) nearestHit(ray, kept.enter, kept.exit, hit);
   Vec3 color;
@@ -116,7 +119,7 @@ Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, Trac
   if (!anyTransparent_) {
     ++counters.rays;
     const Ray ray(from, lightPosition - from);
-    const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
+    const ClipInterval kept = clipRay(ray, scene_.clipping.planes);
     if (kept.empty() || kept.enter >= 1.0f) return {1, 1, 1};
     return blocked(ray, kept.enter, std::min(kept.exit, 1.0f)) ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
   }
@@ -125,12 +128,12 @@ Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, Trac
   // Inside a solid the light is also absorbed (Beer-Lambert). Each stretch of the way is in the
   // medium its far end leaves (the side of the face hit says which), so a ray that starts inside a
   // solid is absorbed from its start; past the last face, in the medium that face let it into.
-  constexpr std::uint32_t kUnknown = Scene::kNoMaterial - 1;
+  constexpr std::uint32_t kUnknown = SceneAppearance::kNoMaterial - 1;
   std::uint32_t medium = kUnknown;
   for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
     ++counters.rays;
     const Ray ray(origin, lightPosition - origin);
-    const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
+    const ClipInterval kept = clipRay(ray, scene_.clipping.planes);
     const float start = std::max(kept.enter, 0.0f), end = std::min(kept.exit, 1.0f);
     Hit hit;
     if (kept.empty() || !nearestHit(ray, kept.enter, end, hit)) {
@@ -138,18 +141,18 @@ Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, Trac
         transmission *= beerLambert(absorptionOf(medium), (end - start) * length(ray.direction));
       return transmission;
     }
-    const Vec3 normal = scene_.faceNormals[hit.face];
+    const Vec3 normal = scene_.geometry.faceNormals[hit.face];
     const bool leaving = dot(normal, ray.direction) > 0;
     const MediumCrossing media = crossingAt(hit.face, !leaving);
-    const Material& material = scene_.materials[media.shown];
+    const Material& material = scene_.appearance.materials[media.shown];
     if (material.transparency <= 0.0f) return {0, 0, 0};
-    if (scene_.faceBoundsSolid[hit.face]) medium = media.from;
+    if (scene_.geometry.faceBoundsSolid[hit.face]) medium = media.from;
     if (medium != kUnknown) {
       const Vec3 absorption = absorptionOf(medium);
       if (maxComponent(absorption) > 0.0f)
         transmission *= beerLambert(absorption, std::max(hit.t - start, 0.0f) * length(ray.direction));
     }
-    if (scene_.faceBoundsSolid[hit.face]) medium = media.to;
+    if (scene_.geometry.faceBoundsSolid[hit.face]) medium = media.to;
     transmission *= transmissionTint(material) * splits_[media.shown].transmit;
     if (maxComponent(transmission) < kMinPathWeight) return {0, 0, 0};
     origin = offsetRayOrigin(ray.at(hit.t), leaving ? normal : -normal);
@@ -163,9 +166,9 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
   Vec3 fieldColor;
   const bool colored = fieldColorAt(scene_, surface, linearFieldColors_, fieldColor);
   const Vec3& kd = colored ? fieldColor : material.kd;
-  Vec3 color = scene_.ambient * (colored ? fieldColor : material.ka);
+  Vec3 color = scene_.appearance.ambient * (colored ? fieldColor : material.ka);
   const Vec3 toViewer = normalize(-ray.direction);
-  for (const SceneLight& light : scene_.lights) {
+  for (const SceneLight& light : scene_.appearance.lights) {
     const Vec3 toLight = light.position - surface.position;
     const float distance = length(toLight);
     if (!(distance > 0.0f)) continue;
@@ -186,9 +189,9 @@ Vec3 Tracer::shadeShadowCatcher(const Vec3& point, TraceCounters& counters, floa
   // The share of the light the floor would get that the meshes let through, per channel: ambient
   // plus the lights' diffuse irradiance with shadows, over the same without them.
   const Vec3& normal = scene_.shadowCatcher->normal;
-  Vec3 lit = scene_.ambient, shadowed = scene_.ambient;
+  Vec3 lit = scene_.appearance.ambient, shadowed = scene_.appearance.ambient;
   const Vec3 shadowOrigin = offsetRayOrigin(point, normal);
-  for (const SceneLight& light : scene_.lights) {
+  for (const SceneLight& light : scene_.appearance.lights) {
     const Vec3 toLight = light.position - point;
     const float distance = length(toLight);
     const float cosTheta = distance > 0.0f ? dot(normal, toLight) / distance : 0.0f;
@@ -208,18 +211,18 @@ const ClipPlane* Tracer::capPlane(const Ray& ray, const ClipInterval& kept, std:
                                   float& tCap) const {
   // The mesh's own planes and the scene's together keep a convex region, entered at the later of
   // the two entries, by that entry's plane.
-  if (const FaceClipRange* range = anyMeshClips_ ? scene_.meshClips.rangeOf(face) : nullptr) {
-    const ClipInterval own = clipRay(ray, scene_.meshClips.planesOf(*range));
+  if (const FaceClipRange* range = anyMeshClips_ ? scene_.clipping.perMesh.rangeOf(face) : nullptr) {
+    const ClipInterval own = clipRay(ray, scene_.clipping.perMesh.planesOf(*range));
     if (own.enterPlane >= 0 && own.enter > kept.enter) {
       const std::size_t plane = range->planeBegin + static_cast<std::size_t>(own.enterPlane);
-      if (!scene_.meshClips.caps[plane]) return nullptr;
+      if (!scene_.clipping.perMesh.caps[plane]) return nullptr;
       tCap = own.enter;
-      return &scene_.meshClips.planes[plane];
+      return &scene_.clipping.perMesh.planes[plane];
     }
   }
-  if (kept.enterPlane < 0 || !scene_.clipCaps[static_cast<std::size_t>(kept.enterPlane)]) return nullptr;
+  if (kept.enterPlane < 0 || !scene_.clipping.caps[static_cast<std::size_t>(kept.enterPlane)]) return nullptr;
   tCap = kept.enter;
-  return &scene_.clipPlanes[static_cast<std::size_t>(kept.enterPlane)];
+  return &scene_.clipping.planes[static_cast<std::size_t>(kept.enterPlane)];
 }
 
 Vec3 Tracer::shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::uint32_t face,
@@ -233,9 +236,9 @@ Vec3 Tracer::shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::u
   cap.normalSign = 1.0f;
   cap.isCap = true;
   // A field-coloured shell colours its cap with the mean of the face the ray leaves by.
-  const int corners = scene_.faces[face].cornerCount();
+  const int corners = scene_.geometry.faces[face].cornerCount();
   for (int c = 0; c < corners; ++c) cap.cornerWeight[c] = 1.0f / static_cast<float>(corners);
-  return shadeLocal(ray, cap, scene_.materials[material], parallelView, counters);
+  return shadeLocal(ray, cap, scene_.appearance.materials[material], parallelView, counters);
 }
 
 float Tracer::edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) const {
@@ -243,9 +246,9 @@ float Tracer::edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) c
   const EdgeOverlay& overlay = *scene_.edges;
   const std::uint16_t style = overlay.faceEdgeStyle[hit.face];
   if (style == 0) return 0.0f;
-  const MeshFace& face = scene_.faces[hit.face];
+  const MeshFace& face = scene_.geometry.faces[hit.face];
   Vec3 corners[4];
-  for (int c = 0; c < face.cornerCount(); ++c) corners[c] = scene_.positions[face.vertex[c]];
+  for (int c = 0; c < face.cornerCount(); ++c) corners[c] = scene_.geometry.positions[face.vertex[c]];
   const float directionLength = length(ray.direction);
   const float pixelSize = footprint_.at(pathLength + hit.t * directionLength);
   return edgeCoverage(ray.origin, ray.direction * (1.0f / directionLength), corners, face.cornerCount(),
@@ -257,7 +260,7 @@ Tracer::Sighting Tracer::firstSighting(const Ray& ray) const {
   Sighting seen;
   // Cut views: only the part of the ray on the kept side of every scene clip plane can hit
   // anything; a mesh's own planes are seen through by the query itself.
-  const ClipInterval kept = clipRay(ray, scene_.clipPlanes);
+  const ClipInterval kept = clipRay(ray, scene_.clipping.planes);
   const bool hitMesh = !kept.empty() && nearestHit(ray, kept.enter, kept.exit, seen.hit);
   if (hitMesh) {
     seen.kind = Sighting::Kind::kSurface;
@@ -266,11 +269,11 @@ Tracer::Sighting Tracer::firstSighting(const Ray& ray) const {
     // the cut face (the cap) there, flat, in the solid's material: the face's own when the ray
     // leaves through its back, the outer volume's when it meets an interface from the front. Only
     // the hit mesh's planes matter: the ray met no kept face of that mesh since the crossing.
-    if ((kept.enterPlane >= 0 || anyMeshClips_) && scene_.faceBoundsSolid[seen.hit.face]) {
-      const bool entering = dot(scene_.faceNormals[seen.hit.face], ray.direction) < 0.0f;
+    if ((kept.enterPlane >= 0 || anyMeshClips_) && scene_.geometry.faceBoundsSolid[seen.hit.face]) {
+      const bool entering = dot(scene_.geometry.faceNormals[seen.hit.face], ray.direction) < 0.0f;
       const std::uint32_t solid = crossingAt(seen.hit.face, entering).from;
       float tCap = 0;
-      if (solid != Scene::kNoMaterial) seen.capPlane = capPlane(ray, kept, seen.hit.face, tCap);
+      if (solid != SceneAppearance::kNoMaterial) seen.capPlane = capPlane(ray, kept, seen.hit.face, tCap);
       if (seen.capPlane) {
         seen.kind = Sighting::Kind::kCap;
         seen.t = tCap;
@@ -334,7 +337,7 @@ Vec3 Tracer::shadeSurface(const Ray& ray, const Hit& hit, float distance, int de
   const SurfacePoint surface = makeSurfacePoint(scene_, ray, hit);
   // Closed shells and volumes face out of their material, so the side hit says whether the ray enters.
   const MediumCrossing media = crossingAt(hit.face, surface.normalSign > 0.0f);
-  const Material& material = scene_.materials[media.shown];
+  const Material& material = scene_.appearance.materials[media.shown];
   const EnergySplit& split = splits_[media.shown];
   const Vec3 local = shadeLocal(ray, surface, material, parallelView, counters);
   if (depth >= maxDepth_ || !split.recursive) return withEdge(local);
@@ -343,7 +346,7 @@ Vec3 Tracer::shadeSurface(const Ray& ray, const Hit& hit, float distance, int de
   // Glass into water bends by n_glass / n_water; an open surface is a thin sheet.
   const InterfaceSplit weights =
       splitAtInterface(direction, surface.shadingNormal, surface.geometricNormal,
-                       scene_.faceBoundsSolid[hit.face] != 0, iorOf(media.from) / iorOf(media.to),
+                       scene_.geometry.faceBoundsSolid[hit.face] != 0, iorOf(media.from) / iorOf(media.to),
                        material.fresnel, 1.0f / material.ior, split.reflect, split.transmit);
   const float branchLength = pathLength + distance;
   Vec3 color = local * split.local;

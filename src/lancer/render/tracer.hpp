@@ -36,7 +36,7 @@ struct EnergySplit {
 // exceeds 1 in some channel (the scene loader rejects such materials; scenes built in code may not).
 EnergySplit energySplit(const Material& material);
 
-// The two media a surface hit separates, as material indices (Scene::kNoMaterial: outside every
+// The two media a surface hit separates, as material indices (SceneAppearance::kNoMaterial: outside every
 // solid, or a thin sheet's surroundings), and the material the surface shows.
 struct MediumCrossing {
   std::uint32_t from;   // where the ray comes from
@@ -106,10 +106,11 @@ class Tracer {
   // so the side hit (`entering`: against the normal) says which volume it leaves and which it enters.
   MediumCrossing crossingAt(std::uint32_t face, bool entering) const;
   float iorOf(std::uint32_t material) const {
-    return material == Scene::kNoMaterial ? 1.0f : scene_.materials[material].ior;
+    return material == SceneAppearance::kNoMaterial ? 1.0f : scene_.appearance.materials[material].ior;
   }
   Vec3 absorptionOf(std::uint32_t material) const {
-    return material == Scene::kNoMaterial ? Vec3{0, 0, 0} : scene_.materials[material].absorption;
+    return material == SceneAppearance::kNoMaterial ? Vec3{0, 0, 0}
+                                                    : scene_.appearance.materials[material].absorption;
   }
   // Coverage of the hit face's drawn edges at the hit (0 when its mesh draws none).
   float edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) const;

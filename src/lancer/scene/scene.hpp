@@ -60,10 +60,9 @@ struct ShadowCatcher {
   float offset = 0;
 };
 
-// The scene as the tracer reads it, by feature; structure of arrays, indexed by face or vertex. A
-// feature no mesh uses is absent (std::nullopt), not a set of empty arrays.
-struct Scene {
-  // Geometry: every mesh instance transformed into one scene space.
+// Every mesh instance transformed into one scene space: the shapes alone (like pbrt-v4's
+// TriangleMesh), what the accelerator is built on; indexed by vertex, face or corner.
+struct SceneGeometry {
   Vec3d origin;  // world = origin + scene-space position; keeps float precision far from 0
   std::vector<Vec3> positions;
   std::vector<MeshFace> faces;
@@ -74,7 +73,11 @@ struct Scene {
   std::vector<std::uint8_t> faceBoundsSolid;
   Aabb bounds;  // scene space
 
-  // Appearance: materials per face side, shading per face, the lights.
+  Vec3 toSceneSpace(const Vec3d& world) const { return toFloat(world - origin); }
+};
+
+// How the surfaces look: materials per face side, shading per face, the lights.
+struct SceneAppearance {
   std::vector<Material> materials;
   std::vector<std::uint32_t> faceMaterial;  // of the volume behind the face (its inner side)
   // Of the volume in front of an interface face (on its normal's side), kNoMaterial elsewhere: air.
@@ -82,23 +85,29 @@ struct Scene {
   static constexpr std::uint32_t kNoMaterial = 0xFFFFFFFFu;
   std::vector<std::uint32_t> faceOuterMaterial;
   std::vector<ShadingMode> faceShading;
-  std::vector<SceneLight> lights;
+  std::vector<SceneLight> lights;  // scene space
   Vec3 ambient{0, 0, 0};
+};
 
+// Cut views: the scene's planes ([[clip]]), which cut every mesh, and each mesh's own ([[mesh.clip]]).
+struct SceneClipping {
+  std::vector<ClipPlane> planes;   // scene space
+  std::vector<std::uint8_t> caps;  // 1: cap closed shells cut by planes[i]
+  FaceClipSets perMesh;            // empty when no mesh has planes of its own
+};
+
+// The scene as the tracer reads it, by feature; each feature a structure of arrays, indexed by face
+// or vertex. An optional feature no mesh uses is absent (std::nullopt), not a set of empty arrays.
+struct Scene {
+  SceneGeometry geometry;
+  SceneAppearance appearance;
+  SceneClipping clipping;
   std::optional<EdgeOverlay> edges;
   std::optional<FieldColors> fieldColors;
-
-  // Cut views: the scene's planes (they cut every mesh) and each mesh's own ([[mesh.clip]]).
-  std::vector<ClipPlane> clipPlanes;   // scene space
-  std::vector<std::uint8_t> clipCaps;  // 1: cap closed shells cut by clipPlanes[i]
-  FaceClipSets meshClips;              // empty when no mesh has planes of its own
-
   std::optional<ShadowCatcher> shadowCatcher;
 
   // What the mesh readers warned about (MeshSourceInfo::warnings), for the CLI to print.
   std::vector<std::string> warnings;
-
-  Vec3 toSceneSpace(const Vec3d& world) const { return toFloat(world - origin); }
 };
 
 // Reads every mesh of the description (errors point at the [[mesh]] entry or into the mesh file).

@@ -109,33 +109,163 @@ std::vector<std::pair<std::int32_t, std::uint32_t>> resolveGroupMaterials(const 
   return result;
 }
 
-// Records a coloured mesh whose vertices start at vertexBase and faces at faceBase: its faces get
-// the map, its vertices the field's t (the mesh's vertices are the scene's from vertexBase on, in
-// order). Earlier meshes' entries are filled with "not coloured" first; the first coloured mesh
-// gives the legend.
-void addFieldColoring(const Scene& scene, std::optional<FieldColors>& fields, const FieldColoring& coloring,
-                      std::uint32_t vertexBase, std::size_t faceBase) {
+// One mesh instance in scene space, before it joins the scene: its positions, its closed shells
+// oriented outward (the mesh's faces and tags changed in place to match), its smooth normals.
+struct PlacedMesh {
+  std::vector<Vec3> positions;
+  std::vector<std::uint8_t> edgeMasks;  // per face, in step with the oriented faces
+  ShellOrientationReport orientation;
+  CornerNormals normals;
+};
+
+PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTransform& transform,
+                     const Vec3d& origin) {
+  PlacedMesh placed;
+  placed.positions.resize(mesh.positions.size());
+  for (std::size_t v = 0; v < placed.positions.size(); ++v)
+    placed.positions[v] =
+        toFloat(transform.apply(mesh.worldPosition(static_cast<std::uint32_t>(v))) - origin);
+  placed.edgeMasks = mesh.faceEdgeMask;
+  placed.edgeMasks.resize(mesh.faces.size(), kAllEdges);
+  // A mirroring scale (odd number of negative factors) reverses the winding; keep the file's
+  // intent for open surfaces (closed shells are oriented below whatever their winding).
+  const bool mirrored = instance.scale.x * instance.scale.y * instance.scale.z < 0;
+  if (mirrored) {
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) reverseWinding(mesh.faces[f], placed.edgeMasks[f]);
+  }
+  // Refraction and caps tell entering from leaving by the side a ray hits, so solids must face out
+  // of their material (cavity walls into the cavity).
+  placed.orientation = orientClosedShellsOutward(placed.positions, mesh.faces, placed.edgeMasks,
+                                                 mesh.facePhysicalTag, mesh.volumeSides.side);
+  for (const std::uint32_t f : placed.orientation.reversedInterfaces) {
+    std::swap(mesh.facePhysicalTag[f], mesh.volumeSides.outerPhysicalTag[f]);
+    std::swap(mesh.faceEntityTag[f], mesh.volumeSides.outerEntityTag[f]);
+  }
+  placed.normals =
+      computeCornerNormals(placed.positions, mesh.faces, mesh.facePhysicalTag, instance.smoothAngleDegrees);
+  return placed;
+}
+
+// The mesh's vertices, faces and normals, renumbered after those already in the scene.
+void appendGeometry(SceneGeometry& geometry, const std::vector<MeshFace>& faces, const PlacedMesh& placed) {
+  const auto vertexBase = static_cast<std::uint32_t>(geometry.positions.size());
+  const auto normalBase = static_cast<std::uint32_t>(geometry.cornerNormals.normals.size());
+  for (const Vec3& p : placed.positions) geometry.bounds.extend(p);
+  geometry.positions.insert(geometry.positions.end(), placed.positions.begin(), placed.positions.end());
+  geometry.cornerNormals.normals.insert(geometry.cornerNormals.normals.end(), placed.normals.normals.begin(),
+                                        placed.normals.normals.end());
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    MeshFace face = faces[f];
+    auto corners = placed.normals.faceCorner[f];
+    for (int c = 0; c < face.cornerCount(); ++c) {
+      face.vertex[c] += vertexBase;
+      corners[c] += normalBase;
+    }
+    geometry.faces.push_back(face);
+    geometry.faceNormals.push_back(faceNormal(geometry.positions, face));
+    geometry.cornerNormals.faceCorner.push_back(corners);
+    geometry.faceBoundsSolid.push_back(placed.orientation.faceBoundsSolid[f]);
+  }
+}
+
+// The materials on both sides of each of the mesh's faces (the scene's from faceBase on), and their
+// shading.
+void appendAppearance(SceneAppearance& appearance, std::size_t faceBase, const MeshInstance& instance,
+                      const Mesh& mesh, const ShellOrientationReport& orientation,
+                      const std::vector<std::pair<std::int32_t, std::uint32_t>>& groupMaterials,
+                      ShadingMode shading) {
+  // The material of the faces of `entity` whose first group is `physical` (groupMaterials is in
+  // order of increasing precedence: the last mapping that names one of their groups wins).
+  auto materialOf = [&](std::int32_t physical, std::int32_t entity) {
+    auto material = static_cast<std::uint32_t>(instance.material);
+    for (const auto& [tag, groupMaterial] : groupMaterials)
+      if (mesh.inPhysicalGroup(physical, entity, tag)) material = groupMaterial;
+    return material;
+  };
+  std::size_t nextRegionTag = 0;  // orientation.faceRegionTags is in face order
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    // A face between two regions of a surface-only mesh takes its region's group, that one alone.
+    const bool regionTagged = nextRegionTag < orientation.faceRegionTags.size() &&
+                              orientation.faceRegionTags[nextRegionTag].first == f;
+    appearance.faceMaterial.push_back(regionTagged
+                                          ? materialOf(orientation.faceRegionTags[nextRegionTag++].second, 0)
+                                          : materialOf(mesh.facePhysicalTag[f], mesh.faceEntityTag[f]));
+    // The material in front of the face: the outer volume of an interface, or the solid of another
+    // group that a closed surface lies in (a steel ball drawn inside a glass one).
+    std::optional<std::uint32_t> outer;
+    if (mesh.volumeSides.isInterface(f))
+      outer = materialOf(mesh.volumeSides.outerPhysicalTag[f], mesh.volumeSides.outerEntityTag[f]);
+    if (!orientation.faceEnclosedBy.empty() &&
+        orientation.faceEnclosedBy[f] != ShellOrientationReport::kNotEnclosed)
+      outer = materialOf(orientation.faceEnclosedBy[f], 0);
+    if (outer) {
+      appearance.faceOuterMaterial.resize(faceBase + f, SceneAppearance::kNoMaterial);
+      appearance.faceOuterMaterial.push_back(*outer);
+    }
+    appearance.faceShading.push_back(shading);
+  }
+}
+
+// The mesh's edges to draw and their style (style 0, none, when the mesh draws no edges).
+void appendEdges(EdgeOverlay& overlay, const MeshInstance& instance, Mesh& mesh,
+                 std::vector<std::uint8_t> edgeMasks) {
+  std::uint16_t edgeStyle = 0;
+  if (instance.edges) {
+    overlay.styles.push_back({instance.edges->widthPixels, instance.edges->color});
+    edgeStyle = static_cast<std::uint16_t>(overlay.styles.size() - 1);
+    if (instance.edges->featuresOnly) {
+      mesh.faceEdgeMask = edgeMasks;  // in step with the oriented faces
+      edgeMasks = featureEdgeMasks(mesh, instance.edges->featureAngleDegrees);
+    }
+  }
+  overlay.faceEdgeMask.insert(overlay.faceEdgeMask.end(), edgeMasks.begin(), edgeMasks.end());
+  overlay.faceEdgeStyle.resize(overlay.faceEdgeStyle.size() + mesh.faces.size(), edgeStyle);
+}
+
+// Records a coloured mesh whose vertices start at vertexBase and faces at faceBase and run to the
+// scene's last ones: its faces get the map, its vertices the field's t (the mesh's vertices are the
+// scene's from vertexBase on, in order). Earlier meshes' entries are filled with "not coloured"
+// first; the first coloured mesh gives the legend.
+void appendFieldColoring(const SceneGeometry& geometry, std::optional<FieldColors>& fields,
+                         const FieldColoring& coloring, std::uint32_t vertexBase, std::size_t faceBase) {
   if (!fields) {
     fields.emplace();
     fields->legend = {coloring.map, coloring.low, coloring.high};
   }
   const int perFace = coloring.perFace ? FieldColors::kPerFace : 0;
   fields->faceColorMap.resize(faceBase, 0);
-  fields->faceColorMap.resize(scene.faces.size(),
+  fields->faceColorMap.resize(geometry.faces.size(),
                               static_cast<std::uint8_t>((1 + static_cast<int>(coloring.map)) | perFace));
   // The mesh's faces and vertices are the scene's from the bases on, in order.
   std::vector<float>& t = coloring.perFace ? fields->faceFieldT : fields->vertexFieldT;
   t.resize(coloring.perFace ? faceBase : vertexBase, std::nanf(""));
   t.insert(t.end(), coloring.t.begin(), coloring.t.end());
-  t.resize(coloring.perFace ? scene.faces.size() : scene.positions.size(), std::nanf(""));
+  t.resize(coloring.perFace ? geometry.faces.size() : geometry.positions.size(), std::nanf(""));
+}
+
+// The planes of a mesh whose faces start at faceBase and run to the scene's last face.
+void appendMeshClips(SceneClipping& clipping, const SceneGeometry& geometry,
+                     const std::vector<ClipSettings>& clips, std::size_t faceBase) {
+  FaceClipSets& sets = clipping.perMesh;
+  FaceClipRange range;
+  range.faceBegin = static_cast<std::uint32_t>(faceBase);
+  range.faceEnd = static_cast<std::uint32_t>(geometry.faces.size());
+  range.planeBegin = static_cast<std::uint32_t>(sets.planes.size());
+  for (const ClipSettings& clip : clips) {
+    sets.planes.push_back({geometry.toSceneSpace(clip.point), toFloat(clip.normal)});
+    sets.caps.push_back(clip.cap ? 1 : 0);
+  }
+  range.planeEnd = static_cast<std::uint32_t>(sets.planes.size());
+  sets.ranges.push_back(range);
 }
 
 // Meshes after the last coloured one are not coloured.
 void finishFieldColors(Scene& scene, std::optional<FieldColors> fields) {
   if (!fields) return;
-  fields->faceColorMap.resize(scene.faces.size(), 0);
-  if (!fields->vertexFieldT.empty()) fields->vertexFieldT.resize(scene.positions.size(), std::nanf(""));
-  if (!fields->faceFieldT.empty()) fields->faceFieldT.resize(scene.faces.size(), std::nanf(""));
+  const SceneGeometry& geometry = scene.geometry;
+  fields->faceColorMap.resize(geometry.faces.size(), 0);
+  if (!fields->vertexFieldT.empty()) fields->vertexFieldT.resize(geometry.positions.size(), std::nanf(""));
+  if (!fields->faceFieldT.empty()) fields->faceFieldT.resize(geometry.faces.size(), std::nanf(""));
   scene.fieldColors = std::move(fields);
 }
 
@@ -143,51 +273,37 @@ void finishFieldColors(Scene& scene, std::optional<FieldColors> fields) {
 // meeting a line only at a corner draw its end too.
 void finishEdgeOverlay(Scene& scene, EdgeOverlay overlay) {
   if (overlay.styles.size() <= 1) return;
-  std::vector<std::uint8_t> onLine(scene.positions.size(), 0);
-  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+  const std::vector<MeshFace>& faces = scene.geometry.faces;
+  std::vector<std::uint8_t> onLine(scene.geometry.positions.size(), 0);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
     if (overlay.faceEdgeStyle[f] == 0) continue;
-    const MeshFace& face = scene.faces[f];
+    const MeshFace& face = faces[f];
     const int n = face.cornerCount();
     for (int c = 0; c < n; ++c)
       if (overlay.faceEdgeMask[f] & (1u << c)) onLine[face.vertex[c]] = onLine[face.vertex[(c + 1) % n]] = 1;
   }
-  overlay.faceLineCorners.assign(scene.faces.size(), 0);
-  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-    const MeshFace& face = scene.faces[f];
+  overlay.faceLineCorners.assign(faces.size(), 0);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const MeshFace& face = faces[f];
     for (int c = 0; c < face.cornerCount(); ++c)
       if (onLine[face.vertex[c]]) overlay.faceLineCorners[f] |= static_cast<std::uint8_t>(1u << c);
   }
-  LANCER_DCHECK(overlay.faceEdgeMask.size(), ==, scene.faces.size());
-  LANCER_DCHECK(overlay.faceEdgeStyle.size(), ==, scene.faces.size());
+  LANCER_DCHECK(overlay.faceEdgeMask.size(), ==, faces.size());
+  LANCER_DCHECK(overlay.faceEdgeStyle.size(), ==, faces.size());
   scene.edges = std::move(overlay);
 }
 
-ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const Scene& scene) {
+ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const SceneGeometry& geometry) {
   ShadowCatcher catcher;
   catcher.normal = toFloat(floor.normal);
   if (floor.height) {
-    catcher.offset = static_cast<float>(*floor.height - dot(scene.origin, floor.normal));
+    catcher.offset = static_cast<float>(*floor.height - dot(geometry.origin, floor.normal));
   } else {  // touch the lowest vertex along the normal, so the part stands on it
     float lowest = std::numeric_limits<float>::infinity();
-    for (const Vec3& p : scene.positions) lowest = std::min(lowest, dot(p, catcher.normal));
+    for (const Vec3& p : geometry.positions) lowest = std::min(lowest, dot(p, catcher.normal));
     catcher.offset = std::isfinite(lowest) ? lowest : 0.0f;
   }
   return catcher;
-}
-
-// The planes of a mesh whose faces start at faceBase and run to the scene's last face.
-void addMeshClips(Scene& scene, const std::vector<ClipSettings>& clips, std::size_t faceBase) {
-  FaceClipSets& sets = scene.meshClips;
-  FaceClipRange range;
-  range.faceBegin = static_cast<std::uint32_t>(faceBase);
-  range.faceEnd = static_cast<std::uint32_t>(scene.faces.size());
-  range.planeBegin = static_cast<std::uint32_t>(sets.planes.size());
-  for (const ClipSettings& clip : clips) {
-    sets.planes.push_back({scene.toSceneSpace(clip.point), toFloat(clip.normal)});
-    sets.caps.push_back(clip.cap ? 1 : 0);
-  }
-  range.planeEnd = static_cast<std::uint32_t>(sets.planes.size());
-  sets.ranges.push_back(range);
 }
 
 }  // namespace
@@ -201,8 +317,10 @@ Scene buildScene(const SceneDescription& description) {
 
 Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) {
   Scene scene;
-  scene.materials = description.materials;
-  scene.ambient = description.ambient;
+  SceneGeometry& geometry = scene.geometry;
+  SceneAppearance& appearance = scene.appearance;
+  appearance.materials = description.materials;
+  appearance.ambient = description.ambient;
 
   // One origin for the whole scene: the centre of all instances' world bounds, in double.
   std::vector<InstanceTransform> transforms;
@@ -213,7 +331,7 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
       for (int c = 0; c < face.cornerCount(); ++c)
         worldBounds.extend(transforms[i].apply(meshes[i].worldPosition(face.vertex[c])));
   }
-  scene.origin = worldBounds.empty() ? Vec3d{} : worldBounds.center();
+  geometry.origin = worldBounds.empty() ? Vec3d{} : worldBounds.center();
 
   // Gathered mesh by mesh, kept at the end when some mesh uses them.
   EdgeOverlay overlay;
@@ -223,115 +341,41 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes) 
     Mesh& mesh = meshes[i];
     scene.warnings.insert(scene.warnings.end(), mesh.source.warnings.begin(), mesh.source.warnings.end());
     const auto groupMaterials = resolveGroupMaterials(instance, mesh);
-    // The material of the faces of `entity` whose first group is `physical` (groupMaterials is in
-    // order of increasing precedence: the last mapping that names one of their groups wins).
-    auto materialOf = [&](std::int32_t physical, std::int32_t entity) {
-      auto material = static_cast<std::uint32_t>(instance.material);
-      for (const auto& [tag, groupMaterial] : groupMaterials)
-        if (mesh.inPhysicalGroup(physical, entity, tag)) material = groupMaterial;
-      return material;
-    };
-    const ShadingMode shading = instance.shading.value_or(description.render.shading);
-
-    std::vector<Vec3> positions(mesh.positions.size());
-    for (std::size_t v = 0; v < positions.size(); ++v)
-      positions[v] =
-          toFloat(transforms[i].apply(mesh.worldPosition(static_cast<std::uint32_t>(v))) - scene.origin);
-    std::vector<std::uint8_t> edgeMasks = mesh.faceEdgeMask;
-    edgeMasks.resize(mesh.faces.size(), kAllEdges);
-    // A mirroring scale (odd number of negative factors) reverses the winding; keep the file's
-    // intent for open surfaces (closed shells are oriented below whatever their winding).
-    const bool mirrored = instance.scale.x * instance.scale.y * instance.scale.z < 0;
-    if (mirrored) {
-      for (std::size_t f = 0; f < mesh.faces.size(); ++f) reverseWinding(mesh.faces[f], edgeMasks[f]);
-    }
-    // Refraction and caps tell entering from leaving by the side a ray hits, so solids must face out
-    // of their material (cavity walls into the cavity).
-    const ShellOrientationReport orientation = orientClosedShellsOutward(
-        positions, mesh.faces, edgeMasks, mesh.facePhysicalTag, mesh.volumeSides.side);
-    for (const std::uint32_t f : orientation.reversedInterfaces) {
-      std::swap(mesh.facePhysicalTag[f], mesh.volumeSides.outerPhysicalTag[f]);
-      std::swap(mesh.faceEntityTag[f], mesh.volumeSides.outerEntityTag[f]);
-    }
-    CornerNormals normals =
-        computeCornerNormals(positions, mesh.faces, mesh.facePhysicalTag, instance.smoothAngleDegrees);
-    std::uint16_t edgeStyle = 0;
-    if (instance.edges) {
-      overlay.styles.push_back({instance.edges->widthPixels, instance.edges->color});
-      edgeStyle = static_cast<std::uint16_t>(overlay.styles.size() - 1);
-      if (instance.edges->featuresOnly) {
-        mesh.faceEdgeMask = edgeMasks;  // in step with the oriented faces
-        edgeMasks = featureEdgeMasks(mesh, instance.edges->featureAngleDegrees);
-      }
-    }
-
+    const PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin);
     std::optional<FieldColoring> coloring;
     if (instance.colorBy) coloring = resolveColorBy(*instance.colorBy, mesh);
 
-    const auto vertexBase = static_cast<std::uint32_t>(scene.positions.size());
-    const std::size_t faceBase = scene.faces.size();
-    const auto normalBase = static_cast<std::uint32_t>(scene.cornerNormals.normals.size());
-    for (const Vec3& p : positions) scene.bounds.extend(p);
-    scene.positions.insert(scene.positions.end(), positions.begin(), positions.end());
-    scene.cornerNormals.normals.insert(scene.cornerNormals.normals.end(), normals.normals.begin(),
-                                       normals.normals.end());
-    std::size_t nextRegionTag = 0;  // orientation.faceRegionTags is in face order
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-      MeshFace face = mesh.faces[f];
-      auto corners = normals.faceCorner[f];
-      for (int c = 0; c < face.cornerCount(); ++c) {
-        face.vertex[c] += vertexBase;
-        corners[c] += normalBase;
-      }
-      // A face between two regions of a surface-only mesh takes its region's group, that one alone.
-      const bool regionTagged = nextRegionTag < orientation.faceRegionTags.size() &&
-                                orientation.faceRegionTags[nextRegionTag].first == f;
-      scene.faceMaterial.push_back(regionTagged
-                                       ? materialOf(orientation.faceRegionTags[nextRegionTag++].second, 0)
-                                       : materialOf(mesh.facePhysicalTag[f], mesh.faceEntityTag[f]));
-      // The material in front of the face: the outer volume of an interface, or the solid of another
-      // group that a closed surface lies in (a steel ball drawn inside a glass one).
-      std::optional<std::uint32_t> outer;
-      if (mesh.volumeSides.isInterface(f))
-        outer = materialOf(mesh.volumeSides.outerPhysicalTag[f], mesh.volumeSides.outerEntityTag[f]);
-      if (!orientation.faceEnclosedBy.empty() &&
-          orientation.faceEnclosedBy[f] != ShellOrientationReport::kNotEnclosed)
-        outer = materialOf(orientation.faceEnclosedBy[f], 0);
-      if (outer) {
-        scene.faceOuterMaterial.resize(scene.faces.size(), Scene::kNoMaterial);
-        scene.faceOuterMaterial.push_back(*outer);
-      }
-      scene.faces.push_back(face);
-      scene.faceNormals.push_back(faceNormal(scene.positions, face));
-      scene.cornerNormals.faceCorner.push_back(corners);
-      scene.faceShading.push_back(shading);
-      overlay.faceEdgeMask.push_back(edgeMasks[f]);
-      overlay.faceEdgeStyle.push_back(edgeStyle);
-      scene.faceBoundsSolid.push_back(orientation.faceBoundsSolid[f]);
-    }
-    if (coloring) addFieldColoring(scene, fields, *coloring, vertexBase, faceBase);
-    if (!instance.clips.empty() && !mesh.faces.empty()) addMeshClips(scene, instance.clips, faceBase);
+    const auto vertexBase = static_cast<std::uint32_t>(geometry.positions.size());
+    const std::size_t faceBase = geometry.faces.size();
+    appendGeometry(geometry, mesh.faces, placed);
+    appendAppearance(appearance, faceBase, instance, mesh, placed.orientation, groupMaterials,
+                     instance.shading.value_or(description.render.shading));
+    appendEdges(overlay, instance, mesh, placed.edgeMasks);
+    if (coloring) appendFieldColoring(geometry, fields, *coloring, vertexBase, faceBase);
+    if (!instance.clips.empty() && !mesh.faces.empty())
+      appendMeshClips(scene.clipping, geometry, instance.clips, faceBase);
   }
-  if (!scene.faceOuterMaterial.empty())
-    scene.faceOuterMaterial.resize(scene.faces.size(), Scene::kNoMaterial);
+  if (!appearance.faceOuterMaterial.empty())
+    appearance.faceOuterMaterial.resize(geometry.faces.size(), SceneAppearance::kNoMaterial);
   finishFieldColors(scene, std::move(fields));
   finishEdgeOverlay(scene, std::move(overlay));
 
   // Every per-face array in step with the faces (the tracer indexes them all by face).
-  LANCER_DCHECK(scene.faceNormals.size(), ==, scene.faces.size());
-  LANCER_DCHECK(scene.cornerNormals.faceCorner.size(), ==, scene.faces.size());
-  LANCER_DCHECK(scene.faceMaterial.size(), ==, scene.faces.size());
-  LANCER_DCHECK(scene.faceShading.size(), ==, scene.faces.size());
-  LANCER_DCHECK(scene.faceBoundsSolid.size(), ==, scene.faces.size());
-  if (!scene.faceOuterMaterial.empty()) LANCER_DCHECK(scene.faceOuterMaterial.size(), ==, scene.faces.size());
+  LANCER_DCHECK(geometry.faceNormals.size(), ==, geometry.faces.size());
+  LANCER_DCHECK(geometry.cornerNormals.faceCorner.size(), ==, geometry.faces.size());
+  LANCER_DCHECK(geometry.faceBoundsSolid.size(), ==, geometry.faces.size());
+  LANCER_DCHECK(appearance.faceMaterial.size(), ==, geometry.faces.size());
+  LANCER_DCHECK(appearance.faceShading.size(), ==, geometry.faces.size());
+  if (!appearance.faceOuterMaterial.empty())
+    LANCER_DCHECK(appearance.faceOuterMaterial.size(), ==, geometry.faces.size());
 
-  if (description.floor) scene.shadowCatcher = shadowCatcherOf(*description.floor, scene);
+  if (description.floor) scene.shadowCatcher = shadowCatcherOf(*description.floor, geometry);
   for (const ClipSettings& clip : description.clips) {
-    scene.clipPlanes.push_back({scene.toSceneSpace(clip.point), toFloat(clip.normal)});
-    scene.clipCaps.push_back(clip.cap ? 1 : 0);
+    scene.clipping.planes.push_back({geometry.toSceneSpace(clip.point), toFloat(clip.normal)});
+    scene.clipping.caps.push_back(clip.cap ? 1 : 0);
   }
   for (const PointLight& light : description.lights)
-    scene.lights.push_back({scene.toSceneSpace(light.position), light.intensity, light.attenuation});
+    appearance.lights.push_back({geometry.toSceneSpace(light.position), light.intensity, light.attenuation});
   return scene;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lancer/mesh/face_geometry.hpp"
+
 namespace lancer {
 namespace {
 
@@ -18,11 +20,9 @@ constexpr double kMinBaseShare = 0.02;
 // Preference on near ties: z, then y, then x.
 constexpr int kPreference[3] = {2, 1, 0};
 
-double faceArea(const Mesh& mesh, const MeshFace& face, Vec3d& normal) {
-  const Vec3d a = toDouble(mesh.positions[face.vertex[0]]), b = toDouble(mesh.positions[face.vertex[1]]),
-              c = toDouble(mesh.positions[face.vertex[2]]);
-  Vec3d twice = cross(b - a, c - a);
-  if (face.isQuad()) twice = twice + cross(c - a, toDouble(mesh.positions[face.vertex[3]]) - a);
+// The face's area, and its unit normal in `normal` (zero for a degenerate face).
+double areaAndNormal(const Mesh& mesh, const MeshFace& face, Vec3d& normal) {
+  const Vec3d twice = twiceVectorArea(mesh.positions, face);
   const double area2 = length(twice);
   normal = area2 > 0 ? twice * (1.0 / area2) : Vec3d{};
   return 0.5 * area2;
@@ -101,7 +101,7 @@ UpGuess guessUpAxis(const Mesh& mesh) {
   const double onSide = kOnSide * largest;
   for (const MeshFace& face : mesh.faces) {
     Vec3d normal;
-    const double area = faceArea(mesh, face, normal);
+    const double area = areaAndNormal(mesh, face, normal);
     total += area;
     for (int axis = 0; axis < 3; ++axis) {
       if (std::abs(normal[axis]) < kFlatCosine) continue;
