@@ -12,6 +12,7 @@
 #include "lancer/scene/suggest.hpp"
 #include "lancer/util/input_error.hpp"
 #include "lancer/util/memory_budget.hpp"
+#include "scene_setup.hpp"
 
 namespace {
 
@@ -88,8 +89,14 @@ int main(int argc, char** argv) {
   try {
     code = runner ? runner() : kExitOk;
   } catch (const lancer::InputError& e) {
-    std::fprintf(stderr, "%s%s\n", rankPrefix().c_str(), e.what());
-    code = kExitBadInput;
+    if (interruptRequested()) {
+      // A frame or band being committed when Ctrl-C removed its temporary file: the interrupt.
+      std::fprintf(stderr, "%slancer: interrupted; the output was not written\n", rankPrefix().c_str());
+      code = kExitInterrupted;
+    } else {
+      std::fprintf(stderr, "%s%s\n", rankPrefix().c_str(), e.what());
+      code = kExitBadInput;
+    }
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "%slancer: error: out of memory\n", rankPrefix().c_str());
     code = kExitInternalError;

@@ -191,6 +191,8 @@ RenderOptions commandRenderOptions(const SceneOverrides& overrides) {
   return options;
 }
 
+bool interruptRequested() { return gInterrupted.load(); }
+
 int interruptedExit(const std::string& output) {
   std::fprintf(stderr, "lancer: interrupted; %s was not written\n", output.c_str());
   return kExitInterrupted;

@@ -67,5 +67,8 @@ RenderOptions commandRenderOptions(const SceneOverrides& overrides);
 // Prints that the command was interrupted and `output` not written (it is left as it was), and
 // returns the exit code for it.
 int interruptedExit(const std::string& output);
+// Whether SIGINT or SIGTERM arrived. The handler removes the temporary files at once, so a write
+// that fails afterwards failed because of the interrupt, and main reports the interrupt instead.
+bool interruptRequested();
 
 }  // namespace lancer::cli
