@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <optional>
 
-#include "animation_output.hpp"
 #include "command_distribution.hpp"
 #include "commands.hpp"
 #include "lancer/cluster/shard.hpp"
+#include "lancer/image/animation_writer.hpp"
 #include "lancer/image/frame_sequence.hpp"
 #include "lancer/render/animation.hpp"
 #include "lancer/scene/render_limits.hpp"
@@ -27,7 +27,7 @@ struct AnimateCommandOptions {
   std::optional<int> frames;
   std::optional<double> fps;
   std::string orbit;
-  AnimationOutputOptions writer;  // --loop, --dither, --palette
+  AnimationOutputOptions writer;  // --loop, --dither, --palette (the rest from the scene)
   std::string shard;              // --shard I/N or auto
   std::string frameRange;         // --frame-range A-B
   bool skipExisting = false;
@@ -36,8 +36,8 @@ struct AnimateCommandOptions {
 
 // The frames this process renders: all of them, or a job-array task's share (--shard, --frame-range),
 // less those already on disk (--skip-existing).
-std::vector<int> framesToRender(const AnimateCommandOptions& options, const AnimationOutput& out,
-                                const AnimationFormat& format, bool quiet) {
+std::vector<int> framesToRender(const AnimateCommandOptions& options, const AnimationWriter& out,
+                                const AnimationOutputOptions& format, int width, int height, bool quiet) {
   const bool sharded = !options.shard.empty() || !options.frameRange.empty();
   if ((sharded || options.skipExisting) && !out.pattern())
     throw InputError(SourceLocation{!options.shard.empty()        ? "--shard"
@@ -58,9 +58,7 @@ std::vector<int> framesToRender(const AnimateCommandOptions& options, const Anim
                  describeFrames(frames).c_str());
   if (options.skipExisting) {
     const std::size_t before = frames.size();
-    std::erase_if(frames, [&](int k) {
-      return completeFrameExists(out.pattern()->name(k), format.width, format.height);
-    });
+    std::erase_if(frames, [&](int k) { return completeFrameExists(out.pattern()->name(k), width, height); });
     if (!quiet && before != frames.size())
       std::fprintf(stderr, "lancer: --skip-existing: %zu of %zu frames are already there\n",
                    before - frames.size(), before);
@@ -86,17 +84,18 @@ int runAnimate(const AnimateCommandOptions& options) {
         SourceLocation{options.input},
         "no output: give -o FILE.gif, -o FILE.png (animated PNG) or -o frame_%04d.png (numbered frames)");
   const bool talks = distribution->delivers();  // rank 0 of an MPI job, or a single process
-  AnimationFormat format;
-  format.width = settings.width;
-  format.height = settings.height;
+  AnimationOutputOptions format = options.writer;
   format.frames = animation.frames;
   format.fps = animation.fps;
   format.still = imageWriteOptions(settings);
-  format.quiet = options.overrides.quiet || !talks;
+  format.transparentBackground = settings.transparentBackground;
+  const bool quiet = options.overrides.quiet || !talks;
   // Every rank checks the options the same way, so that all fail alike; only rank 0 keeps a writer.
-  std::optional<AnimationOutput> out;
-  out.emplace(output, format, options.writer, /*checkOnly=*/!talks);
-  const std::vector<int> frames = framesToRender(options, *out, format, format.quiet);
+  std::optional<AnimationWriter> out;
+  out.emplace(output, settings.width, settings.height, format, /*checkOnly=*/!talks);
+  if (!quiet && !out->frameRateNote().empty()) std::fprintf(stderr, "%s\n", out->frameRateNote().c_str());
+  const std::vector<int> frames =
+      framesToRender(options, *out, format, settings.width, settings.height, quiet);
 
   RenderOptions renderOptions = commandRenderOptions(options.overrides);
   renderOptions.threads = commandThreads(options.overrides.threads, *distribution);

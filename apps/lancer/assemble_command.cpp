@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <optional>
 
-#include "animation_output.hpp"
 #include "commands.hpp"
 #include "lancer/cluster/tile_parts.hpp"
+#include "lancer/image/animation_writer.hpp"
 #include "lancer/image/frame_sequence.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/util/input_error.hpp"
@@ -82,34 +82,34 @@ int assembleFrames(const AssembleCommandOptions& options) {
 
   PngDescription first;
   Image frame = readPng(pattern->name(0), TransferCurve::Linear, &first);
-  AnimationFormat format;
-  format.width = frame.width();
-  format.height = frame.height();
+  const int width = frame.width(), height = frame.height();
+  AnimationOutputOptions format = options.writer;
   format.frames = count;
   format.fps = options.fps.value_or(AnimationSettings{}.fps);
   // The frames' 8-bit values go through unchanged when decoded and encoded with the same curve, so
   // the writer sees what `lancer animate` handed it after encoding.
   format.still.curve = first.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
   format.still.alpha = first.alpha ? AlphaChannel::Always : AlphaChannel::Never;
-  format.quiet = options.quiet;
-  AnimationOutput out(options.output, format, options.writer);
+  format.transparentBackground = first.alpha;
+  AnimationWriter out(options.output, width, height, format);
+  if (!options.quiet && !out.frameRateNote().empty())
+    std::fprintf(stderr, "%s\n", out.frameRateNote().c_str());
   for (int k = 0; k < count; ++k) {
     PngDescription description;
     frame = readPng(pattern->name(k), format.still.curve, &description);
-    if (frame.width() != format.width || frame.height() != format.height ||
-        description.alpha != first.alpha || description.srgb != first.srgb)
+    if (frame.width() != width || frame.height() != height || description.alpha != first.alpha ||
+        description.srgb != first.srgb)
       throw InputError(
           SourceLocation{pattern->name(k)},
           fmt::format("frame {} is {}x{}{}{}, but frame 0 is {}x{}{}{}: not from the same animation", k,
                       frame.width(), frame.height(), description.alpha ? " with alpha" : "",
-                      description.srgb ? " sRGB" : "", format.width, format.height,
-                      first.alpha ? " with alpha" : "", first.srgb ? " sRGB" : ""));
+                      description.srgb ? " sRGB" : "", width, height, first.alpha ? " with alpha" : "",
+                      first.srgb ? " sRGB" : ""));
     out.addFrame(k, frame);
   }
   out.finish();
   if (!options.quiet)
-    std::fprintf(stderr, "%s: %d frames %dx%d assembled\n", options.output.c_str(), count, format.width,
-                 format.height);
+    std::fprintf(stderr, "%s: %d frames %dx%d assembled\n", options.output.c_str(), count, width, height);
   return kExitOk;
 }
 

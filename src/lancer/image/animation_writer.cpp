@@ -29,7 +29,7 @@ void checkGlobalPaletteMemory(int frames, int width, int height) {
 }  // namespace
 
 AnimationWriter::AnimationWriter(const std::string& output, int width, int height,
-                                 const AnimationOutputOptions& options)
+                                 const AnimationOutputOptions& options, bool checkOnly)
     : pattern_(parseFramePattern(output)), still_(options.still) {
   const ImageFormat format = imageFormatFromPath(pattern_ ? pattern_->name(0) : output);
   const bool animatedGif = !pattern_ && format == ImageFormat::Gif;
@@ -42,6 +42,7 @@ AnimationWriter::AnimationWriter(const std::string& output, int width, int heigh
                      "--loop applies to an animated .gif or .png, not to numbered frames");
   const int loop = options.loop.value_or(kGifLoopForever);
   if (pattern_) {
+    if (checkOnly) return;
     AtomicFileWriter probe(pattern_->name(0));  // a bad folder fails now, not after the first frame
   } else if (format == ImageFormat::Gif) {
     GifOptions gifOptions;
@@ -54,11 +55,12 @@ AnimationWriter::AnimationWriter(const std::string& output, int width, int heigh
             ? Dither::None
             : (options.dither == "floyd-steinberg" ? Dither::FloydSteinberg : Dither::Ordered);
     if (gifOptions.palette == GifPalette::Global) checkGlobalPaletteMemory(options.frames, width, height);
-    gif_.emplace(output, width, height, gifOptions);  // fails now on a bad folder
     if (std::abs(gifActualFrameRate(options.fps) - options.fps) > 1e-9)
       frameRateNote_ = fmt::format(
           "lancer: GIF delays are whole 1/100 s: {:g} fps plays at {:.4g} fps (a delay of {}/100 s)",
           options.fps, gifActualFrameRate(options.fps), gifFrameDelay(options.fps));
+    if (checkOnly) return;
+    gif_.emplace(output, width, height, gifOptions);  // fails now on a bad folder
   } else if (format == ImageFormat::Png) {
     ApngOptions apngOptions;
     apngOptions.fps = options.fps;
@@ -66,6 +68,7 @@ AnimationWriter::AnimationWriter(const std::string& output, int width, int heigh
     apngOptions.loopCount = loop == kGifLoopForever ? 0 : (loop == kGifPlayOnce ? 1 : loop + 1);
     apngOptions.curve = still_.curve;
     apngOptions.alpha = options.transparentBackground;
+    if (checkOnly) return;
     apng_.emplace(output, width, height, options.frames, apngOptions);
   } else {
     throw InputError(

@@ -1,5 +1,5 @@
-// Where `lancer animate` (and lancer.animate in Python) puts its frames: an animated GIF, an animated
-// PNG, or numbered still frames ("turn_%04d.png"), chosen by the output's name. Every kind is
+// Where `lancer animate`, `lancer assemble` and lancer.animate in Python put frames: an animated GIF, an
+// animated PNG, or numbered still frames ("turn_%04d.png"), chosen by the output's name. Every kind is
 // published only when finished: an interrupted or failed animation leaves existing files as they were.
 #pragma once
 
@@ -27,8 +27,14 @@ class AnimationWriter {
  public:
   // Checks the name and the options against each other and opens the output now, so that a bad
   // folder or a wrong extension fails before the first frame is rendered. Throws InputError.
-  AnimationWriter(const std::string& output, int width, int height, const AnimationOutputOptions& options);
+  // `checkOnly`: the checks alone, no file (an MPI rank that renders but does not write).
+  AnimationWriter(const std::string& output, int width, int height, const AnimationOutputOptions& options,
+                  bool checkOnly = false);
 
+  // Numbered frames (a %d in the name), else nullopt.
+  const std::optional<FramePattern>& pattern() const { return pattern_; }
+
+  // Frames come in order; numbered frames may be any subset (a job-array shard's).
   void addFrame(int frame, const Image& image);
   // After the last frame: publishes the file, or every numbered frame at once.
   void finish();
