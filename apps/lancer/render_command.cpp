@@ -10,6 +10,7 @@
 #include "lancer/image/color_map.hpp"
 #include "lancer/image/image_io.hpp"
 #include "lancer/image/image_row_writer.hpp"
+#include "lancer/render/progress_line.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/util/stopwatch.hpp"
 #include "scene_setup.hpp"
@@ -29,15 +30,6 @@ struct RenderCommandOptions {
   std::string shard;   // --shard I/N or auto: a job-array task's part of the image
   SceneOverrides overrides;
 };
-
-void printProgress(const RenderProgress& progress) {
-  const double raysPerSecond = progress.seconds > 0 ? progress.rays / progress.seconds : 0;
-  const double eta =
-      progress.fraction > 0 ? progress.seconds * (1 - progress.fraction) / progress.fraction : 0;
-  std::fprintf(stderr, "\r  %5.1f%%  %7.2f Mrays/s  ETA %5.1f s ", 100 * progress.fraction,
-               raysPerSecond * 1e-6, eta);
-  std::fflush(stderr);
-}
 
 int tracePixel(const PreparedScene& prepared, const Renderer& renderer, const std::string& pixel) {
   const RenderSettings& settings = prepared.description.render;
@@ -202,7 +194,7 @@ int runRender(const RenderCommandOptions& options) {
   renderOptions.threads = commandThreads(options.overrides.threads, *distribution);
   const bool talks = distribution->delivers();  // rank 0 of an MPI job, or a single process
   const bool progress = talks && showProgress(options.overrides);
-  if (progress) renderOptions.onProgress = printProgress;
+  if (progress) renderOptions.onProgress = printProgressLine;
   RenderStats stats;
   bool written = false;
   try {

@@ -11,6 +11,7 @@
 
 #include "bindings.hpp"
 #include "lancer/image/pixel_encoding.hpp"
+#include "lancer/render/progress_line.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/util/memory_budget.hpp"
 #include "render_session.hpp"
@@ -32,15 +33,6 @@ std::optional<Enum> choiceArgument(const std::optional<std::string>& value, cons
   for (const std::string_view choice : names)
     choices += (choices.empty() ? "'" : ", '") + std::string(choice) + "'";
   throw py::value_error(fmt::format("{}='{}': use one of {}", name, *value, choices));
-}
-
-void printProgress(const RenderProgress& progress) {
-  const double raysPerSecond = progress.seconds > 0 ? progress.rays / progress.seconds : 0;
-  const double eta =
-      progress.fraction > 0 ? progress.seconds * (1 - progress.fraction) / progress.fraction : 0;
-  std::fprintf(stderr, "\r  %5.1f%%  %7.2f Mrays/s  ETA %5.1f s ", 100 * progress.fraction,
-               raysPerSecond * 1e-6, eta);
-  std::fflush(stderr);
 }
 
 // 8-bit (H, W, 3 or 4) encoded with the settings' curve, or linear float32 (H, W, 4).
@@ -98,7 +90,7 @@ InterruptibleRender::InterruptibleRender(int threads, bool progress) {
   options.cancel = &cancel_;
   options.progressInterval = 0.05;  // how often Python's signal handlers get a chance to run
   options.onProgress = [this, progress](const RenderProgress& p) {
-    if (progress) printProgress(p);
+    if (progress) printProgressLine(p);
     if (cancel_.load()) return;
     const py::gil_scoped_acquire acquire;
     if (PyErr_CheckSignals() != 0) {
