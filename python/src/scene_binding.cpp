@@ -4,9 +4,11 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <map>
 #include "bindings.hpp"
 
+#include "lancer/image/color_map.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/scene/gmsh_view.hpp"
 #include "lancer/scene/quick_look.hpp"
@@ -67,6 +69,26 @@ std::string describeCamera(const CameraSettings& camera) {
       vec(camera.position), vec(camera.lookAt), camera.up.x, camera.up.y, camera.up.z, camera.fovDegrees,
       kProjectionNames[static_cast<int>(camera.projection)],
       camera.viewHeight ? fmt::format("{:g}", *camera.viewHeight) : "None");
+}
+
+// color_by= of Scene.quick_look: the mesh coloured by one of its fields, as a scene file's
+// `color_by = {field, map, range, step}` does. The field's name is checked when the scene is built
+// (an InputError naming the fields the mesh has).
+ColorBy colorByArgument(const std::string& field, const std::string& map,
+                        const std::optional<std::pair<double, double>>& range, int step) {
+  ColorBy colorBy;
+  colorBy.field = field;
+  colorBy.step = step;
+  colorBy.where = SourceLocation{"color_by"};
+  const std::optional<ColorMapKind> kind = parseColorMap(map);
+  if (!kind) throw py::value_error(fmt::format("color_map='{}': use one of {}", map, colorMapNames()));
+  colorBy.map = *kind;
+  if (range && !(std::isfinite(range->first) && std::isfinite(range->second) && range->first < range->second))
+    throw py::value_error(fmt::format("color_range=({:g}, {:g}): give (low, high), finite, low < high",
+                                      range->first, range->second));
+  if (step < 0) throw py::value_error(fmt::format("step={}: a field's steps count from 0", step));
+  colorBy.range = range;
+  return colorBy;
 }
 
 }  // namespace
@@ -140,12 +162,21 @@ void bindScene(py::module_& module) {
           py::arg("path"), "Reads a scene file (.toml) exactly as `lancer render` does")
       .def_static(
           "quick_look",
-          [](std::shared_ptr<const Mesh> mesh, const std::optional<std::string>& up) {
-            return quickLookOf(std::move(mesh), upAxisArgument(up));
+          [](std::shared_ptr<const Mesh> mesh, const std::optional<std::string>& up,
+             const std::optional<std::string>& colorBy, const std::string& colorMap,
+             const std::optional<std::pair<double, double>>& colorRange, int step) {
+            PythonScene scene = quickLookOf(std::move(mesh), upAxisArgument(up));
+            if (colorBy)
+              scene.description.meshes.front().colorBy =
+                  colorByArgument(*colorBy, colorMap, colorRange, step);
+            return scene;
           },
-          py::arg("mesh"), py::arg("up") = py::none(),
+          py::arg("mesh"), py::arg("up") = py::none(), py::kw_only(), py::arg("color_by") = py::none(),
+          py::arg("color_map") = "viridis", py::arg("color_range") = py::none(), py::arg("step") = 0,
           "The scene `lancer render part.msh` makes of a bare mesh (up: 'x', 'y', 'z', '-x', ...; None: "
-          "guessed)")
+          "guessed); color_by names one of mesh.fields to colour it by, as a scene file's color_by "
+          "(color_map 'viridis', 'magma', 'coolwarm' or 'grey'; color_range (low, high), default the "
+          "field's range; step, of a field with several)")
       .def_property(
           "camera", [](const PythonScene& scene) { return scene.description.camera; },
           [](PythonScene& scene, const CameraSettings& camera) {

@@ -72,3 +72,26 @@ def test_gmsh_is_not_imported_by_import_lancer():
     code = "import sys, lancer; print('gmsh' in sys.modules)"
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert result.stdout.strip() == "False"
+
+
+def test_a_field_from_gmsh_colours_the_quick_look(session):
+    make_box(2)
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    view = gmsh.view.add("height")
+    gmsh.view.addModelData(view, 0, "box", "NodeData", list(tags), [[z] for z in coords[2::3]])
+    mesh = lancer.from_gmsh()
+    plain = lancer.render(lancer.Scene.quick_look(mesh), width=64, height=48)
+    coloured = lancer.render(lancer.Scene.quick_look(mesh, color_by="height", color_map="magma"),
+                             width=64, height=48)
+    assert coloured.shape == plain.shape
+    assert np.count_nonzero(np.any(coloured != plain, axis=2)) > 200  # the faces took the map's colours
+    # A fixed range gives another picture than the field's own range.
+    ranged = lancer.render(lancer.Scene.quick_look(mesh, color_by="height", color_map="magma",
+                                                   color_range=(-10.0, 10.0)), width=64, height=48)
+    assert np.any(ranged != coloured)
+    with pytest.raises(lancer.InputError, match="height"):  # names the fields the mesh has
+        lancer.render(lancer.Scene.quick_look(mesh, color_by="temperature"), width=16, height=12)
+    with pytest.raises(ValueError, match="color_map='rainbow'"):
+        lancer.Scene.quick_look(mesh, color_by="height", color_map="rainbow")
+    with pytest.raises(ValueError, match="color_range"):
+        lancer.Scene.quick_look(mesh, color_by="height", color_range=(1.0, 1.0))
