@@ -180,18 +180,7 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
   command->add_option("--frames", options->frames, "Number of frames")->check(CLI::Range(1, kMaxFrames));
   command->add_option("--fps", options->fps, "Frames per second")->check(CLI::Range(0.01, 100.0));
   command->add_option("--orbit", options->orbit, "What turns: camera or light:K");
-  command
-      ->add_option("--loop", options->writer.loop,
-                   "Repeats after the first showing: 0 forever (default), -1 play once")
-      ->check(CLI::Range(-1, 65535));
-  command
-      ->add_option("--dither", options->writer.dither,
-                   "GIF dithering: ordered (default), floyd-steinberg or none")
-      ->check(CLI::IsMember({"none", "ordered", "floyd-steinberg"}));
-  command
-      ->add_option("--palette", options->writer.palette,
-                   "GIF palette: global (default, no flicker) or per-frame")
-      ->check(CLI::IsMember({"global", "per-frame"}));
+  addAnimationWriterOptions(*command, options->writer);
   command->add_option("--shard", options->shard,
                       "Job arrays: render only frames k with k % N == I (I/N), or take I and N from SLURM or "
                       "mpirun (auto); writes numbered frames");

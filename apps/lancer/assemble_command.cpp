@@ -14,6 +14,7 @@
 #include "lancer/image/frame_sequence.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/util/input_error.hpp"
+#include "scene_setup.hpp"
 
 namespace lancer::cli {
 namespace {
@@ -146,16 +147,7 @@ void addAssembleCommand(CLI::App& app, CommandRunner& runner) {
       ->check(CLI::Range(1, kMaxFrames));
   command->add_option("--fps", options->fps, "Frames per second (default 12, as animate's)")
       ->check(CLI::Range(0.01, 100.0));
-  command
-      ->add_option("--loop", options->writer.loop,
-                   "Repeats after the first showing: 0 forever (default), -1 play once")
-      ->check(CLI::Range(-1, 65535));
-  command
-      ->add_option("--dither", options->writer.dither,
-                   "GIF dithering: ordered (default), floyd-steinberg or none")
-      ->check(CLI::IsMember({"none", "ordered", "floyd-steinberg"}));
-  command->add_option("--palette", options->writer.palette, "GIF palette: global (default) or per-frame")
-      ->check(CLI::IsMember({"global", "per-frame"}));
+  addAnimationWriterOptions(*command, options->writer);
   command->add_flag("-q,--quiet", options->quiet, "No summary on stderr");
   command->callback([options, &runner] { runner = [options] { return runAssemble(*options); }; });
 }

@@ -191,6 +191,16 @@ RenderOptions commandRenderOptions(const SceneOverrides& overrides) {
   return options;
 }
 
+void addAnimationWriterOptions(CLI::App& command, AnimationOutputOptions& writer) {
+  command
+      .add_option("--loop", writer.loop, "Repeats after the first showing: 0 forever (default), -1 play once")
+      ->check(CLI::Range(-1, 65535));
+  command.add_option("--dither", writer.dither, "GIF dithering: ordered (default), floyd-steinberg or none")
+      ->check(CLI::IsMember({"none", "ordered", "floyd-steinberg"}));
+  command.add_option("--palette", writer.palette, "GIF palette: global (default, no flicker) or per-frame")
+      ->check(CLI::IsMember({"global", "per-frame"}));
+}
+
 bool interruptRequested() { return gInterrupted.load(); }
 
 int interruptedExit(const std::string& output) {

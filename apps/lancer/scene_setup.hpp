@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "lancer/accel/accelerator.hpp"
+#include "lancer/image/animation_writer.hpp"
 #include "lancer/image/image_io.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/scene.hpp"
@@ -67,6 +68,8 @@ RenderOptions commandRenderOptions(const SceneOverrides& overrides);
 // Prints that the command was interrupted and `output` not written (it is left as it was), and
 // returns the exit code for it.
 int interruptedExit(const std::string& output);
+// --loop, --dither and --palette, which `animate` and `assemble` share (their defaults are the writer's).
+void addAnimationWriterOptions(CLI::App& command, AnimationOutputOptions& writer);
 // Whether SIGINT or SIGTERM arrived. The handler removes the temporary files at once, so a write
 // that fails afterwards failed because of the interrupt, and main reports the interrupt instead.
 bool interruptRequested();

@@ -12,16 +12,12 @@
 namespace lancer {
 namespace {
 
+using test::expectSameFile;
 using test::quoted;
 using test::runCli;
 using test::ScratchFolder;
 
 const std::string kScene = quoted(test::kTurntableScene);
-
-void expectSameFile(const std::string& actual, const std::string& expected) {
-  ASSERT_TRUE(std::filesystem::exists(actual)) << actual;
-  EXPECT_TRUE(test::readBytes(actual) == test::readBytes(expected)) << actual << " differs from " << expected;
-}
 
 TEST(AssembleCli, ShardsAssembledAreTheDirectGifAndApng) {
   ScratchFolder folder;

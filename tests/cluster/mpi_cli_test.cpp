@@ -13,6 +13,7 @@
 namespace lancer {
 namespace {
 
+using test::expectSameFile;
 using test::quoted;
 using test::runCli;
 using test::ScratchFolder;
@@ -28,11 +29,6 @@ std::string mpirun(int ranks) {
 }
 
 #if LANCER_TEST_MPI
-
-void expectSameFile(const std::string& actual, const std::string& expected) {
-  ASSERT_TRUE(std::filesystem::exists(actual)) << actual;
-  EXPECT_TRUE(test::readBytes(actual) == test::readBytes(expected)) << actual << " differs from " << expected;
-}
 
 TEST(MpiCli, AnimationsAreByteIdenticalToOneProcess) {
   if (!mpirunInstalled()) GTEST_SKIP() << "mpirun is not installed";

@@ -60,6 +60,11 @@ void expectOnlyFile(const ScratchFolder& folder, const std::string& name,
   EXPECT_EQ(folder.entries(), std::vector<std::string>{name});
 }
 
+void expectSameFile(const std::string& actual, const std::string& expected) {
+  ASSERT_TRUE(std::filesystem::exists(actual)) << actual;
+  EXPECT_TRUE(readBytes(actual) == readBytes(expected)) << actual << " differs from " << expected;
+}
+
 std::vector<std::uint8_t> readBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};

@@ -40,6 +40,8 @@ void expectOnlyFile(const ScratchFolder& folder, const std::string& name,
                     const std::vector<std::uint8_t>& bytes);
 
 std::vector<std::uint8_t> readBytes(const std::string& path);
+// Adds gtest failures unless `actual` exists and has exactly the bytes of `expected`.
+void expectSameFile(const std::string& actual, const std::string& expected);
 void writeBytes(const std::string& path, const std::vector<std::uint8_t>& bytes);
 // The whole file as text (or as bytes in a string).
 std::string readText(const std::filesystem::path& path);
