@@ -33,30 +33,38 @@ def _entities_to_take(gmsh, dims):
     return taken
 
 
-def _node_fields(gmsh, tag_to_index, node_count):
-    """The first step of every view holding node data (gmsh.view.getModelData), per mesh node."""
-    fields = []
+def _view_fields(gmsh, tag_to_index, node_count):
+    """The first step of every view holding model data (gmsh.view.getModelData): node data as
+    values per mesh node (NaN where the view gives none), element data as (element tags, values)."""
+    node_fields, element_fields = [], []
     for view in gmsh.view.getTags():
         try:
             data_type, tags, data, _, components = gmsh.view.getModelData(view, 0)
         except Exception:  # a list-based view (no model data): nothing to map onto the mesh
             continue
-        if data_type != "NodeData" or components <= 0 or len(tags) == 0:
+        components = int(components)
+        if data_type not in ("NodeData", "ElementData") or components <= 0 or len(tags) == 0:
             continue
-        index = gmsh.view.getIndex(view)
-        name = gmsh.option.getString(f"View[{index}].Name")
+        name = gmsh.option.getString(f"View[{gmsh.view.getIndex(view)}].Name")
+        rows = np.array([np.asarray(d, dtype=float)[:components] for d in data]).reshape(len(tags), components)
+        tags = np.asarray(tags, dtype=np.int64)
+        if data_type == "ElementData":
+            element_fields.append((name, components, tags, rows.reshape(-1)))
+            continue
         values = np.full((node_count, components), np.nan)
-        rows = np.array([np.asarray(d, dtype=float)[:components] for d in data])
-        slots = tag_to_index[np.asarray(tags, dtype=np.int64)]
+        known = (tags >= 0) & (tags < len(tag_to_index))
+        slots = np.full(len(tags), -1, dtype=np.int64)
+        slots[known] = tag_to_index[tags[known]]
         values[slots[slots >= 0]] = rows[slots >= 0]
-        fields.append((name, int(components), values.reshape(-1)))
-    return fields
+        node_fields.append((name, components, values.reshape(-1)))
+    return node_fields, element_fields
 
 
 def from_gmsh(dim=2, name=None):
     """The mesh of gmsh's current model: dim=2 its surfaces, dim=3 also its volumes, whose skin and
     interfaces become faces as the .msh reader makes them. Physical groups and their names come
-    along, and the first step of each view with node data becomes a field for color_by. Call it
+    along, and the first step of each view with node or element data (gmsh.view.addModelData)
+    becomes a field for color_by, as the .msh reader makes one of $NodeData and $ElementData. Call it
     after gmsh.model.mesh.generate(dim)."""
     if dim not in (2, 3):
         raise ValueError(f"dim={dim!r}: use 2 (surfaces) or 3 (surfaces and volumes)")
@@ -72,10 +80,11 @@ def from_gmsh(dim=2, name=None):
 
     blocks = []
     for entity_dim, entity, physical in _entities_to_take(gmsh, (2, 3) if dim == 3 else (2,)):
-        types, _, element_nodes = gmsh.model.mesh.getElements(entity_dim, entity)
-        for element_type, nodes in zip(types, element_nodes):
+        types, element_tags, element_nodes = gmsh.model.mesh.getElements(entity_dim, entity)
+        for element_type, tags, nodes in zip(types, element_tags, element_nodes):
             indices = tag_to_index[np.asarray(nodes, dtype=np.int64)]
-            blocks.append((int(element_type), entity_dim, physical, entity, indices))
+            blocks.append((int(element_type), entity_dim, physical, entity, indices,
+                           np.asarray(tags, dtype=np.int64)))
     if not blocks and dim == 2 and any(d == 3 for d, _ in gmsh.model.getPhysicalGroups()):
         raise ValueError("the gmsh model's physical groups are volumes: use from_gmsh(dim=3) after "
                          "gmsh.model.mesh.generate(3), or add physical surfaces")
@@ -88,8 +97,9 @@ def from_gmsh(dim=2, name=None):
         group_name = gmsh.model.getPhysicalName(group_dim, tag)
         if group_name:
             group_names[(group_dim, tag)] = group_name
-    fields = _node_fields(gmsh, tag_to_index, len(node_tags))
-    return _lancer._mesh_from_elements(points, blocks, group_names, name or f"gmsh:{gmsh.model.getCurrent()}", fields)
+    node_fields, element_fields = _view_fields(gmsh, tag_to_index, len(node_tags))
+    return _lancer._mesh_from_elements(points, blocks, group_names, name or f"gmsh:{gmsh.model.getCurrent()}",
+                                       node_fields, element_fields)
 
 
 # The General.* options that make gmsh's view (lancer/scene/gmsh_view.hpp reads the same ones).

@@ -138,8 +138,12 @@ std::shared_ptr<Mesh> meshFromArrays(const py::array& pointsIn, const py::array&
   std::vector<ElementBlock> blocks;
   for (std::size_t r = 0; r < runs.size(); ++r) {
     const std::size_t end = r + 1 < runs.size() ? runs[r + 1].begin : nodes.size();
-    blocks.push_back({runs[r].type, 2, runs[r].physical, runs[r].entity,
-                      std::span<const std::uint32_t>(nodes.data() + runs[r].begin, end - runs[r].begin)});
+    blocks.push_back({runs[r].type,
+                      2,
+                      runs[r].physical,
+                      runs[r].entity,
+                      std::span<const std::uint32_t>(nodes.data() + runs[r].begin, end - runs[r].begin),
+                      {}});
   }
   std::vector<PhysicalGroup> named = checkedGroupNames(groupNames, 2);
   static_assert(sizeof(Vec3d) == 3 * sizeof(double));
@@ -149,20 +153,50 @@ std::shared_ptr<Mesh> meshFromArrays(const py::array& pointsIn, const py::array&
   return std::make_shared<Mesh>(meshFromElements(xyz, blocks, std::move(named), name));
 }
 
-// _mesh_from_elements(points, blocks, group_names, name, node_fields): for lancer.from_gmsh. blocks:
-// [(type, dimension, physical, entity, nodes)], nodes 0-based, nodeCount per element; group_names:
-// {(dimension, tag): name}; node_fields: [(name, components, values (N * components,))].
+// Non-negative element tags (gmsh's size_t tags) as uint64, named for messages.
+std::vector<std::uint64_t> checkedElementTags(const py::array& array, const char* name) {
+  const IndexArray values = checkedIntegers(array, name);
+  std::vector<std::uint64_t> tags(static_cast<std::size_t>(values.size()));
+  for (py::ssize_t i = 0; i < values.size(); ++i) {
+    if (values.data()[i] < 0)
+      valueError(fmt::format("{} holds {}: element tags are >= 0", name, values.data()[i]));
+    tags[static_cast<std::size_t>(i)] = static_cast<std::uint64_t>(values.data()[i]);
+  }
+  return tags;
+}
+
+// Field values: NaN is "no value here" (grey in color_by); an infinity has no colour: an error.
+// tags name the records of an element field; a node field's records are the nodes, in order.
+void rejectInfinite(const PointArray& values, int components, const std::string& field,
+                    std::span<const std::uint64_t> tags) {
+  for (py::ssize_t i = 0; i < values.size(); ++i) {
+    if (!std::isinf(values.data()[i])) continue;
+    const auto record = static_cast<std::size_t>(i / components);
+    valueError(tags.empty() ? fmt::format("node field '{}' has an infinite value at node index {}: give "
+                                          "finite values, or NaN for none",
+                                          field, record)
+                            : fmt::format("element field '{}' has an infinite value for element {}: give "
+                                          "finite values, or NaN for none",
+                                          field, tags[record]));
+  }
+}
+
+// _mesh_from_elements(points, blocks, group_names, name, node_fields, element_fields): for
+// lancer.from_gmsh. blocks: [(type, dimension, physical, entity, nodes, tags)], nodes 0-based,
+// nodeCount per element, tags one per element (or None); group_names: {(dimension, tag): name};
+// node_fields: [(name, components, values (N * components,))]; element_fields: [(name, components,
+// tags (R,), values (R * components,))], tags naming the blocks' elements.
 std::shared_ptr<Mesh> meshFromElementBlocks(const py::array& pointsIn, const py::list& blockList,
                                             const py::dict& groupNames, const std::string& name,
-                                            const py::list& fieldList) {
+                                            const py::list& fieldList, const py::list& elementFieldList) {
   const PointArray points = checkedPoints(pointsIn);
   const std::int64_t pointCount = points.shape(0);
-  std::vector<IndexArray> keep;  // the converted index arrays the blocks' spans point into
-  std::vector<std::vector<std::uint32_t>> indices;
+  std::vector<std::vector<std::uint32_t>> indices;  // the converted arrays the blocks' spans point into
+  std::vector<std::vector<std::uint64_t>> elementTags;
   std::vector<ElementBlock> blocks;
   for (const py::handle item : blockList) {
-    const auto [type, dimension, physical, entity, nodeArray] =
-        item.cast<std::tuple<int, int, std::int32_t, std::int32_t, py::array>>();
+    const auto [type, dimension, physical, entity, nodeArray, tagArray] =
+        item.cast<std::tuple<int, int, std::int32_t, std::int32_t, py::array, py::object>>();
     const int nodeCount = elementNodeCount(type);
     if (nodeCount == 0) valueError(fmt::format("gmsh element type {} is not one lancer knows", type));
     const IndexArray values = checkedIntegers(nodeArray, "element nodes");
@@ -176,34 +210,58 @@ std::shared_ptr<Mesh> meshFromElementBlocks(const py::array& pointsIn, const py:
             fmt::format("an element uses node index {}, outside the {} nodes", values.data()[i], pointCount));
       block[static_cast<std::size_t>(i)] = static_cast<std::uint32_t>(values.data()[i]);
     }
+    std::vector<std::uint64_t>& tags = elementTags.emplace_back();
+    if (!tagArray.is_none()) {
+      tags = checkedElementTags(py::array::ensure(tagArray), "element tags");
+      if (tags.size() * static_cast<std::size_t>(nodeCount) != block.size())
+        valueError(fmt::format("{} element tags for {} type-{} elements", tags.size(),
+                               block.size() / static_cast<std::size_t>(nodeCount), type));
+    }
   }
   std::size_t b = 0;
   for (const py::handle item : blockList) {
-    const auto [type, dimension, physical, entity, nodeArray] =
-        item.cast<std::tuple<int, int, std::int32_t, std::int32_t, py::array>>();
-    blocks.push_back({type, dimension, physical, entity, indices[b++]});
+    const auto [type, dimension, physical, entity] =
+        item.cast<py::tuple>()[py::slice(0, 4, 1)].cast<std::tuple<int, int, std::int32_t, std::int32_t>>();
+    blocks.push_back({type, dimension, physical, entity, indices[b], elementTags[b]});
+    ++b;
   }
   std::vector<PhysicalGroup> named;
   for (const auto& [key, value] : groupNames) {
     const auto [dimension, tag] = key.cast<std::pair<int, int>>();
     named.push_back({dimension, tag, value.cast<std::string>()});
   }
-  std::vector<py::array_t<double, py::array::c_style | py::array::forcecast>> fieldValues;
+  std::vector<PointArray> fieldValues;  // the converted values the fields' spans point into
   std::vector<NodeFieldInput> fields;
   for (const py::handle item : fieldList) {
     const auto [fieldName, components, values] = item.cast<std::tuple<std::string, int, py::array>>();
-    auto& array = fieldValues.emplace_back(
-        py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values));
+    auto& array = fieldValues.emplace_back(PointArray::ensure(values));
     if (components <= 0 || array.size() != pointCount * components)
       valueError(fmt::format("field '{}' has {} values for {} nodes of {} components", fieldName,
                              array.size(), pointCount, components));
+    rejectInfinite(array, components, fieldName, {});
     fields.push_back({fieldName, components,
                       std::span<const double>(array.data(), static_cast<std::size_t>(array.size()))});
+  }
+  std::vector<std::vector<std::uint64_t>> recordTags;
+  std::vector<ElementFieldInput> elementFields;
+  for (const py::handle item : elementFieldList) {
+    const auto [fieldName, components, tagArray, values] =
+        item.cast<std::tuple<std::string, int, py::array, py::array>>();
+    const std::vector<std::uint64_t>& tags =
+        recordTags.emplace_back(checkedElementTags(tagArray, "element field tags"));
+    auto& array = fieldValues.emplace_back(PointArray::ensure(values));
+    if (components <= 0 ||
+        static_cast<std::size_t>(array.size()) != tags.size() * static_cast<std::size_t>(components))
+      valueError(fmt::format("element field '{}' has {} values for {} elements of {} components", fieldName,
+                             array.size(), tags.size(), components));
+    rejectInfinite(array, components, fieldName, tags);
+    elementFields.push_back({fieldName, components, tags,
+                             std::span<const double>(array.data(), static_cast<std::size_t>(array.size()))});
   }
   const std::span<const Vec3d> xyz(reinterpret_cast<const Vec3d*>(points.data()),
                                    static_cast<std::size_t>(pointCount));
   py::gil_scoped_release release;
-  return std::make_shared<Mesh>(meshFromElements(xyz, blocks, std::move(named), name, fields));
+  return std::make_shared<Mesh>(meshFromElements(xyz, blocks, std::move(named), name, fields, elementFields));
 }
 
 py::array_t<double> pointsOf(const Mesh& mesh) {
@@ -231,6 +289,22 @@ py::array_t<std::int64_t> facesOf(const Mesh& mesh) {
 
 py::array_t<std::int32_t> tagsOf(const std::vector<std::int32_t>& tags) {
   return py::array_t<std::int32_t>(static_cast<py::ssize_t>(tags.size()), tags.data());
+}
+
+// One field's values: (points, C) for node data, (faces, C) for element data; NaN where none.
+py::array_t<float> fieldOf(const Mesh& mesh, const std::string& name) {
+  std::string names;
+  for (const MeshField& field : mesh.fields) {
+    if (field.name == name) {
+      const auto components = static_cast<py::ssize_t>(field.components);
+      py::array_t<float> values({static_cast<py::ssize_t>(field.itemCount()), components});
+      std::copy(field.values.begin(), field.values.end(), values.mutable_data());
+      return values;
+    }
+    names += fmt::format("{}'{}'", names.empty() ? "" : ", ", field.name);
+  }
+  throw py::key_error(
+      fmt::format("the mesh has no field '{}'; its fields: {}", name, names.empty() ? "none" : names));
 }
 
 py::dict groupNamesOf(const Mesh& mesh) {
@@ -268,6 +342,9 @@ void bindMesh(py::module_& module) {
             return names;
           },
           "names of the fields (node and element data) color_by can use")
+      .def("field", &fieldOf, py::arg("name"),
+           "values of one of `fields`: (len(points), C) float32 for node data, (len(faces), C) for "
+           "element data, NaN where the data gives none")
       .def_property_readonly("name", [](const Mesh& mesh) { return mesh.source.path; })
       .def_property_readonly("warnings", [](const Mesh& mesh) { return mesh.source.warnings; })
       .def_property_readonly("load_seconds", [](const Mesh& mesh) { return mesh.source.loadSeconds; })
@@ -283,7 +360,7 @@ void bindMesh(py::module_& module) {
       },
       py::arg("path"), "Reads a gmsh .msh file (MSH 2.2, 4.0, 4.1) as the lancer command does");
   module.def("_mesh_from_elements", &meshFromElementBlocks, py::arg("points"), py::arg("blocks"),
-             py::arg("group_names"), py::arg("name"), py::arg("node_fields"));
+             py::arg("group_names"), py::arg("name"), py::arg("node_fields"), py::arg("element_fields"));
 }
 
 }  // namespace lancer::python

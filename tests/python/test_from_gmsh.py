@@ -52,7 +52,75 @@ def test_view_node_data_becomes_a_field(session):
     tags, coords, _ = gmsh.model.mesh.getNodes()
     view = gmsh.view.add("height")
     gmsh.view.addModelData(view, 0, "box", "NodeData", list(tags), [[z] for z in coords[2::3]])
-    assert lancer.from_gmsh().fields == ["height"]
+    mesh = lancer.from_gmsh()
+    assert mesh.fields == ["height"]
+    # The world z of every vertex (float32, as lancer keeps field values).
+    assert np.allclose(mesh.field("height")[:, 0], mesh.points[:, 2], atol=1e-5)
+    with pytest.raises(KeyError, match="no field 'pressure'; its fields: 'height'"):
+        mesh.field("pressure")
+
+
+def surface_tag_data(dim):
+    """An ElementData view giving each element of the model the tag of the entity that holds it."""
+    view = gmsh.view.add("entity")
+    tags, values = [], []
+    for entity_dim, entity in gmsh.model.getEntities(dim):
+        for element_tags in gmsh.model.mesh.getElements(entity_dim, entity)[1]:
+            tags += list(element_tags)
+            values += [[float(entity)]] * len(element_tags)
+    gmsh.view.addModelData(view, 0, "box", "ElementData", tags, values)
+    return view
+
+
+def test_view_element_data_becomes_a_face_field(session):
+    make_box(2)
+    surface_tag_data(2)
+    mesh = lancer.from_gmsh()
+    assert mesh.fields == ["entity"]
+    values = mesh.field("entity")
+    assert values.shape == (len(mesh.faces), 1)
+    assert np.array_equal(values[:, 0], mesh.entities.astype(np.float32))  # each face its element's value
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_view_fields_are_the_files_fields(session, tmp_path, dim):
+    """A model with a node view and an element view gives from_gmsh the fields the .msh reader
+    gives when gmsh saves the mesh and appends the views ($NodeData, $ElementData)."""
+    make_box(dim)
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    height = gmsh.view.add("height")
+    gmsh.view.addModelData(height, 0, "box", "NodeData", list(tags), [[z] for z in coords[2::3]])
+    entity = surface_tag_data(dim)
+    path = tmp_path / "box.msh"
+    gmsh.option.setNumber("Mesh.Binary", 1)
+    gmsh.write(str(path))
+    gmsh.view.write(height, str(path), append=True)
+    gmsh.view.write(entity, str(path), append=True)
+    live, saved = lancer.from_gmsh(dim=dim), lancer.read_msh(str(path))
+    assert live.fields == saved.fields == ["height", "entity"]
+    for name in live.fields:
+        assert np.array_equal(live.field(name), saved.field(name), equal_nan=True), name
+    assert not np.any(np.isnan(live.field("entity")))  # every face came from an element the view names
+
+
+def test_bad_element_field_arrays_are_value_errors():
+    points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], dtype=float)
+    block = (2, 2, 0, 1, np.array([0, 1, 2]), np.array([5]))
+    make = lancer._lancer._mesh_from_elements
+    mesh = make(points, [block], {}, "t", [], [("p", 1, np.array([5]), np.array([2.5]))])
+    assert mesh.field("p")[0, 0] == 2.5
+    unnamed = make(points, [block], {}, "t", [], [("p", 1, np.array([6]), np.array([2.5]))])
+    assert np.isnan(unnamed.field("p")[0, 0])  # no record names the element: no value
+    with pytest.raises(ValueError, match="element field 'p' has 2 values for 1 elements of 1 components"):
+        make(points, [block], {}, "t", [], [("p", 1, np.array([5]), np.array([1.0, 2.0]))])
+    with pytest.raises(ValueError, match="element field 'p' has an infinite value for element 5"):
+        make(points, [block], {}, "t", [], [("p", 1, np.array([5]), np.array([np.inf]))])
+    with pytest.raises(ValueError, match="element tags holds -1"):
+        make(points, [(2, 2, 0, 1, np.array([0, 1, 2]), np.array([-1]))], {}, "t", [], [])
+    with pytest.raises(ValueError, match="2 element tags for 1 type-2 elements"):
+        make(points, [(2, 2, 0, 1, np.array([0, 1, 2]), np.array([1, 2]))], {}, "t", [], [])
+    with pytest.raises(ValueError, match="node field 'h' has an infinite value at node index 1"):
+        make(points, [block], {}, "t", [("h", 1, np.array([0.0, np.inf, 1.0]))], [])
 
 
 def test_without_a_mesh(session):

@@ -13,7 +13,8 @@ int elementNodeCount(int type) {
 
 Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBlock> blocks,
                       std::vector<PhysicalGroup> namedGroups, const std::string& name,
-                      std::span<const NodeFieldInput> nodeFields) {
+                      std::span<const NodeFieldInput> nodeFields,
+                      std::span<const ElementFieldInput> elementFields) {
   const Stopwatch stopwatch;
   MshMeshAssembler assembler;
   // Tags 1..N, as gmsh numbers nodes: every node counts as one the caller gave (for node fields).
@@ -33,12 +34,15 @@ Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBloc
       faceEstimate += block.nodes.size() / static_cast<std::size_t>(nodeCount);
   }
   assembler.reserveFaces(faceEstimate);
+  // Faces remember their element only when a field needs it (8 bytes a face), as in the reader.
+  if (!elementFields.empty()) assembler.trackElements();
   for (const ElementBlock& block : blocks) {
     const auto nodeCount = static_cast<std::size_t>(elementNodeCount(block.type));
     if (nodeCount == 0) continue;  // the caller checked the types; an unknown one has no nodes to read
     assembler.setGroup(block.dimension, block.physical, block.entity);
-    for (std::size_t at = 0; at + nodeCount <= block.nodes.size(); at += nodeCount)
-      assembler.addElement(block.type, block.nodes.data() + at);
+    const bool tagged = assembler.tracksElements() && !block.tags.empty();
+    for (std::size_t at = 0, element = 0; at + nodeCount <= block.nodes.size(); at += nodeCount, ++element)
+      assembler.addElement(block.type, block.nodes.data() + at, tagged ? block.tags[element] : 0);
   }
   for (const NodeFieldInput& input : nodeFields) {
     MeshField field;
@@ -46,6 +50,15 @@ Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBloc
     field.components = input.components;
     field.values.assign(input.values.begin(), input.values.end());
     assembler.nodeFields.push_back(std::move(field));
+  }
+  for (const ElementFieldInput& input : elementFields) {
+    MshMeshAssembler::ElementField raw;
+    raw.field.name = input.name;
+    raw.field.perElement = true;
+    raw.field.components = input.components;
+    raw.field.values.assign(input.values.begin(), input.values.end());
+    raw.tags.assign(input.tags.begin(), input.tags.end());
+    assembler.elementFields.push_back(std::move(raw));
   }
   MeshSourceInfo source;
   source.path = name;

@@ -20,6 +20,8 @@ struct ElementBlock {
   std::int32_t physical = 0;  // 0: in no physical group
   std::int32_t entity = 0;
   std::span<const std::uint32_t> nodes;
+  // The elements' gmsh tags, one per element, for element fields; empty when none are given.
+  std::span<const std::uint64_t> tags;
 };
 
 // Nodal values of one field (a gmsh view's step): components values per node, in node order.
@@ -29,11 +31,22 @@ struct NodeFieldInput {
   std::span<const double> values;
 };
 
+// Values of one field per element (a gmsh view's ElementData step): components values per record,
+// records named by element tag (ElementBlock::tags). Faces made from an element (its split
+// second-order faces, a volume's skin faces) take its value; faces no record names get NaN.
+struct ElementFieldInput {
+  std::string name;
+  int components = 1;
+  std::span<const std::uint64_t> tags;
+  std::span<const double> values;  // tags.size() * components
+};
+
 // The caller has checked the input (finite coordinates, indices below points.size(), known types
 // with whole elements): this trusts it. `name` is the mesh's name in messages.
 Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBlock> blocks,
                       std::vector<PhysicalGroup> namedGroups, const std::string& name,
-                      std::span<const NodeFieldInput> nodeFields = {});
+                      std::span<const NodeFieldInput> nodeFields = {},
+                      std::span<const ElementFieldInput> elementFields = {});
 
 // Nodes per element of a gmsh element type, 0 for a type lancer does not know.
 int elementNodeCount(int type);
