@@ -126,7 +126,7 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
   SceneDescription description;
   std::vector<Mesh> preloaded;
   if (isMeshFile(input)) {
-    preloaded.push_back(readMsh(input));
+    preloaded.push_back(readMsh(input, overrides.threads));
     if (const std::string reason = nothingToDrawReason(preloaded.front()); !reason.empty())
       throw InputError(SourceLocation{input}, "nothing to draw: " + reason);
     description = quickLookScene(input, preloaded.front(), up);

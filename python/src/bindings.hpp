@@ -25,6 +25,9 @@ struct PythonScene {
 PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh);
 PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh, std::optional<UpAxis> up);
 
+// A threads= argument: 0 (every core) to kMaxThreads, else a ValueError saying so.
+void requireThreads(int threads);
+
 void bindErrors(py::module_& module);
 void bindMesh(py::module_& module);
 void bindScene(py::module_& module);

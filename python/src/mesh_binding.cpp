@@ -13,6 +13,7 @@
 #include "lancer/mesh/mesh_from_elements.hpp"
 #include "lancer/mesh/msh/huge_pages.hpp"
 #include "lancer/mesh/msh_reader.hpp"
+#include "lancer/util/parallel_for.hpp"
 
 namespace lancer::python {
 namespace {
@@ -21,6 +22,22 @@ using IndexArray = py::array_t<std::int64_t, py::array::c_style | py::array::for
 using PointArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 [[noreturn]] void valueError(const std::string& message) { throw py::value_error(message); }
+
+// The first i in [0, count) for which bad(i) holds, or count: checked in parallel chunks (a 1M-face
+// array is a few milliseconds a pass), the lowest failing index reported whatever the threads.
+template <typename Bad>
+std::size_t firstBad(std::size_t count, int threads, Bad&& bad) {
+  const ChunkPlan plan(count, 1 << 16);
+  std::vector<std::size_t> firstInChunk(plan.chunks, count);
+  parallelChunks(plan, threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      if (bad(i)) {
+        firstInChunk[k] = i;
+        return;
+      }
+  });
+  return *std::min_element(firstInChunk.begin(), firstInChunk.end());
+}
 
 char dtypeKind(const py::array& array) { return array.dtype().kind(); }
 
@@ -31,7 +48,7 @@ std::string shapeOf(const py::array& array) {
 }
 
 // (N, 3) real numbers, every coordinate finite, as one contiguous float64 array (a view when it is one).
-PointArray checkedPoints(const py::array& points) {
+PointArray checkedPoints(const py::array& points, int threads) {
   if (points.ndim() != 2 || points.shape(1) != 3)
     valueError(fmt::format("points must be an (N, 3) array of coordinates; got shape {}", shapeOf(points)));
   const char kind = dtypeKind(points);
@@ -40,10 +57,15 @@ PointArray checkedPoints(const py::array& points) {
                            py::str(points.dtype()).cast<std::string>()));
   PointArray contiguous = PointArray::ensure(points);
   const double* xyz = contiguous.data();
-  for (py::ssize_t i = 0; i < contiguous.shape(0); ++i)
-    if (!std::isfinite(xyz[3 * i]) || !std::isfinite(xyz[3 * i + 1]) || !std::isfinite(xyz[3 * i + 2]))
-      valueError(fmt::format("points[{}] is ({}, {}, {}): every coordinate must be finite", i, xyz[3 * i],
-                             xyz[3 * i + 1], xyz[3 * i + 2]));
+  const auto count = static_cast<std::size_t>(contiguous.shape(0));
+  if (const std::size_t i = firstBad(count, threads,
+                                     [&](std::size_t p) {
+                                       return !std::isfinite(xyz[3 * p]) || !std::isfinite(xyz[3 * p + 1]) ||
+                                              !std::isfinite(xyz[3 * p + 2]);
+                                     });
+      i < count)
+    valueError(fmt::format("points[{}] is ({}, {}, {}): every coordinate must be finite", i, xyz[3 * i],
+                           xyz[3 * i + 1], xyz[3 * i + 2]));
   return contiguous;
 }
 
@@ -94,63 +116,52 @@ std::vector<PhysicalGroup> checkedGroupNames(const py::object& names, int dimens
 // Mesh(points, faces, groups=None, group_names=None, entities=None, name="<arrays>")
 std::shared_ptr<Mesh> meshFromArrays(const py::array& pointsIn, const py::array& facesIn,
                                      const py::object& groupsIn, const py::object& groupNames,
-                                     const py::object& entitiesIn, const std::string& name) {
-  const PointArray points = checkedPoints(pointsIn);
+                                     const py::object& entitiesIn, const std::string& name, int threads) {
+  requireThreads(threads);
+  const PointArray points = checkedPoints(pointsIn, threads);
   if (facesIn.ndim() != 2 || (facesIn.shape(1) != 3 && facesIn.shape(1) != 4))
     valueError(fmt::format("faces must be an (M, 3) or (M, 4) array of 0-based point indices; got shape {}",
                            shapeOf(facesIn)));
   const IndexArray faces = checkedIntegers(facesIn, "faces");
   const py::ssize_t faceCount = faces.shape(0);
   const auto corners = static_cast<int>(faces.shape(1));
-  const std::vector<std::int32_t> groups = checkedTags(groupsIn, faceCount, "groups");
-  const std::vector<std::int32_t> entities =
+  std::vector<std::int32_t> groups = checkedTags(groupsIn, faceCount, "groups");
+  std::vector<std::int32_t> entities =
       entitiesIn.is_none() ? groups : checkedTags(entitiesIn, faceCount, "entities");
   const std::int64_t pointCount = points.shape(0);
   if (pointCount > std::numeric_limits<std::int32_t>::max())
     valueError(fmt::format("{} points are more than lancer's 32-bit indices allow", pointCount));
 
-  // Runs of faces of one type and group become element blocks; corners go to one index buffer.
-  std::vector<std::uint32_t> nodes;
-  nodes.reserve(static_cast<std::size_t>(faceCount) * static_cast<std::size_t>(corners));
-  adviseHugePages(nodes);
-  struct Run {
-    int type;
-    std::int32_t physical, entity;
-    std::size_t begin;
-  };
-  std::vector<Run> runs;
+  // One pass checks the corners and writes the faces (the only copy of the indices).
+  SurfaceFacesInput input;
+  input.faces.resize(static_cast<std::size_t>(faceCount));
+  adviseHugePages(input.faces);
   const std::int64_t* index = faces.data();
-  for (py::ssize_t f = 0; f < faceCount; ++f, index += corners) {
-    const bool triangle = corners == 3 || index[3] == -1;
-    const int used = triangle ? 3 : 4;
+  const auto badFace = [&](std::size_t f) {
+    const std::int64_t* corner = index + f * static_cast<std::size_t>(corners);
+    const int used = corners == 3 || corner[3] == -1 ? 3 : 4;
     for (int c = 0; c < used; ++c) {
-      if (index[c] < 0 || index[c] >= pointCount)
-        valueError(fmt::format("faces[{}] uses point {}, but points has {} rows (indices are 0-based{})", f,
-                               index[c], pointCount, corners == 4 ? "; -1 last makes a triangle" : ""));
-      nodes.push_back(static_cast<std::uint32_t>(index[c]));
+      if (corner[c] < 0 || corner[c] >= pointCount) return true;
+      input.faces[f].vertex[c] = static_cast<std::uint32_t>(corner[c]);
     }
-    const int type = triangle ? 2 : 3;
-    const auto g = static_cast<std::size_t>(f);
-    if (runs.empty() || runs.back().type != type || runs.back().physical != groups[g] ||
-        runs.back().entity != entities[g])
-      runs.push_back({type, groups[g], entities[g], nodes.size() - static_cast<std::size_t>(used)});
+    return false;
+  };
+  if (const std::size_t f = firstBad(input.faces.size(), threads, badFace); f < input.faces.size()) {
+    const std::int64_t* corner = index + f * static_cast<std::size_t>(corners);
+    const int c = static_cast<int>(
+        std::find_if(corner, corner + corners, [&](std::int64_t v) { return v < 0 || v >= pointCount; }) -
+        corner);
+    valueError(fmt::format("faces[{}] uses point {}, but points has {} rows (indices are 0-based{})", f,
+                           corner[c], pointCount, corners == 4 ? "; -1 last makes a triangle" : ""));
   }
-  std::vector<ElementBlock> blocks;
-  for (std::size_t r = 0; r < runs.size(); ++r) {
-    const std::size_t end = r + 1 < runs.size() ? runs[r + 1].begin : nodes.size();
-    blocks.push_back({runs[r].type,
-                      2,
-                      runs[r].physical,
-                      runs[r].entity,
-                      std::span<const std::uint32_t>(nodes.data() + runs[r].begin, end - runs[r].begin),
-                      {}});
-  }
+  input.physical = std::move(groups);
+  input.entity = std::move(entities);
   std::vector<PhysicalGroup> named = checkedGroupNames(groupNames, 2);
   static_assert(sizeof(Vec3d) == 3 * sizeof(double));
   const std::span<const Vec3d> xyz(reinterpret_cast<const Vec3d*>(points.data()),
                                    static_cast<std::size_t>(pointCount));
   py::gil_scoped_release release;
-  return std::make_shared<Mesh>(meshFromElements(xyz, blocks, std::move(named), name));
+  return std::make_shared<Mesh>(meshFromFaces(xyz, std::move(input), std::move(named), name, threads));
 }
 
 // Non-negative element tags (gmsh's size_t tags) as uint64, named for messages.
@@ -189,7 +200,7 @@ void rejectInfinite(const PointArray& values, int components, const std::string&
 std::shared_ptr<Mesh> meshFromElementBlocks(const py::array& pointsIn, const py::list& blockList,
                                             const py::dict& groupNames, const std::string& name,
                                             const py::list& fieldList, const py::list& elementFieldList) {
-  const PointArray points = checkedPoints(pointsIn);
+  const PointArray points = checkedPoints(pointsIn, 0);
   const std::int64_t pointCount = points.shape(0);
   std::vector<std::vector<std::uint32_t>> indices;  // the converted arrays the blocks' spans point into
   std::vector<std::vector<std::uint64_t>> elementTags;
@@ -321,10 +332,11 @@ void bindMesh(py::module_& module) {
                                           "A surface mesh: points, triangle and quad faces, physical groups")
       .def(py::init(&meshFromArrays), py::arg("points"), py::arg("faces"), py::arg("groups") = py::none(),
            py::arg("group_names") = py::none(), py::arg("entities") = py::none(),
-           py::arg("name") = "<arrays>",
+           py::arg("name") = "<arrays>", py::arg("threads") = 0,
            "points (N, 3) float64; faces (M, 3) or (M, 4) int, 0-based (a (M, 4) row with -1 last is a "
            "triangle); groups (M,) physical tags (0: none); group_names {tag: name}; entities (M,) gmsh "
-           "elementary tags (default: the groups). Points no face uses are dropped, as are zero-area faces.")
+           "elementary tags (default: the groups). Points no face uses are dropped, as are zero-area faces. "
+           "threads: for the checks and the assembly (0: every core); the mesh is the same for any count.")
       .def_property_readonly("points", &pointsOf, "(N, 3) float64 world coordinates of the vertices")
       .def_property_readonly("faces", &facesOf, "(M, 3) int64, or (M, 4) with -1 last for triangles")
       .def_property_readonly(
@@ -354,11 +366,14 @@ void bindMesh(py::module_& module) {
       });
   module.def(
       "read_msh",
-      [](const std::string& path) {
+      [](const std::string& path, int threads) {
+        requireThreads(threads);
         py::gil_scoped_release release;
-        return std::make_shared<Mesh>(readMsh(path));
+        return std::make_shared<Mesh>(readMsh(path, threads));
       },
-      py::arg("path"), "Reads a gmsh .msh file (MSH 2.2, 4.0, 4.1) as the lancer command does");
+      py::arg("path"), py::arg("threads") = 0,
+      "Reads a gmsh .msh file (MSH 2.2, 4.0, 4.1) as the lancer command does (threads: for the assembly "
+      "after the parse, 0: every core; the mesh is the same for any count)");
   module.def("_mesh_from_elements", &meshFromElementBlocks, py::arg("points"), py::arg("blocks"),
              py::arg("group_names"), py::arg("name"), py::arg("node_fields"), py::arg("element_fields"));
 }

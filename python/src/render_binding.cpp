@@ -56,14 +56,18 @@ py::array toArray(const Image& image, const RenderSettings& settings, bool linea
 
 }  // namespace
 
+void requireThreads(int threads) {
+  if (threads < 0 || threads > kMaxThreads)
+    throw py::value_error(
+        fmt::format("threads={} is out of range: use 0 (all cores) to {}", threads, kMaxThreads));
+}
+
 RenderOverrides renderOverridesFromArguments(const RenderArguments& arguments) {
   requireRange(arguments.width, "width", 1, kMaxRenderSide);
   requireRange(arguments.height, "height", 1, kMaxRenderSide);
   requireRange(arguments.samples, "samples", 1, kMaxSamples);
   requireRange(arguments.maxDepth, "max_depth", 0, kMaxDepth);
-  if (arguments.threads < 0 || arguments.threads > kMaxThreads)
-    throw py::value_error(
-        fmt::format("threads={} is out of range: use 0 (all cores) to {}", arguments.threads, kMaxThreads));
+  requireThreads(arguments.threads);
   RenderOverrides overrides;
   overrides.width = arguments.width;
   overrides.height = arguments.height;

@@ -8,6 +8,7 @@
 
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/face_shells.hpp"
+#include "lancer/mesh/mesh_from_elements.hpp"
 #include "lancer/mesh/vertex_normals.hpp"
 #include "lancer/scene/scene.hpp"
 #include "lancer/util/parallel_for.hpp"
@@ -73,6 +74,72 @@ TEST(ParallelPreparation, FaceShellEdgesEqualAStableSortOfAllEdges) {
     ASSERT_EQ(shells.edges[i].face, expected[i].face) << i;
     ASSERT_EQ(shells.edges[i].forward, expected[i].forward) << i;
   }
+}
+
+// The sphere as gmsh-like input for the assembler: points in double with unused points between
+// them (so vertices are renumbered), and every 1000th face made degenerate (so faces are dropped).
+struct AssemblyInput {
+  std::vector<Vec3d> points;
+  SurfaceFacesInput faces;
+};
+
+AssemblyInput assemblyInput() {
+  const TaggedSoup sphere = bigSphere();
+  AssemblyInput input;
+  for (const Vec3& p : sphere.soup.positions) {
+    input.points.push_back(toDouble(p) + Vec3d{10, 20, 30});
+    input.points.push_back(Vec3d{1e3, 1e3, 1e3});  // no face uses it
+  }
+  for (std::size_t f = 0; f < sphere.soup.faces.size(); ++f) {
+    MeshFace face = sphere.soup.faces[f];
+    for (int c = 0; c < face.cornerCount(); ++c) face.vertex[c] *= 2;
+    if (f % 1000 == 0)
+      for (int c = 1; c < face.cornerCount(); ++c) face.vertex[c] = face.vertex[0];
+    input.faces.faces.push_back(face);
+    input.faces.physical.push_back(sphere.tags[f]);
+    input.faces.entity.push_back(sphere.tags[f] + 10);
+  }
+  return input;
+}
+
+void expectSameMesh(const Mesh& a, const Mesh& b) {
+  EXPECT_TRUE(sameBytes(a.positions, b.positions));
+  EXPECT_TRUE(sameBytes(a.faces, b.faces));
+  EXPECT_TRUE(sameBytes(a.facePhysicalTag, b.facePhysicalTag));
+  EXPECT_TRUE(sameBytes(a.faceEntityTag, b.faceEntityTag));
+  EXPECT_TRUE(sameBytes(a.faceEdgeMask, b.faceEdgeMask));
+  EXPECT_EQ(a.origin, b.origin);
+  EXPECT_EQ(a.source.degenerateFacesDropped, b.source.degenerateFacesDropped);
+  EXPECT_EQ(a.physicalGroups.size(), b.physicalGroups.size());
+}
+
+TEST(ParallelPreparation, AssembledMeshesAreTheSameOnOneAndFiveThreadsAndAsElementByElement) {
+  const AssemblyInput input = assemblyInput();
+  const Mesh one = meshFromFaces(input.points, input.faces, {}, "sphere", 1);
+  const Mesh five = meshFromFaces(input.points, input.faces, {}, "sphere", 5);
+  ASSERT_GT(one.faces.size(), 90000u);                       // many chunks of the parallel passes
+  EXPECT_EQ(one.positions.size(), input.points.size() / 2);  // the unused points are gone
+  EXPECT_EQ(one.source.degenerateFacesDropped, (input.faces.faces.size() + 999) / 1000);
+  expectSameMesh(one, five);
+  // The element path (the reader's, one addElement per face) gives the same mesh.
+  std::vector<std::uint32_t> nodes;
+  std::vector<ElementBlock> blocks;
+  std::vector<std::size_t> starts;
+  for (std::size_t f = 0; f < input.faces.faces.size(); ++f) {
+    const MeshFace& face = input.faces.faces[f];
+    starts.push_back(nodes.size());
+    nodes.insert(nodes.end(), face.vertex, face.vertex + face.cornerCount());
+  }
+  for (std::size_t f = 0; f < input.faces.faces.size(); ++f) {
+    const std::size_t end = f + 1 < starts.size() ? starts[f + 1] : nodes.size();
+    blocks.push_back({input.faces.faces[f].isQuad() ? 3 : 2,
+                      2,
+                      input.faces.physical[f],
+                      input.faces.entity[f],
+                      std::span<const std::uint32_t>(nodes.data() + starts[f], end - starts[f]),
+                      {}});
+  }
+  expectSameMesh(one, meshFromElements(input.points, blocks, {}, "sphere"));
 }
 
 TEST(ParallelPreparation, CornerNormalsAreTheSameOnOneAndFiveThreads) {

@@ -7,6 +7,7 @@ import pytest
 import lancer
 from conftest import data, run_cli
 
+BRACKET = data("examples", "meshes", "bracket.msh")
 SQUARE = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype=float)
 TRIANGLES = np.array([[0, 1, 2], [0, 2, 3]])
 
@@ -97,3 +98,34 @@ def test_bad_output_leaves_no_file(tmp_path):
     with pytest.raises(lancer.InputError, match="extension"):
         image.save(tmp_path / "x.jpg")
     assert list(tmp_path.iterdir()) == []
+
+
+def big_strip(faces):
+    """A strip of `faces` triangles: big enough to be checked and assembled in many chunks."""
+    columns = faces // 2 + 1
+    points = np.array([(x, y, 0.0) for x in range(columns) for y in (0, 1)], dtype=float)
+    triangles = []
+    for x in range(columns - 1):
+        a, b, c, d = 2 * x, 2 * x + 1, 2 * x + 2, 2 * x + 3
+        triangles += [(a, c, b), (b, c, d)]
+    return points, np.array(triangles, dtype=np.int64)
+
+
+def test_threads_change_nothing_and_the_first_bad_row_is_reported():
+    points, faces = big_strip(300_000)
+    one, two = lancer.Mesh(points, faces, threads=1), lancer.Mesh(points, faces, threads=2)
+    assert np.array_equal(one.faces, two.faces) and np.array_equal(one.points, two.points)
+    broken = faces.copy()
+    broken[250_123, 2] = len(points)
+    broken[170_001, 0] = -7  # the lower row is the one named, whatever the threads
+    for threads in (1, 2, 0):
+        with pytest.raises(ValueError, match=r"faces\[170001\] uses point -7"):
+            lancer.Mesh(points, broken, threads=threads)
+    bad_points = points.copy()
+    bad_points[200_000, 1] = np.inf
+    bad_points[90_000, 2] = np.nan
+    with pytest.raises(ValueError, match=r"points\[90000\] is"):
+        lancer.Mesh(bad_points, faces, threads=2)
+    for call in (lambda: lancer.Mesh(points, faces, threads=-1), lambda: lancer.read_msh(str(BRACKET), threads=5000)):
+        with pytest.raises(ValueError, match="threads=.* is out of range: use 0"):
+            call()

@@ -68,4 +68,20 @@ Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBloc
   return mesh;
 }
 
+Mesh meshFromFaces(std::span<const Vec3d> points, SurfaceFacesInput faces,
+                   std::vector<PhysicalGroup> namedGroups, const std::string& name, int threads) {
+  const Stopwatch stopwatch;
+  MshMeshAssembler assembler;
+  assembler.setThreads(threads);
+  // The points are read where they are; no node tags (they only serve node fields).
+  assembler.adoptSurfaceMesh(points, std::move(faces.faces), std::move(faces.physical),
+                             std::move(faces.entity));
+  MeshSourceInfo source;
+  source.path = name;
+  source.nodeCount = points.size();
+  Mesh mesh = assembler.finish(std::move(source), std::move(namedGroups));
+  mesh.source.loadSeconds = stopwatch.seconds();
+  return mesh;
+}
+
 }  // namespace lancer

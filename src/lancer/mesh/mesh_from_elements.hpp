@@ -48,6 +48,16 @@ Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBloc
                       std::span<const NodeFieldInput> nodeFields = {},
                       std::span<const ElementFieldInput> elementFields = {});
 
+// Triangles and quads already made, with a physical and an entity tag per face (lancer.Mesh from
+// numpy arrays): the same mesh as the elements would give, without going element by element.
+struct SurfaceFacesInput {
+  std::vector<MeshFace> faces;  // corners checked by the caller: below points.size()
+  std::vector<std::int32_t> physical;
+  std::vector<std::int32_t> entity;
+};
+Mesh meshFromFaces(std::span<const Vec3d> points, SurfaceFacesInput faces,
+                   std::vector<PhysicalGroup> namedGroups, const std::string& name, int threads = 0);
+
 // Nodes per element of a gmsh element type, 0 for a type lancer does not know.
 int elementNodeCount(int type);
 

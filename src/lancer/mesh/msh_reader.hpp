@@ -11,10 +11,11 @@
 
 namespace lancer {
 
-// Memory-maps and reads the file; source.loadSeconds holds the time it took.
-Mesh readMsh(const std::string& path);
+// Memory-maps and reads the file; source.loadSeconds holds the time it took. The parse is serial;
+// the mesh assembly after it runs on `threads` threads (0: every core), the same mesh for any count.
+Mesh readMsh(const std::string& path, int threads = 0);
 
 // The same from bytes in memory (tests, fuzzing); nameForErrors is the file name errors show.
-Mesh readMshFromMemory(std::span<const char> bytes, const std::string& nameForErrors);
+Mesh readMshFromMemory(std::span<const char> bytes, const std::string& nameForErrors, int threads = 0);
 
 }  // namespace lancer

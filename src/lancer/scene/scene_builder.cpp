@@ -54,11 +54,11 @@ struct InstanceTransform {
   }
 };
 
-Mesh readInstanceMesh(const MeshInstance& instance) {
+Mesh readInstanceMesh(const MeshInstance& instance, int threads) {
   std::error_code error;
   if (!std::filesystem::exists(instance.file, error))
     throw InputError(instance.where, fmt::format("mesh file '{}' does not exist", instance.file));
-  Mesh mesh = readMsh(instance.file);
+  Mesh mesh = readMsh(instance.file, threads);
   if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
     throw InputError(instance.where, fmt::format("mesh '{}' has nothing to draw: {}", instance.file, reason));
   return mesh;
@@ -322,7 +322,8 @@ ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const SceneGeometry& g
 Scene buildScene(const SceneDescription& description, int threads) {
   std::vector<Mesh> meshes;
   meshes.reserve(description.meshes.size());
-  for (const MeshInstance& instance : description.meshes) meshes.push_back(readInstanceMesh(instance));
+  for (const MeshInstance& instance : description.meshes)
+    meshes.push_back(readInstanceMesh(instance, threads));
   return buildScene(description, std::move(meshes), threads);
 }
 

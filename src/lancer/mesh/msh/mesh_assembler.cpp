@@ -7,8 +7,10 @@
 #include "lancer/mesh/msh/huge_pages.hpp"
 #include "lancer/util/check.hpp"
 #include "lancer/util/input_error.hpp"
+#include "lancer/util/parallel_for.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -18,6 +20,10 @@ namespace {
 // A face is degenerate as the renderer will see it (float positions) when its area is zero up to
 // rounding: twice its area below 1e-12 times its longest edge squared. Both sides are compared
 // squared, in double: no square root, no division, once per face of a million-face load.
+// Items per chunk of the parallel passes: big enough that a thread start is noise beside its work.
+constexpr std::size_t kFaceGrain = 32768;
+constexpr std::size_t kNodeGrain = 32768;
+
 inline double maxOf(double a, double b) { return a > b ? a : b; }
 
 bool isDegenerateTriangle(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
@@ -52,6 +58,32 @@ void MshMeshAssembler::reserveFaces(std::size_t count) {
   adviseHugePages(faces_);
   adviseHugePages(facePhysical_);
   adviseHugePages(faceEntity_);
+}
+
+void MshMeshAssembler::adoptSurfaceMesh(std::span<const Vec3d> points, std::vector<MeshFace> faces,
+                                        std::vector<std::int32_t> physical,
+                                        std::vector<std::int32_t> entity) {
+  LANCER_DCHECK(faces_.size(), ==, std::size_t{0});
+  LANCER_DCHECK(nodes.size(), ==, std::size_t{0});
+  adoptedPoints_ = points;
+  LANCER_DCHECK(physical.size(), ==, faces.size());
+  LANCER_DCHECK(entity.size(), ==, faces.size());
+  faceEdgeMask_.resize(faces.size());
+  std::uint64_t quads = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const bool quad = faces[f].isQuad();
+    quads += quad;
+    faceEdgeMask_[f] = quad ? kAllEdges : std::uint8_t{0b111};
+  }
+  countByType_[2] += faces.size() - quads;
+  countByType_[3] += quads;
+  // Tags come in runs (faces of one group together): one set insertion per run.
+  for (std::size_t f = 0; f < physical.size(); ++f)
+    if (physical[f] != 0 && (f == 0 || physical[f] != physical[f - 1]))
+      physicalsSeen_.insert({2, physical[f]});
+  faces_ = std::move(faces);
+  facePhysical_ = std::move(physical);
+  faceEntity_ = std::move(entity);
 }
 
 void MshMeshAssembler::changeGroup(int dimension, std::int32_t physical, std::int32_t entity) {
@@ -347,19 +379,33 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   }
   appendVolumeBoundary(source);
 
-  // Keep the nodes that faces use, in file order, recentred on their bounding box as float. The
-  // passes over nodes are sequential; only the marking and the face pass below read at random.
-  const auto& coords = nodes.coords();
+  // Keep the nodes that faces use, in file order, recentred on their bounding box as float. Every
+  // pass runs on `threads_` threads in chunks fixed by the counts (util/parallel_for.hpp), so the
+  // mesh is the same bytes for any thread count; only the renumbering and compaction are serial.
+  const std::span<const Vec3d> coords =
+      adoptedPoints_.empty() ? std::span<const Vec3d>(nodes.coords()) : adoptedPoints_;
   std::vector<std::uint8_t> usedNode(coords.size(), 0);
-  for (const MeshFace& face : faces_)
-    for (int c = 0; c < face.cornerCount(); ++c) usedNode[face.vertex[c]] = 1;
+  parallelFor(faces_.size(), threads_, kFaceGrain, [&](std::size_t f) {
+    const MeshFace& face = faces_[f];
+    // Threads may mark one node together: they store the same byte.
+    for (int c = 0; c < face.cornerCount(); ++c)
+      std::atomic_ref<std::uint8_t>(usedNode[face.vertex[c]]).store(1, std::memory_order_relaxed);
+  });
+  const ChunkPlan nodeChunks(coords.size(), kNodeGrain);
+  std::vector<Aabbd> chunkBox(nodeChunks.chunks);
+  std::vector<std::uint32_t> chunkUsed(nodeChunks.chunks, 0);
+  parallelChunks(nodeChunks, threads_, [&](std::size_t k, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (!usedNode[i]) continue;
+      ++chunkUsed[k];
+      chunkBox[k].extend(coords[i]);
+    }
+  });
   Aabbd box;
   std::uint32_t usedCount = 0;
-  for (std::size_t i = 0; i < coords.size(); ++i) {
-    if (usedNode[i]) {
-      ++usedCount;
-      box.extend(coords[i]);
-    }
+  for (std::size_t k = 0; k < nodeChunks.chunks; ++k) {
+    usedCount += chunkUsed[k];
+    if (!chunkBox[k].empty()) box.extend(chunkBox[k]);
   }
   // Usually every node is used and indices stay as they are; otherwise faces are renumbered.
   const bool identity = usedCount == coords.size();
@@ -372,31 +418,42 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   }
   Mesh mesh;
   mesh.origin = box.empty() ? Vec3d{} : box.center();
-  mesh.positions.reserve(usedCount);
+  mesh.positions.resize(usedCount);
   adviseHugePages(mesh.positions);
-  for (std::size_t i = 0; i < coords.size(); ++i)
-    if (identity || usedNode[i]) mesh.positions.push_back(toFloat(coords[i] - mesh.origin));
+  parallelFor(coords.size(), threads_, kNodeGrain, [&](std::size_t i) {
+    if (identity || usedNode[i]) mesh.positions[identity ? i : remap[i]] = toFloat(coords[i] - mesh.origin);
+  });
 
-  // Drop the faces that are degenerate as the renderer will see them (isDegenerate above).
+  // Drop the faces that are degenerate as the renderer will see them (isDegenerate above): each
+  // chunk renumbers its faces and marks the degenerate ones, then one pass closes the gaps.
   const std::vector<Vec3>& positions = mesh.positions;
-  constexpr std::size_t kPrefetchDistance = 16;  // faces ahead: the position reads are random
-  std::size_t kept = 0;
-  for (std::size_t f = 0; f < faces_.size(); ++f) {
-    if (f + kPrefetchDistance < faces_.size()) {
-      const MeshFace& ahead = faces_[f + kPrefetchDistance];
-      for (int c = 0; c < 3; ++c)
-        __builtin_prefetch(identity ? static_cast<const void*>(&positions[ahead.vertex[c]])
-                                    : static_cast<const void*>(&remap[ahead.vertex[c]]));
+  const ChunkPlan faceChunks(faces_.size(), kFaceGrain);
+  std::vector<std::uint8_t> degenerate(faces_.size(), 0);
+  std::vector<std::size_t> chunkDropped(faceChunks.chunks, 0);
+  parallelChunks(faceChunks, threads_, [&](std::size_t k, std::size_t begin, std::size_t end) {
+    constexpr std::size_t kPrefetchDistance = 16;  // faces ahead: the position reads are random
+    for (std::size_t f = begin; f < end; ++f) {
+      if (f + kPrefetchDistance < end) {
+        const MeshFace& ahead = faces_[f + kPrefetchDistance];
+        for (int c = 0; c < 3; ++c)
+          __builtin_prefetch(identity ? static_cast<const void*>(&positions[ahead.vertex[c]])
+                                      : static_cast<const void*>(&remap[ahead.vertex[c]]));
+      }
+      MeshFace& face = faces_[f];
+      if (!identity)
+        for (int c = 0; c < face.cornerCount(); ++c) face.vertex[c] = remap[face.vertex[c]];
+      if (isDegenerate(positions.data(), face)) degenerate[f] = 1, ++chunkDropped[k];
     }
-    MeshFace face = faces_[f];
-    if (!identity)
-      for (int c = 0; c < face.cornerCount(); ++c) face.vertex[c] = remap[face.vertex[c]];
-    if (isDegenerate(positions.data(), face)) continue;
-    if (kept != f || !identity) {  // until the first drop, nothing moves
-      faces_[f] = face;
-      moveFace(kept, f);
+  });
+  std::size_t kept = faces_.size();
+  for (const std::size_t dropped : chunkDropped) kept -= dropped;
+  if (kept != faces_.size()) {
+    std::size_t next = 0;
+    for (std::size_t f = 0; f < faces_.size(); ++f) {
+      if (degenerate[f]) continue;
+      if (next != f) moveFace(next, f);
+      ++next;
     }
-    ++kept;
   }
   source.degenerateFacesDropped = faces_.size() - kept;
   truncateFaces(kept);

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <set>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -38,6 +39,8 @@ class MshMeshAssembler {
     if (trackElements_) elementAliases_.emplace_back(copy, kept);
   }
 
+  // Threads for finish()'s passes (0: every core); the mesh does not depend on it.
+  void setThreads(int threads) { threads_ = threads; }
   void reserveFaces(std::size_t count);
   // The physical and elementary tags of the elements that follow; dimension is the elements'.
   void setGroup(int dimension, std::int32_t physical, std::int32_t entity) {
@@ -60,6 +63,11 @@ class MshMeshAssembler {
         break;
     }
   }
+  // A surface mesh a caller made itself (lancer.Mesh from arrays: triangles and quads, corners
+  // checked, one physical and entity tag per face), taken whole instead of nodes and elements; the
+  // points are read in place (no copy), so they must outlive finish().
+  void adoptSurfaceMesh(std::span<const Vec3d> points, std::vector<MeshFace> faces,
+                        std::vector<std::int32_t> physical, std::vector<std::int32_t> entity);
   // Counts an element that is not read node by node (the caller skipped its nodes).
   void countElement(int type) { ++countByType_[static_cast<std::size_t>(type)]; }
 
@@ -135,6 +143,8 @@ class MshMeshAssembler {
   std::vector<std::uint32_t> volumeGroups_;  // the groups of volume elements (each run of one, once)
   std::set<std::pair<int, std::int32_t>> physicalsSeen_;  // (dimension, physical tag)
   std::array<std::uint64_t, kMaxMshElementType + 1> countByType_{};
+  int threads_ = 0;
+  std::span<const Vec3d> adoptedPoints_;  // adoptSurfaceMesh's points; else nodes.coords()
   int dimension_ = -1;
   std::int32_t physical_ = 0;
   std::int32_t entity_ = 0;

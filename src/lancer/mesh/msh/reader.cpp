@@ -304,7 +304,7 @@ void addDeclaredGroups(MshReadState& state, Mesh& mesh) {
   mesh.extraPhysicalGroups = std::move(state.extraGroups);
 }
 
-Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64_t fileBytes) {
+Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64_t fileBytes, int threads) {
   // Faces remember their element (8 bytes each) only when a $ElementData needs it. gmsh writes it
   // after $Elements, so the first read does not track, and meeting one reads the file again with
   // tracking: twice the load time for those files only, and no cost (not even a scan) for others.
@@ -317,6 +317,7 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64
       if (!foreign.empty()) cursor.failFile(foreign);
     }
     MshMeshAssembler assembler;
+    assembler.setThreads(threads);
     if (track) assembler.trackElements();
     MeshSourceInfo source;
     source.path = name;
@@ -333,17 +334,17 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64
 
 }  // namespace
 
-Mesh readMshFromMemory(std::span<const char> bytes, const std::string& nameForErrors) {
+Mesh readMshFromMemory(std::span<const char> bytes, const std::string& nameForErrors, int threads) {
   const Stopwatch stopwatch;
-  Mesh mesh = readBytes(bytes, nameForErrors, bytes.size());
+  Mesh mesh = readBytes(bytes, nameForErrors, bytes.size(), threads);
   mesh.source.loadSeconds = stopwatch.seconds();
   return mesh;
 }
 
-Mesh readMsh(const std::string& path) {
+Mesh readMsh(const std::string& path, int threads) {
   const Stopwatch stopwatch;
   const MappedFile file(path);
-  Mesh mesh = readBytes(file.bytes(), path, file.bytes().size());
+  Mesh mesh = readBytes(file.bytes(), path, file.bytes().size(), threads);
   mesh.source.loadSeconds = stopwatch.seconds();
   return mesh;
 }
