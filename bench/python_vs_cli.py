@@ -32,13 +32,15 @@ def best(function):
 mesh = lancer.read_msh(binary)
 points, faces, groups, names = mesh.points, mesh.faces, mesh.groups, mesh.group_names
 print(f"mesh: {len(faces)} faces, {len(points)} points")
-convert = best(lambda: lancer.Mesh(points, faces, groups, names))
-read_binary = best(lambda: lancer.read_msh(binary))
-print(f"Mesh(points, faces, groups) {convert:7.3f} s")
-print(f"read_msh, MSH 4.1 binary    {read_binary:7.3f} s   arrays / reader: {convert / read_binary:.2f}")
-if ascii_path:
-    read_ascii = best(lambda: lancer.read_msh(ascii_path))
-    print(f"read_msh, MSH 4.1 ASCII     {read_ascii:7.3f} s   arrays / reader: {convert / read_ascii:.2f}")
+for threads in (1, 0):  # one thread, then every core (the assembly after the parse is parallel)
+    label = "1 thread" if threads == 1 else "all cores"
+    convert = best(lambda: lancer.Mesh(points, faces, groups, names, threads=threads))
+    read_binary = best(lambda: lancer.read_msh(binary, threads=threads))
+    print(f"[{label}] Mesh(points, faces, groups) {convert:7.3f} s")
+    print(f"[{label}] read_msh, MSH 4.1 binary    {read_binary:7.3f} s   arrays / reader: {convert / read_binary:.2f}")
+    if ascii_path:
+        read_ascii = best(lambda: lancer.read_msh(ascii_path, threads=threads))
+        print(f"[{label}] read_msh, MSH 4.1 ASCII     {read_ascii:7.3f} s   arrays / reader: {convert / read_ascii:.2f}")
 
 with tempfile.TemporaryDirectory() as folder:
     out = os.path.join(folder, "x.png")

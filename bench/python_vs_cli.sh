@@ -13,7 +13,7 @@ if [[ ! -f $mesh ]]; then
   echo "making $mesh (a few minutes of gmsh meshing)..."
   gmsh bench/geo/bracket_1m.geo -2 -format msh41 -bin -o "$mesh" >/dev/null
 fi
-ascii=bench/data/bracket_1m.msh  # the same mesh as ASCII, for the reader's other speed
+ascii=bench/data/bracket_1m_ascii.msh  # the same mesh as ASCII, for the reader's other speed
 if [[ ! -f $ascii ]] && command -v gmsh >/dev/null; then
   gmsh "$mesh" -save -format msh41 -setnumber Mesh.Binary 0 -o "$ascii" >/dev/null
 fi

@@ -226,6 +226,7 @@ int runRender(const RenderCommandOptions& options) {
                  stats.samplesPerPixel, prepared.loadSeconds, prepared.buildSeconds, stats.seconds,
                  stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, total);
   }
+  if (options.overrides.timings) std::fprintf(stderr, "%s\n", formatStageTimes(prepared.stages).c_str());
   return kExitOk;
 }
 

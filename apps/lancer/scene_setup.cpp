@@ -111,6 +111,9 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
                   "MESH.msh.opt)")
       ->expected(0, 1);
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
+  command.add_flag("--timings", overrides.timings,
+                   "Print where the time before the first ray went: read, orient (shells, orientation, "
+                   "nesting), normals, scene, kd build");
 }
 
 PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides,
@@ -124,9 +127,12 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
                        fmt::format("'{}' is not an axis: use x, y, z, -x, -y or -z", overrides.up));
   }
   SceneDescription description;
+  StageTimes stages;
   std::vector<Mesh> preloaded;
   if (isMeshFile(input)) {
+    const Stopwatch read;
     preloaded.push_back(readMsh(input, overrides.threads));
+    stages.add("read", read.seconds());
     if (const std::string reason = nothingToDrawReason(preloaded.front()); !reason.empty())
       throw InputError(SourceLocation{input}, "nothing to draw: " + reason);
     description = quickLookScene(input, preloaded.front(), up);
@@ -155,8 +161,8 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
   applyRenderOverrides(description, applied, preloaded.empty() ? nullptr : &preloaded.front());
   requireImageMemory(description.render, overrides.threads,
                      imageBuffer ? imageBuffer(description.render) : ImageBuffer::Whole, input);
-  Scene scene = preloaded.empty() ? buildScene(description, overrides.threads)
-                                  : buildScene(description, std::move(preloaded), overrides.threads);
+  Scene scene = preloaded.empty() ? buildScene(description, overrides.threads, &stages)
+                                  : buildScene(description, std::move(preloaded), overrides.threads, &stages);
   if (!overrides.quiet)
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
   const double loadSeconds = load.seconds();
@@ -165,8 +171,17 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
   buildOptions.threads = overrides.threads;  // --threads bounds the build too, not only the trace
   Accelerator accelerator = Accelerator::build(scene.geometry.positions, scene.geometry.faces,
                                                parseAccelKind(overrides.accel), buildOptions);
+  const double buildSeconds = build.seconds();
+  stages.add("kd build", buildSeconds);
   return PreparedScene{std::move(description), std::move(scene), std::move(accelerator), loadSeconds,
-                       build.seconds()};
+                       buildSeconds,           std::move(stages)};
+}
+
+std::string formatStageTimes(const StageTimes& stages) {
+  std::string line = "timings:";
+  for (const StageTimes::Stage& stage : stages.stages)
+    line += fmt::format("{} {} {:.3f} s", line.size() > 8 ? "," : "", stage.name, stage.seconds);
+  return line;
 }
 
 const std::atomic<bool>& installInterruptHandler() {

@@ -29,6 +29,7 @@ struct SceneOverrides {
   // --gmsh-view [FILE]: the camera of a gmsh options file; "" for the mesh's own MESH.msh.opt.
   std::optional<std::string> gmshView;
   bool quiet = false;
+  bool timings = false;  // --timings: the preparation's stages on stderr
 };
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides);
@@ -39,7 +40,11 @@ struct PreparedScene {
   Accelerator accelerator;
   double loadSeconds = 0;
   double buildSeconds = 0;
+  StageTimes stages;  // read, orient, normals, scene, kd build: where loadSeconds + buildSeconds went
 };
+
+// "timings: read 0.052 s, orient 0.081 s, ..." (--timings).
+std::string formatStageTimes(const StageTimes& stages);
 
 // How a command holds the image while it renders: whole (animation frames, GIF) or as the few bands
 // of rows that renderBands keeps (a still PNG, BMP or PPM streamed to its file).

@@ -14,6 +14,7 @@
 #include "lancer/scene/clip_planes.hpp"
 #include "lancer/scene/face_clip_sets.hpp"
 #include "lancer/scene/scene_description.hpp"
+#include "lancer/util/stage_times.hpp"
 
 namespace lancer {
 
@@ -112,8 +113,10 @@ struct Scene {
 
 // Reads every mesh of the description (errors point at the [[mesh]] entry or into the mesh file).
 // The preparation runs on `threads` threads (0: every core), with the same result for any number.
-Scene buildScene(const SceneDescription& description, int threads = 0);
+// `times`, when given, gets the stages' wall seconds (read, orient, normals, scene).
+Scene buildScene(const SceneDescription& description, int threads = 0, StageTimes* times = nullptr);
 // Same, with the meshes already read: meshes[i] belongs to description.meshes[i].
-Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads = 0);
+Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads = 0,
+                 StageTimes* times = nullptr);
 
 }  // namespace lancer

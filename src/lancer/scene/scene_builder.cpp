@@ -21,6 +21,7 @@
 #include "lancer/scene/scene.hpp"
 #include "lancer/util/check.hpp"
 #include "lancer/util/parallel_for.hpp"
+#include "lancer/util/stopwatch.hpp"
 
 namespace lancer {
 namespace {
@@ -123,7 +124,8 @@ struct PlacedMesh {
 };
 
 PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTransform& transform,
-                     const Vec3d& origin, int threads) {
+                     const Vec3d& origin, int threads, StageTimes& times) {
+  const Stopwatch orient;
   PlacedMesh placed;
   placed.positions.resize(mesh.positions.size());
   parallelFor(placed.positions.size(), threads, kFacesPerChunk, [&](std::size_t v) {
@@ -146,8 +148,11 @@ PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTra
     std::swap(mesh.facePhysicalTag[f], mesh.volumeSides.outerPhysicalTag[f]);
     std::swap(mesh.faceEntityTag[f], mesh.volumeSides.outerEntityTag[f]);
   }
+  times.add("orient", orient.seconds());  // shells, orientation, nesting, interfaces
+  const Stopwatch normals;
   placed.normals = computeCornerNormals(placed.positions, mesh.faces, mesh.facePhysicalTag,
                                         instance.smoothAngleDegrees, threads);
+  times.add("normals", normals.seconds());
   return placed;
 }
 
@@ -319,15 +324,22 @@ ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const SceneGeometry& g
 
 }  // namespace
 
-Scene buildScene(const SceneDescription& description, int threads) {
+Scene buildScene(const SceneDescription& description, int threads, StageTimes* times) {
+  const Stopwatch read;
   std::vector<Mesh> meshes;
   meshes.reserve(description.meshes.size());
   for (const MeshInstance& instance : description.meshes)
     meshes.push_back(readInstanceMesh(instance, threads));
-  return buildScene(description, std::move(meshes), threads);
+  if (times) times->add("read", read.seconds());
+  return buildScene(description, std::move(meshes), threads, times);
 }
 
-Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads) {
+Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads,
+                 StageTimes* timesOrNull) {
+  const Stopwatch whole;
+  StageTimes unused;
+  StageTimes& times = timesOrNull ? *timesOrNull : unused;
+  const double secondsBefore = times.totalSeconds();
   Scene scene;
   SceneGeometry& geometry = scene.geometry;
   SceneAppearance& appearance = scene.appearance;
@@ -353,7 +365,7 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, 
     Mesh& mesh = meshes[i];
     scene.warnings.insert(scene.warnings.end(), mesh.source.warnings.begin(), mesh.source.warnings.end());
     const auto groupMaterials = resolveGroupMaterials(instance, mesh);
-    const PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin, threads);
+    const PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin, threads, times);
     std::optional<FieldColoring> coloring;
     if (instance.colorBy) coloring = resolveColorBy(*instance.colorBy, mesh);
 
@@ -388,6 +400,8 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, 
   }
   for (const PointLight& light : description.lights)
     appearance.lights.push_back({geometry.toSceneSpace(light.position), light.intensity, light.attenuation});
+  // "scene": the rest of this call (placing, gathering geometry, materials, edges, fields, clips).
+  times.add("scene", whole.seconds() - (times.totalSeconds() - secondsBefore));
   return scene;
 }
 
