@@ -149,17 +149,21 @@ bool sameBits(const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
+const PrimaryAhead::Shadow* PrimaryAhead::shadowFrom(std::size_t light, const Vec3& origin) const {
+  if (light >= kPacketLights || (shadowsKnown >> light & 1u) == 0) return nullptr;
+  return sameBits(shadow[light].from, origin) ? &shadow[light] : nullptr;
+}
+
 Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, TraceCounters& counters,
                                const PrimaryAhead::Shadow* ahead) const {
-  // The first query traced ahead from this very origin (tracePrimaries) is taken as it is.
-  if (ahead != nullptr && !(ahead->known && sameBits(ahead->from, from))) ahead = nullptr;
   if (!anyTransparent_) {
     ++counters.rays;
+    // Traced ahead from this very origin (tracePrimaries): the query was made, and answered.
+    if (ahead != nullptr) return ahead->answer ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
     Ray ray;
     float tMin, tMax;
     if (!shadowQuery(from, lightPosition, ray, tMin, tMax)) return {1, 1, 1};
-    const bool isBlocked = ahead != nullptr ? ahead->answer : blocked(ray, tMin, tMax);
-    return isBlocked ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
+    return blocked(ray, tMin, tMax) ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
   }
   Vec3 transmission{1, 1, 1};
   Vec3 origin = from;
@@ -228,7 +232,7 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
         offsetRayOrigin(surface.position, surface.positionError, surface.geometricNormal);
     color +=
         contribution * lightTransmission(shadowOrigin, light.position, counters,
-                                         ahead != nullptr && l < kPacketLights ? &ahead->shadow[l] : nullptr);
+                                         ahead != nullptr ? ahead->shadowFrom(l, shadowOrigin) : nullptr);
   }
   return color;
 }
@@ -250,7 +254,7 @@ Vec3 Tracer::shadeShadowCatcher(const Vec3& point, TraceCounters& counters, floa
     lit += irradiance;
     shadowed +=
         irradiance * lightTransmission(shadowOrigin, light.position, counters,
-                                       ahead != nullptr && l < kPacketLights ? &ahead->shadow[l] : nullptr);
+                                       ahead != nullptr ? ahead->shadowFrom(l, shadowOrigin) : nullptr);
   }
   auto ratio = [](float s, float l) { return l > 0.0f ? std::clamp(s / l, 0.0f, 1.0f) : 1.0f; };
   const Vec3 kept{ratio(shadowed.x, lit.x), ratio(shadowed.y, lit.y), ratio(shadowed.z, lit.z)};
@@ -393,8 +397,9 @@ Vec3 Tracer::shadeSurface(const Ray& ray, const Hit& hit, float distance, int de
   auto withEdge = [&](const Vec3& color) {
     return edge > 0.0f ? color * (1.0f - edge) + edgeColor * edge : color;
   };
-  const SurfacePoint surface =
-      ahead != nullptr && ahead->surfaceKnown ? ahead->surface : makeSurfacePoint(scene_, ray, hit);
+  SurfacePoint made;
+  if (ahead == nullptr || !ahead->surfaceKnown) made = makeSurfacePoint(scene_, ray, hit);
+  const SurfacePoint& surface = ahead != nullptr && ahead->surfaceKnown ? ahead->surface : made;
   // Closed shells and volumes face out of their material, so the side hit says whether the ray enters.
   const MediumCrossing media = crossingAt(hit.face, surface.normalSign > 0.0f);
   const Material& material = scene_.appearance.materials[media.shown];

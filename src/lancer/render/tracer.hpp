@@ -57,15 +57,19 @@ inline constexpr int kPacketLights = 8;
 struct PrimaryAhead {
   bool hitKnown = false;  // `hit`/`firstHit` answer the ray's first closest-hit query
   bool hit = false;
+  bool surfaceKnown = false;       // `surface` is makeSurfacePoint of the ray and firstHit
+  std::uint32_t shadowsKnown = 0;  // bit l: shadow[l] holds the first shadow query towards light l
   Hit firstHit;
-  bool surfaceKnown = false;  // `surface` is makeSurfacePoint of the ray and firstHit
   SurfacePoint surface;
+  // Left uninitialised (a packet's worth is made per sample): only those of shadowsKnown are read.
   struct Shadow {
-    bool known = false;
-    Vec3 from;            // the origin the query was traced from
-    bool answer = false;  // blocked (opaque scenes), or the closest-hit query hit (`hit`)
+    Vec3 from;    // the origin the query was traced from
+    bool answer;  // blocked (opaque scenes), or the closest-hit query hit (`hit`)
     Hit hit;
   } shadow[kPacketLights];
+
+  // The answer traced ahead towards light `light` from `origin`, or nullptr.
+  const Shadow* shadowFrom(std::size_t light, const Vec3& origin) const;
 };
 
 class Tracer {

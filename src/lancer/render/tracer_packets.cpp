@@ -69,9 +69,9 @@ void Tracer::traceAhead(std::span<const Ray, kPacketSize> rays, std::uint32_t ac
     }
   }
   const std::size_t lightCount = std::min<std::size_t>(scene_.appearance.lights.size(), kPacketLights);
+  RayPacket shadow;
   for (std::size_t l = 0; l < lightCount; ++l) {
     const Vec3& lightPosition = scene_.appearance.lights[l].position;
-    RayPacket shadow;
     std::uint32_t traced = 0;
     for (std::uint32_t lanes = onSurface | onCatcher; lanes != 0; lanes &= lanes - 1) {
       const int i = std::countr_zero(lanes);
@@ -94,7 +94,7 @@ void Tracer::traceAhead(std::span<const Ray, kPacketSize> rays, std::uint32_t ac
     for (std::uint32_t lanes = traced; lanes != 0; lanes &= lanes - 1) {
       const int i = std::countr_zero(lanes);
       PrimaryAhead::Shadow& answer = ahead[i].shadow[l];
-      answer.known = true;
+      ahead[i].shadowsKnown |= 1u << l;
       answer.from = from[i];
       answer.answer = (answered >> i & 1u) != 0;
       if (anyTransparent_ && answer.answer) answer.hit = hits[i];

@@ -149,53 +149,75 @@ inline TriangleHit finishLane(const ShearedCorners& c, const PacketFrame& f, int
                                     c.cz[i], f.shearZ[i], tMin, tMax);
 }
 
-// Sets up the frame of the lanes `active` whose rays meet the scene box (returned), with each
-// lane's interval in the box; false when the rays run different ways along some axis.
+// |x| per lane (std::abs).
+inline __m256 absolute(__m256 x) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), x); }
+
+// Sets up the frame of the lanes `active`, keeping in `active` those whose rays meet the scene box,
+// with each one's interval in the box: the single-ray walk's set-up (intersectAabb and the bands)
+// lane by lane. False when the rays run different ways along some axis.
 bool setUpFrame(const RayPacket& packet, std::uint32_t& active, const Aabb& bounds, float magnitude,
                 PacketFrame& f, __m256& tEnter, __m256& tExit) {
-  alignas(32) float lane[20][kPacketSize] = {};
-  alignas(32) int axes[3][kPacketSize] = {};
-  alignas(32) float enter[kPacketSize] = {}, exit[kPacketSize] = {};
-  std::uint32_t right[3] = {0, 0, 0}, inBox = 0;
-  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
-    const int i = std::countr_zero(lanes);
-    const Ray& ray = packet.ray[i];
-    float tIn, tOut;
-    if (!intersectAabb(bounds, ray, packet.tMin[i], packet.tMax[i], tIn, tOut)) continue;
-    inBox |= 1u << i;
-    enter[i] = tIn;
-    exit[i] = tOut;
-    lane[18][i] = kSlack * std::max(std::abs(tIn), std::abs(tOut));
-    const float origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
-    const float invDirection[3] = {ray.invDirection.x, ray.invDirection.y, ray.invDirection.z};
-    const float band = kPlaneSlack * std::max(magnitude, maxComponent(abs(ray.origin)));
-    for (int a = 0; a < 3; ++a) {
-      const float signedBand = invDirection[a] < 0.0f ? -band : band;
-      lane[a][i] = origin[a];
-      lane[3 + a][i] = invDirection[a];
-      lane[6 + a][i] = origin[a] + signedBand;
-      lane[9 + a][i] = origin[a] - signedBand;
-      right[a] |= invDirection[a] < 0.0f ? 1u << i : 0u;
+  alignas(32) float lane[10][kPacketSize];
+  alignas(32) int axes[3][kPacketSize];
+  for (int i = 0; i < kPacketSize; ++i) {
+    if ((active >> i & 1u) == 0) {
+      for (float* row : lane) row[i] = 0.0f;
+      axes[0][i] = axes[1][i] = axes[2][i] = 0;
+      f.shearZ[i] = 0.0f;
+      continue;
     }
-    lane[12][i] = ray.shearX;
-    lane[13][i] = ray.shearY;
+    const Ray& ray = packet.ray[i];
+    lane[0][i] = ray.origin.x;
+    lane[1][i] = ray.origin.y;
+    lane[2][i] = ray.origin.z;
+    lane[3][i] = ray.invDirection.x;
+    lane[4][i] = ray.invDirection.y;
+    lane[5][i] = ray.invDirection.z;
+    lane[6][i] = ray.shearX;
+    lane[7][i] = ray.shearY;
+    lane[8][i] = packet.tMin[i];
+    lane[9][i] = packet.tMax[i];
     f.shearZ[i] = ray.shearZ;
     axes[0][i] = ray.kx;
     axes[1][i] = ray.ky;
     axes[2][i] = ray.kz;
   }
-  active = inBox;
   for (int a = 0; a < 3; ++a) {
-    if (right[a] != 0 && right[a] != inBox) return false;
-    f.firstIsRight[a] = right[a] != 0 ? 1u : 0u;
     f.origin[a] = _mm256_load_ps(lane[a]);
     f.invDirection[a] = _mm256_load_ps(lane[3 + a]);
-    f.nearEdge[a] = _mm256_load_ps(lane[6 + a]);
-    f.farEdge[a] = _mm256_load_ps(lane[9 + a]);
   }
-  f.shearX = _mm256_load_ps(lane[12]);
-  f.shearY = _mm256_load_ps(lane[13]);
-  f.eps = _mm256_load_ps(lane[18]);
+  // intersectAabb, lane by lane (NaN from 0 * inf leaves the span as it is).
+  const float lower[3] = {bounds.lower.x, bounds.lower.y, bounds.lower.z};
+  const float upper[3] = {bounds.upper.x, bounds.upper.y, bounds.upper.z};
+  __m256 tIn = _mm256_load_ps(lane[8]), tOut = _mm256_load_ps(lane[9]);
+  for (int a = 0; a < 3; ++a) {
+    const __m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(lower[a]), f.origin[a]), f.invDirection[a]);
+    const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(upper[a]), f.origin[a]), f.invDirection[a]);
+    const __m256 swap = _mm256_cmp_ps(t0, t1, _CMP_GT_OQ);
+    const __m256 near = _mm256_blendv_ps(t0, t1, swap), far = _mm256_blendv_ps(t1, t0, swap);
+    tIn = _mm256_blendv_ps(tIn, near, _mm256_cmp_ps(near, tIn, _CMP_GT_OQ));
+    tOut = _mm256_blendv_ps(tOut, far, _mm256_cmp_ps(far, tOut, _CMP_LT_OQ));
+  }
+  active &= laneMask(_mm256_cmp_ps(tIn, tOut, _CMP_LE_OQ));
+  const __m256 zero = _mm256_setzero_ps();
+  const __m256 band = _mm256_mul_ps(
+      _mm256_set1_ps(kPlaneSlack),
+      _mm256_max_ps(
+          _mm256_set1_ps(magnitude),
+          _mm256_max_ps(_mm256_max_ps(absolute(f.origin[0]), absolute(f.origin[1])), absolute(f.origin[2]))));
+  for (int a = 0; a < 3; ++a) {
+    const __m256 towardsMinus = _mm256_cmp_ps(f.invDirection[a], zero, _CMP_LT_OQ);
+    const std::uint32_t right = laneMask(towardsMinus) & active;
+    if (right != 0 && right != active) return false;
+    f.firstIsRight[a] = right != 0 ? 1u : 0u;
+    const __m256 signedBand =
+        _mm256_blendv_ps(band, _mm256_xor_ps(band, _mm256_set1_ps(-0.0f)), towardsMinus);
+    f.nearEdge[a] = _mm256_add_ps(f.origin[a], signedBand);
+    f.farEdge[a] = _mm256_sub_ps(f.origin[a], signedBand);
+  }
+  f.eps = _mm256_mul_ps(_mm256_set1_ps(kSlack), _mm256_max_ps(absolute(tIn), absolute(tOut)));
+  f.shearX = _mm256_load_ps(lane[6]);
+  f.shearY = _mm256_load_ps(lane[7]);
   auto isAxis = [&](int which, int axis) {
     const __m256i values = _mm256_load_si256(reinterpret_cast<const __m256i*>(axes[which]));
     return _mm256_castsi256_ps(_mm256_cmpeq_epi32(values, _mm256_set1_epi32(axis)));
@@ -206,8 +228,8 @@ bool setUpFrame(const RayPacket& packet, std::uint32_t& active, const Aabb& boun
   f.kyIs1 = isAxis(1, 1);
   f.kzIs0 = isAxis(2, 0);
   f.kzIs1 = isAxis(2, 1);
-  tEnter = _mm256_load_ps(enter);
-  tExit = _mm256_load_ps(exit);
+  tEnter = tIn;
+  tExit = tOut;
   return true;
 }
 
