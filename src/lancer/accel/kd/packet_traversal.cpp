@@ -240,9 +240,65 @@ struct alignas(32) PacketStackEntry {
   std::uint32_t node, lanes, direct;
 };
 
+inline float laneOf(__m256 v, int lane) {
+  alignas(32) float values[kPacketSize];
+  _mm256_store_ps(values, v);
+  return values[lane];
+}
+
+// The rest of a subtree for the one lane left in it: the single-ray walk's steps (traversal.cpp),
+// in scalar, from `node` with the lane's interval; testLeaf(leaf, lanes) tests a leaf's triangles.
+// Returns whether the lane is done (any-hit: blocked).
+template <typename Query, typename TestLeaf>
+bool walkLane(const KdNode* base, const KdNode* node, const PacketFrame& f, int lane, float tEnter,
+              float tExit, const Query& query, TestLeaf& testLeaf) {
+  float nearEdge[3], farEdge[3], invDirection[3];
+  for (int a = 0; a < 3; ++a) {
+    nearEdge[a] = laneOf(f.nearEdge[a], lane);
+    farEdge[a] = laneOf(f.farEdge[a], lane);
+    invDirection[a] = laneOf(f.invDirection[a], lane);
+  }
+  const float eps = laneOf(f.eps, lane);
+  const std::uint32_t bit = 1u << lane;
+  struct Entry {
+    std::uint32_t node;
+    float tEnter, tExit;
+  } stack[KdTree::kMaxDepth + 2];
+  int top = 0;
+  while (true) {
+    while (!node->isLeaf()) {
+      const int axis = node->axis();
+      const float split = node->split();
+      const float tNear = (split - nearEdge[axis]) * invDirection[axis];
+      const float tFar = (split - farEdge[axis]) * invDirection[axis];
+      const KdNode* first = base + node->firstChild() + f.firstIsRight[axis];
+      const KdNode* second = base + node->firstChild() + (f.firstIsRight[axis] ^ 1u);
+      if (tNear > tExit + eps) {
+        node = first;
+      } else if (tFar < tEnter - eps) {
+        node = second;
+      } else {
+        stack[top++] = {static_cast<std::uint32_t>(second - base), tNear > tEnter ? tNear : tEnter, tExit};
+        if (!second->isLeaf()) __builtin_prefetch(base + second->firstChild());
+        node = first;
+        tExit = tFar < tExit ? tFar : tExit;
+      }
+    }
+    if (testLeaf(node, bit) != 0) return true;
+    do {
+      if (top == 0) return false;
+      --top;
+      node = base + stack[top].node;
+      tEnter = stack[top].tEnter;
+      tExit = stack[top].tExit;
+    } while (tEnter > query.laneBound(lane) + eps);
+  }
+}
+
 // Walks the tree with the lanes `active`; Query::test(tri, lanes) tests a triangle on some lanes
 // and returns those that are done (any-hit: blocked), Query::bound() is each lane's pruning
-// distance. Returns the lanes that are done.
+// distance. A lane left alone in a subtree finishes it on its own (walkLane). Returns the lanes
+// that are done.
 template <typename Query>
 std::uint32_t walkPacket(std::span<const KdNode> layout, const PacketFrame& f, std::uint32_t active,
                          __m256 tEnter, __m256 tExit, Query& query) {
@@ -255,8 +311,43 @@ std::uint32_t walkPacket(std::span<const KdNode> layout, const PacketFrame& f, s
   std::uint32_t lanes = active;
   const KdNode* base = layout.data();
   const KdNode* node = base;
+  // Tests a leaf's triangles on `lanes`; returns the lanes that are done.
+  auto testLeaf = [&](const KdNode* leaf, std::uint32_t testLanes) {
+    const std::uint32_t count = leaf->triangleCount();
+    const std::uint32_t* index =
+        count == 1 ? &leaf->payload : reinterpret_cast<const std::uint32_t*>(base + leaf->payload);
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const char* tri = reinterpret_cast<const char*>(base + index[i]);
+      __builtin_prefetch(tri);
+      __builtin_prefetch(tri + sizeof(PackedTriangle) - 1);
+    }
+    std::uint32_t finishedLanes = 0;
+    for (std::uint32_t i = 0; i < count && testLanes != 0; ++i) {
+      const std::uint32_t triangle = index[i];
+      // One mailbox for the packet, remembering which lanes tested each triangle.
+      MailboxSlot& slot = mailbox[triangle & (kMailboxSize - 1)];
+      std::uint32_t untested = testLanes;
+      if (slot.triangle == triangle) {
+        untested &= ~slot.lanes;
+        slot.lanes |= testLanes;
+      } else {
+        slot = {triangle, testLanes};
+      }
+      if (untested == 0) continue;
+      const std::uint32_t finished =
+          query.test(*reinterpret_cast<const PackedTriangle*>(base + triangle), untested);
+      finishedLanes |= finished;
+      testLanes &= ~finished;
+    }
+    return finishedLanes;
+  };
   while (true) {
+    bool alone = false;
     while (!node->isLeaf()) {
+      if ((lanes & (lanes - 1)) == 0) {
+        alone = true;
+        break;
+      }
       const int axis = node->axis();
       const __m256 split = _mm256_set1_ps(node->split());
       const __m256 tNear = _mm256_mul_ps(_mm256_sub_ps(split, f.nearEdge[axis]), f.invDirection[axis]);
@@ -289,33 +380,18 @@ std::uint32_t walkPacket(std::span<const KdNode> layout, const PacketFrame& f, s
       tExit = firstExit;
       lanes = firstLanes;
     }
-    const std::uint32_t count = node->triangleCount();
-    const std::uint32_t* index =
-        count == 1 ? &node->payload : reinterpret_cast<const std::uint32_t*>(base + node->payload);
-    for (std::uint32_t i = 0; i < count; ++i) {
-      const char* tri = reinterpret_cast<const char*>(base + index[i]);
-      __builtin_prefetch(tri);
-      __builtin_prefetch(tri + sizeof(PackedTriangle) - 1);
+    std::uint32_t finished;
+    if (alone) {
+      const int lane = std::countr_zero(lanes);
+      finished = walkLane(base, node, f, lane, laneOf(tEnter, lane), laneOf(tExit, lane), query, testLeaf)
+                     ? lanes
+                     : 0u;
+    } else {
+      finished = testLeaf(node, lanes);
     }
-    for (std::uint32_t i = 0; i < count && lanes != 0; ++i) {
-      const std::uint32_t triangle = index[i];
-      // One mailbox for the packet, remembering which lanes tested each triangle.
-      MailboxSlot& slot = mailbox[triangle & (kMailboxSize - 1)];
-      std::uint32_t untested = lanes;
-      if (slot.triangle == triangle) {
-        untested &= ~slot.lanes;
-        slot.lanes |= lanes;
-      } else {
-        slot = {triangle, lanes};
-      }
-      if (untested == 0) continue;
-      const std::uint32_t finished =
-          query.test(*reinterpret_cast<const PackedTriangle*>(base + triangle), untested);
-      if (finished != 0) {
-        done |= finished;
-        lanes &= ~finished;
-        if ((active & ~done) == 0) return done;
-      }
+    if (finished != 0) {
+      done |= finished;
+      if ((active & ~done) == 0) return done;
     }
     do {
       if (top == 0) return done;
@@ -352,6 +428,7 @@ struct PacketClosestHit {
     return 0;
   }
   __m256 bound() const { return _mm256_load_ps(bestT); }
+  float laneBound(int lane) const { return bestT[lane]; }
 };
 
 template <typename Filter>
@@ -372,6 +449,7 @@ struct PacketAnyHit {
     return blocked;
   }
   __m256 bound() const { return _mm256_load_ps(tMax); }
+  float laneBound(int lane) const { return tMax[lane]; }
 };
 
 #endif  // LANCER_PACKETS_AVX2
