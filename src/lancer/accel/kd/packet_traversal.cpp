@@ -518,7 +518,7 @@ std::uint32_t KdTree::anyHits(const RayPacket& packet, std::uint32_t active, con
   }
   if (inBox == 0) return blocked;
   PacketAnyHit<Filter> query{packet, frame, keeps, {}};
-  for (int i = 0; i < kPacketSize; ++i) query.tMax[i] = packet.tMax[i];
+  for (int i = 0; i < kPacketSize; ++i) query.tMax[i] = (inBox >> i & 1u) != 0 ? packet.tMax[i] : 0.0f;
   return blocked | walkPacket(layout_, frame, inBox, tEnter, tExit, query);
 #else
   return anyHitsOneByOne(*this, packet, active, keeps);
