@@ -1,10 +1,12 @@
 // What the accelerator benchmarks share: the gmsh meshes they load, the ray sets compared with Embree
 // (1024x1024 pinhole primary rays framing the mesh, shadow rays to one light, incoherent rays in
-// the bounding box) and a runner that traces a ray set on N threads in chunks, like the renderer.
+// the bounding box) and a runner that traces a ray set on N threads in chunks, like the renderer,
+// ray by ray or in packets of eight.
 #pragma once
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -17,6 +19,7 @@
 #include <vector>
 
 #include "lancer/accel/kd_tree.hpp"
+#include "lancer/accel/ray_packet.hpp"
 #include "lancer/math/ray.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 
@@ -220,6 +223,90 @@ void traceBenchmark(benchmark::State& state, const RaySet& set, int threads, Que
     state.counters["tests_per_ray"] = double(c.triangleTests) / double(c.rays);
   }
 #endif
+}
+
+// A ray set in packets of eight, in the set's order: the primary set's rows of 8 pixels of a tile,
+// shadow rays from 8 neighbouring hits; the last packet may be partial.
+struct PacketSet {
+  std::vector<RayPacket> packets;
+  std::vector<std::uint32_t> active;  // lane mask per packet
+  std::size_t rays = 0;
+  bool anyHit = false;
+};
+
+inline PacketSet packetsOf(const RaySet& set) {
+  PacketSet packets;
+  packets.anyHit = set.anyHit;
+  packets.rays = set.rays.size();
+  for (std::size_t first = 0; first < set.rays.size(); first += kPacketSize) {
+    RayPacket& packet = packets.packets.emplace_back();
+    std::uint32_t active = 0;
+    for (std::size_t i = 0; i < kPacketSize && first + i < set.rays.size(); ++i) {
+      packet.ray[i] = set.rays[first + i];
+      packet.tMin[i] = set.tMin;
+      packet.tMax[i] = set.tMax[first + i];
+      active |= 1u << i;
+    }
+    packets.active.push_back(active);
+  }
+  return packets;
+}
+
+// Traces `set` with `query(packet, active) -> lanes hit` on `threads` threads (chunks of 4096
+// packets); reports Mrays/s and the hit fraction, as traceBenchmark.
+template <typename Query>
+void tracePacketBenchmark(benchmark::State& state, const PacketSet& set, int threads, Query&& query) {
+  double seconds = 0;
+  std::atomic<std::uint64_t> hits{0};
+  for (auto _ : state) {
+    hits = 0;
+    const double s = runChunked(set.packets.size(), threads, [&](std::size_t begin, std::size_t end) {
+      std::uint64_t local = 0;
+      for (std::size_t i = begin; i < end; ++i)
+        local += static_cast<std::uint64_t>(std::popcount(query(set.packets[i], set.active[i])));
+      hits += local;
+    });
+    state.SetIterationTime(s);
+    seconds += s;
+  }
+  const double rays = double(set.rays) * double(state.iterations());
+  state.counters["Mrays_per_s"] = rays / seconds * 1e-6;
+  state.counters["hit_fraction"] = double(hits) / double(set.rays);
+  state.counters["rays"] = double(set.rays);
+}
+
+// The packet rows: `name`'s query on each ray set in packets, as "packet/<name>/<mesh>/<rays>/threads:N".
+template <typename MakeQuery>
+void registerPacketRows(const std::string& name, const std::string& mesh, MakeQuery makeQuery) {
+  static std::map<std::string, std::shared_ptr<PacketSet>> sets;  // by mesh and ray kind
+  for (const char* rayKind : kRayKinds) {
+    for (int threads : {1, 2}) {
+      const std::string rk = rayKind;
+      benchmark::RegisterBenchmark(
+          ("packet/" + name + "/" + mesh + "/" + rk + "/threads:" + std::to_string(threads)).c_str(),
+          [=](benchmark::State& state) {
+            MeshContext& ctx = meshContext(mesh);
+            std::shared_ptr<PacketSet>& set = sets[mesh + "/" + rk];
+            if (!set) set = std::make_shared<PacketSet>(packetsOf(ctx.rays(rk)));
+            tracePacketBenchmark(state, *set, threads, makeQuery(ctx, set->anyHit));
+          })
+          ->UseManualTime()
+          ->Iterations(1)
+          ->Repetitions(3)
+          ->Unit(benchmark::kMillisecond);
+    }
+  }
+}
+
+inline void registerLancerPackets(const std::string& kind, const std::string& mesh) {
+  registerPacketRows(kind, mesh, [kind](MeshContext& ctx, bool anyHit) {
+    const KdTree* tree = &ctx.tree(kind);
+    return [tree, anyHit](const RayPacket& packet, std::uint32_t active) {
+      if (anyHit) return tree->occluded(packet, active);
+      Hit hits[kPacketSize];
+      return tree->intersect(packet, active, hits);
+    };
+  });
 }
 
 inline void registerLancer(const std::string& kind, const std::string& mesh) {

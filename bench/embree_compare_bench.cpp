@@ -1,6 +1,7 @@
-// lancer's SAH kd-tree against Intel Embree 3 (RTC_BUILD_QUALITY_HIGH, rtcIntersect1 and
-// rtcOccluded1: single rays, like lancer) on the same meshes and ray sets, in the same process,
-// so bench/run_accel_bench.sh can print lancer/Embree ratios measured side by side.
+// lancer's SAH kd-tree against Intel Embree 3 (RTC_BUILD_QUALITY_HIGH) on the same meshes and ray
+// sets, in the same process, so bench/run_accel_bench.sh can print lancer/Embree ratios measured
+// side by side: single rays (rtcIntersect1 / rtcOccluded1) and packets of eight of the same rays
+// (lancer's packet queries against rtcIntersect8 / rtcOccluded8).
 #include <embree3/rtcore.h>
 
 #include <stdexcept>
@@ -77,6 +78,52 @@ struct EmbreeScene {
     rtcOccluded1(scene, &context, &r);
     return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
   }
+  // Embree's own packets on the same rays (rtcIntersect8 / rtcOccluded8, coherent context):
+  // the lanes that hit.
+  std::uint32_t intersect8(const RayPacket& packet, std::uint32_t active) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    alignas(32) int valid[kPacketSize];
+    alignas(32) RTCRayHit8 rh;
+    setRays(rh.ray, valid, packet, active);
+    for (int i = 0; i < kPacketSize; ++i) rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect8(valid, scene, &context, &rh);
+    std::uint32_t hit = 0;
+    for (int i = 0; i < kPacketSize; ++i)
+      hit |= valid[i] && rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID ? 1u << i : 0u;
+    return hit;
+  }
+  std::uint32_t occluded8(const RayPacket& packet, std::uint32_t active) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    alignas(32) int valid[kPacketSize];
+    alignas(32) RTCRay8 r;
+    setRays(r, valid, packet, active);
+    rtcOccluded8(valid, scene, &context, &r);
+    std::uint32_t hit = 0;
+    for (int i = 0; i < kPacketSize; ++i) hit |= valid[i] && r.tfar[i] < 0.0f ? 1u << i : 0u;
+    return hit;
+  }
+  static void setRays(RTCRay8& r, int* valid, const RayPacket& packet, std::uint32_t active) {
+    for (int i = 0; i < kPacketSize; ++i) {
+      const Ray& ray = packet.ray[i];
+      valid[i] = (active >> i & 1u) != 0 ? -1 : 0;
+      r.org_x[i] = ray.origin.x;
+      r.org_y[i] = ray.origin.y;
+      r.org_z[i] = ray.origin.z;
+      r.dir_x[i] = ray.direction.x;
+      r.dir_y[i] = ray.direction.y;
+      r.dir_z[i] = ray.direction.z;
+      r.tnear[i] = packet.tMin[i];
+      r.tfar[i] = packet.tMax[i];
+      r.time[i] = 0.0f;
+      r.mask[i] = 0xFFFFFFFFu;
+      r.id[i] = 0;
+      r.flags[i] = 0;
+    }
+  }
   static void setRay(RTCRay& r, const Ray& ray, float tMin, float tMax) {
     r.org_x = ray.origin.x;
     r.org_y = ray.origin.y;
@@ -148,6 +195,20 @@ void registerEmbree(const std::string& mesh) {
   }
 }
 
+void registerEmbreePackets(const std::string& mesh) {
+  static std::map<std::string, std::shared_ptr<EmbreeScene>> scenes;
+  registerPacketRows("embree-high", mesh, [mesh](MeshContext& ctx, bool anyHit) {
+    if (!scenes.count(mesh)) {
+      scenes.clear();
+      scenes[mesh] = std::make_shared<EmbreeScene>(ctx.mesh, 2);
+    }
+    const EmbreeScene* s = scenes[mesh].get();
+    return [s, anyHit](const RayPacket& packet, std::uint32_t active) {
+      return anyHit ? s->occluded8(packet, active) : s->intersect8(packet, active);
+    };
+  });
+}
+
 }  // namespace
 }  // namespace lancer::bench
 
@@ -156,6 +217,8 @@ int main(int argc, char** argv) {
   for (const std::string& mesh : lancer::bench::meshNames()) {
     lancer::bench::registerLancer("kdtree-sah", mesh);
     lancer::bench::registerEmbree(mesh);
+    lancer::bench::registerLancerPackets("kdtree-sah", mesh);
+    lancer::bench::registerEmbreePackets(mesh);
   }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

@@ -2,7 +2,7 @@
 # Makes the bench meshes that are missing (gmsh, from bench/geo/), runs the accelerator benchmarks
 # and prints the tables of bench/RESULTS.md: build time and throughput, bytes per triangle, and ray throughput
 # for primary, shadow and incoherent rays on 1 and 2 threads, with lancer/Embree ratios from the
-# same run.
+# same run, ray by ray and in packets of 8 (lancer's packet queries, Embree's rtcIntersect8/rtcOccluded8).
 #   bench/run_accel_bench.sh [build-dir] [meshes]    e.g. bench/run_accel_bench.sh build-accel 10k,100k
 # Tables show medians of 3 repetitions. Timings are wall-clock: run on an idle machine.
 set -euo pipefail
@@ -98,5 +98,19 @@ for m in meshes:
             ce = per_cpu_second(names["embree-high"], get(names["embree-high"], "rays")) if t == 1 else None
             print(f"| {m} | {rk} | {t} | {fmt(v['kdtree-sah'])} | {fmt(v['kdtree-median'])} | {fmt(v['embree-high'])} | "
                   f"{fmt(ratio(v['kdtree-sah'], v['embree-high']))} | {fmt(cs)} | {fmt(ce)} | {fmt(ratio(cs, ce))} | {fmt(h[0], '{:.4f}')}, {fmt(h[1], '{:.4f}')} |")
+
+print("\n## Packets of 8 (the same rays, 8 in a row of the set), Mrays/s wall (medians of 3)")
+print("lancer packets against Embree's single rays (rtcIntersect1/rtcOccluded1) and its own packets (rtcIntersect8/rtcOccluded8, coherent context)")
+print("| mesh | rays | threads | kdtree-sah single | kdtree-sah packets | embree single | embree packets | packets/single (lancer) | lancer packets / embree single | lancer packets / embree packets |")
+print("|---|---|---|---|---|---|---|---|---|---|")
+for m in meshes:
+    for rk in ("primary", "shadow", "incoherent"):
+        for t in (1, 2):
+            ls = get(f"trace/kdtree-sah/{m}/{rk}/threads:{t}", "Mrays_per_s")
+            lp = get(f"packet/kdtree-sah/{m}/{rk}/threads:{t}", "Mrays_per_s")
+            es = get(f"trace/embree-high/{m}/{rk}/threads:{t}", "Mrays_per_s")
+            ep = get(f"packet/embree-high/{m}/{rk}/threads:{t}", "Mrays_per_s")
+            if lp is None and ep is None: continue
+            print(f"| {m} | {rk} | {t} | {fmt(ls)} | {fmt(lp)} | {fmt(es)} | {fmt(ep)} | {fmt(ratio(lp, ls))} | {fmt(ratio(lp, es))} | {fmt(ratio(lp, ep))} |")
 PY
 rm -rf "$results"

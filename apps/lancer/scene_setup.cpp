@@ -8,8 +8,10 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string_view>
 #include <vector>
 
 #include "lancer/image/atomic_file.hpp"
@@ -203,6 +205,9 @@ RenderOptions commandRenderOptions(const SceneOverrides& overrides) {
   RenderOptions options;
   options.threads = overrides.threads;
   options.cancel = &installInterruptHandler();
+  // LANCER_SINGLE_RAYS=1: every ray traced on its own (the same image), to measure the packets.
+  const char* singleRays = std::getenv("LANCER_SINGLE_RAYS");
+  options.packets = !(singleRays != nullptr && std::string_view(singleRays) == "1");
   return options;
 }
 

@@ -38,6 +38,52 @@ bool Accelerator::occluded(const Ray& ray, float tMin, float tMax, const HitFilt
   return std::get<NaiveAccel>(impl_).occluded(ray, tMin, tMax, filter);
 }
 
+namespace {
+
+// A packet query of the brute-force reference: lane by lane.
+template <typename Query>
+std::uint32_t laneByLane(std::uint32_t active, Query&& query) {
+  std::uint32_t answered = 0;
+  for (int i = 0; i < kPacketSize; ++i) {
+    if ((active >> i & 1u) != 0 && query(i)) answered |= 1u << i;
+  }
+  return answered;
+}
+
+}  // namespace
+
+std::uint32_t Accelerator::intersect(const RayPacket& packet, std::uint32_t active,
+                                     std::span<Hit, kPacketSize> hits) const {
+  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(packet, active, hits);
+  const NaiveAccel& naive = std::get<NaiveAccel>(impl_);
+  return laneByLane(
+      active, [&](int i) { return naive.intersect(packet.ray[i], packet.tMin[i], packet.tMax[i], hits[i]); });
+}
+
+std::uint32_t Accelerator::occluded(const RayPacket& packet, std::uint32_t active) const {
+  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(packet, active);
+  const NaiveAccel& naive = std::get<NaiveAccel>(impl_);
+  return laneByLane(active,
+                    [&](int i) { return naive.occluded(packet.ray[i], packet.tMin[i], packet.tMax[i]); });
+}
+
+std::uint32_t Accelerator::intersect(const RayPacket& packet, std::uint32_t active, const HitFilter& filter,
+                                     std::span<Hit, kPacketSize> hits) const {
+  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(packet, active, filter, hits);
+  const NaiveAccel& naive = std::get<NaiveAccel>(impl_);
+  return laneByLane(active, [&](int i) {
+    return naive.intersect(packet.ray[i], packet.tMin[i], packet.tMax[i], filter, hits[i]);
+  });
+}
+
+std::uint32_t Accelerator::occluded(const RayPacket& packet, std::uint32_t active,
+                                    const HitFilter& filter) const {
+  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(packet, active, filter);
+  const NaiveAccel& naive = std::get<NaiveAccel>(impl_);
+  return laneByLane(
+      active, [&](int i) { return naive.occluded(packet.ray[i], packet.tMin[i], packet.tMax[i], filter); });
+}
+
 Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                                AccelKind kind, const KdBuildOptions& options) {
   switch (kind) {

@@ -11,6 +11,7 @@
 #include "lancer/accel/hit_filter.hpp"
 #include "lancer/accel/kd_tree.hpp"
 #include "lancer/accel/naive_accel.hpp"
+#include "lancer/accel/ray_packet.hpp"
 
 namespace lancer {
 
@@ -42,6 +43,15 @@ class Accelerator {
   // plain queries once per ray (the tracer).
   bool intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const;
   bool occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const;
+
+  // The packet queries (KdTree's; the brute-force reference answers lane by lane). Return the lanes
+  // of `active` that hit, or are occluded; hits[i] is set for each lane i that hit.
+  std::uint32_t intersect(const RayPacket& packet, std::uint32_t active,
+                          std::span<Hit, kPacketSize> hits) const;
+  std::uint32_t occluded(const RayPacket& packet, std::uint32_t active) const;
+  std::uint32_t intersect(const RayPacket& packet, std::uint32_t active, const HitFilter& filter,
+                          std::span<Hit, kPacketSize> hits) const;
+  std::uint32_t occluded(const RayPacket& packet, std::uint32_t active, const HitFilter& filter) const;
 
   AccelKind kind() const { return kind_; }
   AccelStats stats() const { return stats_; }

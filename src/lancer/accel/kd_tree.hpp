@@ -11,6 +11,7 @@
 #include "lancer/accel/hit.hpp"
 #include "lancer/accel/hit_filter.hpp"
 #include "lancer/accel/kd/node.hpp"
+#include "lancer/accel/ray_packet.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/aabb.hpp"
 #include "lancer/math/ray.hpp"
@@ -73,6 +74,17 @@ class KdTree {
   bool intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const;
   bool occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const;
 
+  // The same queries for the lanes `active` of a packet (kd/packet_traversal.cpp): traced together
+  // down the tree with 8-wide SIMD where the build has AVX2, one by one otherwise or when the rays
+  // run in different directions. Each lane's answer is the single ray's, to the bit. Return the
+  // lanes that hit (or are occluded); hits[i] is set for each lane i that hit.
+  std::uint32_t intersect(const RayPacket& packet, std::uint32_t active,
+                          std::span<Hit, kPacketSize> hits) const;
+  std::uint32_t occluded(const RayPacket& packet, std::uint32_t active) const;
+  std::uint32_t intersect(const RayPacket& packet, std::uint32_t active, const HitFilter& filter,
+                          std::span<Hit, kPacketSize> hits) const;
+  std::uint32_t occluded(const RayPacket& packet, std::uint32_t active, const HitFilter& filter) const;
+
   const AccelStats& stats() const { return stats_; }
   const Aabb& bounds() const { return bounds_; }
 
@@ -103,6 +115,11 @@ class KdTree {
   bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const;
   template <typename Filter>
   bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const;
+  template <typename Filter>
+  std::uint32_t closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
+                            std::span<Hit, kPacketSize> hits) const;
+  template <typename Filter>
+  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
 
   // Depth first from the root at 0 (then a pad): each inner node's child pair (16-byte aligned),
   // followed at once by what its leaf children hold: the list of a leaf of 2+ triangles (32-bit

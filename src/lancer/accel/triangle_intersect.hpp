@@ -56,6 +56,24 @@ inline float differenceOfProducts(float a, float b, float c, float d) {
 }
 #endif
 
+// The hit of a triangle whose edge functions' signs agree, from its sheared corners relative to
+// the ray's origin; one function for the single-ray and the packet tests (kd/packet_traversal.cpp),
+// so that both give the same bits. The distance from the edge functions in double, where the products of
+// floats are exact: each is rounded once, so two triangles that share the edge a ray passes through compute
+// the same t to the last float bit, and the tie goes to the lower face as in the brute-force loop.
+inline TriangleHit finishHit(float ax, float ay, float az, float bx, float by, float bz, float cx, float cy,
+                             float cz, float shearZ, float tMin, float tMax) {
+  const double ud = double(cx) * double(by) - double(cy) * double(bx);
+  const double vd = double(ax) * double(cy) - double(ay) * double(cx);
+  const double wd = double(bx) * double(ay) - double(by) * double(ax);
+  const double det = ud + vd + wd;
+  const double scaledT = (ud * double(az) + vd * double(bz) + wd * double(cz)) * double(shearZ);
+  const auto t = static_cast<float>(scaledT / det);
+  const double invDet = 1.0 / det;
+  const bool inside = (det != 0.0) & (t > tMin) & (t < tMax);
+  return {inside ? t : -1.0f, static_cast<float>(vd * invDet), static_cast<float>(wd * invDet)};
+}
+
 }  // namespace triangle_detail
 
 // The hit with t in (tMin, tMax), or t < 0 when there is none. The edge functions' signs are found
@@ -81,18 +99,7 @@ inline TriangleHit testTriangle(const PackedTriangle& tri, const Ray& ray, float
   // The signs alone decide whether the ray's line meets the triangle: most tests end here.
   const bool sameSign = ((u >= 0.0f) & (v >= 0.0f) & (w >= 0.0f)) | ((u <= 0.0f) & (v <= 0.0f) & (w <= 0.0f));
   if (!sameSign) return {-1.0f, 0.0f, 0.0f};
-  // The distance from the edge functions in double, where the products of floats are exact: each is
-  // rounded once, so two triangles that share the edge a ray passes through compute the same t to
-  // the last float bit, and the tie goes to the lower face as in the brute-force loop.
-  const double ud = double(cx) * double(by) - double(cy) * double(bx);
-  const double vd = double(ax) * double(cy) - double(ay) * double(cx);
-  const double wd = double(bx) * double(ay) - double(by) * double(ax);
-  const double det = ud + vd + wd;
-  const double scaledT = (ud * double(az) + vd * double(bz) + wd * double(cz)) * double(ray.shearZ);
-  const auto t = static_cast<float>(scaledT / det);
-  const double invDet = 1.0 / det;
-  const bool inside = (det != 0.0) & (t > tMin) & (t < tMax);
-  return {inside ? t : -1.0f, static_cast<float>(vd * invDet), static_cast<float>(wd * invDet)};
+  return triangle_detail::finishHit(ax, ay, az, bx, by, bz, cx, cy, cz, ray.shearZ, tMin, tMax);
 }
 
 // The ray parameter of the hit alone (any-hit queries and tests).

@@ -11,11 +11,13 @@ int adaptiveMaxDepth(int samples) {
   return depth;
 }
 
-AdaptiveSampler::AdaptiveSampler(const Tracer& tracer, const Camera& camera, const RenderSettings& settings)
+AdaptiveSampler::AdaptiveSampler(const Tracer& tracer, const Camera& camera, const RenderSettings& settings,
+                                 bool packets)
     : tracer_(tracer),
       camera_(camera),
       parallelView_(camera.projection() == Projection::Orthographic),
       compareAlpha_(settings.transparentBackground),
+      packets_(packets),
       threshold_(settings.adaptiveThreshold),
       depth_(adaptiveMaxDepth(settings.samples)),
       side_((1 << depth_) + 1),
@@ -90,16 +92,46 @@ void AdaptiveSampler::renderTile(int x0, int y0, int x1, int y1, Image& band, in
                                  TraceCounters& counters, std::uint64_t& samples) {
   const int columns = x1 - x0 + 1, rows = y1 - y0 + 1;
   cornerRows_.resize(static_cast<std::size_t>(columns * rows));
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < columns; ++i)
-      cornerRows_[static_cast<std::size_t>(j * columns + i)] =
-          traceAt(static_cast<float>(x0 + i), static_cast<float>(y0 + j), counters, samples);
+  traceCorners(x0, y0, columns, rows, counters, samples);
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) {
       const auto at = [&](int i, int j) { return cornerRows_[static_cast<std::size_t>(j * columns + i)]; };
       const int i = x - x0, j = y - y0;
       const Sample corners[4] = {at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)};
       band.at(x, y - bandY0) = shadePixel(x, y, corners, counters, samples);
+    }
+  }
+}
+
+void AdaptiveSampler::traceCorners(int x0, int y0, int columns, int rows, TraceCounters& counters,
+                                   std::uint64_t& samples) {
+  if (!packets_) {
+    for (int j = 0; j < rows; ++j)
+      for (int i = 0; i < columns; ++i)
+        cornerRows_[static_cast<std::size_t>(j * columns + i)] =
+            traceAt(static_cast<float>(x0 + i), static_cast<float>(y0 + j), counters, samples);
+    return;
+  }
+  // Blocks of 4x2 corners, each one packet.
+  constexpr int kBlockWidth = 4;
+  Ray rays[kPacketSize];
+  TraceResult results[kPacketSize];
+  for (int j0 = 0; j0 < rows; j0 += 2) {
+    for (int i0 = 0; i0 < columns; i0 += kBlockWidth) {
+      std::uint32_t active = 0;
+      for (int p = 0; p < kPacketSize; ++p) {
+        const int i = i0 + p % kBlockWidth, j = j0 + p / kBlockWidth;
+        if (i >= columns || j >= rows) continue;
+        rays[p] = camera_.generateRay(static_cast<float>(x0 + i), static_cast<float>(y0 + j));
+        active |= 1u << p;
+      }
+      tracer_.tracePrimaries(rays, active, parallelView_, results, counters);
+      for (int p = 0; p < kPacketSize; ++p) {
+        if ((active >> p & 1u) == 0) continue;
+        ++samples;
+        const int i = i0 + p % kBlockWidth, j = j0 + p / kBlockWidth;
+        cornerRows_[static_cast<std::size_t>(j * columns + i)] = {results[p].color, results[p].alpha};
+      }
     }
   }
 }

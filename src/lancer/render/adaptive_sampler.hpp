@@ -23,7 +23,9 @@ int adaptiveMaxDepth(int samples);
 // (neighbouring tiles each trace their common border), sub-pixel points by the squares of a pixel.
 class AdaptiveSampler {
  public:
-  AdaptiveSampler(const Tracer& tracer, const Camera& camera, const RenderSettings& settings);
+  // `packets`: the pixel corners of a tile are traced in packets of 4x2 (Tracer::tracePrimaries).
+  AdaptiveSampler(const Tracer& tracer, const Camera& camera, const RenderSettings& settings,
+                  bool packets = false);
 
   // Renders pixels [x0, x1) x [y0, y1) into `band`, whose row 0 is image row bandY0; `samples`
   // counts the primary rays traced.
@@ -38,6 +40,8 @@ class AdaptiveSampler {
     float alpha;
   };
   Sample traceAt(float x, float y, TraceCounters& counters, std::uint64_t& samples) const;
+  // The pixel corners of a tile into cornerRows_ (columns x rows from (x0, y0)).
+  void traceCorners(int x0, int y0, int columns, int rows, TraceCounters& counters, std::uint64_t& samples);
   // Fills the lattice of the pixel from its four corners and returns the pixel's value.
   Rgba shadePixel(int x, int y, const Sample corners[4], TraceCounters& counters, std::uint64_t& samples);
   // Mean of the square with lower corner (i, j) on the pixel's lattice and side `size` (lattice units).
@@ -49,6 +53,7 @@ class AdaptiveSampler {
   const Camera& camera_;
   bool parallelView_;
   bool compareAlpha_;
+  bool packets_;
   float threshold_;
   int depth_;
   int side_;  // lattice points per pixel side: 2^depth + 1

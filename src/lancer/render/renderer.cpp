@@ -156,6 +156,49 @@ Rgba tracePixel(const Tracer& tracer, const Camera& camera, const RenderSettings
   return toRgba(sum * weight, alpha);
 }
 
+// The pixels of the block [x0, x0 + 4) x [y0, y0 + 2) inside [.., x1) x [.., y1), as tracePixel
+// renders them: each sample of the 8 pixels traced as one packet (Tracer::tracePrimaries).
+void tracePixelBlock(const Tracer& tracer, const Camera& camera, const RenderSettings& settings, int x0,
+                     int y0, int x1, int y1, Image& band, int bandY0, TraceCounters& counters,
+                     std::uint64_t& samplesTraced) {
+  constexpr int kBlockWidth = 4;
+  static_assert(kPacketSize % kBlockWidth == 0);
+  const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(settings.samples)))));
+  const bool parallelView = camera.projection() == Projection::Orthographic;
+  std::uint32_t active = 0;
+  for (int p = 0; p < kPacketSize; ++p) {
+    if (x0 + p % kBlockWidth < x1 && y0 + p / kBlockWidth < y1) active |= 1u << p;
+  }
+  Vec3 sum[kPacketSize] = {};
+  float alphaSum[kPacketSize] = {};
+  Ray rays[kPacketSize];
+  TraceResult results[kPacketSize];
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      for (int p = 0; p < kPacketSize; ++p) {
+        if ((active >> p & 1u) == 0) continue;
+        const int x = x0 + p % kBlockWidth, y = y0 + p / kBlockWidth;
+        float dx = 0.5f, dy = 0.5f;
+        gridSampleOffset(settings.sampler, n, i, j, x, y, dx, dy);
+        rays[p] = camera.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy);
+      }
+      tracer.tracePrimaries(rays, active, parallelView, results, counters);
+      for (int p = 0; p < kPacketSize; ++p) {
+        if ((active >> p & 1u) == 0) continue;
+        sum[p] += results[p].color;
+        alphaSum[p] += results[p].alpha;
+      }
+    }
+  }
+  const float weight = 1.0f / static_cast<float>(n * n);
+  for (int p = 0; p < kPacketSize; ++p) {
+    if ((active >> p & 1u) == 0) continue;
+    samplesTraced += static_cast<std::uint64_t>(n * n);
+    const float alpha = settings.transparentBackground ? alphaSum[p] * weight : 1.0f;
+    band.at(x0 + p % kBlockWidth, y0 + p / kBlockWidth - bandY0) = toRgba(sum[p] * weight, alpha);
+  }
+}
+
 }  // namespace
 
 Camera makeCamera(const CameraSettings& camera, const Scene& scene, const RenderSettings& settings) {
@@ -198,7 +241,8 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
 
   auto worker = [&] {
     std::optional<AdaptiveSampler> adaptive;
-    if (settings.sampler == SamplerKind::Adaptive) adaptive.emplace(tracer, camera, settings);
+    if (settings.sampler == SamplerKind::Adaptive)
+      adaptive.emplace(tracer, camera, settings, options.packets);
     for (;;) {
       if (cancelled()) break;
       const int tile = nextTile.fetch_add(1, std::memory_order_relaxed);
@@ -214,6 +258,10 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
       std::uint64_t samples = 0;
       if (adaptive) {
         adaptive->renderTile(x0, bandY0, x1, y1, *pixels, bandY0, counters, samples);
+      } else if (options.packets) {
+        for (int y = bandY0; y < y1; y += 2)
+          for (int x = x0; x < x1; x += 4)
+            tracePixelBlock(tracer, camera, settings, x, y, x1, y1, *pixels, bandY0, counters, samples);
       } else {
         for (int y = bandY0; y < y1; ++y)
           for (int x = x0; x < x1; ++x)

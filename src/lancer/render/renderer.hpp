@@ -29,6 +29,9 @@ struct RenderOptions {
   double progressInterval = 0.25;
   // Set by another thread (e.g. a signal handler) to stop early; the image is then incomplete.
   const std::atomic<bool>* cancel = nullptr;
+  // Primary rays of 4x2-pixel blocks and their shadow rays traced as packets (Tracer::tracePrimaries);
+  // false traces every ray on its own. The image is the same, to the bit.
+  bool packets = true;
 };
 
 struct RenderStats {

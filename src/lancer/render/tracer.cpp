@@ -1,6 +1,7 @@
 #include "lancer/render/tracer.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -82,11 +83,16 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accelerator, const RenderS
 }
 
 TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const {
-  const TracedRay traced = trace(ray, 0, 1.0f, 0.0f, parallelView, counters);
+  return tracePrimary(ray, parallelView, counters, nullptr);
+}
+
+TraceResult Tracer::tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters,
+                                 const PrimaryAhead* ahead) const {
+  const TracedRay traced = trace(ray, 0, 1.0f, 0.0f, parallelView, counters, ahead);
   TraceResult result;
   result.color = traced.color;
   result.alpha = traced.coverage;
-  if (outlines_ && outlines_->near(ray)) paintOutlines(ray, traced.distance, result, counters);
+  if (outlines_ && outlines_->near(ray)) paintOutlines(ray, traced.distance, result, counters, ahead);
   return result;
 }
 
@@ -105,13 +111,17 @@ MediumCrossing Tracer::crossingAt(std::uint32_t face, bool entering) const {
   return {inner, outer, seesOuter ? outer : inner};
 }
 
-void Tracer::paintOutlines(const Ray& ray, float hitDistance, TraceResult& result,
-                           TraceCounters& counters) const {
+void Tracer::paintOutlines(const Ray& ray, float hitDistance, TraceResult& result, TraceCounters& counters,
+                           const PrimaryAhead* ahead) const {
   // The face the ray hit draws its own edges; the query is repeated only near outlines.
   ++counters.rays;
   const ClipInterval kept = clipRay(ray, scene_.clipping.planes);
   Hit hit;
-  if (!kept.empty()) nearestHit(ray, kept.enter, kept.exit, hit);
+  if (ahead != nullptr && ahead->hitKnown) {
+    if (ahead->hit) hit = ahead->firstHit;
+  } else if (!kept.empty()) {
+    nearestHit(ray, kept.enter, kept.exit, hit);
+  }
   Vec3 color;
   const float edge = outlines_->coverage(ray, hit.face, hitDistance, footprint_, color);
   if (edge <= 0.0f) return;
@@ -119,13 +129,41 @@ void Tracer::paintOutlines(const Ray& ray, float hitDistance, TraceResult& resul
   result.alpha = std::max(result.alpha, edge);
 }
 
-Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, TraceCounters& counters) const {
+bool Tracer::shadowQuery(const Vec3& from, const Vec3& lightPosition, Ray& ray, float& tMin,
+                         float& tMax) const {
+  ray = Ray(from, lightPosition - from);
+  const ClipInterval kept = clipRay(ray, scene_.clipping.planes);
+  if (kept.empty() || (!anyTransparent_ && kept.enter >= 1.0f)) return false;
+  tMin = kept.enter;
+  tMax = std::min(kept.exit, 1.0f);
+  return true;
+}
+
+namespace {
+
+bool sameBits(const Vec3& a, const Vec3& b) {
+  return std::bit_cast<std::uint32_t>(a.x) == std::bit_cast<std::uint32_t>(b.x) &&
+         std::bit_cast<std::uint32_t>(a.y) == std::bit_cast<std::uint32_t>(b.y) &&
+         std::bit_cast<std::uint32_t>(a.z) == std::bit_cast<std::uint32_t>(b.z);
+}
+
+}  // namespace
+
+const PrimaryAhead::Shadow* PrimaryAhead::shadowFrom(std::size_t light, const Vec3& origin) const {
+  if (light >= kPacketLights || (shadowsKnown >> light & 1u) == 0) return nullptr;
+  return sameBits(shadow[light].from, origin) ? &shadow[light] : nullptr;
+}
+
+Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, TraceCounters& counters,
+                               const PrimaryAhead::Shadow* ahead) const {
   if (!anyTransparent_) {
     ++counters.rays;
-    const Ray ray(from, lightPosition - from);
-    const ClipInterval kept = clipRay(ray, scene_.clipping.planes);
-    if (kept.empty() || kept.enter >= 1.0f) return {1, 1, 1};
-    return blocked(ray, kept.enter, std::min(kept.exit, 1.0f)) ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
+    // Traced ahead from this very origin (tracePrimaries): the query was made, and answered.
+    if (ahead != nullptr) return ahead->answer ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
+    Ray ray;
+    float tMin, tMax;
+    if (!shadowQuery(from, lightPosition, ray, tMin, tMax)) return {1, 1, 1};
+    return blocked(ray, tMin, tMax) ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
   }
   Vec3 transmission{1, 1, 1};
   Vec3 origin = from;
@@ -140,7 +178,14 @@ Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, Trac
     const ClipInterval kept = clipRay(ray, scene_.clipping.planes);
     const float start = std::max(kept.enter, 0.0f), end = std::min(kept.exit, 1.0f);
     Hit hit;
-    if (kept.empty() || !nearestHit(ray, kept.enter, end, hit)) {
+    bool hitSomething;
+    if (crossing == 0 && ahead != nullptr) {
+      hitSomething = ahead->answer;
+      hit = ahead->hit;
+    } else {
+      hitSomething = !kept.empty() && nearestHit(ray, kept.enter, end, hit);
+    }
+    if (!hitSomething) {
       if (medium != kUnknown && start < end)
         transmission *= beerLambert(absorptionOf(medium), (end - start) * length(ray.direction));
       return transmission;
@@ -165,14 +210,15 @@ Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, Trac
 }
 
 Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Material& material,
-                        bool parallelView, TraceCounters& counters) const {
+                        bool parallelView, TraceCounters& counters, const PrimaryAhead* ahead) const {
   // A field-coloured face (color_by) shows the map's colour as ka and kd; ks and shininess stay.
   Vec3 fieldColor;
   const bool colored = fieldColorAt(scene_, surface, linearFieldColors_, fieldColor);
   const Vec3& kd = colored ? fieldColor : material.kd;
   Vec3 color = scene_.appearance.ambient * (colored ? fieldColor : material.ka);
   const Vec3 toViewer = normalize(-ray.direction);
-  for (const SceneLight& light : scene_.appearance.lights) {
+  for (std::size_t l = 0; l < scene_.appearance.lights.size(); ++l) {
+    const SceneLight& light = scene_.appearance.lights[l];
     const Vec3 toLight = light.position - surface.position;
     const float distance = length(toLight);
     if (!(distance > 0.0f)) continue;
@@ -184,25 +230,31 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
     if (dot(surface.geometricNormal, lightDirection) <= 0.0f) continue;
     const Vec3 shadowOrigin =
         offsetRayOrigin(surface.position, surface.positionError, surface.geometricNormal);
-    color += contribution * lightTransmission(shadowOrigin, light.position, counters);
+    color +=
+        contribution * lightTransmission(shadowOrigin, light.position, counters,
+                                         ahead != nullptr ? ahead->shadowFrom(l, shadowOrigin) : nullptr);
   }
   return color;
 }
 
-Vec3 Tracer::shadeShadowCatcher(const Vec3& point, TraceCounters& counters, float& coverage) const {
+Vec3 Tracer::shadeShadowCatcher(const Vec3& point, TraceCounters& counters, float& coverage,
+                                const PrimaryAhead* ahead) const {
   // The share of the light the floor would get that the meshes let through, per channel: ambient
   // plus the lights' diffuse irradiance with shadows, over the same without them.
   const Vec3& normal = scene_.shadowCatcher->normal;
   Vec3 lit = scene_.appearance.ambient, shadowed = scene_.appearance.ambient;
   const Vec3 shadowOrigin = offsetRayOrigin(point, normal);
-  for (const SceneLight& light : scene_.appearance.lights) {
+  for (std::size_t l = 0; l < scene_.appearance.lights.size(); ++l) {
+    const SceneLight& light = scene_.appearance.lights[l];
     const Vec3 toLight = light.position - point;
     const float distance = length(toLight);
     const float cosTheta = distance > 0.0f ? dot(normal, toLight) / distance : 0.0f;
     if (cosTheta <= 0.0f) continue;
     const Vec3 irradiance = light.intensity * (cosTheta * lightAttenuation(light, distance));
     lit += irradiance;
-    shadowed += irradiance * lightTransmission(shadowOrigin, light.position, counters);
+    shadowed +=
+        irradiance * lightTransmission(shadowOrigin, light.position, counters,
+                                       ahead != nullptr ? ahead->shadowFrom(l, shadowOrigin) : nullptr);
   }
   auto ratio = [](float s, float l) { return l > 0.0f ? std::clamp(s / l, 0.0f, 1.0f) : 1.0f; };
   const Vec3 kept{ratio(shadowed.x, lit.x), ratio(shadowed.y, lit.y), ratio(shadowed.z, lit.z)};
@@ -260,12 +312,18 @@ float Tracer::edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) c
                       overlay.styles[style].widthPixels);
 }
 
-Tracer::Sighting Tracer::firstSighting(const Ray& ray) const {
+Tracer::Sighting Tracer::firstSighting(const Ray& ray, const PrimaryAhead* ahead) const {
   Sighting seen;
   // Cut views: only the part of the ray on the kept side of every scene clip plane can hit
   // anything; a mesh's own planes are seen through by the query itself.
   const ClipInterval kept = clipRay(ray, scene_.clipping.planes);
-  const bool hitMesh = !kept.empty() && nearestHit(ray, kept.enter, kept.exit, seen.hit);
+  bool hitMesh;
+  if (ahead != nullptr && ahead->hitKnown) {
+    hitMesh = ahead->hit;
+    if (hitMesh) seen.hit = ahead->firstHit;
+  } else {
+    hitMesh = !kept.empty() && nearestHit(ray, kept.enter, kept.exit, seen.hit);
+  }
   if (hitMesh) {
     seen.kind = Sighting::Kind::kSurface;
     seen.t = seen.hit.t;
@@ -306,16 +364,16 @@ Tracer::Sighting Tracer::firstSighting(const Ray& ray) const {
 // every node is a weighted mean of non-negative terms with weights summing to 1: light can only be
 // lost (absorption), never created, and depth 0 is exactly the local model.
 Tracer::TracedRay Tracer::trace(const Ray& ray, int depth, float pathWeight, float pathLength,
-                                bool parallelView, TraceCounters& counters) const {
+                                bool parallelView, TraceCounters& counters, const PrimaryAhead* ahead) const {
   ++counters.rays;
-  const Sighting seen = firstSighting(ray);
+  const Sighting seen = firstSighting(ray, ahead);
   const float distance = seen.t * length(ray.direction);
   switch (seen.kind) {
     case Sighting::Kind::kNothing:
       return {background_, kInfinity, 0.0f};
     case Sighting::Kind::kShadowCatcher: {
       float coverage = 0;
-      const Vec3 color = shadeShadowCatcher(ray.at(seen.t), counters, coverage);
+      const Vec3 color = shadeShadowCatcher(ray.at(seen.t), counters, coverage, ahead);
       return {color, distance, coverage};
     }
     case Sighting::Kind::kCap:
@@ -324,12 +382,13 @@ Tracer::TracedRay Tracer::trace(const Ray& ray, int depth, float pathWeight, flo
     case Sighting::Kind::kSurface:
       break;
   }
-  return {shadeSurface(ray, seen.hit, distance, depth, pathWeight, pathLength, parallelView, counters),
+  return {shadeSurface(ray, seen.hit, distance, depth, pathWeight, pathLength, parallelView, counters, ahead),
           distance, 1.0f};
 }
 
 Vec3 Tracer::shadeSurface(const Ray& ray, const Hit& hit, float distance, int depth, float pathWeight,
-                          float pathLength, bool parallelView, TraceCounters& counters) const {
+                          float pathLength, bool parallelView, TraceCounters& counters,
+                          const PrimaryAhead* ahead) const {
   // Edges are paint on the surface: fully covered pixels need no shading, partial ones blend.
   const float edge = edgeCoverageAt(ray, hit, pathLength);
   const Vec3 edgeColor =
@@ -338,12 +397,14 @@ Vec3 Tracer::shadeSurface(const Ray& ray, const Hit& hit, float distance, int de
   auto withEdge = [&](const Vec3& color) {
     return edge > 0.0f ? color * (1.0f - edge) + edgeColor * edge : color;
   };
-  const SurfacePoint surface = makeSurfacePoint(scene_, ray, hit);
+  SurfacePoint made;
+  if (ahead == nullptr || !ahead->surfaceKnown) made = makeSurfacePoint(scene_, ray, hit);
+  const SurfacePoint& surface = ahead != nullptr && ahead->surfaceKnown ? ahead->surface : made;
   // Closed shells and volumes face out of their material, so the side hit says whether the ray enters.
   const MediumCrossing media = crossingAt(hit.face, surface.normalSign > 0.0f);
   const Material& material = scene_.appearance.materials[media.shown];
   const EnergySplit& split = splits_[media.shown];
-  const Vec3 local = shadeLocal(ray, surface, material, parallelView, counters);
+  const Vec3 local = shadeLocal(ray, surface, material, parallelView, counters, ahead);
   if (depth >= maxDepth_ || !split.recursive) return withEdge(local);
 
   const Vec3 direction = normalize(ray.direction);

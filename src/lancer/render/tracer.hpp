@@ -3,9 +3,11 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "lancer/accel/accelerator.hpp"
+#include "lancer/accel/ray_packet.hpp"
 #include "lancer/render/camera.hpp"
 #include "lancer/render/edge_overlay.hpp"
 #include "lancer/render/outline_edges.hpp"
@@ -45,6 +47,31 @@ struct MediumCrossing {
                         // transparent volume by an interface
 };
 
+// Shadow queries traced ahead for the first kPacketLights lights of a scene.
+inline constexpr int kPacketLights = 8;
+
+// What Tracer::tracePrimaries traced ahead, in packets, for one primary ray: its first query, and
+// from the point it hit, the first shadow query towards each light. The tracer takes an answer only
+// for the very query it was traced for (a shadow ray from the same origin, to the bit), so the
+// image is the one single rays give.
+struct PrimaryAhead {
+  bool hitKnown = false;  // `hit`/`firstHit` answer the ray's first closest-hit query
+  bool hit = false;
+  bool surfaceKnown = false;       // `surface` is makeSurfacePoint of the ray and firstHit
+  std::uint32_t shadowsKnown = 0;  // bit l: shadow[l] holds the first shadow query towards light l
+  Hit firstHit;
+  SurfacePoint surface;
+  // Left uninitialised (a packet's worth is made per sample): only those of shadowsKnown are read.
+  struct Shadow {
+    Vec3 from;    // the origin the query was traced from
+    bool answer;  // blocked (opaque scenes), or the closest-hit query hit (`hit`)
+    Hit hit;
+  } shadow[kPacketLights];
+
+  // The answer traced ahead towards light `light` from `origin`, or nullptr.
+  const Shadow* shadowFrom(std::size_t light, const Vec3& origin) const;
+};
+
 class Tracer {
  public:
   // `footprint`: the world size of a pixel along primary rays, for edges drawn in pixel widths.
@@ -57,6 +84,11 @@ class Tracer {
 
   // `parallelView`: the ray is an orthographic primary ray, so the viewer is at infinity along it.
   TraceResult tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const;
+  // The primary rays of lanes `active` (up to kPacketSize neighbouring pixels or samples), each with
+  // the result tracePrimary gives it, to the bit: their first hits and their shadow rays to each
+  // light traced as packets (ray_packet.hpp), then each shaded on its own.
+  void tracePrimaries(std::span<const Ray, kPacketSize> rays, std::uint32_t active, bool parallelView,
+                      std::span<TraceResult, kPacketSize> results, TraceCounters& counters) const;
 
  private:
   // What a ray brings back: its colour, how far it went to the first thing it saw (infinity on a
@@ -77,19 +109,26 @@ class Tracer {
   };
   // `pathLength` is how far the ray's origin is from the eye along the path, for edge widths.
   TracedRay trace(const Ray& ray, int depth, float pathWeight, float pathLength, bool parallelView,
-                  TraceCounters& counters) const;
-  Sighting firstSighting(const Ray& ray) const;
+                  TraceCounters& counters, const PrimaryAhead* ahead = nullptr) const;
+  TraceResult tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters,
+                           const PrimaryAhead* ahead) const;
+  Sighting firstSighting(const Ray& ray, const PrimaryAhead* ahead = nullptr) const;
+  // Traces ahead, in packets, the first queries of the rays of `active` and their first shadow queries.
+  void traceAhead(std::span<const Ray, kPacketSize> rays, std::uint32_t active,
+                  std::span<PrimaryAhead, kPacketSize> ahead) const;
   // The Whitted step at a surface hit `distance` along the ray: the local model, then the reflected
   // and transmitted branches.
   Vec3 shadeSurface(const Ray& ray, const Hit& hit, float distance, int depth, float pathWeight,
-                    float pathLength, bool parallelView, TraceCounters& counters) const;
+                    float pathLength, bool parallelView, TraceCounters& counters,
+                    const PrimaryAhead* ahead) const;
   // One branch of the ray tree with its weight: traced (and absorbed by the medium it runs in) when
   // its path weight is worth it, else the point's local colour in its place.
   template <typename MakeRay>
   Vec3 traceBranch(const Vec3& weight, const Vec3& absorption, const Vec3& local, MakeRay&& makeRay,
                    int depth, float pathWeight, float pathLength, TraceCounters& counters) const;
   // The shadow-catcher floor at `point`: the background darkened by the meshes' shadows.
-  Vec3 shadeShadowCatcher(const Vec3& point, TraceCounters& counters, float& coverage) const;
+  Vec3 shadeShadowCatcher(const Vec3& point, TraceCounters& counters, float& coverage,
+                          const PrimaryAhead* ahead) const;
   // The accelerator's closest-hit and any-hit queries, seeing through the faces that per-mesh clip
   // planes remove when the scene has such planes (the plain queries otherwise).
   bool nearestHit(const Ray& ray, float tMin, float tMax, Hit& hit) const;
@@ -115,12 +154,18 @@ class Tracer {
   // Coverage of the hit face's drawn edges at the hit (0 when its mesh draws none).
   float edgeCoverageAt(const Ray& ray, const Hit& hit, float pathLength) const;
   // Paints the outer half of outline edges over what primary ray `ray` saw at `hitDistance`.
-  void paintOutlines(const Ray& ray, float hitDistance, TraceResult& result, TraceCounters& counters) const;
+  void paintOutlines(const Ray& ray, float hitDistance, TraceResult& result, TraceCounters& counters,
+                     const PrimaryAhead* ahead) const;
   Vec3 shadeLocal(const Ray& ray, const SurfacePoint& surface, const Material& material, bool parallelView,
-                  TraceCounters& counters) const;
+                  TraceCounters& counters, const PrimaryAhead* ahead = nullptr) const;
   // Fraction of the light that reaches `from` (0 when blocked by an opaque face; transparent faces
   // filter it by their transparency and tint, solids also by their absorption).
-  Vec3 lightTransmission(const Vec3& from, const Vec3& lightPosition, TraceCounters& counters) const;
+  // `ahead`: the first query, when traced ahead from `from`.
+  Vec3 lightTransmission(const Vec3& from, const Vec3& lightPosition, TraceCounters& counters,
+                         const PrimaryAhead::Shadow* ahead = nullptr) const;
+  // The shadow ray from `from` to `lightPosition` and the interval its first query covers; false
+  // when lightTransmission makes no query (the clip planes remove the whole way).
+  bool shadowQuery(const Vec3& from, const Vec3& lightPosition, Ray& ray, float& tMin, float& tMax) const;
 
   const Scene& scene_;
   const Accelerator& accelerator_;

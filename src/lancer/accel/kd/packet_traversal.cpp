@@ -1,0 +1,546 @@
+// Packet traversal of the kd-tree (Wald, Slusallek, Benthin & Wagner 2001, "Interactive Rendering
+// with Coherent Ray Tracing"; Wald's thesis 2004, section 7.2): eight rays that run the same way
+// along each axis walk the tree together, one SIMD lane each, with a mask of the lanes still
+// active in the current subtree. Every lane makes exactly the decisions the single-ray walk
+// (traversal.cpp) makes for it: the same cells, entered with the same intervals, pruned by the same
+// bound, and the same triangle tests in the same order (the packet only skips the cells that no
+// lane needs). So each lane's answer is the single ray's, to the bit. Rays that run different ways
+// along some axis (different near children) are traced one by one.
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <type_traits>
+
+#include "lancer/accel/kd/query.hpp"
+#include "lancer/accel/kd_tree.hpp"
+
+#if defined(__AVX2__) && defined(__FMA__)
+#include <immintrin.h>
+#define LANCER_PACKETS_AVX2 1
+#endif
+
+namespace lancer {
+namespace {
+
+using namespace kd;
+
+// The single-ray queries, lane by lane: the portable build, and packets whose rays diverge.
+template <typename Filter>
+std::uint32_t closestHitsOneByOne(const KdTree& tree, const RayPacket& packet, std::uint32_t active,
+                                  const Filter& keeps, std::span<Hit, kPacketSize> hits) {
+  std::uint32_t hitLanes = 0;
+  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    bool hit;
+    if constexpr (std::is_same_v<Filter, HitFilter>) {
+      hit = tree.intersect(packet.ray[i], packet.tMin[i], packet.tMax[i], keeps, hits[i]);
+    } else {
+      hit = tree.intersect(packet.ray[i], packet.tMin[i], packet.tMax[i], hits[i]);
+    }
+    hitLanes |= hit ? 1u << i : 0u;
+  }
+  return hitLanes;
+}
+
+template <typename Filter>
+std::uint32_t anyHitsOneByOne(const KdTree& tree, const RayPacket& packet, std::uint32_t active,
+                              const Filter& keeps) {
+  std::uint32_t hitLanes = 0;
+  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    bool hit;
+    if constexpr (std::is_same_v<Filter, HitFilter>) {
+      hit = tree.occluded(packet.ray[i], packet.tMin[i], packet.tMax[i], keeps);
+    } else {
+      hit = tree.occluded(packet.ray[i], packet.tMin[i], packet.tMax[i]);
+    }
+    hitLanes |= hit ? 1u << i : 0u;
+  }
+  return hitLanes;
+}
+
+#ifdef LANCER_PACKETS_AVX2
+
+inline std::uint32_t laneMask(__m256 condition) {
+  return static_cast<std::uint32_t>(_mm256_movemask_ps(condition));
+}
+
+// a b - c d as triangle_detail::differenceOfProducts computes it (Kahan's algorithm with FMA).
+inline __m256 differenceOfProducts(__m256 a, __m256 b, __m256 c, __m256 d) {
+  const __m256 cd = _mm256_mul_ps(c, d);
+  const __m256 cdError = _mm256_fnmadd_ps(c, d, cd);
+  return _mm256_add_ps(_mm256_fmsub_ps(a, b, cd), cdError);
+}
+
+// Per lane, the component of (x, y, z) along the lane's axis (is0: axis 0, is1: axis 1, else 2).
+inline __m256 pickAxis(__m256 x, __m256 y, __m256 z, __m256 is0, __m256 is1) {
+  return _mm256_blendv_ps(_mm256_blendv_ps(z, y, is1), x, is0);
+}
+
+// A triangle's corners relative to each lane's origin in the lane's sheared frame, as testTriangle
+// computes them, for finishing the test in double on the lanes whose edge functions agree in sign.
+struct ShearedCorners {
+  alignas(32) float ax[kPacketSize], ay[kPacketSize], az[kPacketSize];
+  alignas(32) float bx[kPacketSize], by[kPacketSize], bz[kPacketSize];
+  alignas(32) float cx[kPacketSize], cy[kPacketSize], cz[kPacketSize];
+};
+
+// The packet's rays, lane i of each register being ray i.
+struct PacketFrame {
+  __m256 origin[3];
+  __m256 invDirection[3];
+  __m256 nearEdge[3], farEdge[3];  // the split-plane band's edges, as in the single-ray walk
+  __m256 eps;
+  __m256 shearX, shearY;
+  __m256 kxIs0, kxIs1, kyIs0, kyIs1, kzIs0, kzIs1;
+  std::uint32_t firstIsRight[3];
+  alignas(32) float shearZ[kPacketSize];
+};
+
+// The lanes among `lanes` whose ray's line meets `tri` (the float half of testTriangle, bit for bit).
+inline std::uint32_t sameSignLanes(const PackedTriangle& tri, const PacketFrame& f, std::uint32_t lanes,
+                                   ShearedCorners& out) {
+  const __m256 ax0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.x), f.origin[0]);
+  const __m256 ay0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.y), f.origin[1]);
+  const __m256 az0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.z), f.origin[2]);
+  const __m256 bx0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.x), f.origin[0]);
+  const __m256 by0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.y), f.origin[1]);
+  const __m256 bz0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.z), f.origin[2]);
+  const __m256 cx0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.x), f.origin[0]);
+  const __m256 cy0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.y), f.origin[1]);
+  const __m256 cz0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.z), f.origin[2]);
+  const __m256 az = pickAxis(ax0, ay0, az0, f.kzIs0, f.kzIs1);
+  const __m256 bz = pickAxis(bx0, by0, bz0, f.kzIs0, f.kzIs1);
+  const __m256 cz = pickAxis(cx0, cy0, cz0, f.kzIs0, f.kzIs1);
+  // shear(x, s, z) = fma(-s, z, x)
+  const __m256 ax = _mm256_fnmadd_ps(f.shearX, az, pickAxis(ax0, ay0, az0, f.kxIs0, f.kxIs1));
+  const __m256 ay = _mm256_fnmadd_ps(f.shearY, az, pickAxis(ax0, ay0, az0, f.kyIs0, f.kyIs1));
+  const __m256 bx = _mm256_fnmadd_ps(f.shearX, bz, pickAxis(bx0, by0, bz0, f.kxIs0, f.kxIs1));
+  const __m256 by = _mm256_fnmadd_ps(f.shearY, bz, pickAxis(bx0, by0, bz0, f.kyIs0, f.kyIs1));
+  const __m256 cx = _mm256_fnmadd_ps(f.shearX, cz, pickAxis(cx0, cy0, cz0, f.kxIs0, f.kxIs1));
+  const __m256 cy = _mm256_fnmadd_ps(f.shearY, cz, pickAxis(cx0, cy0, cz0, f.kyIs0, f.kyIs1));
+  const __m256 u = differenceOfProducts(cx, by, cy, bx);
+  const __m256 v = differenceOfProducts(ax, cy, ay, cx);
+  const __m256 w = differenceOfProducts(bx, ay, by, ax);
+  const __m256 zero = _mm256_setzero_ps();
+  const __m256 allNonNegative =
+      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_GE_OQ), _mm256_cmp_ps(v, zero, _CMP_GE_OQ)),
+                    _mm256_cmp_ps(w, zero, _CMP_GE_OQ));
+  const __m256 allNonPositive =
+      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_LE_OQ), _mm256_cmp_ps(v, zero, _CMP_LE_OQ)),
+                    _mm256_cmp_ps(w, zero, _CMP_LE_OQ));
+  const std::uint32_t passed = laneMask(_mm256_or_ps(allNonNegative, allNonPositive)) & lanes;
+  if (passed != 0) {
+    _mm256_store_ps(out.ax, ax);
+    _mm256_store_ps(out.ay, ay);
+    _mm256_store_ps(out.az, az);
+    _mm256_store_ps(out.bx, bx);
+    _mm256_store_ps(out.by, by);
+    _mm256_store_ps(out.bz, bz);
+    _mm256_store_ps(out.cx, cx);
+    _mm256_store_ps(out.cy, cy);
+    _mm256_store_ps(out.cz, cz);
+  }
+  return passed;
+}
+
+inline TriangleHit finishLane(const ShearedCorners& c, const PacketFrame& f, int i, float tMin, float tMax) {
+  return triangle_detail::finishHit(c.ax[i], c.ay[i], c.az[i], c.bx[i], c.by[i], c.bz[i], c.cx[i], c.cy[i],
+                                    c.cz[i], f.shearZ[i], tMin, tMax);
+}
+
+// |x| per lane (std::abs).
+inline __m256 absolute(__m256 x) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), x); }
+
+// Sets up the frame of the lanes `active`, keeping in `active` those whose rays meet the scene box,
+// with each one's interval in the box: the single-ray walk's set-up (intersectAabb and the bands)
+// lane by lane. False when the rays run different ways along some axis.
+bool setUpFrame(const RayPacket& packet, std::uint32_t& active, const Aabb& bounds, float magnitude,
+                PacketFrame& f, __m256& tEnter, __m256& tExit) {
+  alignas(32) float lane[10][kPacketSize];
+  alignas(32) int axes[3][kPacketSize];
+  for (int i = 0; i < kPacketSize; ++i) {
+    if ((active >> i & 1u) == 0) {
+      for (float* row : lane) row[i] = 0.0f;
+      axes[0][i] = axes[1][i] = axes[2][i] = 0;
+      f.shearZ[i] = 0.0f;
+      continue;
+    }
+    const Ray& ray = packet.ray[i];
+    lane[0][i] = ray.origin.x;
+    lane[1][i] = ray.origin.y;
+    lane[2][i] = ray.origin.z;
+    lane[3][i] = ray.invDirection.x;
+    lane[4][i] = ray.invDirection.y;
+    lane[5][i] = ray.invDirection.z;
+    lane[6][i] = ray.shearX;
+    lane[7][i] = ray.shearY;
+    lane[8][i] = packet.tMin[i];
+    lane[9][i] = packet.tMax[i];
+    f.shearZ[i] = ray.shearZ;
+    axes[0][i] = ray.kx;
+    axes[1][i] = ray.ky;
+    axes[2][i] = ray.kz;
+  }
+  for (int a = 0; a < 3; ++a) {
+    f.origin[a] = _mm256_load_ps(lane[a]);
+    f.invDirection[a] = _mm256_load_ps(lane[3 + a]);
+  }
+  // intersectAabb, lane by lane (NaN from 0 * inf leaves the span as it is).
+  const float lower[3] = {bounds.lower.x, bounds.lower.y, bounds.lower.z};
+  const float upper[3] = {bounds.upper.x, bounds.upper.y, bounds.upper.z};
+  __m256 tIn = _mm256_load_ps(lane[8]), tOut = _mm256_load_ps(lane[9]);
+  for (int a = 0; a < 3; ++a) {
+    const __m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(lower[a]), f.origin[a]), f.invDirection[a]);
+    const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(upper[a]), f.origin[a]), f.invDirection[a]);
+    const __m256 swap = _mm256_cmp_ps(t0, t1, _CMP_GT_OQ);
+    const __m256 near = _mm256_blendv_ps(t0, t1, swap), far = _mm256_blendv_ps(t1, t0, swap);
+    tIn = _mm256_blendv_ps(tIn, near, _mm256_cmp_ps(near, tIn, _CMP_GT_OQ));
+    tOut = _mm256_blendv_ps(tOut, far, _mm256_cmp_ps(far, tOut, _CMP_LT_OQ));
+  }
+  active &= laneMask(_mm256_cmp_ps(tIn, tOut, _CMP_LE_OQ));
+  const __m256 zero = _mm256_setzero_ps();
+  const __m256 band = _mm256_mul_ps(
+      _mm256_set1_ps(kPlaneSlack),
+      _mm256_max_ps(
+          _mm256_set1_ps(magnitude),
+          _mm256_max_ps(_mm256_max_ps(absolute(f.origin[0]), absolute(f.origin[1])), absolute(f.origin[2]))));
+  for (int a = 0; a < 3; ++a) {
+    const __m256 towardsMinus = _mm256_cmp_ps(f.invDirection[a], zero, _CMP_LT_OQ);
+    const std::uint32_t right = laneMask(towardsMinus) & active;
+    if (right != 0 && right != active) return false;
+    f.firstIsRight[a] = right != 0 ? 1u : 0u;
+    const __m256 signedBand =
+        _mm256_blendv_ps(band, _mm256_xor_ps(band, _mm256_set1_ps(-0.0f)), towardsMinus);
+    f.nearEdge[a] = _mm256_add_ps(f.origin[a], signedBand);
+    f.farEdge[a] = _mm256_sub_ps(f.origin[a], signedBand);
+  }
+  f.eps = _mm256_mul_ps(_mm256_set1_ps(kSlack), _mm256_max_ps(absolute(tIn), absolute(tOut)));
+  f.shearX = _mm256_load_ps(lane[6]);
+  f.shearY = _mm256_load_ps(lane[7]);
+  auto isAxis = [&](int which, int axis) {
+    const __m256i values = _mm256_load_si256(reinterpret_cast<const __m256i*>(axes[which]));
+    return _mm256_castsi256_ps(_mm256_cmpeq_epi32(values, _mm256_set1_epi32(axis)));
+  };
+  f.kxIs0 = isAxis(0, 0);
+  f.kxIs1 = isAxis(0, 1);
+  f.kyIs0 = isAxis(1, 0);
+  f.kyIs1 = isAxis(1, 1);
+  f.kzIs0 = isAxis(2, 0);
+  f.kzIs1 = isAxis(2, 1);
+  tEnter = tIn;
+  tExit = tOut;
+  return true;
+}
+
+// A cell the packet visits later: `lanes` enter it, and those of `direct` (which the single-ray
+// walk would have gone to at once, without a look at its bound) are not pruned when it is popped.
+struct alignas(32) PacketStackEntry {
+  __m256 tEnter, tExit;
+  std::uint32_t node, lanes, direct;
+};
+
+inline float laneOf(__m256 v, int lane) {
+  alignas(32) float values[kPacketSize];
+  _mm256_store_ps(values, v);
+  return values[lane];
+}
+
+// The rest of a subtree for the one lane left in it: the single-ray walk's steps (traversal.cpp),
+// in scalar, from `node` with the lane's interval; testLeaf(leaf, lanes) tests a leaf's triangles.
+// Returns whether the lane is done (any-hit: blocked).
+template <typename Query, typename TestLeaf>
+bool walkLane(const KdNode* base, const KdNode* node, const PacketFrame& f, int lane, float tEnter,
+              float tExit, const Query& query, TestLeaf& testLeaf) {
+  float nearEdge[3], farEdge[3], invDirection[3];
+  for (int a = 0; a < 3; ++a) {
+    nearEdge[a] = laneOf(f.nearEdge[a], lane);
+    farEdge[a] = laneOf(f.farEdge[a], lane);
+    invDirection[a] = laneOf(f.invDirection[a], lane);
+  }
+  const float eps = laneOf(f.eps, lane);
+  const std::uint32_t bit = 1u << lane;
+  struct Entry {
+    std::uint32_t node;
+    float tEnter, tExit;
+  } stack[KdTree::kMaxDepth + 2];
+  int top = 0;
+  while (true) {
+    while (!node->isLeaf()) {
+      const int axis = node->axis();
+      const float split = node->split();
+      const float tNear = (split - nearEdge[axis]) * invDirection[axis];
+      const float tFar = (split - farEdge[axis]) * invDirection[axis];
+      const KdNode* first = base + node->firstChild() + f.firstIsRight[axis];
+      const KdNode* second = base + node->firstChild() + (f.firstIsRight[axis] ^ 1u);
+      if (tNear > tExit + eps) {
+        node = first;
+      } else if (tFar < tEnter - eps) {
+        node = second;
+      } else {
+        stack[top++] = {static_cast<std::uint32_t>(second - base), tNear > tEnter ? tNear : tEnter, tExit};
+        if (!second->isLeaf()) __builtin_prefetch(base + second->firstChild());
+        node = first;
+        tExit = tFar < tExit ? tFar : tExit;
+      }
+    }
+    if (testLeaf(node, bit) != 0) return true;
+    do {
+      if (top == 0) return false;
+      --top;
+      node = base + stack[top].node;
+      tEnter = stack[top].tEnter;
+      tExit = stack[top].tExit;
+    } while (tEnter > query.laneBound(lane) + eps);
+  }
+}
+
+// Walks the tree with the lanes `active`; Query::test(tri, lanes) tests a triangle on some lanes
+// and returns those that are done (any-hit: blocked), Query::bound() is each lane's pruning
+// distance. A lane left alone in a subtree finishes it on its own (walkLane). Returns the lanes
+// that are done.
+template <typename Query>
+std::uint32_t walkPacket(std::span<const KdNode> layout, const PacketFrame& f, std::uint32_t active,
+                         __m256 tEnter, __m256 tExit, Query& query) {
+  PacketStackEntry stack[KdTree::kMaxDepth + 2];
+  struct MailboxSlot {
+    std::uint32_t triangle = 0xFFFFFFFFu, lanes = 0;
+  } mailbox[kMailboxSize];
+  int top = 0;
+  std::uint32_t done = 0;
+  std::uint32_t lanes = active;
+  const KdNode* base = layout.data();
+  const KdNode* node = base;
+  // Tests a leaf's triangles on `lanes`; returns the lanes that are done.
+  auto testLeaf = [&](const KdNode* leaf, std::uint32_t testLanes) {
+    const std::uint32_t count = leaf->triangleCount();
+    const std::uint32_t* index =
+        count == 1 ? &leaf->payload : reinterpret_cast<const std::uint32_t*>(base + leaf->payload);
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const char* tri = reinterpret_cast<const char*>(base + index[i]);
+      __builtin_prefetch(tri);
+      __builtin_prefetch(tri + sizeof(PackedTriangle) - 1);
+    }
+    std::uint32_t finishedLanes = 0;
+    for (std::uint32_t i = 0; i < count && testLanes != 0; ++i) {
+      const std::uint32_t triangle = index[i];
+      // One mailbox for the packet, remembering which lanes tested each triangle.
+      MailboxSlot& slot = mailbox[triangle & (kMailboxSize - 1)];
+      std::uint32_t untested = testLanes;
+      if (slot.triangle == triangle) {
+        untested &= ~slot.lanes;
+        slot.lanes |= testLanes;
+      } else {
+        slot = {triangle, testLanes};
+      }
+      if (untested == 0) continue;
+      const std::uint32_t finished =
+          query.test(*reinterpret_cast<const PackedTriangle*>(base + triangle), untested);
+      finishedLanes |= finished;
+      testLanes &= ~finished;
+    }
+    return finishedLanes;
+  };
+  while (true) {
+    bool alone = false;
+    while (!node->isLeaf()) {
+      if ((lanes & (lanes - 1)) == 0) {
+        alone = true;
+        break;
+      }
+      const int axis = node->axis();
+      const __m256 split = _mm256_set1_ps(node->split());
+      const __m256 tNear = _mm256_mul_ps(_mm256_sub_ps(split, f.nearEdge[axis]), f.invDirection[axis]);
+      const __m256 tFar = _mm256_mul_ps(_mm256_sub_ps(split, f.farEdge[axis]), f.invDirection[axis]);
+      // The single-ray walk's three cases per lane: only the first child (tNear beyond the cell),
+      // only the second (tFar before it), or both, the second from tNear on and the first up to tFar.
+      const std::uint32_t beyond =
+          laneMask(_mm256_cmp_ps(tNear, _mm256_add_ps(tExit, f.eps), _CMP_GT_OQ)) & lanes;
+      const std::uint32_t before =
+          laneMask(_mm256_cmp_ps(tFar, _mm256_sub_ps(tEnter, f.eps), _CMP_LT_OQ)) & lanes & ~beyond;
+      const std::uint32_t firstLanes = lanes & ~before, secondLanes = lanes & ~beyond;
+      const std::uint32_t firstIsRight = f.firstIsRight[axis];
+      const KdNode* first = base + node->firstChild() + firstIsRight;
+      const KdNode* second = base + node->firstChild() + (firstIsRight ^ 1u);
+      const __m256 secondEnter = _mm256_blendv_ps(tEnter, tNear, _mm256_cmp_ps(tNear, tEnter, _CMP_GT_OQ));
+      const __m256 firstExit = _mm256_blendv_ps(tExit, tFar, _mm256_cmp_ps(tFar, tExit, _CMP_LT_OQ));
+      if (secondLanes == 0) {
+        node = first;
+      } else if (firstLanes == 0) {
+        node = second;
+        tEnter = secondEnter;
+        lanes = secondLanes;
+        continue;
+      } else {
+        stack[top++] = {secondEnter, tExit, static_cast<std::uint32_t>(second - base), secondLanes, before};
+        if (!second->isLeaf()) __builtin_prefetch(base + second->firstChild());
+        node = first;
+      }
+      // Lanes that only go to the first child keep their exit: tFar is beyond it (see traversal.cpp).
+      tExit = firstExit;
+      lanes = firstLanes;
+    }
+    std::uint32_t finished;
+    if (alone) {
+      const int lane = std::countr_zero(lanes);
+      finished = walkLane(base, node, f, lane, laneOf(tEnter, lane), laneOf(tExit, lane), query, testLeaf)
+                     ? lanes
+                     : 0u;
+    } else {
+      finished = testLeaf(node, lanes);
+    }
+    if (finished != 0) {
+      done |= finished;
+      if ((active & ~done) == 0) return done;
+    }
+    do {
+      if (top == 0) return done;
+      --top;
+      node = base + stack[top].node;
+      tEnter = stack[top].tEnter;
+      tExit = stack[top].tExit;
+      // Cells further than a lane's best hit (plus slack) cannot hold a closer or tied hit.
+      const std::uint32_t pruned =
+          laneMask(_mm256_cmp_ps(tEnter, _mm256_add_ps(query.bound(), f.eps), _CMP_GT_OQ)) &
+          ~stack[top].direct;
+      lanes = stack[top].lanes & ~done & ~pruned;
+    } while (lanes == 0);
+  }
+}
+
+template <typename Filter>
+struct PacketClosestHit {
+  const RayPacket& packet;
+  const PacketFrame& frame;
+  const Filter& keeps;
+  Hit best[kPacketSize];
+  float upper[kPacketSize];
+  alignas(32) float bestT[kPacketSize];
+
+  std::uint32_t test(const PackedTriangle& tri, std::uint32_t lanes) {
+    ShearedCorners corners;
+    for (std::uint32_t hit = sameSignLanes(tri, frame, lanes, corners); hit != 0; hit &= hit - 1) {
+      const int i = std::countr_zero(hit);
+      const TriangleHit h = finishLane(corners, frame, i, packet.tMin[i], upper[i]);
+      if (takeIfCloser(h, tri.face, packet.ray[i], packet.tMax[i], keeps, best[i], upper[i]))
+        bestT[i] = best[i].t;
+    }
+    return 0;
+  }
+  __m256 bound() const { return _mm256_load_ps(bestT); }
+  float laneBound(int lane) const { return bestT[lane]; }
+};
+
+template <typename Filter>
+struct PacketAnyHit {
+  const RayPacket& packet;
+  const PacketFrame& frame;
+  const Filter& keeps;
+  alignas(32) float tMax[kPacketSize];
+
+  std::uint32_t test(const PackedTriangle& tri, std::uint32_t lanes) const {
+    ShearedCorners corners;
+    std::uint32_t blocked = 0;
+    for (std::uint32_t hit = sameSignLanes(tri, frame, lanes, corners); hit != 0; hit &= hit - 1) {
+      const int i = std::countr_zero(hit);
+      const float t = finishLane(corners, frame, i, packet.tMin[i], packet.tMax[i]).t;
+      if (t >= 0.0f && keeps(packet.ray[i], tri.face, t)) blocked |= 1u << i;
+    }
+    return blocked;
+  }
+  __m256 bound() const { return _mm256_load_ps(tMax); }
+  float laneBound(int lane) const { return tMax[lane]; }
+};
+
+#endif  // LANCER_PACKETS_AVX2
+
+}  // namespace
+
+template <typename Filter>
+std::uint32_t KdTree::closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
+                                  std::span<Hit, kPacketSize> hits) const {
+  active &= kAllLanes;
+#ifdef LANCER_PACKETS_AVX2
+  if (std::popcount(active) < 2) return closestHitsOneByOne(*this, packet, active, keeps, hits);
+  PacketFrame frame;
+  PacketClosestHit<Filter> query{packet, frame, keeps, {}, {}, {}};
+  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    query.best[i] = Hit{packet.tMax[i], Hit{}.face};
+    query.upper[i] = packet.tMax[i];
+    for (const PackedTriangle& tri : slivers_) {
+      takeIfCloser(testTriangle(tri, packet.ray[i], packet.tMin[i], query.upper[i]), tri.face, packet.ray[i],
+                   packet.tMax[i], keeps, query.best[i], query.upper[i]);
+    }
+    query.bestT[i] = query.best[i].t;
+  }
+  std::uint32_t inBox = active;
+  __m256 tEnter, tExit;
+  if (!setUpFrame(packet, inBox, bounds_, magnitude_, frame, tEnter, tExit)) {
+    return closestHitsOneByOne(*this, packet, active, keeps, hits);
+  }
+  if (inBox != 0) walkPacket(layout_, frame, inBox, tEnter, tExit, query);
+  std::uint32_t hitLanes = 0;
+  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    if (!query.best[i].valid()) continue;
+    hits[i] = query.best[i];
+    hitLanes |= 1u << i;
+  }
+  return hitLanes;
+#else
+  return closestHitsOneByOne(*this, packet, active, keeps, hits);
+#endif
+}
+
+template <typename Filter>
+std::uint32_t KdTree::anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const {
+  active &= kAllLanes;
+#ifdef LANCER_PACKETS_AVX2
+  if (std::popcount(active) < 2) return anyHitsOneByOne(*this, packet, active, keeps);
+  std::uint32_t blocked = 0;
+  for (std::uint32_t lanes = active; lanes != 0 && !slivers_.empty(); lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    for (const PackedTriangle& tri : slivers_) {
+      const float t = intersectTriangle(tri, packet.ray[i], packet.tMin[i], packet.tMax[i]);
+      if (t >= 0.0f && keeps(packet.ray[i], tri.face, t)) {
+        blocked |= 1u << i;
+        break;
+      }
+    }
+  }
+  std::uint32_t inBox = active & ~blocked;
+  if (inBox == 0) return blocked;
+  PacketFrame frame;
+  __m256 tEnter, tExit;
+  if (!setUpFrame(packet, inBox, bounds_, magnitude_, frame, tEnter, tExit)) {
+    return blocked | anyHitsOneByOne(*this, packet, active & ~blocked, keeps);
+  }
+  if (inBox == 0) return blocked;
+  PacketAnyHit<Filter> query{packet, frame, keeps, {}};
+  for (int i = 0; i < kPacketSize; ++i) query.tMax[i] = (inBox >> i & 1u) != 0 ? packet.tMax[i] : 0.0f;
+  return blocked | walkPacket(layout_, frame, inBox, tEnter, tExit, query);
+#else
+  return anyHitsOneByOne(*this, packet, active, keeps);
+#endif
+}
+
+std::uint32_t KdTree::intersect(const RayPacket& packet, std::uint32_t active,
+                                std::span<Hit, kPacketSize> hits) const {
+  return closestHits(packet, active, KeepEveryHit{}, hits);
+}
+
+std::uint32_t KdTree::occluded(const RayPacket& packet, std::uint32_t active) const {
+  return anyHits(packet, active, KeepEveryHit{});
+}
+
+std::uint32_t KdTree::intersect(const RayPacket& packet, std::uint32_t active, const HitFilter& filter,
+                                std::span<Hit, kPacketSize> hits) const {
+  return closestHits(packet, active, filter, hits);
+}
+
+std::uint32_t KdTree::occluded(const RayPacket& packet, std::uint32_t active, const HitFilter& filter) const {
+  return anyHits(packet, active, filter);
+}
+
+}  // namespace lancer

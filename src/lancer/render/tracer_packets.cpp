@@ -1,0 +1,105 @@
+// Primary rays in packets: the first hits of up to eight neighbouring primary rays, then their
+// shadow rays to each light, traced as packets (accel/ray_packet.hpp) ahead of the shading, which
+// then runs ray by ray as for single rays and takes each answer traced ahead for its own query.
+#include <algorithm>
+#include <bit>
+
+#include "lancer/render/ray_offset.hpp"
+#include "lancer/render/tracer.hpp"
+
+namespace lancer {
+
+void Tracer::tracePrimaries(std::span<const Ray, kPacketSize> rays, std::uint32_t active, bool parallelView,
+                            std::span<TraceResult, kPacketSize> results, TraceCounters& counters) const {
+  PrimaryAhead ahead[kPacketSize];
+  traceAhead(rays, active, ahead);
+  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    results[i] = tracePrimary(rays[i], parallelView, counters, &ahead[i]);
+  }
+}
+
+void Tracer::traceAhead(std::span<const Ray, kPacketSize> rays, std::uint32_t active,
+                        std::span<PrimaryAhead, kPacketSize> ahead) const {
+  // The first query of each ray, as firstSighting makes it: the part kept by the scene's planes.
+  RayPacket packet;
+  std::uint32_t queried = 0;
+  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    packet.ray[i] = rays[i];
+    ahead[i].hitKnown = true;
+    const ClipInterval kept = clipRay(rays[i], scene_.clipping.planes);
+    if (kept.empty()) continue;
+    packet.tMin[i] = kept.enter;
+    packet.tMax[i] = kept.exit;
+    queried |= 1u << i;
+  }
+  Hit hits[kPacketSize];
+  const std::uint32_t hitLanes = queried == 0 ? 0u
+                                 : anyMeshClips_
+                                     ? accelerator_.intersect(packet, queried, meshClipFilter_, hits)
+                                     : accelerator_.intersect(packet, queried, hits);
+  for (std::uint32_t lanes = hitLanes; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    ahead[i].hit = true;
+    ahead[i].firstHit = hits[i];
+  }
+  if (scene_.appearance.lights.empty()) return;
+
+  // Where each ray's shadow rays start: from the surface it sees (as shadeLocal) or the shadow
+  // catcher (as shadeShadowCatcher). Caps and misses cast none ahead.
+  Vec3 from[kPacketSize], point[kPacketSize], normal[kPacketSize];
+  std::uint32_t onSurface = 0, onCatcher = 0;
+  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    const Sighting seen = firstSighting(rays[i], &ahead[i]);
+    if (seen.kind == Sighting::Kind::kSurface) {
+      ahead[i].surface = makeSurfacePoint(scene_, rays[i], seen.hit);
+      ahead[i].surfaceKnown = true;
+      const SurfacePoint& surface = ahead[i].surface;
+      point[i] = surface.position;
+      normal[i] = surface.geometricNormal;
+      from[i] = offsetRayOrigin(surface.position, surface.positionError, surface.geometricNormal);
+      onSurface |= 1u << i;
+    } else if (seen.kind == Sighting::Kind::kShadowCatcher) {
+      point[i] = rays[i].at(seen.t);
+      normal[i] = scene_.shadowCatcher->normal;
+      from[i] = offsetRayOrigin(point[i], normal[i]);
+      onCatcher |= 1u << i;
+    }
+  }
+  const std::size_t lightCount = std::min<std::size_t>(scene_.appearance.lights.size(), kPacketLights);
+  RayPacket shadow;
+  for (std::size_t l = 0; l < lightCount; ++l) {
+    const Vec3& lightPosition = scene_.appearance.lights[l].position;
+    std::uint32_t traced = 0;
+    for (std::uint32_t lanes = onSurface | onCatcher; lanes != 0; lanes &= lanes - 1) {
+      const int i = std::countr_zero(lanes);
+      // Only towards lights in front of the point (the shading tests the same before it asks).
+      const Vec3 toLight = lightPosition - point[i];
+      const float distance = length(toLight);
+      if (!(distance > 0.0f) || dot(normal[i], toLight) <= 0.0f) continue;
+      if (!shadowQuery(from[i], lightPosition, shadow.ray[i], shadow.tMin[i], shadow.tMax[i])) continue;
+      traced |= 1u << i;
+    }
+    if (traced == 0) continue;
+    std::uint32_t answered;
+    if (!anyTransparent_) {
+      answered = anyMeshClips_ ? accelerator_.occluded(shadow, traced, meshClipFilter_)
+                               : accelerator_.occluded(shadow, traced);
+    } else {
+      answered = anyMeshClips_ ? accelerator_.intersect(shadow, traced, meshClipFilter_, hits)
+                               : accelerator_.intersect(shadow, traced, hits);
+    }
+    for (std::uint32_t lanes = traced; lanes != 0; lanes &= lanes - 1) {
+      const int i = std::countr_zero(lanes);
+      PrimaryAhead::Shadow& answer = ahead[i].shadow[l];
+      ahead[i].shadowsKnown |= 1u << l;
+      answer.from = from[i];
+      answer.answer = (answered >> i & 1u) != 0;
+      if (anyTransparent_ && answer.answer) answer.hit = hits[i];
+    }
+  }
+}
+
+}  // namespace lancer

@@ -1,0 +1,292 @@
+// Property: the kd-tree's packet queries answer every lane exactly as the single-ray query does
+// (same hit or miss, same face, same t, same barycentrics, to the bit; same occlusion), on the
+// adversarial ray sets of the kd-tree property test grouped eight at a time by direction (so that the
+// packet walks the tree together) and in arrival order (mixed directions, traced one by one), on
+// coherent camera and shadow packets, through the clipped queries, and on the watertight rays.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <random>
+#include <string>
+
+#include "lancer/accel/accelerator.hpp"
+#include "lancer/mesh/msh_reader.hpp"
+#include "lancer/scene/face_clip_sets.hpp"
+#include "support/accel_test_geometry.hpp"
+
+namespace lancer {
+namespace {
+
+using test::Soup;
+using test::TestRay;
+
+// The rays in packets of eight: sorted by the signs of their directions (coherent packets), or as
+// they come (mixed). Every fifth packet leaves a lane out.
+std::vector<std::pair<RayPacket, std::uint32_t>> packetsOf(std::vector<TestRay> rays, bool bySigns) {
+  if (bySigns) {
+    auto signs = [](const TestRay& r) {
+      return (r.ray.invDirection.x < 0) | (r.ray.invDirection.y < 0) << 1 | (r.ray.invDirection.z < 0) << 2;
+    };
+    std::stable_sort(rays.begin(), rays.end(),
+                     [&](const TestRay& a, const TestRay& b) { return signs(a) < signs(b); });
+  }
+  std::vector<std::pair<RayPacket, std::uint32_t>> packets;
+  for (std::size_t first = 0; first < rays.size(); first += kPacketSize) {
+    RayPacket packet;
+    std::uint32_t active = 0;
+    for (int i = 0; i < kPacketSize && first + i < rays.size(); ++i) {
+      packet.ray[i] = rays[first + i].ray;
+      packet.tMin[i] = rays[first + i].tMin;
+      packet.tMax[i] = rays[first + i].tMax;
+      active |= 1u << i;
+    }
+    if (packets.size() % 5 == 4) active &= ~(1u << (packets.size() / 5 % kPacketSize));
+    packets.emplace_back(packet, active);
+  }
+  return packets;
+}
+
+bool sameBits(const Hit& a, const Hit& b) {
+  return a.face == b.face && std::bit_cast<std::uint32_t>(a.t) == std::bit_cast<std::uint32_t>(b.t) &&
+         std::bit_cast<std::uint32_t>(a.b1) == std::bit_cast<std::uint32_t>(b.b1) &&
+         std::bit_cast<std::uint32_t>(a.b2) == std::bit_cast<std::uint32_t>(b.b2);
+}
+
+// Traces every packet both ways and counts the lanes that differ; `hits` counts the lanes that hit.
+template <typename Single, typename Packet, typename SingleOccluded, typename PacketOccluded>
+int countDifferences(const std::vector<std::pair<RayPacket, std::uint32_t>>& packets, Single single,
+                     Packet packetQuery, SingleOccluded singleOccluded, PacketOccluded packetOccluded,
+                     int& hits) {
+  int failures = 0;
+  for (const auto& [packet, active] : packets) {
+    Hit packetHits[kPacketSize];
+    const std::uint32_t hitLanes = packetQuery(packet, active, std::span<Hit, kPacketSize>(packetHits));
+    const std::uint32_t blockedLanes = packetOccluded(packet, active);
+    EXPECT_EQ(hitLanes & ~active, 0u);
+    EXPECT_EQ(blockedLanes & ~active, 0u);
+    for (int i = 0; i < kPacketSize; ++i) {
+      if ((active >> i & 1u) == 0) continue;
+      Hit expected;
+      const bool expectHit = single(packet.ray[i], packet.tMin[i], packet.tMax[i], expected);
+      const bool gotHit = (hitLanes >> i & 1u) != 0;
+      const bool expectBlocked = singleOccluded(packet.ray[i], packet.tMin[i], packet.tMax[i]);
+      const bool gotBlocked = (blockedLanes >> i & 1u) != 0;
+      hits += expectHit;
+      const bool same = expectHit == gotHit && (!expectHit || sameBits(expected, packetHits[i])) &&
+                        expectBlocked == gotBlocked;
+      if (!same && ++failures <= 5) {
+        ADD_FAILURE() << "lane " << i << ": single " << (expectHit ? std::to_string(expected.face) : "miss")
+                      << " t " << expected.t << " b " << expected.b1 << "," << expected.b2 << " blocked "
+                      << expectBlocked << "; packet "
+                      << (gotHit ? std::to_string(packetHits[i].face) : "miss") << " t " << packetHits[i].t
+                      << " b " << packetHits[i].b1 << "," << packetHits[i].b2 << " blocked " << gotBlocked;
+      }
+    }
+  }
+  return failures;
+}
+
+int countDifferences(const KdTree& tree, const std::vector<std::pair<RayPacket, std::uint32_t>>& packets,
+                     int& hits) {
+  return countDifferences(
+      packets, [&](const Ray& r, float a, float b, Hit& h) { return tree.intersect(r, a, b, h); },
+      [&](const RayPacket& p, std::uint32_t m, std::span<Hit, kPacketSize> h) {
+        return tree.intersect(p, m, h);
+      },
+      [&](const Ray& r, float a, float b) { return tree.occluded(r, a, b); },
+      [&](const RayPacket& p, std::uint32_t m) { return tree.occluded(p, m); }, hits);
+}
+
+// Pinhole views of the soup's box from several sides in 4x2-pixel packets, and from the points
+// they hit, shadow packets towards a point light (t up to 1).
+std::vector<TestRay> coherentRays(const Soup& soup, const KdTree& tree, std::mt19937& rng) {
+  Aabb box;
+  for (const Vec3& p : soup.positions) box.extend(p);
+  std::vector<TestRay> rays;
+  for (int view = 0; view < 6; ++view) {
+    const Vec3 eye = box.center() + test::randomDirection(rng) * (length(box.extent()) * 1.5f);
+    const Vec3 forward = normalize(box.center() - eye);
+    const Vec3 right = normalize(cross(forward, std::abs(forward.z) < 0.9f ? Vec3{0, 0, 1} : Vec3{1, 0, 0}));
+    const Vec3 up = cross(right, forward);
+    const Vec3 light = box.center() + test::randomDirection(rng) * (length(box.extent()) * 2.0f);
+    const int size = 32;
+    for (int by = 0; by < size; by += 2) {
+      for (int bx = 0; bx < size; bx += 4) {
+        for (int p = 0; p < kPacketSize; ++p) {
+          const float u = (float(bx + p % 4) + 0.5f) / size - 0.5f,
+                      v = (float(by + p / 4) + 0.5f) / size - 0.5f;
+          TestRay r;
+          r.ray = Ray(eye, forward + right * u + up * v);
+          rays.push_back(r);
+        }
+      }
+    }
+    // Shadow rays from each hit, in the same order (so neighbours stay neighbours).
+    const std::size_t primaryEnd = rays.size();
+    for (std::size_t i = primaryEnd - size * size; i < primaryEnd; ++i) {
+      Hit hit;
+      if (!tree.intersect(rays[i].ray, 0.0f, rays[i].tMax, hit)) continue;
+      TestRay s;
+      const Vec3 from = rays[i].ray.at(hit.t * 0.999f);
+      s.ray = Ray(from, light - from);
+      s.tMax = 1.0f;
+      rays.push_back(s);
+    }
+  }
+  return rays;
+}
+
+void expectSameAnswers(const Soup& soup, int rayCount, std::uint32_t seed) {
+  KdBuildOptions serial;
+  serial.threads = 1;
+  KdBuildOptions deep = serial;
+  deep.traversalCost = 0.1f;
+  const KdTree trees[] = {KdTree::buildSah(soup.positions, soup.faces, serial),
+                          KdTree::buildSah(soup.positions, soup.faces, deep),
+                          KdTree::buildMedian(soup.positions, soup.faces, serial)};
+  for (const KdTree& tree : trees) {
+    SCOPED_TRACE(tree.stats().kind + " depth " + std::to_string(tree.stats().depth));
+    std::mt19937 rng(seed);
+    const std::vector<TestRay> rays = test::adversarialRays(soup, tree, rng, rayCount);
+    int hits = 0;
+    EXPECT_EQ(countDifferences(tree, packetsOf(rays, true), hits), 0) << "coherent packets";
+    EXPECT_EQ(countDifferences(tree, packetsOf(rays, false), hits), 0) << "mixed packets";
+    EXPECT_GT(hits, static_cast<int>(rays.size()) / 5);
+    hits = 0;
+    EXPECT_EQ(countDifferences(tree, packetsOf(coherentRays(soup, tree, rng), false), hits), 0)
+        << "camera and shadow packets";
+    EXPECT_GT(hits, 400);
+  }
+}
+
+TEST(PacketQueryProperty, RandomSoup) {
+  std::mt19937 rng(1);
+  expectSameAnswers(test::randomSoup(rng, 1500), 4000, 11);
+}
+
+TEST(PacketQueryProperty, GridBoxWithVerticesOnSplitPlanes) {
+  expectSameAnswers(test::gridBox(12), 8000, 12);
+}
+
+TEST(PacketQueryProperty, TessellatedSphere) { expectSameAnswers(test::sphere(40, 60), 6000, 13); }
+
+TEST(PacketQueryProperty, DegenerateAndCoplanarFaces) {
+  std::mt19937 rng(4);
+  Soup soup = test::adversarialSoup(rng);
+  const Soup grid = test::gridBox(4);
+  for (MeshFace f : grid.faces) {
+    for (std::uint32_t& v : f.vertex) {
+      if (v != kNoVertex) v += static_cast<std::uint32_t>(soup.positions.size());
+    }
+    soup.faces.push_back(f);
+  }
+  for (const Vec3& p : grid.positions) soup.positions.push_back(p * 0.25f);
+  expectSameAnswers(soup, 8000, 14);
+}
+
+Soup loadFixture(const std::string& name) {
+  const Mesh mesh = readMsh(std::string(LANCER_TEST_DATA_DIR) + "/" + name);
+  return Soup{mesh.positions, mesh.faces};
+}
+
+TEST(PacketQueryProperty, GmshHoledBlockAndQuadBox) {
+  expectSameAnswers(loadFixture("accel/holed_block.msh"), 5000, 15);
+  expectSameAnswers(loadFixture("accel/quad_box.msh"), 5000, 16);
+}
+
+TEST(PacketQueryProperty, ClippedQueriesSeeThroughTheSameFaces) {
+  // A sphere cut by two planes of its own inside a grid box: rays pass removed faces.
+  Soup soup = test::sphere(24, 32, {2, 2, 2}, 1.5f);
+  const auto sphereFaces = static_cast<std::uint32_t>(soup.faces.size());
+  const Soup box = test::gridBox(4);
+  const auto base = static_cast<std::uint32_t>(soup.positions.size());
+  soup.positions.insert(soup.positions.end(), box.positions.begin(), box.positions.end());
+  for (MeshFace face : box.faces) {
+    for (int c = 0; c < face.cornerCount(); ++c) face.vertex[c] += base;
+    soup.faces.push_back(face);
+  }
+  FaceClipSets clips;
+  clips.planes = {{{2, 2, 2}, normalize(Vec3{1, 0.3f, 0})}, {{2, 2.5f, 2}, {0, 0, 1}}};
+  clips.caps = {1, 1};
+  clips.ranges.push_back({0, sphereFaces, 0, 2});
+  const HitFilter filter{&clips, [](const void* c, const Ray& ray, std::uint32_t face, float t) {
+                           return static_cast<const FaceClipSets*>(c)->keeps(ray, face, t);
+                         }};
+  for (AccelKind kind : {AccelKind::KdTreeSah, AccelKind::KdTreeMedian, AccelKind::Naive}) {
+    SCOPED_TRACE(std::string(accelKindName(kind)));
+    const Accelerator accel = Accelerator::build(soup.positions, soup.faces, kind);
+    const KdTree tree = KdTree::buildSah(soup.positions, soup.faces);
+    std::mt19937 rng(7);
+    std::vector<TestRay> rays = test::adversarialRays(soup, tree, rng, 3000);
+    const std::vector<TestRay> coherent = coherentRays(soup, tree, rng);
+    rays.insert(rays.end(), coherent.begin(), coherent.end());
+    for (const bool bySigns : {true, false}) {
+      int hits = 0;
+      const int clipped = countDifferences(
+          packetsOf(rays, bySigns),
+          [&](const Ray& r, float a, float b, Hit& h) { return accel.intersect(r, a, b, filter, h); },
+          [&](const RayPacket& p, std::uint32_t m, std::span<Hit, kPacketSize> h) {
+            return accel.intersect(p, m, filter, h);
+          },
+          [&](const Ray& r, float a, float b) { return accel.occluded(r, a, b, filter); },
+          [&](const RayPacket& p, std::uint32_t m) { return accel.occluded(p, m, filter); }, hits);
+      EXPECT_EQ(clipped, 0) << "clipped, coherent " << bySigns;
+      const int unclipped = countDifferences(
+          packetsOf(rays, bySigns),
+          [&](const Ray& r, float a, float b, Hit& h) { return accel.intersect(r, a, b, h); },
+          [&](const RayPacket& p, std::uint32_t m, std::span<Hit, kPacketSize> h) {
+            return accel.intersect(p, m, h);
+          },
+          [&](const Ray& r, float a, float b) { return accel.occluded(r, a, b); },
+          [&](const RayPacket& p, std::uint32_t m) { return accel.occluded(p, m); }, hits);
+      EXPECT_EQ(unclipped, 0) << "unclipped, coherent " << bySigns;
+      EXPECT_GT(hits, 2000);
+    }
+  }
+}
+
+TEST(PacketQueryProperty, WatertightRaysFromInsideAllHitAsSingleRays) {
+  // The rays of the watertight property test: from near the centre of closed gmsh meshes to their
+  // vertices and edges.
+  for (const std::string file : {"render/sphere_fine.msh", "render/ball.msh", "msh/cube_tet4_v41_bin.msh"}) {
+    SCOPED_TRACE(file);
+    const Soup mesh = loadFixture(file);
+    const KdTree tree = KdTree::buildSah(mesh.positions, mesh.faces);
+    Aabb box;
+    for (const Vec3& p : mesh.positions) box.extend(p);
+    std::mt19937 rng(12345);
+    std::uniform_real_distribution<float> jitter(-0.05f, 0.05f);
+    std::vector<TestRay> rays;
+    for (const MeshFace& face : mesh.faces) {
+      for (int c = 0; c < face.cornerCount(); ++c) {
+        const Vec3 a = mesh.positions[face.vertex[c]];
+        const Vec3 b = mesh.positions[face.vertex[(c + 1) % face.cornerCount()]];
+        for (const float s : {0.0f, 0.5f, 0.25f}) {
+          const Vec3 origin = box.center() + box.extent() * Vec3{jitter(rng), jitter(rng), jitter(rng)};
+          TestRay r;
+          r.ray = Ray(origin, a + (b - a) * s - origin);
+          r.tMax = 2.0f;
+          rays.push_back(r);
+        }
+      }
+    }
+    for (const bool bySigns : {true, false}) {
+      const auto packets = packetsOf(rays, bySigns);
+      int misses = 0, unblocked = 0, lanes = 0;
+      for (const auto& [packet, active] : packets) {
+        Hit hits[kPacketSize];
+        misses += std::popcount(active & ~tree.intersect(packet, active, std::span<Hit, kPacketSize>(hits)));
+        unblocked += std::popcount(active & ~tree.occluded(packet, active));
+        lanes += std::popcount(active);
+      }
+      EXPECT_EQ(misses, 0) << "of " << lanes << " lanes";
+      EXPECT_EQ(unblocked, 0) << "of " << lanes << " lanes";
+      int hits = 0;
+      EXPECT_EQ(countDifferences(tree, packets, hits), 0);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace lancer
