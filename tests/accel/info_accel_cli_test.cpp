@@ -39,6 +39,13 @@ TEST(InfoAccelCli, UnknownKindIsAUsageError) {
   const CommandResult result = runCli("info " + kFixture + " --accel octree");
   EXPECT_NE(result.exitCode, 0);
   EXPECT_TRUE(contains(result.output, "octree")) << result.output;
+  test::expectContainsAll(result.output, {"kdtree-sah", "kdtree-sah-exact", "kdtree-median", "naive"});
+}
+
+TEST(InfoAccelCli, ExactSahBuildIsSelectable) {
+  const CommandResult text = runCli("info " + kFixture + " --accel kdtree-sah-exact");
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  EXPECT_TRUE(contains(text.output, "accelerator:     kdtree-sah-exact over ")) << text.output;
 }
 
 }  // namespace
