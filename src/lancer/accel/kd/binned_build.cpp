@@ -94,27 +94,39 @@ struct BinGrid {
 // The counts one pass over a cell's references makes. Only the first `bins` of each row are used
 // and cleared (clearing all 256 for each of a million small cells would cost more than counting).
 struct BinCounts {
-  std::uint32_t starts[3][kMaxBins];  // references whose lower bound falls in the bin
-  std::uint32_t ends[3][kMaxBins];    // ... whose upper bound does
-  std::uint32_t planarAtLo[3];        // references lying flat in the cell's lower face
-  std::uint32_t planarAtHi[3];        // ... in its upper face
+  // Rows 0-2: references whose lower bound on axis 0-2 falls in the bin; rows 3-5: whose upper does.
+  std::uint32_t rows[6][kMaxBins];
+  std::uint32_t planarAtLo[3];  // references lying flat in the cell's lower face
+  std::uint32_t planarAtHi[3];  // ... in its upper face
 
   void clear(int bins) {
     for (int k = 0; k < 3; ++k) {
-      std::fill_n(starts[k], bins, 0u);
-      std::fill_n(ends[k], bins, 0u);
+      std::fill_n(rows[k], bins, 0u);
+      std::fill_n(rows[k + 3], bins, 0u);
       planarAtLo[k] = planarAtHi[k] = 0;
     }
   }
   void count(const Ref* refs, std::size_t n, const BinGrid& grid, const Box& cell) {
+    // The six bounds of a reference are six contiguous floats: one vectorisable loop bins them.
+    float lo[6], scale[6];
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = lo[k + 3] = grid.lo[k];
+      scale[k] = scale[k + 3] = grid.scale[k];
+    }
+    const int top = grid.bins - 1;
     for (std::size_t i = 0; i < n; ++i) {
       const Ref& r = refs[i];
-      for (int k = 0; k < 3; ++k) {
-        ++starts[k][grid.binOf(k, r.lo[k])];
-        ++ends[k][grid.binOf(k, r.hi[k])];
-        if (r.lo[k] == r.hi[k]) {
-          planarAtLo[k] += r.lo[k] == cell.lo[k];
-          planarAtHi[k] += r.hi[k] == cell.hi[k];
+      const float* bound = r.lo;  // lo[3] then hi[3]
+      int bin[6];
+      for (int j = 0; j < 6; ++j)
+        bin[j] = std::min(std::max(static_cast<int>((bound[j] - lo[j]) * scale[j]), 0), top);
+      for (int j = 0; j < 6; ++j) ++rows[j][bin[j]];
+      if (r.lo[0] == r.hi[0] || r.lo[1] == r.hi[1] || r.lo[2] == r.hi[2]) {
+        for (int k = 0; k < 3; ++k) {
+          if (r.lo[k] == r.hi[k]) {
+            planarAtLo[k] += r.lo[k] == cell.lo[k];
+            planarAtHi[k] += r.hi[k] == cell.hi[k];
+          }
         }
       }
     }
@@ -122,8 +134,8 @@ struct BinCounts {
   void add(const BinCounts& other, int bins) {
     for (int k = 0; k < 3; ++k) {
       for (int b = 0; b < bins; ++b) {
-        starts[k][b] += other.starts[k][b];
-        ends[k][b] += other.ends[k][b];
+        rows[k][b] += other.rows[k][b];
+        rows[k + 3][b] += other.rows[k + 3][b];
       }
       planarAtLo[k] += other.planarAtLo[k];
       planarAtHi[k] += other.planarAtHi[k];
@@ -203,8 +215,8 @@ Split bestBinnedSplit(const BinCounts& counts, const BinGrid& grid, const Cell& 
     const float step = (usedHi - usedLo) / float(grid.bins);
     std::uint32_t nl = 0, nr = n;
     for (int bin = 1; bin < grid.bins; ++bin) {
-      nl += counts.starts[axis][bin - 1];
-      nr -= counts.ends[axis][bin - 1];
+      nl += counts.rows[axis][bin - 1];
+      nr -= counts.rows[axis + 3][bin - 1];
       const float p = usedLo + step * float(bin);
       if (p > lo && p < hi) consider(axis, p, true, planeCost(p, nl, nr), bin);
     }
@@ -221,16 +233,22 @@ struct WindowEvent {
 
 void collectWindow(const Ref* refs, std::size_t n, const BinGrid& grid, int axis, int first, int last,
                    std::vector<WindowEvent>& events) {
+  // Most bounds lie far from the window: two compares reject them before the bin is computed.
+  const float slack = 1.0f / grid.scale[axis];
+  const float from = grid.lo[axis] + float(first - 1) * slack, to = grid.lo[axis] + float(last + 2) * slack;
+  auto inWindow = [&](float x) {
+    if (!(x >= from && x <= to)) return false;
+    const int bin = grid.binOf(axis, x);
+    return bin >= first && bin <= last;
+  };
   for (std::size_t i = 0; i < n; ++i) {
     const float lo = refs[i].lo[axis], hi = refs[i].hi[axis];
-    const int loBin = grid.binOf(axis, lo);
     if (lo == hi) {
-      if (loBin >= first && loBin <= last) events.push_back({lo, 1});
+      if (inWindow(lo)) events.push_back({lo, 1});
       continue;
     }
-    if (loBin >= first && loBin <= last) events.push_back({lo, 2});
-    const int hiBin = grid.binOf(axis, hi);
-    if (hiBin >= first && hiBin <= last) events.push_back({hi, 0});
+    if (inWindow(lo)) events.push_back({lo, 2});
+    if (inWindow(hi)) events.push_back({hi, 0});
   }
 }
 
@@ -242,8 +260,8 @@ void refineInWindow(Split& best, const BinCounts& counts, const Cell& cell, std:
   const int first = std::max(best.bin - 1, 0);
   std::uint32_t nl = 0, nr = n;
   for (int bin = 0; bin < first; ++bin) {
-    nl += counts.starts[axis][bin];
-    nr -= counts.ends[axis][bin];
+    nl += counts.rows[axis][bin];
+    nr -= counts.rows[axis + 3][bin];
   }
   std::sort(events.begin(), events.end());
   const AxisCost planeCost(cell.box, axis, 1.0f / cell.box.area(), options);
