@@ -312,45 +312,46 @@ struct Partitioner {
   void operator()(const Ref* refs, std::size_t n, Ref* right, Ref* left, Children& out) const {
     const int k = split.axis;
     const float p = split.pos;
+    // Local bounds: kept in registers (through `out` they would be reloaded after every store to
+    // the reference arrays, which may alias them as far as the compiler knows).
+    Box usedLeft = out.left.used, usedRight = out.right.used;
     std::size_t nl = 0, nr = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const Ref r = refs[i];
       const float lo = r.lo[k], hi = r.hi[k];
-      if (lo == hi && lo == p) {
-        if (split.planarLeft) {
-          left[nl++] = r;
-          out.left.used.extend(r);
-        } else {
-          right[nr++] = r;
-          out.right.used.extend(r);
-        }
-      } else if (hi <= p) {
-        left[nl++] = r;
-        out.left.used.extend(r);
-      } else if (lo >= p) {
-        right[nr++] = r;
-        out.right.used.extend(r);
-      } else {
-        Ref l = r, rr = r;
-        l.hi[k] = p;
-        rr.lo[k] = p;
-        bool keepLeft = true, keepRight = true;
-        if (clips(r)) {
-          Aabb below, above;
-          splitTriangleBounds(input.corners[r.id], k, p, below, above);
-          keepLeft = intersect(l, below);
-          keepRight = intersect(rr, above);
-        }
-        if (keepLeft) {
-          left[nl++] = l;
-          out.left.used.extend(l);
-        }
-        if (keepRight) {
-          right[nr++] = rr;
-          out.right.used.extend(rr);
-        }
+      const bool planar = lo == hi && lo == p;
+      const bool toLeft = planar ? split.planarLeft : hi <= p;
+      const bool toRight = planar ? !split.planarLeft : lo >= p;
+      if (toLeft || toRight) {
+        // One side: written to both, kept by the count of one (a branch here mispredicts often).
+        left[nl] = r;
+        right[nr] = r;
+        nl += toLeft;
+        nr += toRight;
+        (toLeft ? usedLeft : usedRight).extend(r);
+        continue;
+      }
+      Ref l = r, rr = r;
+      l.hi[k] = p;
+      rr.lo[k] = p;
+      bool keepLeft = true, keepRight = true;
+      if (clips(r)) {
+        Aabb below, above;
+        splitTriangleBounds(input.corners[r.id], k, p, below, above);
+        keepLeft = intersect(l, below);
+        keepRight = intersect(rr, above);
+      }
+      if (keepLeft) {
+        left[nl++] = l;
+        usedLeft.extend(l);
+      }
+      if (keepRight) {
+        right[nr++] = rr;
+        usedRight.extend(rr);
       }
     }
+    out.left.used = usedLeft;
+    out.right.used = usedRight;
     out.leftCount += nl;
     out.rightCount += nr;
   }
