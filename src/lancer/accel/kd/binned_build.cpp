@@ -9,7 +9,9 @@
 // cell's references only, so the tree is the same for any thread count.
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <future>
 #include <limits>
 #include <vector>
 
@@ -423,17 +425,25 @@ class BinnedBuilder {
     for (const Box& used : chunkUsed) root.used.extend(used);
     // One thread: the whole tree is one subtree. More: the top cells, down to a few subtrees per
     // thread, split with every thread, then the subtrees built side by side.
-    topBelow_ = threads_ > 1
-                    ? std::max<std::size_t>(options_.parallelSplitAbove, n / (8 * std::size_t(threads_)))
-                    : n;
+    topBelow_ =
+        threads_ > 1 ? std::max<std::size_t>(options_.parallelSplitAbove, n / std::size_t(threads_)) : n;
+    spareThreads_ = threads_ - 1;
     BuildArena& arena = arenas_.create();
     BuildNode* top = buildTop(std::move(refs), root, 0, arena);
     std::sort(subtrees_.begin(), subtrees_.end(),
               [](const Subtree& a, const Subtree& b) { return a.refs.size() > b.refs.size(); });
-    parallelChunks(ChunkPlan(subtrees_.size(), 1), threads_,
-                   [&](std::size_t, std::size_t begin, std::size_t end) {
-                     for (std::size_t i = begin; i < end; ++i) buildSubtree(subtrees_[i]);
-                   });
+    std::vector<std::future<void>> running;
+    for (Subtree& subtree : subtrees_) {
+      if (&subtree != &subtrees_.back() && takeSpareThread()) {
+        running.push_back(std::async(std::launch::async, [&] {
+          *subtree.slot = *buildDetached(std::move(subtree.refs), subtree.cell, subtree.depth);
+          ++spareThreads_;
+        }));
+      } else {
+        *subtree.slot = *buildDetached(std::move(subtree.refs), subtree.cell, subtree.depth);
+      }
+    }
+    for (std::future<void>& task : running) task.get();
     return top;
   }
 
@@ -514,14 +524,23 @@ class BinnedBuilder {
     return arena.inner(split.axis, split.pos, leftNode, rightNode);
   }
 
-  void buildSubtree(Subtree& subtree) {
+  // Whether a build thread is free to take a subtree; the caller gives it back when done. At most
+  // `threads` run at once, however the subtrees fall.
+  bool takeSpareThread() {
+    int spare = spareThreads_.load();
+    while (spare > 0 && !spareThreads_.compare_exchange_weak(spare, spare - 1)) {
+    }
+    return spare > 0;
+  }
+
+  // A subtree with its own working memory and arena, built by the calling thread.
+  BuildNode* buildDetached(std::vector<Ref> refs, const Cell& cell, int depth) {
     Scratch scratch;
-    const std::size_t n = subtree.refs.size();
-    scratch.stack = std::move(subtree.refs);
+    const std::size_t n = refs.size();
+    scratch.stack = std::move(refs);
     // Room for the left children along a path; grown when a deep path needs more.
     scratch.stack.resize(n + n + n / 2 + 64);
-    BuildArena& arena = arenas_.create();
-    *subtree.slot = *build(0, n, subtree.cell, subtree.depth, arena, scratch);
+    return build(0, n, cell, depth, arenas_.create(), scratch);
   }
 
   // The cell whose references are scratch.stack[begin, begin + n); the stack past them is free.
@@ -548,6 +567,17 @@ class BinnedBuilder {
     Children children = childCells(cell, split);
     const Partitioner partition{input_, options_, split, cell.box};
     partition(base + begin, n, base + begin, base + leftBegin, children);
+    if (children.leftCount >= kForkAbove && takeSpareThread()) {
+      // A thread is idle (its subtree done): it takes the left child, with a copy of its references.
+      std::vector<Ref> leftRefs(base + leftBegin, base + leftBegin + children.leftCount);
+      auto task = std::async(std::launch::async, [&] {
+        BuildNode* node = buildDetached(std::move(leftRefs), children.left, depth + 1);
+        ++spareThreads_;
+        return node;
+      });
+      BuildNode* rightNode = build(begin, children.rightCount, children.right, depth + 1, arena, scratch);
+      return arena.inner(split.axis, split.pos, task.get(), rightNode);
+    }
     BuildNode* leftNode = build(leftBegin, children.leftCount, children.left, depth + 1, arena, scratch);
     BuildNode* rightNode = build(begin, children.rightCount, children.right, depth + 1, arena, scratch);
     return arena.inner(split.axis, split.pos, leftNode, rightNode);
@@ -567,6 +597,8 @@ class BinnedBuilder {
   int threads_;
   std::size_t chunkGrain_;  // references per chunk of the parallel top
   std::size_t topBelow_ = 0;
+  std::atomic<int> spareThreads_{0};
+  static constexpr std::size_t kForkAbove = 4096;  // smaller subtrees are not worth a thread
   std::vector<Subtree> subtrees_;
 };
 
