@@ -86,9 +86,10 @@ for m in meshes:
               f"{f(ratio(med, d), '{:.2f}')} / {f(ratio(medc, dc), '{:.2f}')} | "
               f"{f(ratio(high, d), '{:.2f}')} / {f(ratio(highc, dc), '{:.2f}')} | "
               f"{rd['sah_cost']:.1f} | {rd['bytes'] / tris[m]:.0f} |")
-        v = rows.get((m, "kdtree-sah-variant build", t))
-        if v:
-            print(f"| {m} | {t} | variant {v['seconds']:.3f} | {v['cpu_seconds']:.3f} | | | | | "
+        for other in ("kdtree-sah-exact", "kdtree-sah-variant"):
+          v = rows.get((m, f"{other} build", t))
+          if v:
+            print(f"| {m} | {t} | {other[11:]} {v['seconds']:.3f} | {v['cpu_seconds']:.3f} | | | | | "
                   f"{f(ratio(med, v['seconds']), '{:.2f}')} / {f(ratio(medc, v['cpu_seconds']), '{:.2f}')} | "
                   f"{f(ratio(high, v['seconds']), '{:.2f}')} / {f(ratio(highc, v['cpu_seconds']), '{:.2f}')} | "
                   f"{v['sah_cost']:.1f} | {v['bytes'] / tris[m]:.0f} |")
@@ -97,7 +98,7 @@ print("\n## Trace on the tree (1 thread, Mrays per CPU second, medians)")
 print("| mesh | tree | primary | shadow | incoherent |")
 print("|---|---|---|---|---|")
 for m in meshes:
-    for tree in ("kdtree-sah", "kdtree-sah-variant"):
+    for tree in ("kdtree-sah", "kdtree-sah-exact", "kdtree-sah-variant"):
         cells = [rows.get((m, f"{tree} trace {k}", 1)) for k in ("primary", "shadow", "incoherent")]
         if all(cells):
             print(f"| {m} | {tree} | " + " | ".join(f"{r['mrays_per_cpu_s']:.2f}" for r in cells) + " |")

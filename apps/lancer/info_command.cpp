@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "info_accel.hpp"
@@ -252,7 +253,7 @@ void addInfoCommand(CLI::App& app, CommandRunner& runner) {
                    "also build an accelerator (default kdtree-sah) and report its statistics")
       ->expected(0, 1)
       ->default_str("kdtree-sah")
-      ->check(CLI::IsMember({"kdtree-sah", "kdtree-median", "naive"}));
+      ->check(CLI::IsMember(std::vector<std::string>(kAccelNames.begin(), kAccelNames.end())));
   command->callback([&runner, options] {
     runner = [options] {
       const Mesh mesh = readMsh(options->file);

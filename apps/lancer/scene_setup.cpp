@@ -97,8 +97,12 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
       ->check(CLI::Range(0, kMaxDepth));
   command.add_option("--shading", overrides.shading, "Shading for every mesh: flat, gouraud or phong")
       ->check(CLI::IsMember(choices(kShadingNames)));
-  command.add_option("--accel", overrides.accel, "Accelerator: kdtree-sah (default), kdtree-median or naive")
-      ->check(CLI::IsMember({"kdtree-sah", "kdtree-median", "naive"}));
+  command
+      .add_option(
+          "--accel", overrides.accel,
+          "Accelerator: kdtree-sah (default), kdtree-sah-exact (slower build, the quality reference), "
+          "kdtree-median or naive")
+      ->check(CLI::IsMember(choices(kAccelNames)));
   command.add_option("--threads", overrides.threads, "Worker threads (default 0: all cores)")
       ->check(CLI::Range(0, kMaxThreads));
   command.add_flag("--srgb", overrides.srgb, "Encode the output with the sRGB curve instead of linear");

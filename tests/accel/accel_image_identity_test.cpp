@@ -3,9 +3,11 @@
 // gmsh part, so every query the renderer makes goes through the accelerator under test.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "lancer/mesh/msh_reader.hpp"
+#include "lancer/render/renderer.hpp"
 #include "support/test_scenes.hpp"
 
 namespace lancer {
@@ -52,12 +54,51 @@ TEST(AccelImageIdentity, NaiveAndKdTreesRenderTheSameImage) {
     for (int x = 0; x < reference.width(); ++x) lit += reference.at(x, y).r != reference.at(0, 0).r;
   }
   ASSERT_GT(lit, reference.width() * reference.height() / 5);
-  for (AccelKind kind : {AccelKind::KdTreeSah, AccelKind::KdTreeMedian}) {
+  for (AccelKind kind : {AccelKind::KdTreeSah, AccelKind::KdTreeSahExact, AccelKind::KdTreeMedian}) {
     SCOPED_TRACE(std::string(accelKindName(kind)));
     const Image image = test::renderScene(d, scene, kind, 2);
     ASSERT_EQ(image.width(), reference.width());
     ASSERT_EQ(image.height(), reference.height());
     EXPECT_EQ(differingPixels(image, reference), 0);
+  }
+}
+
+// --threads bounds the build: the default tree built on 1, 2 and 3 threads (its parallel top
+// reaching the fixture's cells) is the same tree, word for word, and renders the same image.
+TEST(AccelImageIdentity, TreeAndImageIdenticalForAnyBuildThreadCount) {
+  const SceneDescription d = blockScene();
+  const Scene scene =
+      test::sceneFromMeshes(d, {readMsh(std::string(LANCER_TEST_DATA_DIR) + "/accel/holed_block.msh")});
+  const Camera camera = makeCamera(d.camera, scene, d.render);
+  RenderOptions render;
+  render.threads = 2;
+  auto buildWith = [&](int threads) {
+    KdBuildOptions options;
+    options.threads = threads;
+    options.parallelSplitAbove = 64;
+    return Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah, options);
+  };
+  const Accelerator one = buildWith(1);
+  const Image reference = Renderer(scene, one, camera, d.render).renderImage(render);
+  const KdTree oneTree = KdTree::buildSah(scene.geometry.positions, scene.geometry.faces, [] {
+    KdBuildOptions o;
+    o.threads = 1;
+    return o;
+  }());
+  for (int threads : {2, 3}) {
+    SCOPED_TRACE(threads);
+    const Accelerator many = buildWith(threads);
+    EXPECT_EQ(many.stats().nodes, one.stats().nodes);
+    EXPECT_EQ(many.stats().triangleReferences, one.stats().triangleReferences);
+    EXPECT_EQ(differingPixels(Renderer(scene, many, camera, d.render).renderImage(render), reference), 0);
+    KdBuildOptions o;
+    o.threads = threads;
+    o.parallelSplitAbove = 64;
+    const KdTree tree = KdTree::buildSah(scene.geometry.positions, scene.geometry.faces, o);
+    ASSERT_EQ(tree.layout().size(), oneTree.layout().size());
+    EXPECT_TRUE(std::equal(
+        tree.layout().begin(), tree.layout().end(), oneTree.layout().begin(),
+        [](const KdNode& a, const KdNode& b) { return a.payload == b.payload && a.bits == b.bits; }));
   }
 }
 

@@ -1,4 +1,5 @@
-// `lancer info --accel` through the built CLI: its build statistics in text and JSON.
+// `lancer info --accel` and `lancer render --accel` through the built CLI: the build statistics in
+// text and JSON, every accelerator name accepted, and the build's thread count not changing the image.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -39,6 +40,30 @@ TEST(InfoAccelCli, UnknownKindIsAUsageError) {
   const CommandResult result = runCli("info " + kFixture + " --accel octree");
   EXPECT_NE(result.exitCode, 0);
   EXPECT_TRUE(contains(result.output, "octree")) << result.output;
+  test::expectContainsAll(result.output, {"kdtree-sah", "kdtree-sah-exact", "kdtree-median", "naive"});
+}
+
+TEST(InfoAccelCli, ExactSahBuildIsSelectable) {
+  const CommandResult text = runCli("info " + kFixture + " --accel kdtree-sah-exact");
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  EXPECT_TRUE(contains(text.output, "accelerator:     kdtree-sah-exact over ")) << text.output;
+}
+
+TEST(RenderAccelCli, ExactBuildAndAnyThreadCountRenderTheSameImage) {
+  test::ScratchFolder folder;
+  auto render = [&](const std::string& options, const std::string& name) {
+    const CommandResult result = runCli("render -q " + kFixture + " --width 64 --height 48 " + options +
+                                        " -o " + test::quoted(folder.file(name)));
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    return folder.file(name);
+  };
+  const std::string one = render("--threads 1", "one.png");
+  test::expectSameFile(render("--threads 2", "two.png"), one);
+  test::expectSameFile(render("--accel kdtree-sah-exact --threads 2", "exact.png"), one);
+  const CommandResult bad =
+      runCli("render -q " + kFixture + " --accel bvh -o " + test::quoted(folder.file("x.png")));
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  test::expectContainsAll(bad.output, {"bvh", "kdtree-sah", "kdtree-sah-exact", "kdtree-median", "naive"});
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Property: on thousands of random and adversarial rays, both kd-tree builds answer exactly as the
+// Property: on thousands of random and adversarial rays, every kd-tree build answers exactly as the
 // brute-force reference: same hit or miss, same face, same t (to 1e-6 relative), same occlusion.
 #include <gtest/gtest.h>
 
@@ -28,6 +28,9 @@ std::vector<BuildCase> buildCases() {
   auto sah = [](KdBuildOptions o) {
     return [o](const Soup& s) { return KdTree::buildSah(s.positions, s.faces, o); };
   };
+  auto exact = [](KdBuildOptions o) {
+    return [o](const Soup& s) { return KdTree::buildSahExact(s.positions, s.faces, o); };
+  };
   auto median = [](KdBuildOptions o) {
     return [o](const Soup& s) { return KdTree::buildMedian(s.positions, s.faces, o); };
   };
@@ -41,7 +44,16 @@ std::vector<BuildCase> buildCases() {
   shallow.maxDepth = 4;
   KdBuildOptions tinyLeaves = parallel;
   tinyLeaves.medianLeafSize = 1;
-  // The binned top levels (accel/kd/sah_binning.hpp) on test-sized meshes: binning down to 8
+  // The default binned build with its parallel top (kd/binned_build.cpp) reaching test-sized cells,
+  // and with only big straddlers clipped (the rest keep their box cut at the plane).
+  KdBuildOptions parallelTop = serial;
+  parallelTop.threads = 3;
+  parallelTop.parallelSplitAbove = 8;
+  KdBuildOptions fastBigClipped = parallelTop;
+  fastBigClipped.clipAboveFraction = 0.5f;
+  KdBuildOptions fastUnclipped = serial;
+  fastUnclipped.clipAboveFraction = 2.0f;
+  // The exact build's binned top levels (accel/kd/sah_binning.hpp) on test-sized meshes: binning down to 8
   // triangles, the sweep from the root, and binning on 3 threads (sweeps forked with local ids).
   KdBuildOptions binnedDeep = serial;
   binnedDeep.binnedAbove = 8;
@@ -59,11 +71,17 @@ std::vector<BuildCase> buildCases() {
           {"sah-2-threads", sah(parallel)},
           {"sah-deep", sah(cheapTraversal)},
           {"sah-shallow", sah(shallow)},
-          {"sah-binned-8", sah(binnedDeep)},
-          {"sah-sweep-only", sah(sweepOnly)},
-          {"sah-binned-3-threads", sah(binnedParallel)},
-          {"sah-binned-unclipped", sah(unclipped)},
-          {"sah-binned-big-clipped", sah(bigClipped)},
+          {"sah-parallel-top", sah(parallelTop)},
+          {"sah-big-clipped", sah(fastBigClipped)},
+          {"sah-unclipped", sah(fastUnclipped)},
+          {"exact", exact(serial)},
+          {"exact-2-threads", exact(parallel)},
+          {"exact-deep", exact(cheapTraversal)},
+          {"exact-binned-8", exact(binnedDeep)},
+          {"exact-sweep-only", exact(sweepOnly)},
+          {"exact-binned-3-threads", exact(binnedParallel)},
+          {"exact-binned-unclipped", exact(unclipped)},
+          {"exact-binned-big-clipped", exact(bigClipped)},
           {"median", median(serial)},
           {"median-leaf-1", median(tinyLeaves)}};
 }
@@ -138,6 +156,43 @@ TEST(KdTreeProperty, DegenerateAndCoplanarFacesMatchBruteForce) {
   expectSameAnswers(soup, 8000, 14);
 }
 
+// What binning finds hardest: hundreds of triangles in one axis-aligned plane (many of them in the
+// cell faces the tree isolates), exact duplicates, flat and zero-area boxes, a thousand tiny
+// triangles in one spot inside big ones, and planes of triangles sharing one coordinate.
+TEST(KdTreeProperty, CrowdedCoplanarAndDuplicatedFacesMatchBruteForce) {
+  std::mt19937 rng(7);
+  Soup soup;
+  for (int i = 0; i < 400; ++i) {
+    const int axis = i % 3;
+    Vec3 a = test::randomPoint(rng, {0, 0, 0}, {1, 1, 1}), b = test::randomPoint(rng, {0, 0, 0}, {1, 1, 1}),
+         c = test::randomPoint(rng, {0, 0, 0}, {1, 1, 1});
+    a[axis] = b[axis] = c[axis] = i % 4 == 0 ? 0.0f : (i % 4 == 1 ? 1.0f : 0.5f);
+    soup.triangle(a, b, c);
+  }
+  const Vec3 p{0.3f, 0.3f, 0.3f}, q{0.31f, 0.3f, 0.3f}, r{0.3f, 0.31f, 0.3f};
+  for (int i = 0; i < 200; ++i) soup.triangle(p, q, r);  // one triangle 200 times
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 c = test::randomPoint(rng, {0.6f, 0.6f, 0.6f}, {0.6001f, 0.6001f, 0.6001f});
+    soup.triangle(c, c + test::randomDirection(rng) * 1e-4f, c + test::randomDirection(rng) * 1e-4f);
+  }
+  for (int i = 0; i < 20; ++i) {  // big triangles through the crowd
+    soup.triangle(test::randomPoint(rng, {0, 0, 0}, {1, 1, 1}), test::randomPoint(rng, {0, 0, 0}, {1, 1, 1}),
+                  {0.6f, 0.6f, 0.6f});
+  }
+  for (int i = 0; i < 100; ++i) {  // axis-aligned right triangles on a lattice: boxes share bounds
+    const float x = float(i % 10) * 0.1f, y = float(i / 10) * 0.1f;
+    soup.triangle({x, y, 0.25f}, {x + 0.1f, y, 0.25f}, {x, y + 0.1f, 0.25f});
+    soup.triangle({x, 0.75f, y}, {x + 0.1f, 0.75f, y}, {x, 0.75f, y + 0.1f});
+  }
+  expectSameAnswers(soup, 8000, 17);
+}
+
+TEST(KdTreeProperty, SingleTriangleMatchesBruteForce) {
+  Soup soup;
+  soup.triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0.5f});
+  expectSameAnswers(soup, 1000, 18);
+}
+
 // gmsh-made fixtures (tests/data/accel, from scripts/make_accel_fixtures.sh) through the real reader.
 Soup loadFixture(const std::string& name) {
   const Mesh mesh = readMsh(std::string(LANCER_TEST_DATA_DIR) + "/accel/" + name);
@@ -160,7 +215,8 @@ TEST(KdTreeProperty, GmshQuadBoxMatchesBruteForce) {
 TEST(KdTreeProperty, AcceleratorDispatchMatchesBruteForce) {
   const Soup soup = test::sphere(12, 16);
   const NaiveAccel naive(soup.positions, soup.faces);
-  for (AccelKind kind : {AccelKind::KdTreeSah, AccelKind::KdTreeMedian, AccelKind::Naive}) {
+  for (AccelKind kind :
+       {AccelKind::KdTreeSah, AccelKind::KdTreeSahExact, AccelKind::KdTreeMedian, AccelKind::Naive}) {
     const Accelerator accel = Accelerator::build(soup.positions, soup.faces, kind);
     std::mt19937 rng(5);
     for (int i = 0; i < 2000; ++i) {

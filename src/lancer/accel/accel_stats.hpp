@@ -8,7 +8,7 @@
 namespace lancer {
 
 struct AccelStats {
-  std::string kind;             // "kdtree-sah", "kdtree-median" or "naive"
+  std::string kind;             // one of kAccelNames (accelerator.hpp)
   std::uint64_t faces = 0;      // mesh faces (a quad is one face)
   std::uint64_t triangles = 0;  // primitives in the structure (a quad is two triangles)
   std::uint64_t nodes = 0;      // inner nodes + leaves

@@ -9,23 +9,18 @@
 namespace lancer {
 
 AccelKind parseAccelKind(std::string_view name) {
-  if (name == "kdtree-sah") return AccelKind::KdTreeSah;
-  if (name == "kdtree-median") return AccelKind::KdTreeMedian;
-  if (name == "naive") return AccelKind::Naive;
-  throw std::invalid_argument("unknown accelerator '" + std::string(name) +
-                              "': expected kdtree-sah, kdtree-median or naive");
+  std::string expected;
+  for (std::size_t k = 0; k < kAccelNames.size(); ++k) {
+    if (name == kAccelNames[k]) return static_cast<AccelKind>(k);
+    expected += k == 0 ? "" : (k + 1 == kAccelNames.size() ? " or " : ", ");
+    expected += kAccelNames[k];
+  }
+  throw std::invalid_argument("unknown accelerator '" + std::string(name) + "': expected " + expected);
 }
 
 std::string_view accelKindName(AccelKind kind) {
-  switch (kind) {
-    case AccelKind::KdTreeSah:
-      return "kdtree-sah";
-    case AccelKind::KdTreeMedian:
-      return "kdtree-median";
-    case AccelKind::Naive:
-      return "naive";
-  }
-  return "unknown";
+  const auto k = static_cast<std::size_t>(kind);
+  return k < kAccelNames.size() ? kAccelNames[k] : "unknown";
 }
 
 bool Accelerator::intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const {
@@ -89,6 +84,11 @@ Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const 
   switch (kind) {
     case AccelKind::KdTreeSah: {
       KdTree tree = KdTree::buildSah(positions, faces, options);
+      AccelStats stats = tree.stats();
+      return Accelerator(std::move(tree), kind, std::move(stats));
+    }
+    case AccelKind::KdTreeSahExact: {
+      KdTree tree = KdTree::buildSahExact(positions, faces, options);
       AccelStats stats = tree.stats();
       return Accelerator(std::move(tree), kind, std::move(stats));
     }

@@ -2,6 +2,7 @@
 // chosen by name (`--accel`), behind one value type with no virtual call per ray.
 #pragma once
 
+#include <array>
 #include <span>
 #include <string_view>
 #include <variant>
@@ -15,10 +16,14 @@
 
 namespace lancer {
 
-enum class AccelKind { KdTreeSah, KdTreeMedian, Naive };
+enum class AccelKind { KdTreeSah, KdTreeSahExact, KdTreeMedian, Naive };
 
-// "kdtree-sah", "kdtree-median" or "naive"; throws std::invalid_argument naming the choices
-// otherwise (the CLI turns it into its usage error).
+// The names `--accel` takes, in AccelKind's order.
+inline constexpr std::array<std::string_view, 4> kAccelNames = {"kdtree-sah", "kdtree-sah-exact",
+                                                                "kdtree-median", "naive"};
+
+// One of kAccelNames; throws std::invalid_argument naming the choices otherwise (the CLI turns it
+// into its usage error).
 AccelKind parseAccelKind(std::string_view name);
 std::string_view accelKindName(AccelKind kind);
 

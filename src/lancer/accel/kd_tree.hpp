@@ -31,8 +31,9 @@ struct KdBuildOptions {
   // when the empty side is at least emptySpaceMinFraction of the cell's side.
   float emptySpaceFactor = 0.8f;
   float emptySpaceMinFraction = 0.1f;
-  // Cells holding more triangles than this are split by binning (kd/sah_binning.hpp) rather
-  // than by sweeping sorted events; 0 sweeps from the root (the pure O(N log N) build).
+  // Exact build (buildSahExact): cells holding more triangles than this are split by binning
+  // (kd/sah_binning.hpp) rather than by sweeping sorted events; 0 sweeps from the root (the pure
+  // O(N log N) build).
   std::uint32_t binnedAbove = 4096;
   // Binning: a triangle that crosses the split plane is clipped to each child cell ("perfect
   // splits") when its box is at least this fraction of the cell along one of the other two axes;
@@ -41,6 +42,13 @@ struct KdBuildOptions {
   // triangles and clipping none saves ~10% of the build's CPU time but traces 4-15% slower, so
   // the default clips all.
   float clipAboveFraction = 0.0f;
+  // Binned build (the default): cells of more than this many triangles (and of more than
+  // triangles / threads) are binned and partitioned by all build threads together; below, subtrees
+  // go to the threads as they fall idle. Only the schedule changes with it, never the tree (tests
+  // set it low to exercise the parallel top). High by default: on the 1M bench bracket the
+  // parallel top's per-chunk buffers cost 2.46 CPU-seconds on 2 threads against 1.83 on 1, where
+  // forking subtrees alone costs the same on both.
+  std::uint32_t parallelSplitAbove = 1u << 22;
   // Deepest leaf; 0 picks 8 + 1.3 log2(triangles) (pbrt-v3 section 4.4.2), capped by kMaxDepth.
   int maxDepth = 0;
   // Median build: a node with at most this many triangles becomes a leaf.
@@ -59,8 +67,13 @@ class KdTree {
  public:
   static constexpr int kMaxDepth = 60;  // the traversal stack holds one entry per level
 
+  // Binned SAH from root to leaves (kd/binned_build.cpp): the default.
   static KdTree buildSah(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                          const KdBuildOptions& options = {});
+  // Binned top, then Wald & Havran's exact event sweep with every straddler clipped to the cell
+  // (kd/sah_build.cpp): the slower build the default's tree quality is measured against.
+  static KdTree buildSahExact(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                              const KdBuildOptions& options = {});
   static KdTree buildMedian(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                             const KdBuildOptions& options = {});
 

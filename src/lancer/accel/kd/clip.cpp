@@ -1,5 +1,6 @@
 #include "lancer/accel/kd/clip.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -97,6 +98,48 @@ Aabb clippedTriangleBounds(const std::array<Vec3, 3>& corners, const Aabb& box) 
     result.upper[axis] = std::min(roundUp(upper[axis]), box.upper[axis]);
   }
   return result;
+}
+
+void splitTriangleBounds(const std::array<Vec3, 3>& corners, int axis, float plane, Aabb& below,
+                         Aabb& above) {
+  double v[3][3], d[3];
+  for (int i = 0; i < 3; ++i) {
+    v[i][0] = corners[i].x;
+    v[i][1] = corners[i].y;
+    v[i][2] = corners[i].z;
+    d[i] = v[i][axis] - double(plane);  // exact: a difference of two floats
+  }
+  constexpr double kHuge = std::numeric_limits<double>::infinity();
+  double lower[2][3] = {{kHuge, kHuge, kHuge}, {kHuge, kHuge, kHuge}};
+  double upper[2][3] = {{-kHuge, -kHuge, -kHuge}, {-kHuge, -kHuge, -kHuge}};
+  auto extend = [&](int side, const double* p) {
+    for (int k = 0; k < 3; ++k) {
+      lower[side][k] = std::min(lower[side][k], p[k]);
+      upper[side][k] = std::max(upper[side][k], p[k]);
+    }
+  };
+  for (int i = 0; i < 3; ++i) {
+    if (d[i] <= 0) extend(0, v[i]);
+    if (d[i] >= 0) extend(1, v[i]);
+    const int j = (i + 1) % 3;
+    if ((d[i] < 0 && d[j] > 0) || (d[i] > 0 && d[j] < 0)) {
+      const double s = d[i] / (d[i] - d[j]);
+      double p[3];
+      for (int k = 0; k < 3; ++k) p[k] = v[i][k] + (v[j][k] - v[i][k]) * s;
+      p[axis] = plane;  // exactly on the plane, whatever the rounding of the interpolation
+      extend(0, p);
+      extend(1, p);
+    }
+  }
+  Aabb* out[2] = {&below, &above};
+  for (int side = 0; side < 2; ++side) {
+    *out[side] = Aabb{};
+    if (!(lower[side][0] <= upper[side][0])) continue;  // no corner or crossing on this side
+    for (int k = 0; k < 3; ++k) {
+      out[side]->lower[k] = roundDown(lower[side][k]);
+      out[side]->upper[k] = roundUp(upper[side][k]);
+    }
+  }
 }
 
 }  // namespace lancer

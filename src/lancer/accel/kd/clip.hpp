@@ -13,4 +13,11 @@ namespace lancer {
 // exact clipped triangle.
 Aabb clippedTriangleBounds(const std::array<Vec3, 3>& corners, const Aabb& box);
 
+// Bounds of the parts of a triangle on each side of the plane x[axis] = plane: side 0 below, side 1
+// above, each empty when the triangle has no part there. One plane instead of a cell's six: the
+// binned builder intersects these with the bounds the triangle already has in the cell, which
+// gives a box as tight as clipping to the cell for the usual straddler at a fraction of the cost.
+// Same rounding as clippedTriangleBounds (outward, exact values exact).
+void splitTriangleBounds(const std::array<Vec3, 3>& corners, int axis, float plane, Aabb& below, Aabb& above);
+
 }  // namespace lancer
