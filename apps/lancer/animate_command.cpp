@@ -162,7 +162,8 @@ int runAnimate(const AnimateCommandOptions& options) {
                  prepared.scene.geometry.faces.size(), prepared.loadSeconds, prepared.buildSeconds, seconds,
                  frames.empty() ? 0.0 : seconds / static_cast<double>(frames.size()), speed.c_str());
   }
-  if (options.overrides.timings && talks) std::fprintf(stderr, "%s\n", formatStageTimes(prepared.stages).c_str());
+  if (options.overrides.timings && talks)
+    std::fprintf(stderr, "%s\n", formatStageTimes(prepared.stages).c_str());
   return kExitOk;
 }
 
