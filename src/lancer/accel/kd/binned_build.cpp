@@ -82,7 +82,7 @@ struct Partitioner {
       bool keepLeft = true, keepRight = true;
       if (clips(r)) {
         Aabb below, above;
-        splitTriangleBounds(input.corners[r.id], k, p, below, above);
+        splitTriangleBounds(cornersOf(input.triangles[r.id]), k, p, below, above);
         keepLeft = intersect(l, below);
         keepRight = intersect(rr, above);
       }
@@ -154,7 +154,7 @@ class BinnedBuilder {
     std::vector<Box> chunkUsed(plan.chunks);
     parallelChunks(plan, threads_, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
       for (std::size_t t = begin; t < end; ++t) {
-        const std::array<Vec3, 3>& c = input_.corners[t];
+        const std::array<Vec3, 3> c = cornersOf(input_.triangles[t]);
         Ref& r = refs[t];
         for (int k = 0; k < 3; ++k) {
           // + 0.0f turns -0 into +0, so equal positions compare (and bin) alike.

@@ -7,6 +7,7 @@
 #include <string>
 #include <thread>
 
+#include "lancer/util/check.hpp"
 #include "lancer/util/thread_count.hpp"
 
 namespace lancer {
@@ -27,7 +28,8 @@ bool isSliver(const std::array<Vec3, 3>& c) {
 
 }  // namespace
 
-KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces) {
+KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                             bool withCorners) {
   KdBuildInput input;
   input.faceCount = faces.size();
   std::vector<PackedTriangle> packed = packTriangles(positions, faces);
@@ -37,7 +39,7 @@ KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const Me
                             std::to_string(KdNode::kMaxIndex / 4) + " supported");
   }
   input.triangles.reserve(packed.size());
-  input.corners.reserve(packed.size());
+  if (withCorners) input.corners.reserve(packed.size());
   std::size_t next = 0;
   for (const MeshFace& face : faces) {
     // Same corner order as packTriangles: (0,1,2) and, for a quad, (0,2,3).
@@ -50,7 +52,7 @@ KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const Me
         continue;
       }
       input.triangles.push_back(packed[next]);
-      input.corners.push_back(corners);
+      if (withCorners) input.corners.push_back(corners);
       for (const Vec3& c : corners) input.bounds.extend(c);
     }
   }
@@ -89,6 +91,11 @@ BuildNode* BuildArena::inner(int axis, float split, BuildNode* left, BuildNode* 
 namespace {
 
 struct Layout {
+  // Counting pass: the same walk allocating nothing, only adding up the words, so that the stream
+  // is allocated once at its exact size (reserving a bound and shrinking after kept both copies
+  // alive at the build's memory peak: 72 + 60 bytes per triangle).
+  bool counting = false;
+  std::size_t counted = 0;
   std::vector<KdNode> words;                // the tree's layout_ stream
   std::vector<std::uint32_t> triangleWord;  // build triangle id -> word offset, or kUnset
   const std::vector<PackedTriangle>* triangles = nullptr;
@@ -98,18 +105,27 @@ struct Layout {
 
   static constexpr std::uint32_t kUnset = 0xFFFFFFFFu;
 
+  std::size_t size() const { return counting ? counted : words.size(); }
+
   std::uint32_t allocate(std::size_t count) {
-    const std::size_t at = words.size();
+    const std::size_t at = size();
     if (at + count > KdNode::kMaxIndex) {
       throw std::length_error("kd-tree: layout over " + std::to_string(KdNode::kMaxIndex) + " words");
     }
-    words.resize(at + count);
+    if (counting)
+      counted = at + count;
+    else
+      words.resize(at + count);
     return static_cast<std::uint32_t>(at);
+  }
+
+  void set(std::uint32_t index, KdNode node) {
+    if (!counting) words[index] = node;
   }
 
   // Child pairs start at even words, so a pair never straddles a 16-byte block (nor a cache line).
   std::uint32_t allocatePair() {
-    if (words.size() % 2) allocate(1);
+    if (size() % 2) allocate(1);
     return allocate(2);
   }
 
@@ -117,7 +133,8 @@ struct Layout {
   std::uint32_t placeTriangle(std::uint32_t triangle) {
     if (triangleWord[triangle] == kUnset) {
       const std::uint32_t at = allocate(KdTree::kTriangleWords);
-      std::memcpy(static_cast<void*>(words.data() + at), &(*triangles)[triangle], sizeof(PackedTriangle));
+      if (!counting)
+        std::memcpy(static_cast<void*>(words.data() + at), &(*triangles)[triangle], sizeof(PackedTriangle));
       triangleWord[triangle] = at;
     }
     return triangleWord[triangle];
@@ -127,18 +144,19 @@ struct Layout {
     const std::uint32_t* tris = node.arena->leafTriangles.data() + node.first;
     if (node.count == 0) {
       ++stats.emptyLeaves;
-      words[index] = KdNode::leaf(0, 0);
+      set(index, KdNode::leaf(0, 0));
     } else if (node.count == 1) {
       const std::uint32_t offset = placeTriangle(tris[0]);
-      words[index] = KdNode::leaf(offset, 1);
+      set(index, KdNode::leaf(offset, 1));
     } else {
       const std::uint32_t list = allocate((node.count + 1) / 2);
       for (std::uint32_t i = 0; i < node.count; ++i) {
         const std::uint32_t offset = placeTriangle(tris[i]);  // may grow `words`: index afresh
-        std::memcpy(reinterpret_cast<char*>(words.data() + list) + i * sizeof(std::uint32_t), &offset,
-                    sizeof offset);
+        if (!counting)
+          std::memcpy(reinterpret_cast<char*>(words.data() + list) + i * sizeof(std::uint32_t), &offset,
+                      sizeof offset);
       }
-      words[index] = KdNode::leaf(list, node.count);
+      set(index, KdNode::leaf(list, node.count));
     }
   }
 
@@ -158,7 +176,7 @@ struct Layout {
     // (Grouping a pair with its children's pairs in 64-byte lines, so a ray descends two levels per
     // cache miss, measured no faster on the 1M bracket, within noise, so it is not done.)
     const std::uint32_t children = allocatePair();
-    words[index] = KdNode::inner(node.axis, node.split, children);
+    set(index, KdNode::inner(node.axis, node.split, children));
     Aabb childBox[2] = {box, box};
     childBox[0].upper[node.axis] = node.split;
     childBox[1].lower[node.axis] = node.split;
@@ -187,22 +205,27 @@ Aabb paddedBounds(const Aabb& box) {
 
 KdTree KdTreeAssembler::assemble(const BuildNode& root, KdBuildInput&& input, const KdBuildOptions& options,
                                  std::string kind, double buildSeconds) {
+  std::vector<std::array<Vec3, 3>>().swap(input.corners);  // only the builders clip them
   Layout layout;
-  layout.triangleWord.assign(input.triangles.size(), Layout::kUnset);
   layout.triangles = &input.triangles;
   layout.rootArea = input.bounds.surfaceArea();
   layout.traversalCost = options.traversalCost;
   layout.intersectionCost = options.intersectionCost;
-  // Up to 8 words of nodes and lists per triangle reference plus the triangles: one allocation.
-  layout.words.reserve(input.triangles.size() * (KdTree::kTriangleWords + 4) + 16);
-  // Root alone at 0, a pad at 1, then sibling pairs at even words.
-  layout.allocate(2);
-  layout.words[1] = KdNode::leaf(0, 0);
-  layout.place(0, root, input.bounds, 0);
+  for (const bool counting : {true, false}) {
+    layout.counting = counting;
+    layout.stats = {};
+    layout.triangleWord.assign(input.triangles.size(), Layout::kUnset);
+    if (!counting) layout.words.reserve(layout.counted);  // the exact size: one allocation
+    // Root alone at 0, a pad at 1, then sibling pairs at even words.
+    layout.allocate(2);
+    layout.set(1, KdNode::leaf(0, 0));
+    layout.place(0, root, input.bounds, 0);
+  }
+  LANCER_DCHECK(layout.words.size(), ==, layout.counted);
+  std::vector<std::uint32_t>().swap(layout.triangleWord);
 
   KdTree tree;
   tree.layout_ = std::move(layout.words);
-  tree.layout_.shrink_to_fit();
   tree.slivers_ = std::move(input.slivers);
   tree.bounds_ = paddedBounds(input.bounds);
   if (!input.bounds.empty())

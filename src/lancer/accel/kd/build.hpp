@@ -16,13 +16,20 @@ namespace lancer {
 
 // The triangles to build over, with their exact corners (the builders clip and bound these).
 struct KdBuildInput {
-  std::vector<PackedTriangle> triangles;     // tree triangles, index = build triangle id
-  std::vector<std::array<Vec3, 3>> corners;  // parallel to triangles
-  std::vector<PackedTriangle> slivers;       // kept out of the tree, see KdTree::slivers_
-  Aabb bounds;                               // of the tree triangles
+  std::vector<PackedTriangle> triangles;  // tree triangles, index = build triangle id
+  // Parallel to triangles, for the exact builder only (kdtree-sah-exact clips through spans of them);
+  // the others read a triangle's corners from `triangles` (cornersOf): 36 bytes a triangle saved.
+  std::vector<std::array<Vec3, 3>> corners;
+  std::vector<PackedTriangle> slivers;  // kept out of the tree, see KdTree::slivers_
+  Aabb bounds;                          // of the tree triangles
   std::uint64_t faceCount = 0;
 };
-KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces);
+KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                             bool withCorners = false);
+
+inline std::array<Vec3, 3> cornersOf(const PackedTriangle& triangle) {
+  return {triangle.v0, triangle.v1, triangle.v2};
+}
 
 // Deepest level the options allow for this many triangles.
 int resolveMaxDepth(const KdBuildOptions& options, std::size_t triangleCount);

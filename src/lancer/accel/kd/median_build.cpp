@@ -20,9 +20,9 @@ class MedianBuilder {
         maxDepth_(resolveMaxDepth(options, input.triangles.size())),
         leafSize_(static_cast<std::uint32_t>(std::max(1, options.medianLeafSize))) {
     bounds_.reserve(input.triangles.size());
-    for (const std::array<Vec3, 3>& c : input.corners) {
+    for (const PackedTriangle& triangle : input.triangles) {
       Aabb box;
-      for (const Vec3& v : c) box.extend(v);
+      for (const Vec3& v : cornersOf(triangle)) box.extend(v);
       bounds_.push_back(box);
     }
     forkDepth_ = resolveThreads(options) > 1 ? 3 : 0;

@@ -428,7 +428,7 @@ class SahBuilder {
 KdTree KdTree::buildSahExact(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                              const KdBuildOptions& options) {
   const Stopwatch stopwatch;
-  KdBuildInput input = gatherTriangles(positions, faces);
+  KdBuildInput input = gatherTriangles(positions, faces, /*withCorners=*/true);
   BuildArenas arenas;
   SahBuilder builder(input, options, arenas);
   const BuildNode* root = builder.buildRoot();
