@@ -185,8 +185,11 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
 
 std::string formatStageTimes(const StageTimes& stages) {
   std::string line = "timings:";
-  for (const StageTimes::Stage& stage : stages.stages)
-    line += fmt::format("{} {} {:.3f} s", line.size() > 8 ? "," : "", stage.name, stage.seconds);
+  const char* separator = " ";
+  for (const StageTimes::Stage& stage : stages.stages) {
+    line += fmt::format("{}{} {:.3f} s", separator, stage.name, stage.seconds);
+    separator = ", ";
+  }
   return line;
 }
 

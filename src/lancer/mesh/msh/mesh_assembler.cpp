@@ -17,13 +17,13 @@
 namespace lancer {
 namespace {
 
-// A face is degenerate as the renderer will see it (float positions) when its area is zero up to
-// rounding: twice its area below 1e-12 times its longest edge squared. Both sides are compared
-// squared, in double: no square root, no division, once per face of a million-face load.
 // Items per chunk of the parallel passes: big enough that a thread start is noise beside its work.
 constexpr std::size_t kFaceGrain = 32768;
 constexpr std::size_t kNodeGrain = 32768;
 
+// A face is degenerate as the renderer will see it (float positions) when its area is zero up to
+// rounding: twice its area below 1e-12 times its longest edge squared. Both sides are compared
+// squared, in double: no square root, no division, once per face of a million-face load.
 inline double maxOf(double a, double b) { return a > b ? a : b; }
 
 bool isDegenerateTriangle(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
