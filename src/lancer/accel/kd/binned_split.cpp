@@ -1,4 +1,5 @@
 #include "lancer/accel/kd/binned_split.hpp"
+#include "lancer/accel/kd/window_sweep.hpp"
 
 namespace lancer::binned {
 
@@ -108,22 +109,10 @@ void refineInWindow(Split& best, const BinCounts& counts, const Cell& cell, std:
   }
   std::sort(events.begin(), events.end());
   const AxisCost planeCost(cell.box, axis, 1.0f / cell.box.area(), options);
-  for (std::size_t i = 0; i < events.size();) {
-    const float p = events[i].pos;
-    std::uint32_t ends = 0, planars = 0, starts = 0;
-    for (; i < events.size() && events[i].pos == p; ++i) {
-      ends += events[i].type == 0;
-      planars += events[i].type == 1;
-      starts += events[i].type == 2;
-    }
-    nr -= std::min(nr, planars + ends);
-    if (p > planeCost.lo && p < planeCost.hi) {
-      const float left = planeCost(p, nl + planars, nr), right = planeCost(p, nl, nr + planars);
-      if (left < best.cost) best = {axis, p, true, left, -1};
-      if (right < best.cost) best = {axis, p, false, right, -1};
-    }
-    nl += starts + planars;
-  }
+  sweepWindowEvents(std::span<const WindowEvent>(events), planeCost, nl, nr,
+                    [&](float p, bool planarsLeft, float cost) {
+                      if (cost < best.cost) best = {axis, p, planarsLeft, cost, -1};
+                    });
 }
 
 }  // namespace lancer::binned

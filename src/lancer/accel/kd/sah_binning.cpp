@@ -1,4 +1,5 @@
 #include "lancer/accel/kd/sah_binning.hpp"
+#include "lancer/accel/kd/window_sweep.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -172,22 +173,10 @@ BinnedSplit findBinnedSplit(std::span<const BuildRef> refs, const Aabb& cell, co
       return x.pos < y.pos || (x.pos == y.pos && x.type < y.type);
     });
     const AxisCost planeCost = axisCost(cell, axis, invArea, options);
-    for (std::size_t i = 0; i < events.size();) {
-      const float p = events[i].pos;
-      std::uint32_t ends = 0, planars = 0, starts = 0;
-      for (; i < events.size() && events[i].pos == p; ++i) {
-        ends += events[i].type == 0;
-        planars += events[i].type == 1;
-        starts += events[i].type == 2;
-      }
-      nr -= std::min(nr, planars + ends);
-      if (p > planeCost.lo && p < planeCost.hi) {
-        const float left = planeCost(p, nl + planars, nr), right = planeCost(p, nl, nr + planars);
-        if (left < best.cost) best = {axis, p, true, left};
-        if (right < best.cost) best = {axis, p, false, right};
-      }
-      nl += starts + planars;
-    }
+    sweepWindowEvents(std::span<const WindowEvent>(events), planeCost, nl, nr,
+                      [&](float p, bool planarsLeft, float cost) {
+                        if (cost < best.cost) best = {axis, p, planarsLeft, cost};
+                      });
   }
   if (best.cost >= ki * float(n)) best.axis = -1;
   return best;
