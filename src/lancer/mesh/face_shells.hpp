@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "lancer/mesh/mesh.hpp"
@@ -25,9 +26,15 @@ struct FaceShells {
   std::vector<std::uint32_t> shellOfFace;  // shells numbered in order of their first face
   std::vector<std::uint8_t> closed;        // per shell: every edge shared by exactly two faces
   std::vector<std::uint8_t> consistent;    // per shell: shared edges traversed in opposite directions
+  // Per closed shell: its faces can be turned to agree (each shared edge traversed both ways), and
+  // per face of such a shell: whether to reverse it so it agrees with the shell's lowest face (in an
+  // open shell the bit means nothing).
+  std::vector<std::uint8_t> orientable;
+  std::vector<std::uint8_t> flip;
   std::size_t shellCount() const { return closed.size(); }
 };
 
-FaceShells findFaceShells(const std::vector<MeshFace>& faces);
+// Same result for any thread count (0: every core).
+FaceShells findFaceShells(std::span<const MeshFace> faces, int threads = 0);
 
 }  // namespace lancer

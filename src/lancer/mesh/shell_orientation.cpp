@@ -11,45 +11,6 @@
 namespace lancer {
 namespace {
 
-// Faces joined by a manifold edge, and whether they traverse it in the same direction (then one of
-// them must be flipped for the pair to agree).
-struct FaceLink {
-  std::uint32_t neighbour;
-  bool sameDirection;
-};
-
-// Compressed adjacency: links of face f are links[first[f] .. first[f + 1]).
-struct FaceLinks {
-  std::vector<std::uint32_t> first;
-  std::vector<FaceLink> links;
-};
-
-FaceLinks manifoldLinks(const std::vector<FaceEdge>& edges, std::size_t faceCount) {
-  FaceLinks result;
-  result.first.assign(faceCount + 1, 0);
-  auto forEachManifoldEdge = [&](auto&& visit) {
-    for (std::size_t i = 0; i < edges.size();) {
-      std::size_t j = i + 1;
-      while (j < edges.size() && edges[j].key == edges[i].key) ++j;
-      if (j - i == 2 && edges[i].face != edges[i + 1].face) visit(edges[i], edges[i + 1]);
-      i = j;
-    }
-  };
-  forEachManifoldEdge([&](const FaceEdge& a, const FaceEdge& b) {
-    ++result.first[a.face + 1];
-    ++result.first[b.face + 1];
-  });
-  for (std::size_t f = 0; f < faceCount; ++f) result.first[f + 1] += result.first[f];
-  result.links.resize(result.first[faceCount]);
-  std::vector<std::uint32_t> fill(result.first.begin(), result.first.end() - 1);
-  forEachManifoldEdge([&](const FaceEdge& a, const FaceEdge& b) {
-    const bool same = a.forward == b.forward;
-    result.links[fill[a.face]++] = {b.face, same};
-    result.links[fill[b.face]++] = {a.face, same};
-  });
-  return result;
-}
-
 // Surfaces only, meeting three or more on edges (shell_regions.hpp): each face is turned to face
 // out of a bounded region behind it and bounds a solid; a face between two regions becomes an
 // interface whose sides take their regions' groups (the group most of a region's outer faces
@@ -106,42 +67,19 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
                                                  std::vector<MeshFace>& faces,
                                                  std::vector<std::uint8_t>& edgeMasks,
                                                  std::span<const std::int32_t> facePhysicalTag,
-                                                 std::span<const FaceSide> faceSide) {
+                                                 std::span<const FaceSide> faceSide, int threads) {
   ShellOrientationReport report;
   const std::size_t faceCount = faces.size();
   report.faceBoundsSolid.assign(faceCount, 0);
   if (faceCount == 0) return report;
-  const FaceShells shells = findFaceShells(faces);
+  const FaceShells shells = findFaceShells(faces, threads);
   report.shells = shells.shellCount();
 
-  // Breadth-first over each closed shell: flip[f] says whether face f must be reversed to agree
-  // with the shell's first face. A contradiction means the shell cannot be oriented.
-  const FaceLinks links = manifoldLinks(shells.edges, faceCount);
-  std::vector<std::uint8_t> flip(faceCount, 0), visited(faceCount, 0);
-  std::vector<std::uint8_t> orientable(shells.shellCount(), 1);
+  // flip[f]: whether face f must be reversed to agree with its shell's first face (findFaceShells
+  // propagates that across the shared edges); the signed volume of each closed shell so turned.
+  const std::vector<std::uint8_t>& flip = shells.flip;
+  const std::vector<std::uint8_t>& orientable = shells.orientable;
   std::vector<double> volume6(shells.shellCount(), 0.0);
-  std::vector<std::uint32_t> queue;
-  queue.reserve(faceCount);
-  for (std::size_t start = 0; start < faceCount; ++start) {
-    const std::uint32_t shell = shells.shellOfFace[start];
-    if (visited[start] || !shells.closed[shell]) continue;
-    visited[start] = 1;
-    queue.assign(1, static_cast<std::uint32_t>(start));
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-      const std::uint32_t f = queue[head];
-      for (std::uint32_t k = links.first[f]; k < links.first[f + 1]; ++k) {
-        const FaceLink& link = links.links[k];
-        const std::uint8_t wanted = static_cast<std::uint8_t>(flip[f] ^ (link.sameDirection ? 1 : 0));
-        if (!visited[link.neighbour]) {
-          visited[link.neighbour] = 1;
-          flip[link.neighbour] = wanted;
-          queue.push_back(link.neighbour);
-        } else if (flip[link.neighbour] != wanted) {
-          orientable[shell] = 0;
-        }
-      }
-    }
-  }
   for (std::size_t f = 0; f < faceCount; ++f) {
     const std::uint32_t shell = shells.shellOfFace[f];
     if (!shells.closed[shell]) continue;

@@ -44,6 +44,7 @@ struct ShellOrientationReport {
 // closed shells of its physical group, see findCavityShells), whose faces point into the cavity.
 // Open shells keep the file's winding: they are rendered two-sided. `positions` are the vertices the
 // faces index (any frame: the sign of the volume does not depend on translation).
+// `threads` bounds the threads used (0: every core); the result is the same for any count.
 // `edgeMasks`, when not empty, holds one mask per face and is kept in step with the faces.
 // `facePhysicalTag` holds one tag per face (empty: all faces in one group).
 // `faceSide` (Mesh::volumeSides, empty when the mesh has no interfaces): a closed shell of interfaces
@@ -54,6 +55,6 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
                                                  std::vector<MeshFace>& faces,
                                                  std::vector<std::uint8_t>& edgeMasks,
                                                  std::span<const std::int32_t> facePhysicalTag,
-                                                 std::span<const FaceSide> faceSide = {});
+                                                 std::span<const FaceSide> faceSide = {}, int threads = 0);
 
 }  // namespace lancer

@@ -143,7 +143,7 @@ PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTra
   // Refraction and caps tell entering from leaving by the side a ray hits, so solids must face out
   // of their material (cavity walls into the cavity).
   placed.orientation = orientClosedShellsOutward(placed.positions, mesh.faces, placed.edgeMasks,
-                                                 mesh.facePhysicalTag, mesh.volumeSides.side);
+                                                 mesh.facePhysicalTag, mesh.volumeSides.side, threads);
   for (const std::uint32_t f : placed.orientation.reversedInterfaces) {
     std::swap(mesh.facePhysicalTag[f], mesh.volumeSides.outerPhysicalTag[f]);
     std::swap(mesh.faceEntityTag[f], mesh.volumeSides.outerEntityTag[f]);
