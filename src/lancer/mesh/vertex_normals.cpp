@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/vertex_corners.hpp"
@@ -35,7 +36,7 @@ constexpr std::size_t kGrain = 16384;
 
 CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                                    std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
-                                   int threads) {
+                                   int threads, std::vector<Vec3>* unitFaceNormals) {
   const std::size_t faceCount = faces.size();
   const std::size_t vertexCount = positions.size();
   // Per face, in face order (sequential reads, shared out by chunks of faces): its unit normal and
@@ -210,6 +211,7 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
       if (index != kPerCorner) result.faceCorner[f][c] = index;
     }
   });
+  if (unitFaceNormals) *unitFaceNormals = std::move(unitFaceNormal);
   return result;
 }
 

@@ -18,9 +18,10 @@ struct CornerNormals {
 
 // Two faces sharing a vertex are smoothed together when the angle between their normals is at most
 // creaseAngleDegrees and they have the same physical tag (Thurmer & Wuthrich 1998 angle weights).
-// On `threads` threads (0: every core); the result is the same for any number.
+// On `threads` threads (0: every core); the result is the same for any number. The unit face
+// normals it works from (faceNormal of face_geometry.hpp) go to `unitFaceNormals` when given.
 CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                                    std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
-                                   int threads = 0);
+                                   int threads = 0, std::vector<Vec3>* unitFaceNormals = nullptr);
 
 }  // namespace lancer

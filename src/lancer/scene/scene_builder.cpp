@@ -121,6 +121,7 @@ struct PlacedMesh {
   std::vector<std::uint8_t> edgeMasks;  // per face, in step with the oriented faces
   ShellOrientationReport orientation;
   CornerNormals normals;
+  std::vector<Vec3> faceNormals;  // unit, per face (computeCornerNormals made them on the way)
 };
 
 PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTransform& transform,
@@ -151,7 +152,7 @@ PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTra
   times.add("orient", orient.seconds());  // shells, orientation, nesting, interfaces
   const Stopwatch normals;
   placed.normals = computeCornerNormals(placed.positions, mesh.faces, mesh.facePhysicalTag,
-                                        instance.smoothAngleDegrees, threads);
+                                        instance.smoothAngleDegrees, threads, &placed.faceNormals);
   times.add("normals", normals.seconds());
   return placed;
 }
@@ -165,6 +166,7 @@ void appendGeometry(SceneGeometry& geometry, const std::vector<MeshFace>& faces,
   geometry.positions.insert(geometry.positions.end(), placed.positions.begin(), placed.positions.end());
   geometry.cornerNormals.normals.insert(geometry.cornerNormals.normals.end(), placed.normals.normals.begin(),
                                         placed.normals.normals.end());
+  LANCER_DCHECK(placed.faceNormals.size(), ==, faces.size());
   const std::size_t faceBase = geometry.faces.size();
   geometry.faces.resize(faceBase + faces.size());
   geometry.faceNormals.resize(faceBase + faces.size());
@@ -179,7 +181,7 @@ void appendGeometry(SceneGeometry& geometry, const std::vector<MeshFace>& faces,
       corners[c] += normalBase;
     }
     geometry.faces[faceBase + f] = face;
-    geometry.faceNormals[faceBase + f] = faceNormal(geometry.positions, face);
+    geometry.faceNormals[faceBase + f] = placed.faceNormals[f];  // = faceNormal(geometry.positions, face)
     geometry.cornerNormals.faceCorner[faceBase + f] = corners;
   });
 }
