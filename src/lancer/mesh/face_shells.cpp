@@ -1,6 +1,7 @@
 #include "lancer/mesh/face_shells.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <utility>
 
 #include "lancer/mesh/parity_disjoint_sets.hpp"
@@ -77,8 +78,12 @@ FaceShells findFaceShells(std::span<const MeshFace> faces, int threads) {
   // faces on a manifold edge that traverse it the same way must be turned opposite ways for the
   // shell to agree (one parity constraint); at other edges the shell is open and no such bit holds.
   const std::vector<FaceEdge>& edges = result.edges;
+  if (faceCount >= ParityDisjointSets::kMaxCount)
+    throw std::length_error("findFaceShells: more than 2^31 faces in one mesh");
   ParityDisjointSets sets(faceCount);
-  std::vector<std::uint8_t> edgeOpen(faceCount, 0), edgeMisoriented(faceCount, 0);
+  // Per face, what its edges told about its shell (one byte for the four, written rarely).
+  enum : std::uint8_t { kOpen = 1, kMisoriented = 2, kBorder = 4, kBranch = 8 };
+  std::vector<std::uint8_t> edgeFlags(faceCount, 0);
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i + 1;
     while (j < edges.size() && edges[j].key == edges[i].key) ++j;
@@ -86,11 +91,10 @@ FaceShells findFaceShells(std::span<const MeshFace> faces, int threads) {
       const bool sameDirection = edges[i].forward == edges[i + 1].forward;
       if (edges[i].face != edges[i + 1].face)
         sets.unite(edges[i].face, edges[i + 1].face, sameDirection ? 1 : 0);
-      if (sameDirection) edgeMisoriented[edges[i].face] = 1;
+      if (sameDirection) edgeFlags[edges[i].face] |= kMisoriented;
     } else {
       for (std::size_t k = i + 1; k < j; ++k) sets.uniteFree(edges[i].face, edges[k].face);
-      edgeOpen[edges[i].face] = 1;
-      if (j - i > 2) edgeMisoriented[edges[i].face] = 1;
+      edgeFlags[edges[i].face] |= j - i == 1 ? kOpen | kBorder : kOpen | kMisoriented | kBranch;
     }
     i = j;
   }
@@ -106,11 +110,17 @@ FaceShells findFaceShells(std::span<const MeshFace> faces, int threads) {
       result.closed.push_back(1);
       result.consistent.push_back(1);
       result.orientable.push_back(sets.broken(root) ? 0 : 1);
+      result.bordered.push_back(0);
+      result.branched.push_back(0);
     }
     result.shellOfFace[f] = shell;
     result.flip[f] = bit;
-    if (edgeOpen[f]) result.closed[shell] = 0;
-    if (edgeMisoriented[f]) result.consistent[shell] = 0;
+    if (const std::uint8_t flags = edgeFlags[f]; flags != 0) {
+      if (flags & kOpen) result.closed[shell] = 0;
+      if (flags & kMisoriented) result.consistent[shell] = 0;
+      if (flags & kBorder) result.bordered[shell] = 1;
+      if (flags & kBranch) result.branched[shell] = 1;
+    }
   }
   return result;
 }

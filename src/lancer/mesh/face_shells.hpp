@@ -31,6 +31,8 @@ struct FaceShells {
   // open shell the bit means nothing).
   std::vector<std::uint8_t> orientable;
   std::vector<std::uint8_t> flip;
+  std::vector<std::uint8_t> bordered;  // per shell: an edge of one face only
+  std::vector<std::uint8_t> branched;  // per shell: an edge shared by three or more faces
   std::size_t shellCount() const { return closed.size(); }
 };
 

@@ -7,6 +7,7 @@
 #include "lancer/mesh/face_shells.hpp"
 #include "lancer/mesh/shell_nesting.hpp"
 #include "lancer/mesh/shell_regions.hpp"
+#include "lancer/util/parallel_for.hpp"
 
 namespace lancer {
 namespace {
@@ -79,13 +80,28 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
   // propagates that across the shared edges); the signed volume of each closed shell so turned.
   const std::vector<std::uint8_t>& flip = shells.flip;
   const std::vector<std::uint8_t>& orientable = shells.orientable;
+  // Summed by chunks of faces (the chunks depend on the face count only, so the sums do not depend
+  // on the thread count); a chunk keeps one partial sum per run of faces of one shell, which is
+  // one or a few per chunk, as a shell's faces mostly follow each other.
+  struct ShellSum {
+    std::uint32_t shell;
+    double volume6;
+  };
+  const ChunkPlan plan(faceCount, 65536);
+  std::vector<std::vector<ShellSum>> chunkSums(plan.chunks);
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    std::vector<ShellSum>& sums = chunkSums[chunk];
+    for (std::size_t f = begin; f < end; ++f) {
+      const std::uint32_t shell = shells.shellOfFace[f];
+      if (!shells.closed[shell]) continue;
+      const double v = sixfoldConeVolume(positions, faces[f]);
+      if (sums.empty() || sums.back().shell != shell) sums.push_back({shell, 0.0});
+      sums.back().volume6 += flip[f] ? -v : v;
+    }
+  });
   std::vector<double> volume6(shells.shellCount(), 0.0);
-  for (std::size_t f = 0; f < faceCount; ++f) {
-    const std::uint32_t shell = shells.shellOfFace[f];
-    if (!shells.closed[shell]) continue;
-    const double v = sixfoldConeVolume(positions, faces[f]);
-    volume6[shell] += flip[f] ? -v : v;
-  }
+  for (const std::vector<ShellSum>& sums : chunkSums)
+    for (const ShellSum& sum : sums) volume6[sum.shell] += sum.volume6;
 
   // A cavity wall faces into the cavity (out of the material around it): negative volume.
   std::vector<std::uint8_t> solidShell(shells.shellCount(), 0);

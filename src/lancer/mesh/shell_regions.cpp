@@ -20,18 +20,10 @@ ShellRegions findShellRegions(std::span<const Vec3> positions, const std::vector
   ShellRegions result;
   const std::vector<FaceEdge>& edges = shells.edges;
   // Shells with an edge of three or more faces and none of one.
-  std::vector<std::uint8_t> branched(shells.shellCount(), 0), open(shells.shellCount(), 0);
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i + 1;
-    while (j < edges.size() && edges[j].key == edges[i].key) ++j;
-    const std::uint32_t shell = shells.shellOfFace[edges[i].face];
-    if (j - i == 1) open[shell] = 1;
-    if (j - i >= 3) branched[shell] = 1;
-    i = j;
-  }
   std::vector<std::uint8_t> candidate(shells.shellCount(), 0);
   bool any = false;
-  for (std::size_t s = 0; s < shells.shellCount(); ++s) any |= (candidate[s] = branched[s] && !open[s]) != 0;
+  for (std::size_t s = 0; s < shells.shellCount(); ++s)
+    any |= (candidate[s] = shells.branched[s] && !shells.bordered[s]) != 0;
   if (!any) return result;
 
   // Around each edge, the wedge between neighbouring faces joins the sides that face into it.
