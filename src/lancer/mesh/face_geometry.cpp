@@ -4,17 +4,6 @@
 
 namespace lancer {
 
-Vec3 faceNormal(std::span<const Vec3> positions, const MeshFace& face) {
-  const Vec3& a = positions[face.vertex[0]];
-  const Vec3& b = positions[face.vertex[1]];
-  const Vec3& c = positions[face.vertex[2]];
-  if (face.isQuad()) {
-    const Vec3& d = positions[face.vertex[3]];
-    return normalize(cross(c - a, d - b));
-  }
-  return normalize(cross(b - a, c - a));
-}
-
 Vec3d twiceVectorArea(std::span<const Vec3> positions, const MeshFace& face) {
   const Vec3d a = toDouble(positions[face.vertex[0]]);
   const Vec3d b = toDouble(positions[face.vertex[1]]);

@@ -10,8 +10,18 @@
 namespace lancer {
 
 // Geometric normal of a face (unit; for a quad, the normal of its diagonals' cross product, which is
-// the mean plane's normal for a non-planar quad). Zero for a degenerate face.
-Vec3 faceNormal(std::span<const Vec3> positions, const MeshFace& face);
+// the mean plane's normal for a non-planar quad). Zero for a degenerate face. Inline: scene
+// preparation computes it beside other per-face quantities from the same corners.
+inline Vec3 faceNormal(std::span<const Vec3> positions, const MeshFace& face) {
+  const Vec3& a = positions[face.vertex[0]];
+  const Vec3& b = positions[face.vertex[1]];
+  const Vec3& c = positions[face.vertex[2]];
+  if (face.isQuad()) {
+    const Vec3& d = positions[face.vertex[3]];
+    return normalize(cross(c - a, d - b));
+  }
+  return normalize(cross(b - a, c - a));
+}
 
 // Twice the vector area of a face, in double: the direction of its normal, with its winding, and
 // twice its area as its length (a quad: the cross product of its diagonals, which in exact arithmetic

@@ -25,8 +25,12 @@ std::size_t vertexCountOf(std::span<const MeshFace> faces, int threads) {
   return faces.empty() ? 0 : *std::max_element(chunkEnd.begin(), chunkEnd.end());
 }
 
-VertexCorners findVertexCorners(std::span<const MeshFace> faces, std::size_t vertexCount, int threads) {
+VertexCorners findVertexCorners(std::span<const MeshFace> faces, std::size_t vertexCount, int threads,
+                                std::span<const std::uint8_t> wanted) {
   VertexCorners result;
+  auto inRange = [&](std::uint32_t v, std::size_t firstVertex, std::size_t endVertex) {
+    return v >= firstVertex && v < endVertex && (wanted.empty() || wanted[v]);
+  };
   result.rowStart.assign(vertexCount + 1, 0);
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
     for (const MeshFace& face : faces)
@@ -41,7 +45,7 @@ VertexCorners findVertexCorners(std::span<const MeshFace> faces, std::size_t ver
     for (std::size_t f = 0; f < faces.size(); ++f)
       for (int c = 0; c < faces[f].cornerCount(); ++c) {
         const std::uint32_t v = faces[f].vertex[c];
-        if (v >= firstVertex && v < endVertex)
+        if (inRange(v, firstVertex, endVertex))
           result.corner[fill[v]++] = static_cast<std::uint32_t>(f) << 2 | static_cast<std::uint32_t>(c);
       }
   });

@@ -19,9 +19,11 @@ struct VertexCorners {
   std::size_t vertexCount() const { return rowStart.empty() ? 0 : rowStart.size() - 1; }
 };
 
-// `vertexCount`: at least one more than the largest vertex index of `faces`. Same result for any
-// thread count (0: every core).
-VertexCorners findVertexCorners(std::span<const MeshFace> faces, std::size_t vertexCount, int threads);
+// `vertexCount`: at least one more than the largest vertex index of `faces`. With `wanted` (one flag
+// per vertex), the rows of the other vertices are left empty. Same result for any thread count (0:
+// every core).
+VertexCorners findVertexCorners(std::span<const MeshFace> faces, std::size_t vertexCount, int threads,
+                                std::span<const std::uint8_t> wanted = {});
 
 // One more than the largest vertex index the faces use (0 for no faces).
 std::size_t vertexCountOf(std::span<const MeshFace> faces, int threads);

@@ -1,10 +1,12 @@
 #include "lancer/mesh/vertex_normals.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
 #include <utility>
 
+#include "lancer/math/fast_acos.hpp"
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/vertex_corners.hpp"
 #include "lancer/mesh/vertex_ranges.hpp"
@@ -25,7 +27,7 @@ std::array<float, 4> cornerAngles(std::span<const Vec3> positions, const MeshFac
     out[c] = normalize(positions[face.vertex[(c + 1) % n]] - positions[face.vertex[c]]);
   std::array<float, 4> angle{0, 0, 0, 0};
   for (int c = 0; c < n; ++c)
-    angle[c] = std::acos(std::clamp(dot(out[c], -out[(c + n - 1) % n]), -1.0f, 1.0f));
+    angle[c] = fastAcos(std::clamp(dot(out[c], -out[(c + n - 1) % n]), -1.0f, 1.0f));
   return angle;
 }
 
@@ -102,10 +104,14 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
     const Vec3 normal = normalize(at.sum);
     return !(dot(normal, normal) > 0.5f);
   };
-  bool anyToWalk = false;
-  for (const VertexSum& at : vertexSum) anyToWalk |= at.faces != 0 && (mustWalk(at) || cancels(at));
+  std::vector<std::uint8_t> walks(vertexCount, 0);
+  parallelFor(vertexCount, threads, kGrain, [&](std::size_t v) {
+    const VertexSum& at = vertexSum[v];
+    walks[v] = at.faces != 0 && (mustWalk(at) || cancels(at));
+  });
   VertexCorners vertexCorners;
-  if (anyToWalk) vertexCorners = findVertexCorners(faces, vertexCount, threads);
+  if (std::find(walks.begin(), walks.end(), 1) != walks.end())
+    vertexCorners = findVertexCorners(faces, vertexCount, threads, walks);  // rows of those only
   const std::vector<std::uint32_t>& rowStart = vertexCorners.rowStart;
   const std::vector<std::uint32_t>& incidentCorner = vertexCorners.corner;  // face << 2 | corner
 
