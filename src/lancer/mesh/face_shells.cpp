@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "lancer/mesh/msh/huge_pages.hpp"
 #include "lancer/mesh/parity_disjoint_sets.hpp"
 #include "lancer/mesh/vertex_corners.hpp"
 #include "lancer/mesh/vertex_ranges.hpp"
@@ -33,7 +34,7 @@ std::vector<FaceEdge> sortedFaceEdges(std::span<const MeshFace> faces, int threa
     }
   });
   for (std::size_t v = 0; v < vertexCount; ++v) bucketStart[v + 1] += bucketStart[v];
-  std::vector<FaceEdge> edges(bucketStart.back());
+  std::vector<FaceEdge> edges = vectorOnHugePages<FaceEdge>(bucketStart.back());  // 48 bytes per face
   std::vector<std::uint32_t> fill(bucketStart.begin(), bucketStart.end() - 1);
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
     for (std::size_t f = 0; f < faces.size(); ++f) {

@@ -8,6 +8,7 @@
 
 #include "lancer/math/fast_acos.hpp"
 #include "lancer/mesh/face_geometry.hpp"
+#include "lancer/mesh/msh/huge_pages.hpp"
 #include "lancer/mesh/vertex_corners.hpp"
 #include "lancer/mesh/vertex_ranges.hpp"
 #include "lancer/util/parallel_for.hpp"
@@ -43,8 +44,8 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
   const std::size_t vertexCount = positions.size();
   // Per face, in face order (sequential reads, shared out by chunks of faces): its unit normal and
   // the weights of its corners.
-  std::vector<Vec3> unitFaceNormal(faceCount);
-  std::vector<std::array<float, 4>> cornerWeight(faceCount);
+  std::vector<Vec3> unitFaceNormal = vectorOnHugePages<Vec3>(faceCount);
+  std::vector<std::array<float, 4>> cornerWeight = vectorOnHugePages<std::array<float, 4>>(faceCount);
   parallelFor(faceCount, threads, kGrain, [&](std::size_t f) {
     unitFaceNormal[f] = faceNormal(positions, faces[f]);
     cornerWeight[f] = cornerAngles(positions, faces[f]);
@@ -73,7 +74,7 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
     std::uint8_t faces = 0;       // 0, 1, or 2 for more
     std::uint8_t withinHalf = 1;  // every face so far in the first one's group and half crease
   };
-  std::vector<VertexSum> vertexSum(vertexCount);
+  std::vector<VertexSum> vertexSum = vectorOnHugePages<VertexSum>(vertexCount);
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
     for (std::size_t f = 0; f < faceCount; ++f) {
       const MeshFace& face = faces[f];
@@ -116,7 +117,7 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
   const std::vector<std::uint32_t>& incidentCorner = vertexCorners.corner;  // face << 2 | corner
 
   CornerNormals result;
-  result.faceCorner.assign(faceCount, {0, 0, 0, 0});
+  result.faceCorner = vectorOnHugePages<std::array<std::uint32_t, 4>>(faceCount, {0, 0, 0, 0});
   // Per vertex: the index of its one normal, or kPerCorner when its corners were given theirs.
   constexpr std::uint32_t kPerCorner = 0xFFFFFFFFu;
   std::vector<std::uint32_t> vertexNormal(vertexCount, kPerCorner);

@@ -5,6 +5,7 @@
 
 #include <sys/mman.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -19,6 +20,17 @@ void adviseHugePages(const std::vector<T>& array) {
   const std::uintptr_t last = end & ~(kHugePage - 1);
   // Advice only: where the kernel has no huge pages (or THP is off) nothing changes.
   if (last > first) ::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+}
+
+// `count` copies of `value` in an array advised as above before its first touch (a vector made
+// with its size faults its pages in 4 KiB at a time while it fills them).
+template <typename T>
+std::vector<T> vectorOnHugePages(std::size_t count, const T& value = T{}) {
+  std::vector<T> array;
+  array.reserve(count);
+  adviseHugePages(array);
+  array.resize(count, value);
+  return array;
 }
 
 }  // namespace lancer
