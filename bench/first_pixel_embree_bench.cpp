@@ -9,6 +9,7 @@
 // one JSON object per line, for bench/time_to_first_pixel.sh to tabulate.
 //   first_pixel_embree_bench MESH.msh [repetitions]
 #include <embree3/rtcore.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -19,10 +20,12 @@
 #include <iterator>
 #include <map>
 #include <stdexcept>
+#include <string>
 
 #include "accel_bench_support.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/scene.hpp"
+#include "lancer/util/stage_times.hpp"
 #include "lancer/util/stopwatch.hpp"
 
 namespace lancer::bench {
@@ -184,6 +187,7 @@ int main(int argc, char** argv) {
     std::vector<double> seconds;
     std::vector<double> cpuSeconds;  // of the whole process: every thread's work
     double sahCost = 0, bytes = 0;
+    std::map<std::string, std::vector<double>> parts;  // the scene's own stage times, per repetition
   };
   std::vector<Stage> stages;
   auto timed = [](auto&& work) {
@@ -202,12 +206,19 @@ int main(int argc, char** argv) {
   };
   addStage("minimal parse", 1, timed([&] { (void)minimalParse(path).triangles.size(); }));
   addStage("lancer read", 1, timed([&] { (void)readMsh(path).faces.size(); }));
-  addStage("lancer scene", 0, [&] {
-    std::vector<Mesh> meshes{fileMesh};  // the copy is not timed
-    const Stopwatch stopwatch;
-    const Scene built = buildScene(description, std::move(meshes));
-    return stopwatch.seconds() + 0.0 * double(built.geometry.faces.size());
-  });
+  for (const int threads : {1, 2}) {
+    const std::size_t index = stages.size();
+    addStage("lancer scene", threads, [&, threads, index] {
+      std::vector<Mesh> meshes{fileMesh};  // the copy is not timed
+      StageTimes parts;
+      const Stopwatch stopwatch;
+      const Scene built = buildScene(description, std::move(meshes), threads, &parts);
+      const double seconds = stopwatch.seconds();
+      for (const StageTimes::Stage& part : parts.stages)
+        stages[index].parts[part.name].push_back(part.seconds);
+      return seconds + 0.0 * double(built.geometry.faces.size());
+    });
+  }
   std::map<std::string, KdTree> trees;
   for (const int threads : {1, 2}) {
     for (const std::string name : {"kdtree-sah", "kdtree-sah-exact", "kdtree-sah-variant"}) {
@@ -242,11 +253,14 @@ int main(int argc, char** argv) {
     }
   }
   for (const Stage& stage : stages) {
+    std::string parts;
+    for (const auto& [name, seconds] : stage.parts)
+      parts += fmt::format(", \"{}\": {:.4f}", name, median(seconds));
     std::printf(
         "{\"mesh\": \"%s\", \"triangles\": %zu, \"stage\": \"%s\", \"threads\": %d, \"seconds\": %.4f, "
-        "\"cpu_seconds\": %.4f, \"sah_cost\": %.2f, \"bytes\": %.0f}\n",
+        "\"cpu_seconds\": %.4f, \"sah_cost\": %.2f, \"bytes\": %.0f%s}\n",
         path.c_str(), triangles, stage.name.c_str(), stage.threads, median(stage.seconds),
-        median(stage.cpuSeconds), stage.sahCost, stage.bytes);
+        median(stage.cpuSeconds), stage.sahCost, stage.bytes, parts.c_str());
   }
 
   // Tree quality: each tree's single-thread CPU time on the same ray sets, interleaved.

@@ -59,16 +59,21 @@ def f(v, spec="{:.3f}"):
 def ratio(a, b):
     return None if a is None or b is None or b == 0 else a / b
 
-print("\n## Load (seconds, medians; scene = shells, orientation, nesting, normals, edges)")
-print("| mesh | triangles | minimal parse | lancer read | lancer scene | lancer load | load / parse |")
-print("|---|---|---|---|---|---|---|")
+print("\n## Load (seconds, medians; scene = orient (shells, orientation, nesting) + normals + the rest; load = read + scene on 2 threads)")
+print("| mesh | triangles | minimal parse | lancer read | scene 1T (orient + normals + rest) | scene 2T (orient + normals + rest) | lancer load | load / parse |")
+print("|---|---|---|---|---|---|---|---|")
+def scene_cell(m, t):
+    r = rows.get((m, "lancer scene", t))
+    if r is None:
+        return "-"
+    return f"{r['seconds']:.3f} ({r.get('orient', 0):.3f} + {r.get('normals', 0):.3f} + {r.get('scene', 0):.3f})"
 for m in meshes:
-    parse, read, scene = s(m, "minimal parse", 1), s(m, "lancer read", 1), s(m, "lancer scene", 0)
+    parse, read, scene = s(m, "minimal parse", 1), s(m, "lancer read", 1), s(m, "lancer scene", 2)
     load = read + scene
-    print(f"| {m} | {tris[m]} | {f(parse)} | {f(read)} | {f(scene)} | {f(load)} | {f(ratio(load, parse), '{:.2f}')} |")
+    print(f"| {m} | {tris[m]} | {f(parse)} | {f(read)} | {scene_cell(m, 1)} | {scene_cell(m, 2)} | {f(load)} | {f(ratio(load, parse), '{:.2f}')} |")
 if "1m" in meshes and "4m" in meshes:
-    l1 = s("1m", "lancer read", 1) + s("1m", "lancer scene", 0)
-    l4 = s("4m", "lancer read", 1) + s("4m", "lancer scene", 0)
+    l1 = s("1m", "lancer read", 1) + s("1m", "lancer scene", 2)
+    l4 = s("4m", "lancer read", 1) + s("4m", "lancer scene", 2)
     print(f"\nload 4M / 1M: {l4 / l1:.2f} (triangles {tris['4m'] / tris['1m']:.2f}x)")
 
 print("\n## Build (seconds, medians; Embree / lancer > 1: lancer builds faster)")

@@ -35,8 +35,7 @@ VertexCorners findVertexCorners(std::span<const MeshFace> faces, std::size_t ver
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
     for (const MeshFace& face : faces)
       for (int c = 0; c < face.cornerCount(); ++c)
-        if (face.vertex[c] >= firstVertex && face.vertex[c] < endVertex)
-          ++result.rowStart[face.vertex[c] + 1];
+        if (inRange(face.vertex[c], firstVertex, endVertex)) ++result.rowStart[face.vertex[c] + 1];
   });
   for (std::size_t v = 0; v < vertexCount; ++v) result.rowStart[v + 1] += result.rowStart[v];
   result.corner.resize(result.rowStart.back());
