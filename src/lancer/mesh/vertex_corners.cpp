@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "lancer/mesh/prefetch_corners.hpp"
 #include "lancer/mesh/vertex_ranges.hpp"
 #include "lancer/util/parallel_for.hpp"
 
@@ -33,20 +34,25 @@ VertexCorners findVertexCorners(std::span<const MeshFace> faces, std::size_t ver
   };
   result.rowStart.assign(vertexCount + 1, 0);
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
-    for (const MeshFace& face : faces)
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      prefetchCorners(result.rowStart.data() + 1, faces, f + kPrefetchFacesAhead);
+      const MeshFace& face = faces[f];
       for (int c = 0; c < face.cornerCount(); ++c)
         if (inRange(face.vertex[c], firstVertex, endVertex)) ++result.rowStart[face.vertex[c] + 1];
+    }
   });
   for (std::size_t v = 0; v < vertexCount; ++v) result.rowStart[v + 1] += result.rowStart[v];
   result.corner.resize(result.rowStart.back());
   std::vector<std::uint32_t> fill(result.rowStart.begin(), result.rowStart.end() - 1);
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
-    for (std::size_t f = 0; f < faces.size(); ++f)
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      prefetchCorners(fill.data(), faces, f + kPrefetchFacesAhead);
       for (int c = 0; c < faces[f].cornerCount(); ++c) {
         const std::uint32_t v = faces[f].vertex[c];
         if (inRange(v, firstVertex, endVertex))
           result.corner[fill[v]++] = static_cast<std::uint32_t>(f) << 2 | static_cast<std::uint32_t>(c);
       }
+    }
   });
   return result;
 }

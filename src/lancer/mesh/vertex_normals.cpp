@@ -9,6 +9,7 @@
 #include "lancer/math/fast_acos.hpp"
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/msh/huge_pages.hpp"
+#include "lancer/mesh/prefetch_corners.hpp"
 #include "lancer/mesh/vertex_corners.hpp"
 #include "lancer/mesh/vertex_ranges.hpp"
 #include "lancer/util/parallel_for.hpp"
@@ -47,6 +48,7 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
   std::vector<Vec3> unitFaceNormal = vectorOnHugePages<Vec3>(faceCount);
   std::vector<std::array<float, 4>> cornerWeight = vectorOnHugePages<std::array<float, 4>>(faceCount);
   parallelFor(faceCount, threads, kGrain, [&](std::size_t f) {
+    prefetchCorners(positions.data(), faces, f + kPrefetchFacesAhead);
     unitFaceNormal[f] = faceNormal(positions, faces[f]);
     cornerWeight[f] = cornerAngles(positions, faces[f]);
   });
@@ -77,6 +79,7 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
   std::vector<VertexSum> vertexSum = vectorOnHugePages<VertexSum>(vertexCount);
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
     for (std::size_t f = 0; f < faceCount; ++f) {
+      prefetchCorners(vertexSum.data(), faces, f + kPrefetchFacesAhead);
       const MeshFace& face = faces[f];
       const Vec3 normal = unitFaceNormal[f];
       const std::int32_t tag = facePhysicalTag[f];
@@ -212,6 +215,7 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
   });
   // The corners of smooth vertices, in face order.
   parallelFor(faceCount, threads, kGrain, [&](std::size_t f) {
+    prefetchCorners(vertexNormal.data(), faces, f + kPrefetchFacesAhead);
     const MeshFace& face = faces[f];
     for (int c = 0; c < face.cornerCount(); ++c) {
       const std::uint32_t index = vertexNormal[face.vertex[c]];
