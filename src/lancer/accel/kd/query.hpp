@@ -62,6 +62,14 @@ struct ClosestHit {
     takeIfCloser(testTriangle(tri, ray, tMin, upper), tri.face, ray, tMax, keeps, best, upper);
     return false;
   }
+  // The rest of test, for a triangle whose sheared corners passed the float half (traversal.cpp).
+  bool finish(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax, float ax, float ay, float az,
+              float bx, float by, float bz, float cx, float cy, float cz) {
+    const TriangleHit h =
+        triangle_detail::finishHit(ax, ay, az, bx, by, bz, cx, cy, cz, ray.shearZ, tMin, upper);
+    takeIfCloser(h, tri.face, ray, tMax, keeps, best, upper);
+    return false;
+  }
   float bound(float) const { return best.t; }
 };
 
@@ -72,6 +80,11 @@ struct AnyHit {
 
   bool test(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) const {
     const float t = intersectTriangle(tri, ray, tMin, tMax);
+    return t >= 0.0f && keeps(ray, tri.face, t);
+  }
+  bool finish(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax, float ax, float ay, float az,
+              float bx, float by, float bz, float cx, float cy, float cz) const {
+    const float t = triangle_detail::finishHit(ax, ay, az, bx, by, bz, cx, cy, cz, ray.shearZ, tMin, tMax).t;
     return t >= 0.0f && keeps(ray, tri.face, t);
   }
   float bound(float tMax) const { return tMax; }
