@@ -217,6 +217,7 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
   const Vec3& kd = colored ? fieldColor : material.kd;
   Vec3 color = scene_.appearance.ambient * (colored ? fieldColor : material.ka);
   const Vec3 toViewer = normalize(-ray.direction);
+  const Vec3 shadowOrigin = offsetRayOrigin(surface.position, surface.positionError, surface.geometricNormal);
   for (std::size_t l = 0; l < scene_.appearance.lights.size(); ++l) {
     const SceneLight& light = scene_.appearance.lights[l];
     const Vec3 toLight = light.position - surface.position;
@@ -228,8 +229,6 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
     if (maxComponent(contribution) <= 0.0f) continue;
     // A light behind the geometric surface is blocked by the surface itself.
     if (dot(surface.geometricNormal, lightDirection) <= 0.0f) continue;
-    const Vec3 shadowOrigin =
-        offsetRayOrigin(surface.position, surface.positionError, surface.geometricNormal);
     color +=
         contribution * lightTransmission(shadowOrigin, light.position, counters,
                                          ahead != nullptr ? ahead->shadowFrom(l, shadowOrigin) : nullptr);
