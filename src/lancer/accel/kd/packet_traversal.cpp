@@ -94,31 +94,56 @@ struct PacketFrame {
   __m256 shearX, shearY;
   __m256 kxIs0, kxIs1, kyIs0, kyIs1, kzIs0, kzIs1;
   std::uint32_t firstIsRight[3];
+  // Every lane has the same kx, ky, kz (coherent rays nearly always do): the triangle test picks
+  // each corner's coordinates once instead of blending all three per lane.
+  bool uniformAxes;
+  int kx, ky, kz;
   alignas(32) float shearZ[kPacketSize];
 };
 
 // The lanes among `lanes` whose ray's line meets `tri` (the float half of testTriangle, bit for bit).
 inline std::uint32_t sameSignLanes(const PackedTriangle& tri, const PacketFrame& f, std::uint32_t lanes,
                                    ShearedCorners& out) {
-  const __m256 ax0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.x), f.origin[0]);
-  const __m256 ay0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.y), f.origin[1]);
-  const __m256 az0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.z), f.origin[2]);
-  const __m256 bx0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.x), f.origin[0]);
-  const __m256 by0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.y), f.origin[1]);
-  const __m256 bz0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.z), f.origin[2]);
-  const __m256 cx0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.x), f.origin[0]);
-  const __m256 cy0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.y), f.origin[1]);
-  const __m256 cz0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.z), f.origin[2]);
-  const __m256 az = pickAxis(ax0, ay0, az0, f.kzIs0, f.kzIs1);
-  const __m256 bz = pickAxis(bx0, by0, bz0, f.kzIs0, f.kzIs1);
-  const __m256 cz = pickAxis(cx0, cy0, cz0, f.kzIs0, f.kzIs1);
-  // shear(x, s, z) = fma(-s, z, x)
-  const __m256 ax = _mm256_fnmadd_ps(f.shearX, az, pickAxis(ax0, ay0, az0, f.kxIs0, f.kxIs1));
-  const __m256 ay = _mm256_fnmadd_ps(f.shearY, az, pickAxis(ax0, ay0, az0, f.kyIs0, f.kyIs1));
-  const __m256 bx = _mm256_fnmadd_ps(f.shearX, bz, pickAxis(bx0, by0, bz0, f.kxIs0, f.kxIs1));
-  const __m256 by = _mm256_fnmadd_ps(f.shearY, bz, pickAxis(bx0, by0, bz0, f.kyIs0, f.kyIs1));
-  const __m256 cx = _mm256_fnmadd_ps(f.shearX, cz, pickAxis(cx0, cy0, cz0, f.kxIs0, f.kxIs1));
-  const __m256 cy = _mm256_fnmadd_ps(f.shearY, cz, pickAxis(cx0, cy0, cz0, f.kyIs0, f.kyIs1));
+  static_assert(sizeof(Vec3) == 3 * sizeof(float));
+  __m256 ax, ay, az, bx, by, bz, cx, cy, cz;
+  if (f.uniformAxes) {
+    // The same subtractions as below, only of the coordinates the blends would pick.
+    const float* v0 = &tri.v0.x;
+    const float* v1 = &tri.v1.x;
+    const float* v2 = &tri.v2.x;
+    auto relative = [&](const float* v, int axis) {
+      return _mm256_sub_ps(_mm256_set1_ps(v[axis]), f.origin[axis]);
+    };
+    az = relative(v0, f.kz);
+    bz = relative(v1, f.kz);
+    cz = relative(v2, f.kz);
+    ax = _mm256_fnmadd_ps(f.shearX, az, relative(v0, f.kx));
+    ay = _mm256_fnmadd_ps(f.shearY, az, relative(v0, f.ky));
+    bx = _mm256_fnmadd_ps(f.shearX, bz, relative(v1, f.kx));
+    by = _mm256_fnmadd_ps(f.shearY, bz, relative(v1, f.ky));
+    cx = _mm256_fnmadd_ps(f.shearX, cz, relative(v2, f.kx));
+    cy = _mm256_fnmadd_ps(f.shearY, cz, relative(v2, f.ky));
+  } else {
+    const __m256 ax0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.x), f.origin[0]);
+    const __m256 ay0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.y), f.origin[1]);
+    const __m256 az0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.z), f.origin[2]);
+    const __m256 bx0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.x), f.origin[0]);
+    const __m256 by0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.y), f.origin[1]);
+    const __m256 bz0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.z), f.origin[2]);
+    const __m256 cx0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.x), f.origin[0]);
+    const __m256 cy0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.y), f.origin[1]);
+    const __m256 cz0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.z), f.origin[2]);
+    az = pickAxis(ax0, ay0, az0, f.kzIs0, f.kzIs1);
+    bz = pickAxis(bx0, by0, bz0, f.kzIs0, f.kzIs1);
+    cz = pickAxis(cx0, cy0, cz0, f.kzIs0, f.kzIs1);
+    // shear(x, s, z) = fma(-s, z, x)
+    ax = _mm256_fnmadd_ps(f.shearX, az, pickAxis(ax0, ay0, az0, f.kxIs0, f.kxIs1));
+    ay = _mm256_fnmadd_ps(f.shearY, az, pickAxis(ax0, ay0, az0, f.kyIs0, f.kyIs1));
+    bx = _mm256_fnmadd_ps(f.shearX, bz, pickAxis(bx0, by0, bz0, f.kxIs0, f.kxIs1));
+    by = _mm256_fnmadd_ps(f.shearY, bz, pickAxis(bx0, by0, bz0, f.kyIs0, f.kyIs1));
+    cx = _mm256_fnmadd_ps(f.shearX, cz, pickAxis(cx0, cy0, cz0, f.kxIs0, f.kxIs1));
+    cy = _mm256_fnmadd_ps(f.shearY, cz, pickAxis(cx0, cy0, cz0, f.kyIs0, f.kyIs1));
+  }
   const __m256 u = differenceOfProducts(cx, by, cy, bx);
   const __m256 v = differenceOfProducts(ax, cy, ay, cx);
   const __m256 w = differenceOfProducts(bx, ay, by, ax);
@@ -222,6 +247,18 @@ bool setUpFrame(const RayPacket& packet, std::uint32_t& active, const Aabb& boun
     const __m256i values = _mm256_load_si256(reinterpret_cast<const __m256i*>(axes[which]));
     return _mm256_castsi256_ps(_mm256_cmpeq_epi32(values, _mm256_set1_epi32(axis)));
   };
+  // Inactive lanes were given axes 0, 0, 0 above: compare the active ones only.
+  const int firstLane = std::countr_zero(active | (1u << kPacketSize));
+  f.uniformAxes = firstLane < kPacketSize;
+  if (f.uniformAxes) {
+    f.kx = axes[0][firstLane];
+    f.ky = axes[1][firstLane];
+    f.kz = axes[2][firstLane];
+    for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+      const int i = std::countr_zero(lanes);
+      f.uniformAxes = f.uniformAxes && axes[0][i] == f.kx && axes[1][i] == f.ky && axes[2][i] == f.kz;
+    }
+  }
   f.kxIs0 = isAxis(0, 0);
   f.kxIs1 = isAxis(0, 1);
   f.kyIs0 = isAxis(1, 0);
