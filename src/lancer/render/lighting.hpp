@@ -12,6 +12,9 @@
 namespace lancer {
 
 inline float lightAttenuation(const SceneLight& light, float distance) {
+  // No fall-off (the default): the division below gives 1 exactly (or 1 for its NaN when d d
+  // overflows), at the cost of a divide per light and point.
+  if (light.attenuation.x == 1.0f && light.attenuation.y == 0.0f && light.attenuation.z == 0.0f) return 1.0f;
   const float denominator =
       light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
   return denominator > 0.0f ? 1.0f / denominator : 1.0f;
@@ -26,7 +29,7 @@ inline float specularPower(float x, float n) {
   if (!(static_cast<float>(whole) == n && whole >= 0 && whole <= 1024)) return std::pow(x, n);
   float result = 1.0f, square = x;
   for (unsigned e = static_cast<unsigned>(whole); e != 0; e >>= 1) {
-    if (e & 1u) result *= square;
+    result *= (e & 1u) != 0 ? square : 1.0f;  // times 1 is exact: branch-free, same value
     square *= square;
   }
   return result;
