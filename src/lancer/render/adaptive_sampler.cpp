@@ -122,7 +122,7 @@ void AdaptiveSampler::traceCorners(int x0, int y0, int columns, int rows, TraceC
       for (int p = 0; p < kPacketSize; ++p) {
         const int i = i0 + p % kBlockWidth, j = j0 + p / kBlockWidth;
         if (i >= columns || j >= rows) continue;
-        rays[p] = camera_.generateRay(static_cast<float>(x0 + i), static_cast<float>(y0 + j));
+        camera_.generateRay(static_cast<float>(x0 + i), static_cast<float>(y0 + j), rays[p]);
         active |= 1u << p;
       }
       tracer_.tracePrimaries(rays, active, parallelView_, results, counters);
