@@ -378,6 +378,50 @@ std::uint32_t walkPacket(std::span<const KdNode> layout, const PacketFrame& f, s
     }
     return finishedLanes;
   };
+  // The same for a lane left alone in a subtree (walkLane): the triangles of a larger leaf eight at a
+  // time against its one ray (kd/query.hpp), with the packet's mailbox kept as testLeaf keeps it. A
+  // triangle marked tested whose test an any-hit lane then skips, being blocked, is never tested again
+  // by that lane anyway; an evicted slot only makes another lane test a triangle again, which gives
+  // the same answer (as in the single-ray walk).
+  auto testLeafAlone = [&](const KdNode* leaf, std::uint32_t bit) {
+#ifdef LANCER_LEAF_AVX2
+    const std::uint32_t count = leaf->triangleCount();
+    if (count < kMinSimdLeaf) return testLeaf(leaf, bit);
+    const int lane = std::countr_zero(bit);
+    const std::uint32_t* index = reinterpret_cast<const std::uint32_t*>(base + leaf->payload);
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const char* tri = reinterpret_cast<const char*>(base + index[i]);
+      __builtin_prefetch(tri);
+      __builtin_prefetch(tri + sizeof(PackedTriangle) - 1);
+    }
+    std::uint32_t pending[8];
+    for (std::uint32_t i = 0; i < count;) {
+      std::uint32_t n = 0;
+      for (; i < count && n < 8; ++i) {
+        const std::uint32_t triangle = index[i];
+        MailboxSlot& slot = mailbox[triangle & (kMailboxSize - 1)];
+        if (slot.triangle == triangle) {
+          if ((slot.lanes & bit) != 0) continue;
+          slot.lanes |= bit;
+        } else {
+          slot = {triangle, bit};
+        }
+        pending[n++] = triangle;
+      }
+      if (n == 0) break;
+      LeafCorners corners;
+      for (std::uint32_t passed = sameSignTriangles(base, pending, n, query.packet.ray[lane], corners);
+           passed != 0; passed &= passed - 1) {
+        const int k = std::countr_zero(passed);
+        if (query.finishAlone(*reinterpret_cast<const PackedTriangle*>(base + pending[k]), lane, corners, k))
+          return bit;
+      }
+    }
+    return 0u;
+#else
+    return testLeaf(leaf, bit);
+#endif
+  };
   while (true) {
     bool alone = false;
     while (!node->isLeaf()) {
@@ -420,9 +464,10 @@ std::uint32_t walkPacket(std::span<const KdNode> layout, const PacketFrame& f, s
     std::uint32_t finished;
     if (alone) {
       const int lane = std::countr_zero(lanes);
-      finished = walkLane(base, node, f, lane, laneOf(tEnter, lane), laneOf(tExit, lane), query, testLeaf)
-                     ? lanes
-                     : 0u;
+      finished =
+          walkLane(base, node, f, lane, laneOf(tEnter, lane), laneOf(tExit, lane), query, testLeafAlone)
+              ? lanes
+              : 0u;
     } else {
       finished = testLeaf(node, lanes);
     }
@@ -464,6 +509,15 @@ struct PacketClosestHit {
     }
     return 0;
   }
+  // test's finish on lane i for triangle k of an eight-triangle test (walkPacket's testLeafAlone).
+  bool finishAlone(const PackedTriangle& tri, int i, const LeafCorners& c, int k) {
+    const TriangleHit h =
+        triangle_detail::finishHit(c.ax[k], c.ay[k], c.az[k], c.bx[k], c.by[k], c.bz[k], c.cx[k], c.cy[k],
+                                   c.cz[k], frame.shearZ[i], packet.tMin[i], upper[i]);
+    if (takeIfCloser(h, tri.face, packet.ray[i], packet.tMax[i], keeps, best[i], upper[i]))
+      bestT[i] = best[i].t;
+    return false;
+  }
   __m256 bound() const { return _mm256_load_ps(bestT); }
   float laneBound(int lane) const { return bestT[lane]; }
 };
@@ -484,6 +538,13 @@ struct PacketAnyHit {
       if (t >= 0.0f && keeps(packet.ray[i], tri.face, t)) blocked |= 1u << i;
     }
     return blocked;
+  }
+  bool finishAlone(const PackedTriangle& tri, int i, const LeafCorners& c, int k) const {
+    const float t =
+        triangle_detail::finishHit(c.ax[k], c.ay[k], c.az[k], c.bx[k], c.by[k], c.bz[k], c.cx[k], c.cy[k],
+                                   c.cz[k], frame.shearZ[i], packet.tMin[i], packet.tMax[i])
+            .t;
+    return t >= 0.0f && keeps(packet.ray[i], tri.face, t);
   }
   __m256 bound() const { return _mm256_load_ps(tMax); }
   float laneBound(int lane) const { return tMax[lane]; }
