@@ -130,6 +130,13 @@ bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, c
           LANCER_KD_COUNT(triangleTests);
         }
         if (n == 0) break;
+        if (n < kMinSimdLeaf) {  // what the mailbox left is too few to be worth the transpose
+          for (std::uint32_t k = 0; k < n; ++k) {
+            if (query.test(*reinterpret_cast<const PackedTriangle*>(base + pending[k]), ray, tMin, tMax))
+              return true;
+          }
+          continue;
+        }
         LeafCorners c;
         for (std::uint32_t passed = sameSignTriangles(base, pending, n, ray, c); passed != 0;
              passed &= passed - 1) {
