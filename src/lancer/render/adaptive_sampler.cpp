@@ -1,6 +1,7 @@
 #include "lancer/render/adaptive_sampler.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace lancer {
@@ -61,12 +62,41 @@ AdaptiveSampler::Sample AdaptiveSampler::square(int i, int j, int size, TraceCou
   if (size == 1 || !differ(a, b, c, d))
     return {(a.color + b.color + c.color + d.color) * 0.25f, (a.alpha + b.alpha + c.alpha + d.alpha) * 0.25f};
   const int half = size / 2;
+  if (packets_) traceMidpoints(i, j, size, counters, samples);
   const Sample s00 = square(i, j, half, counters, samples);
   const Sample s10 = square(i + half, j, half, counters, samples);
   const Sample s01 = square(i, j + half, half, counters, samples);
   const Sample s11 = square(i + half, j + half, half, counters, samples);
   return {(s00.color + s10.color + s01.color + s11.color) * 0.25f,
           (s00.alpha + s10.alpha + s01.alpha + s11.alpha) * 0.25f};
+}
+
+void AdaptiveSampler::traceMidpoints(int i, int j, int size, TraceCounters& counters,
+                                     std::uint64_t& samples) {
+  const int half = size / 2;
+  const int points[5][2] = {
+      {i + half, j}, {i, j + half}, {i + half, j + half}, {i + size, j + half}, {i + half, j + size}};
+  const float step = 1.0f / static_cast<float>(side_ - 1);
+  Ray rays[kPacketSize];
+  std::size_t index[kPacketSize];
+  std::uint32_t active = 0;
+  for (int p = 0; p < 5; ++p) {
+    index[p] = static_cast<std::size_t>(points[p][1] * side_ + points[p][0]);
+    if (latticeStamp_[index[p]] == stamp_) continue;
+    // The very ray latticeSample would trace there.
+    camera_.generateRay(static_cast<float>(pixelX_) + static_cast<float>(points[p][0]) * step,
+                        static_cast<float>(pixelY_) + static_cast<float>(points[p][1]) * step, rays[p]);
+    active |= 1u << p;
+  }
+  if (std::popcount(active) < 2) return;  // one ray: latticeSample traces it as well
+  TraceResult results[kPacketSize];
+  tracer_.tracePrimaries(rays, active, parallelView_, results, counters);
+  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+    const int p = std::countr_zero(lanes);
+    ++samples;
+    lattice_[index[p]] = {results[p].color, results[p].alpha};
+    latticeStamp_[index[p]] = stamp_;
+  }
 }
 
 Rgba AdaptiveSampler::shadePixel(int x, int y, const Sample corners[4], TraceCounters& counters,
@@ -122,7 +152,7 @@ void AdaptiveSampler::traceCorners(int x0, int y0, int columns, int rows, TraceC
       for (int p = 0; p < kPacketSize; ++p) {
         const int i = i0 + p % kBlockWidth, j = j0 + p / kBlockWidth;
         if (i >= columns || j >= rows) continue;
-        rays[p] = camera_.generateRay(static_cast<float>(x0 + i), static_cast<float>(y0 + j));
+        camera_.generateRay(static_cast<float>(x0 + i), static_cast<float>(y0 + j), rays[p]);
         active |= 1u << p;
       }
       tracer_.tracePrimaries(rays, active, parallelView_, results, counters);

@@ -47,6 +47,9 @@ class AdaptiveSampler {
   // Mean of the square with lower corner (i, j) on the pixel's lattice and side `size` (lattice units).
   Sample square(int i, int j, int size, TraceCounters& counters, std::uint64_t& samples);
   Sample& latticeSample(int i, int j, TraceCounters& counters, std::uint64_t& samples);
+  // With packets: the untraced ones of the five lattice points that splitting the square with lower
+  // corner (i, j) and side `size` needs, traced as one packet before the halves ask for them.
+  void traceMidpoints(int i, int j, int size, TraceCounters& counters, std::uint64_t& samples);
   bool differ(const Sample& a, const Sample& b, const Sample& c, const Sample& d) const;
 
   const Tracer& tracer_;

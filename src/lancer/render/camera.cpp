@@ -50,12 +50,19 @@ Camera::Camera(const CameraSettings& givenSettings, const Vec3d& sceneOrigin, co
 }
 
 Ray Camera::generateRay(float x, float y) const {
+  Ray ray;
+  generateRay(x, y, ray);
+  return ray;
+}
+
+void Camera::generateRay(float x, float y, Ray& ray) const {
   const float sx = (2.0f * x * invWidth_ - 1.0f) * halfWidth_ + shiftX_;
   const float sy = (1.0f - 2.0f * y * invHeight_) * halfHeight_ + shiftY_;
   if (projection_ == Projection::Perspective) {
-    return Ray(position_, normalize(forward_ + right_ * sx + up_ * sy));
+    ray = Ray(position_, normalize(forward_ + right_ * sx + up_ * sy));
+  } else {
+    ray = Ray(position_ + right_ * sx + up_ * sy, forward_);
   }
-  return Ray(position_ + right_ * sx + up_ * sy, forward_);
 }
 
 bool Camera::project(const Vec3& p, float& x, float& y) const {

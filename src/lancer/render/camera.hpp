@@ -19,6 +19,11 @@ class Camera {
 
   // (x, y) in pixels from the image's top-left corner; pixel centres are at half-integers.
   Ray generateRay(float x, float y) const;
+  // The same ray, made in place: returned by value into a packet, the ray was stored piecewise and
+  // copied whole at once, a stalled store-to-load forward per ray (5% of examples/demo.toml).
+  // Out of line on purpose: inlined into a caller's loop, the compiler fuses its products
+  // differently there and primary rays (so images) change in the last bit.
+  void generateRay(float x, float y, Ray& ray) const;
 
   Projection projection() const { return projection_; }
   // World size of one pixel along a primary ray: grows with distance for a perspective camera,

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "lancer/math/vec3.hpp"
 
@@ -23,6 +24,15 @@ inline Vec3 rayPointError(const Vec3& origin, const Vec3& direction, float t) {
   return (abs(origin) + abs(direction * t) * 2.0f) * (4.0f * 0x1p-24f);
 }
 
+// std::nextafter(x, +infinity) without the libm call (three per shadow ray origin): the next float
+// up, x itself for NaN and +infinity, the smallest denormal for either zero.
+inline float floatAbove(float x) {
+  if (!(x < INFINITY)) return x;
+  if (x == 0.0f) return std::numeric_limits<float>::denorm_min();
+  const auto bits = std::bit_cast<std::uint32_t>(x);
+  return std::bit_cast<float>(x > 0.0f ? bits + 1 : bits - 1);
+}
+
 // Moves p along `normal` (unit, to the side the new ray leaves from) by the error bound `error` (per
 // coordinate) projected on it, then rounds each coordinate away from p so that the rounding of the
 // sum cannot undo the move. Pharr, Jakob & Humphreys, "Physically Based Rendering", 4th ed., 6.8.6.
@@ -30,8 +40,7 @@ inline Vec3 offsetRayOrigin(const Vec3& p, const Vec3& error, const Vec3& normal
   const float distance = dot(abs(normal), error);
   const Vec3 offset = normal * distance;
   auto away = [](float moved, float by) {
-    return by > 0.0f ? std::nextafter(moved, INFINITY)
-                     : (by < 0.0f ? std::nextafter(moved, -INFINITY) : moved);
+    return by > 0.0f ? floatAbove(moved) : (by < 0.0f ? -floatAbove(-moved) : moved);
   };
   const Vec3 moved = p + offset;
   return {away(moved.x, offset.x), away(moved.y, offset.y), away(moved.z, offset.z)};

@@ -180,7 +180,7 @@ void tracePixelBlock(const Tracer& tracer, const Camera& camera, const RenderSet
         const int x = x0 + p % kBlockWidth, y = y0 + p / kBlockWidth;
         float dx = 0.5f, dy = 0.5f;
         gridSampleOffset(settings.sampler, n, i, j, x, y, dx, dy);
-        rays[p] = camera.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy);
+        camera.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy, rays[p]);
       }
       tracer.tracePrimaries(rays, active, parallelView, results, counters);
       for (int p = 0; p < kPacketSize; ++p) {

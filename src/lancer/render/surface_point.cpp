@@ -128,14 +128,32 @@ void pointOnHitTriangle(const Scene& scene, const MeshFace& face, const Vec3& p,
   error = surfacePointError(a, b, c);
 }
 
+namespace {
+
+// Whether shading reads a point's corner weights on `face` (shading.cpp, field_shading.cpp).
+bool needsCornerWeights(const Scene& scene, std::uint32_t face) {
+  if (scene.appearance.faceShading[face] != ShadingMode::Flat) return true;
+  if (!scene.fieldColors) return false;
+  const std::uint8_t map = scene.fieldColors->faceColorMap[face];
+  return map != 0 && (map & FieldColors::kPerFace) == 0;
+}
+
+}  // namespace
+
 SurfacePoint makeSurfacePoint(const Scene& scene, const Ray& ray, const Hit& hit) {
   SurfacePoint sp;
   sp.face = hit.face;
   const MeshFace& face = scene.geometry.faces[hit.face];
   if (face.isQuad()) {
-    // Bilinear weights are not the hit half's barycentric ones: found again from the point.
+    // Bilinear weights are not the hit half's barycentric ones: found again from the point, where
+    // something reads them (smooth or Gouraud normals, a per-vertex field colour); a flat quad's
+    // shading never does, and inverting the bilinear map is a fair part of its cost.
     const Vec3 alongRay = ray.at(hit.t);
-    faceCornerWeights(scene, face, alongRay, sp.cornerWeight);
+    if (needsCornerWeights(scene, hit.face)) {
+      faceCornerWeights(scene, face, alongRay, sp.cornerWeight);
+    } else {
+      for (float& weight : sp.cornerWeight) weight = 0.25f;
+    }
     pointOnHitTriangle(scene, face, alongRay, sp.position, sp.positionError);
   } else {
     // The triangle test's own weights (the accelerators' triangle is the face, corners in order):

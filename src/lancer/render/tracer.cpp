@@ -217,19 +217,23 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
   const Vec3& kd = colored ? fieldColor : material.kd;
   Vec3 color = scene_.appearance.ambient * (colored ? fieldColor : material.ka);
   const Vec3 toViewer = normalize(-ray.direction);
+  const Vec3 shadowOrigin = offsetRayOrigin(surface.position, surface.positionError, surface.geometricNormal);
+  const bool perCorner =
+      !surface.isCap && scene_.appearance.faceShading[surface.face] == ShadingMode::Gouraud;
   for (std::size_t l = 0; l < scene_.appearance.lights.size(); ++l) {
     const SceneLight& light = scene_.appearance.lights[l];
     const Vec3 toLight = light.position - surface.position;
     const float distance = length(toLight);
     if (!(distance > 0.0f)) continue;
     const Vec3 lightDirection = toLight * (1.0f / distance);
-    const Vec3 contribution = lightResponse(scene_, surface, material, kd, light, ray, parallelView, toViewer,
-                                            lightDirection, distance);
-    if (maxComponent(contribution) <= 0.0f) continue;
     // A light behind the geometric surface is blocked by the surface itself.
     if (dot(surface.geometricNormal, lightDirection) <= 0.0f) continue;
-    const Vec3 shadowOrigin =
-        offsetRayOrigin(surface.position, surface.positionError, surface.geometricNormal);
+    // lightResponse's own first case, inlined: all but Gouraud faces light the point itself.
+    const Vec3 contribution = perCorner ? lightResponse(scene_, surface, material, kd, light, ray,
+                                                        parallelView, toViewer, lightDirection, distance)
+                                        : directLighting(material, kd, light, surface.shadingNormal, toViewer,
+                                                         lightDirection, distance);
+    if (maxComponent(contribution) <= 0.0f) continue;
     color +=
         contribution * lightTransmission(shadowOrigin, light.position, counters,
                                          ahead != nullptr ? ahead->shadowFrom(l, shadowOrigin) : nullptr);

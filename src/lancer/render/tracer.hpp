@@ -60,13 +60,20 @@ struct PrimaryAhead {
   bool surfaceKnown = false;       // `surface` is makeSurfacePoint of the ray and firstHit
   std::uint32_t shadowsKnown = 0;  // bit l: shadow[l] holds the first shadow query towards light l
   Hit firstHit;
-  SurfacePoint surface;
-  // Left uninitialised (a packet's worth is made per sample): only those of shadowsKnown are read.
+  union {
+    SurfacePoint surface;  // only when surfaceKnown
+  };
   struct Shadow {
     Vec3 from;    // the origin the query was traced from
     bool answer;  // blocked (opaque scenes), or the closest-hit query hit (`hit`)
     Hit hit;
-  } shadow[kPacketLights];
+  };
+  // Left unconstructed, like `surface` (a packet's worth is made per sample, and initialising them
+  // all cost 5% of examples/demo.toml): only those of shadowsKnown are written and read.
+  union {
+    Shadow shadow[kPacketLights];
+  };
+  PrimaryAhead() {}
 
   // The answer traced ahead towards light `light` from `origin`, or nullptr.
   const Shadow* shadowFrom(std::size_t light, const Vec3& origin) const;

@@ -76,9 +76,9 @@ void Tracer::traceAhead(std::span<const Ray, kPacketSize> rays, std::uint32_t ac
     for (std::uint32_t lanes = onSurface | onCatcher; lanes != 0; lanes &= lanes - 1) {
       const int i = std::countr_zero(lanes);
       // Only towards lights in front of the point (the shading tests the same before it asks).
+      // The length is positive exactly when its square is (no square root needed to ask).
       const Vec3 toLight = lightPosition - point[i];
-      const float distance = length(toLight);
-      if (!(distance > 0.0f) || dot(normal[i], toLight) <= 0.0f) continue;
+      if (!(dot(toLight, toLight) > 0.0f) || dot(normal[i], toLight) <= 0.0f) continue;
       if (!shadowQuery(from[i], lightPosition, shadow.ray[i], shadow.tMin[i], shadow.tMax[i])) continue;
       traced |= 1u << i;
     }

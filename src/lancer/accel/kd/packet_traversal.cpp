@@ -11,13 +11,9 @@
 #include <cmath>
 #include <type_traits>
 
+#include "lancer/accel/kd/packet_frame.hpp"
 #include "lancer/accel/kd/query.hpp"
 #include "lancer/accel/kd_tree.hpp"
-
-#if defined(__AVX2__) && defined(__FMA__)
-#include <immintrin.h>
-#define LANCER_PACKETS_AVX2 1
-#endif
 
 namespace lancer {
 namespace {
@@ -60,178 +56,6 @@ std::uint32_t anyHitsOneByOne(const KdTree& tree, const RayPacket& packet, std::
 }
 
 #ifdef LANCER_PACKETS_AVX2
-
-inline std::uint32_t laneMask(__m256 condition) {
-  return static_cast<std::uint32_t>(_mm256_movemask_ps(condition));
-}
-
-// a b - c d as triangle_detail::differenceOfProducts computes it (Kahan's algorithm with FMA).
-inline __m256 differenceOfProducts(__m256 a, __m256 b, __m256 c, __m256 d) {
-  const __m256 cd = _mm256_mul_ps(c, d);
-  const __m256 cdError = _mm256_fnmadd_ps(c, d, cd);
-  return _mm256_add_ps(_mm256_fmsub_ps(a, b, cd), cdError);
-}
-
-// Per lane, the component of (x, y, z) along the lane's axis (is0: axis 0, is1: axis 1, else 2).
-inline __m256 pickAxis(__m256 x, __m256 y, __m256 z, __m256 is0, __m256 is1) {
-  return _mm256_blendv_ps(_mm256_blendv_ps(z, y, is1), x, is0);
-}
-
-// A triangle's corners relative to each lane's origin in the lane's sheared frame, as testTriangle
-// computes them, for finishing the test in double on the lanes whose edge functions agree in sign.
-struct ShearedCorners {
-  alignas(32) float ax[kPacketSize], ay[kPacketSize], az[kPacketSize];
-  alignas(32) float bx[kPacketSize], by[kPacketSize], bz[kPacketSize];
-  alignas(32) float cx[kPacketSize], cy[kPacketSize], cz[kPacketSize];
-};
-
-// The packet's rays, lane i of each register being ray i.
-struct PacketFrame {
-  __m256 origin[3];
-  __m256 invDirection[3];
-  __m256 nearEdge[3], farEdge[3];  // the split-plane band's edges, as in the single-ray walk
-  __m256 eps;
-  __m256 shearX, shearY;
-  __m256 kxIs0, kxIs1, kyIs0, kyIs1, kzIs0, kzIs1;
-  std::uint32_t firstIsRight[3];
-  alignas(32) float shearZ[kPacketSize];
-};
-
-// The lanes among `lanes` whose ray's line meets `tri` (the float half of testTriangle, bit for bit).
-inline std::uint32_t sameSignLanes(const PackedTriangle& tri, const PacketFrame& f, std::uint32_t lanes,
-                                   ShearedCorners& out) {
-  const __m256 ax0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.x), f.origin[0]);
-  const __m256 ay0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.y), f.origin[1]);
-  const __m256 az0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.z), f.origin[2]);
-  const __m256 bx0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.x), f.origin[0]);
-  const __m256 by0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.y), f.origin[1]);
-  const __m256 bz0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.z), f.origin[2]);
-  const __m256 cx0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.x), f.origin[0]);
-  const __m256 cy0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.y), f.origin[1]);
-  const __m256 cz0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.z), f.origin[2]);
-  const __m256 az = pickAxis(ax0, ay0, az0, f.kzIs0, f.kzIs1);
-  const __m256 bz = pickAxis(bx0, by0, bz0, f.kzIs0, f.kzIs1);
-  const __m256 cz = pickAxis(cx0, cy0, cz0, f.kzIs0, f.kzIs1);
-  // shear(x, s, z) = fma(-s, z, x)
-  const __m256 ax = _mm256_fnmadd_ps(f.shearX, az, pickAxis(ax0, ay0, az0, f.kxIs0, f.kxIs1));
-  const __m256 ay = _mm256_fnmadd_ps(f.shearY, az, pickAxis(ax0, ay0, az0, f.kyIs0, f.kyIs1));
-  const __m256 bx = _mm256_fnmadd_ps(f.shearX, bz, pickAxis(bx0, by0, bz0, f.kxIs0, f.kxIs1));
-  const __m256 by = _mm256_fnmadd_ps(f.shearY, bz, pickAxis(bx0, by0, bz0, f.kyIs0, f.kyIs1));
-  const __m256 cx = _mm256_fnmadd_ps(f.shearX, cz, pickAxis(cx0, cy0, cz0, f.kxIs0, f.kxIs1));
-  const __m256 cy = _mm256_fnmadd_ps(f.shearY, cz, pickAxis(cx0, cy0, cz0, f.kyIs0, f.kyIs1));
-  const __m256 u = differenceOfProducts(cx, by, cy, bx);
-  const __m256 v = differenceOfProducts(ax, cy, ay, cx);
-  const __m256 w = differenceOfProducts(bx, ay, by, ax);
-  const __m256 zero = _mm256_setzero_ps();
-  const __m256 allNonNegative =
-      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_GE_OQ), _mm256_cmp_ps(v, zero, _CMP_GE_OQ)),
-                    _mm256_cmp_ps(w, zero, _CMP_GE_OQ));
-  const __m256 allNonPositive =
-      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_LE_OQ), _mm256_cmp_ps(v, zero, _CMP_LE_OQ)),
-                    _mm256_cmp_ps(w, zero, _CMP_LE_OQ));
-  const std::uint32_t passed = laneMask(_mm256_or_ps(allNonNegative, allNonPositive)) & lanes;
-  if (passed != 0) {
-    _mm256_store_ps(out.ax, ax);
-    _mm256_store_ps(out.ay, ay);
-    _mm256_store_ps(out.az, az);
-    _mm256_store_ps(out.bx, bx);
-    _mm256_store_ps(out.by, by);
-    _mm256_store_ps(out.bz, bz);
-    _mm256_store_ps(out.cx, cx);
-    _mm256_store_ps(out.cy, cy);
-    _mm256_store_ps(out.cz, cz);
-  }
-  return passed;
-}
-
-inline TriangleHit finishLane(const ShearedCorners& c, const PacketFrame& f, int i, float tMin, float tMax) {
-  return triangle_detail::finishHit(c.ax[i], c.ay[i], c.az[i], c.bx[i], c.by[i], c.bz[i], c.cx[i], c.cy[i],
-                                    c.cz[i], f.shearZ[i], tMin, tMax);
-}
-
-// |x| per lane (std::abs).
-inline __m256 absolute(__m256 x) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), x); }
-
-// Sets up the frame of the lanes `active`, keeping in `active` those whose rays meet the scene box,
-// with each one's interval in the box: the single-ray walk's set-up (intersectAabb and the bands)
-// lane by lane. False when the rays run different ways along some axis.
-bool setUpFrame(const RayPacket& packet, std::uint32_t& active, const Aabb& bounds, float magnitude,
-                PacketFrame& f, __m256& tEnter, __m256& tExit) {
-  alignas(32) float lane[10][kPacketSize];
-  alignas(32) int axes[3][kPacketSize];
-  for (int i = 0; i < kPacketSize; ++i) {
-    if ((active >> i & 1u) == 0) {
-      for (float* row : lane) row[i] = 0.0f;
-      axes[0][i] = axes[1][i] = axes[2][i] = 0;
-      f.shearZ[i] = 0.0f;
-      continue;
-    }
-    const Ray& ray = packet.ray[i];
-    lane[0][i] = ray.origin.x;
-    lane[1][i] = ray.origin.y;
-    lane[2][i] = ray.origin.z;
-    lane[3][i] = ray.invDirection.x;
-    lane[4][i] = ray.invDirection.y;
-    lane[5][i] = ray.invDirection.z;
-    lane[6][i] = ray.shearX;
-    lane[7][i] = ray.shearY;
-    lane[8][i] = packet.tMin[i];
-    lane[9][i] = packet.tMax[i];
-    f.shearZ[i] = ray.shearZ;
-    axes[0][i] = ray.kx;
-    axes[1][i] = ray.ky;
-    axes[2][i] = ray.kz;
-  }
-  for (int a = 0; a < 3; ++a) {
-    f.origin[a] = _mm256_load_ps(lane[a]);
-    f.invDirection[a] = _mm256_load_ps(lane[3 + a]);
-  }
-  // intersectAabb, lane by lane (NaN from 0 * inf leaves the span as it is).
-  const float lower[3] = {bounds.lower.x, bounds.lower.y, bounds.lower.z};
-  const float upper[3] = {bounds.upper.x, bounds.upper.y, bounds.upper.z};
-  __m256 tIn = _mm256_load_ps(lane[8]), tOut = _mm256_load_ps(lane[9]);
-  for (int a = 0; a < 3; ++a) {
-    const __m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(lower[a]), f.origin[a]), f.invDirection[a]);
-    const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(upper[a]), f.origin[a]), f.invDirection[a]);
-    const __m256 swap = _mm256_cmp_ps(t0, t1, _CMP_GT_OQ);
-    const __m256 near = _mm256_blendv_ps(t0, t1, swap), far = _mm256_blendv_ps(t1, t0, swap);
-    tIn = _mm256_blendv_ps(tIn, near, _mm256_cmp_ps(near, tIn, _CMP_GT_OQ));
-    tOut = _mm256_blendv_ps(tOut, far, _mm256_cmp_ps(far, tOut, _CMP_LT_OQ));
-  }
-  active &= laneMask(_mm256_cmp_ps(tIn, tOut, _CMP_LE_OQ));
-  const __m256 zero = _mm256_setzero_ps();
-  const __m256 band = _mm256_mul_ps(
-      _mm256_set1_ps(kPlaneSlack),
-      _mm256_max_ps(
-          _mm256_set1_ps(magnitude),
-          _mm256_max_ps(_mm256_max_ps(absolute(f.origin[0]), absolute(f.origin[1])), absolute(f.origin[2]))));
-  for (int a = 0; a < 3; ++a) {
-    const __m256 towardsMinus = _mm256_cmp_ps(f.invDirection[a], zero, _CMP_LT_OQ);
-    const std::uint32_t right = laneMask(towardsMinus) & active;
-    if (right != 0 && right != active) return false;
-    f.firstIsRight[a] = right != 0 ? 1u : 0u;
-    const __m256 signedBand =
-        _mm256_blendv_ps(band, _mm256_xor_ps(band, _mm256_set1_ps(-0.0f)), towardsMinus);
-    f.nearEdge[a] = _mm256_add_ps(f.origin[a], signedBand);
-    f.farEdge[a] = _mm256_sub_ps(f.origin[a], signedBand);
-  }
-  f.eps = _mm256_mul_ps(_mm256_set1_ps(kSlack), _mm256_max_ps(absolute(tIn), absolute(tOut)));
-  f.shearX = _mm256_load_ps(lane[6]);
-  f.shearY = _mm256_load_ps(lane[7]);
-  auto isAxis = [&](int which, int axis) {
-    const __m256i values = _mm256_load_si256(reinterpret_cast<const __m256i*>(axes[which]));
-    return _mm256_castsi256_ps(_mm256_cmpeq_epi32(values, _mm256_set1_epi32(axis)));
-  };
-  f.kxIs0 = isAxis(0, 0);
-  f.kxIs1 = isAxis(0, 1);
-  f.kyIs0 = isAxis(1, 0);
-  f.kyIs1 = isAxis(1, 1);
-  f.kzIs0 = isAxis(2, 0);
-  f.kzIs1 = isAxis(2, 1);
-  tEnter = tIn;
-  tExit = tOut;
-  return true;
-}
 
 // A cell the packet visits later: `lanes` enter it, and those of `direct` (which the single-ray
 // walk would have gone to at once, without a look at its bound) are not pruned when it is popped.
@@ -341,6 +165,50 @@ std::uint32_t walkPacket(std::span<const KdNode> layout, const PacketFrame& f, s
     }
     return finishedLanes;
   };
+  // The same for a lane left alone in a subtree (walkLane): the triangles of a larger leaf eight at a
+  // time against its one ray (kd/query.hpp), with the packet's mailbox kept as testLeaf keeps it. A
+  // triangle marked tested whose test an any-hit lane then skips, being blocked, is never tested again
+  // by that lane anyway; an evicted slot only makes another lane test a triangle again, which gives
+  // the same answer (as in the single-ray walk).
+  auto testLeafAlone = [&](const KdNode* leaf, std::uint32_t bit) {
+#ifdef LANCER_LEAF_AVX2
+    const std::uint32_t count = leaf->triangleCount();
+    if (count < kMinSimdLeaf) return testLeaf(leaf, bit);
+    const int lane = std::countr_zero(bit);
+    const std::uint32_t* index = reinterpret_cast<const std::uint32_t*>(base + leaf->payload);
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const char* tri = reinterpret_cast<const char*>(base + index[i]);
+      __builtin_prefetch(tri);
+      __builtin_prefetch(tri + sizeof(PackedTriangle) - 1);
+    }
+    std::uint32_t pending[8];
+    for (std::uint32_t i = 0; i < count;) {
+      std::uint32_t n = 0;
+      for (; i < count && n < 8; ++i) {
+        const std::uint32_t triangle = index[i];
+        MailboxSlot& slot = mailbox[triangle & (kMailboxSize - 1)];
+        if (slot.triangle == triangle) {
+          if ((slot.lanes & bit) != 0) continue;
+          slot.lanes |= bit;
+        } else {
+          slot = {triangle, bit};
+        }
+        pending[n++] = triangle;
+      }
+      if (n == 0) break;
+      LeafCorners corners;
+      for (std::uint32_t passed = sameSignTriangles(base, pending, n, query.packet.ray[lane], corners);
+           passed != 0; passed &= passed - 1) {
+        const int k = std::countr_zero(passed);
+        if (query.finishAlone(*reinterpret_cast<const PackedTriangle*>(base + pending[k]), lane, corners, k))
+          return bit;
+      }
+    }
+    return 0u;
+#else
+    return testLeaf(leaf, bit);
+#endif
+  };
   while (true) {
     bool alone = false;
     while (!node->isLeaf()) {
@@ -383,9 +251,10 @@ std::uint32_t walkPacket(std::span<const KdNode> layout, const PacketFrame& f, s
     std::uint32_t finished;
     if (alone) {
       const int lane = std::countr_zero(lanes);
-      finished = walkLane(base, node, f, lane, laneOf(tEnter, lane), laneOf(tExit, lane), query, testLeaf)
-                     ? lanes
-                     : 0u;
+      finished =
+          walkLane(base, node, f, lane, laneOf(tEnter, lane), laneOf(tExit, lane), query, testLeafAlone)
+              ? lanes
+              : 0u;
     } else {
       finished = testLeaf(node, lanes);
     }
@@ -427,6 +296,15 @@ struct PacketClosestHit {
     }
     return 0;
   }
+  // test's finish on lane i for triangle k of an eight-triangle test (walkPacket's testLeafAlone).
+  bool finishAlone(const PackedTriangle& tri, int i, const LeafCorners& c, int k) {
+    const TriangleHit h =
+        triangle_detail::finishHit(c.ax[k], c.ay[k], c.az[k], c.bx[k], c.by[k], c.bz[k], c.cx[k], c.cy[k],
+                                   c.cz[k], frame.shearZ[i], packet.tMin[i], upper[i]);
+    if (takeIfCloser(h, tri.face, packet.ray[i], packet.tMax[i], keeps, best[i], upper[i]))
+      bestT[i] = best[i].t;
+    return false;
+  }
   __m256 bound() const { return _mm256_load_ps(bestT); }
   float laneBound(int lane) const { return bestT[lane]; }
 };
@@ -447,6 +325,13 @@ struct PacketAnyHit {
       if (t >= 0.0f && keeps(packet.ray[i], tri.face, t)) blocked |= 1u << i;
     }
     return blocked;
+  }
+  bool finishAlone(const PackedTriangle& tri, int i, const LeafCorners& c, int k) const {
+    const float t =
+        triangle_detail::finishHit(c.ax[k], c.ay[k], c.az[k], c.bx[k], c.by[k], c.bz[k], c.cx[k], c.cy[k],
+                                   c.cz[k], frame.shearZ[i], packet.tMin[i], packet.tMax[i])
+            .t;
+    return t >= 0.0f && keeps(packet.ray[i], tri.face, t);
   }
   __m256 bound() const { return _mm256_load_ps(tMax); }
   float laneBound(int lane) const { return tMax[lane]; }

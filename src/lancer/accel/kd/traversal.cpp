@@ -78,6 +78,21 @@ bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, c
         node = first;
       } else if (tFar < tEnter - eps) {
         node = second;
+      } else if (second->bits == KdNode::kLeafTag) {
+        // Both sides, but the far one is an empty leaf (a third of the leaves the SAH trees of
+        // examples/glass_and_mirror.toml show a ray): nothing to visit there, nothing to push.
+        node = first;
+        tExit = tFar < tExit ? tFar : tExit;
+      } else if (first->bits == KdNode::kLeafTag) {
+        // The near side is empty: straight to the far one, pruned as a pop would prune it (no test
+        // in between can have moved the bound); a pruned one goes to the empty leaf, which pops.
+        const float secondEnter = tNear > tEnter ? tNear : tEnter;
+        if (secondEnter > query.bound(tMax) + eps) {
+          node = first;
+        } else {
+          node = second;
+          tEnter = secondEnter;
+        }
       } else {
         stack[top++] = {static_cast<std::uint32_t>(second - base), tNear > tEnter ? tNear : tEnter, tExit};
         // The far child's children lie far away in memory (depth-first layout): start their fetch
@@ -98,16 +113,55 @@ bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, c
       __builtin_prefetch(tri);
       __builtin_prefetch(tri + sizeof(PackedTriangle) - 1);
     }
-    for (std::uint32_t i = 0; i < count; ++i) {
-      const std::uint32_t triangle = index[i];
-      // Mailbox (Amanatides & Woo 1987; Havran's thesis 5.2): a triangle split into several leaves
-      // is tested once per ray. Skipping a repeat is exact: the same test gives the same answer,
-      // and the accepted bound has only shrunk since.
-      std::uint32_t& slot = mailbox[triangle & (kMailboxSize - 1)];
-      if (slot == triangle) continue;
-      slot = triangle;
-      LANCER_KD_COUNT(triangleTests);
-      if (query.test(*reinterpret_cast<const PackedTriangle*>(base + triangle), ray, tMin, tMax)) return true;
+#ifdef LANCER_LEAF_AVX2
+    if (count >= kMinSimdLeaf) {
+      // The mailbox's decisions first, in order (they depend only on the indices), then the
+      // triangles left eight at a time; the passing ones are finished in the same order as the
+      // scalar loop, each with the bound the ones before it left, so the answer is the same.
+      std::uint32_t pending[8];
+      for (std::uint32_t i = 0; i < count;) {
+        std::uint32_t n = 0;
+        for (; i < count && n < 8; ++i) {
+          const std::uint32_t triangle = index[i];
+          std::uint32_t& slot = mailbox[triangle & (kMailboxSize - 1)];
+          if (slot == triangle) continue;
+          slot = triangle;
+          pending[n++] = triangle;
+          LANCER_KD_COUNT(triangleTests);
+        }
+        if (n == 0) break;
+        if (n < kMinSimdLeaf) {  // what the mailbox left is too few to be worth the transpose
+          for (std::uint32_t k = 0; k < n; ++k) {
+            if (query.test(*reinterpret_cast<const PackedTriangle*>(base + pending[k]), ray, tMin, tMax))
+              return true;
+          }
+          continue;
+        }
+        LeafCorners c;
+        for (std::uint32_t passed = sameSignTriangles(base, pending, n, ray, c); passed != 0;
+             passed &= passed - 1) {
+          const int lane = std::countr_zero(passed);
+          if (query.finish(*reinterpret_cast<const PackedTriangle*>(base + pending[lane]), ray, tMin, tMax,
+                           c.ax[lane], c.ay[lane], c.az[lane], c.bx[lane], c.by[lane], c.bz[lane], c.cx[lane],
+                           c.cy[lane], c.cz[lane]))
+            return true;
+        }
+      }
+    } else
+#endif
+    {
+      for (std::uint32_t i = 0; i < count; ++i) {
+        const std::uint32_t triangle = index[i];
+        // Mailbox (Amanatides & Woo 1987; Havran's thesis 5.2): a triangle split into several leaves
+        // is tested once per ray. Skipping a repeat is exact: the same test gives the same answer,
+        // and the accepted bound has only shrunk since.
+        std::uint32_t& slot = mailbox[triangle & (kMailboxSize - 1)];
+        if (slot == triangle) continue;
+        slot = triangle;
+        LANCER_KD_COUNT(triangleTests);
+        if (query.test(*reinterpret_cast<const PackedTriangle*>(base + triangle), ray, tMin, tMax))
+          return true;
+      }
     }
     // Cells further than the best hit (plus slack) cannot hold a closer or tied hit.
     do {

@@ -1,0 +1,233 @@
+// The kd-tree packet walk's SIMD view of a packet (kd/packet_traversal.cpp): the rays as lanes of
+// AVX2 registers (PacketFrame), their set-up against the scene box, and the packet triangle test.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+
+#include "lancer/accel/kd/query.hpp"
+#include "lancer/accel/ray_packet.hpp"
+#include "lancer/accel/triangle_intersect.hpp"
+#include "lancer/math/aabb.hpp"
+
+#if defined(__AVX2__) && defined(__FMA__)
+#include <immintrin.h>
+#define LANCER_PACKETS_AVX2 1
+#endif
+
+namespace lancer::kd {
+
+#ifdef LANCER_PACKETS_AVX2
+
+inline std::uint32_t laneMask(__m256 condition) {
+  return static_cast<std::uint32_t>(_mm256_movemask_ps(condition));
+}
+
+// a b - c d as triangle_detail::differenceOfProducts computes it (Kahan's algorithm with FMA).
+inline __m256 differenceOfProducts(__m256 a, __m256 b, __m256 c, __m256 d) {
+  const __m256 cd = _mm256_mul_ps(c, d);
+  const __m256 cdError = _mm256_fnmadd_ps(c, d, cd);
+  return _mm256_add_ps(_mm256_fmsub_ps(a, b, cd), cdError);
+}
+
+// Per lane, the component of (x, y, z) along the lane's axis (is0: axis 0, is1: axis 1, else 2).
+inline __m256 pickAxis(__m256 x, __m256 y, __m256 z, __m256 is0, __m256 is1) {
+  return _mm256_blendv_ps(_mm256_blendv_ps(z, y, is1), x, is0);
+}
+
+// A triangle's corners relative to each lane's origin in the lane's sheared frame, as testTriangle
+// computes them, for finishing the test in double on the lanes whose edge functions agree in sign.
+struct ShearedCorners {
+  alignas(32) float ax[kPacketSize], ay[kPacketSize], az[kPacketSize];
+  alignas(32) float bx[kPacketSize], by[kPacketSize], bz[kPacketSize];
+  alignas(32) float cx[kPacketSize], cy[kPacketSize], cz[kPacketSize];
+};
+
+// The packet's rays, lane i of each register being ray i.
+struct PacketFrame {
+  __m256 origin[3];
+  __m256 invDirection[3];
+  __m256 nearEdge[3], farEdge[3];  // the split-plane band's edges, as in the single-ray walk
+  __m256 eps;
+  __m256 shearX, shearY;
+  __m256 kxIs0, kxIs1, kyIs0, kyIs1, kzIs0, kzIs1;
+  std::uint32_t firstIsRight[3];
+  // Every lane has the same kx, ky, kz (coherent rays nearly always do): the triangle test picks
+  // each corner's coordinates once instead of blending all three per lane.
+  bool uniformAxes;
+  int kx, ky, kz;
+  alignas(32) float shearZ[kPacketSize];
+};
+
+// The lanes among `lanes` whose ray's line meets `tri` (the float half of testTriangle, bit for bit).
+inline std::uint32_t sameSignLanes(const PackedTriangle& tri, const PacketFrame& f, std::uint32_t lanes,
+                                   ShearedCorners& out) {
+  static_assert(sizeof(Vec3) == 3 * sizeof(float));
+  __m256 ax, ay, az, bx, by, bz, cx, cy, cz;
+  if (f.uniformAxes) {
+    // The same subtractions as below, only of the coordinates the blends would pick.
+    const float* v0 = &tri.v0.x;
+    const float* v1 = &tri.v1.x;
+    const float* v2 = &tri.v2.x;
+    auto relative = [&](const float* v, int axis) {
+      return _mm256_sub_ps(_mm256_set1_ps(v[axis]), f.origin[axis]);
+    };
+    az = relative(v0, f.kz);
+    bz = relative(v1, f.kz);
+    cz = relative(v2, f.kz);
+    ax = _mm256_fnmadd_ps(f.shearX, az, relative(v0, f.kx));
+    ay = _mm256_fnmadd_ps(f.shearY, az, relative(v0, f.ky));
+    bx = _mm256_fnmadd_ps(f.shearX, bz, relative(v1, f.kx));
+    by = _mm256_fnmadd_ps(f.shearY, bz, relative(v1, f.ky));
+    cx = _mm256_fnmadd_ps(f.shearX, cz, relative(v2, f.kx));
+    cy = _mm256_fnmadd_ps(f.shearY, cz, relative(v2, f.ky));
+  } else {
+    const __m256 ax0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.x), f.origin[0]);
+    const __m256 ay0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.y), f.origin[1]);
+    const __m256 az0 = _mm256_sub_ps(_mm256_set1_ps(tri.v0.z), f.origin[2]);
+    const __m256 bx0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.x), f.origin[0]);
+    const __m256 by0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.y), f.origin[1]);
+    const __m256 bz0 = _mm256_sub_ps(_mm256_set1_ps(tri.v1.z), f.origin[2]);
+    const __m256 cx0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.x), f.origin[0]);
+    const __m256 cy0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.y), f.origin[1]);
+    const __m256 cz0 = _mm256_sub_ps(_mm256_set1_ps(tri.v2.z), f.origin[2]);
+    az = pickAxis(ax0, ay0, az0, f.kzIs0, f.kzIs1);
+    bz = pickAxis(bx0, by0, bz0, f.kzIs0, f.kzIs1);
+    cz = pickAxis(cx0, cy0, cz0, f.kzIs0, f.kzIs1);
+    // shear(x, s, z) = fma(-s, z, x)
+    ax = _mm256_fnmadd_ps(f.shearX, az, pickAxis(ax0, ay0, az0, f.kxIs0, f.kxIs1));
+    ay = _mm256_fnmadd_ps(f.shearY, az, pickAxis(ax0, ay0, az0, f.kyIs0, f.kyIs1));
+    bx = _mm256_fnmadd_ps(f.shearX, bz, pickAxis(bx0, by0, bz0, f.kxIs0, f.kxIs1));
+    by = _mm256_fnmadd_ps(f.shearY, bz, pickAxis(bx0, by0, bz0, f.kyIs0, f.kyIs1));
+    cx = _mm256_fnmadd_ps(f.shearX, cz, pickAxis(cx0, cy0, cz0, f.kxIs0, f.kxIs1));
+    cy = _mm256_fnmadd_ps(f.shearY, cz, pickAxis(cx0, cy0, cz0, f.kyIs0, f.kyIs1));
+  }
+  const __m256 u = differenceOfProducts(cx, by, cy, bx);
+  const __m256 v = differenceOfProducts(ax, cy, ay, cx);
+  const __m256 w = differenceOfProducts(bx, ay, by, ax);
+  const __m256 zero = _mm256_setzero_ps();
+  const __m256 allNonNegative =
+      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_GE_OQ), _mm256_cmp_ps(v, zero, _CMP_GE_OQ)),
+                    _mm256_cmp_ps(w, zero, _CMP_GE_OQ));
+  const __m256 allNonPositive =
+      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_LE_OQ), _mm256_cmp_ps(v, zero, _CMP_LE_OQ)),
+                    _mm256_cmp_ps(w, zero, _CMP_LE_OQ));
+  const std::uint32_t passed = laneMask(_mm256_or_ps(allNonNegative, allNonPositive)) & lanes;
+  if (passed != 0) {
+    _mm256_store_ps(out.ax, ax);
+    _mm256_store_ps(out.ay, ay);
+    _mm256_store_ps(out.az, az);
+    _mm256_store_ps(out.bx, bx);
+    _mm256_store_ps(out.by, by);
+    _mm256_store_ps(out.bz, bz);
+    _mm256_store_ps(out.cx, cx);
+    _mm256_store_ps(out.cy, cy);
+    _mm256_store_ps(out.cz, cz);
+  }
+  return passed;
+}
+
+inline TriangleHit finishLane(const ShearedCorners& c, const PacketFrame& f, int i, float tMin, float tMax) {
+  return triangle_detail::finishHit(c.ax[i], c.ay[i], c.az[i], c.bx[i], c.by[i], c.bz[i], c.cx[i], c.cy[i],
+                                    c.cz[i], f.shearZ[i], tMin, tMax);
+}
+
+// |x| per lane (std::abs).
+inline __m256 absolute(__m256 x) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), x); }
+
+// Sets up the frame of the lanes `active`, keeping in `active` those whose rays meet the scene box,
+// with each one's interval in the box: the single-ray walk's set-up (intersectAabb and the bands)
+// lane by lane. False when the rays run different ways along some axis.
+inline bool setUpFrame(const RayPacket& packet, std::uint32_t& active, const Aabb& bounds, float magnitude,
+                       PacketFrame& f, __m256& tEnter, __m256& tExit) {
+  alignas(32) float lane[10][kPacketSize];
+  alignas(32) int axes[3][kPacketSize];
+  for (int i = 0; i < kPacketSize; ++i) {
+    if ((active >> i & 1u) == 0) {
+      for (float* row : lane) row[i] = 0.0f;
+      axes[0][i] = axes[1][i] = axes[2][i] = 0;
+      f.shearZ[i] = 0.0f;
+      continue;
+    }
+    const Ray& ray = packet.ray[i];
+    lane[0][i] = ray.origin.x;
+    lane[1][i] = ray.origin.y;
+    lane[2][i] = ray.origin.z;
+    lane[3][i] = ray.invDirection.x;
+    lane[4][i] = ray.invDirection.y;
+    lane[5][i] = ray.invDirection.z;
+    lane[6][i] = ray.shearX;
+    lane[7][i] = ray.shearY;
+    lane[8][i] = packet.tMin[i];
+    lane[9][i] = packet.tMax[i];
+    f.shearZ[i] = ray.shearZ;
+    axes[0][i] = ray.kx;
+    axes[1][i] = ray.ky;
+    axes[2][i] = ray.kz;
+  }
+  for (int a = 0; a < 3; ++a) {
+    f.origin[a] = _mm256_load_ps(lane[a]);
+    f.invDirection[a] = _mm256_load_ps(lane[3 + a]);
+  }
+  // intersectAabb, lane by lane (NaN from 0 * inf leaves the span as it is).
+  const float lower[3] = {bounds.lower.x, bounds.lower.y, bounds.lower.z};
+  const float upper[3] = {bounds.upper.x, bounds.upper.y, bounds.upper.z};
+  __m256 tIn = _mm256_load_ps(lane[8]), tOut = _mm256_load_ps(lane[9]);
+  for (int a = 0; a < 3; ++a) {
+    const __m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(lower[a]), f.origin[a]), f.invDirection[a]);
+    const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(upper[a]), f.origin[a]), f.invDirection[a]);
+    const __m256 swap = _mm256_cmp_ps(t0, t1, _CMP_GT_OQ);
+    const __m256 near = _mm256_blendv_ps(t0, t1, swap), far = _mm256_blendv_ps(t1, t0, swap);
+    tIn = _mm256_blendv_ps(tIn, near, _mm256_cmp_ps(near, tIn, _CMP_GT_OQ));
+    tOut = _mm256_blendv_ps(tOut, far, _mm256_cmp_ps(far, tOut, _CMP_LT_OQ));
+  }
+  active &= laneMask(_mm256_cmp_ps(tIn, tOut, _CMP_LE_OQ));
+  const __m256 zero = _mm256_setzero_ps();
+  const __m256 band = _mm256_mul_ps(
+      _mm256_set1_ps(kPlaneSlack),
+      _mm256_max_ps(
+          _mm256_set1_ps(magnitude),
+          _mm256_max_ps(_mm256_max_ps(absolute(f.origin[0]), absolute(f.origin[1])), absolute(f.origin[2]))));
+  for (int a = 0; a < 3; ++a) {
+    const __m256 towardsMinus = _mm256_cmp_ps(f.invDirection[a], zero, _CMP_LT_OQ);
+    const std::uint32_t right = laneMask(towardsMinus) & active;
+    if (right != 0 && right != active) return false;
+    f.firstIsRight[a] = right != 0 ? 1u : 0u;
+    const __m256 signedBand =
+        _mm256_blendv_ps(band, _mm256_xor_ps(band, _mm256_set1_ps(-0.0f)), towardsMinus);
+    f.nearEdge[a] = _mm256_add_ps(f.origin[a], signedBand);
+    f.farEdge[a] = _mm256_sub_ps(f.origin[a], signedBand);
+  }
+  f.eps = _mm256_mul_ps(_mm256_set1_ps(kSlack), _mm256_max_ps(absolute(tIn), absolute(tOut)));
+  f.shearX = _mm256_load_ps(lane[6]);
+  f.shearY = _mm256_load_ps(lane[7]);
+  auto isAxis = [&](int which, int axis) {
+    const __m256i values = _mm256_load_si256(reinterpret_cast<const __m256i*>(axes[which]));
+    return _mm256_castsi256_ps(_mm256_cmpeq_epi32(values, _mm256_set1_epi32(axis)));
+  };
+  // Inactive lanes were given axes 0, 0, 0 above: compare the active ones only.
+  const int firstLane = std::countr_zero(active | (1u << kPacketSize));
+  f.uniformAxes = firstLane < kPacketSize;
+  if (f.uniformAxes) {
+    f.kx = axes[0][firstLane];
+    f.ky = axes[1][firstLane];
+    f.kz = axes[2][firstLane];
+    for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+      const int i = std::countr_zero(lanes);
+      f.uniformAxes = f.uniformAxes && axes[0][i] == f.kx && axes[1][i] == f.ky && axes[2][i] == f.kz;
+    }
+  }
+  f.kxIs0 = isAxis(0, 0);
+  f.kxIs1 = isAxis(0, 1);
+  f.kyIs0 = isAxis(1, 0);
+  f.kyIs1 = isAxis(1, 1);
+  f.kzIs0 = isAxis(2, 0);
+  f.kzIs1 = isAxis(2, 1);
+  tEnter = tIn;
+  tExit = tOut;
+  return true;
+}
+
+#endif  // LANCER_PACKETS_AVX2
+
+}  // namespace lancer::kd
