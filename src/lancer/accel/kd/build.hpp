@@ -45,6 +45,11 @@ struct BuildNode {
   const BuildArena* arena = nullptr;  // leaf: holder of its triangle ids
   std::uint32_t first = 0;            // leaf: range in arena->leafTriangles
   std::uint32_t count = 0;
+  // Set by the assembler's planning walk: the node's word in the layout (kUnplaced for a node the
+  // walk never reached, such as a subtree root copied into its parent's slot), and a leaf's list.
+  std::uint32_t word = kUnplaced;
+  std::uint32_t list = 0;
+  static constexpr std::uint32_t kUnplaced = 0xFFFFFFFFu;
 };
 
 // One build thread's output; deque keeps node addresses stable while it grows.
@@ -63,6 +68,8 @@ class BuildArenas {
     std::lock_guard lock(mutex_);
     return arenas_.emplace_back();
   }
+  // For the assembler, once the build is done.
+  std::deque<BuildArena>& all() { return arenas_; }
 
  private:
   std::mutex mutex_;
@@ -70,11 +77,13 @@ class BuildArenas {
 };
 
 // Lays the temporary tree out as one stream (KdTree::layout_): sibling-paired 8-byte nodes, each
-// leaf's list and triangles written after the pair that holds it, and fills stats.
+// leaf's list and triangles written after the pair that holds it, and fills stats. A serial walk
+// places every node, list and triangle (reading no triangle); the words are then written on
+// options.threads threads, node by node of the arenas and triangle by triangle.
 class KdTreeAssembler {
  public:
-  static KdTree assemble(const BuildNode& root, KdBuildInput&& input, const KdBuildOptions& options,
-                         std::string kind, double buildSeconds);
+  static KdTree assemble(BuildNode& root, BuildArenas& arenas, KdBuildInput&& input,
+                         const KdBuildOptions& options, std::string kind, double buildSeconds);
 };
 
 }  // namespace lancer
