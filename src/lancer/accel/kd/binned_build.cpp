@@ -14,6 +14,7 @@
 #include <future>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "lancer/accel/kd/binned_split.hpp"
@@ -77,12 +78,32 @@ struct Partitioner {
     l.hi[k] = p;
     rr.lo[k] = p;
     keepLeft = keepRight = true;
-    if (clips(r)) {
-      Aabb below, above;
-      splitTriangleBounds(cornersOf(input.triangles[r.id]), k, p, below, above);
-      keepLeft = intersect(l, below);
-      keepRight = intersect(rr, above);
-    }
+    if (!clips(r)) return;
+#if defined(__AVX2__)
+    __m128 lower[2], upper[2];
+    splitTriangleBounds(input.triangles[r.id], k, p, lower, upper);
+    // l := l ∩ below, rr := rr ∩ above, lanes 0-2 the lower bounds, 3-5 the upper (as intersect).
+    const __m256i gather = _mm256_setr_epi32(0, 1, 2, 4, 5, 6, 3, 7);
+    const __m256i toLow = _mm256_setr_epi32(3, 4, 5, 0, 1, 2, 6, 7);
+    const __m256 lowLanes = _mm256_castsi256_ps(_mm256_setr_epi32(-1, -1, -1, 0, 0, 0, 0, 0));
+    const __m256 highLanes = _mm256_castsi256_ps(_mm256_setr_epi32(0, 0, 0, -1, -1, -1, 0, 0));
+    auto cutTo = [&](Ref& part, __m128 lo, __m128 hi) {
+      const __m256 v = _mm256_load_ps(part.lo);
+      const __m256 box = _mm256_permutevar8x32_ps(_mm256_set_m128(hi, lo), gather);
+      __m256 out = _mm256_blendv_ps(v, _mm256_max_ps(box, v), lowLanes);
+      out = _mm256_blendv_ps(out, _mm256_min_ps(box, v), highLanes);
+      _mm256_store_ps(part.lo, out);
+      const __m256 ordered = _mm256_cmp_ps(out, _mm256_permutevar8x32_ps(out, toLow), _CMP_LE_OQ);
+      return (_mm256_movemask_ps(ordered) & 7) == 7;
+    };
+    keepLeft = cutTo(l, lower[0], upper[0]);
+    keepRight = cutTo(rr, lower[1], upper[1]);
+#else
+    Aabb below, above;
+    splitTriangleBounds(cornersOf(input.triangles[r.id]), k, p, below, above);
+    keepLeft = intersect(l, below);
+    keepRight = intersect(rr, above);
+#endif
   }
 
   void operator()(const Ref* refs, std::size_t n, Ref* right, Ref* left, Children& out) const {
@@ -182,6 +203,40 @@ struct Partitioner {
     out.right.used.extend(usedRight);
     out.leftCount += nl;
     out.rightCount += nr;
+  }
+
+  // The same sides for a small cell's references, without the bounds of each side (small cells'
+  // splits do not use them) or prefetching (their triangles are few and near). Returns the counts.
+  std::pair<std::size_t, std::size_t> small(const Ref* refs, std::size_t n, Ref* right, Ref* left) const {
+    const int k = split.axis;
+    const float p = split.pos;
+    std::size_t nl = 0, nr = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const float lo = refs[i].lo[k], hi = refs[i].hi[k];
+      const bool planar = lo == hi && lo == p;
+      const bool toLeft = planar ? split.planarLeft : hi <= p;
+      const bool toRight = planar ? !split.planarLeft : lo >= p;
+      if (toLeft || toRight) {
+#if defined(__AVX2__)
+        const __m256 v = _mm256_load_ps(refs[i].lo);
+        _mm256_store_ps(left[nl].lo, v);
+        _mm256_store_ps(right[nr].lo, v);
+#else
+        const Ref r = refs[i];
+        left[nl] = r;
+        right[nr] = r;
+#endif
+        nl += toLeft;
+        nr += toRight;
+        continue;
+      }
+      Ref l, rr;
+      bool keepLeft, keepRight;
+      cut(refs[i], l, rr, keepLeft, keepRight);
+      if (keepLeft) left[nl++] = l;
+      if (keepRight) right[nr++] = rr;
+    }
+    return {nl, nr};
   }
 
   // r := r ∩ box; false when that is empty.
@@ -417,9 +472,32 @@ class BinnedBuilder {
     return build(0, n, cell, depth, arenas_.create(), scratch);
   }
 
+  // A cell of fewer than kSmallCell references, and its subtree: split exactly, children
+  // smaller still (each gets at most the cell's references), so only their boxes are needed.
+  BuildNode* buildSmall(std::size_t begin, std::size_t n, const Box& box, int depth, BuildArena& arena,
+                        Scratch& scratch) {
+    if (leafByCount(n, depth)) return makeLeaf(scratch.stack.data() + begin, n, arena, scratch);
+    const Split split = exactSmallSplit(scratch.stack.data() + begin, n, box, options_);
+    if (split.axis < 0 || split.cost >= options_.intersectionCost * float(n)) {
+      return makeLeaf(scratch.stack.data() + begin, n, arena, scratch);
+    }
+    const std::size_t leftBegin = begin + n;
+    if (scratch.stack.size() < leftBegin + n) scratch.stack.grow(2 * (leftBegin + n), leftBegin);
+    Ref* base = scratch.stack.data();
+    const Partitioner partition{input_, options_, split, box};
+    const auto [nl, nr] = partition.small(base + begin, n, base + begin, base + leftBegin);
+    Box leftBox = box, rightBox = box;
+    leftBox.hi[split.axis] = split.pos;
+    rightBox.lo[split.axis] = split.pos;
+    BuildNode* leftNode = buildSmall(leftBegin, nl, leftBox, depth + 1, arena, scratch);
+    BuildNode* rightNode = buildSmall(begin, nr, rightBox, depth + 1, arena, scratch);
+    return arena.inner(split.axis, split.pos, leftNode, rightNode);
+  }
+
   // The cell whose references are scratch.stack[begin, begin + n); the stack past them is free.
   BuildNode* build(std::size_t begin, std::size_t n, const Cell& cell, int depth, BuildArena& arena,
                    Scratch& scratch) {
+    if (n < kSmallCell) return buildSmall(begin, n, cell.box, depth, arena, scratch);
     if (leafByCount(n, depth)) return makeLeaf(scratch.stack.data() + begin, n, arena, scratch);
     const Split split = chooseSplit(scratch.stack.data() + begin, n, cell, scratch);
     if (split.axis < 0 || split.cost >= options_.intersectionCost * float(n)) {
@@ -472,7 +550,7 @@ class BinnedBuilder {
 KdTree KdTree::buildSah(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                         const KdBuildOptions& options) {
   const Stopwatch stopwatch;
-  KdBuildInput input = gatherTriangles(positions, faces);
+  KdBuildInput input = gatherTriangles(positions, faces, false, options.threads);
   BuildArenas arenas;
   BinnedBuilder builder(input, options, arenas);
   BuildNode* root = builder.buildRoot();

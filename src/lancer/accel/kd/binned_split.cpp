@@ -49,6 +49,7 @@ void BinCounts::count(const Ref* refs, std::size_t n, const BinGrid& grid, const
   const __m256i rowStart = _mm256_setr_epi32(0, bins, 2 * bins, 3 * bins, 4 * bins, 5 * bins, 0, 0);
   const __m256i swapHalves = _mm256_setr_epi32(3, 4, 5, 0, 1, 2, 6, 7);
   for (std::size_t i = 0; i < n; ++i) {
+    _mm_prefetch(reinterpret_cast<const char*>(refs + i + 16), _MM_HINT_T0);
     const __m256 v = _mm256_load_ps(refs[i].lo);
     __m256i bin = _mm256_cvttps_epi32(_mm256_mul_ps(_mm256_sub_ps(v, lo), scale));
     bin = _mm256_add_epi32(_mm256_min_epi32(_mm256_max_epi32(bin, zero), last), rowStart);
@@ -190,6 +191,97 @@ void refineInWindow(Split& best, const BinCounts& counts, const Cell& cell, std:
                     });
 }
 
+#if defined(__AVX2__)
+// One axis of exactSmallSplit: V vectors of 8 candidate planes, their counts kept in registers.
+struct SmallAxis {
+  const Ref* refs;
+  std::size_t n;
+  int axis;
+  const float* candidate;
+  float cellLo, cellHi, minSlab, invArea;
+  const AxisCost& planeCost;
+  const KdBuildOptions& options;
+
+  // kPlanars: whether any reference lies flat on this axis (else none lies in a plane).
+  template <int V, bool kPlanars>
+  void search(Split& best) const {
+    static_assert(V >= 1 && V <= 6);
+    __m256 p[V];
+    __m256i l[V], r[V], f[V];
+    for (int v = 0; v < V; ++v) {
+      p[v] = _mm256_load_ps(candidate + 8 * v);
+      l[v] = r[v] = f[v] = _mm256_setzero_si256();
+    }
+    // For every candidate plane at once: references starting below it (l), ending above it (r),
+    // lying in it (f); as the sweep counts them (left: lo < p, right: hi > p).
+    for (std::size_t j = 0; j < n; ++j) {
+      const float a = refs[j].lo[axis], b = refs[j].hi[axis];
+      const __m256 lo = _mm256_set1_ps(a), hi = _mm256_set1_ps(b);
+      const __m256 planar = _mm256_castsi256_ps(_mm256_set1_epi32(a == b ? -1 : 0));
+      for (int v = 0; v < V; ++v) {
+        l[v] = _mm256_sub_epi32(l[v], _mm256_castps_si256(_mm256_cmp_ps(lo, p[v], _CMP_LT_OQ)));
+        r[v] = _mm256_sub_epi32(r[v], _mm256_castps_si256(_mm256_cmp_ps(hi, p[v], _CMP_GT_OQ)));
+        if constexpr (kPlanars) {
+          f[v] = _mm256_sub_epi32(
+              f[v], _mm256_castps_si256(_mm256_and_ps(planar, _mm256_cmp_ps(lo, p[v], _CMP_EQ_OQ))));
+        }
+      }
+    }
+    // The costs of every plane with its planars on the left (a) and on the right (b), +inf where
+    // the plane is not strictly inside the cell (or has no planars, for b).
+    const __m256 inf = _mm256_set1_ps(std::numeric_limits<float>::infinity());
+    const __m256 vLo = _mm256_set1_ps(cellLo), vHi = _mm256_set1_ps(cellHi);
+    const __m256 cap = _mm256_set1_ps(planeCost.capArea), girth = _mm256_set1_ps(planeCost.girth);
+    const __m256 twiceInvArea = _mm256_set1_ps(2.0f * invArea);
+    const __m256 vkt = _mm256_set1_ps(planeCost.kt), vki = _mm256_set1_ps(planeCost.ki);
+    const __m256 bonus = _mm256_set1_ps(options.emptySpaceFactor), slab = _mm256_set1_ps(minSlab);
+    const __m256i zero = _mm256_setzero_si256();
+    __m256 costA[V], costB[V];
+    __m256 least = inf;
+    for (int v = 0; v < V; ++v) {
+      const __m256 below = _mm256_sub_ps(p[v], vLo), above = _mm256_sub_ps(vHi, p[v]);
+      const __m256 inside =
+          _mm256_and_ps(_mm256_cmp_ps(p[v], vLo, _CMP_GT_OQ), _mm256_cmp_ps(p[v], vHi, _CMP_LT_OQ));
+      const __m256 pl = _mm256_mul_ps(_mm256_add_ps(cap, _mm256_mul_ps(below, girth)), twiceInvArea);
+      const __m256 pr = _mm256_mul_ps(_mm256_add_ps(cap, _mm256_mul_ps(above, girth)), twiceInvArea);
+      const __m256 wideLeft = _mm256_cmp_ps(below, slab, _CMP_GE_OQ);
+      const __m256 wideRight = _mm256_cmp_ps(above, slab, _CMP_GE_OQ);
+      auto cost = [&](__m256i cl, __m256i cr) {
+        const __m256 c = _mm256_add_ps(
+            vkt, _mm256_mul_ps(vki, _mm256_add_ps(_mm256_mul_ps(pl, _mm256_cvtepi32_ps(cl)),
+                                                  _mm256_mul_ps(pr, _mm256_cvtepi32_ps(cr)))));
+        const __m256 empty =
+            _mm256_or_ps(_mm256_and_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(cl, zero)), wideLeft),
+                         _mm256_and_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(cr, zero)), wideRight));
+        return _mm256_blendv_ps(c, _mm256_mul_ps(c, bonus), empty);
+      };
+      const __m256 hasPlanars = _mm256_castsi256_ps(_mm256_cmpgt_epi32(f[v], zero));
+      costA[v] = _mm256_blendv_ps(inf, cost(_mm256_add_epi32(l[v], f[v]), r[v]), inside);
+      costB[v] =
+          _mm256_blendv_ps(inf, cost(l[v], _mm256_add_epi32(r[v], f[v])), _mm256_and_ps(inside, hasPlanars));
+      least = _mm256_min_ps(least, _mm256_min_ps(costA[v], costB[v]));
+    }
+    __m128 m4 = _mm_min_ps(_mm256_castps256_ps128(least), _mm256_extractf128_ps(least, 1));
+    m4 = _mm_min_ps(m4, _mm_movehl_ps(m4, m4));
+    m4 = _mm_min_ss(m4, _mm_shuffle_ps(m4, m4, 1));
+    const float m = _mm_cvtss_f32(m4);
+    if (!(m < best.cost)) return;
+    // The first candidate at that cost, planars left before right: the scalar order.
+    const __m256 target = _mm256_set1_ps(m);
+    for (int v = 0; v < V; ++v) {
+      const int a = _mm256_movemask_ps(_mm256_cmp_ps(costA[v], target, _CMP_EQ_OQ));
+      const int b = _mm256_movemask_ps(_mm256_cmp_ps(costB[v], target, _CMP_EQ_OQ));
+      if ((a | b) == 0) continue;
+      const int lane = __builtin_ctz(static_cast<unsigned>(a | b));
+      const std::size_t c = 8 * std::size_t(v) + std::size_t(lane);
+      const bool planarLeft = ((a >> lane) & 1) != 0;
+      best = {axis, candidate[c], planarLeft, m, -1};
+      return;
+    }
+  }
+};
+#endif
+
 Split exactSmallSplit(const Ref* refs, std::size_t n, const Box& cell, const KdBuildOptions& options) {
   // Candidates: each reference's lower then upper bound (a planar one's twice: the same cost, so
   // the first wins, as if tried once), padded with +inf, which lies in no cell.
@@ -200,7 +292,6 @@ Split exactSmallSplit(const Ref* refs, std::size_t n, const Box& cell, const KdB
   const float invArea = 1.0f / area;
   const float kt = options.traversalCost, ki = options.intersectionCost;
   const auto count = static_cast<std::uint32_t>(n);
-  const std::size_t used = (2 * n + 7) / 8 * 8;
   alignas(32) float candidate[kCandidates];
 #if !defined(__AVX2__)
   std::int32_t nl[kCandidates], nr[kCandidates], np[kCandidates];
@@ -208,15 +299,23 @@ Split exactSmallSplit(const Ref* refs, std::size_t n, const Box& cell, const KdB
   for (int axis = 0; axis < 3; ++axis) {
     const float cellLo = cell.lo[axis], cellHi = cell.hi[axis];
     if (!(cellHi > cellLo)) continue;
-    std::uint32_t atLo = 0, atHi = 0;
+    // Only planes strictly inside the cell are tried, and a planar reference's bound once: the
+    // others could not be chosen (or would tie with an earlier candidate).
+    std::uint32_t atLo = 0, atHi = 0, planars = 0;
+    std::size_t candidates = 0;
     for (std::size_t j = 0; j < n; ++j) {
       const float lo = refs[j].lo[axis], hi = refs[j].hi[axis];
-      candidate[2 * j] = lo;
-      candidate[2 * j + 1] = hi;
-      atLo += (lo == hi) & (lo == cellLo);
-      atHi += (lo == hi) & (hi == cellHi);
+      const bool planar = lo == hi;
+      candidate[candidates] = lo;
+      candidates += (lo > cellLo) & (lo < cellHi);
+      candidate[candidates] = hi;
+      candidates += (!planar) & (hi > cellLo) & (hi < cellHi);
+      atLo += planar & (lo == cellLo);
+      atHi += planar & (hi == cellHi);
+      planars += planar;
     }
-    for (std::size_t c = 2 * n; c < used; ++c) candidate[c] = std::numeric_limits<float>::infinity();
+    const std::size_t used = (candidates + 7) / 8 * 8;
+    for (std::size_t c = candidates; c < used; ++c) candidate[c] = std::numeric_limits<float>::infinity();
     const AxisCost planeCost(cell, axis, invArea, options);
     const float flat = 2.0f * planeCost.capArea * invArea;
     if (atLo > 0) {
@@ -233,72 +332,26 @@ Split exactSmallSplit(const Ref* refs, std::size_t n, const Box& cell, const KdB
     // For every candidate plane p at once: references starting below it (nl), ending above it
     // (nr), lying in it (np); as the sweep counts them (left: lo < p, right: hi > p).
 #if defined(__AVX2__)
-    {
-      constexpr std::size_t kVectors = kCandidates / 8;
-      __m256i l[kVectors], r[kVectors], f[kVectors];
-      const std::size_t vectors = used / 8;
-      for (std::size_t v = 0; v < vectors; ++v) l[v] = r[v] = f[v] = _mm256_setzero_si256();
-      for (std::size_t j = 0; j < n; ++j) {
-        const float a = refs[j].lo[axis], b = refs[j].hi[axis];
-        const __m256 lo = _mm256_set1_ps(a), hi = _mm256_set1_ps(b);
-        const __m256 planar = _mm256_castsi256_ps(_mm256_set1_epi32(a == b ? -1 : 0));
-        for (std::size_t v = 0; v < vectors; ++v) {
-          const __m256 p = _mm256_load_ps(candidate + 8 * v);
-          l[v] = _mm256_sub_epi32(l[v], _mm256_castps_si256(_mm256_cmp_ps(lo, p, _CMP_LT_OQ)));
-          r[v] = _mm256_sub_epi32(r[v], _mm256_castps_si256(_mm256_cmp_ps(hi, p, _CMP_GT_OQ)));
-          f[v] = _mm256_sub_epi32(
-              f[v], _mm256_castps_si256(_mm256_and_ps(planar, _mm256_cmp_ps(lo, p, _CMP_EQ_OQ))));
-        }
+    const SmallAxis job{refs, n, axis, candidate, cellLo, cellHi, minSlab, invArea, planeCost, options};
+    if (planars > 0) {
+      switch (used / 8) {
+        case 0: break;
+        case 1: job.search<1, true>(best); break;
+        case 2: job.search<2, true>(best); break;
+        case 3: job.search<3, true>(best); break;
+        case 4: job.search<4, true>(best); break;
+        case 5: job.search<5, true>(best); break;
+        default: job.search<6, true>(best); break;
       }
-      // The costs of every plane with its planars on the left (a) and on the right (b), +inf
-      // where the plane is not strictly inside the cell (or has no planars, for b).
-      const __m256 inf = _mm256_set1_ps(std::numeric_limits<float>::infinity());
-      const __m256 vLo = _mm256_set1_ps(cellLo), vHi = _mm256_set1_ps(cellHi);
-      const __m256 cap = _mm256_set1_ps(planeCost.capArea), girth = _mm256_set1_ps(planeCost.girth);
-      const __m256 twiceInvArea = _mm256_set1_ps(2.0f * invArea);
-      const __m256 vkt = _mm256_set1_ps(kt), vki = _mm256_set1_ps(ki);
-      const __m256 bonus = _mm256_set1_ps(options.emptySpaceFactor), slab = _mm256_set1_ps(minSlab);
-      const __m256i zero = _mm256_setzero_si256();
-      __m256 costA[kVectors], costB[kVectors];
-      __m256 least = inf;
-      for (std::size_t v = 0; v < vectors; ++v) {
-        const __m256 p = _mm256_load_ps(candidate + 8 * v);
-        const __m256 below = _mm256_sub_ps(p, vLo), above = _mm256_sub_ps(vHi, p);
-        const __m256 inside = _mm256_and_ps(_mm256_cmp_ps(p, vLo, _CMP_GT_OQ), _mm256_cmp_ps(p, vHi, _CMP_LT_OQ));
-        const __m256 pl = _mm256_mul_ps(_mm256_add_ps(cap, _mm256_mul_ps(below, girth)), twiceInvArea);
-        const __m256 pr = _mm256_mul_ps(_mm256_add_ps(cap, _mm256_mul_ps(above, girth)), twiceInvArea);
-        const __m256 wideLeft = _mm256_cmp_ps(below, slab, _CMP_GE_OQ);
-        const __m256 wideRight = _mm256_cmp_ps(above, slab, _CMP_GE_OQ);
-        auto cost = [&](__m256i cl, __m256i cr) {
-          const __m256 c = _mm256_add_ps(
-              vkt, _mm256_mul_ps(vki, _mm256_add_ps(_mm256_mul_ps(pl, _mm256_cvtepi32_ps(cl)),
-                                                    _mm256_mul_ps(pr, _mm256_cvtepi32_ps(cr)))));
-          const __m256 empty =
-              _mm256_or_ps(_mm256_and_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(cl, zero)), wideLeft),
-                           _mm256_and_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(cr, zero)), wideRight));
-          return _mm256_blendv_ps(c, _mm256_mul_ps(c, bonus), empty);
-        };
-        const __m256 hasPlanars = _mm256_castsi256_ps(_mm256_cmpgt_epi32(f[v], zero));
-        costA[v] = _mm256_blendv_ps(inf, cost(_mm256_add_epi32(l[v], f[v]), r[v]), inside);
-        costB[v] = _mm256_blendv_ps(inf, cost(l[v], _mm256_add_epi32(r[v], f[v])),
-                                    _mm256_and_ps(inside, hasPlanars));
-        least = _mm256_min_ps(least, _mm256_min_ps(costA[v], costB[v]));
-      }
-      alignas(32) float lanes[8];
-      _mm256_store_ps(lanes, least);
-      float m = lanes[0];
-      for (int i = 1; i < 8; ++i) m = std::min(m, lanes[i]);
-      if (m < best.cost) {
-        // The first candidate at that cost, planars left before right: the scalar order.
-        const __m256 target = _mm256_set1_ps(m);
-        for (std::size_t v = 0; v < vectors; ++v) {
-          const int a = _mm256_movemask_ps(_mm256_cmp_ps(costA[v], target, _CMP_EQ_OQ));
-          const int b = _mm256_movemask_ps(_mm256_cmp_ps(costB[v], target, _CMP_EQ_OQ));
-          if ((a | b) == 0) continue;
-          const int lane = __builtin_ctz(static_cast<unsigned>(a | b));
-          best = {axis, candidate[8 * v + std::size_t(lane)], ((a >> lane) & 1) != 0, m, -1};
-          break;
-        }
+    } else {
+      switch (used / 8) {
+        case 0: break;
+        case 1: job.search<1, false>(best); break;
+        case 2: job.search<2, false>(best); break;
+        case 3: job.search<3, false>(best); break;
+        case 4: job.search<4, false>(best); break;
+        case 5: job.search<5, false>(best); break;
+        default: job.search<6, false>(best); break;
       }
     }
 #else
@@ -311,7 +364,7 @@ Split exactSmallSplit(const Ref* refs, std::size_t n, const Box& cell, const KdB
         np[c] += a == b && a == candidate[c];
       }
     }
-    for (std::size_t c = 0; c < 2 * n; ++c) {
+    for (std::size_t c = 0; c < candidates; ++c) {
       const float p = candidate[c];
       if (!(p > cellLo && p < cellHi)) continue;
       const auto l = static_cast<std::uint32_t>(nl[c]), r = static_cast<std::uint32_t>(nr[c]);

@@ -30,33 +30,73 @@ bool isSliver(const std::array<Vec3, 3>& c) {
 }  // namespace
 
 KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces,
-                             bool withCorners) {
+                             bool withCorners, int threads) {
   KdBuildInput input;
   input.faceCount = faces.size();
-  std::vector<PackedTriangle> packed = packTriangles(positions, faces);
+  // Faces in chunks (fixed by the face count, so the result is the same on any thread count):
+  // a first pass finds the slivers, a second writes the triangles where the counts before them
+  // put them, in face order, quads as (0,1,2) and (0,2,3) like packTriangles.
+  const ChunkPlan plan(faces.size(), 1 << 14);
+  std::vector<std::uint8_t> sliver;  // per triangle, in face order
+  std::vector<std::size_t> kept(plan.chunks + 1, 0), dropped(plan.chunks + 1, 0), first(plan.chunks + 1, 0);
+  auto cornersAt = [&](const MeshFace& face, int half) {
+    return std::array<Vec3, 3>{positions[face.vertex[0]], positions[face.vertex[1 + half]],
+                               positions[face.vertex[2 + half]]};
+  };
+  for (std::size_t c = 0; c < plan.chunks; ++c) {
+    std::size_t count = 0;
+    for (std::size_t f = plan.begin(c); f < plan.begin(c + 1); ++f) count += faces[f].isQuad() ? 2 : 1;
+    first[c + 1] = first[c] + count;
+  }
   // Build events keep a triangle id in 30 bits, nodes a child index in 30 bits.
-  if (packed.size() > KdNode::kMaxIndex / 4) {
-    throw std::length_error("kd-tree: " + std::to_string(packed.size()) + " triangles, at most " +
+  if (first.back() > KdNode::kMaxIndex / 4) {
+    throw std::length_error("kd-tree: " + std::to_string(first.back()) + " triangles, at most " +
                             std::to_string(KdNode::kMaxIndex / 4) + " supported");
   }
-  input.triangles.reserve(packed.size());
-  if (withCorners) input.corners.reserve(packed.size());
-  std::size_t next = 0;
-  for (const MeshFace& face : faces) {
-    // Same corner order as packTriangles: (0,1,2) and, for a quad, (0,2,3).
-    const int count = face.isQuad() ? 2 : 1;
-    for (int half = 0; half < count; ++half, ++next) {
-      const std::array<Vec3, 3> corners = {positions[face.vertex[0]], positions[face.vertex[1 + half]],
-                                           positions[face.vertex[2 + half]]};
-      if (isSliver(corners)) {
-        input.slivers.push_back(packed[next]);
-        continue;
+  sliver.resize(first.back());
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    std::size_t next = first[chunk], slivers = 0;
+    for (std::size_t f = begin; f < end; ++f) {
+      const int count = faces[f].isQuad() ? 2 : 1;
+      for (int half = 0; half < count; ++half, ++next) {
+        sliver[next] = isSliver(cornersAt(faces[f], half));
+        slivers += sliver[next];
       }
-      input.triangles.push_back(packed[next]);
-      if (withCorners) input.corners.push_back(corners);
-      for (const Vec3& c : corners) input.bounds.extend(c);
     }
+    dropped[chunk + 1] = slivers;
+    kept[chunk + 1] = next - first[chunk] - slivers;
+  });
+  for (std::size_t c = 0; c < plan.chunks; ++c) {
+    kept[c + 1] += kept[c];
+    dropped[c + 1] += dropped[c];
   }
+  // Every element is overwritten below.
+  input.triangles.resize(kept.back());
+  if (withCorners) input.corners.resize(kept.back());
+  input.slivers.resize(dropped.back());
+  std::vector<Aabb> chunkBounds(plan.chunks);
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    std::size_t next = first[chunk], tree = kept[chunk], out = dropped[chunk];
+    Aabb bounds;
+    for (std::size_t f = begin; f < end; ++f) {
+      const MeshFace& face = faces[f];
+      const int count = face.isQuad() ? 2 : 1;
+      for (int half = 0; half < count; ++half, ++next) {
+        const std::array<Vec3, 3> corners = cornersAt(face, half);
+        const PackedTriangle packed{corners[0], corners[1], corners[2], static_cast<std::uint32_t>(f)};
+        if (sliver[next]) {
+          input.slivers[out++] = packed;
+          continue;
+        }
+        if (withCorners) input.corners[tree] = corners;
+        input.triangles[tree++] = packed;
+        for (const Vec3& c : corners) bounds.extend(c);
+      }
+    }
+    chunkBounds[chunk] = bounds;
+  });
+  // Chunk by chunk in order: the first of equal extremes (+0 or -0) wins, as in one pass.
+  for (const Aabb& bounds : chunkBounds) input.bounds.extend(bounds);
   return input;
 }
 

@@ -24,8 +24,9 @@ struct KdBuildInput {
   Aabb bounds;                          // of the tree triangles
   std::uint64_t faceCount = 0;
 };
+// On up to `threads` threads (the result does not depend on how many).
 KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces,
-                             bool withCorners = false);
+                             bool withCorners = false, int threads = 1);
 
 inline std::array<Vec3, 3> cornersOf(const PackedTriangle& triangle) {
   return {triangle.v0, triangle.v1, triangle.v2};
