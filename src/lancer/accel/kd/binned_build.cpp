@@ -10,11 +10,13 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <future>
 #include <limits>
 #include <memory>
 #include <utility>
+#include <thread>
 #include <vector>
 
 #include "lancer/accel/kd/binned_split.hpp"
@@ -344,11 +346,11 @@ class BinnedBuilder {
     for (Subtree& subtree : subtrees_) {
       if (&subtree != &subtrees_.back() && takeSpareThread()) {
         running.push_back(std::async(std::launch::async, [&] {
-          *subtree.slot = *buildDetached(std::move(subtree.refs), subtree.count, subtree.cell, subtree.depth);
+          buildDetached(std::move(subtree.refs), subtree.count, subtree.cell, subtree.depth, *subtree.slot);
           ++spareThreads_;
         }));
       } else {
-        *subtree.slot = *buildDetached(std::move(subtree.refs), subtree.count, subtree.cell, subtree.depth);
+        buildDetached(std::move(subtree.refs), subtree.count, subtree.cell, subtree.depth, *subtree.slot);
       }
     }
     for (std::future<void>& task : running) task.get();
@@ -464,22 +466,34 @@ class BinnedBuilder {
     return spare > 0;
   }
 
-  // A subtree with its own working memory and arena, built by the calling thread.
-  BuildNode* buildDetached(RefBuffer refs, std::size_t n, const Cell& cell, int depth) {
+  // Waits for the forked child's subtree. Waiting, this thread runs nothing, so it lends its
+  // place to the others (the forked subtree may have far more left to do than this thread had);
+  // it takes a place again before going on, so that at most `threads` run at once.
+  void awaitChild(std::future<void>& task) {
+    if (task.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+      ++spareThreads_;
+      task.wait();
+      while (!takeSpareThread()) std::this_thread::yield();
+    }
+    task.get();
+  }
+
+  // A subtree with its own working memory and arena, built by the calling thread into `node`.
+  void buildDetached(RefBuffer refs, std::size_t n, const Cell& cell, int depth, BuildNode& node) {
     Scratch scratch;
     scratch.stack = std::move(refs);
     scratch.stack.grow(stackSize(n), n);
-    return build(0, n, cell, depth, arenas_.create(), scratch);
+    build(0, n, cell, depth, arenas_.create(), scratch, node);
   }
 
   // A cell of fewer than kSmallCell references, and its subtree: split exactly, children
   // smaller still (each gets at most the cell's references), so only their boxes are needed.
-  BuildNode* buildSmall(std::size_t begin, std::size_t n, const Box& box, int depth, BuildArena& arena,
-                        Scratch& scratch) {
-    if (leafByCount(n, depth)) return makeLeaf(scratch.stack.data() + begin, n, arena, scratch);
+  void buildSmall(std::size_t begin, std::size_t n, const Box& box, int depth, BuildArena& arena,
+                  Scratch& scratch, BuildNode& node) {
+    if (leafByCount(n, depth)) return makeLeaf(scratch.stack.data() + begin, n, arena, scratch, node);
     const Split split = exactSmallSplit(scratch.stack.data() + begin, n, box, options_);
     if (split.axis < 0 || split.cost >= options_.intersectionCost * float(n)) {
-      return makeLeaf(scratch.stack.data() + begin, n, arena, scratch);
+      return makeLeaf(scratch.stack.data() + begin, n, arena, scratch, node);
     }
     const std::size_t leftBegin = begin + n;
     if (scratch.stack.size() < leftBegin + n) scratch.stack.grow(2 * (leftBegin + n), leftBegin);
@@ -489,19 +503,30 @@ class BinnedBuilder {
     Box leftBox = box, rightBox = box;
     leftBox.hi[split.axis] = split.pos;
     rightBox.lo[split.axis] = split.pos;
-    BuildNode* leftNode = buildSmall(leftBegin, nl, leftBox, depth + 1, arena, scratch);
-    BuildNode* rightNode = buildSmall(begin, nr, rightBox, depth + 1, arena, scratch);
-    return arena.inner(split.axis, split.pos, leftNode, rightNode);
+    BuildNode* left = setInner(node, split, arena);
+    buildSmall(leftBegin, nl, leftBox, depth + 1, arena, scratch, *left);
+    buildSmall(begin, nr, rightBox, depth + 1, arena, scratch, *node.child[1]);
   }
 
-  // The cell whose references are scratch.stack[begin, begin + n); the stack past them is free.
-  BuildNode* build(std::size_t begin, std::size_t n, const Cell& cell, int depth, BuildArena& arena,
-                   Scratch& scratch) {
-    if (n < kSmallCell) return buildSmall(begin, n, cell.box, depth, arena, scratch);
-    if (leafByCount(n, depth)) return makeLeaf(scratch.stack.data() + begin, n, arena, scratch);
+  // Makes `node` the inner node of the split, with its two children allocated (next to each other,
+  // before their subtrees); returns the left one.
+  static BuildNode* setInner(BuildNode& node, const Split& split, BuildArena& arena) {
+    node.axis = split.axis;
+    node.split = split.pos;
+    node.child[0] = arena.node();
+    node.child[1] = arena.node();
+    return node.child[0];
+  }
+
+  // The cell whose references are scratch.stack[begin, begin + n) (the stack past them is free),
+  // its subtree made in `node`.
+  void build(std::size_t begin, std::size_t n, const Cell& cell, int depth, BuildArena& arena, Scratch& scratch,
+             BuildNode& node) {
+    if (n < kSmallCell) return buildSmall(begin, n, cell.box, depth, arena, scratch, node);
+    if (leafByCount(n, depth)) return makeLeaf(scratch.stack.data() + begin, n, arena, scratch, node);
     const Split split = chooseSplit(scratch.stack.data() + begin, n, cell, scratch);
     if (split.axis < 0 || split.cost >= options_.intersectionCost * float(n)) {
-      return makeLeaf(scratch.stack.data() + begin, n, arena, scratch);
+      return makeLeaf(scratch.stack.data() + begin, n, arena, scratch, node);
     }
     const std::size_t leftBegin = begin + n;
     if (scratch.stack.size() < leftBegin + n) scratch.stack.grow(2 * (leftBegin + n), leftBegin);
@@ -509,28 +534,28 @@ class BinnedBuilder {
     Children children = childCells(cell, split);
     const Partitioner partition{input_, options_, split, cell.box};
     partition(base + begin, n, base + begin, base + leftBegin, children);
+    BuildNode* left = setInner(node, split, arena);
     if (children.leftCount >= kForkAbove && takeSpareThread()) {
       // A thread is idle (its subtree done): it takes the left child, with a copy of its references.
       RefBuffer leftRefs(stackSize(children.leftCount));
       std::copy_n(base + leftBegin, children.leftCount, leftRefs.data());
       auto task = std::async(std::launch::async, [&] {
-        BuildNode* node = buildDetached(std::move(leftRefs), children.leftCount, children.left, depth + 1);
+        buildDetached(std::move(leftRefs), children.leftCount, children.left, depth + 1, *left);
         ++spareThreads_;
-        return node;
       });
-      BuildNode* rightNode = build(begin, children.rightCount, children.right, depth + 1, arena, scratch);
-      return arena.inner(split.axis, split.pos, task.get(), rightNode);
+      build(begin, children.rightCount, children.right, depth + 1, arena, scratch, *node.child[1]);
+      awaitChild(task);
+      return;
     }
-    BuildNode* leftNode = build(leftBegin, children.leftCount, children.left, depth + 1, arena, scratch);
-    BuildNode* rightNode = build(begin, children.rightCount, children.right, depth + 1, arena, scratch);
-    return arena.inner(split.axis, split.pos, leftNode, rightNode);
+    build(leftBegin, children.leftCount, children.left, depth + 1, arena, scratch, *left);
+    build(begin, children.rightCount, children.right, depth + 1, arena, scratch, *node.child[1]);
   }
 
-  static BuildNode* makeLeaf(const Ref* refs, std::size_t n, BuildArena& arena, Scratch& scratch) {
+  static void makeLeaf(const Ref* refs, std::size_t n, BuildArena& arena, Scratch& scratch, BuildNode& node) {
     scratch.leaf.resize(n);
     for (std::size_t i = 0; i < n; ++i) scratch.leaf[i] = refs[i].id;
     std::sort(scratch.leaf.begin(), scratch.leaf.end());
-    return arena.leaf(scratch.leaf);
+    arena.setLeaf(node, scratch.leaf);
   }
 
   const KdBuildInput& input_;

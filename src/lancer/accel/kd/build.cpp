@@ -113,11 +113,16 @@ int resolveThreads(const KdBuildOptions& options) { return resolveThreadCount(op
 
 BuildNode* BuildArena::leaf(std::span<const std::uint32_t> triangles) {
   BuildNode& node = nodes.emplace_back();
+  setLeaf(node, triangles);
+  return &node;
+}
+
+void BuildArena::setLeaf(BuildNode& node, std::span<const std::uint32_t> triangles) {
+  node.axis = -1;
   node.arena = this;
   node.first = static_cast<std::uint32_t>(leafTriangles.size());
   node.count = static_cast<std::uint32_t>(triangles.size());
   leafTriangles.insert(leafTriangles.end(), triangles.begin(), triangles.end());
-  return &node;
 }
 
 BuildNode* BuildArena::inner(int axis, float split, BuildNode* left, BuildNode* right) {
@@ -140,6 +145,9 @@ namespace {
 struct LayoutPlan {
   std::size_t size = 0;
   std::vector<std::uint32_t> triangleWord;  // build triangle id -> word offset, or kUnset
+  // Whether a triangle is placed, 1 bit each: the walk's check stays in the cache, and its writes
+  // of triangleWord (read only by the parallel passes) do not wait for memory.
+  std::vector<std::uint64_t> placed;
   AccelStats stats;
   double rootArea = 0;
   float traversalCost = 0, intersectionCost = 0;
@@ -162,7 +170,11 @@ struct LayoutPlan {
   }
 
   void placeTriangle(std::uint32_t triangle) {
-    if (triangleWord[triangle] == kUnset) triangleWord[triangle] = allocate(KdTree::kTriangleWords);
+    std::uint64_t& bits = placed[triangle >> 6];
+    const std::uint64_t bit = std::uint64_t(1) << (triangle & 63);
+    if (bits & bit) return;
+    bits |= bit;
+    triangleWord[triangle] = allocate(KdTree::kTriangleWords);
   }
 
   void placeLeaf(BuildNode& node) {
@@ -246,6 +258,7 @@ KdTree KdTreeAssembler::assemble(BuildNode& root, BuildArenas& arenas, KdBuildIn
   plan.traversalCost = options.traversalCost;
   plan.intersectionCost = options.intersectionCost;
   plan.triangleWord.assign(input.triangles.size(), LayoutPlan::kUnset);
+  plan.placed.assign((input.triangles.size() + 63) / 64, 0);
   // Root alone at 0, a pad at 1, then sibling pairs at even words.
   plan.allocate(2);
   plan.place(0, root, input.bounds, 0);
@@ -279,6 +292,7 @@ KdTree KdTreeAssembler::assemble(BuildNode& root, BuildArenas& arenas, KdBuildIn
     if (at != LayoutPlan::kUnset) std::memcpy(static_cast<void*>(out + at), triangles + t, sizeof(PackedTriangle));
   });
   std::vector<std::uint32_t>().swap(plan.triangleWord);
+  std::vector<std::uint64_t>().swap(plan.placed);
 
   KdTree tree;
   tree.layout_ = std::move(words);

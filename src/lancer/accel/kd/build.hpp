@@ -60,6 +60,10 @@ struct BuildArena {
 
   BuildNode* leaf(std::span<const std::uint32_t> triangles);
   BuildNode* inner(int axis, float split, BuildNode* left, BuildNode* right);
+  // The same, filling a node allocated beforehand (in any arena): a builder that allocates a
+  // cell's node when it enters the cell lays the nodes out in about the assembler's walk order.
+  BuildNode* node() { return &nodes.emplace_back(); }
+  void setLeaf(BuildNode& node, std::span<const std::uint32_t> triangles);
 };
 
 // Arenas for any number of threads; create() is the only call that needs the lock.
