@@ -1,6 +1,7 @@
 #include "lancer/accel/kd/binned_split.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <span>
 
 #include "lancer/accel/kd/window_sweep.hpp"
@@ -212,7 +213,22 @@ void refineInWindow(Split& best, const BinCounts& counts, const Cell& cell, std:
     nl += starts[bin];
     nr -= ends[bin];
   }
-  std::sort(events, events + eventCount);
+  // Sorted as integers: the position's bits mapped to an order-preserving key (-0 as +0), then
+  // the type; about twice as fast as comparing the structs.
+  static_assert(sizeof(WindowEvent) == sizeof(std::uint64_t));
+  auto* keys = reinterpret_cast<std::uint64_t*>(events);
+  for (std::size_t i = 0; i < eventCount; ++i) {
+    const auto bits = std::bit_cast<std::uint32_t>(events[i].pos + 0.0f);
+    const std::uint32_t ordered = (bits & 0x80000000u) ? ~bits : bits | 0x80000000u;
+    keys[i] = std::uint64_t(ordered) << 32 | static_cast<std::uint32_t>(events[i].type);
+  }
+  std::sort(keys, keys + eventCount);
+  for (std::size_t i = 0; i < eventCount; ++i) {
+    const auto ordered = static_cast<std::uint32_t>(keys[i] >> 32);
+    const std::uint32_t bits = (ordered & 0x80000000u) ? ordered & 0x7FFFFFFFu : ~ordered;
+    const auto type = static_cast<int>(keys[i] & 0xFFFFFFFFu);
+    events[i] = {std::bit_cast<float>(bits), type};
+  }
   const AxisCost planeCost(cell.box, axis, 1.0f / cell.box.area(), options);
   sweepWindowEvents(std::span<const WindowEvent>(events, eventCount), planeCost, nl, nr,
                     [&](float p, bool planarsLeft, float cost) {
