@@ -1,12 +1,16 @@
 // The default SAH kd-tree build (--accel kdtree-sah): binned SAH from the root down to the leaves,
-// over compact references (a triangle's bounds inside the cell and its id) partitioned in one
-// growing buffer per thread, without event lists or per-node allocations. Each cell counts its
+// over compact references (a triangle's bounds inside the cell and its id, 32 bytes) partitioned in
+// one growing buffer per thread, without event lists or per-node allocations. Each cell counts its
 // references' bounds into bins (Shevtsov, Soupikov & Kapustin 2007, section 3), then sweeps the
 // bounds that fall in the two bins around the best boundary exactly, as the event sweep of Wald &
-// Havran 2006 would there. A straddler is split at the plane by clipping the triangle against that
-// plane alone and intersecting with the bounds it had. The big cells at the top bin and partition
-// on all build threads; below, whole subtrees are handed to the threads. Every split depends on the
-// cell's references only, so the tree is the same for any thread count.
+// Havran 2006 would there; cells of fewer than kSmallCell references (most cells of a tree) try
+// every bound exactly instead (exactSmallSplit) and build their subtrees without bins or bounds
+// (buildSmall). A straddler is split at the plane by clipping the triangle against that plane alone
+// and intersecting with the bounds it had. Subtrees are handed to the build threads as they fall
+// idle (a thread waiting for one lends its place), and the biggest cells can bin and partition on
+// all threads. Every split depends on the cell's references only, so the tree is the same for any
+// thread count. Each cell's node is allocated when the cell is entered, so the nodes lie in about
+// the order the assembler walks them.
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -119,9 +123,10 @@ struct Partitioner {
     auto prefetch = [&](std::size_t i) {
       const Ref& a = refs[i];
       const bool straddles = a.lo[k] < p && a.hi[k] > p;
-      const char* at = straddles ? reinterpret_cast<const char*>(triangles + a.id) : reinterpret_cast<const char*>(&a);
-      prefetchLine(at);
-      prefetchLine(at + sizeof(PackedTriangle) - 1);
+      const char* triangle = reinterpret_cast<const char*>(triangles + a.id);
+      const char* self = reinterpret_cast<const char*>(&a);
+      prefetchLine(straddles ? triangle : self);
+      prefetchLine(straddles ? triangle + sizeof(PackedTriangle) - 1 : self);
     };
     for (std::size_t i = 0; i < std::min(n, kAhead); ++i) prefetch(i);
     std::size_t nl = 0, nr = 0;
@@ -378,8 +383,8 @@ class BinnedBuilder {
     return n == 0 || depth >= maxDepth_ || options_.intersectionCost * float(n) <= cheapestSplit;
   }
 
-  // The split of the cell holding refs[0, n): exact for small cells, else binned and refined in
-  // the window around the best boundary.
+  // The split of the cell holding refs[0, n): binned and refined in the window around the best
+  // boundary (exact for a small cell, though build() hands those to buildSmall).
   Split chooseSplit(const Ref* refs, std::size_t n, const Cell& cell, Scratch& scratch) const {
     if (n < kSmallCell) return exactSmallSplit(refs, n, cell.box, options_);
     const BinGrid grid(cell, n);

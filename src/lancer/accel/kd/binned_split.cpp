@@ -50,7 +50,7 @@ void BinCounts::count(const Ref* refs, std::size_t n, const BinGrid& grid, const
   const __m256i rowStart = _mm256_setr_epi32(0, bins, 2 * bins, 3 * bins, 4 * bins, 5 * bins, 0, 0);
   const __m256i swapHalves = _mm256_setr_epi32(3, 4, 5, 0, 1, 2, 6, 7);
   for (std::size_t i = 0; i < n; ++i) {
-    _mm_prefetch(reinterpret_cast<const char*>(refs + i + 16), _MM_HINT_T0);
+    if (i + 16 < n) _mm_prefetch(reinterpret_cast<const char*>(refs + i + 16), _MM_HINT_T0);
     const __m256 v = _mm256_load_ps(refs[i].lo);
     __m256i bin = _mm256_cvttps_epi32(_mm256_mul_ps(_mm256_sub_ps(v, lo), scale));
     bin = _mm256_add_epi32(_mm256_min_epi32(_mm256_max_epi32(bin, zero), last), rowStart);
@@ -237,6 +237,9 @@ void refineInWindow(Split& best, const BinCounts& counts, const Cell& cell, std:
 }
 
 #if defined(__AVX2__)
+// Candidate planes of exactSmallSplit: each reference's lower and upper bound.
+constexpr std::size_t kSmallCandidates = (2 * kSmallCell + 7) / 8 * 8;
+
 // One axis of exactSmallSplit: V vectors of 8 candidate planes, their counts kept in registers.
 struct SmallAxis {
   const Ref* refs;
@@ -247,10 +250,19 @@ struct SmallAxis {
   const AxisCost& planeCost;
   const KdBuildOptions& options;
 
+  // search<V> for the V at run time.
+  template <bool kPlanars, int V = 1>
+  void dispatch(std::size_t vectors, Split& best) const {
+    if constexpr (V <= int(kSmallCandidates / 8)) {
+      if (vectors == std::size_t(V)) return search<V, kPlanars>(best);
+      dispatch<kPlanars, V + 1>(vectors, best);
+    }
+  }
+
   // kPlanars: whether any reference lies flat on this axis (else none lies in a plane).
   template <int V, bool kPlanars>
   void search(Split& best) const {
-    static_assert(V >= 1 && V <= 6);
+    static_assert(V >= 1 && V <= int(kSmallCandidates / 8));
     __m256 p[V];
     __m256i l[V], r[V], f[V];
     for (int v = 0; v < V; ++v) {
@@ -330,7 +342,7 @@ struct SmallAxis {
 Split exactSmallSplit(const Ref* refs, std::size_t n, const Box& cell, const KdBuildOptions& options) {
   // Candidates: each reference's lower then upper bound (a planar one's twice: the same cost, so
   // the first wins, as if tried once), padded with +inf, which lies in no cell.
-  constexpr std::size_t kCandidates = (2 * kSmallCell + 7) / 8 * 8;
+  constexpr std::size_t kCandidates = kSmallCandidates;
   Split best;
   const float area = cell.area();
   if (!(area > 0.0f) || n >= kSmallCell) return best;
@@ -378,27 +390,10 @@ Split exactSmallSplit(const Ref* refs, std::size_t n, const Box& cell, const KdB
     // (nr), lying in it (np); as the sweep counts them (left: lo < p, right: hi > p).
 #if defined(__AVX2__)
     const SmallAxis job{refs, n, axis, candidate, cellLo, cellHi, minSlab, invArea, planeCost, options};
-    if (planars > 0) {
-      switch (used / 8) {
-        case 0: break;
-        case 1: job.search<1, true>(best); break;
-        case 2: job.search<2, true>(best); break;
-        case 3: job.search<3, true>(best); break;
-        case 4: job.search<4, true>(best); break;
-        case 5: job.search<5, true>(best); break;
-        default: job.search<6, true>(best); break;
-      }
-    } else {
-      switch (used / 8) {
-        case 0: break;
-        case 1: job.search<1, false>(best); break;
-        case 2: job.search<2, false>(best); break;
-        case 3: job.search<3, false>(best); break;
-        case 4: job.search<4, false>(best); break;
-        case 5: job.search<5, false>(best); break;
-        default: job.search<6, false>(best); break;
-      }
-    }
+    if (planars > 0)
+      job.dispatch<true>(used / 8, best);
+    else
+      job.dispatch<false>(used / 8, best);
 #else
     for (std::size_t c = 0; c < used; ++c) nl[c] = nr[c] = np[c] = 0;
     for (std::size_t j = 0; j < n; ++j) {
