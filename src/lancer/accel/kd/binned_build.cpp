@@ -1,18 +1,26 @@
 // The default SAH kd-tree build (--accel kdtree-sah): binned SAH from the root down to the leaves,
-// over compact references (a triangle's bounds inside the cell and its id) partitioned in one
-// growing buffer per thread, without event lists or per-node allocations. Each cell counts its
+// over compact references (a triangle's bounds inside the cell and its id, 32 bytes) partitioned in
+// one growing buffer per thread, without event lists or per-node allocations. Each cell counts its
 // references' bounds into bins (Shevtsov, Soupikov & Kapustin 2007, section 3), then sweeps the
 // bounds that fall in the two bins around the best boundary exactly, as the event sweep of Wald &
-// Havran 2006 would there. A straddler is split at the plane by clipping the triangle against that
-// plane alone and intersecting with the bounds it had. The big cells at the top bin and partition
-// on all build threads; below, whole subtrees are handed to the threads. Every split depends on the
-// cell's references only, so the tree is the same for any thread count.
+// Havran 2006 would there; cells of fewer than kSmallCell references (most cells of a tree) try
+// every bound exactly instead (exactSmallSplit) and build their subtrees without bins or bounds
+// (buildSmall). A straddler is split at the plane by clipping the triangle against that plane alone
+// and intersecting with the bounds it had. Subtrees are handed to the build threads as they fall
+// idle (a thread waiting for one lends its place), and the biggest cells can bin and partition on
+// all threads. Every split depends on the cell's references only, so the tree is the same for any
+// thread count. Each cell's node is allocated when the cell is entered, so the nodes lie in about
+// the order the assembler walks them.
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <future>
 #include <limits>
+#include <memory>
+#include <utility>
+#include <thread>
 #include <vector>
 
 #include "lancer/accel/kd/binned_split.hpp"
@@ -22,11 +30,24 @@
 #include "lancer/util/parallel_for.hpp"
 #include "lancer/util/stopwatch.hpp"
 
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
+
 namespace lancer {
 
 namespace {
 
 using namespace binned;
+
+// A prefetch the compiler keeps (GCC 12 dropped the __builtin_prefetch calls of the partition loop).
+inline void prefetchLine(const void* at) {
+#if defined(__x86_64__) || defined(__i386__)
+  asm volatile("prefetcht0 %0" : : "m"(*static_cast<const char*>(at)));
+#else
+  __builtin_prefetch(at);
+#endif
+}
 
 // The children's cells, and the bounds of what each side received.
 struct Children {
@@ -54,51 +75,175 @@ struct Partitioner {
     return false;
   }
 
+  // The parts of a straddler on each side; false for a side where it has none.
+  void cut(const Ref& r, Ref& l, Ref& rr, bool& keepLeft, bool& keepRight) const {
+    const int k = split.axis;
+    const float p = split.pos;
+    l = r;
+    rr = r;
+    l.hi[k] = p;
+    rr.lo[k] = p;
+    keepLeft = keepRight = true;
+    if (!clips(r)) return;
+#if defined(__AVX2__)
+    __m128 lower[2], upper[2];
+    splitTriangleBounds(input.triangles[r.id], k, p, lower, upper);
+    // l := l ∩ below, rr := rr ∩ above, lanes 0-2 the lower bounds, 3-5 the upper (as intersect).
+    const __m256i gather = _mm256_setr_epi32(0, 1, 2, 4, 5, 6, 3, 7);
+    const __m256i toLow = _mm256_setr_epi32(3, 4, 5, 0, 1, 2, 6, 7);
+    const __m256 lowLanes = _mm256_castsi256_ps(_mm256_setr_epi32(-1, -1, -1, 0, 0, 0, 0, 0));
+    const __m256 highLanes = _mm256_castsi256_ps(_mm256_setr_epi32(0, 0, 0, -1, -1, -1, 0, 0));
+    auto cutTo = [&](Ref& part, __m128 lo, __m128 hi) {
+      const __m256 v = _mm256_load_ps(part.lo);
+      const __m256 box = _mm256_permutevar8x32_ps(_mm256_set_m128(hi, lo), gather);
+      __m256 out = _mm256_blendv_ps(v, _mm256_max_ps(box, v), lowLanes);
+      out = _mm256_blendv_ps(out, _mm256_min_ps(box, v), highLanes);
+      _mm256_store_ps(part.lo, out);
+      const __m256 ordered = _mm256_cmp_ps(out, _mm256_permutevar8x32_ps(out, toLow), _CMP_LE_OQ);
+      return (_mm256_movemask_ps(ordered) & 7) == 7;
+    };
+    keepLeft = cutTo(l, lower[0], upper[0]);
+    keepRight = cutTo(rr, lower[1], upper[1]);
+#else
+    Aabb below, above;
+    splitTriangleBounds(cornersOf(input.triangles[r.id]), k, p, below, above);
+    keepLeft = intersect(l, below);
+    keepRight = intersect(rr, above);
+#endif
+  }
+
   void operator()(const Ref* refs, std::size_t n, Ref* right, Ref* left, Children& out) const {
     const int k = split.axis;
     const float p = split.pos;
-    // Local bounds: kept in registers (through `out` they would be reloaded after every store to
-    // the reference arrays, which may alias them as far as the compiler knows).
-    Box usedLeft = out.left.used, usedRight = out.right.used;
+    const PackedTriangle* triangles = input.triangles.data();
+    // Straddlers read their triangle, usually a cache miss (it was last read levels above): fetched
+    // this many references ahead, the first ones all at once before the loop (branch-free: a
+    // non-straddler prefetches its own reference).
+    constexpr std::size_t kAhead = 16;
+    auto prefetch = [&](std::size_t i) {
+      const Ref& a = refs[i];
+      const bool straddles = a.lo[k] < p && a.hi[k] > p;
+      const char* triangle = reinterpret_cast<const char*>(triangles + a.id);
+      const char* self = reinterpret_cast<const char*>(&a);
+      prefetchLine(straddles ? triangle : self);
+      prefetchLine(straddles ? triangle + sizeof(PackedTriangle) - 1 : self);
+    };
+    for (std::size_t i = 0; i < std::min(n, kAhead); ++i) prefetch(i);
     std::size_t nl = 0, nr = 0;
+#if defined(__AVX2__)
+    // Bounds of each side's references as vectors: lanes 0-2 of the minimum, 3-5 of the maximum.
+    __m256 minLeft = _mm256_set1_ps(std::numeric_limits<float>::max()), maxLeft = -minLeft;
+    __m256 minRight = minLeft, maxRight = maxLeft;
+    auto extendLeft = [&](__m256 v) {
+      minLeft = _mm256_min_ps(minLeft, v);
+      maxLeft = _mm256_max_ps(maxLeft, v);
+    };
+    auto extendRight = [&](__m256 v) {
+      minRight = _mm256_min_ps(minRight, v);
+      maxRight = _mm256_max_ps(maxRight, v);
+    };
+#else
+    Box usedLeft, usedRight;
+#endif
     for (std::size_t i = 0; i < n; ++i) {
-      const Ref r = refs[i];
-      const float lo = r.lo[k], hi = r.hi[k];
+      if (i + kAhead < n) prefetch(i + kAhead);
+      const float lo = refs[i].lo[k], hi = refs[i].hi[k];
       const bool planar = lo == hi && lo == p;
       const bool toLeft = planar ? split.planarLeft : hi <= p;
       const bool toRight = planar ? !split.planarLeft : lo >= p;
       if (toLeft || toRight) {
         // One side: written to both, kept by the count of one (a branch here mispredicts often).
+#if defined(__AVX2__)
+        const __m256 v = _mm256_load_ps(refs[i].lo);
+        _mm256_store_ps(left[nl].lo, v);
+        _mm256_store_ps(right[nr].lo, v);
+        const __m256 side = _mm256_castsi256_ps(_mm256_set1_epi32(toLeft ? -1 : 0));
+        minLeft = _mm256_blendv_ps(minLeft, _mm256_min_ps(minLeft, v), side);
+        maxLeft = _mm256_blendv_ps(maxLeft, _mm256_max_ps(maxLeft, v), side);
+        minRight = _mm256_blendv_ps(_mm256_min_ps(minRight, v), minRight, side);
+        maxRight = _mm256_blendv_ps(_mm256_max_ps(maxRight, v), maxRight, side);
+#else
+        const Ref r = refs[i];
         left[nl] = r;
         right[nr] = r;
+        (toLeft ? usedLeft : usedRight).extend(r);
+#endif
         nl += toLeft;
         nr += toRight;
-        (toLeft ? usedLeft : usedRight).extend(r);
         continue;
       }
-      Ref l = r, rr = r;
-      l.hi[k] = p;
-      rr.lo[k] = p;
-      bool keepLeft = true, keepRight = true;
-      if (clips(r)) {
-        Aabb below, above;
-        splitTriangleBounds(cornersOf(input.triangles[r.id]), k, p, below, above);
-        keepLeft = intersect(l, below);
-        keepRight = intersect(rr, above);
-      }
+      Ref l, rr;
+      bool keepLeft, keepRight;
+      cut(refs[i], l, rr, keepLeft, keepRight);
       if (keepLeft) {
         left[nl++] = l;
+#if defined(__AVX2__)
+        extendLeft(_mm256_load_ps(l.lo));
+#else
         usedLeft.extend(l);
+#endif
       }
       if (keepRight) {
         right[nr++] = rr;
+#if defined(__AVX2__)
+        extendRight(_mm256_load_ps(rr.lo));
+#else
         usedRight.extend(rr);
+#endif
       }
     }
-    out.left.used = usedLeft;
-    out.right.used = usedRight;
+#if defined(__AVX2__)
+    Box usedLeft, usedRight;
+    alignas(32) float minL[8], maxL[8], minR[8], maxR[8];
+    _mm256_store_ps(minL, minLeft);
+    _mm256_store_ps(maxL, maxLeft);
+    _mm256_store_ps(minR, minRight);
+    _mm256_store_ps(maxR, maxRight);
+    for (int j = 0; j < 3; ++j) {
+      usedLeft.lo[j] = minL[j];
+      usedLeft.hi[j] = maxL[3 + j];
+      usedRight.lo[j] = minR[j];
+      usedRight.hi[j] = maxR[3 + j];
+    }
+#endif
+    out.left.used.extend(usedLeft);
+    out.right.used.extend(usedRight);
     out.leftCount += nl;
     out.rightCount += nr;
+  }
+
+  // The same sides for a small cell's references, without the bounds of each side (small cells'
+  // splits do not use them) or prefetching (their triangles are few and near). Returns the counts.
+  std::pair<std::size_t, std::size_t> small(const Ref* refs, std::size_t n, Ref* right, Ref* left) const {
+    const int k = split.axis;
+    const float p = split.pos;
+    std::size_t nl = 0, nr = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const float lo = refs[i].lo[k], hi = refs[i].hi[k];
+      const bool planar = lo == hi && lo == p;
+      const bool toLeft = planar ? split.planarLeft : hi <= p;
+      const bool toRight = planar ? !split.planarLeft : lo >= p;
+      if (toLeft || toRight) {
+#if defined(__AVX2__)
+        const __m256 v = _mm256_load_ps(refs[i].lo);
+        _mm256_store_ps(left[nl].lo, v);
+        _mm256_store_ps(right[nr].lo, v);
+#else
+        const Ref r = refs[i];
+        left[nl] = r;
+        right[nr] = r;
+#endif
+        nl += toLeft;
+        nr += toRight;
+        continue;
+      }
+      Ref l, rr;
+      bool keepLeft, keepRight;
+      cut(refs[i], l, rr, keepLeft, keepRight);
+      if (keepLeft) left[nl++] = l;
+      if (keepRight) right[nr++] = rr;
+    }
+    return {nl, nr};
   }
 
   // r := r ∩ box; false when that is empty.
@@ -123,9 +268,33 @@ Children childCells(const Cell& cell, const Split& split) {
   return c;
 }
 
+// A growing array of references that leaves new room uninitialised (a vector would zero it: page
+// faults and memory traffic for room most subtrees never reach).
+class RefBuffer {
+ public:
+  RefBuffer() = default;
+  explicit RefBuffer(std::size_t n) : data_(new Ref[n]), size_(n) {}
+  Ref* data() { return data_.get(); }
+  const Ref* data() const { return data_.get(); }
+  std::size_t size() const { return size_; }
+  // Room for at least `n`, keeping the first `keep` references.
+  void grow(std::size_t n, std::size_t keep) {
+    if (n <= size_) return;
+    std::unique_ptr<Ref[]> bigger(new Ref[n]);
+    std::copy_n(data_.get(), std::min(keep, size_), bigger.get());
+    data_ = std::move(bigger);
+    size_ = n;
+  }
+
+ private:
+  std::unique_ptr<Ref[]> data_;
+  std::size_t size_ = 0;
+};
+
 // A subtree handed to one thread: its references, and where its root goes.
 struct Subtree {
-  std::vector<Ref> refs;
+  RefBuffer refs;
+  std::size_t count = 0;
   Cell cell;
   int depth = 0;
   BuildNode* slot = nullptr;
@@ -149,41 +318,44 @@ class BinnedBuilder {
       root.box.lo[k] = bounds.lower[k];
       root.box.hi[k] = bounds.upper[k];
     }
-    std::vector<Ref> refs(n);
+    // One thread: the whole tree is one subtree, whose buffer has room for the left children
+    // along a path. More: the top cells, down to a few subtrees per thread, split with every
+    // thread, then the subtrees built side by side.
+    topBelow_ =
+        threads_ > 1 ? std::max<std::size_t>(options_.parallelSplitAbove, n / std::size_t(threads_)) : n;
+    RefBuffer refs(n <= topBelow_ ? stackSize(n) : n);
     const ChunkPlan plan(n, chunkGrain_);
     std::vector<Box> chunkUsed(plan.chunks);
     parallelChunks(plan, threads_, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+      Ref* out = refs.data();
       for (std::size_t t = begin; t < end; ++t) {
         const std::array<Vec3, 3> c = cornersOf(input_.triangles[t]);
-        Ref& r = refs[t];
+        Ref& r = out[t];
         for (int k = 0; k < 3; ++k) {
           // + 0.0f turns -0 into +0, so equal positions compare (and bin) alike.
           r.lo[k] = std::min({c[0][k], c[1][k], c[2][k]}) + 0.0f;
           r.hi[k] = std::max({c[0][k], c[1][k], c[2][k]}) + 0.0f;
         }
         r.id = static_cast<std::uint32_t>(t);
+        r.unused = 0;
         chunkUsed[chunk].extend(r);
       }
     });
     for (const Box& used : chunkUsed) root.used.extend(used);
-    // One thread: the whole tree is one subtree. More: the top cells, down to a few subtrees per
-    // thread, split with every thread, then the subtrees built side by side.
-    topBelow_ =
-        threads_ > 1 ? std::max<std::size_t>(options_.parallelSplitAbove, n / std::size_t(threads_)) : n;
     spareThreads_ = threads_ - 1;
     BuildArena& arena = arenas_.create();
-    BuildNode* top = buildTop(std::move(refs), root, 0, arena);
+    BuildNode* top = buildTop(std::move(refs), n, root, 0, arena);
     std::sort(subtrees_.begin(), subtrees_.end(),
-              [](const Subtree& a, const Subtree& b) { return a.refs.size() > b.refs.size(); });
+              [](const Subtree& a, const Subtree& b) { return a.count > b.count; });
     std::vector<std::future<void>> running;
     for (Subtree& subtree : subtrees_) {
       if (&subtree != &subtrees_.back() && takeSpareThread()) {
         running.push_back(std::async(std::launch::async, [&] {
-          *subtree.slot = *buildDetached(std::move(subtree.refs), subtree.cell, subtree.depth);
+          buildDetached(std::move(subtree.refs), subtree.count, subtree.cell, subtree.depth, *subtree.slot);
           ++spareThreads_;
         }));
       } else {
-        *subtree.slot = *buildDetached(std::move(subtree.refs), subtree.cell, subtree.depth);
+        buildDetached(std::move(subtree.refs), subtree.count, subtree.cell, subtree.depth, *subtree.slot);
       }
     }
     for (std::future<void>& task : running) task.get();
@@ -195,11 +367,15 @@ class BinnedBuilder {
   // cell's right child written over it and its left child at the end (the stack grows by the
   // left children along the path only).
   struct Scratch {
-    std::vector<Ref> stack;
+    RefBuffer stack;
     BinCounts counts;
     std::vector<WindowEvent> window;
     std::vector<std::uint32_t> leaf;
   };
+
+  // Room for a subtree of n references: the left children along a path (grown when a deep path
+  // needs more).
+  static std::size_t stackSize(std::size_t n) { return n + n + n / 2 + 64; }
 
   bool leafByCount(std::size_t n, int depth) const {
     // No split can cost less than kt * emptySpaceFactor, so cells this small stay leaves.
@@ -207,13 +383,30 @@ class BinnedBuilder {
     return n == 0 || depth >= maxDepth_ || options_.intersectionCost * float(n) <= cheapestSplit;
   }
 
+  // The split of the cell holding refs[0, n): binned and refined in the window around the best
+  // boundary (exact for a small cell, though build() hands those to buildSmall).
+  Split chooseSplit(const Ref* refs, std::size_t n, const Cell& cell, Scratch& scratch) const {
+    if (n < kSmallCell) return exactSmallSplit(refs, n, cell.box, options_);
+    const BinGrid grid(cell, n);
+    scratch.counts.clear(grid.bins);
+    scratch.counts.count(refs, n, grid, cell.box);
+    const auto count = static_cast<std::uint32_t>(n);
+    Split split = bestBinnedSplit(scratch.counts, grid, cell, count, options_);
+    if (split.bin > 0) {
+      if (scratch.window.size() < 2 * n) scratch.window.resize(2 * n);
+      const std::size_t events =
+          collectWindow(refs, n, grid, split.axis, split.bin - 1, split.bin, scratch.window.data());
+      refineInWindow(split, scratch.counts, cell, count, scratch.window.data(), events, options_);
+    }
+    return split;
+  }
+
   // Big cells: binning and partition run over chunks on every thread; their children are kept in
-  // vectors of their own (few cells, so few allocations).
-  BuildNode* buildTop(std::vector<Ref> refs, const Cell& cell, int depth, BuildArena& arena) {
-    const std::size_t n = refs.size();
+  // buffers of their own (few cells, so few allocations).
+  BuildNode* buildTop(RefBuffer refs, std::size_t n, const Cell& cell, int depth, BuildArena& arena) {
     if (n <= topBelow_ || leafByCount(n, depth)) {
       BuildNode* slot = arena.leaf({});
-      subtrees_.push_back({std::move(refs), cell, depth, slot});
+      subtrees_.push_back({std::move(refs), n, cell, depth, slot});
       return slot;
     }
     const BinGrid grid(cell, n);
@@ -223,30 +416,31 @@ class BinnedBuilder {
       chunkCounts[chunk].clear(grid.bins);
       chunkCounts[chunk].count(refs.data() + begin, end - begin, grid, cell.box);
     });
-    for (std::size_t c = 1; c < plan.chunks; ++c) chunkCounts[0].add(chunkCounts[c], grid.bins);
+    for (std::size_t c = 1; c < plan.chunks; ++c) chunkCounts[0].add(chunkCounts[c]);
     const auto count = static_cast<std::uint32_t>(n);
     Split split = bestBinnedSplit(chunkCounts[0], grid, cell, count, options_);
     if (split.bin > 0) {
-      std::vector<WindowEvent> window;
-      collectWindow(refs.data(), n, grid, split.axis, split.bin - 1, split.bin, window);
-      refineInWindow(split, chunkCounts[0], cell, count, window, options_);
+      std::vector<WindowEvent> window(2 * n);
+      const std::size_t events =
+          collectWindow(refs.data(), n, grid, split.axis, split.bin - 1, split.bin, window.data());
+      refineInWindow(split, chunkCounts[0], cell, count, window.data(), events, options_);
     }
     if (split.axis < 0 || split.cost >= options_.intersectionCost * float(n)) {
       BuildNode* slot = arena.leaf({});
-      subtrees_.push_back({std::move(refs), cell, depth, slot});  // its subtree makes it a leaf
+      subtrees_.push_back({std::move(refs), n, cell, depth, slot});  // its subtree makes it a leaf
       return slot;
     }
     Children children = childCells(cell, split);
     const Partitioner partition{input_, options_, split, cell.box};
     std::vector<Children> chunkChildren(plan.chunks);
-    std::vector<std::vector<Ref>> chunkLeft(plan.chunks), chunkRight(plan.chunks);
+    std::vector<RefBuffer> chunkLeft(plan.chunks), chunkRight(plan.chunks);
     parallelChunks(plan, threads_, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
-      chunkLeft[chunk].resize(end - begin);
-      chunkRight[chunk].resize(end - begin);
+      chunkLeft[chunk] = RefBuffer(end - begin);
+      chunkRight[chunk] = RefBuffer(end - begin);
       partition(refs.data() + begin, end - begin, chunkRight[chunk].data(), chunkLeft[chunk].data(),
                 chunkChildren[chunk]);
     });
-    std::vector<Ref>().swap(refs);
+    refs = RefBuffer();
     std::vector<std::size_t> leftAt(plan.chunks + 1, 0), rightAt(plan.chunks + 1, 0);
     for (std::size_t c = 0; c < plan.chunks; ++c) {
       const Children& part = chunkChildren[c];
@@ -255,15 +449,16 @@ class BinnedBuilder {
       children.left.used.extend(part.left.used);
       children.right.used.extend(part.right.used);
     }
-    std::vector<Ref> left(leftAt.back()), right(rightAt.back());
+    const std::size_t nl = leftAt.back(), nr = rightAt.back();
+    RefBuffer left(nl <= topBelow_ ? stackSize(nl) : nl), right(nr <= topBelow_ ? stackSize(nr) : nr);
     parallelChunks(plan, threads_, [&](std::size_t chunk, std::size_t, std::size_t) {
-      std::copy_n(chunkLeft[chunk].begin(), chunkChildren[chunk].leftCount, left.begin() + leftAt[chunk]);
-      std::copy_n(chunkRight[chunk].begin(), chunkChildren[chunk].rightCount, right.begin() + rightAt[chunk]);
-      std::vector<Ref>().swap(chunkLeft[chunk]);
-      std::vector<Ref>().swap(chunkRight[chunk]);
+      std::copy_n(chunkLeft[chunk].data(), chunkChildren[chunk].leftCount, left.data() + leftAt[chunk]);
+      std::copy_n(chunkRight[chunk].data(), chunkChildren[chunk].rightCount, right.data() + rightAt[chunk]);
+      chunkLeft[chunk] = RefBuffer();
+      chunkRight[chunk] = RefBuffer();
     });
-    BuildNode* leftNode = buildTop(std::move(left), children.left, depth + 1, arena);
-    BuildNode* rightNode = buildTop(std::move(right), children.right, depth + 1, arena);
+    BuildNode* leftNode = buildTop(std::move(left), nl, children.left, depth + 1, arena);
+    BuildNode* rightNode = buildTop(std::move(right), nr, children.right, depth + 1, arena);
     return arena.inner(split.axis, split.pos, leftNode, rightNode);
   }
 
@@ -276,61 +471,96 @@ class BinnedBuilder {
     return spare > 0;
   }
 
-  // A subtree with its own working memory and arena, built by the calling thread.
-  BuildNode* buildDetached(std::vector<Ref> refs, const Cell& cell, int depth) {
-    Scratch scratch;
-    const std::size_t n = refs.size();
-    scratch.stack = std::move(refs);
-    // Room for the left children along a path; grown when a deep path needs more.
-    scratch.stack.resize(n + n + n / 2 + 64);
-    return build(0, n, cell, depth, arenas_.create(), scratch);
+  // Waits for the forked child's subtree. Waiting, this thread runs nothing, so it lends its
+  // place to the others (the forked subtree may have far more left to do than this thread had);
+  // it takes a place again before going on, so that at most `threads` run at once.
+  void awaitChild(std::future<void>& task) {
+    if (task.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+      ++spareThreads_;
+      task.wait();
+      while (!takeSpareThread()) std::this_thread::yield();
+    }
+    task.get();
   }
 
-  // The cell whose references are scratch.stack[begin, begin + n); the stack past them is free.
-  BuildNode* build(std::size_t begin, std::size_t n, const Cell& cell, int depth, BuildArena& arena,
-                   Scratch& scratch) {
-    if (leafByCount(n, depth)) return makeLeaf(scratch.stack.data() + begin, n, arena, scratch);
-    const Ref* refs = scratch.stack.data() + begin;
-    const BinGrid grid(cell, n);
-    scratch.counts.clear(grid.bins);
-    scratch.counts.count(refs, n, grid, cell.box);
-    const auto count = static_cast<std::uint32_t>(n);
-    Split split = bestBinnedSplit(scratch.counts, grid, cell, count, options_);
-    if (split.bin > 0) {
-      scratch.window.clear();
-      collectWindow(refs, n, grid, split.axis, split.bin - 1, split.bin, scratch.window);
-      refineInWindow(split, scratch.counts, cell, count, scratch.window, options_);
-    }
+  // A subtree with its own working memory and arena, built by the calling thread into `node`.
+  void buildDetached(RefBuffer refs, std::size_t n, const Cell& cell, int depth, BuildNode& node) {
+    Scratch scratch;
+    scratch.stack = std::move(refs);
+    scratch.stack.grow(stackSize(n), n);
+    build(0, n, cell, depth, arenas_.create(), scratch, node);
+  }
+
+  // A cell of fewer than kSmallCell references, and its subtree: split exactly, children
+  // smaller still (each gets at most the cell's references), so only their boxes are needed.
+  void buildSmall(std::size_t begin, std::size_t n, const Box& box, int depth, BuildArena& arena,
+                  Scratch& scratch, BuildNode& node) {
+    if (leafByCount(n, depth)) return makeLeaf(scratch.stack.data() + begin, n, arena, scratch, node);
+    const Split split = exactSmallSplit(scratch.stack.data() + begin, n, box, options_);
     if (split.axis < 0 || split.cost >= options_.intersectionCost * float(n)) {
-      return makeLeaf(refs, n, arena, scratch);
+      return makeLeaf(scratch.stack.data() + begin, n, arena, scratch, node);
     }
     const std::size_t leftBegin = begin + n;
-    if (scratch.stack.size() < leftBegin + n) scratch.stack.resize(2 * (leftBegin + n));
+    if (scratch.stack.size() < leftBegin + n) scratch.stack.grow(2 * (leftBegin + n), leftBegin);
+    Ref* base = scratch.stack.data();
+    const Partitioner partition{input_, options_, split, box};
+    const auto [nl, nr] = partition.small(base + begin, n, base + begin, base + leftBegin);
+    Box leftBox = box, rightBox = box;
+    leftBox.hi[split.axis] = split.pos;
+    rightBox.lo[split.axis] = split.pos;
+    BuildNode* left = setInner(node, split, arena);
+    buildSmall(leftBegin, nl, leftBox, depth + 1, arena, scratch, *left);
+    buildSmall(begin, nr, rightBox, depth + 1, arena, scratch, *node.child[1]);
+  }
+
+  // Makes `node` the inner node of the split, with its two children allocated (next to each other,
+  // before their subtrees); returns the left one.
+  static BuildNode* setInner(BuildNode& node, const Split& split, BuildArena& arena) {
+    node.axis = split.axis;
+    node.split = split.pos;
+    node.child[0] = arena.node();
+    node.child[1] = arena.node();
+    return node.child[0];
+  }
+
+  // The cell whose references are scratch.stack[begin, begin + n) (the stack past them is free),
+  // its subtree made in `node`.
+  void build(std::size_t begin, std::size_t n, const Cell& cell, int depth, BuildArena& arena, Scratch& scratch,
+             BuildNode& node) {
+    if (n < kSmallCell) return buildSmall(begin, n, cell.box, depth, arena, scratch, node);
+    if (leafByCount(n, depth)) return makeLeaf(scratch.stack.data() + begin, n, arena, scratch, node);
+    const Split split = chooseSplit(scratch.stack.data() + begin, n, cell, scratch);
+    if (split.axis < 0 || split.cost >= options_.intersectionCost * float(n)) {
+      return makeLeaf(scratch.stack.data() + begin, n, arena, scratch, node);
+    }
+    const std::size_t leftBegin = begin + n;
+    if (scratch.stack.size() < leftBegin + n) scratch.stack.grow(2 * (leftBegin + n), leftBegin);
     Ref* base = scratch.stack.data();
     Children children = childCells(cell, split);
     const Partitioner partition{input_, options_, split, cell.box};
     partition(base + begin, n, base + begin, base + leftBegin, children);
+    BuildNode* left = setInner(node, split, arena);
     if (children.leftCount >= kForkAbove && takeSpareThread()) {
       // A thread is idle (its subtree done): it takes the left child, with a copy of its references.
-      std::vector<Ref> leftRefs(base + leftBegin, base + leftBegin + children.leftCount);
+      RefBuffer leftRefs(stackSize(children.leftCount));
+      std::copy_n(base + leftBegin, children.leftCount, leftRefs.data());
       auto task = std::async(std::launch::async, [&] {
-        BuildNode* node = buildDetached(std::move(leftRefs), children.left, depth + 1);
+        buildDetached(std::move(leftRefs), children.leftCount, children.left, depth + 1, *left);
         ++spareThreads_;
-        return node;
       });
-      BuildNode* rightNode = build(begin, children.rightCount, children.right, depth + 1, arena, scratch);
-      return arena.inner(split.axis, split.pos, task.get(), rightNode);
+      build(begin, children.rightCount, children.right, depth + 1, arena, scratch, *node.child[1]);
+      awaitChild(task);
+      return;
     }
-    BuildNode* leftNode = build(leftBegin, children.leftCount, children.left, depth + 1, arena, scratch);
-    BuildNode* rightNode = build(begin, children.rightCount, children.right, depth + 1, arena, scratch);
-    return arena.inner(split.axis, split.pos, leftNode, rightNode);
+    build(leftBegin, children.leftCount, children.left, depth + 1, arena, scratch, *left);
+    build(begin, children.rightCount, children.right, depth + 1, arena, scratch, *node.child[1]);
   }
 
-  static BuildNode* makeLeaf(const Ref* refs, std::size_t n, BuildArena& arena, Scratch& scratch) {
+  static void makeLeaf(const Ref* refs, std::size_t n, BuildArena& arena, Scratch& scratch, BuildNode& node) {
     scratch.leaf.resize(n);
     for (std::size_t i = 0; i < n; ++i) scratch.leaf[i] = refs[i].id;
     std::sort(scratch.leaf.begin(), scratch.leaf.end());
-    return arena.leaf(scratch.leaf);
+    arena.setLeaf(node, scratch.leaf);
   }
 
   const KdBuildInput& input_;
@@ -350,12 +580,12 @@ class BinnedBuilder {
 KdTree KdTree::buildSah(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                         const KdBuildOptions& options) {
   const Stopwatch stopwatch;
-  KdBuildInput input = gatherTriangles(positions, faces);
+  KdBuildInput input = gatherTriangles(positions, faces, false, options.threads);
   BuildArenas arenas;
   BinnedBuilder builder(input, options, arenas);
-  const BuildNode* root = builder.buildRoot();
+  BuildNode* root = builder.buildRoot();
   // The layout pass is part of the build the user waits for, so it is inside the timing.
-  KdTree tree = KdTreeAssembler::assemble(*root, std::move(input), options, "kdtree-sah", 0.0);
+  KdTree tree = KdTreeAssembler::assemble(*root, arenas, std::move(input), options, "kdtree-sah", 0.0);
   tree.stats_.buildSeconds = stopwatch.seconds();
   return tree;
 }

@@ -1,5 +1,6 @@
 // The split search of the binned kd-tree build (binned_build.cpp): a cell's references, the bins
-// one pass over them fills, and the plane those bins and an exact sweep of their window choose.
+// one pass over them fills, and the plane those bins and an exact sweep of their window choose;
+// small cells are searched exactly instead (exactSmallSplit).
 #pragma once
 
 #include <algorithm>
@@ -12,12 +13,15 @@
 
 namespace lancer::binned {
 
-// A triangle as a cell holds it: the bounds of its part inside the cell, and its build id.
-struct Ref {
+// A triangle as a cell holds it: the bounds of its part inside the cell, and its build id. 32
+// bytes, aligned: one vector load or store moves it, and the six bounds are contiguous.
+struct alignas(32) Ref {
   float lo[3];
   float hi[3];
   std::uint32_t id;
+  std::uint32_t unused;
 };
+static_assert(sizeof(Ref) == 32);
 
 // Bounds as plain arrays: Vec3's operator[] is a select chain, slow with a run-time axis.
 struct Box {
@@ -51,6 +55,11 @@ struct Cell {
   Box used;
 };
 
+// Cells of fewer references than this are split by exactSmallSplit (every bound tried, no bins):
+// most cells of a tree are this small, and for them binning's fixed costs (clearing and sweeping
+// the bins, the window) outweighed the few references.
+constexpr std::size_t kSmallCell = 24;
+
 // Most bins per axis. Counting costs the same for any number, and more bins put the planes closer
 // to the exact sweep's; small cells take fewer (binsFor): sweeping the boundaries of 256 bins on
 // three axes costs more than counting a few triangles.
@@ -74,58 +83,36 @@ struct BinGrid {
       scale[k] = width > 0.0f ? float(bins) / width : 0.0f;
     }
   }
+  // The one binning formula (BinCounts::count's vector code computes the same, to the bit).
   int binOf(int axis, float x) const {
     const int bin = static_cast<int>((x - lo[axis]) * scale[axis]);
     return std::clamp(bin, 0, bins - 1);
   }
 };
 
-// The counts one pass over a cell's references makes. Only the first `bins` of each row are used
-// and cleared (clearing all 256 for each of a million small cells would cost more than counting).
+// The counts one pass over a cell's references makes, `bins` to a row. Only 6 * bins counters are
+// used and cleared (clearing all 256 for each of a million small cells would cost more than
+// counting).
 struct BinCounts {
-  // Rows 0-2: references whose lower bound on axis 0-2 falls in the bin; rows 3-5: whose upper does.
-  std::uint32_t rows[6][kMaxBins];
+  // Row j < 3: references whose lower bound on axis j falls in the bin; row 3 + j: whose upper does.
+  int bins = 0;
+  std::uint32_t counts[6 * kMaxBins];
   std::uint32_t planarAtLo[3];  // references lying flat in the cell's lower face
   std::uint32_t planarAtHi[3];  // ... in its upper face
 
-  void clear(int bins) {
-    for (int k = 0; k < 3; ++k) {
-      std::fill_n(rows[k], bins, 0u);
-      std::fill_n(rows[k + 3], bins, 0u);
-      planarAtLo[k] = planarAtHi[k] = 0;
-    }
+  std::uint32_t* row(int j) { return counts + j * bins; }
+  const std::uint32_t* row(int j) const { return counts + j * bins; }
+
+  void clear(int binCount) {
+    bins = binCount;
+    std::fill_n(counts, 6 * bins, 0u);
+    std::fill_n(planarAtLo, 3, 0u);
+    std::fill_n(planarAtHi, 3, 0u);
   }
-  void count(const Ref* refs, std::size_t n, const BinGrid& grid, const Box& cell) {
-    // The six bounds of a reference are six contiguous floats: one vectorisable loop bins them.
-    float lo[6], scale[6];
+  void count(const Ref* refs, std::size_t n, const BinGrid& grid, const Box& cell);
+  void add(const BinCounts& other) {
+    for (int i = 0; i < 6 * bins; ++i) counts[i] += other.counts[i];
     for (int k = 0; k < 3; ++k) {
-      lo[k] = lo[k + 3] = grid.lo[k];
-      scale[k] = scale[k + 3] = grid.scale[k];
-    }
-    const int top = grid.bins - 1;
-    for (std::size_t i = 0; i < n; ++i) {
-      const Ref& r = refs[i];
-      const float* bound = r.lo;  // lo[3] then hi[3]
-      int bin[6];
-      for (int j = 0; j < 6; ++j)
-        bin[j] = std::min(std::max(static_cast<int>((bound[j] - lo[j]) * scale[j]), 0), top);
-      for (int j = 0; j < 6; ++j) ++rows[j][bin[j]];
-      if (r.lo[0] == r.hi[0] || r.lo[1] == r.hi[1] || r.lo[2] == r.hi[2]) {
-        for (int k = 0; k < 3; ++k) {
-          if (r.lo[k] == r.hi[k]) {
-            planarAtLo[k] += r.lo[k] == cell.lo[k];
-            planarAtHi[k] += r.hi[k] == cell.hi[k];
-          }
-        }
-      }
-    }
-  }
-  void add(const BinCounts& other, int bins) {
-    for (int k = 0; k < 3; ++k) {
-      for (int b = 0; b < bins; ++b) {
-        rows[k][b] += other.rows[k][b];
-        rows[k + 3][b] += other.rows[k + 3][b];
-      }
       planarAtLo[k] += other.planarAtLo[k];
       planarAtHi[k] += other.planarAtHi[k];
     }
@@ -153,13 +140,21 @@ struct WindowEvent {
 Split bestBinnedSplit(const BinCounts& counts, const BinGrid& grid, const Cell& cell, std::uint32_t n,
                       const KdBuildOptions& options);
 
-// The bounds of refs[0, n) on `axis` that fall in bins first..last, appended to `events`.
-void collectWindow(const Ref* refs, std::size_t n, const BinGrid& grid, int axis, int first, int last,
-                   std::vector<WindowEvent>& events);
+// The bounds of refs[0, n) on `axis` that fall in bins first..last, written to `events` (room for
+// 2n); returns how many.
+std::size_t collectWindow(const Ref* refs, std::size_t n, const BinGrid& grid, int axis, int first, int last,
+                          WindowEvent* events);
 
 // The best plane lies somewhere in the two bins around the chosen boundary: sweeps the window's
 // bounds (sorted here) exactly, from the counts below the window, and keeps a cheaper plane.
 void refineInWindow(Split& best, const BinCounts& counts, const Cell& cell, std::uint32_t n,
-                    std::vector<WindowEvent>& events, const KdBuildOptions& options);
+                    WindowEvent* events, std::size_t eventCount, const KdBuildOptions& options);
+
+// The plane the exact event sweep (sah_build.cpp, Wald & Havran 2006 section 4.2) would choose for
+// the n < kSmallCell references: every bound strictly inside the cell tried with the planar
+// references on either side, the empty-space bonus for a real slab, flat cells at the cell's faces;
+// the counts of each plane taken over all references at once (a few vector compares) instead of
+// from sorted events.
+Split exactSmallSplit(const Ref* refs, std::size_t n, const Box& cell, const KdBuildOptions& options);
 
 }  // namespace lancer::binned

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "lancer/util/check.hpp"
+#include "lancer/util/parallel_for.hpp"
 #include "lancer/util/thread_count.hpp"
 
 namespace lancer {
@@ -29,33 +30,73 @@ bool isSliver(const std::array<Vec3, 3>& c) {
 }  // namespace
 
 KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces,
-                             bool withCorners) {
+                             bool withCorners, int threads) {
   KdBuildInput input;
   input.faceCount = faces.size();
-  std::vector<PackedTriangle> packed = packTriangles(positions, faces);
+  // Faces in chunks (fixed by the face count, so the result is the same on any thread count):
+  // a first pass finds the slivers, a second writes the triangles where the counts before them
+  // put them, in face order, quads as (0,1,2) and (0,2,3) like packTriangles.
+  const ChunkPlan plan(faces.size(), 1 << 14);
+  std::vector<std::uint8_t> sliver;  // per triangle, in face order
+  std::vector<std::size_t> kept(plan.chunks + 1, 0), dropped(plan.chunks + 1, 0), first(plan.chunks + 1, 0);
+  auto cornersAt = [&](const MeshFace& face, int half) {
+    return std::array<Vec3, 3>{positions[face.vertex[0]], positions[face.vertex[1 + half]],
+                               positions[face.vertex[2 + half]]};
+  };
+  for (std::size_t c = 0; c < plan.chunks; ++c) {
+    std::size_t count = 0;
+    for (std::size_t f = plan.begin(c); f < plan.begin(c + 1); ++f) count += faces[f].isQuad() ? 2 : 1;
+    first[c + 1] = first[c] + count;
+  }
   // Build events keep a triangle id in 30 bits, nodes a child index in 30 bits.
-  if (packed.size() > KdNode::kMaxIndex / 4) {
-    throw std::length_error("kd-tree: " + std::to_string(packed.size()) + " triangles, at most " +
+  if (first.back() > KdNode::kMaxIndex / 4) {
+    throw std::length_error("kd-tree: " + std::to_string(first.back()) + " triangles, at most " +
                             std::to_string(KdNode::kMaxIndex / 4) + " supported");
   }
-  input.triangles.reserve(packed.size());
-  if (withCorners) input.corners.reserve(packed.size());
-  std::size_t next = 0;
-  for (const MeshFace& face : faces) {
-    // Same corner order as packTriangles: (0,1,2) and, for a quad, (0,2,3).
-    const int count = face.isQuad() ? 2 : 1;
-    for (int half = 0; half < count; ++half, ++next) {
-      const std::array<Vec3, 3> corners = {positions[face.vertex[0]], positions[face.vertex[1 + half]],
-                                           positions[face.vertex[2 + half]]};
-      if (isSliver(corners)) {
-        input.slivers.push_back(packed[next]);
-        continue;
+  sliver.resize(first.back());
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    std::size_t next = first[chunk], slivers = 0;
+    for (std::size_t f = begin; f < end; ++f) {
+      const int count = faces[f].isQuad() ? 2 : 1;
+      for (int half = 0; half < count; ++half, ++next) {
+        sliver[next] = isSliver(cornersAt(faces[f], half));
+        slivers += sliver[next];
       }
-      input.triangles.push_back(packed[next]);
-      if (withCorners) input.corners.push_back(corners);
-      for (const Vec3& c : corners) input.bounds.extend(c);
     }
+    dropped[chunk + 1] = slivers;
+    kept[chunk + 1] = next - first[chunk] - slivers;
+  });
+  for (std::size_t c = 0; c < plan.chunks; ++c) {
+    kept[c + 1] += kept[c];
+    dropped[c + 1] += dropped[c];
   }
+  // Every element is overwritten below.
+  input.triangles.resize(kept.back());
+  if (withCorners) input.corners.resize(kept.back());
+  input.slivers.resize(dropped.back());
+  std::vector<Aabb> chunkBounds(plan.chunks);
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    std::size_t next = first[chunk], tree = kept[chunk], out = dropped[chunk];
+    Aabb bounds;
+    for (std::size_t f = begin; f < end; ++f) {
+      const MeshFace& face = faces[f];
+      const int count = face.isQuad() ? 2 : 1;
+      for (int half = 0; half < count; ++half, ++next) {
+        const std::array<Vec3, 3> corners = cornersAt(face, half);
+        const PackedTriangle packed{corners[0], corners[1], corners[2], static_cast<std::uint32_t>(f)};
+        if (sliver[next]) {
+          input.slivers[out++] = packed;
+          continue;
+        }
+        if (withCorners) input.corners[tree] = corners;
+        input.triangles[tree++] = packed;
+        for (const Vec3& c : corners) bounds.extend(c);
+      }
+    }
+    chunkBounds[chunk] = bounds;
+  });
+  // Chunk by chunk in order: the first of equal extremes (+0 or -0) wins, as in one pass.
+  for (const Aabb& bounds : chunkBounds) input.bounds.extend(bounds);
   return input;
 }
 
@@ -72,11 +113,16 @@ int resolveThreads(const KdBuildOptions& options) { return resolveThreadCount(op
 
 BuildNode* BuildArena::leaf(std::span<const std::uint32_t> triangles) {
   BuildNode& node = nodes.emplace_back();
+  setLeaf(node, triangles);
+  return &node;
+}
+
+void BuildArena::setLeaf(BuildNode& node, std::span<const std::uint32_t> triangles) {
+  node.axis = -1;
   node.arena = this;
   node.first = static_cast<std::uint32_t>(leafTriangles.size());
   node.count = static_cast<std::uint32_t>(triangles.size());
   leafTriangles.insert(leafTriangles.end(), triangles.begin(), triangles.end());
-  return &node;
 }
 
 BuildNode* BuildArena::inner(int axis, float split, BuildNode* left, BuildNode* right) {
@@ -90,77 +136,61 @@ BuildNode* BuildArena::inner(int axis, float split, BuildNode* left, BuildNode* 
 
 namespace {
 
-struct Layout {
-  // Counting pass: the same walk allocating nothing, only adding up the words, so that the stream
-  // is allocated once at its exact size (reserving a bound and shrinking after kept both copies
-  // alive at the build's memory peak: 72 + 60 bytes per triangle).
-  bool counting = false;
-  std::size_t counted = 0;
-  std::vector<KdNode> words;                // the tree's layout_ stream
+// The planning walk: depth first from the root, leaf children first (their lists and triangles
+// land right after the pair), giving each node its word, each leaf of 2+ triangles its list and
+// each triangle its words at the first leaf that holds it; and the stats. It only counts: the
+// stream is allocated once at its exact size, then written by the passes below.
+// (Grouping a pair with its children's pairs in 64-byte lines, so a ray descends two levels per
+// cache miss, measured no faster on the 1M bench bracket, within noise, so it is not done.)
+struct LayoutPlan {
+  std::size_t size = 0;
   std::vector<std::uint32_t> triangleWord;  // build triangle id -> word offset, or kUnset
-  const std::vector<PackedTriangle>* triangles = nullptr;
+  // Whether a triangle is placed, 1 bit each: the walk's check stays in the cache, and its writes
+  // of triangleWord (read only by the parallel passes) do not wait for memory.
+  std::vector<std::uint64_t> placed;
   AccelStats stats;
   double rootArea = 0;
   float traversalCost = 0, intersectionCost = 0;
 
   static constexpr std::uint32_t kUnset = 0xFFFFFFFFu;
 
-  std::size_t size() const { return counting ? counted : words.size(); }
-
   std::uint32_t allocate(std::size_t count) {
-    const std::size_t at = size();
+    const std::size_t at = size;
     if (at + count > KdNode::kMaxIndex) {
       throw std::length_error("kd-tree: layout over " + std::to_string(KdNode::kMaxIndex) + " words");
     }
-    if (counting)
-      counted = at + count;
-    else
-      words.resize(at + count);
+    size = at + count;
     return static_cast<std::uint32_t>(at);
-  }
-
-  void set(std::uint32_t index, KdNode node) {
-    if (!counting) words[index] = node;
   }
 
   // Child pairs start at even words, so a pair never straddles a 16-byte block (nor a cache line).
   std::uint32_t allocatePair() {
-    if (size() % 2) allocate(1);
+    if (size % 2) allocate(1);
     return allocate(2);
   }
 
-  // The triangle's offset, writing it at the end of the stream the first time a leaf uses it.
-  std::uint32_t placeTriangle(std::uint32_t triangle) {
-    if (triangleWord[triangle] == kUnset) {
-      const std::uint32_t at = allocate(KdTree::kTriangleWords);
-      if (!counting)
-        std::memcpy(static_cast<void*>(words.data() + at), &(*triangles)[triangle], sizeof(PackedTriangle));
-      triangleWord[triangle] = at;
-    }
-    return triangleWord[triangle];
+  void placeTriangle(std::uint32_t triangle) {
+    std::uint64_t& bits = placed[triangle >> 6];
+    const std::uint64_t bit = std::uint64_t(1) << (triangle & 63);
+    if (bits & bit) return;
+    bits |= bit;
+    triangleWord[triangle] = allocate(KdTree::kTriangleWords);
   }
 
-  void placeLeaf(std::uint32_t index, const BuildNode& node) {
+  void placeLeaf(BuildNode& node) {
     const std::uint32_t* tris = node.arena->leafTriangles.data() + node.first;
     if (node.count == 0) {
       ++stats.emptyLeaves;
-      set(index, KdNode::leaf(0, 0));
     } else if (node.count == 1) {
-      const std::uint32_t offset = placeTriangle(tris[0]);
-      set(index, KdNode::leaf(offset, 1));
+      placeTriangle(tris[0]);
     } else {
-      const std::uint32_t list = allocate((node.count + 1) / 2);
-      for (std::uint32_t i = 0; i < node.count; ++i) {
-        const std::uint32_t offset = placeTriangle(tris[i]);  // may grow `words`: index afresh
-        if (!counting)
-          std::memcpy(reinterpret_cast<char*>(words.data() + list) + i * sizeof(std::uint32_t), &offset,
-                      sizeof offset);
-      }
-      set(index, KdNode::leaf(list, node.count));
+      node.list = allocate((node.count + 1) / 2);
+      for (std::uint32_t i = 0; i < node.count; ++i) placeTriangle(tris[i]);
     }
   }
 
-  void place(std::uint32_t index, const BuildNode& node, const Aabb& box, std::uint64_t depth) {
+  void place(std::uint32_t index, BuildNode& node, const Aabb& box, std::uint64_t depth) {
+    node.word = index;
     ++stats.nodes;
     const double area = rootArea > 0 ? double(box.surfaceArea()) / rootArea : 0.0;
     if (node.axis < 0) {
@@ -168,26 +198,43 @@ struct Layout {
       stats.depth = std::max(stats.depth, depth);
       stats.triangleReferences += node.count;
       stats.sahCost += intersectionCost * double(node.count) * area;
-      placeLeaf(index, node);
+      placeLeaf(node);
       return;
     }
     stats.sahCost += traversalCost * area;
-    // Depth-first, leaf children first: their lists and triangles land right after the pair.
-    // (Grouping a pair with its children's pairs in 64-byte lines, so a ray descends two levels per
-    // cache miss, measured no faster on the 1M bracket, within noise, so it is not done.)
     const std::uint32_t children = allocatePair();
-    set(index, KdNode::inner(node.axis, node.split, children));
     Aabb childBox[2] = {box, box};
     childBox[0].upper[node.axis] = node.split;
     childBox[1].lower[node.axis] = node.split;
     for (int leafPass : {1, 0}) {
       for (int k = 0; k < 2; ++k) {
         if ((node.child[k]->axis < 0) == bool(leafPass))
-          place(children + k, *node.child[k], childBox[k], depth + 1);
+          place(children + std::uint32_t(k), *node.child[k], childBox[k], depth + 1);
       }
     }
   }
 };
+
+// The words of one placed node (and a leaf's list).
+void writeNode(const BuildNode& node, const std::vector<std::uint32_t>& triangleWord, KdNode* words) {
+  if (node.axis >= 0) {
+    words[node.word] = KdNode::inner(node.axis, node.split, node.child[0]->word);
+    return;
+  }
+  const std::uint32_t* tris = node.arena->leafTriangles.data() + node.first;
+  if (node.count == 0) {
+    words[node.word] = KdNode::leaf(0, 0);
+  } else if (node.count == 1) {
+    words[node.word] = KdNode::leaf(triangleWord[tris[0]], 1);
+  } else {
+    auto* list = reinterpret_cast<char*>(words + node.list);
+    for (std::uint32_t i = 0; i < node.count; ++i) {
+      const std::uint32_t offset = triangleWord[tris[i]];
+      std::memcpy(list + i * sizeof(std::uint32_t), &offset, sizeof offset);
+    }
+    words[node.word] = KdNode::leaf(node.list, node.count);
+  }
+}
 
 // Pads the scene box so that rays clipped to it keep hits that rounding puts on its faces.
 Aabb paddedBounds(const Aabb& box) {
@@ -203,36 +250,59 @@ Aabb paddedBounds(const Aabb& box) {
 
 }  // namespace
 
-KdTree KdTreeAssembler::assemble(const BuildNode& root, KdBuildInput&& input, const KdBuildOptions& options,
-                                 std::string kind, double buildSeconds) {
+KdTree KdTreeAssembler::assemble(BuildNode& root, BuildArenas& arenas, KdBuildInput&& input,
+                                 const KdBuildOptions& options, std::string kind, double buildSeconds) {
   std::vector<std::array<Vec3, 3>>().swap(input.corners);  // only the builders clip them
-  Layout layout;
-  layout.triangles = &input.triangles;
-  layout.rootArea = input.bounds.surfaceArea();
-  layout.traversalCost = options.traversalCost;
-  layout.intersectionCost = options.intersectionCost;
-  for (const bool counting : {true, false}) {
-    layout.counting = counting;
-    layout.stats = {};
-    layout.triangleWord.assign(input.triangles.size(), Layout::kUnset);
-    if (!counting) layout.words.reserve(layout.counted);  // the exact size: one allocation
-    // Root alone at 0, a pad at 1, then sibling pairs at even words.
-    layout.allocate(2);
-    layout.set(1, KdNode::leaf(0, 0));
-    layout.place(0, root, input.bounds, 0);
+  LayoutPlan plan;
+  plan.rootArea = input.bounds.surfaceArea();
+  plan.traversalCost = options.traversalCost;
+  plan.intersectionCost = options.intersectionCost;
+  plan.triangleWord.assign(input.triangles.size(), LayoutPlan::kUnset);
+  plan.placed.assign((input.triangles.size() + 63) / 64, 0);
+  // Root alone at 0, a pad at 1, then sibling pairs at even words.
+  plan.allocate(2);
+  plan.place(0, root, input.bounds, 0);
+
+  // One allocation at the exact size; unwritten words (the pad, pads before pairs, the second
+  // half of an odd list's last word) keep KdNode's default, an empty leaf.
+  std::vector<KdNode> words(plan.size);
+  KdNode* out = words.data();
+  const int threads = resolveThreads(options);
+  // Nodes, arena by arena in chunks (a node the walk did not reach is skipped), then triangles.
+  struct Range {
+    const std::deque<BuildNode>* nodes;
+    std::size_t begin, end;
+  };
+  std::vector<Range> ranges;
+  constexpr std::size_t kNodesPerRange = 1 << 14;
+  for (const BuildArena& arena : arenas.all()) {
+    for (std::size_t at = 0; at < arena.nodes.size(); at += kNodesPerRange)
+      ranges.push_back({&arena.nodes, at, std::min(arena.nodes.size(), at + kNodesPerRange)});
   }
-  LANCER_DCHECK(layout.words.size(), ==, layout.counted);
-  std::vector<std::uint32_t>().swap(layout.triangleWord);
+  parallelFor(ranges.size(), threads, 1, [&](std::size_t r) {
+    const Range& range = ranges[r];
+    for (std::size_t i = range.begin; i < range.end; ++i) {
+      const BuildNode& node = (*range.nodes)[i];
+      if (node.word != BuildNode::kUnplaced) writeNode(node, plan.triangleWord, out);
+    }
+  });
+  const PackedTriangle* triangles = input.triangles.data();
+  parallelFor(input.triangles.size(), threads, 1 << 15, [&](std::size_t t) {
+    const std::uint32_t at = plan.triangleWord[t];
+    if (at != LayoutPlan::kUnset) std::memcpy(static_cast<void*>(out + at), triangles + t, sizeof(PackedTriangle));
+  });
+  std::vector<std::uint32_t>().swap(plan.triangleWord);
+  std::vector<std::uint64_t>().swap(plan.placed);
 
   KdTree tree;
-  tree.layout_ = std::move(layout.words);
+  tree.layout_ = std::move(words);
   tree.slivers_ = std::move(input.slivers);
   tree.bounds_ = paddedBounds(input.bounds);
   if (!input.bounds.empty())
     tree.magnitude_ = std::max(maxComponent(abs(input.bounds.lower)), maxComponent(abs(input.bounds.upper)));
 
   AccelStats& stats = tree.stats_;
-  stats = layout.stats;
+  stats = plan.stats;
   stats.kind = std::move(kind);
   stats.faces = input.faceCount;
   stats.triangles = input.triangles.size() + tree.slivers_.size();

@@ -24,8 +24,9 @@ struct KdBuildInput {
   Aabb bounds;                          // of the tree triangles
   std::uint64_t faceCount = 0;
 };
+// On up to `threads` threads (the result does not depend on how many).
 KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces,
-                             bool withCorners = false);
+                             bool withCorners = false, int threads = 1);
 
 inline std::array<Vec3, 3> cornersOf(const PackedTriangle& triangle) {
   return {triangle.v0, triangle.v1, triangle.v2};
@@ -45,6 +46,11 @@ struct BuildNode {
   const BuildArena* arena = nullptr;  // leaf: holder of its triangle ids
   std::uint32_t first = 0;            // leaf: range in arena->leafTriangles
   std::uint32_t count = 0;
+  // Set by the assembler's planning walk: the node's word in the layout (kUnplaced for a node the
+  // walk never reached, such as a subtree root copied into its parent's slot), and a leaf's list.
+  std::uint32_t word = kUnplaced;
+  std::uint32_t list = 0;
+  static constexpr std::uint32_t kUnplaced = 0xFFFFFFFFu;
 };
 
 // One build thread's output; deque keeps node addresses stable while it grows.
@@ -54,6 +60,10 @@ struct BuildArena {
 
   BuildNode* leaf(std::span<const std::uint32_t> triangles);
   BuildNode* inner(int axis, float split, BuildNode* left, BuildNode* right);
+  // The same, filling a node allocated beforehand (in any arena): a builder that allocates a
+  // cell's node when it enters the cell lays the nodes out in about the assembler's walk order.
+  BuildNode* node() { return &nodes.emplace_back(); }
+  void setLeaf(BuildNode& node, std::span<const std::uint32_t> triangles);
 };
 
 // Arenas for any number of threads; create() is the only call that needs the lock.
@@ -63,6 +73,8 @@ class BuildArenas {
     std::lock_guard lock(mutex_);
     return arenas_.emplace_back();
   }
+  // For the assembler, once the build is done.
+  std::deque<BuildArena>& all() { return arenas_; }
 
  private:
   std::mutex mutex_;
@@ -70,11 +82,13 @@ class BuildArenas {
 };
 
 // Lays the temporary tree out as one stream (KdTree::layout_): sibling-paired 8-byte nodes, each
-// leaf's list and triangles written after the pair that holds it, and fills stats.
+// leaf's list and triangles written after the pair that holds it, and fills stats. A serial walk
+// places every node, list and triangle (reading no triangle); the words are then written on
+// options.threads threads, node by node of the arenas and triangle by triangle.
 class KdTreeAssembler {
  public:
-  static KdTree assemble(const BuildNode& root, KdBuildInput&& input, const KdBuildOptions& options,
-                         std::string kind, double buildSeconds);
+  static KdTree assemble(BuildNode& root, BuildArenas& arenas, KdBuildInput&& input,
+                         const KdBuildOptions& options, std::string kind, double buildSeconds);
 };
 
 }  // namespace lancer

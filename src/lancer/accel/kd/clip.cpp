@@ -1,6 +1,9 @@
 #include "lancer/accel/kd/clip.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -44,17 +47,33 @@ void clipAgainst(const Polygon& in, int axis, double plane, double sign, Polygon
   }
 }
 
+// The float next to a finite f towards -inf / +inf: std::nextafter's result, without its call
+// (the clippers round a dozen bounds a triangle, about half of them the wrong way first).
+float nextDown(float f) {
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  return f > 0.0f ? std::bit_cast<float>(bits - 1)
+         : f < 0.0f ? std::bit_cast<float>(bits + 1)
+                    : -std::numeric_limits<float>::denorm_min();
+}
+
+float nextUp(float f) {
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  return f > 0.0f ? std::bit_cast<float>(bits + 1)
+         : f < 0.0f ? std::bit_cast<float>(bits - 1)
+                    : std::numeric_limits<float>::denorm_min();
+}
+
 // Directed rounding to float. Exact values (corners, points on a cell's planes) stay exact: a
 // bound one ulp past a shared vertex would make every split through that vertex duplicate the
 // triangle into the neighbouring cell.
 float roundDown(double value) {
   const auto f = static_cast<float>(value);
-  return double(f) > value ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+  return double(f) > value ? nextDown(f) : f;
 }
 
 float roundUp(double value) {
   const auto f = static_cast<float>(value);
-  return double(f) < value ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  return double(f) < value ? nextUp(f) : f;
 }
 
 }  // namespace
@@ -141,5 +160,82 @@ void splitTriangleBounds(const std::array<Vec3, 3>& corners, int axis, float pla
     }
   }
 }
+
+#if defined(__AVX2__)
+namespace {
+
+// A mask of four doubles as a mask of four floats.
+__m128 wrongWay(__m256d mask) {
+  const __m256i low = _mm256_permutevar8x32_epi32(_mm256_castpd_si256(mask), _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7));
+  return _mm_castsi128_ps(_mm256_castsi256_si128(low));
+}
+
+// roundDown / roundUp of four doubles (the conversion rounds to nearest, as static_cast does).
+__m128 roundDown4(__m256d value) {
+  const __m128 f = _mm256_cvtpd_ps(value);
+  const __m128 wrong = wrongWay(_mm256_cmp_pd(_mm256_cvtps_pd(f), value, _CMP_GT_OQ));
+  if (_mm_movemask_ps(wrong) == 0) return f;
+  const __m128i bits = _mm_castps_si128(f);
+  const __m128 zero = _mm_setzero_ps();
+  __m128i down = _mm_set1_epi32(static_cast<int>(0x80000001u));  // -denorm_min, below +-0
+  down = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(down), _mm_castsi128_ps(_mm_sub_epi32(bits, _mm_set1_epi32(1))),
+                                        _mm_cmpgt_ps(f, zero)));
+  down = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(down), _mm_castsi128_ps(_mm_add_epi32(bits, _mm_set1_epi32(1))),
+                                        _mm_cmplt_ps(f, zero)));
+  return _mm_blendv_ps(f, _mm_castsi128_ps(down), wrong);
+}
+
+__m128 roundUp4(__m256d value) {
+  const __m128 f = _mm256_cvtpd_ps(value);
+  const __m128 wrong = wrongWay(_mm256_cmp_pd(_mm256_cvtps_pd(f), value, _CMP_LT_OQ));
+  if (_mm_movemask_ps(wrong) == 0) return f;
+  const __m128i bits = _mm_castps_si128(f);
+  const __m128 zero = _mm_setzero_ps();
+  __m128i up = _mm_set1_epi32(1);  // denorm_min, above +-0
+  up = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(up), _mm_castsi128_ps(_mm_add_epi32(bits, _mm_set1_epi32(1))),
+                                      _mm_cmpgt_ps(f, zero)));
+  up = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(up), _mm_castsi128_ps(_mm_sub_epi32(bits, _mm_set1_epi32(1))),
+                                      _mm_cmplt_ps(f, zero)));
+  return _mm_blendv_ps(f, _mm_castsi128_ps(up), wrong);
+}
+
+}  // namespace
+
+void splitTriangleBounds(const PackedTriangle& triangle, int axis, float plane, __m128 lower[2], __m128 upper[2]) {
+  static_assert(sizeof(Vec3) == 3 * sizeof(float) && offsetof(PackedTriangle, v1) == 12 &&
+                offsetof(PackedTriangle, v2) == 24 && sizeof(PackedTriangle) >= 40);
+  const float* corner = &triangle.v0.x;  // v0, v1, v2 contiguous; lane 3 of each load is ignored
+  const __m256d v[3] = {_mm256_cvtps_pd(_mm_loadu_ps(corner)), _mm256_cvtps_pd(_mm_loadu_ps(corner + 3)),
+                        _mm256_cvtps_pd(_mm_loadu_ps(corner + 6))};
+  double d[3];
+  for (int i = 0; i < 3; ++i) d[i] = double(corner[3 * i + axis]) - double(plane);  // exact
+  const __m256d huge = _mm256_set1_pd(std::numeric_limits<double>::infinity());
+  __m256d lo[2] = {huge, huge}, hi[2] = {-huge, -huge};
+  // min(x, lo) / max(x, hi) in this operand order are std::min(lo, x) / std::max(hi, x).
+  auto extend = [&](int side, __m256d p) {
+    lo[side] = _mm256_min_pd(p, lo[side]);
+    hi[side] = _mm256_max_pd(p, hi[side]);
+  };
+  alignas(32) static constexpr std::int64_t kAxisLane[3][4] = {{-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, -1, 0}};
+  const __m256d onAxis = _mm256_load_pd(reinterpret_cast<const double*>(kAxisLane[axis]));
+  const __m256d planeD = _mm256_set1_pd(double(plane));
+  for (int i = 0; i < 3; ++i) {
+    if (d[i] <= 0) extend(0, v[i]);
+    if (d[i] >= 0) extend(1, v[i]);
+    const int j = (i + 1) % 3;
+    if ((d[i] < 0 && d[j] > 0) || (d[i] > 0 && d[j] < 0)) {
+      const __m256d s = _mm256_set1_pd(d[i] / (d[i] - d[j]));
+      __m256d p = _mm256_fmadd_pd(_mm256_sub_pd(v[j], v[i]), s, v[i]);
+      p = _mm256_blendv_pd(p, planeD, onAxis);  // exactly on the plane
+      extend(0, p);
+      extend(1, p);
+    }
+  }
+  for (int side = 0; side < 2; ++side) {
+    lower[side] = roundDown4(lo[side]);
+    upper[side] = roundUp4(hi[side]);
+  }
+}
+#endif
 
 }  // namespace lancer

@@ -4,7 +4,12 @@
 
 #include <array>
 
+#include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/aabb.hpp"
+
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
 
 namespace lancer {
 
@@ -19,5 +24,12 @@ Aabb clippedTriangleBounds(const std::array<Vec3, 3>& corners, const Aabb& box);
 // gives a box as tight as clipping to the cell for the usual straddler at a fraction of the cost.
 // Same rounding as clippedTriangleBounds (outward, exact values exact).
 void splitTriangleBounds(const std::array<Vec3, 3>& corners, int axis, float plane, Aabb& below, Aabb& above);
+
+#if defined(__AVX2__)
+// The same bounds, to the bit, in vectors (lanes x, y, z, then a lane to ignore): lower[0] and
+// upper[0] below the plane, lower[1] and upper[1] above; an empty side has lower +inf, upper -inf.
+// Half the cost: the binned build clips a million and a half straddlers on the 1M bench bracket.
+void splitTriangleBounds(const PackedTriangle& triangle, int axis, float plane, __m128 lower[2], __m128 upper[2]);
+#endif
 
 }  // namespace lancer

@@ -86,8 +86,8 @@ KdTree KdTree::buildMedian(std::span<const Vec3> positions, std::span<const Mesh
   KdBuildInput input = gatherTriangles(positions, faces);
   BuildArenas arenas;
   MedianBuilder builder(input, options, arenas);
-  const BuildNode* root = builder.buildRoot(input.bounds);
-  KdTree tree = KdTreeAssembler::assemble(*root, std::move(input), options, "kdtree-median", 0.0);
+  BuildNode* root = builder.buildRoot(input.bounds);
+  KdTree tree = KdTreeAssembler::assemble(*root, arenas, std::move(input), options, "kdtree-median", 0.0);
   tree.stats_.buildSeconds = stopwatch.seconds();
   return tree;
 }

@@ -431,9 +431,9 @@ KdTree KdTree::buildSahExact(std::span<const Vec3> positions, std::span<const Me
   KdBuildInput input = gatherTriangles(positions, faces, /*withCorners=*/true);
   BuildArenas arenas;
   SahBuilder builder(input, options, arenas);
-  const BuildNode* root = builder.buildRoot();
+  BuildNode* root = builder.buildRoot();
   // The layout pass is part of the build the user waits for, so it is inside the timing.
-  KdTree tree = KdTreeAssembler::assemble(*root, std::move(input), options, "kdtree-sah-exact", 0.0);
+  KdTree tree = KdTreeAssembler::assemble(*root, arenas, std::move(input), options, "kdtree-sah-exact", 0.0);
   tree.stats_.buildSeconds = stopwatch.seconds();
   return tree;
 }
