@@ -109,13 +109,15 @@ int main(int argc, char** argv) {
   }
   for (const Run& run : runs) {
     const AccelStats& s = run.stats;
-    std::printf("%-17s threads %d: wall %.3f s (min %.3f)  cpu %.3f s (min %.3f)  SAH %.2f  nodes %llu  leaves %llu  refs %llu  "
-                "depth %llu  bytes/tri %.1f  hash %016llx\n",
-                run.name.c_str(), run.threads, median(run.wall), *std::min_element(run.wall.begin(), run.wall.end()),
-                median(run.cpu), *std::min_element(run.cpu.begin(), run.cpu.end()), s.sahCost,
-                static_cast<unsigned long long>(s.nodes), static_cast<unsigned long long>(s.leaves),
-                static_cast<unsigned long long>(s.triangleReferences), static_cast<unsigned long long>(s.depth),
-                s.bytesPerTriangle(), static_cast<unsigned long long>(run.hash));
+    std::printf(
+        "%-17s threads %d: wall %.3f s (min %.3f)  cpu %.3f s (min %.3f)  SAH %.2f  nodes %llu  leaves %llu  "
+        "refs %llu  "
+        "depth %llu  bytes/tri %.1f  hash %016llx\n",
+        run.name.c_str(), run.threads, median(run.wall), *std::min_element(run.wall.begin(), run.wall.end()),
+        median(run.cpu), *std::min_element(run.cpu.begin(), run.cpu.end()), s.sahCost,
+        static_cast<unsigned long long>(s.nodes), static_cast<unsigned long long>(s.leaves),
+        static_cast<unsigned long long>(s.triangleReferences), static_cast<unsigned long long>(s.depth),
+        s.bytesPerTriangle(), static_cast<unsigned long long>(run.hash));
   }
   if (!trace) return 0;
   const Aabb box = scene.geometry.bounds;
@@ -138,7 +140,8 @@ int main(int argc, char** argv) {
             hits += tree.intersect(set->rays[i], set->tMin, set->tMax[i], hit);
           }
         }
-        seconds[name + "/" + kind].push_back(cpuSeconds(CLOCK_THREAD_CPUTIME_ID) - start + 0.0 * double(hits));
+        seconds[name + "/" + kind].push_back(cpuSeconds(CLOCK_THREAD_CPUTIME_ID) - start +
+                                             0.0 * double(hits));
       }
     }
   }

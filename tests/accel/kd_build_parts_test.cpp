@@ -124,7 +124,8 @@ float referenceSmallCost(const std::vector<binned::Ref>& refs, const binned::Box
         const bool wideLeft = p - lo >= o.emptySpaceMinFraction * (hi - lo);
         const bool wideRight = hi - p >= o.emptySpaceMinFraction * (hi - lo);
         auto cost = [&](std::uint32_t cl, std::uint32_t cr) {
-          const float c = o.traversalCost + o.intersectionCost * (side(p - lo) * float(cl) + side(hi - p) * float(cr));
+          const float c =
+              o.traversalCost + o.intersectionCost * (side(p - lo) * float(cl) + side(hi - p) * float(cr));
           return ((cl == 0 && wideLeft) || (cr == 0 && wideRight)) ? c * o.emptySpaceFactor : c;
         };
         best = std::min({best, cost(nl + np, nr), cost(nl, nr + np)});

@@ -19,8 +19,8 @@
 #include <future>
 #include <limits>
 #include <memory>
-#include <utility>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "lancer/accel/kd/binned_split.hpp"
@@ -525,8 +525,8 @@ class BinnedBuilder {
 
   // The cell whose references are scratch.stack[begin, begin + n) (the stack past them is free),
   // its subtree made in `node`.
-  void build(std::size_t begin, std::size_t n, const Cell& cell, int depth, BuildArena& arena, Scratch& scratch,
-             BuildNode& node) {
+  void build(std::size_t begin, std::size_t n, const Cell& cell, int depth, BuildArena& arena,
+             Scratch& scratch, BuildNode& node) {
     if (n < kSmallCell) return buildSmall(begin, n, cell.box, depth, arena, scratch, node);
     if (leafByCount(n, depth)) return makeLeaf(scratch.stack.data() + begin, n, arena, scratch, node);
     const Split split = chooseSplit(scratch.stack.data() + begin, n, cell, scratch);

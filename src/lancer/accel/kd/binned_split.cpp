@@ -42,10 +42,12 @@ void BinCounts::count(const Ref* refs, std::size_t n, const BinGrid& grid, const
 #if defined(__AVX2__)
   // The six bounds of a reference are lanes 0-5 of one vector: one subtract, multiply and clamp
   // bins all six (the same operations, so the same bins, as BinGrid::binOf).
-  const __m256 lo = _mm256_setr_ps(grid.lo[0], grid.lo[1], grid.lo[2], grid.lo[0], grid.lo[1], grid.lo[2], 0, 0);
-  const __m256 scale =
-      _mm256_setr_ps(grid.scale[0], grid.scale[1], grid.scale[2], grid.scale[0], grid.scale[1], grid.scale[2], 0, 0);
-  const __m256 faces = _mm256_setr_ps(cell.lo[0], cell.lo[1], cell.lo[2], cell.hi[0], cell.hi[1], cell.hi[2], 0, 0);
+  const __m256 lo =
+      _mm256_setr_ps(grid.lo[0], grid.lo[1], grid.lo[2], grid.lo[0], grid.lo[1], grid.lo[2], 0, 0);
+  const __m256 scale = _mm256_setr_ps(grid.scale[0], grid.scale[1], grid.scale[2], grid.scale[0],
+                                      grid.scale[1], grid.scale[2], 0, 0);
+  const __m256 faces =
+      _mm256_setr_ps(cell.lo[0], cell.lo[1], cell.lo[2], cell.hi[0], cell.hi[1], cell.hi[2], 0, 0);
   const __m256i zero = _mm256_setzero_si256(), last = _mm256_set1_epi32(top);
   const __m256i rowStart = _mm256_setr_epi32(0, bins, 2 * bins, 3 * bins, 4 * bins, 5 * bins, 0, 0);
   const __m256i swapHalves = _mm256_setr_epi32(3, 4, 5, 0, 1, 2, 6, 7);
@@ -304,9 +306,9 @@ struct SmallAxis {
       const __m256 wideLeft = _mm256_cmp_ps(below, slab, _CMP_GE_OQ);
       const __m256 wideRight = _mm256_cmp_ps(above, slab, _CMP_GE_OQ);
       auto cost = [&](__m256i cl, __m256i cr) {
-        const __m256 c = _mm256_add_ps(
-            vkt, _mm256_mul_ps(vki, _mm256_add_ps(_mm256_mul_ps(pl, _mm256_cvtepi32_ps(cl)),
-                                                  _mm256_mul_ps(pr, _mm256_cvtepi32_ps(cr)))));
+        const __m256 c =
+            _mm256_add_ps(vkt, _mm256_mul_ps(vki, _mm256_add_ps(_mm256_mul_ps(pl, _mm256_cvtepi32_ps(cl)),
+                                                                _mm256_mul_ps(pr, _mm256_cvtepi32_ps(cr)))));
         const __m256 empty =
             _mm256_or_ps(_mm256_and_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(cl, zero)), wideLeft),
                          _mm256_and_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(cr, zero)), wideRight));

@@ -289,7 +289,8 @@ KdTree KdTreeAssembler::assemble(BuildNode& root, BuildArenas& arenas, KdBuildIn
   const PackedTriangle* triangles = input.triangles.data();
   parallelFor(input.triangles.size(), threads, 1 << 15, [&](std::size_t t) {
     const std::uint32_t at = plan.triangleWord[t];
-    if (at != LayoutPlan::kUnset) std::memcpy(static_cast<void*>(out + at), triangles + t, sizeof(PackedTriangle));
+    if (at != LayoutPlan::kUnset)
+      std::memcpy(static_cast<void*>(out + at), triangles + t, sizeof(PackedTriangle));
   });
   std::vector<std::uint32_t>().swap(plan.triangleWord);
   std::vector<std::uint64_t>().swap(plan.placed);

@@ -1,10 +1,10 @@
 #include "lancer/accel/kd/clip.hpp"
 
 #include <algorithm>
-#include <cstddef>
 #include <bit>
-#include <cstdint>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <utility>
 
@@ -51,14 +51,14 @@ void clipAgainst(const Polygon& in, int axis, double plane, double sign, Polygon
 // (the clippers round a dozen bounds a triangle, about half of them the wrong way first).
 float nextDown(float f) {
   const auto bits = std::bit_cast<std::uint32_t>(f);
-  return f > 0.0f ? std::bit_cast<float>(bits - 1)
+  return f > 0.0f   ? std::bit_cast<float>(bits - 1)
          : f < 0.0f ? std::bit_cast<float>(bits + 1)
                     : -std::numeric_limits<float>::denorm_min();
 }
 
 float nextUp(float f) {
   const auto bits = std::bit_cast<std::uint32_t>(f);
-  return f > 0.0f ? std::bit_cast<float>(bits + 1)
+  return f > 0.0f   ? std::bit_cast<float>(bits + 1)
          : f < 0.0f ? std::bit_cast<float>(bits - 1)
                     : std::numeric_limits<float>::denorm_min();
 }
@@ -166,7 +166,8 @@ namespace {
 
 // A mask of four doubles as a mask of four floats.
 __m128 wrongWay(__m256d mask) {
-  const __m256i low = _mm256_permutevar8x32_epi32(_mm256_castpd_si256(mask), _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7));
+  const __m256i low =
+      _mm256_permutevar8x32_epi32(_mm256_castpd_si256(mask), _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7));
   return _mm_castsi128_ps(_mm256_castsi256_si128(low));
 }
 
@@ -178,9 +179,11 @@ __m128 roundDown4(__m256d value) {
   const __m128i bits = _mm_castps_si128(f);
   const __m128 zero = _mm_setzero_ps();
   __m128i down = _mm_set1_epi32(static_cast<int>(0x80000001u));  // -denorm_min, below +-0
-  down = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(down), _mm_castsi128_ps(_mm_sub_epi32(bits, _mm_set1_epi32(1))),
+  down = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(down),
+                                        _mm_castsi128_ps(_mm_sub_epi32(bits, _mm_set1_epi32(1))),
                                         _mm_cmpgt_ps(f, zero)));
-  down = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(down), _mm_castsi128_ps(_mm_add_epi32(bits, _mm_set1_epi32(1))),
+  down = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(down),
+                                        _mm_castsi128_ps(_mm_add_epi32(bits, _mm_set1_epi32(1))),
                                         _mm_cmplt_ps(f, zero)));
   return _mm_blendv_ps(f, _mm_castsi128_ps(down), wrong);
 }
@@ -192,16 +195,17 @@ __m128 roundUp4(__m256d value) {
   const __m128i bits = _mm_castps_si128(f);
   const __m128 zero = _mm_setzero_ps();
   __m128i up = _mm_set1_epi32(1);  // denorm_min, above +-0
-  up = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(up), _mm_castsi128_ps(_mm_add_epi32(bits, _mm_set1_epi32(1))),
-                                      _mm_cmpgt_ps(f, zero)));
-  up = _mm_castps_si128(_mm_blendv_ps(_mm_castsi128_ps(up), _mm_castsi128_ps(_mm_sub_epi32(bits, _mm_set1_epi32(1))),
-                                      _mm_cmplt_ps(f, zero)));
+  up = _mm_castps_si128(_mm_blendv_ps(
+      _mm_castsi128_ps(up), _mm_castsi128_ps(_mm_add_epi32(bits, _mm_set1_epi32(1))), _mm_cmpgt_ps(f, zero)));
+  up = _mm_castps_si128(_mm_blendv_ps(
+      _mm_castsi128_ps(up), _mm_castsi128_ps(_mm_sub_epi32(bits, _mm_set1_epi32(1))), _mm_cmplt_ps(f, zero)));
   return _mm_blendv_ps(f, _mm_castsi128_ps(up), wrong);
 }
 
 }  // namespace
 
-void splitTriangleBounds(const PackedTriangle& triangle, int axis, float plane, __m128 lower[2], __m128 upper[2]) {
+void splitTriangleBounds(const PackedTriangle& triangle, int axis, float plane, __m128 lower[2],
+                         __m128 upper[2]) {
   static_assert(sizeof(Vec3) == 3 * sizeof(float) && offsetof(PackedTriangle, v1) == 12 &&
                 offsetof(PackedTriangle, v2) == 24 && sizeof(PackedTriangle) >= 40);
   const float* corner = &triangle.v0.x;  // v0, v1, v2 contiguous; lane 3 of each load is ignored

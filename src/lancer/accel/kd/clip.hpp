@@ -29,7 +29,8 @@ void splitTriangleBounds(const std::array<Vec3, 3>& corners, int axis, float pla
 // The same bounds, to the bit, in vectors (lanes x, y, z, then a lane to ignore): lower[0] and
 // upper[0] below the plane, lower[1] and upper[1] above; an empty side has lower +inf, upper -inf.
 // Half the cost: the binned build clips a million and a half straddlers on the 1M bench bracket.
-void splitTriangleBounds(const PackedTriangle& triangle, int axis, float plane, __m128 lower[2], __m128 upper[2]);
+void splitTriangleBounds(const PackedTriangle& triangle, int axis, float plane, __m128 lower[2],
+                         __m128 upper[2]);
 #endif
 
 }  // namespace lancer
