@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <ctime>
 #include <map>
 #include <random>
 #include <sstream>
@@ -24,6 +25,20 @@
 #include "lancer/mesh/msh_reader.hpp"
 
 namespace lancer::bench {
+
+// Seconds of CPU time on `clock` (CLOCK_PROCESS_CPUTIME_ID: every thread; CLOCK_THREAD_CPUTIME_ID:
+// the caller's): on a shared machine steadier than wall time.
+inline double cpuSeconds(clockid_t clock) {
+  timespec t{};
+  clock_gettime(clock, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+// The middle value (the upper of the two middle ones for an even count; 0 for none).
+inline double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values.empty() ? 0.0 : values[values.size() / 2];
+}
 
 // Mesh names from LANCER_BENCH_MESHES ("10k,100k"), loaded from bench/data/bracket_<name>.msh
 // (bench/run_accel_bench.sh makes them with gmsh from bench/geo/).

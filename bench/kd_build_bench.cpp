@@ -17,21 +17,6 @@
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/scene.hpp"
 
-namespace {
-
-double cpuSeconds(clockid_t clock) {
-  timespec t{};
-  clock_gettime(clock, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
   using namespace lancer;
   using namespace lancer::bench;

@@ -23,25 +23,15 @@ inline std::uint32_t laneMask(__m256 condition) {
   return static_cast<std::uint32_t>(_mm256_movemask_ps(condition));
 }
 
-// a b - c d as triangle_detail::differenceOfProducts computes it (Kahan's algorithm with FMA).
-inline __m256 differenceOfProducts(__m256 a, __m256 b, __m256 c, __m256 d) {
-  const __m256 cd = _mm256_mul_ps(c, d);
-  const __m256 cdError = _mm256_fnmadd_ps(c, d, cd);
-  return _mm256_add_ps(_mm256_fmsub_ps(a, b, cd), cdError);
-}
-
 // Per lane, the component of (x, y, z) along the lane's axis (is0: axis 0, is1: axis 1, else 2).
 inline __m256 pickAxis(__m256 x, __m256 y, __m256 z, __m256 is0, __m256 is1) {
   return _mm256_blendv_ps(_mm256_blendv_ps(z, y, is1), x, is0);
 }
 
-// A triangle's corners relative to each lane's origin in the lane's sheared frame, as testTriangle
-// computes them, for finishing the test in double on the lanes whose edge functions agree in sign.
-struct ShearedCorners {
-  alignas(32) float ax[kPacketSize], ay[kPacketSize], az[kPacketSize];
-  alignas(32) float bx[kPacketSize], by[kPacketSize], bz[kPacketSize];
-  alignas(32) float cx[kPacketSize], cy[kPacketSize], cz[kPacketSize];
-};
+// A triangle's corners relative to each lane's origin in the lane's sheared frame (query.hpp's
+// eight-lane corners).
+static_assert(kPacketSize == 8);
+using ShearedCorners = LeafCorners;
 
 // The packet's rays, lane i of each register being ray i.
 struct PacketFrame {
@@ -102,29 +92,10 @@ inline std::uint32_t sameSignLanes(const PackedTriangle& tri, const PacketFrame&
     cx = _mm256_fnmadd_ps(f.shearX, cz, pickAxis(cx0, cy0, cz0, f.kxIs0, f.kxIs1));
     cy = _mm256_fnmadd_ps(f.shearY, cz, pickAxis(cx0, cy0, cz0, f.kyIs0, f.kyIs1));
   }
-  const __m256 u = differenceOfProducts(cx, by, cy, bx);
-  const __m256 v = differenceOfProducts(ax, cy, ay, cx);
-  const __m256 w = differenceOfProducts(bx, ay, by, ax);
-  const __m256 zero = _mm256_setzero_ps();
-  const __m256 allNonNegative =
-      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_GE_OQ), _mm256_cmp_ps(v, zero, _CMP_GE_OQ)),
-                    _mm256_cmp_ps(w, zero, _CMP_GE_OQ));
-  const __m256 allNonPositive =
-      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_LE_OQ), _mm256_cmp_ps(v, zero, _CMP_LE_OQ)),
-                    _mm256_cmp_ps(w, zero, _CMP_LE_OQ));
-  const std::uint32_t passed = laneMask(_mm256_or_ps(allNonNegative, allNonPositive)) & lanes;
-  if (passed != 0) {
-    _mm256_store_ps(out.ax, ax);
-    _mm256_store_ps(out.ay, ay);
-    _mm256_store_ps(out.az, az);
-    _mm256_store_ps(out.bx, bx);
-    _mm256_store_ps(out.by, by);
-    _mm256_store_ps(out.bz, bz);
-    _mm256_store_ps(out.cx, cx);
-    _mm256_store_ps(out.cy, cy);
-    _mm256_store_ps(out.cz, cz);
-  }
-  return passed;
+  const __m256 u = differenceOfProducts8(cx, by, cy, bx);
+  const __m256 v = differenceOfProducts8(ax, cy, ay, cx);
+  const __m256 w = differenceOfProducts8(bx, ay, by, ax);
+  return keepSameSignLanes(u, v, w, lanes, ax, ay, az, bx, by, bz, cx, cy, cz, out);
 }
 
 inline TriangleHit finishLane(const ShearedCorners& c, const PacketFrame& f, int i, float tMin, float tMax) {

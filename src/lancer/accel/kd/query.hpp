@@ -104,9 +104,10 @@ struct AnyHit {
 // loading and transposing them costs more than the scalar tests they replace.
 constexpr std::uint32_t kMinSimdLeaf = 3;
 
-// The sheared corners of up to eight triangles in the ray's frame, triangle i in lane i, exactly as
-// testTriangle computes them (the same operations on the same floats, no contraction), for
-// finishing the test of the lanes whose edge functions agree in sign.
+// Sheared corners in eight lanes, exactly as testTriangle computes them (the same operations on the
+// same floats, no contraction), for finishing the test of the lanes whose edge functions agree in
+// sign: up to eight triangles against one ray (lane i: triangle i), or one triangle against a
+// packet's eight rays (packet_frame.hpp).
 struct LeafCorners {
   alignas(32) float ax[8], ay[8], az[8], bx[8], by[8], bz[8], cx[8], cy[8], cz[8];
 };
@@ -116,6 +117,35 @@ inline __m256 differenceOfProducts8(__m256 a, __m256 b, __m256 c, __m256 d) {
   const __m256 cd = _mm256_mul_ps(c, d);
   const __m256 cdError = _mm256_fnmadd_ps(c, d, cd);
   return _mm256_add_ps(_mm256_fmsub_ps(a, b, cd), cdError);
+}
+
+// The lanes of `lanes` whose edge functions u, v, w agree in sign (zero agrees with either), as
+// testTriangle's float test decides; when there are any, the sheared corners are kept in `out` for
+// the double finish. Shared by the leaf test below and the packet test (packet_frame.hpp).
+inline std::uint32_t keepSameSignLanes(__m256 u, __m256 v, __m256 w, std::uint32_t lanes, __m256 ax,
+                                       __m256 ay, __m256 az, __m256 bx, __m256 by, __m256 bz, __m256 cx,
+                                       __m256 cy, __m256 cz, LeafCorners& out) {
+  const __m256 zero = _mm256_setzero_ps();
+  const __m256 allNonNegative =
+      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_GE_OQ), _mm256_cmp_ps(v, zero, _CMP_GE_OQ)),
+                    _mm256_cmp_ps(w, zero, _CMP_GE_OQ));
+  const __m256 allNonPositive =
+      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_LE_OQ), _mm256_cmp_ps(v, zero, _CMP_LE_OQ)),
+                    _mm256_cmp_ps(w, zero, _CMP_LE_OQ));
+  const std::uint32_t passed =
+      static_cast<std::uint32_t>(_mm256_movemask_ps(_mm256_or_ps(allNonNegative, allNonPositive))) & lanes;
+  if (passed != 0) {
+    _mm256_store_ps(out.ax, ax);
+    _mm256_store_ps(out.ay, ay);
+    _mm256_store_ps(out.az, az);
+    _mm256_store_ps(out.bx, bx);
+    _mm256_store_ps(out.by, by);
+    _mm256_store_ps(out.bz, bz);
+    _mm256_store_ps(out.cx, cx);
+    _mm256_store_ps(out.cy, cy);
+    _mm256_store_ps(out.cz, cz);
+  }
+  return passed;
 }
 
 // The float half of testTriangle for `count` (1..8) triangles at the layout's word offsets
@@ -165,28 +195,7 @@ inline std::uint32_t sameSignTriangles(const KdNode* base, const std::uint32_t* 
   const __m256 u = differenceOfProducts8(cx, by, cy, bx);
   const __m256 v = differenceOfProducts8(ax, cy, ay, cx);
   const __m256 w = differenceOfProducts8(bx, ay, by, ax);
-  const __m256 zero = _mm256_setzero_ps();
-  const __m256 allNonNegative =
-      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_GE_OQ), _mm256_cmp_ps(v, zero, _CMP_GE_OQ)),
-                    _mm256_cmp_ps(w, zero, _CMP_GE_OQ));
-  const __m256 allNonPositive =
-      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(u, zero, _CMP_LE_OQ), _mm256_cmp_ps(v, zero, _CMP_LE_OQ)),
-                    _mm256_cmp_ps(w, zero, _CMP_LE_OQ));
-  const std::uint32_t passed =
-      static_cast<std::uint32_t>(_mm256_movemask_ps(_mm256_or_ps(allNonNegative, allNonPositive))) &
-      ((1u << count) - 1u);
-  if (passed != 0) {
-    _mm256_store_ps(out.ax, ax);
-    _mm256_store_ps(out.ay, ay);
-    _mm256_store_ps(out.az, az);
-    _mm256_store_ps(out.bx, bx);
-    _mm256_store_ps(out.by, by);
-    _mm256_store_ps(out.bz, bz);
-    _mm256_store_ps(out.cx, cx);
-    _mm256_store_ps(out.cy, cy);
-    _mm256_store_ps(out.cz, cz);
-  }
-  return passed;
+  return keepSameSignLanes(u, v, w, (1u << count) - 1u, ax, ay, az, bx, by, bz, cx, cy, cz, out);
 }
 
 #endif  // LANCER_LEAF_AVX2
