@@ -11,8 +11,8 @@
 
 #include "bindings.hpp"
 #include "lancer/mesh/mesh_from_elements.hpp"
-#include "lancer/mesh/msh/huge_pages.hpp"
 #include "lancer/mesh/msh_reader.hpp"
+#include "lancer/util/huge_pages.hpp"
 #include "lancer/util/parallel_for.hpp"
 
 namespace lancer::python {

@@ -1,7 +1,9 @@
 // The pieces of the default (binned) kd-tree build checked on their own: the vector one-plane clip
 // against the scalar one (the same bounds, to the bit), the exact split of small cells against a
-// plain reading of the event sweep, and the whole tree, word for word, on any thread count and
-// parallel-top threshold with subtrees big enough to be forked.
+// plain reading of the event sweep, the whole tree, word for word, on any thread count and
+// parallel-top threshold with subtrees big enough to be forked; the arenas' leaf ids, the
+// layout's triangles written from the mesh again (quads, slivers, several gather chunks), and a
+// tree big enough that the build hands finished references' pages back while it runs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,13 +11,19 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <map>
 #include <random>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "lancer/accel/kd/binned_split.hpp"
+#include "lancer/accel/kd/build.hpp"
 #include "lancer/accel/kd/clip.hpp"
 #include "lancer/accel/kd_tree.hpp"
+#include "lancer/accel/naive_accel.hpp"
 #include "support/accel_test_geometry.hpp"
 
 namespace lancer {
@@ -192,6 +200,147 @@ TEST(KdBuildParts, TreeIsTheSameWordForWordForAnyThreadCountWithForkedSubtrees) 
           [](const KdNode& a, const KdNode& b) { return a.payload == b.payload && a.bits == b.bits; }));
       EXPECT_EQ(tree.stats().sahCost, reference.stats().sahCost);
     }
+  }
+}
+
+TEST(KdBuildParts, ArenaKeepsEveryLeafsIdsAcrossItsBlocks) {
+  // Leaves of 0 to 70000 ids: blocks start small and double, and a leaf bigger than the largest
+  // block gets a block of its own; no leaf's ids move or mix with another's.
+  BuildArena arena;
+  std::vector<std::pair<BuildNode*, std::vector<std::uint32_t>>> leaves;
+  std::mt19937 rng(4);
+  std::uniform_int_distribution<std::uint32_t> id(0, 1u << 30);
+  for (const std::size_t size : {0, 1, 3, 1000, 1021, 5, 70000, 2, 0, 65536, 40000, 7, 33000}) {
+    std::vector<std::uint32_t> ids(size);
+    for (std::uint32_t& i : ids) i = id(rng);
+    leaves.emplace_back(arena.leaf(ids), ids);
+  }
+  for (const auto& [node, ids] : leaves) {
+    EXPECT_LT(node->axis, 0);
+    const std::span<const std::uint32_t> kept = node->leafIds();
+    ASSERT_EQ(kept.size(), ids.size());
+    EXPECT_TRUE(std::equal(kept.begin(), kept.end(), ids.begin())) << ids.size() << " ids";
+  }
+}
+
+// A mesh of every kind of face the gather meets, in several chunks of its plan: triangles, quads,
+// quads with one sliver half, and slivers.
+test::Soup mixedFaces(std::mt19937& rng, int faces) {
+  test::Soup soup;
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (int i = 0; i < faces; ++i) {
+    const Vec3 c = test::randomPoint(rng, {0, 0, 0}, {1, 1, 1});
+    const Vec3 a = c + Vec3{0.01f * u(rng), 0, 0}, b = c + Vec3{0, 0.01f * u(rng) + 1e-3f, 0};
+    const Vec3 d = c + Vec3{0.005f, 0.005f, 0.01f * u(rng) + 1e-3f};
+    switch (i % 5) {
+      case 0:
+      case 1:
+        soup.triangle(c, a + Vec3{1e-3f, 0, 0}, b);
+        break;
+      case 2:
+        soup.quad(soup.vertex(c), soup.vertex(a + Vec3{1e-3f, 0, 0}), soup.vertex(d), soup.vertex(b));
+        break;
+      case 3:  // (0,1,2) a sliver (1 on the segment 0-2), (0,2,3) not
+        soup.quad(soup.vertex(c), soup.vertex(c + (d - c) * 0.5f), soup.vertex(d), soup.vertex(b));
+        break;
+      default:
+        soup.triangle(c, c + (d - c) * 0.25f, d);
+        break;  // a sliver
+    }
+  }
+  return soup;
+}
+
+TEST(KdBuildParts, LayoutTrianglesAreTheMeshsAfterTheGatherIsFreed) {
+  // The assembler frees the gathered triangles and writes the layout's from the mesh again: each
+  // must be its face's triangle (the same corners, to the bit), every non-sliver half present,
+  // over more than one gather chunk and on any thread count.
+  std::mt19937 rng(17);
+  const test::Soup soup = mixedFaces(rng, 40000);
+  ASSERT_GT(gatherChunkPlan(soup.faces.size()).chunks, 1u);
+  const KdBuildInput gathered = gatherTriangles(soup.positions, soup.faces);
+  ASSERT_GT(gathered.slivers.size(), 10000u);
+  // (face, corner 1 of the half) -> the half's packed triangle, as the gather made it.
+  std::map<std::pair<std::uint32_t, float>, PackedTriangle> expected;
+  for (const PackedTriangle& t : gathered.triangles) expected[{t.face, t.v1.x}] = t;
+  ASSERT_EQ(expected.size(), gathered.triangles.size());
+  for (const int threads : {1, 2, 3}) {
+    SCOPED_TRACE(testing::Message() << threads << " threads");
+    KdBuildOptions options;
+    options.threads = threads;
+    for (const KdTree& tree : {KdTree::buildSah(soup.positions, soup.faces, options),
+                               KdTree::buildMedian(soup.positions, soup.faces, options)}) {
+      std::set<std::pair<std::uint32_t, float>> seen;
+      const auto nodes = tree.layout();
+      std::vector<std::uint32_t> stack{0};
+      while (!stack.empty()) {
+        const KdNode node = nodes[stack.back()];
+        stack.pop_back();
+        if (!node.isLeaf()) {
+          stack.push_back(node.firstChild());
+          stack.push_back(node.firstChild() + 1);
+          continue;
+        }
+        for (const std::uint32_t offset : tree.leafTriangles(node)) {
+          const PackedTriangle& t = tree.triangleAt(offset);
+          const auto found = expected.find({t.face, t.v1.x});
+          ASSERT_NE(found, expected.end()) << "face " << t.face;
+          EXPECT_EQ(std::memcmp(&found->second, &t, sizeof t), 0) << "face " << t.face;
+          seen.insert(found->first);
+        }
+      }
+      EXPECT_EQ(seen.size(), expected.size()) << "every tree triangle is in a leaf";
+      EXPECT_EQ(tree.slivers().size(), gathered.slivers.size());
+    }
+  }
+}
+
+TEST(KdBuildParts, BigTreeWhoseBuildGivesPagesBackMatchesBruteForce) {
+  // 160K small triangles: cells of 64K+ references hand their finished left subtree's pages back
+  // before the right one is built (RefBuffer::release); a live reference lost there would drop
+  // triangles from the tree or put zeroed ones in it.
+  std::mt19937 rng(23);
+  test::Soup soup;
+  std::uniform_real_distribution<float> size(0.001f, 0.01f);
+  for (int i = 0; i < 160000; ++i) {
+    const Vec3 c = test::randomPoint(rng, {0, 0, 0}, {1, 1, 1});
+    const float s = size(rng);
+    soup.triangle(c + test::randomDirection(rng) * s, c + test::randomDirection(rng) * s,
+                  c + test::randomDirection(rng) * s);
+  }
+  const NaiveAccel naive(soup.positions, soup.faces);
+  for (const int threads : {1, 2}) {
+    SCOPED_TRACE(testing::Message() << threads << " threads");
+    KdBuildOptions options;
+    options.threads = threads;
+    const KdTree tree = KdTree::buildSah(soup.positions, soup.faces, options);
+    std::set<std::uint32_t> faces;
+    const auto nodes = tree.layout();
+    std::vector<std::uint32_t> stack{0};
+    while (!stack.empty()) {
+      const KdNode node = nodes[stack.back()];
+      stack.pop_back();
+      if (!node.isLeaf()) {
+        stack.push_back(node.firstChild());
+        stack.push_back(node.firstChild() + 1);
+        continue;
+      }
+      for (const std::uint32_t offset : tree.leafTriangles(node)) faces.insert(tree.triangleAt(offset).face);
+    }
+    EXPECT_EQ(faces.size() + tree.slivers().size(), soup.faces.size()) << "every face is in a leaf";
+    std::mt19937 rays(5);
+    int hits = 0;
+    for (int i = 0; i < 300; ++i) {
+      const Ray ray(test::randomPoint(rays, {0, 0, 0}, {1, 1, 1}), test::randomDirection(rays));
+      Hit expected, actual;
+      const bool expectHit = naive.intersect(ray, 0.0f, 10.0f, expected);
+      ASSERT_EQ(tree.intersect(ray, 0.0f, 10.0f, actual), expectHit) << "ray " << i;
+      if (!expectHit) continue;
+      ++hits;
+      EXPECT_EQ(actual.face, expected.face) << "ray " << i;
+      EXPECT_EQ(actual.t, expected.t) << "ray " << i;
+    }
+    EXPECT_GT(hits, 100);
   }
 }
 

@@ -4,10 +4,10 @@
 #include <stdexcept>
 #include <utility>
 
-#include "lancer/mesh/msh/huge_pages.hpp"
 #include "lancer/mesh/parity_disjoint_sets.hpp"
 #include "lancer/mesh/vertex_corners.hpp"
 #include "lancer/mesh/vertex_ranges.hpp"
+#include "lancer/util/huge_pages.hpp"
 #include "lancer/util/parallel_for.hpp"
 
 namespace lancer {

@@ -1,8 +1,8 @@
 #include "lancer/mesh/mesh_from_elements.hpp"
 
 #include "lancer/mesh/msh/element_types.hpp"
-#include "lancer/mesh/msh/huge_pages.hpp"
 #include "lancer/mesh/msh/mesh_assembler.hpp"
+#include "lancer/util/huge_pages.hpp"
 #include "lancer/util/stopwatch.hpp"
 
 namespace lancer {

@@ -8,10 +8,10 @@
 
 #include "lancer/math/fast_acos.hpp"
 #include "lancer/mesh/face_geometry.hpp"
-#include "lancer/mesh/msh/huge_pages.hpp"
 #include "lancer/mesh/prefetch_corners.hpp"
 #include "lancer/mesh/vertex_corners.hpp"
 #include "lancer/mesh/vertex_ranges.hpp"
+#include "lancer/util/huge_pages.hpp"
 #include "lancer/util/parallel_for.hpp"
 
 namespace lancer {

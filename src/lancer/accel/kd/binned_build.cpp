@@ -27,11 +27,15 @@
 #include "lancer/accel/kd/build.hpp"
 #include "lancer/accel/kd/clip.hpp"
 #include "lancer/accel/kd_tree.hpp"
+#include "lancer/util/huge_pages.hpp"
 #include "lancer/util/parallel_for.hpp"
 #include "lancer/util/stopwatch.hpp"
 
 #if defined(__AVX2__)
 #include <immintrin.h>
+#endif
+#if defined(__linux__)
+#include <sys/mman.h>
 #endif
 
 namespace lancer {
@@ -269,26 +273,59 @@ Children childCells(const Cell& cell, const Split& split) {
 }
 
 // A growing array of references that leaves new room uninitialised (a vector would zero it: page
-// faults and memory traffic for room most subtrees never reach).
+// faults and memory traffic for room most subtrees never reach), on huge pages when large (one
+// fault per 2 MiB written), and gives back the memory of references that are done with (release).
 class RefBuffer {
  public:
   RefBuffer() = default;
-  explicit RefBuffer(std::size_t n) : data_(new Ref[n]), size_(n) {}
+  explicit RefBuffer(std::size_t n) : data_(allocate(n)), size_(n) {}
   Ref* data() { return data_.get(); }
   const Ref* data() const { return data_.get(); }
   std::size_t size() const { return size_; }
   // Room for at least `n`, keeping the first `keep` references.
   void grow(std::size_t n, std::size_t keep) {
     if (n <= size_) return;
-    std::unique_ptr<Ref[]> bigger(new Ref[n]);
+    std::unique_ptr<Ref[]> bigger(allocate(n));
     std::copy_n(data_.get(), std::min(keep, size_), bigger.get());
     data_ = std::move(bigger);
     size_ = n;
+    written_ = std::min(keep, n);
+  }
+  // References [0, end) may have been written (their pages are in memory).
+  void wrote(std::size_t end) { written_ = std::max(written_, end); }
+  // Hands the whole huge pages past reference `from` back to the system (the next write there
+  // gets fresh zeroed pages). A subtree's references are dead once it is built; kept, the buffer
+  // would hold its deepest path's high-water mark (about twice the tree's references) until the
+  // build ends, when the nodes and leaves are at their largest.
+  void release(std::size_t from) {
+#if defined(__linux__)
+    if (written_ <= from) return;
+    constexpr std::uintptr_t kPage = std::uintptr_t(2) << 20;
+    auto pageUp = [](std::uintptr_t at) { return (at + kPage - 1) & ~(kPage - 1); };
+    const std::uintptr_t begin = pageUp(reinterpret_cast<std::uintptr_t>(data_.get() + from));
+    // Up to the page end past the last write: the rest of that page is room no one uses (but not
+    // past the buffer), so that nothing written is left in memory once written_ comes down.
+    const std::uintptr_t end = std::min(pageUp(reinterpret_cast<std::uintptr_t>(data_.get() + written_)),
+                                        reinterpret_cast<std::uintptr_t>(data_.get() + size_) & ~(kPage - 1));
+    if (end <= begin) return;
+    // Failure leaves the memory in use, nothing else: the references there are dead either way.
+    madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
+    written_ = from;
+#else
+    (void)from;
+#endif
   }
 
  private:
+  static Ref* allocate(std::size_t n) {
+    Ref* data = new Ref[n];
+    if (n * sizeof(Ref) >= kHugeAbove) adviseHugePages(data, n * sizeof(Ref));
+    return data;
+  }
+  static constexpr std::size_t kHugeAbove = std::size_t(4) << 20;
   std::unique_ptr<Ref[]> data_;
   std::size_t size_ = 0;
+  std::size_t written_ = 0;
 };
 
 // A subtree handed to one thread: its references, and where its root goes.
@@ -341,6 +378,7 @@ class BinnedBuilder {
         chunkUsed[chunk].extend(r);
       }
     });
+    refs.wrote(n);
     for (const Box& used : chunkUsed) root.used.extend(used);
     spareThreads_ = threads_ - 1;
     BuildArena& arena = arenas_.create();
@@ -369,7 +407,11 @@ class BinnedBuilder {
   struct Scratch {
     RefBuffer stack;
     BinCounts counts;
-    std::vector<WindowEvent> window;
+    // Room for a window's events, not zeroed: a window holds a small part of the cell's 2n
+    // bounds, so only the pages it writes come into memory (a zeroed vector of the root's 2n stays
+    // in memory until the subtree is built: 16 bytes a triangle).
+    std::unique_ptr<WindowEvent[]> window;
+    std::size_t windowRoom = 0;
     std::vector<std::uint32_t> leaf;
   };
 
@@ -393,10 +435,13 @@ class BinnedBuilder {
     const auto count = static_cast<std::uint32_t>(n);
     Split split = bestBinnedSplit(scratch.counts, grid, cell, count, options_);
     if (split.bin > 0) {
-      if (scratch.window.size() < 2 * n) scratch.window.resize(2 * n);
+      if (scratch.windowRoom < 2 * n) {
+        scratch.window = std::make_unique_for_overwrite<WindowEvent[]>(2 * n);
+        scratch.windowRoom = 2 * n;
+      }
       const std::size_t events =
-          collectWindow(refs, n, grid, split.axis, split.bin - 1, split.bin, scratch.window.data());
-      refineInWindow(split, scratch.counts, cell, count, scratch.window.data(), events, options_);
+          collectWindow(refs, n, grid, split.axis, split.bin - 1, split.bin, scratch.window.get());
+      refineInWindow(split, scratch.counts, cell, count, scratch.window.get(), events, options_);
     }
     return split;
   }
@@ -420,10 +465,10 @@ class BinnedBuilder {
     const auto count = static_cast<std::uint32_t>(n);
     Split split = bestBinnedSplit(chunkCounts[0], grid, cell, count, options_);
     if (split.bin > 0) {
-      std::vector<WindowEvent> window(2 * n);
+      const auto window = std::make_unique_for_overwrite<WindowEvent[]>(2 * n);  // as in chooseSplit
       const std::size_t events =
-          collectWindow(refs.data(), n, grid, split.axis, split.bin - 1, split.bin, window.data());
-      refineInWindow(split, chunkCounts[0], cell, count, window.data(), events, options_);
+          collectWindow(refs.data(), n, grid, split.axis, split.bin - 1, split.bin, window.get());
+      refineInWindow(split, chunkCounts[0], cell, count, window.get(), events, options_);
     }
     if (split.axis < 0 || split.cost >= options_.intersectionCost * float(n)) {
       BuildNode* slot = arena.leaf({});
@@ -457,6 +502,8 @@ class BinnedBuilder {
       chunkLeft[chunk] = RefBuffer();
       chunkRight[chunk] = RefBuffer();
     });
+    left.wrote(nl);
+    right.wrote(nr);
     BuildNode* leftNode = buildTop(std::move(left), nl, children.left, depth + 1, arena);
     BuildNode* rightNode = buildTop(std::move(right), nr, children.right, depth + 1, arena);
     return arena.inner(split.axis, split.pos, leftNode, rightNode);
@@ -505,6 +552,7 @@ class BinnedBuilder {
     Ref* base = scratch.stack.data();
     const Partitioner partition{input_, options_, split, box};
     const auto [nl, nr] = partition.small(base + begin, n, base + begin, base + leftBegin);
+    scratch.stack.wrote(leftBegin + nl);
     Box leftBox = box, rightBox = box;
     leftBox.hi[split.axis] = split.pos;
     rightBox.lo[split.axis] = split.pos;
@@ -516,7 +564,7 @@ class BinnedBuilder {
   // Makes `node` the inner node of the split, with its two children allocated (next to each other,
   // before their subtrees); returns the left one.
   static BuildNode* setInner(BuildNode& node, const Split& split, BuildArena& arena) {
-    node.axis = split.axis;
+    node.axis = static_cast<std::int8_t>(split.axis);
     node.split = split.pos;
     node.child[0] = arena.node();
     node.child[1] = arena.node();
@@ -539,11 +587,14 @@ class BinnedBuilder {
     Children children = childCells(cell, split);
     const Partitioner partition{input_, options_, split, cell.box};
     partition(base + begin, n, base + begin, base + leftBegin, children);
+    scratch.stack.wrote(leftBegin + children.leftCount);
     BuildNode* left = setInner(node, split, arena);
     if (children.leftCount >= kForkAbove && takeSpareThread()) {
       // A thread is idle (its subtree done): it takes the left child, with a copy of its references.
       RefBuffer leftRefs(stackSize(children.leftCount));
       std::copy_n(base + leftBegin, children.leftCount, leftRefs.data());
+      leftRefs.wrote(children.leftCount);
+      scratch.stack.release(begin + children.rightCount);
       auto task = std::async(std::launch::async, [&] {
         buildDetached(std::move(leftRefs), children.leftCount, children.left, depth + 1, *left);
         ++spareThreads_;
@@ -553,6 +604,7 @@ class BinnedBuilder {
       return;
     }
     build(leftBegin, children.leftCount, children.left, depth + 1, arena, scratch, *left);
+    scratch.stack.release(begin + children.rightCount);  // the left subtree's references are done
     build(begin, children.rightCount, children.right, depth + 1, arena, scratch, *node.child[1]);
   }
 

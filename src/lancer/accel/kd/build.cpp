@@ -27,22 +27,40 @@ bool isSliver(const std::array<Vec3, 3>& c) {
   return dot(n, n) <= kSliverSine * kSliverSine * dot(e1, e1) * dot(e2, e2);
 }
 
+// Calls visit(face, corners) for each triangle of faces [begin, end), in face order, a quad as
+// (0,1,2) then (0,2,3) like packTriangles.
+template <typename Visit>
+void forEachTriangle(std::span<const Vec3> positions, std::span<const MeshFace> faces, std::size_t begin,
+                     std::size_t end, Visit&& visit) {
+  for (std::size_t f = begin; f < end; ++f) {
+    const MeshFace& face = faces[f];
+    const int halves = face.isQuad() ? 2 : 1;
+    for (int half = 0; half < halves; ++half) {
+      visit(f, std::array<Vec3, 3>{positions[face.vertex[0]], positions[face.vertex[1 + half]],
+                                   positions[face.vertex[2 + half]]});
+    }
+  }
+}
+
 }  // namespace
+
+// Fixed by the face count, so that the result is the same on any thread count.
+ChunkPlan gatherChunkPlan(std::size_t faceCount) { return {faceCount, 1 << 14}; }
 
 KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                              bool withCorners, int threads) {
   KdBuildInput input;
   input.faceCount = faces.size();
-  // Faces in chunks (fixed by the face count, so the result is the same on any thread count):
-  // a first pass finds the slivers, a second writes the triangles where the counts before them
-  // put them, in face order, quads as (0,1,2) and (0,2,3) like packTriangles.
-  const ChunkPlan plan(faces.size(), 1 << 14);
-  std::vector<std::uint8_t> sliver;  // per triangle, in face order
-  std::vector<std::size_t> kept(plan.chunks + 1, 0), dropped(plan.chunks + 1, 0), first(plan.chunks + 1, 0);
-  auto cornersAt = [&](const MeshFace& face, int half) {
-    return std::array<Vec3, 3>{positions[face.vertex[0]], positions[face.vertex[1 + half]],
-                               positions[face.vertex[2 + half]]};
-  };
+  input.positions = positions;
+  input.faces = faces;
+  // Faces in chunks: a first pass finds the slivers, a second writes the triangles where the
+  // counts before them put them, in face order.
+  const ChunkPlan plan = gatherChunkPlan(faces.size());
+  std::vector<std::size_t>& first = input.chunkFirst;
+  std::vector<std::size_t>& kept = input.chunkFirstTree;
+  std::vector<std::size_t> dropped(plan.chunks + 1, 0);
+  first.assign(plan.chunks + 1, 0);
+  kept.assign(plan.chunks + 1, 0);
   for (std::size_t c = 0; c < plan.chunks; ++c) {
     std::size_t count = 0;
     for (std::size_t f = plan.begin(c); f < plan.begin(c + 1); ++f) count += faces[f].isQuad() ? 2 : 1;
@@ -53,16 +71,14 @@ KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const Me
     throw std::length_error("kd-tree: " + std::to_string(first.back()) + " triangles, at most " +
                             std::to_string(KdNode::kMaxIndex / 4) + " supported");
   }
+  std::vector<std::uint8_t>& sliver = input.sliver;
   sliver.resize(first.back());
   parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     std::size_t next = first[chunk], slivers = 0;
-    for (std::size_t f = begin; f < end; ++f) {
-      const int count = faces[f].isQuad() ? 2 : 1;
-      for (int half = 0; half < count; ++half, ++next) {
-        sliver[next] = isSliver(cornersAt(faces[f], half));
-        slivers += sliver[next];
-      }
-    }
+    forEachTriangle(positions, faces, begin, end, [&](std::size_t, const std::array<Vec3, 3>& corners) {
+      sliver[next] = isSliver(corners);
+      slivers += sliver[next++];
+    });
     dropped[chunk + 1] = slivers;
     kept[chunk + 1] = next - first[chunk] - slivers;
   });
@@ -72,27 +88,23 @@ KdBuildInput gatherTriangles(std::span<const Vec3> positions, std::span<const Me
   }
   // Every element is overwritten below.
   input.triangles.resize(kept.back());
+  input.treeTriangles = kept.back();
   if (withCorners) input.corners.resize(kept.back());
   input.slivers.resize(dropped.back());
   std::vector<Aabb> chunkBounds(plan.chunks);
   parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     std::size_t next = first[chunk], tree = kept[chunk], out = dropped[chunk];
     Aabb bounds;
-    for (std::size_t f = begin; f < end; ++f) {
-      const MeshFace& face = faces[f];
-      const int count = face.isQuad() ? 2 : 1;
-      for (int half = 0; half < count; ++half, ++next) {
-        const std::array<Vec3, 3> corners = cornersAt(face, half);
-        const PackedTriangle packed{corners[0], corners[1], corners[2], static_cast<std::uint32_t>(f)};
-        if (sliver[next]) {
-          input.slivers[out++] = packed;
-          continue;
-        }
-        if (withCorners) input.corners[tree] = corners;
-        input.triangles[tree++] = packed;
-        for (const Vec3& c : corners) bounds.extend(c);
+    forEachTriangle(positions, faces, begin, end, [&](std::size_t f, const std::array<Vec3, 3>& corners) {
+      const PackedTriangle packed{corners[0], corners[1], corners[2], static_cast<std::uint32_t>(f)};
+      if (sliver[next++]) {
+        input.slivers[out++] = packed;
+        return;
       }
-    }
+      if (withCorners) input.corners[tree] = corners;
+      input.triangles[tree++] = packed;
+      for (const Vec3& c : corners) bounds.extend(c);
+    });
     chunkBounds[chunk] = bounds;
   });
   // Chunk by chunk in order: the first of equal extremes (+0 or -0) wins, as in one pass.
@@ -119,15 +131,28 @@ BuildNode* BuildArena::leaf(std::span<const std::uint32_t> triangles) {
 
 void BuildArena::setLeaf(BuildNode& node, std::span<const std::uint32_t> triangles) {
   node.axis = -1;
-  node.arena = this;
-  node.first = static_cast<std::uint32_t>(leafTriangles.size());
-  node.count = static_cast<std::uint32_t>(triangles.size());
-  leafTriangles.insert(leafTriangles.end(), triangles.begin(), triangles.end());
+  node.leaf = {keepIds(triangles), static_cast<std::uint32_t>(triangles.size())};
+}
+
+const std::uint32_t* BuildArena::keepIds(std::span<const std::uint32_t> ids) {
+  if (ids.empty()) return nullptr;
+  if (ids.size() > blockRoom_) {
+    const std::size_t size = std::max(ids.size(), nextBlockIds_);
+    nextBlockIds_ = std::min(2 * nextBlockIds_, kMaxBlockIds);
+    idBlocks_.push_back(std::make_unique_for_overwrite<std::uint32_t[]>(size));
+    blockFree_ = idBlocks_.back().get();
+    blockRoom_ = size;
+  }
+  std::uint32_t* at = blockFree_;
+  std::copy(ids.begin(), ids.end(), at);
+  blockFree_ += ids.size();
+  blockRoom_ -= ids.size();
+  return at;
 }
 
 BuildNode* BuildArena::inner(int axis, float split, BuildNode* left, BuildNode* right) {
   BuildNode& node = nodes.emplace_back();
-  node.axis = axis;
+  node.axis = static_cast<std::int8_t>(axis);
   node.split = split;
   node.child[0] = left;
   node.child[1] = right;
@@ -178,14 +203,14 @@ struct LayoutPlan {
   }
 
   void placeLeaf(BuildNode& node) {
-    const std::uint32_t* tris = node.arena->leafTriangles.data() + node.first;
-    if (node.count == 0) {
+    const std::span<const std::uint32_t> tris = node.leafIds();
+    if (tris.empty()) {
       ++stats.emptyLeaves;
-    } else if (node.count == 1) {
+    } else if (tris.size() == 1) {
       placeTriangle(tris[0]);
     } else {
-      node.list = allocate((node.count + 1) / 2);
-      for (std::uint32_t i = 0; i < node.count; ++i) placeTriangle(tris[i]);
+      node.list = allocate((tris.size() + 1) / 2);
+      for (const std::uint32_t triangle : tris) placeTriangle(triangle);
     }
   }
 
@@ -196,8 +221,8 @@ struct LayoutPlan {
     if (node.axis < 0) {
       ++stats.leaves;
       stats.depth = std::max(stats.depth, depth);
-      stats.triangleReferences += node.count;
-      stats.sahCost += intersectionCost * double(node.count) * area;
+      stats.triangleReferences += node.leaf.count;
+      stats.sahCost += intersectionCost * double(node.leaf.count) * area;
       placeLeaf(node);
       return;
     }
@@ -221,18 +246,18 @@ void writeNode(const BuildNode& node, const std::vector<std::uint32_t>& triangle
     words[node.word] = KdNode::inner(node.axis, node.split, node.child[0]->word);
     return;
   }
-  const std::uint32_t* tris = node.arena->leafTriangles.data() + node.first;
-  if (node.count == 0) {
+  const std::span<const std::uint32_t> tris = node.leafIds();
+  if (tris.empty()) {
     words[node.word] = KdNode::leaf(0, 0);
-  } else if (node.count == 1) {
+  } else if (tris.size() == 1) {
     words[node.word] = KdNode::leaf(triangleWord[tris[0]], 1);
   } else {
     auto* list = reinterpret_cast<char*>(words + node.list);
-    for (std::uint32_t i = 0; i < node.count; ++i) {
+    for (std::size_t i = 0; i < tris.size(); ++i) {
       const std::uint32_t offset = triangleWord[tris[i]];
       std::memcpy(list + i * sizeof(std::uint32_t), &offset, sizeof offset);
     }
-    words[node.word] = KdNode::leaf(node.list, node.count);
+    words[node.word] = KdNode::leaf(node.list, node.leaf.count);
   }
 }
 
@@ -253,12 +278,14 @@ Aabb paddedBounds(const Aabb& box) {
 KdTree KdTreeAssembler::assemble(BuildNode& root, BuildArenas& arenas, KdBuildInput&& input,
                                  const KdBuildOptions& options, std::string kind, double buildSeconds) {
   std::vector<std::array<Vec3, 3>>().swap(input.corners);  // only the builders clip them
+  // The layout's triangles are written from the mesh again (see KdBuildInput::positions).
+  std::vector<PackedTriangle>().swap(input.triangles);
   LayoutPlan plan;
   plan.rootArea = input.bounds.surfaceArea();
   plan.traversalCost = options.traversalCost;
   plan.intersectionCost = options.intersectionCost;
-  plan.triangleWord.assign(input.triangles.size(), LayoutPlan::kUnset);
-  plan.placed.assign((input.triangles.size() + 63) / 64, 0);
+  plan.triangleWord.assign(input.treeTriangles, LayoutPlan::kUnset);
+  plan.placed.assign((input.treeTriangles + 63) / 64, 0);
   // Root alone at 0, a pad at 1, then sibling pairs at even words.
   plan.allocate(2);
   plan.place(0, root, input.bounds, 0);
@@ -286,12 +313,20 @@ KdTree KdTreeAssembler::assemble(BuildNode& root, BuildArenas& arenas, KdBuildIn
       if (node.word != BuildNode::kUnplaced) writeNode(node, plan.triangleWord, out);
     }
   });
-  const PackedTriangle* triangles = input.triangles.data();
-  parallelFor(input.triangles.size(), threads, 1 << 15, [&](std::size_t t) {
-    const std::uint32_t at = plan.triangleWord[t];
-    if (at != LayoutPlan::kUnset)
-      std::memcpy(static_cast<void*>(out + at), triangles + t, sizeof(PackedTriangle));
-  });
+  // The triangles, gathered again as gatherTriangles did (same chunks, same order, same slivers).
+  parallelChunks(
+      gatherChunkPlan(input.faces.size()), threads,
+      [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+        std::size_t next = input.chunkFirst[chunk], tree = input.chunkFirstTree[chunk];
+        forEachTriangle(
+            input.positions, input.faces, begin, end, [&](std::size_t f, const std::array<Vec3, 3>& corners) {
+              if (input.sliver[next++]) return;
+              const std::uint32_t at = plan.triangleWord[tree++];
+              if (at == LayoutPlan::kUnset) return;
+              const PackedTriangle packed{corners[0], corners[1], corners[2], static_cast<std::uint32_t>(f)};
+              std::memcpy(static_cast<void*>(out + at), &packed, sizeof packed);
+            });
+      });
   std::vector<std::uint32_t>().swap(plan.triangleWord);
   std::vector<std::uint64_t>().swap(plan.placed);
 
@@ -306,7 +341,7 @@ KdTree KdTreeAssembler::assemble(BuildNode& root, BuildArenas& arenas, KdBuildIn
   stats = plan.stats;
   stats.kind = std::move(kind);
   stats.faces = input.faceCount;
-  stats.triangles = input.triangles.size() + tree.slivers_.size();
+  stats.triangles = input.treeTriangles + tree.slivers_.size();
   const std::uint64_t filled = stats.leaves - stats.emptyLeaves;
   stats.meanTrianglesPerLeaf = filled ? double(stats.triangleReferences) / double(filled) : 0.0;
   stats.buildSeconds = buildSeconds;

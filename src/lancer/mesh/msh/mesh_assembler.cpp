@@ -4,8 +4,8 @@
 
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/msh/high_order.hpp"
-#include "lancer/mesh/msh/huge_pages.hpp"
 #include "lancer/util/check.hpp"
+#include "lancer/util/huge_pages.hpp"
 #include "lancer/util/input_error.hpp"
 #include "lancer/util/parallel_for.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "lancer/mesh/msh/huge_pages.hpp"
+#include "lancer/util/huge_pages.hpp"
 
 namespace lancer {
 
