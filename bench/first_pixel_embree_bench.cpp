@@ -39,8 +39,12 @@ struct MinimalMesh {
 };
 
 MinimalMesh minimalParse(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  const std::string data((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  // The whole file in one read, as a minimal reader would.
+  std::ifstream file(path, std::ios::binary | std::ios::ate);
+  std::string data(static_cast<std::size_t>(file.tellg()), '\0');
+  file.seekg(0);
+  if (!file.read(data.data(), static_cast<std::streamsize>(data.size())))
+    throw std::runtime_error(path + ": cannot read");
   auto section = [&](const char* name) {
     const std::size_t at = data.find(name);
     if (at == std::string::npos) throw std::runtime_error(path + ": no " + name);
