@@ -20,6 +20,7 @@
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/scene.hpp"
 #include "lancer/util/check.hpp"
+#include "lancer/util/huge_pages.hpp"
 #include "lancer/util/parallel_for.hpp"
 #include "lancer/util/stopwatch.hpp"
 
@@ -169,7 +170,9 @@ void appendGeometry(SceneGeometry& geometry, const std::vector<MeshFace>& faces,
     geometry.cornerNormals.normals = std::move(placed.normals.normals);
     geometry.cornerNormals.faceCorner = std::move(placed.normals.faceCorner);
     geometry.faceNormals = std::move(placed.faceNormals);
-    geometry.faces = faces;
+    geometry.faces.reserve(faces.size());
+    adviseHugePages(geometry.faces);  // one fault per 2 MiB copied (64 MB at 4M faces)
+    geometry.faces.assign(faces.begin(), faces.end());
     geometry.faceBoundsSolid = placed.orientation.faceBoundsSolid;
     return;
   }
@@ -205,12 +208,25 @@ void appendAppearance(SceneAppearance& appearance, std::size_t faceBase, const M
                       ShadingMode shading) {
   // The material of the faces of `entity` whose first group is `physical` (groupMaterials is in
   // order of increasing precedence: the last mapping that names one of their groups wins).
-  auto materialOf = [&](std::int32_t physical, std::int32_t entity) {
+  auto lookUp = [&](std::int32_t physical, std::int32_t entity) {
     auto material = static_cast<std::uint32_t>(instance.material);
     for (const auto& [tag, groupMaterial] : groupMaterials)
       if (mesh.inPhysicalGroup(physical, entity, tag)) material = groupMaterial;
     return material;
   };
+  // Consecutive faces mostly share their entity: the last answer is kept.
+  std::int32_t lastPhysical = 0, lastEntity = 0;
+  std::uint32_t lastMaterial = lookUp(0, 0);
+  auto materialOf = [&](std::int32_t physical, std::int32_t entity) {
+    if (physical != lastPhysical || entity != lastEntity) {
+      lastPhysical = physical;
+      lastEntity = entity;
+      lastMaterial = lookUp(physical, entity);
+    }
+    return lastMaterial;
+  };
+  appearance.faceMaterial.reserve(faceBase + mesh.faces.size());
+  appearance.faceShading.reserve(faceBase + mesh.faces.size());
   std::size_t nextRegionTag = 0;  // orientation.faceRegionTags is in face order
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     // A face between two regions of a surface-only mesh takes its region's group, that one alone.
