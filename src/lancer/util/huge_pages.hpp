@@ -1,7 +1,7 @@
 // Asks the kernel to back a large, freshly reserved array with transparent huge pages, so that
 // filling it takes one page fault per 2 MiB instead of one per 4 KiB (first-touch faults dominate
-// the load time of a million-face mesh otherwise; bench/msh_load_bench.cpp measures it, and the kd
-// build's reference buffers use it too).
+// the load time of a million-face mesh otherwise; bench/msh_load_bench.cpp measures it). The mesh
+// reader's and scene's big arrays and the kd build's buffers and layout use it.
 #pragma once
 
 #include <sys/mman.h>
