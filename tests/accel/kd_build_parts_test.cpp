@@ -223,6 +223,24 @@ TEST(KdBuildParts, ArenaKeepsEveryLeafsIdsAcrossItsBlocks) {
   }
 }
 
+// Calls visit(triangle) for each triangle of each leaf of the tree (a triangle in several leaves
+// once for each).
+template <typename Visit>
+void forEachLeafTriangle(const KdTree& tree, Visit&& visit) {
+  const auto nodes = tree.layout();
+  std::vector<std::uint32_t> stack{0};
+  while (!stack.empty()) {
+    const KdNode node = nodes[stack.back()];
+    stack.pop_back();
+    if (!node.isLeaf()) {
+      stack.push_back(node.firstChild());
+      stack.push_back(node.firstChild() + 1);
+      continue;
+    }
+    for (const std::uint32_t offset : tree.leafTriangles(node)) visit(tree.triangleAt(offset));
+  }
+}
+
 // A mesh of every kind of face the gather meets, in several chunks of its plan: triangles, quads,
 // quads with one sliver half, and slivers.
 test::Soup mixedFaces(std::mt19937& rng, int faces) {
@@ -271,24 +289,12 @@ TEST(KdBuildParts, LayoutTrianglesAreTheMeshsAfterTheGatherIsFreed) {
     for (const KdTree& tree : {KdTree::buildSah(soup.positions, soup.faces, options),
                                KdTree::buildMedian(soup.positions, soup.faces, options)}) {
       std::set<std::pair<std::uint32_t, float>> seen;
-      const auto nodes = tree.layout();
-      std::vector<std::uint32_t> stack{0};
-      while (!stack.empty()) {
-        const KdNode node = nodes[stack.back()];
-        stack.pop_back();
-        if (!node.isLeaf()) {
-          stack.push_back(node.firstChild());
-          stack.push_back(node.firstChild() + 1);
-          continue;
-        }
-        for (const std::uint32_t offset : tree.leafTriangles(node)) {
-          const PackedTriangle& t = tree.triangleAt(offset);
-          const auto found = expected.find({t.face, t.v1.x});
-          ASSERT_NE(found, expected.end()) << "face " << t.face;
-          EXPECT_EQ(std::memcmp(&found->second, &t, sizeof t), 0) << "face " << t.face;
-          seen.insert(found->first);
-        }
-      }
+      forEachLeafTriangle(tree, [&](const PackedTriangle& t) {
+        const auto found = expected.find({t.face, t.v1.x});
+        ASSERT_NE(found, expected.end()) << "face " << t.face;
+        EXPECT_EQ(std::memcmp(&found->second, &t, sizeof t), 0) << "face " << t.face;
+        seen.insert(found->first);
+      });
       EXPECT_EQ(seen.size(), expected.size()) << "every tree triangle is in a leaf";
       EXPECT_EQ(tree.slivers().size(), gathered.slivers.size());
     }
@@ -315,18 +321,7 @@ TEST(KdBuildParts, BigTreeWhoseBuildGivesPagesBackMatchesBruteForce) {
     options.threads = threads;
     const KdTree tree = KdTree::buildSah(soup.positions, soup.faces, options);
     std::set<std::uint32_t> faces;
-    const auto nodes = tree.layout();
-    std::vector<std::uint32_t> stack{0};
-    while (!stack.empty()) {
-      const KdNode node = nodes[stack.back()];
-      stack.pop_back();
-      if (!node.isLeaf()) {
-        stack.push_back(node.firstChild());
-        stack.push_back(node.firstChild() + 1);
-        continue;
-      }
-      for (const std::uint32_t offset : tree.leafTriangles(node)) faces.insert(tree.triangleAt(offset).face);
-    }
+    forEachLeafTriangle(tree, [&](const PackedTriangle& t) { faces.insert(t.face); });
     EXPECT_EQ(faces.size() + tree.slivers().size(), soup.faces.size()) << "every face is in a leaf";
     std::mt19937 rays(5);
     int hits = 0;
