@@ -246,6 +246,79 @@ TEST(PacketQueryProperty, ClippedQueriesSeeThroughTheSameFaces) {
   }
 }
 
+// The renderer's shadow rays through glass rely on two things a filter sees: each lane's own ray,
+// passed as packet.ray[i] (so that a filter can tell lanes apart), and, when it refuses every hit,
+// every face the ray meets in its interval, with the t of the closest-hit query (tracer.cpp,
+// Tracer::notesTransparent). Both checked against the brute-force loop, for every accelerator.
+TEST(PacketQueryProperty, FiltersRefusingEveryHitSeeEachLanesOwnRayAndEveryFaceOnIt) {
+  const Soup soup = test::sphere(24, 32, {2, 2, 2}, 1.5f);
+  const Accelerator naive = Accelerator::build(soup.positions, soup.faces, AccelKind::Naive);
+  const KdTree tree = KdTree::buildSah(soup.positions, soup.faces);
+  std::mt19937 rng(11);
+  std::vector<TestRay> rays = test::adversarialRays(soup, tree, rng, 1000);
+  const std::vector<TestRay> coherent = coherentRays(soup, tree, rng);
+  rays.insert(rays.end(), coherent.begin(), coherent.end());
+  // Faces seen per lane, as (face, t bits); the lane is where the ray sits in `rays`.
+  struct Seen {
+    const Ray* rays;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> lanes[kPacketSize];
+    bool foreignRay = false;
+  };
+  auto refuseAll = [](const void* context, const Ray& ray, std::uint32_t face, float t) {
+    auto& seen = *static_cast<Seen*>(const_cast<void*>(context));
+    const std::ptrdiff_t lane = &ray - seen.rays;
+    if (lane < 0 || lane >= kPacketSize) {
+      seen.foreignRay = true;
+    } else {
+      seen.lanes[lane].emplace_back(face, std::bit_cast<std::uint32_t>(t));
+    }
+    return false;
+  };
+  // Every face the ray's line meets in (tMin, tMax), from the brute-force loop (one face refused at
+  // a time until nothing is left).
+  auto everyFace = [&](const Ray& ray, float tMin, float tMax) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> faces;
+    const HitFilter notYetSeen{
+        &faces, [](const void* c, const Ray&, std::uint32_t face, float) {
+          const auto& seen = *static_cast<const std::vector<std::pair<std::uint32_t, std::uint32_t>>*>(c);
+          return std::none_of(seen.begin(), seen.end(), [&](const auto& f) { return f.first == face; });
+        }};
+    Hit hit;
+    while (naive.intersect(ray, tMin, tMax, notYetSeen, hit))
+      faces.emplace_back(hit.face, std::bit_cast<std::uint32_t>(hit.t));
+    std::sort(faces.begin(), faces.end());
+    return faces;
+  };
+  for (AccelKind kind : {AccelKind::KdTreeSah, AccelKind::KdTreeMedian, AccelKind::Naive}) {
+    SCOPED_TRACE(std::string(accelKindName(kind)));
+    const Accelerator accel = Accelerator::build(soup.positions, soup.faces, kind);
+    int lanesWithFaces = 0;
+    for (const auto& [packet, active] : packetsOf(rays, true)) {
+      Seen seen;
+      seen.rays = packet.ray;
+      EXPECT_EQ(accel.occluded(packet, active, HitFilter{&seen, refuseAll}), 0u);
+      ASSERT_FALSE(seen.foreignRay);
+      for (int i = 0; i < kPacketSize; ++i) {
+        auto& lane = seen.lanes[i];
+        if ((active >> i & 1u) == 0) {
+          EXPECT_TRUE(lane.empty()) << "inactive lane " << i;
+          continue;
+        }
+        std::sort(lane.begin(), lane.end());
+        lane.erase(std::unique(lane.begin(), lane.end()), lane.end());
+        // A quad's halves are one face: the loop above counts the face once, at its closest t.
+        lane.erase(std::unique(lane.begin(), lane.end(),
+                               [](const auto& a, const auto& b) { return a.first == b.first; }),
+                   lane.end());
+        const auto expected = everyFace(packet.ray[i], packet.tMin[i], packet.tMax[i]);
+        EXPECT_EQ(lane, expected) << "lane " << i;
+        lanesWithFaces += !expected.empty();
+      }
+    }
+    EXPECT_GT(lanesWithFaces, 500);
+  }
+}
+
 TEST(PacketQueryProperty, WatertightRaysFromInsideAllHitAsSingleRays) {
   // The rays of the watertight property test: from near the centre of closed gmsh meshes to their
   // vertices and edges.

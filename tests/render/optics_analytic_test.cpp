@@ -4,6 +4,7 @@
 // that recursion cannot create.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -65,10 +66,9 @@ SceneDescription ambientOnly(std::vector<Material> materials) {
 // Traces single rays given in world coordinates.
 class RayProbe {
  public:
-  RayProbe(const SceneDescription& d, std::vector<Mesh> meshes)
+  RayProbe(const SceneDescription& d, std::vector<Mesh> meshes, AccelKind accel = AccelKind::KdTreeSah)
       : scene_(test::sceneFromMeshes(d, std::move(meshes))),
-        accelerator_(
-            Accelerator::build(scene_.geometry.positions, scene_.geometry.faces, AccelKind::KdTreeSah)),
+        accelerator_(Accelerator::build(scene_.geometry.positions, scene_.geometry.faces, accel)),
         tracer_(scene_, accelerator_, d.render) {}
 
   Vec3 trace(const Vec3d& origin, const Vec3d& direction) const {
@@ -203,7 +203,7 @@ TEST(OpticsAnalytic, TotalInternalReflectionPastTheCriticalAngle) {
 // The floor's value at (0.53, 0, 0) under a light at (0, 0, 10), seen straight down: white, diffuse
 // only, so the value is cos(theta) times what the shadow ray lets through. The shadow ray crosses
 // the occluder near x = 0.48, while the camera ray at x = 0.53 misses it.
-Vec3 floorUnder(const Material& occluder, Mesh occluderMesh) {
+Vec3 floorUnder(const Material& occluder, Mesh occluderMesh, AccelKind accel = AccelKind::KdTreeSah) {
   Material floor = emitter("floor", {0, 0, 0});
   floor.kd = {1, 1, 1};
   SceneDescription d = ambientOnly({floor, occluder});
@@ -212,7 +212,7 @@ Vec3 floorUnder(const Material& occluder, Mesh occluderMesh) {
   d.lights = {{{0, 0, 10}, {1, 1, 1}, {1, 0, 0}}};
   d.meshes.resize(2);
   d.meshes[1].material = 1;
-  const RayProbe probe(d, {test::squareMesh(-3, -3, 3, 3, 0), std::move(occluderMesh)});
+  const RayProbe probe(d, {test::squareMesh(-3, -3, 3, 3, 0), std::move(occluderMesh)}, accel);
   return probe.trace({0.53, 0, 5}, {0, 0, -1});
 }
 
@@ -239,6 +239,83 @@ TEST(OpticsAnalytic, ShadowsThroughTransparentFacesAreColouredAndAbsorbed) {
   EXPECT_NEAR(absorbed.z, cosTheta * std::exp(-0.5 * inside), 1e-4);
   // An opaque occluder blocks the light.
   EXPECT_EQ(floorUnder(emitter("opaque", {0, 0, 0}), test::squareMesh(-0.5f, -0.5f, 0.5f, 0.5f, 1)).x, 0.0f);
+}
+
+// Squares [-0.5, 0.5]^2 at each of `heights`, one mesh, listed in the order given.
+Mesh stackedSheets(const std::vector<float>& heights) {
+  Mesh sheets = meshOf({}, {});
+  for (const float h : heights) {
+    const auto first = static_cast<std::uint32_t>(sheets.positions.size());
+    for (const Vec3 corner :
+         {Vec3{-0.5f, -0.5f, h}, Vec3{0.5f, -0.5f, h}, Vec3{0.5f, 0.5f, h}, Vec3{-0.5f, 0.5f, h}})
+      sheets.positions.push_back(corner);
+    sheets.faces.push_back(MeshFace{{first, first + 1, first + 2, first + 3}});
+  }
+  sheets.facePhysicalTag.assign(sheets.faces.size(), 1);
+  sheets.faceEntityTag.assign(sheets.faces.size(), 1);
+  sheets.faceEdgeMask.assign(sheets.faces.size(), kAllEdges);
+  return sheets;
+}
+
+// A shadow ray meets all its transparent faces in one walk, which must cross them in order along
+// the ray, each once, and give up as the step-by-step crossing did: at an opaque face wherever it
+// lies on the way, or past the crossing budget.
+TEST(OpticsAnalytic, ShadowRaysCrossEachTransparentFaceOnceInOrderAndStopAtAnOpaqueOne) {
+  const double cosTheta = 10 / std::sqrt(100 + 0.53 * 0.53);
+  Material clear = clearGlass(1.0f);
+  clear.kd = {1, 1, 1};
+  // Clear sheets let everything through, up to the budget of crossings; listed top first.
+  std::vector<float> heights;
+  for (int i = 0; i < kMaxShadowCrossings; ++i) heights.push_back(2.5f - 0.1f * static_cast<float>(i));
+  EXPECT_NEAR(floorUnder(clear, stackedSheets({heights.begin(), heights.end() - 1})).y, cosTheta, 1e-5);
+  EXPECT_EQ(floorUnder(clear, stackedSheets(heights)).y, 0.0f);
+  // Half-transparent sheets: 0.5 each, whatever the order of the faces in the mesh.
+  Material half = clear;
+  half.transparency = 0.5f;
+  EXPECT_NEAR(floorUnder(half, stackedSheets({1.2f, 2.0f, 1.6f})).y, cosTheta * 0.125, 1e-5);
+  // An opaque sheet blocks the light above, below or between transparent ones.
+  SceneDescription d = ambientOnly({emitter("floor", {0, 0, 0}), half, emitter("opaque", {0, 0, 0})});
+  d.materials[0].kd = {1, 1, 1};
+  d.ambient = {0, 0, 0};
+  d.render.maxDepth = 0;
+  d.lights = {{{0, 0, 10}, {1, 1, 1}, {1, 0, 0}}};
+  d.meshes.resize(3);
+  d.meshes[1].material = 1;
+  d.meshes[2].material = 2;
+  for (const float opaqueAt : {1.0f, 1.5f, 2.5f}) {
+    const RayProbe probe(
+        d, {test::squareMesh(-3, -3, 3, 3, 0), stackedSheets({1.2f, 2.0f}), stackedSheets({opaqueAt})});
+    EXPECT_EQ(probe.trace({0.53, 0, 5}, {0, 0, -1}).y, 0.0f) << "opaque sheet at " << opaqueAt;
+  }
+  // Two absorbing slabs, their faces listed from the lower slab's top down to the upper slab's
+  // bottom: each stretch is absorbed in the medium it runs in, so the crossings must be taken in
+  // order along the ray. The brute-force loop meets the faces in the mesh's order, the kd-tree
+  // walk roughly along the ray.
+  Material slab = clear;
+  slab.absorption = {1.0f, 2.0f, 0.5f};
+  Mesh slabs = inwardBox(0.5f, 0.5f, 0.1f);
+  for (Vec3& p : slabs.positions) p.z += 2.0f;
+  Mesh lower = inwardBox(0.5f, 0.5f, 0.1f);
+  for (Vec3& p : lower.positions) p.z += 1.0f;
+  const auto lowerFirst = static_cast<std::uint32_t>(slabs.positions.size());
+  slabs.positions.insert(slabs.positions.end(), lower.positions.begin(), lower.positions.end());
+  for (MeshFace face : lower.faces) {
+    for (std::uint32_t& v : face.vertex) v += lowerFirst;
+    slabs.faces.push_back(face);
+  }
+  std::reverse(slabs.faces.begin(), slabs.faces.end());  // each slab's top face before its bottom one
+  slabs.facePhysicalTag.assign(slabs.faces.size(), 1);
+  slabs.faceEntityTag.assign(slabs.faces.size(), 1);
+  slabs.faceEdgeMask.assign(slabs.faces.size(), kAllEdges);
+  for (const AccelKind accel : {AccelKind::KdTreeSah, AccelKind::Naive}) {
+    EXPECT_NEAR(floorUnder(slab, slabs, accel).y, cosTheta * std::exp(-2.0 * 0.4 / cosTheta), 1e-4)
+        << accelKindName(accel);
+  }
+  // A sheet of two triangles whose shared edge the shadow ray runs through (y = 0): both compute
+  // the same hit, and the light crosses the sheet once.
+  const Mesh twoTriangles = meshOf({{-0.5f, 0, 1}, {0.5f, 0, 1}, {0, 0.5f, 1}, {0, -0.5f, 1}},
+                                   {{{0, 1, 2, kNoVertex}}, {{1, 0, 3, kNoVertex}}});
+  EXPECT_NEAR(floorUnder(half, twoTriangles).y, cosTheta * 0.5, 1e-5);
 }
 
 // ---- depth 0 and energy -----------------------------------------------------------------------------

@@ -17,8 +17,6 @@ namespace {
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // Paths whose weight in the pixel falls below this cannot change an 8-bit value by more than half a step.
 constexpr float kMinPathWeight = 1.0f / 512.0f;
-// Transparent surfaces a shadow ray may cross before the light counts as blocked.
-constexpr int kMaxShadowCrossings = 16;
 
 // Tint of the light that passes through a transparent surface: its diffuse colour at full
 // brightness (white when it has none), so a blue glass casts a blue shadow.
@@ -154,59 +152,97 @@ const PrimaryAhead::Shadow* PrimaryAhead::shadowFrom(std::size_t light, const Ve
   return sameBits(shadow[light].from, origin) ? &shadow[light] : nullptr;
 }
 
-Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, TraceCounters& counters,
-                               const PrimaryAhead::Shadow* ahead) const {
-  if (!anyTransparent_) {
-    ++counters.rays;
-    // Traced ahead from this very origin (tracePrimaries): the query was made, and answered.
-    if (ahead != nullptr) return ahead->answer ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
-    Ray ray;
-    float tMin, tMax;
-    if (!shadowQuery(from, lightPosition, ray, tMin, tMax)) return {1, 1, 1};
-    return blocked(ray, tMin, tMax) ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
+bool Tracer::notesTransparent(const void* context, const Ray& ray, std::uint32_t face, float t) {
+  const CrossingNotes& notes = *static_cast<const CrossingNotes*>(context);
+  const Tracer& tracer = *notes.tracer;
+  if (tracer.anyMeshClips_ && !tracer.meshClipFilter_(ray, face, t)) return false;
+  const bool leaving = dot(tracer.scene_.geometry.faceNormals[face], ray.direction) > 0;
+  if (tracer.scene_.appearance.materials[tracer.crossingAt(face, !leaving).shown].transparency <= 0.0f)
+    return true;
+  // The walk visits every cell of the way when it keeps nothing, so it sees every hit, with the t
+  // the closest-hit test computes. A triangle cut into several leaves may be seen more than once,
+  // and a quad's two halves are one face: a face is noted once.
+  ShadowCrossings& noted = notes.lanes[&ray - notes.rays];
+  for (int i = 0; i < noted.count; ++i) {
+    if (noted.hits[static_cast<std::size_t>(i)].face == face) return false;
   }
-  Vec3 transmission{1, 1, 1};
-  Vec3 origin = from;
+  if (noted.count == static_cast<int>(noted.hits.size())) return true;  // far more faces than the budget
+  noted.hits[static_cast<std::size_t>(noted.count++)] = {t, face};
+  return false;
+}
+
+bool Tracer::orderCrossings(ShadowCrossings& crossings) {
+  // Along the ray, ties to the lower face as the closest-hit query breaks them; of faces at the very
+  // same t (a ray through the edge two of them share: both compute the same t to the bit) the
+  // light crosses one, as a query restarted past the first would not meet the other.
+  const auto first = crossings.hits.begin(), last = first + crossings.count;
+  std::sort(first, last, [](const ShadowCrossing& a, const ShadowCrossing& b) {
+    return a.t < b.t || (a.t == b.t && a.face < b.face);
+  });
+  crossings.count = static_cast<int>(
+      std::unique(first, last, [](const ShadowCrossing& a, const ShadowCrossing& b) { return a.t == b.t; }) -
+      first);
+  return crossings.count < kMaxShadowCrossings;
+}
+
+bool Tracer::transparentCrossings(const Ray& ray, float tMin, float tMax, ShadowCrossings& crossings) const {
+  crossings.count = 0;
+  const CrossingNotes notes{this, &ray, &crossings};
+  if (accelerator_.occluded(ray, tMin, tMax, HitFilter{&notes, &Tracer::notesTransparent})) return false;
+  return orderCrossings(crossings);
+}
+
+Vec3 Tracer::transmissionThrough(const Ray& ray, float start, float end,
+                                 std::span<const ShadowCrossing> crossings) const {
   // Inside a solid the light is also absorbed (Beer-Lambert). Each stretch of the way is in the
-  // medium its far end leaves (the side of the face hit says which), so a ray that starts inside a
-  // solid is absorbed from its start; past the last face, in the medium that face let it into.
+  // medium its far end leaves (the side of the face crossed says which), so a ray that starts
+  // inside a solid is absorbed from its start; past the last face, in the medium that face let it
+  // into.
   constexpr std::uint32_t kUnknown = SceneAppearance::kNoMaterial - 1;
   std::uint32_t medium = kUnknown;
-  for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
-    ++counters.rays;
-    const Ray ray(origin, lightPosition - origin);
-    const ClipInterval kept = clipRay(ray, scene_.clipping.planes);
-    const float start = std::max(kept.enter, 0.0f), end = std::min(kept.exit, 1.0f);
-    Hit hit;
-    bool hitSomething;
-    if (crossing == 0 && ahead != nullptr) {
-      hitSomething = ahead->answer;
-      hit = ahead->hit;
-    } else {
-      hitSomething = !kept.empty() && nearestHit(ray, kept.enter, end, hit);
-    }
-    if (!hitSomething) {
-      if (medium != kUnknown && start < end)
-        transmission *= beerLambert(absorptionOf(medium), (end - start) * length(ray.direction));
-      return transmission;
-    }
-    const Vec3 normal = scene_.geometry.faceNormals[hit.face];
-    const bool leaving = dot(normal, ray.direction) > 0;
-    const MediumCrossing media = crossingAt(hit.face, !leaving);
+  Vec3 transmission{1, 1, 1};
+  const float scale = length(ray.direction);
+  for (const ShadowCrossing& crossing : crossings) {
+    const bool leaving = dot(scene_.geometry.faceNormals[crossing.face], ray.direction) > 0;
+    const MediumCrossing media = crossingAt(crossing.face, !leaving);
     const Material& material = scene_.appearance.materials[media.shown];
-    if (material.transparency <= 0.0f) return {0, 0, 0};
-    if (scene_.geometry.faceBoundsSolid[hit.face]) medium = media.from;
+    const bool bounds = scene_.geometry.faceBoundsSolid[crossing.face];
+    if (bounds) medium = media.from;
     if (medium != kUnknown) {
       const Vec3 absorption = absorptionOf(medium);
       if (maxComponent(absorption) > 0.0f)
-        transmission *= beerLambert(absorption, std::max(hit.t - start, 0.0f) * length(ray.direction));
+        transmission *= beerLambert(absorption, std::max(crossing.t - start, 0.0f) * scale);
     }
-    if (scene_.geometry.faceBoundsSolid[hit.face]) medium = media.to;
+    if (bounds) medium = media.to;
     transmission *= transmissionTint(material) * splits_[media.shown].transmit;
     if (maxComponent(transmission) < kMinPathWeight) return {0, 0, 0};
-    origin = offsetRayOrigin(ray.at(hit.t), leaving ? normal : -normal);
+    start = crossing.t;
   }
-  return {0, 0, 0};
+  if (medium != kUnknown && start < end)
+    transmission *= beerLambert(absorptionOf(medium), (end - start) * scale);
+  return transmission;
+}
+
+Vec3 Tracer::lightTransmission(const Vec3& from, const Vec3& lightPosition, TraceCounters& counters,
+                               const PrimaryAhead::Shadow* ahead) const {
+  ++counters.rays;
+  // Traced ahead from this very origin (tracePrimaries): the query was made, and answered.
+  if (ahead != nullptr && ahead->blocked) return {0, 0, 0};
+  Ray ray;
+  float tMin, tMax;
+  if (!anyTransparent_) {
+    if (ahead != nullptr) return {1, 1, 1};
+    if (!shadowQuery(from, lightPosition, ray, tMin, tMax)) return {1, 1, 1};
+    return blocked(ray, tMin, tMax) ? Vec3{0, 0, 0} : Vec3{1, 1, 1};
+  }
+  // Every face on the way in one walk: an opaque one blocks the light, transparent ones filter it.
+  if (!shadowQuery(from, lightPosition, ray, tMin, tMax)) return {1, 1, 1};
+  if (ahead != nullptr)
+    return transmissionThrough(ray, std::max(tMin, 0.0f), tMax, {ahead->crossings, ahead->crossingCount});
+  ShadowCrossings crossings;
+  if (!transparentCrossings(ray, tMin, tMax, crossings)) return {0, 0, 0};
+  return transmissionThrough(ray, std::max(tMin, 0.0f), tMax,
+                             {crossings.hits.data(), static_cast<std::size_t>(crossings.count)});
 }
 
 Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Material& material,

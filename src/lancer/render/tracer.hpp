@@ -2,6 +2,7 @@
 // lighting model with shadow rays, then mirror reflection and refraction up to a depth.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <span>
 #include <vector>
@@ -47,26 +48,39 @@ struct MediumCrossing {
                         // transparent volume by an interface
 };
 
+// Transparent surfaces a shadow ray may cross before the light counts as blocked.
+inline constexpr int kMaxShadowCrossings = 16;
+
+// A transparent face on a shadow ray: where (ray parameter) and which.
+struct ShadowCrossing {
+  float t;
+  std::uint32_t face;
+};
+
 // Shadow queries traced ahead for the first kPacketLights lights of a scene.
 inline constexpr int kPacketLights = 8;
 
 // What Tracer::tracePrimaries traced ahead, in packets, for one primary ray: its first query, and
-// from the point it hit, the first shadow query towards each light. The tracer takes an answer only
+// from the point it hit, the shadow query towards each light. The tracer takes an answer only
 // for the very query it was traced for (a shadow ray from the same origin, to the bit), so the
 // image is the one single rays give.
 struct PrimaryAhead {
   bool hitKnown = false;  // `hit`/`firstHit` answer the ray's first closest-hit query
   bool hit = false;
   bool surfaceKnown = false;       // `surface` is makeSurfacePoint of the ray and firstHit
-  std::uint32_t shadowsKnown = 0;  // bit l: shadow[l] holds the first shadow query towards light l
+  std::uint32_t shadowsKnown = 0;  // bit l: shadow[l] answers the shadow query towards light l
   Hit firstHit;
   union {
     SurfacePoint surface;  // only when surfaceKnown
   };
+  // Transparent faces a shadow ray crossed that a record keeps; a lane that crossed more is left
+  // to its single ray (the same walk, the same answer).
+  static constexpr int kCrossingsKept = 4;
   struct Shadow {
-    Vec3 from;    // the origin the query was traced from
-    bool answer;  // blocked (opaque scenes), or the closest-hit query hit (`hit`)
-    Hit hit;
+    Vec3 from;                   // the origin the query was traced from
+    bool blocked;                // by an opaque face (or, with transparent faces, past the crossing budget)
+    std::uint8_t crossingCount;  // scenes with transparent faces: the faces crossed,
+    ShadowCrossing crossings[kCrossingsKept];  // in order along the ray
   };
   // Left unconstructed, like `surface` (a packet's worth is made per sample, and initialising them
   // all cost 5% of examples/demo.toml): only those of shadowsKnown are written and read.
@@ -167,9 +181,37 @@ class Tracer {
                   TraceCounters& counters, const PrimaryAhead* ahead = nullptr) const;
   // Fraction of the light that reaches `from` (0 when blocked by an opaque face; transparent faces
   // filter it by their transparency and tint, solids also by their absorption).
-  // `ahead`: the first query, when traced ahead from `from`.
+  // `ahead`: the query, when traced ahead from `from` (tracePrimaries). With transparent faces, one
+  // any-hit walk notes the faces on the way (transparentCrossings), then they are crossed in order.
   Vec3 lightTransmission(const Vec3& from, const Vec3& lightPosition, TraceCounters& counters,
                          const PrimaryAhead::Shadow* ahead = nullptr) const;
+  // The transparent faces one shadow query noted (notesTransparent), as many as its filter saw: a
+  // face once, but two faces at the very same t both.
+  struct ShadowCrossings {
+    std::array<ShadowCrossing, 2 * kMaxShadowCrossings> hits;
+    int count;
+  };
+  // What the filter of a shadow query writes to: lane i's ray is rays[i] (a single ray: lane 0),
+  // its notes lanes[i]. The queries pass the filter each ray by reference, a packet's lane as its
+  // own packet.ray[i] (accel/hit_filter.hpp).
+  struct CrossingNotes {
+    const Tracer* tracer;
+    const Ray* rays;
+    ShadowCrossings* lanes;
+  };
+  // The filter: refuses a transparent face, noting it; keeps an opaque one, which ends the walk:
+  // the light is blocked whatever lies before it (and a face past the room for notes).
+  static bool notesTransparent(const void* notes, const Ray& ray, std::uint32_t face, float t);
+  // Puts a query's notes in order along the ray, one face per t; false when the light crosses too
+  // many faces to get through.
+  static bool orderCrossings(ShadowCrossings& crossings);
+  // The transparent faces on `ray` in (tMin, tMax), in order, from one any-hit walk; false when the
+  // light is blocked (an opaque face on the way, or too many faces).
+  bool transparentCrossings(const Ray& ray, float tMin, float tMax, ShadowCrossings& crossings) const;
+  // The light left after crossing `crossings` on `ray` (in order) up to ray parameter `end`, the
+  // way starting at `start` outside every known medium.
+  Vec3 transmissionThrough(const Ray& ray, float start, float end,
+                           std::span<const ShadowCrossing> crossings) const;
   // The shadow ray from `from` to `lightPosition` and the interval its first query covers; false
   // when lightTransmission makes no query (the clip planes remove the whole way).
   bool shadowQuery(const Vec3& from, const Vec3& lightPosition, Ray& ray, float& tMin, float& tMax) const;

@@ -83,21 +83,35 @@ void Tracer::traceAhead(std::span<const Ray, kPacketSize> rays, std::uint32_t ac
       traced |= 1u << i;
     }
     if (traced == 0) continue;
-    std::uint32_t answered;
     if (!anyTransparent_) {
-      answered = anyMeshClips_ ? accelerator_.occluded(shadow, traced, meshClipFilter_)
-                               : accelerator_.occluded(shadow, traced);
-    } else {
-      answered = anyMeshClips_ ? accelerator_.intersect(shadow, traced, meshClipFilter_, hits)
-                               : accelerator_.intersect(shadow, traced, hits);
+      const std::uint32_t blocked = anyMeshClips_ ? accelerator_.occluded(shadow, traced, meshClipFilter_)
+                                                  : accelerator_.occluded(shadow, traced);
+      for (std::uint32_t lanes = traced; lanes != 0; lanes &= lanes - 1) {
+        const int i = std::countr_zero(lanes);
+        PrimaryAhead::Shadow& answer = ahead[i].shadow[l];
+        ahead[i].shadowsKnown |= 1u << l;
+        answer.from = from[i];
+        answer.blocked = (blocked >> i & 1u) != 0;
+      }
+      continue;
     }
+    // The walk lightTransmission makes for a single ray, lane by lane in one packet query.
+    ShadowCrossings notes[kPacketSize];
+    for (std::uint32_t lanes = traced; lanes != 0; lanes &= lanes - 1)
+      notes[std::countr_zero(lanes)].count = 0;
+    const CrossingNotes context{this, shadow.ray, notes};
+    const std::uint32_t blocked =
+        accelerator_.occluded(shadow, traced, HitFilter{&context, &Tracer::notesTransparent});
     for (std::uint32_t lanes = traced; lanes != 0; lanes &= lanes - 1) {
       const int i = std::countr_zero(lanes);
+      const bool through = (blocked >> i & 1u) == 0 && orderCrossings(notes[i]);
+      if (through && notes[i].count > PrimaryAhead::kCrossingsKept) continue;  // left to the single ray
       PrimaryAhead::Shadow& answer = ahead[i].shadow[l];
       ahead[i].shadowsKnown |= 1u << l;
       answer.from = from[i];
-      answer.answer = (answered >> i & 1u) != 0;
-      if (anyTransparent_ && answer.answer) answer.hit = hits[i];
+      answer.blocked = !through;
+      answer.crossingCount = static_cast<std::uint8_t>(through ? notes[i].count : 0);
+      std::copy_n(notes[i].hits.begin(), answer.crossingCount, answer.crossings);
     }
   }
 }
