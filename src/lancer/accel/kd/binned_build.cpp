@@ -117,6 +117,26 @@ struct Partitioner {
   }
 
   void operator()(const Ref* refs, std::size_t n, Ref* right, Ref* left, Children& out) const {
+    Box usedLeft, usedRight;
+    const auto [nl, nr] = partition<true>(refs, n, right, left, usedLeft, usedRight);
+    out.left.used.extend(usedLeft);
+    out.right.used.extend(usedRight);
+    out.leftCount += nl;
+    out.rightCount += nr;
+  }
+
+  // The same sides for a small cell's references, without the bounds of each side (small cells'
+  // splits do not use them) or prefetching (their triangles are few and near). Returns the counts.
+  std::pair<std::size_t, std::size_t> small(const Ref* refs, std::size_t n, Ref* right, Ref* left) const {
+    Box unused;
+    return partition<false>(refs, n, right, left, unused, unused);
+  }
+
+  // The loop of both: with kBig, prefetching straddlers' triangles and the bounds of each side's
+  // references (in usedLeft, usedRight). Returns the counts.
+  template <bool kBig>
+  std::pair<std::size_t, std::size_t> partition(const Ref* refs, std::size_t n, Ref* right, Ref* left,
+                                                Box& usedLeft, Box& usedRight) const {
     const int k = split.axis;
     const float p = split.pos;
     const PackedTriangle* triangles = input.triangles.data();
@@ -132,7 +152,9 @@ struct Partitioner {
       prefetchLine(straddles ? triangle : self);
       prefetchLine(straddles ? triangle + sizeof(PackedTriangle) - 1 : self);
     };
-    for (std::size_t i = 0; i < std::min(n, kAhead); ++i) prefetch(i);
+    if constexpr (kBig) {
+      for (std::size_t i = 0; i < std::min(n, kAhead); ++i) prefetch(i);
+    }
     std::size_t nl = 0, nr = 0;
 #if defined(__AVX2__)
     // Bounds of each side's references as vectors: lanes 0-2 of the minimum, 3-5 of the maximum.
@@ -146,11 +168,11 @@ struct Partitioner {
       minRight = _mm256_min_ps(minRight, v);
       maxRight = _mm256_max_ps(maxRight, v);
     };
-#else
-    Box usedLeft, usedRight;
 #endif
     for (std::size_t i = 0; i < n; ++i) {
-      if (i + kAhead < n) prefetch(i + kAhead);
+      if constexpr (kBig) {
+        if (i + kAhead < n) prefetch(i + kAhead);
+      }
       const float lo = refs[i].lo[k], hi = refs[i].hi[k];
       const bool planar = lo == hi && lo == p;
       const bool toLeft = planar ? split.planarLeft : hi <= p;
@@ -161,16 +183,18 @@ struct Partitioner {
         const __m256 v = _mm256_load_ps(refs[i].lo);
         _mm256_store_ps(left[nl].lo, v);
         _mm256_store_ps(right[nr].lo, v);
-        const __m256 side = _mm256_castsi256_ps(_mm256_set1_epi32(toLeft ? -1 : 0));
-        minLeft = _mm256_blendv_ps(minLeft, _mm256_min_ps(minLeft, v), side);
-        maxLeft = _mm256_blendv_ps(maxLeft, _mm256_max_ps(maxLeft, v), side);
-        minRight = _mm256_blendv_ps(_mm256_min_ps(minRight, v), minRight, side);
-        maxRight = _mm256_blendv_ps(_mm256_max_ps(maxRight, v), maxRight, side);
+        if constexpr (kBig) {
+          const __m256 side = _mm256_castsi256_ps(_mm256_set1_epi32(toLeft ? -1 : 0));
+          minLeft = _mm256_blendv_ps(minLeft, _mm256_min_ps(minLeft, v), side);
+          maxLeft = _mm256_blendv_ps(maxLeft, _mm256_max_ps(maxLeft, v), side);
+          minRight = _mm256_blendv_ps(_mm256_min_ps(minRight, v), minRight, side);
+          maxRight = _mm256_blendv_ps(_mm256_max_ps(maxRight, v), maxRight, side);
+        }
 #else
         const Ref r = refs[i];
         left[nl] = r;
         right[nr] = r;
-        (toLeft ? usedLeft : usedRight).extend(r);
+        if constexpr (kBig) (toLeft ? usedLeft : usedRight).extend(r);
 #endif
         nl += toLeft;
         nr += toRight;
@@ -181,72 +205,40 @@ struct Partitioner {
       cut(refs[i], l, rr, keepLeft, keepRight);
       if (keepLeft) {
         left[nl++] = l;
+        if constexpr (kBig) {
 #if defined(__AVX2__)
-        extendLeft(_mm256_load_ps(l.lo));
+          extendLeft(_mm256_load_ps(l.lo));
 #else
-        usedLeft.extend(l);
+          usedLeft.extend(l);
 #endif
+        }
       }
       if (keepRight) {
         right[nr++] = rr;
+        if constexpr (kBig) {
 #if defined(__AVX2__)
-        extendRight(_mm256_load_ps(rr.lo));
+          extendRight(_mm256_load_ps(rr.lo));
 #else
-        usedRight.extend(rr);
+          usedRight.extend(rr);
 #endif
+        }
       }
     }
 #if defined(__AVX2__)
-    Box usedLeft, usedRight;
-    alignas(32) float minL[8], maxL[8], minR[8], maxR[8];
-    _mm256_store_ps(minL, minLeft);
-    _mm256_store_ps(maxL, maxLeft);
-    _mm256_store_ps(minR, minRight);
-    _mm256_store_ps(maxR, maxRight);
-    for (int j = 0; j < 3; ++j) {
-      usedLeft.lo[j] = minL[j];
-      usedLeft.hi[j] = maxL[3 + j];
-      usedRight.lo[j] = minR[j];
-      usedRight.hi[j] = maxR[3 + j];
-    }
-#endif
-    out.left.used.extend(usedLeft);
-    out.right.used.extend(usedRight);
-    out.leftCount += nl;
-    out.rightCount += nr;
-  }
-
-  // The same sides for a small cell's references, without the bounds of each side (small cells'
-  // splits do not use them) or prefetching (their triangles are few and near). Returns the counts.
-  std::pair<std::size_t, std::size_t> small(const Ref* refs, std::size_t n, Ref* right, Ref* left) const {
-    const int k = split.axis;
-    const float p = split.pos;
-    std::size_t nl = 0, nr = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const float lo = refs[i].lo[k], hi = refs[i].hi[k];
-      const bool planar = lo == hi && lo == p;
-      const bool toLeft = planar ? split.planarLeft : hi <= p;
-      const bool toRight = planar ? !split.planarLeft : lo >= p;
-      if (toLeft || toRight) {
-#if defined(__AVX2__)
-        const __m256 v = _mm256_load_ps(refs[i].lo);
-        _mm256_store_ps(left[nl].lo, v);
-        _mm256_store_ps(right[nr].lo, v);
-#else
-        const Ref r = refs[i];
-        left[nl] = r;
-        right[nr] = r;
-#endif
-        nl += toLeft;
-        nr += toRight;
-        continue;
+    if constexpr (kBig) {
+      alignas(32) float minL[8], maxL[8], minR[8], maxR[8];
+      _mm256_store_ps(minL, minLeft);
+      _mm256_store_ps(maxL, maxLeft);
+      _mm256_store_ps(minR, minRight);
+      _mm256_store_ps(maxR, maxRight);
+      for (int j = 0; j < 3; ++j) {
+        usedLeft.lo[j] = minL[j];
+        usedLeft.hi[j] = maxL[3 + j];
+        usedRight.lo[j] = minR[j];
+        usedRight.hi[j] = maxR[3 + j];
       }
-      Ref l, rr;
-      bool keepLeft, keepRight;
-      cut(refs[i], l, rr, keepLeft, keepRight);
-      if (keepLeft) left[nl++] = l;
-      if (keepRight) right[nr++] = rr;
     }
+#endif
     return {nl, nr};
   }
 

@@ -188,18 +188,11 @@ __m128 roundDown4(__m256d value) {
   return _mm_blendv_ps(f, _mm_castsi128_ps(down), wrong);
 }
 
+// Up is down mirrored: negating is exact, and the float just above x is minus the one just below -x
+// (+0 goes to -0 and back, a value that rounds to zero goes up to denorm_min).
 __m128 roundUp4(__m256d value) {
-  const __m128 f = _mm256_cvtpd_ps(value);
-  const __m128 wrong = wrongWay(_mm256_cmp_pd(_mm256_cvtps_pd(f), value, _CMP_LT_OQ));
-  if (_mm_movemask_ps(wrong) == 0) return f;
-  const __m128i bits = _mm_castps_si128(f);
-  const __m128 zero = _mm_setzero_ps();
-  __m128i up = _mm_set1_epi32(1);  // denorm_min, above +-0
-  up = _mm_castps_si128(_mm_blendv_ps(
-      _mm_castsi128_ps(up), _mm_castsi128_ps(_mm_add_epi32(bits, _mm_set1_epi32(1))), _mm_cmpgt_ps(f, zero)));
-  up = _mm_castps_si128(_mm_blendv_ps(
-      _mm_castsi128_ps(up), _mm_castsi128_ps(_mm_sub_epi32(bits, _mm_set1_epi32(1))), _mm_cmplt_ps(f, zero)));
-  return _mm_blendv_ps(f, _mm_castsi128_ps(up), wrong);
+  const __m128 mirrored = roundDown4(_mm256_xor_pd(value, _mm256_set1_pd(-0.0)));
+  return _mm_xor_ps(mirrored, _mm_set1_ps(-0.0f));
 }
 
 }  // namespace
