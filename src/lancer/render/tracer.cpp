@@ -177,7 +177,7 @@ bool Tracer::orderCrossings(ShadowCrossings& crossings) {
   // light crosses one, as a query restarted past the first would not meet the other.
   const auto first = crossings.hits.begin(), last = first + crossings.count;
   std::sort(first, last, [](const ShadowCrossing& a, const ShadowCrossing& b) {
-    return a.t < b.t || (a.t == b.t && a.face < b.face);
+    return closerThan(a.t, a.face, Hit{b.t, b.face});
   });
   crossings.count = static_cast<int>(
       std::unique(first, last, [](const ShadowCrossing& a, const ShadowCrossing& b) { return a.t == b.t; }) -

@@ -83,35 +83,34 @@ void Tracer::traceAhead(std::span<const Ray, kPacketSize> rays, std::uint32_t ac
       traced |= 1u << i;
     }
     if (traced == 0) continue;
-    if (!anyTransparent_) {
-      const std::uint32_t blocked = anyMeshClips_ ? accelerator_.occluded(shadow, traced, meshClipFilter_)
-                                                  : accelerator_.occluded(shadow, traced);
-      for (std::uint32_t lanes = traced; lanes != 0; lanes &= lanes - 1) {
-        const int i = std::countr_zero(lanes);
-        PrimaryAhead::Shadow& answer = ahead[i].shadow[l];
-        ahead[i].shadowsKnown |= 1u << l;
-        answer.from = from[i];
-        answer.blocked = (blocked >> i & 1u) != 0;
-      }
-      continue;
-    }
-    // The walk lightTransmission makes for a single ray, lane by lane in one packet query.
+    // With transparent faces, the walk lightTransmission makes for a single ray, lane by lane in one
+    // packet query: each lane notes the faces it crosses.
     ShadowCrossings notes[kPacketSize];
-    for (std::uint32_t lanes = traced; lanes != 0; lanes &= lanes - 1)
-      notes[std::countr_zero(lanes)].count = 0;
-    const CrossingNotes context{this, shadow.ray, notes};
-    const std::uint32_t blocked =
-        accelerator_.occluded(shadow, traced, HitFilter{&context, &Tracer::notesTransparent});
+    std::uint32_t blocked;
+    if (!anyTransparent_) {
+      blocked = anyMeshClips_ ? accelerator_.occluded(shadow, traced, meshClipFilter_)
+                              : accelerator_.occluded(shadow, traced);
+    } else {
+      for (std::uint32_t lanes = traced; lanes != 0; lanes &= lanes - 1)
+        notes[std::countr_zero(lanes)].count = 0;
+      const CrossingNotes context{this, shadow.ray, notes};
+      blocked = accelerator_.occluded(shadow, traced, HitFilter{&context, &Tracer::notesTransparent});
+    }
     for (std::uint32_t lanes = traced; lanes != 0; lanes &= lanes - 1) {
       const int i = std::countr_zero(lanes);
-      const bool through = (blocked >> i & 1u) == 0 && orderCrossings(notes[i]);
-      if (through && notes[i].count > PrimaryAhead::kCrossingsKept) continue;  // left to the single ray
+      bool through = (blocked >> i & 1u) == 0;
+      int crossed = 0;
+      if (anyTransparent_ && through) {
+        through = orderCrossings(notes[i]);
+        crossed = through ? notes[i].count : 0;
+        if (crossed > PrimaryAhead::kCrossingsKept) continue;  // left to the single ray
+      }
       PrimaryAhead::Shadow& answer = ahead[i].shadow[l];
       ahead[i].shadowsKnown |= 1u << l;
       answer.from = from[i];
       answer.blocked = !through;
-      answer.crossingCount = static_cast<std::uint8_t>(through ? notes[i].count : 0);
-      std::copy_n(notes[i].hits.begin(), answer.crossingCount, answer.crossings);
+      answer.crossingCount = static_cast<std::uint8_t>(crossed);
+      std::copy_n(notes[i].hits.begin(), crossed, answer.crossings);
     }
   }
 }
