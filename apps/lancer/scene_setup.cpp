@@ -25,7 +25,6 @@
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/render_overrides.hpp"
 #include "lancer/scene/scene_loader.hpp"
-#include "lancer/util/memory_budget.hpp"
 #include "lancer/util/stopwatch.hpp"
 
 namespace lancer::cli {
@@ -59,26 +58,6 @@ bool isMeshFile(const std::string& path) {
 template <std::size_t N>
 std::vector<std::string> choices(const std::array<std::string_view, N>& names) {
   return {names.begin(), names.end()};
-}
-
-// Checked before loading any mesh. Whole: the float image and its 8-bit copy for the writer.
-// Bands: the bands renderBands keeps, plus the writer's encoded row and libpng's and zlib's state
-// (well under kWriterStateBytes), whatever the height.
-void requireImageMemory(const RenderSettings& settings, int threads, ImageBuffer buffer,
-                        const std::string& input) {
-  constexpr std::uint64_t kWriterStateBytes = 1 << 20;
-  const std::uint64_t pixels =
-      static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
-  if (buffer == ImageBuffer::Whole) {
-    requireMemory(saturatingProduct(pixels, sizeof(Rgba) + 4), SourceLocation{input},
-                  fmt::format("a {}x{} image", settings.width, settings.height));
-    return;
-  }
-  const std::uint64_t bytes = bandMemoryBytes(settings.width, settings.height, threads) +
-                              static_cast<std::uint64_t>(settings.width) * 4 + kWriterStateBytes;
-  requireMemory(
-      bytes, SourceLocation{input},
-      fmt::format("a {}x{} image rendered in bands of {} rows", settings.width, settings.height, kTileSize));
 }
 
 }  // namespace
@@ -122,9 +101,8 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
                    "nesting), normals, scene, kd build");
 }
 
-PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides,
-                           const ImageBufferChoice& imageBuffer) {
-  const Stopwatch load;
+PreparedRender prepareScene(const std::string& input, const SceneOverrides& overrides,
+                            const ImageBufferChoice& imageBuffer) {
   std::optional<UpAxis> up;
   if (!overrides.up.empty()) {
     up = parseUpAxis(overrides.up);
@@ -132,16 +110,15 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
       throw InputError(SourceLocation{"--up"},
                        fmt::format("'{}' is not an axis: use x, y, z, -x, -y or -z", overrides.up));
   }
-  SceneDescription description;
-  StageTimes stages;
-  std::vector<Mesh> preloaded;
+  RenderRequest request;
+  SceneDescription& description = request.description;
   if (isMeshFile(input)) {
     const Stopwatch read;
-    preloaded.push_back(readMsh(input, overrides.threads));
-    stages.add("read", read.seconds());
-    if (const std::string reason = nothingToDrawReason(preloaded.front()); !reason.empty())
+    request.quickLookMesh = readMsh(input, overrides.threads);
+    request.stages.add("read", read.seconds());
+    if (const std::string reason = nothingToDrawReason(*request.quickLookMesh); !reason.empty())
       throw InputError(SourceLocation{input}, "nothing to draw: " + reason);
-    description = quickLookScene(input, preloaded.front(), up);
+    description = quickLookScene(input, *request.quickLookMesh, up);
   } else {
     description = loadScene(input);
     if (up) applyUpAxis(description.camera, *up);
@@ -151,9 +128,9 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
     std::string path = *overrides.gmshView;
     if (path.empty() && !description.meshes.empty()) path = description.meshes.front().file + ".opt";
     description.camera.gmshView = readGmshView(path);
-    if (!preloaded.empty()) placeQuickLookLights(description, preloaded.front());  // lit from gmsh's side
+    if (request.quickLookMesh) placeQuickLookLights(description, *request.quickLookMesh);  // from gmsh's side
   }
-  RenderOverrides applied;
+  RenderOverrides& applied = request.overrides;
   applied.width = overrides.width;
   applied.height = overrides.height;
   applied.samples = overrides.samples;
@@ -164,23 +141,13 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
   if (!overrides.shading.empty())
     applied.shading = enumFromName<ShadingMode>(kShadingNames, overrides.shading);
   applied.edges = overrides.edges;
-  applyRenderOverrides(description, applied, preloaded.empty() ? nullptr : &preloaded.front());
-  requireImageMemory(description.render, overrides.threads,
-                     imageBuffer ? imageBuffer(description.render) : ImageBuffer::Whole, input);
-  Scene scene = preloaded.empty() ? buildScene(description, overrides.threads, &stages)
-                                  : buildScene(description, std::move(preloaded), overrides.threads, &stages);
+  request.accel = parseAccelKind(overrides.accel);
+  request.threads = overrides.threads;
+  request.imageBuffer = imageBuffer;
+  PreparedRender prepared = prepareRender(std::move(request));
   if (!overrides.quiet)
-    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
-  const double loadSeconds = load.seconds();
-  const Stopwatch build;
-  KdBuildOptions buildOptions;
-  buildOptions.threads = overrides.threads;  // --threads bounds the build too, not only the trace
-  Accelerator accelerator = Accelerator::build(scene.geometry.positions, scene.geometry.faces,
-                                               parseAccelKind(overrides.accel), buildOptions);
-  const double buildSeconds = build.seconds();
-  stages.add("kd build", buildSeconds);
-  return PreparedScene{std::move(description), std::move(scene), std::move(accelerator), loadSeconds,
-                       buildSeconds,           std::move(stages)};
+    for (const std::string& warning : prepared.scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
+  return prepared;
 }
 
 std::string formatStageTimes(const StageTimes& stages) {
