@@ -21,7 +21,7 @@ struct SceneOverrides {
   std::optional<int> width, height, samples, maxDepth;
   std::string shading;
   std::string sampler;
-  std::string accel = "kdtree-sah";
+  std::string accel{kDefaultAccelName};
   int threads = 0;
   bool srgb = false;
   bool edges = false;  // draw element edges on every mesh that does not set its own
@@ -40,7 +40,7 @@ struct PreparedScene {
   Accelerator accelerator;
   double loadSeconds = 0;
   double buildSeconds = 0;
-  StageTimes stages;  // read, orient, normals, scene, kd build: where loadSeconds + buildSeconds went
+  StageTimes stages;  // read, orient, normals, scene, accel build: where loadSeconds + buildSeconds went
 };
 
 // "timings: read 0.052 s, orient 0.081 s, ..." (--timings).

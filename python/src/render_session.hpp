@@ -45,7 +45,7 @@ PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides
 inline Accelerator buildSceneAccelerator(const Scene& scene, int threads) {
   KdBuildOptions options;
   options.threads = threads;
-  return Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah, options);
+  return Accelerator::build(scene.geometry.positions, scene.geometry.faces, kDefaultAccel, options);
 }
 inline const std::vector<std::string>& sceneWarnings(const Scene& scene) { return scene.warnings; }
 inline std::size_t sceneLightCount(const Scene& scene) { return scene.appearance.lights.size(); }
