@@ -79,8 +79,8 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
   command
       .add_option(
           "--accel", overrides.accel,
-          "Accelerator: kdtree-sah (default), kdtree-sah-exact (slower build, the quality reference), "
-          "kdtree-median or naive")
+          "Accelerator: bvh (default: the wide BVH), kdtree-sah (the kd-tree), kdtree-sah-exact (its slower "
+          "build, the quality reference), kdtree-median or naive (brute force)")
       ->check(CLI::IsMember(choices(kAccelNames)));
   command.add_option("--threads", overrides.threads, "Worker threads (default 0: all cores)")
       ->check(CLI::Range(0, kMaxThreads));
@@ -98,7 +98,7 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
   command.add_flag("--timings", overrides.timings,
                    "Print where the time before the first ray went: read, orient (shells, orientation, "
-                   "nesting), normals, scene, kd build");
+                   "nesting), normals, scene, accel build");
 }
 
 PreparedRender prepareScene(const std::string& input, const SceneOverrides& overrides,

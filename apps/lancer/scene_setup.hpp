@@ -22,7 +22,7 @@ struct SceneOverrides {
   std::optional<int> width, height, samples, maxDepth;
   std::string shading;
   std::string sampler;
-  std::string accel = "kdtree-sah";
+  std::string accel{kDefaultAccelName};
   int threads = 0;
   bool srgb = false;
   bool edges = false;  // draw element edges on every mesh that does not set its own

@@ -59,7 +59,7 @@ PreparedRender prepareRender(RenderRequest request) {
   const Stopwatch build;
   Accelerator accelerator = buildAccelerator(scene, request.accel, request.threads);
   const double buildSeconds = build.seconds();
-  stages.add("kd build", buildSeconds);
+  stages.add("accel build", buildSeconds);
 
   Camera camera = makeCamera(description.camera, scene, description.render);
   return PreparedRender{std::move(description),
