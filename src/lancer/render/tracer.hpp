@@ -11,6 +11,7 @@
 #include "lancer/accel/ray_packet.hpp"
 #include "lancer/render/camera.hpp"
 #include "lancer/render/edge_overlay.hpp"
+#include "lancer/render/feature_buffers.hpp"
 #include "lancer/render/outline_edges.hpp"
 #include "lancer/render/surface_point.hpp"
 #include "lancer/scene/scene.hpp"
@@ -110,6 +111,8 @@ class Tracer {
   // light traced as packets (ray_packet.hpp), then each shaded on its own.
   void tracePrimaries(std::span<const Ray, kPacketSize> rays, std::uint32_t active, bool parallelView,
                       std::span<TraceResult, kPacketSize> results, TraceCounters& counters) const;
+  // What a primary ray sees first, for the feature buffers (tracer_features.cpp): no lighting.
+  SurfaceFeatures surfaceFeatures(const Ray& ray) const;
 
  private:
   // What a ray brings back: its colour, how far it went to the first thing it saw (infinity on a
