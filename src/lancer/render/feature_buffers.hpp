@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "lancer/math/ray.hpp"
 #include "lancer/math/vec3.hpp"
 
 namespace lancer {
@@ -30,12 +31,21 @@ struct FeatureBuffers {
   }
 };
 
-// One camera sample's view of the first surface (Tracer::surfaceFeatures).
+// One camera sample's view of the first surface.
 struct SurfaceFeatures {
   Vec3 albedo{0, 0, 0};
   Vec3 normal{0, 0, 0};
   float depth = 0;
   bool hit = false;
 };
+
+class SceneQueries;
+class EdgePaint;
+
+// What `ray` sees first, as the integrators see it (cut views, caps, the shadow catcher, field
+// colours, drawn edges), without any light. `background`: the albedo of a miss and of the catcher;
+// `linearFieldColors`: field colours decoded to linear, as an sRGB render shows them.
+SurfaceFeatures surfaceFeatures(const SceneQueries& queries, const EdgePaint& paint, const Ray& ray,
+                                const Vec3& background, bool linearFieldColors);
 
 }  // namespace lancer

@@ -254,6 +254,7 @@ FeatureBuffers Renderer::renderFeatures(int threads) const {
   const int n = std::clamp(static_cast<int>(std::lround(std::sqrt(static_cast<double>(settings.samples)))), 1,
                            kMaxFeatureGrid);
   const float weight = 1.0f / static_cast<float>(n * n);
+  const EdgePaint paint(tracer_.queries().scene(), camera_.pixelFootprint());
   parallelFor(static_cast<std::size_t>(settings.height), threads, 4, [&](std::size_t row) {
     const int y = static_cast<int>(row);
     for (int x = 0; x < settings.width; ++x) {
@@ -264,8 +265,9 @@ FeatureBuffers Renderer::renderFeatures(int threads) const {
         for (int i = 0; i < n; ++i) {
           float dx = 0.5f, dy = 0.5f;
           gridSampleOffset(settings.sampler, n, i, j, x, y, dx, dy);
-          const SurfaceFeatures seen =
-              tracer_.surfaceFeatures(camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy));
+          const SurfaceFeatures seen = surfaceFeatures(
+              tracer_.queries(), paint, camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy),
+              settings.background, settings.srgb);
           albedo += seen.albedo;
           normal += seen.normal;
           if (seen.hit) {

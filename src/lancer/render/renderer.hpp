@@ -12,6 +12,7 @@
 
 #include "lancer/image/image.hpp"
 #include "lancer/render/camera.hpp"
+#include "lancer/render/feature_buffers.hpp"
 #include "lancer/render/tracer.hpp"
 
 namespace lancer {
