@@ -74,9 +74,9 @@ ExrLayerChoice parseAovs(const std::string& aovs, const std::string& output) {
   ExrLayerChoice choice;
   if (aovs.empty()) return choice;
   if (!isExr(output))
-    throw InputError(SourceLocation{"--aovs"},
-                     fmt::format("{} cannot hold albedo, normal or depth layers: write an .exr (-o NAME.exr)",
-                                 output));
+    throw InputError(
+        SourceLocation{"--aovs"},
+        fmt::format("{} cannot hold albedo, normal or depth layers: write an .exr (-o NAME.exr)", output));
   std::size_t start = 0;
   while (start <= aovs.size()) {
     const std::size_t comma = std::min(aovs.find(',', start), aovs.size());
@@ -88,8 +88,9 @@ ExrLayerChoice parseAovs(const std::string& aovs, const std::string& output) {
     else if (name == "depth")
       choice.depth = true;
     else
-      throw InputError(SourceLocation{"--aovs"},
-                       fmt::format("unknown layer '{}': use albedo, normal and depth, separated by commas", name));
+      throw InputError(
+          SourceLocation{"--aovs"},
+          fmt::format("unknown layer '{}': use albedo, normal and depth, separated by commas", name));
     start = comma + 1;
   }
   return choice;
@@ -319,8 +320,9 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
   addSceneOverrideOptions(*command, options->overrides);
   command->add_option("--legend", options->legend,
                       "Also write the colour bar of the first field-coloured mesh (color_by) to this image");
-  command->add_option("--aovs", options->aovs,
-                      "Layers of an .exr output beside the radiance: albedo, normal, depth (comma-separated)");
+  command->add_option(
+      "--aovs", options->aovs,
+      "Layers of an .exr output beside the radiance: albedo, normal, depth (comma-separated)");
   command->add_option("--pixel", options->pixel, "Trace only pixel x,y and print its value (debugging)");
   command->callback([options, &runner] { runner = [options] { return runRender(*options); }; });
 }

@@ -138,15 +138,17 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
       ->check(CLI::IsMember(choices(kAccelNames)));
   command.add_option("--threads", overrides.threads, "Worker threads (default 0: all cores)")
       ->check(CLI::Range(0, kMaxThreads));
-  CLI::Option* srgb = command.add_flag(
-      "--srgb", overrides.srgb, "Encode the output with the sRGB curve (the default; over a scene's linear encoding)");
+  CLI::Option* srgb =
+      command.add_flag("--srgb", overrides.srgb,
+                       "Encode the output with the sRGB curve (the default; over a scene's linear encoding)");
   command
       .add_flag("--linear", overrides.linear,
                 "Encode the output linearly, round(255 * I): the raw values of the lighting model, for tests")
       ->excludes(srgb);
   command.add_option("--tonemap", overrides.toneMap,
                      "Tone curve before the encoding: none (default, clip at 1), filmic (Hable) or aces");
-  command.add_option("--exposure", overrides.exposure, "Exposure in stops: radiance x 2^STOPS before the curve");
+  command.add_option("--exposure", overrides.exposure,
+                     "Exposure in stops: radiance x 2^STOPS before the curve");
   command.add_option("--bit-depth", overrides.bitDepth, "Bits per sample: 8 (default) or 16 (PNG only)");
   command.add_flag("--denoise", overrides.denoise,
                    "Filter the noise with the edge-aware denoiser guided by albedo, normal and depth");

@@ -88,9 +88,10 @@ TEST(Png16, OtherFormatsRefuseSixteenBits) {
   const test::ScratchFolder folder;
   ImageWriteOptions options;
   options.bitDepth = 16;
-  EXPECT_EQ(test::messageOf([&] { writeImage(folder.file("a.bmp"), ramp(), options); }),
-            folder.file("a.bmp") +
-                ": error: 16-bit samples are written to PNG only: give -o NAME.png, or leave --bit-depth at 8");
+  EXPECT_EQ(
+      test::messageOf([&] { writeImage(folder.file("a.bmp"), ramp(), options); }),
+      folder.file("a.bmp") +
+          ": error: 16-bit samples are written to PNG only: give -o NAME.png, or leave --bit-depth at 8");
   options.bitDepth = 12;
   EXPECT_EQ(test::messageOf([&] { writeImage(folder.file("a.png"), ramp(), options); }),
             folder.file("a.png") + ": error: bit depth 12 is not supported: use 8 or 16");
@@ -107,7 +108,8 @@ TEST(Exr, RoundTripsRadianceAndLayers) {
   for (std::size_t i = 0; i < n; ++i) {
     layers.albedo.push_back({0.1f * static_cast<float>(i % 7), 0.5f, 1.0f});
     layers.normal.push_back({0, 0, i % 2 == 0 ? 1.0f : -1.0f});
-    layers.depth.push_back(i % 5 == 0 ? std::numeric_limits<float>::infinity() : static_cast<float>(i) * 0.5f);
+    layers.depth.push_back(i % 5 == 0 ? std::numeric_limits<float>::infinity()
+                                      : static_cast<float>(i) * 0.5f);
   }
   writeExr(folder.file("a.exr"), image, layers);
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"a.exr"});  // no temporary file left

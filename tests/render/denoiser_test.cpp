@@ -112,7 +112,9 @@ TEST(Denoiser, KeepsACreaseBetweenTwoFaces) {
 }
 
 TEST(Denoiser, KeepsASilhouetteAgainstTheBackground) {
-  Side background{.radiance = 0.46f, .albedo = 0.7f, .depth = std::numeric_limits<float>::infinity(),
+  Side background{.radiance = 0.46f,
+                  .albedo = 0.7f,
+                  .depth = std::numeric_limits<float>::infinity(),
                   .normal = {0, 0, 0}};
   expectEdgeKept(Side{.radiance = 0.5f}, background, 0.04f);
 }

@@ -64,9 +64,10 @@ void writeExr(const std::string& path, const Image& image, const ExrLayers& laye
     header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
     frame.insert(names[c], floatSlice(base + c * sizeof(float), kRgbaStride, row));
   }
-  const auto addVec3 = [&](const std::vector<Vec3>& layer, const char* const (&channels)[3]) {
+  const auto addVec3 = [&](const std::vector<Vec3>& layer, const char* const(&channels)[3]) {
     if (layer.empty()) return;
-    if (layer.size() != pixels) throw std::invalid_argument("writeExr: a layer's size differs from the image's");
+    if (layer.size() != pixels)
+      throw std::invalid_argument("writeExr: a layer's size differs from the image's");
     const auto* data = reinterpret_cast<const char*>(layer.data());
     for (int c = 0; c < 3; ++c) {
       header.channels().insert(channels[c], Imf::Channel(Imf::FLOAT));
@@ -105,15 +106,17 @@ Image readExr(const std::string& path, ExrLayers* layers) {
     Image image(width, height);
     const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     // Slices are addressed from the data window's origin (OpenEXR's convention).
-    const std::ptrdiff_t origin = static_cast<std::ptrdiff_t>(window.min.x) +
-                                  static_cast<std::ptrdiff_t>(window.min.y) * width;
+    const std::ptrdiff_t origin =
+        static_cast<std::ptrdiff_t>(window.min.x) + static_cast<std::ptrdiff_t>(window.min.y) * width;
     Imf::FrameBuffer frame;
-    char* base = reinterpret_cast<char*>(image.pixels().data()) - origin * static_cast<std::ptrdiff_t>(kRgbaStride);
+    char* base =
+        reinterpret_cast<char*>(image.pixels().data()) - origin * static_cast<std::ptrdiff_t>(kRgbaStride);
     const char* names[4] = {"R", "G", "B", "A"};
     for (int c = 0; c < 4; ++c)
-      frame.insert(names[c], floatSlice(base + c * sizeof(float), kRgbaStride, kRgbaStride * width, c == 3 ? 1.0 : 0.0));
+      frame.insert(names[c], floatSlice(base + c * sizeof(float), kRgbaStride, kRgbaStride * width,
+                                        c == 3 ? 1.0 : 0.0));
     const Imf::ChannelList& channels = in.header().channels();
-    const auto readVec3 = [&](std::vector<Vec3>& layer, const char* const (&names3)[3]) {
+    const auto readVec3 = [&](std::vector<Vec3>& layer, const char* const(&names3)[3]) {
       if (channels.findChannel(names3[0]) == nullptr) return;
       layer.assign(pixels, Vec3{0, 0, 0});
       char* data = reinterpret_cast<char*>(layer.data()) - origin * static_cast<std::ptrdiff_t>(sizeof(Vec3));
@@ -126,7 +129,8 @@ Image readExr(const std::string& path, ExrLayers* layers) {
       readVec3(layers->normal, {"normal.X", "normal.Y", "normal.Z"});
       if (channels.findChannel("Z") != nullptr) {
         layers->depth.assign(pixels, 0.0f);
-        frame.insert("Z", floatSlice(reinterpret_cast<char*>(layers->depth.data()) - origin * static_cast<std::ptrdiff_t>(sizeof(float)),
+        frame.insert("Z", floatSlice(reinterpret_cast<char*>(layers->depth.data()) -
+                                         origin * static_cast<std::ptrdiff_t>(sizeof(float)),
                                      sizeof(float), sizeof(float) * width));
       }
     }

@@ -1,5 +1,6 @@
 // Reading and writing still images: PNG (libpng), BMP and PPM (written by lancer), a single-frame
-// GIF and OpenEXR (exr_io.hpp); the format follows the file extension. Every write is atomic (see atomic_file.hpp).
+// GIF and OpenEXR (exr_io.hpp); the format follows the file extension. Every write is atomic (see
+// atomic_file.hpp).
 #pragma once
 
 #include <cstdint>

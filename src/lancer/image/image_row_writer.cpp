@@ -15,9 +15,10 @@ ImageFormat streamedFormat(const std::string& path, const ImageWriteOptions& opt
   const ImageFormat format = imageFormatFromPath(path);
   requireBitDepth(path, format, options.bitDepth);
   if (!ImageRowWriter::streams(format))
-    throw InputError(SourceLocation{path}, format == ImageFormat::Gif
-                                               ? "a GIF cannot be written row by row (its palette needs every pixel)"
-                                               : "an EXR is written whole, not row by row");
+    throw InputError(SourceLocation{path},
+                     format == ImageFormat::Gif
+                         ? "a GIF cannot be written row by row (its palette needs every pixel)"
+                         : "an EXR is written whole, not row by row");
   return format;
 }
 

@@ -52,7 +52,8 @@ void encodeRow16(std::span<const Rgba> row, TransferCurve curve, int channels, s
 }
 
 std::vector<std::uint8_t> encodeImage16(const Image& image, TransferCurve curve, int channels) {
-  const std::size_t rowSize = static_cast<std::size_t>(image.width()) * static_cast<std::size_t>(channels) * 2;
+  const std::size_t rowSize =
+      static_cast<std::size_t>(image.width()) * static_cast<std::size_t>(channels) * 2;
   std::vector<std::uint8_t> out(rowSize * static_cast<std::size_t>(image.height()));
   for (int y = 0; y < image.height(); ++y)
     encodeRow16(image.row(y), curve, channels, out.data() + rowSize * static_cast<std::size_t>(y));

@@ -68,8 +68,8 @@ bool encodePng(AtomicFileWriter* file, int width, int height, int channels, bool
   }
   png_set_write_fn(png, file, onPngWrite, onPngFlush);
   writePngHeader(png, info, width, height, channels, srgbChunk, bitDepth);
-  const std::size_t stride =
-      static_cast<std::size_t>(width) * static_cast<std::size_t>(channels) * static_cast<std::size_t>(bitDepth / 8);
+  const std::size_t stride = static_cast<std::size_t>(width) * static_cast<std::size_t>(channels) *
+                             static_cast<std::size_t>(bitDepth / 8);
   for (int y = 0; y < height; ++y) {
     png_write_row(png, samples + stride * static_cast<std::size_t>(y));
   }

@@ -26,7 +26,8 @@ class PngRowEncoder {
   PngRowEncoder(const PngRowEncoder&) = delete;
   PngRowEncoder& operator=(const PngRowEncoder&) = delete;
 
-  // One row of width * channels samples (bytes: times bitDepth / 8); rows go top to bottom. Throws InputError.
+  // One row of width * channels samples (bytes: times bitDepth / 8); rows go top to bottom. Throws
+  // InputError.
   void writeRow(const std::uint8_t* samples);
   // After the last row: the final IDAT data and IEND. Throws InputError.
   void finish();

@@ -18,7 +18,7 @@ constexpr float kKernel[5] = {1.0f / 16, 1.0f / 4, 3.0f / 8, 1.0f / 4, 1.0f / 16
 
 // The guide of one pixel, ready for the weights.
 struct Guide {
-  Vec3 normal;      // unit, or zero where the pixel saw nothing
+  Vec3 normal;  // unit, or zero where the pixel saw nothing
   Vec3 albedo;
   float depth;      // +infinity where nothing was hit
   float gradientX;  // |d depth / dx|, |d depth / dy| in world units per pixel (0 on a miss)
@@ -31,8 +31,9 @@ std::vector<Guide> makeGuides(const FeatureBuffers& f) {
   // One-sided where a neighbour is missing or off the image: the slope of the surface itself.
   const auto slope = [](float before, float here, float after) {
     const bool b = std::isfinite(before), a = std::isfinite(after);
-    if (a && b) return 0.5f * std::min(std::abs(after - here) + std::abs(here - before),
-                                       2.0f * std::min(std::abs(after - here), std::abs(here - before)));
+    if (a && b)
+      return 0.5f * std::min(std::abs(after - here) + std::abs(here - before),
+                             2.0f * std::min(std::abs(after - here), std::abs(here - before)));
     if (a) return std::abs(after - here);
     if (b) return std::abs(here - before);
     return 0.0f;
@@ -48,8 +49,10 @@ std::vector<Guide> makeGuides(const FeatureBuffers& f) {
       g.depth = f.depth[k];
       g.gradientX = g.gradientY = 0;
       if (!std::isfinite(g.depth)) continue;
-      g.gradientX = slope(x > 0 ? depthAt(x - 1, y) : kInf, g.depth, x + 1 < f.width ? depthAt(x + 1, y) : kInf);
-      g.gradientY = slope(y > 0 ? depthAt(x, y - 1) : kInf, g.depth, y + 1 < f.height ? depthAt(x, y + 1) : kInf);
+      g.gradientX =
+          slope(x > 0 ? depthAt(x - 1, y) : kInf, g.depth, x + 1 < f.width ? depthAt(x + 1, y) : kInf);
+      g.gradientY =
+          slope(y > 0 ? depthAt(x, y - 1) : kInf, g.depth, y + 1 < f.height ? depthAt(x, y + 1) : kInf);
     }
   return guides;
 }
@@ -69,10 +72,9 @@ float featureWeight(const Guide& p, const Guide& q, int dx, int dy, const Denois
     } else {
       w = std::pow(cosine, options.normalPower);
     }
-    const float expected =
-        options.depthSigma * (p.gradientX * static_cast<float>(std::abs(dx)) +
-                              p.gradientY * static_cast<float>(std::abs(dy))) +
-        1e-4f * p.depth;
+    const float expected = options.depthSigma * (p.gradientX * static_cast<float>(std::abs(dx)) +
+                                                 p.gradientY * static_cast<float>(std::abs(dy))) +
+                           1e-4f * p.depth;
     w *= std::exp(-std::abs(p.depth - q.depth) / expected);
   }
   const Vec3 da = p.albedo - q.albedo;
@@ -90,10 +92,13 @@ bool smoothBlock(const Guide* g[4]) {
   return true;
 }
 
-float estimateNoiseOf(const std::vector<Vec3>& light, const std::vector<Guide>& guides, int width, int height) {
+float estimateNoiseOf(const std::vector<Vec3>& light, const std::vector<Guide>& guides, int width,
+                      int height) {
   std::vector<float> details;
   details.reserve(light.size());
-  const auto at = [&](int x, int y) { return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + x; };
+  const auto at = [&](int x, int y) {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + x;
+  };
   for (int y = 0; y + 1 < height; y += 2)
     for (int x = 0; x + 1 < width; x += 2) {
       const std::size_t k[4] = {at(x, y), at(x + 1, y), at(x, y + 1), at(x + 1, y + 1)};
@@ -111,7 +116,8 @@ float estimateNoiseOf(const std::vector<Vec3>& light, const std::vector<Guide>& 
 }
 
 // Demodulated radiance and the albedo it was divided by (1 where the albedo is too dark).
-void demodulate(const Image& image, const FeatureBuffers& f, std::vector<Vec3>& light, std::vector<Vec3>& divisor) {
+void demodulate(const Image& image, const FeatureBuffers& f, std::vector<Vec3>& light,
+                std::vector<Vec3>& divisor) {
   light.resize(f.albedo.size());
   divisor.resize(f.albedo.size());
   const auto safe = [](float a) { return a > kMinAlbedo ? a : 1.0f; };

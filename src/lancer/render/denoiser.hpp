@@ -17,12 +17,12 @@
 namespace lancer {
 
 struct DenoiseOptions {
-  int passes = 5;              // à-trous levels: a footprint of 4 * 2^passes + 1 pixels
-  float normalPower = 128;     // SVGF's sigma_n: weight max(0, n_p . n_q)^normalPower
-  float depthSigma = 1;        // SVGF's sigma_z, against the depth gradient times the tap's offset
-  float albedoSigma = 0.05f;   // weight exp(-|a_p - a_q|^2 / albedoSigma^2)
-  float colorSigma = 3;        // in units of the estimated noise; halved each pass (Dammertz)
-  int threads = 0;             // rows in parallel (0: all cores); the result is the same for any count
+  int passes = 5;             // à-trous levels: a footprint of 4 * 2^passes + 1 pixels
+  float normalPower = 128;    // SVGF's sigma_n: weight max(0, n_p . n_q)^normalPower
+  float depthSigma = 1;       // SVGF's sigma_z, against the depth gradient times the tap's offset
+  float albedoSigma = 0.05f;  // weight exp(-|a_p - a_q|^2 / albedoSigma^2)
+  float colorSigma = 3;       // in units of the estimated noise; halved each pass (Dammertz)
+  int threads = 0;            // rows in parallel (0: all cores); the result is the same for any count
 };
 
 // The filtered image (alpha copied); `features` must have the image's size. Deterministic.

@@ -35,7 +35,8 @@ SurfaceFeatures surfaceFeatures(const SceneQueries& queries, const EdgePaint& pa
       features.normal = scene.shadowCatcher->normal;
       break;
     case Sighting::Kind::kCap:
-      features.albedo = albedoOf(scene.appearance.materials[seen.capMaterial].kd, queries.splitOf(seen.capMaterial));
+      features.albedo =
+          albedoOf(scene.appearance.materials[seen.capMaterial].kd, queries.splitOf(seen.capMaterial));
       features.normal = seen.capPlane->normal;  // the cap faces the removed side, where the ray came from
       break;
     case Sighting::Kind::kSurface: {

@@ -1,11 +1,11 @@
 #include "lancer/render/renderer.hpp"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <chrono>
-#include <limits>
 #include <cmath>
 #include <condition_variable>
-#include <fmt/format.h>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -265,9 +265,10 @@ FeatureBuffers Renderer::renderFeatures(int threads) const {
         for (int i = 0; i < n; ++i) {
           float dx = 0.5f, dy = 0.5f;
           gridSampleOffset(settings.sampler, n, i, j, x, y, dx, dy);
-          const SurfaceFeatures seen = surfaceFeatures(
-              tracer_.queries(), paint, camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy),
-              settings.background, settings.srgb);
+          const SurfaceFeatures seen =
+              surfaceFeatures(tracer_.queries(), paint,
+                              camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy),
+                              settings.background, settings.srgb);
           albedo += seen.albedo;
           normal += seen.normal;
           if (seen.hit) {
@@ -406,7 +407,8 @@ Image Renderer::renderImage(const RenderOptions& options, RenderStats* stats) co
   return image;
 }
 
-Image Renderer::renderFinal(const RenderOptions& options, RenderStats* stats, FeatureBuffers* features) const {
+Image Renderer::renderFinal(const RenderOptions& options, RenderStats* stats,
+                            FeatureBuffers* features) const {
   RenderStats own;
   RenderStats& done = stats != nullptr ? *stats : own;
   Image image = renderImage(options, &done);

@@ -117,7 +117,8 @@ void readOutputKeys(const TomlTableReader& reader, RenderSettings& render) {
   if (auto bits = reader.integer("bit_depth", std::numeric_limits<std::int64_t>::min(),
                                  std::numeric_limits<std::int64_t>::max())) {
     if (*bits != 8 && *bits != 16)
-      reader.fail(*reader.find("bit_depth"), fmt::format("render.bit_depth must be 8 or 16, found {}", *bits));
+      reader.fail(*reader.find("bit_depth"),
+                  fmt::format("render.bit_depth must be 8 or 16, found {}", *bits));
     render.bitDepth = static_cast<int>(*bits);
   }
   if (auto denoise = reader.boolean("denoise")) render.denoise = *denoise;
