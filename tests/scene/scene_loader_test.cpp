@@ -153,7 +153,7 @@ TEST(SceneLoader, EmptySceneTakesEveryDefault) {
   EXPECT_EQ(render.shading, ShadingMode::Phong);
   expectVec(render.background, 0, 0, 0);
   EXPECT_FALSE(render.transparentBackground);
-  EXPECT_FALSE(render.srgb);
+  EXPECT_TRUE(render.srgb);  // sRGB-encoded by default (docs/output.md)
   EXPECT_EQ(render.output, "");
   EXPECT_EQ(scene.camera.projection, Projection::Perspective);
   EXPECT_FALSE(scene.camera.position);
