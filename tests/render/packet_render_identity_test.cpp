@@ -7,6 +7,7 @@
 
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/scene_loader.hpp"
+#include "support/test_images.hpp"
 
 namespace lancer {
 namespace {
@@ -18,17 +19,6 @@ Image render(const SceneDescription& description, const Scene& scene, const Acce
   options.threads = threads;
   options.packets = packets;
   return Renderer(scene, accelerator, camera, description.render).renderImage(options, stats);
-}
-
-int differingPixels(const Image& a, const Image& b) {
-  int count = 0;
-  for (int y = 0; y < a.height(); ++y) {
-    for (int x = 0; x < a.width(); ++x) {
-      const Rgba p = a.at(x, y), q = b.at(x, y);
-      count += !(p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a);
-    }
-  }
-  return count;
 }
 
 class PacketRenderIdentity : public testing::TestWithParam<const char*> {};
@@ -47,10 +37,11 @@ TEST_P(PacketRenderIdentity, PacketsAndSingleRaysRenderTheSameBytes) {
   const Image packets = render(description, scene, accelerator, true, 1, &packetStats);
   ASSERT_EQ(single.width(), packets.width());
   ASSERT_EQ(single.height(), packets.height());
-  EXPECT_EQ(differingPixels(single, packets), 0);
+  EXPECT_EQ(test::differingPixels(single, packets), 0);
   EXPECT_EQ(singleStats.rays, packetStats.rays) << "the same rays, counted alike";
   EXPECT_EQ(singleStats.samplesPerPixel, packetStats.samplesPerPixel);
-  EXPECT_EQ(differingPixels(single, render(description, scene, accelerator, true, 3)), 0) << "3 threads";
+  EXPECT_EQ(test::differingPixels(single, render(description, scene, accelerator, true, 3)), 0)
+      << "3 threads";
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, PacketRenderIdentity,
