@@ -8,6 +8,7 @@
 
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/render/renderer.hpp"
+#include "support/test_images.hpp"
 #include "support/test_scenes.hpp"
 
 namespace lancer {
@@ -32,17 +33,6 @@ SceneDescription blockScene() {
   return d;
 }
 
-int differingPixels(const Image& a, const Image& b) {
-  int count = 0;
-  for (int y = 0; y < a.height(); ++y) {
-    for (int x = 0; x < a.width(); ++x) {
-      const Rgba p = a.at(x, y), q = b.at(x, y);
-      count += !(p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a);
-    }
-  }
-  return count;
-}
-
 TEST(AccelImageIdentity, NaiveBvhAndKdTreesRenderTheSameImage) {
   const SceneDescription d = blockScene();
   const Scene scene =
@@ -60,7 +50,7 @@ TEST(AccelImageIdentity, NaiveBvhAndKdTreesRenderTheSameImage) {
     const Image image = test::renderScene(d, scene, kind, 2);
     ASSERT_EQ(image.width(), reference.width());
     ASSERT_EQ(image.height(), reference.height());
-    EXPECT_EQ(differingPixels(image, reference), 0);
+    EXPECT_EQ(test::differingPixels(image, reference), 0);
   }
 }
 
@@ -91,7 +81,8 @@ TEST(AccelImageIdentity, TreeAndImageIdenticalForAnyBuildThreadCount) {
     const Accelerator many = buildWith(threads);
     EXPECT_EQ(many.stats().nodes, one.stats().nodes);
     EXPECT_EQ(many.stats().triangleReferences, one.stats().triangleReferences);
-    EXPECT_EQ(differingPixels(Renderer(scene, many, camera, d.render).renderImage(render), reference), 0);
+    EXPECT_EQ(test::differingPixels(Renderer(scene, many, camera, d.render).renderImage(render), reference),
+              0);
     KdBuildOptions o;
     o.threads = threads;
     o.parallelSplitAbove = 64;
@@ -124,7 +115,7 @@ TEST(AccelImageIdentity, BvhImageIdenticalForAnyBuildThreadCount) {
     const Accelerator many = buildWith(threads);
     EXPECT_EQ(many.stats().nodes, one.stats().nodes);
     EXPECT_EQ(many.stats().sahCost, one.stats().sahCost);
-    EXPECT_EQ(differingPixels(Renderer(scene, many, camera, d.render).renderImage(render), reference), 0);
+    EXPECT_EQ(test::differingPixels(Renderer(scene, many, camera, d.render).renderImage(render), reference), 0);
   }
 }
 

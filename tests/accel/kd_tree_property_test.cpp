@@ -185,18 +185,7 @@ TEST(KdTreeProperty, TessellatedSphereMatchesBruteForce) {
 }
 
 TEST(KdTreeProperty, DegenerateAndCoplanarFacesMatchBruteForce) {
-  std::mt19937 rng(4);
-  Soup soup = test::adversarialSoup(rng);
-  // Embed them in a grid so the tree has planes through the coincident faces.
-  const Soup grid = test::gridBox(4);
-  for (MeshFace f : grid.faces) {
-    for (std::uint32_t& v : f.vertex) {
-      if (v != kNoVertex) v += static_cast<std::uint32_t>(soup.positions.size());
-    }
-    soup.faces.push_back(f);
-  }
-  for (const Vec3& p : grid.positions) soup.positions.push_back(p * 0.25f);
-  expectSameAnswers(soup, 8000, 14);
+  expectSameAnswers(test::adversarialSoupInGrid(), 8000, 14);
 }
 
 // What binning finds hardest: hundreds of triangles in one axis-aligned plane (many of them in the

@@ -185,17 +185,7 @@ TEST(PacketQueryProperty, GridBoxWithVerticesOnSplitPlanes) {
 TEST(PacketQueryProperty, TessellatedSphere) { expectSameAnswers(test::sphere(40, 60), 6000, 13); }
 
 TEST(PacketQueryProperty, DegenerateAndCoplanarFaces) {
-  std::mt19937 rng(4);
-  Soup soup = test::adversarialSoup(rng);
-  const Soup grid = test::gridBox(4);
-  for (MeshFace f : grid.faces) {
-    for (std::uint32_t& v : f.vertex) {
-      if (v != kNoVertex) v += static_cast<std::uint32_t>(soup.positions.size());
-    }
-    soup.faces.push_back(f);
-  }
-  for (const Vec3& p : grid.positions) soup.positions.push_back(p * 0.25f);
-  expectSameAnswers(soup, 8000, 14);
+  expectSameAnswers(test::adversarialSoupInGrid(), 8000, 14);
 }
 
 Soup loadFixture(const std::string& name) {
@@ -339,23 +329,12 @@ TEST(PacketQueryProperty, WatertightRaysFromInsideAllHitAsSingleRays) {
     SCOPED_TRACE(file);
     const Soup mesh = loadFixture(file);
     const KdTree tree = KdTree::buildSah(mesh.positions, mesh.faces);
-    Aabb box;
-    for (const Vec3& p : mesh.positions) box.extend(p);
-    std::mt19937 rng(12345);
-    std::uniform_real_distribution<float> jitter(-0.05f, 0.05f);
     std::vector<TestRay> rays;
-    for (const MeshFace& face : mesh.faces) {
-      for (int c = 0; c < face.cornerCount(); ++c) {
-        const Vec3 a = mesh.positions[face.vertex[c]];
-        const Vec3 b = mesh.positions[face.vertex[(c + 1) % face.cornerCount()]];
-        for (const float s : {0.0f, 0.5f, 0.25f}) {
-          const Vec3 origin = box.center() + box.extent() * Vec3{jitter(rng), jitter(rng), jitter(rng)};
-          TestRay r;
-          r.ray = Ray(origin, a + (b - a) * s - origin);
-          r.tMax = 2.0f;
-          rays.push_back(r);
-        }
-      }
+    for (const Ray& ray : test::raysAtCornersAndEdges(mesh.positions, mesh.faces)) {
+      TestRay r;
+      r.ray = ray;
+      r.tMax = 2.0f;
+      rays.push_back(r);
     }
     const Bvh bvh = Bvh::build(mesh.positions, mesh.faces);
     auto check = [&](const auto& accel, bool bySigns) {
