@@ -63,8 +63,8 @@ TEST(SceneLoader, FullSceneSetsEveryField) {
                                             .sampler = SamplerKind::Stratified,
                                             .shading = ShadingMode::Gouraud,
                                             .background = {0.25f, 0.5f, 1.0f},
-                                            .srgb = true,
-                                            .output = kDataDir + "/renders/full.png"});
+                                            .output = kDataDir + "/renders/full.png",
+                                            .srgb = true});
 
   const CameraSettings& camera = scene.camera;
   EXPECT_EQ(camera.projection, Projection::Orthographic);
@@ -163,8 +163,8 @@ TEST(SceneLoader, EmptySceneTakesEveryDefault) {
                                             .sampler = SamplerKind::Regular,
                                             .shading = ShadingMode::Phong,
                                             .background = {0, 0, 0},
-                                            .srgb = true,
-                                            .output = ""});
+                                            .output = "",
+                                            .srgb = true});
   EXPECT_EQ(scene.camera.projection, Projection::Perspective);
   EXPECT_FALSE(scene.camera.position);
   EXPECT_FALSE(scene.camera.lookAt);
