@@ -135,10 +135,10 @@ void demodulate(const Image& image, const FeatureBuffers& f, std::vector<Vec3>& 
 
 }  // namespace
 
-float estimateNoise(const Image& demodulated, const FeatureBuffers& features) {
+float estimateNoise(const Image& image, const FeatureBuffers& features) {
   std::vector<Vec3> light;
   light.reserve(features.albedo.size());
-  for (const Rgba& p : demodulated.pixels()) light.push_back(p.rgb());
+  for (const Rgba& p : image.pixels()) light.push_back(p.rgb());
   return estimateNoiseOf(light, makeGuides(features), features.width, features.height);
 }
 
@@ -149,8 +149,13 @@ Image denoise(const Image& noisy, const FeatureBuffers& features, const DenoiseO
   const std::vector<Guide> guides = makeGuides(features);
   std::vector<Vec3> light, divisor;
   demodulate(noisy, features, light, divisor);
+  // Measured on the radiance itself, and colours compared at the centre's albedo below: dividing by a
+  // dark albedo (a dark background) multiplies the noise, which a global level would not follow.
+  std::vector<Vec3> radiance;
+  radiance.reserve(light.size());
+  for (const Rgba& c : noisy.pixels()) radiance.push_back(c.rgb());
   // A floor keeps the colour weight finite on a noiseless image (it then keeps equal colours only).
-  const float noise = std::max(estimateNoiseOf(light, guides, width, height), 1e-5f);
+  const float noise = std::max(estimateNoiseOf(radiance, guides, width, height), 1e-5f);
 
   std::vector<Vec3> filtered(light.size());
   for (int pass = 0; pass < options.passes; ++pass) {
@@ -170,7 +175,7 @@ Image denoise(const Image& noisy, const FeatureBuffers& features, const DenoiseO
             const int qx = x + i * step;
             if (qx < 0 || qx >= width) continue;
             const std::size_t q = features.index(qx, qy);
-            const Vec3 dc = light[q] - light[p];
+            const Vec3 dc = (light[q] - light[p]) * divisor[p];
             float exponent = dot(dc, dc) * colorScale;
             const float factor = featureWeight(guides[p], guides[q], i * step, j * step, options, exponent);
             // Below e^-30 a tap cannot move the sum: skip its exp.
