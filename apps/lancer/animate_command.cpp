@@ -69,7 +69,7 @@ std::vector<int> framesToRender(const AnimateCommandOptions& options, const Anim
 int runAnimate(const AnimateCommandOptions& options) {
   // A job-array task works alone; a --frame-range under mpirun is shared by the ranks.
   const std::unique_ptr<WorkDistribution> distribution = commandDistribution(!options.shard.empty());
-  PreparedScene prepared = prepareScene(options.input, options.overrides);
+  PreparedRender prepared = prepareScene(options.input, options.overrides);
   const RenderSettings& settings = prepared.description.render;
   AnimationSettings animation = prepared.description.animation.value_or(AnimationSettings{});
   if (options.frames) animation.frames = *options.frames;

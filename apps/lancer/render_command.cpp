@@ -39,7 +39,7 @@ struct RenderCommandOptions {
   SceneOverrides overrides;
 };
 
-int tracePixel(const PreparedScene& prepared, const Renderer& renderer, const std::string& pixel) {
+int tracePixel(const PreparedRender& prepared, const Renderer& renderer, const std::string& pixel) {
   const RenderSettings& settings = prepared.description.render;
   int x = -1, y = -1;
   char trailing = 0;
@@ -115,7 +115,7 @@ void writeFinal(const std::string& output, const Image& radiance, const RenderSe
 
 // Renders into `output` (atomically: an interrupted or failed render leaves any existing file as it
 // was). Returns false when interrupted.
-bool renderToFile(const PreparedScene& prepared, const Renderer& renderer, const std::string& output,
+bool renderToFile(const PreparedRender& prepared, const Renderer& renderer, const std::string& output,
                   const ExrLayerChoice& aovs, const RenderOptions& renderOptions, RenderStats& stats) {
   const RenderSettings& settings = prepared.description.render;
   const ImageWriteOptions writeOptions = imageWriteOptions(settings);
@@ -139,7 +139,7 @@ bool renderToFile(const PreparedScene& prepared, const Renderer& renderer, const
 }
 
 // Renders the band items of a job-array task into its part file (atomically); false when interrupted.
-bool renderPart(const PreparedScene& prepared, const Renderer& renderer, const std::string& output,
+bool renderPart(const PreparedRender& prepared, const Renderer& renderer, const std::string& output,
                 const ScheduledShard& shard, const RenderOptions& renderOptions, bool quiet,
                 RenderStats& stats) {
   const RenderSettings& settings = prepared.description.render;
@@ -173,7 +173,7 @@ bool renderPart(const PreparedScene& prepared, const Renderer& renderer, const s
 
 // The ranks of an MPI job share the band items; rank 0 writes them in order as they come (a few items
 // in memory at once for a streamed format). False when interrupted.
-bool renderDistributed(const PreparedScene& prepared, const Renderer& renderer, const std::string& output,
+bool renderDistributed(const PreparedRender& prepared, const Renderer& renderer, const std::string& output,
                        WorkDistribution& distribution, const RenderOptions& renderOptions,
                        RenderStats& stats) {
   const RenderSettings& settings = prepared.description.render;
@@ -227,9 +227,10 @@ int runRender(const RenderCommandOptions& options) {
   const std::unique_ptr<WorkDistribution> distribution = commandDistribution(!options.shard.empty());
   std::optional<ScheduledShard> shard;
   if (!options.shard.empty()) shard = resolveShard(options.shard, processEnvironment());
-  PreparedScene prepared = prepareScene(options.input, options.overrides, [&](const RenderSettings& s) {
-    return streamsToFile(outputPath(options, s), s) ? ImageBuffer::Bands : ImageBuffer::Whole;
-  });
+  const PreparedRender prepared =
+      prepareScene(options.input, options.overrides, [&](const RenderSettings& s) {
+        return streamsToFile(outputPath(options, s), s) ? ImageBuffer::Bands : ImageBuffer::Whole;
+      });
   const RenderSettings& settings = prepared.description.render;
   const std::string output = outputPath(options, settings);
   if (output.empty() && options.pixel.empty())
@@ -257,8 +258,7 @@ int runRender(const RenderCommandOptions& options) {
           "--legend needs a mesh coloured by a field (color_by = { field = \"...\" } in a [[mesh]])");
   }
 
-  const Camera camera = makeCamera(prepared.description.camera, prepared.scene, settings);
-  const Renderer renderer(prepared.scene, prepared.accelerator, camera, settings);
+  const Renderer renderer = prepared.renderer();
   if (!options.pixel.empty()) return tracePixel(prepared, renderer, options.pixel);
 
   RenderOptions renderOptions = commandRenderOptions(options.overrides);

@@ -14,7 +14,6 @@
 #include "lancer/image/pixel_encoding.hpp"
 #include "lancer/render/progress_line.hpp"
 #include "lancer/scene/render_limits.hpp"
-#include "lancer/util/memory_budget.hpp"
 #include "render_session.hpp"
 
 namespace lancer::python {
@@ -133,21 +132,14 @@ void InterruptibleRender::finish() {
 }
 
 PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides, int threads) {
-  applyRenderOverrides(scene.description, overrides, scene.quickLookMesh.get());
-  const RenderSettings& settings = scene.description.render;
-  requireMemory(saturatingProduct(
-                    static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height),
-                    sizeof(Rgba) + 4),
-                SourceLocation{scene.description.path},
-                fmt::format("a {}x{} image", settings.width, settings.height));
   PreparedRender prepared = [&] {
-    py::gil_scoped_release release;
-    std::vector<Mesh> meshes;
-    if (scene.quickLookMesh) meshes.push_back(*scene.quickLookMesh);
-    Scene built = meshes.empty() ? buildScene(scene.description, threads)
-                                 : buildScene(scene.description, std::move(meshes), threads);
-    Accelerator accelerator = buildSceneAccelerator(built, threads);
-    return PreparedRender{std::move(scene.description), std::move(built), std::move(accelerator)};
+    const py::gil_scoped_release release;
+    RenderRequest request;
+    request.description = std::move(scene.description);
+    if (scene.quickLookMesh) request.quickLookMesh = *scene.quickLookMesh;
+    request.overrides = overrides;
+    request.threads = threads;
+    return lancer::prepareRender(std::move(request));
   }();
   for (const std::string& warning : sceneWarnings(prepared.scene))
     if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
@@ -161,8 +153,7 @@ void bindRender(py::module_& module) {
         const RenderOverrides overrides = renderOverridesFromArguments(arguments);
         PreparedRender prepared = prepareRender(sceneOf(target), overrides, arguments.threads);
         const RenderSettings& settings = prepared.description.render;
-        const Camera camera = makeCamera(prepared.description.camera, prepared.scene, settings);
-        const Renderer renderer(prepared.scene, prepared.accelerator, camera, settings);
+        const Renderer renderer = prepared.renderer();
         InterruptibleRender render(arguments.threads, arguments.progress);
         RenderStats stats;
         Image image;

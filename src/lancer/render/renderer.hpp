@@ -2,6 +2,7 @@
 // within a band of 32 rows, bands top to bottom) and trace every sample of every pixel. Per-pixel
 // deterministic sampling makes the image bit-identical for any thread count. Finished bands go, in
 // order, to a sink on the calling thread, so an image of any height needs memory for a few bands.
+// Map: docs/architecture.md (the path of a ray through the modules).
 #pragma once
 
 #include <atomic>
