@@ -1,6 +1,7 @@
 // The renderer's packets (primary rays of 4x2 pixels and their shadow rays, Tracer::tracePrimaries)
 // give the image single rays give, byte for byte, on every example scene (clip planes, per-mesh cuts
-// with caps, shadow catcher, glass, mirrors, edges and outlines, both samplers) at 1 and 3 threads.
+// with caps, shadow catcher, glass, mirrors, edges and outlines, both samplers) at 1 and 3 threads;
+// and the default BVH's image is the kd-tree's, byte for byte.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -31,7 +32,7 @@ TEST_P(PacketRenderIdentity, PacketsAndSingleRaysRenderTheSameBytes) {
   description.render.height = std::max(1, 133 * height / width) | 1;
   const Scene scene = buildScene(description);
   const Accelerator accelerator =
-      Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah);
+      Accelerator::build(scene.geometry.positions, scene.geometry.faces, kDefaultAccel);
   RenderStats singleStats, packetStats;
   const Image single = render(description, scene, accelerator, false, 1, &singleStats);
   const Image packets = render(description, scene, accelerator, true, 1, &packetStats);
@@ -42,6 +43,13 @@ TEST_P(PacketRenderIdentity, PacketsAndSingleRaysRenderTheSameBytes) {
   EXPECT_EQ(singleStats.samplesPerPixel, packetStats.samplesPerPixel);
   EXPECT_EQ(test::differingPixels(single, render(description, scene, accelerator, true, 3)), 0)
       << "3 threads";
+  // Every accelerator renders the example's bytes (the BVH is the default, the kd-tree the seed's).
+  const Accelerator kdTree =
+      Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah);
+  EXPECT_EQ(test::differingPixels(single, render(description, scene, kdTree, true, 2)), 0)
+      << "kd-tree, packets";
+  EXPECT_EQ(test::differingPixels(single, render(description, scene, kdTree, false, 1)), 0)
+      << "kd-tree, single rays";
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, PacketRenderIdentity,
