@@ -128,7 +128,8 @@ int runAnimate(const AnimateCommandOptions& options) {
     return image;
   };
   work.deliver = [&](int item, const Image& image) {
-    out->addFrame(frames[static_cast<std::size_t>(item)], image);
+    out->addFrame(frames[static_cast<std::size_t>(item)],
+                  out->takesRadiance() ? image : displayImage(image, settings));
   };
   if (progress && !alone) {
     work.onDelivered = [&](int done, int total) {
@@ -141,6 +142,10 @@ int runAnimate(const AnimateCommandOptions& options) {
   bool finished = false;
   try {
     finished = distribution->run(work);
+  } catch (const NonFiniteRenderError& e) {
+    if (progress) std::fputc('\n', stderr);
+    throw InputError(SourceLocation{options.input},
+                     fmt::format("frame {}: {}", frames[static_cast<std::size_t>(current)], e.what()));
   } catch (...) {
     if (progress) std::fputc('\n', stderr);  // the error goes below the progress line
     throw;

@@ -7,6 +7,7 @@
 
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -67,6 +68,31 @@ std::vector<std::string> choices(const std::array<std::string_view, N>& names) {
   return {names.begin(), names.end()};
 }
 
+// --tonemap, --exposure, --bit-depth, --denoise, checked here so that the messages name the option.
+void applyOutputOverrides(const SceneOverrides& overrides, RenderOverrides& applied) {
+  if (!overrides.toneMap.empty()) {
+    applied.toneMap = enumFromName<ToneMap>(kToneMapNames, overrides.toneMap);
+    if (!applied.toneMap)
+      throw InputError(SourceLocation{"--tonemap"},
+                       fmt::format("unknown tone map '{}': use none, filmic or aces", overrides.toneMap));
+  }
+  if (overrides.exposure) {
+    const double stops = *overrides.exposure;
+    if (!std::isfinite(stops) || std::abs(stops) > kMaxExposureStops)
+      throw InputError(SourceLocation{"--exposure"},
+                       fmt::format("exposure {} is not a number of stops between -{} and {}", stops,
+                                   kMaxExposureStops, kMaxExposureStops));
+    applied.exposure = static_cast<float>(stops);
+  }
+  if (overrides.bitDepth) {
+    if (*overrides.bitDepth != 8 && *overrides.bitDepth != 16)
+      throw InputError(SourceLocation{"--bit-depth"},
+                       fmt::format("bit depth {} is not supported: use 8 or 16", *overrides.bitDepth));
+    applied.bitDepth = *overrides.bitDepth;
+  }
+  if (overrides.denoise) applied.denoise = true;
+}
+
 }  // namespace
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
@@ -86,12 +112,25 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
   command
       .add_option(
           "--accel", overrides.accel,
-          "Accelerator: kdtree-sah (default), kdtree-sah-exact (slower build, the quality reference), "
-          "kdtree-median or naive")
+          "Accelerator: bvh (default: the wide BVH), kdtree-sah (the kd-tree), kdtree-sah-exact (its slower "
+          "build, the quality reference), kdtree-median or naive (brute force)")
       ->check(CLI::IsMember(choices(kAccelNames)));
   command.add_option("--threads", overrides.threads, "Worker threads (default 0: all cores)")
       ->check(CLI::Range(0, kMaxThreads));
-  command.add_flag("--srgb", overrides.srgb, "Encode the output with the sRGB curve instead of linear");
+  CLI::Option* srgb =
+      command.add_flag("--srgb", overrides.srgb,
+                       "Encode the output with the sRGB curve (the default; over a scene's linear encoding)");
+  command
+      .add_flag("--linear", overrides.linear,
+                "Encode the output linearly, round(255 * I): the raw values of the lighting model, for tests")
+      ->excludes(srgb);
+  command.add_option("--tonemap", overrides.toneMap,
+                     "Tone curve before the encoding: none (default, clip at 1), filmic (Hable) or aces");
+  command.add_option("--exposure", overrides.exposure,
+                     "Exposure in stops: radiance x 2^STOPS before the curve");
+  command.add_option("--bit-depth", overrides.bitDepth, "Bits per sample: 8 (default) or 16 (PNG only)");
+  command.add_flag("--denoise", overrides.denoise,
+                   "Filter the noise with the edge-aware denoiser guided by albedo, normal and depth");
   command.add_flag("--edges", overrides.edges,
                    "Draw element edges (1 pixel, black) on every mesh whose scene sets no edges");
   command.add_option("--up", overrides.up,
@@ -106,7 +145,7 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
   command.add_flag("--timings", overrides.timings,
                    "Print where the time before the first ray went: read, orient (shells, orientation, "
-                   "nesting), normals, scene, kd build");
+                   "nesting), normals, scene, accel build");
 }
 
 CLI::Option* addInputOption(CLI::App& command, std::string& input) {
@@ -156,6 +195,8 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
   applied.samples = overrides.samples;
   applied.maxDepth = overrides.maxDepth;
   if (overrides.srgb) applied.srgb = true;
+  if (overrides.linear) applied.srgb = false;
+  applyOutputOverrides(overrides, applied);
   if (!overrides.sampler.empty())
     applied.sampler = enumFromName<SamplerKind>(kSamplerNames, overrides.sampler);
   if (!overrides.shading.empty())
@@ -191,6 +232,7 @@ bool showProgress(const SceneOverrides& overrides) { return !overrides.quiet && 
 ImageWriteOptions imageWriteOptions(const RenderSettings& settings) {
   ImageWriteOptions options;
   options.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
+  options.bitDepth = settings.bitDepth;
   options.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
   return options;
 }

@@ -22,9 +22,14 @@ struct SceneOverrides {
   std::optional<int> width, height, samples, maxDepth;
   std::string shading;
   std::string sampler;
-  std::string accel = "kdtree-sah";
+  std::string accel{kDefaultAccelName};
   int threads = 0;
-  bool srgb = false;
+  bool srgb = false;    // --srgb: the default encoding, over a scene's encoding = "linear"
+  bool linear = false;  // --linear: the brief's raw values (round(255 * I))
+  std::string toneMap;  // --tonemap none | filmic | aces
+  std::optional<double> exposure;
+  std::optional<int> bitDepth;
+  bool denoise = false;
   bool edges = false;  // draw element edges on every mesh that does not set its own
   std::string up;      // --up: the automatic camera's up axis (x, y, z, -x, -y, -z)
   // --gmsh-view [FILE]: the camera of a gmsh options file; "" for the mesh's own MESH.msh.opt.

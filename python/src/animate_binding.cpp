@@ -56,9 +56,11 @@ void animate(const py::object& target, const std::string& output, const RenderAr
   AnimationStats stats;
   {
     py::gil_scoped_release release;
-    stats =
-        renderAnimation(prepared.scene, prepared.accelerator, prepared.description, animation, render.options,
-                        [&](int frame, const Image& image) { writer.addFrame(frame, image); });
+    stats = renderAnimation(prepared.scene, prepared.accelerator, prepared.description, animation,
+                            render.options, [&](int frame, const Image& image) {
+                              writer.addFrame(frame,
+                                              writer.takesRadiance() ? image : displayImage(image, settings));
+                            });
   }
   render.finish();  // KeyboardInterrupt: the writer's destructor removes its temporary files
   if (!stats.cancelled) writer.finish();

@@ -20,7 +20,9 @@ namespace lancer::python {
 struct RenderArguments {
   std::optional<int> width, height, samples, maxDepth;
   std::optional<std::string> shading, sampler;
-  std::optional<bool> srgb, transparentBackground, edges;
+  std::optional<bool> srgb, transparentBackground, edges, denoise;
+  std::optional<std::string> encoding, toneMap;  // "srgb" | "linear"; "none" | "filmic" | "aces"
+  std::optional<double> exposure;
   int threads = 0;
   bool progress = false;
 };

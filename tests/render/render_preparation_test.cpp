@@ -38,7 +38,7 @@ TEST(RenderPreparation, AQuickLookIsPreparedFromItsOwnMeshWithTheOverridesApplie
   // The caller's stages come first and count as load time; the accelerator build comes last.
   ASSERT_GE(prepared.stages.stages.size(), 2u);
   EXPECT_EQ(prepared.stages.stages.front().name, "read");
-  EXPECT_EQ(prepared.stages.stages.back().name, "kd build");
+  EXPECT_EQ(prepared.stages.stages.back().name, "accel build");
   EXPECT_GE(prepared.loadSeconds, 0.25);
   EXPECT_EQ(prepared.stages.stages.back().seconds, prepared.buildSeconds);
   const Image image = prepared.renderer().renderImage(RenderOptions{});

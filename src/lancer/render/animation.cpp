@@ -111,7 +111,7 @@ Image renderAnimationFrame(Scene& scene, const Accelerator& accelerator, const S
       for (std::size_t i = 0; i < scene.appearance.lights.size(); ++i) turnLight(i, degrees);
   }
   const Camera camera = makeCamera(cameraSettings, scene, settings);
-  return Renderer(scene, accelerator, camera, settings).renderImage(options, stats);
+  return Renderer(scene, accelerator, camera, settings).renderFinal(options, stats);
 }
 
 AnimationStats renderAnimation(Scene& scene, const Accelerator& accelerator,

@@ -15,6 +15,9 @@ std::uint64_t imageMemoryBytes(const RenderSettings& settings, int threads, Imag
   constexpr std::uint64_t kWriterStateBytes = 1 << 20;
   const std::uint64_t pixels =
       static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
+  // The denoiser holds the whole image, its feature buffers, its guides and two work images.
+  constexpr std::uint64_t kDenoiseBytesPerPixel = 160;
+  if (settings.denoise) return saturatingProduct(pixels, kDenoiseBytesPerPixel);
   if (buffer == ImageBuffer::Whole) return saturatingProduct(pixels, sizeof(Rgba) + 4);
   return bandMemoryBytes(settings.width, settings.height, threads) +
          static_cast<std::uint64_t>(settings.width) * 4 + kWriterStateBytes;
@@ -22,10 +25,12 @@ std::uint64_t imageMemoryBytes(const RenderSettings& settings, int threads, Imag
 
 void requireImageMemory(const RenderSettings& settings, int threads, ImageBuffer buffer,
                         const std::string& source) {
-  const std::string what = buffer == ImageBuffer::Whole
-                               ? fmt::format("a {}x{} image", settings.width, settings.height)
-                               : fmt::format("a {}x{} image rendered in bands of {} rows", settings.width,
-                                             settings.height, kTileSize);
+  const std::string what =
+      settings.denoise
+          ? fmt::format("a {}x{} image with the denoiser's buffers", settings.width, settings.height)
+      : buffer == ImageBuffer::Whole ? fmt::format("a {}x{} image", settings.width, settings.height)
+                                     : fmt::format("a {}x{} image rendered in bands of {} rows",
+                                                   settings.width, settings.height, kTileSize);
   requireMemory(imageMemoryBytes(settings, threads, buffer), SourceLocation{source}, what);
 }
 
@@ -59,7 +64,7 @@ PreparedRender prepareRender(RenderRequest request) {
   const Stopwatch build;
   Accelerator accelerator = buildAccelerator(scene, request.accel, request.threads);
   const double buildSeconds = build.seconds();
-  stages.add("kd build", buildSeconds);
+  stages.add("accel build", buildSeconds);
 
   Camera camera = makeCamera(description.camera, scene, description.render);
   return PreparedRender{std::move(description),

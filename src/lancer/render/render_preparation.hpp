@@ -27,7 +27,7 @@ struct RenderRequest {
   // used instead of a file, and its lights are placed again when the image size changes.
   std::optional<Mesh> quickLookMesh;
   RenderOverrides overrides;
-  AccelKind accel = AccelKind::KdTreeSah;
+  AccelKind accel = kDefaultAccel;
   int threads = 0;  // of the scene preparation and the accelerator build; 0: every core
   // Asked once the overrides are applied, for the memory check; unset: the image is held whole.
   std::function<ImageBuffer(const RenderSettings&)> imageBuffer;
@@ -44,7 +44,7 @@ struct PreparedRender {
   Scene scene;                   // scene.warnings: the mesh readers' warnings, for the caller to show
   Accelerator accelerator;
   Camera camera;            // the description's camera for the settings' image size
-  StageTimes stages;        // read, orient, normals, scene, kd build
+  StageTimes stages;        // read, orient, normals, scene, accel build
   double loadSeconds = 0;   // everything before the accelerator build
   double buildSeconds = 0;  // the accelerator build
 
