@@ -179,7 +179,7 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
   CLI::App* command = app.add_subcommand(
       "animate",
       "Render an orbit of the camera or of a light as an animated GIF, an animated PNG or numbered frames");
-  command->add_option("input", options->input, "Scene file (.toml) or gmsh mesh (.msh)")->required();
+  addInputOption(*command, options->input);
   command->add_option("-o,--output", options->output,
                       "Output (required): NAME.gif (animated, looping), NAME.png (animated PNG) or "
                       "NAME_%04d.png/.bmp/.ppm (one "
@@ -195,7 +195,10 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
   command->add_flag("--skip-existing", options->skipExisting,
                     "Keep numbered frames that are already complete images (resume a pre-empted job)");
   addSceneOverrideOptions(*command, options->overrides);
-  command->callback([options, &runner] { runner = [options] { return runAnimate(*options); }; });
+  command->callback([options, &runner] {
+    takeInputFromGmshView(options->input, options->overrides);
+    runner = [options] { return runAnimate(*options); };
+  });
 }
 
 }  // namespace lancer::cli

@@ -310,7 +310,7 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
   auto options = std::make_shared<RenderCommandOptions>();
   CLI::App* command = app.add_subcommand(
       "render", "Render a scene file (.toml), or a mesh (.msh) with an automatic camera, lights and colours");
-  command->add_option("input", options->input, "Scene file (.toml) or gmsh mesh (.msh)")->required();
+  addInputOption(*command, options->input);
   command->add_option("-o,--output", options->output,
                       fmt::format("Output image ({}); overrides render.output", kImageExtensions));
   command->add_option(
@@ -324,7 +324,10 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
       "--aovs", options->aovs,
       "Layers of an .exr output beside the radiance: albedo, normal, depth (comma-separated)");
   command->add_option("--pixel", options->pixel, "Trace only pixel x,y and print its value (debugging)");
-  command->callback([options, &runner] { runner = [options] { return runRender(*options); }; });
+  command->callback([options, &runner] {
+    takeInputFromGmshView(options->input, options->overrides);
+    runner = [options] { return runRender(*options); };
+  });
 }
 
 }  // namespace lancer::cli

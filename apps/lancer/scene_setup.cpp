@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -39,11 +40,17 @@ extern "C" void onInterrupt(int) {
   gInterrupted.store(true);
 }
 
+// ".msh" for part.MSH: a file name's extension in lower case.
+std::string lowerCaseExtension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
 // A .msh by name, or a file that is no scene: a mesh by content, or a file that is neither (a .geo,
 // STL, STEP, ...), which the mesh reader names with the gmsh command that makes a mesh of it.
 bool isMeshFile(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string extension = lowerCaseExtension(path);
   if (extension == ".msh") return true;
   if (extension == ".toml") return false;
   std::ifstream in(path, std::ios::binary);
@@ -130,14 +137,27 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
                      "Up axis of the automatic camera: x, y, z, -x, -y or -z (a bare mesh: guessed; a scene: "
                      "y)");
   command
-      .add_option("--gmsh-view", overrides.gmshView,
-                  "The view set up in gmsh: its options file (File > Save Model Options; default: the mesh's "
-                  "MESH.msh.opt)")
+      .add_option(
+          "--gmsh-view", overrides.gmshView,
+          "The view set up in gmsh, framed for the image as gmsh's own export at that size: its options "
+          "file (File > Save Model Options; default: the mesh's MESH.msh.opt); before or after the input")
       ->expected(0, 1);
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
   command.add_flag("--timings", overrides.timings,
                    "Print where the time before the first ray went: read, orient (shells, orientation, "
                    "nesting), normals, scene, accel build");
+}
+
+CLI::Option* addInputOption(CLI::App& command, std::string& input) {
+  return command.add_option("input", input, "Scene file (.toml) or gmsh mesh (.msh); required");
+}
+
+void takeInputFromGmshView(std::string& input, SceneOverrides& overrides) {
+  if (input.empty() && overrides.gmshView && lowerCaseExtension(*overrides.gmshView) != ".opt") {
+    input = *overrides.gmshView;
+    overrides.gmshView = "";
+  }
+  if (input.empty()) throw CLI::RequiredError("input");
 }
 
 PreparedRender prepareScene(const std::string& input, const SceneOverrides& overrides,

@@ -40,6 +40,15 @@ struct SceneOverrides {
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides);
 
+// The command's input, positional: `lancer render|animate INPUT`. Not required by CLI11, since
+// --gmsh-view's value is optional and CLI11 gives it the input when it comes first
+// (`lancer render --gmsh-view part.msh -o x.png`); takeInputFromGmshView puts it back.
+CLI::Option* addInputOption(CLI::App& command, std::string& input);
+// Called by the command's callback, once the line is parsed: with no input, the value of
+// --gmsh-view is the input unless it is an options file (FILE.opt), and --gmsh-view then reads the
+// default MESH.msh.opt. Throws CLI::RequiredError when there is still no input.
+void takeInputFromGmshView(std::string& input, SceneOverrides& overrides);
+
 // "timings: read 0.052 s, orient 0.081 s, ..." (--timings).
 std::string formatStageTimes(const StageTimes& stages);
 
