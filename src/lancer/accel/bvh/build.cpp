@@ -220,8 +220,9 @@ Bvh Bvh::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
   const Aabb box = all.bounds.aabb();
   Flattener flattener{bvh.nodes_, firstTriangle, bvh.stats_};
   if (root != nullptr) {
-    bvh.nodes_.reserve(std::max<std::size_t>(1, n / 4));
+    bvh.nodes_.reserve(std::max<std::size_t>(1, n / 16));
     flattener.flatten(*root, 0);
+    bvh.nodes_.shrink_to_fit();
   } else {
     bvh.nodes_.emplace_back().clear();
     bvh.stats_.nodes = 1;
