@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "lancer/scene/color_by.hpp"
+#include "lancer/scene/result_keys.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/suggest.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
@@ -23,22 +24,22 @@ namespace {
 
 constexpr std::array<std::string_view, 9> kSceneTables = {
     "render", "camera", "ambient", "light", "material", "mesh", "animation", "clip", "floor"};
-constexpr std::array<std::string_view, 10> kRenderKeys = {
-    "width",   "height",     "samples", "max_depth", "sampler",
-    "shading", "background", "output",  "srgb",      "adaptive_threshold"};
+constexpr std::array<std::string_view, 11> kRenderKeys = {
+    "width",  "height", "samples", "max_depth",          "sampler", "shading",
+    "background", "output", "srgb",    "adaptive_threshold", "step"};
 constexpr std::array<std::string_view, 8> kCameraKeys = {
     "projection", "position", "look_at", "up", "up_axis", "fov", "view_height", "gmsh_view"};
 constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
 constexpr std::array<std::string_view, 3> kLightKeys = {"position", "intensity", "attenuation"};
 constexpr std::array<std::string_view, 9> kMaterialKeys = {
     "ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "fresnel", "absorption"};
-constexpr std::array<std::string_view, 11> kMeshKeys = {"file",      "material", "shading", "smooth_angle",
-                                                        "translate", "rotate",   "scale",   "groups",
-                                                        "edges",     "color_by", "clip"};
+constexpr std::array<std::string_view, 13> kMeshKeys = {
+    "file",  "material", "shading", "smooth_angle", "translate", "rotate",    "scale",
+    "groups", "edges",   "color_by", "clip",        "warp",      "undeformed"};
 constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only", "feature_angle"};
 constexpr std::array<std::string_view, 2> kEdgeSelections = {"elements", "features"};
-constexpr std::array<std::string_view, 6> kAnimationKeys = {"frames", "fps",    "orbit",
-                                                            "axis",   "center", "degrees"};
+constexpr std::array<std::string_view, 10> kAnimationKeys = {
+    "frames", "fps", "orbit", "axis", "center", "degrees", "over", "range", "label", "label_position"};
 
 // State shared by the section readers: the file for messages and the folder paths are relative to.
 struct SceneFile {
@@ -146,6 +147,18 @@ RenderSettings readRender(const SceneFile& file, const toml::table& table) {
   if (auto output = reader.nonEmptyString("output")) render.output = file.resolve(*output);
   if (auto srgb = reader.boolean("srgb")) render.srgb = *srgb;
   return render;
+}
+
+// `[render] step = K`: the step of the results every mesh shows (colours and warps).
+StepSelection readRenderStep(const SceneFile& file, const toml::table& table) {
+  const TomlTableReader reader(table, "render", file.path, kRenderKeys);
+  StepSelection when;
+  if (auto step = reader.integer("step", 0, 1'000'000'000)) {
+    when.step = static_cast<int>(*step);
+    const SourceLocation where = reader.location(*reader.find("step"));
+    when.where = fmt::format("render.step at {}:{}", where.file, where.line);
+  }
+  return when;
 }
 
 // A camera needs a direction (position != look_at) and an up that is not along it.
@@ -423,6 +436,7 @@ MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size
   mesh.groupMaterials = readGroupMaterials(file, reader, materials);
   mesh.edges = readEdges(file, reader);
   mesh.colorBy = readColorBy(file.path, reader);
+  readWarpKeys(reader, mesh);
   const std::string clipName = reader.qualified("clip");
   const std::vector<const toml::table*> clips = tableArray(file, table, "clip", clipName, "mesh.clip");
   for (std::size_t i = 0; i < clips.size(); ++i)
@@ -477,6 +491,7 @@ AnimationSettings readAnimation(const SceneFile& file, const toml::table& table,
   }
   animation.center = reader.vector("center", Triple::Xyz);
   if (auto degrees = reader.number("degrees")) animation.degrees = *degrees;
+  readAnimationStepKeys(reader, animation);
   return animation;
 }
 
@@ -507,8 +522,10 @@ SceneDescription parseScene(std::string_view text, const std::string& path) {
 
   SceneDescription scene;
   scene.path = path;
-  if (const toml::table* render = sectionTable(file, root, "render"))
+  if (const toml::table* render = sectionTable(file, root, "render")) {
     scene.render = readRender(file, *render);
+    scene.when = readRenderStep(file, *render);
+  }
   if (const toml::table* camera = sectionTable(file, root, "camera"))
     scene.camera = readCamera(file, *camera);
   if (const toml::table* ambient = sectionTable(file, root, "ambient")) {
