@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -25,6 +26,7 @@
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/render_overrides.hpp"
 #include "lancer/scene/scene_loader.hpp"
+#include "lancer/scene/step_files.hpp"
 #include "lancer/util/memory_budget.hpp"
 #include "lancer/util/stopwatch.hpp"
 
@@ -81,6 +83,59 @@ void requireImageMemory(const RenderSettings& settings, int threads, ImageBuffer
       fmt::format("a {}x{} image rendered in bands of {} rows", settings.width, settings.height, kTileSize));
 }
 
+// --step, --warp, --color-by and --undeformed on every mesh of the description.
+void applyResultOverrides(SceneDescription& description, const SceneOverrides& overrides) {
+  if (overrides.step) description.when = StepSelection{overrides.step, std::nullopt, "--step"};
+  if (!overrides.warp.empty()) {
+    const std::size_t colon = overrides.warp.rfind(':');
+    WarpSettings warp;
+    warp.field = overrides.warp.substr(0, colon);
+    warp.where = SourceLocation{"--warp"};
+    if (colon != std::string::npos) {
+      const std::string factor = overrides.warp.substr(colon + 1);
+      char* end = nullptr;
+      warp.factor = std::strtod(factor.c_str(), &end);
+      if (factor.empty() || end != factor.c_str() + factor.size() || !std::isfinite(warp.factor))
+        throw InputError(SourceLocation{"--warp"},
+                         fmt::format("'{}' is not FIELD[:FACTOR]: the factor '{}' is not a number (e.g. "
+                                     "--warp displacement:2)",
+                                     overrides.warp, factor));
+    }
+    if (warp.field.empty())
+      throw InputError(SourceLocation{"--warp"},
+                       fmt::format("'{}' names no field: use FIELD[:FACTOR], e.g. --warp displacement:2",
+                                   overrides.warp));
+    for (MeshInstance& mesh : description.meshes) mesh.warp = warp;
+  }
+  if (!overrides.colorBy.empty()) {
+    const std::size_t colon = overrides.colorBy.rfind(':');
+    ColorBy color;
+    color.field = overrides.colorBy.substr(0, colon);
+    color.where = SourceLocation{"--color-by"};
+    if (colon != std::string::npos) {
+      const std::string text = overrides.colorBy.substr(colon + 1);
+      const std::optional<FieldComponent> component = parseFieldComponent(text);
+      if (!component)
+        throw InputError(SourceLocation{"--color-by"},
+                         fmt::format("'{}' is not a component: use magnitude, x, y, z, 0 to 8 or von_mises "
+                                     "(--color-by FIELD[:COMPONENT])",
+                                     text));
+      color.component = *component;
+    }
+    for (MeshInstance& mesh : description.meshes) {
+      if (mesh.colorBy) color.map = mesh.colorBy->map;
+      mesh.colorBy = color;
+    }
+  }
+  if (!overrides.undeformed.empty()) {
+    const UndeformedStyle style = overrides.undeformed == "edges"   ? UndeformedStyle::Edges
+                                  : overrides.undeformed == "ghost" ? UndeformedStyle::Ghost
+                                                                    : UndeformedStyle::None;
+    for (MeshInstance& mesh : description.meshes)
+      if (mesh.warp) mesh.undeformed = style;
+  }
+}
+
 }  // namespace
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
@@ -116,6 +171,14 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
                   "The view set up in gmsh: its options file (File > Save Model Options; default: the mesh's "
                   "MESH.msh.opt)")
       ->expected(0, 1);
+  command.add_option("--step", overrides.step, "Time step of the results shown (colours and warps)")
+      ->check(CLI::Range(0, 1'000'000'000));
+  command.add_option("--warp", overrides.warp,
+                     "Deformed shape: FIELD[:FACTOR], every node moved by FACTOR (default 1) times its vector");
+  command.add_option("--color-by", overrides.colorBy,
+                     "Colour by a field: FIELD[:COMPONENT], COMPONENT magnitude, x, y, z, 0-8 or von_mises");
+  command.add_option("--undeformed", overrides.undeformed, "With --warp, the shape before it: edges or ghost")
+      ->check(CLI::IsMember({"none", "edges", "ghost"}));
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
   command.add_flag("--timings", overrides.timings,
                    "Print where the time before the first ray went: read, orient (shells, orientation, "
@@ -123,7 +186,7 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
 }
 
 PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides,
-                           const ImageBufferChoice& imageBuffer) {
+                           const ImageBufferChoice& imageBuffer, bool keepMeshes) {
   const Stopwatch load;
   std::optional<UpAxis> up;
   if (!overrides.up.empty()) {
@@ -135,7 +198,13 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
   SceneDescription description;
   StageTimes stages;
   std::vector<Mesh> preloaded;
-  if (isMeshFile(input)) {
+  if (isStepFilePattern(input)) {  // a quoted "result_*.msh": one step per file
+    const Stopwatch read;
+    preloaded.push_back(readStepFiles(input, matchStepFiles(input, SourceLocation{input}), overrides.threads,
+                                      SourceLocation{input}));
+    stages.add("read", read.seconds());
+    description = quickLookScene(input, preloaded.front(), up);
+  } else if (isMeshFile(input)) {
     const Stopwatch read;
     preloaded.push_back(readMsh(input, overrides.threads));
     stages.add("read", read.seconds());
@@ -165,10 +234,19 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
     applied.shading = enumFromName<ShadingMode>(kShadingNames, overrides.shading);
   applied.edges = overrides.edges;
   applyRenderOverrides(description, applied, preloaded.empty() ? nullptr : &preloaded.front());
+  applyResultOverrides(description, overrides);
   requireImageMemory(description.render, overrides.threads,
                      imageBuffer ? imageBuffer(description.render) : ImageBuffer::Whole, input);
-  Scene scene = preloaded.empty() ? buildScene(description, overrides.threads, &stages)
-                                  : buildScene(description, std::move(preloaded), overrides.threads, &stages);
+  std::vector<Mesh> meshes =
+      preloaded.empty() ? readSceneMeshes(description, overrides.threads, &stages) : std::move(preloaded);
+  std::vector<Mesh> kept;
+  Scene scene;
+  if (keepMeshes) {
+    scene = buildSceneAt(description, meshes, overrides.threads, &stages);
+    kept = std::move(meshes);
+  } else {
+    scene = buildScene(description, std::move(meshes), overrides.threads, &stages);
+  }
   if (!overrides.quiet)
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
   const double loadSeconds = load.seconds();
@@ -179,8 +257,14 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
                                                parseAccelKind(overrides.accel), buildOptions);
   const double buildSeconds = build.seconds();
   stages.add("kd build", buildSeconds);
-  return PreparedScene{std::move(description), std::move(scene), std::move(accelerator), loadSeconds,
-                       buildSeconds,           std::move(stages)};
+  return PreparedScene{std::move(description), std::move(kept),   std::move(scene), std::move(accelerator),
+                       loadSeconds,            buildSeconds,      std::move(stages)};
+}
+
+bool sceneAnimatesOverSteps(const std::string& input) {
+  if (isStepFilePattern(input) || isMeshFile(input)) return false;
+  const SceneDescription description = loadScene(input);
+  return description.animation && description.animation->overSteps;
 }
 
 std::string formatStageTimes(const StageTimes& stages) {

@@ -30,12 +30,21 @@ struct SceneOverrides {
   std::optional<std::string> gmshView;
   bool quiet = false;
   bool timings = false;  // --timings: the preparation's stages on stderr
+  // Results (docs/results.md): --step K, --warp FIELD[:FACTOR], --color-by FIELD[:COMPONENT],
+  // --undeformed edges|ghost, applied to every mesh.
+  std::optional<int> step;
+  std::string warp;
+  std::string colorBy;
+  std::string undeformed;
 };
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides);
 
 struct PreparedScene {
   SceneDescription description;
+  // The meshes as read, every step of their views (kept only when asked: an animation over steps
+  // builds each frame's scene from them).
+  std::vector<Mesh> meshes;
   Scene scene;
   Accelerator accelerator;
   double loadSeconds = 0;
@@ -56,7 +65,11 @@ using ImageBufferChoice = std::function<ImageBuffer(const RenderSettings&)>;
 // overrides, checks the image's memory against the budget (--max-memory), loads the meshes and builds
 // the accelerator. Without a choice the image is held whole.
 PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides,
-                           const ImageBufferChoice& imageBuffer = {});
+                           const ImageBufferChoice& imageBuffer = {}, bool keepMeshes = false);
+
+// Whether `input` is a scene file whose [animation] says over = "steps" (read once more, before the
+// meshes, so that they are kept for the frames).
+bool sceneAnimatesOverSteps(const std::string& input);
 
 // Ctrl-C and SIGTERM set the flag instead of killing the process, so outputs stay untouched.
 const std::atomic<bool>& installInterruptHandler();

@@ -59,6 +59,7 @@ StepScenes::StepScenes(SceneDescription description, const std::vector<Mesh>& me
       threads_(threads) {
   frames_ = planStepFrames(description_, meshes_, animation_);
   animation_.frames = frameCount();
+  if (!animation_.degreesGiven) animation_.degrees = 0;  // the steps move; the camera stays unless asked
   for (MeshInstance& mesh : description_.meshes)
     if (mesh.colorBy && animation_.perStepRange) mesh.colorBy->perStepRange = true;
   // The camera frames every frame's shape: the union of the deformed bounds over the frames.

@@ -13,8 +13,6 @@
 namespace lancer {
 namespace {
 
-constexpr std::array<std::string_view, 5> kColorByKeys = {"field", "step", "map", "range", "component"};
-
 // The least and greatest scalar of a step's values, NaN ignored; empty (low > high) when none.
 std::pair<double, double> scalarRange(const MeshField& field, const FieldComponent& component) {
   double low = std::numeric_limits<double>::infinity(), high = -low;
@@ -38,7 +36,7 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
     mesh.fail(*node, fmt::format(
                          "{} must be a table like {{ field = \"temperature\", map = \"viridis\" }}, found {}",
                          mesh.qualified("color_by"), describeValue(*node)));
-  const TomlTableReader reader(*table, mesh.qualified("color_by"), file, kColorByKeys);
+  const TomlTableReader reader(*table, mesh.qualified("color_by"), file, SceneTable::MeshColorBy);
   ColorBy spec;
   spec.where = reader.location(*node);
   const std::optional<std::string> field = reader.nonEmptyString("field");

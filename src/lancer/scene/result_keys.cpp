@@ -7,7 +7,6 @@
 namespace lancer {
 namespace {
 
-constexpr std::array<std::string_view, 2> kWarpKeys = {"field", "factor"};
 constexpr std::array<std::string_view, 3> kUndeformedStyles = {"none", "edges", "ghost"};
 constexpr std::array<std::string_view, 2> kOverChoices = {"orbit", "steps"};
 constexpr std::array<std::string_view, 2> kRangeChoices = {"all", "step"};
@@ -22,7 +21,7 @@ void readWarpKeys(const TomlTableReader& mesh, MeshInstance& instance) {
     if (!table)
       mesh.fail(*node, fmt::format("{} must be a table like {{ field = \"displacement\", factor = 2.0 }}, found {}",
                                    mesh.qualified("warp"), describeValue(*node)));
-    const TomlTableReader reader(*table, mesh.qualified("warp"), mesh.file(), kWarpKeys);
+    const TomlTableReader reader(*table, mesh.qualified("warp"), mesh.file(), SceneTable::MeshWarp);
     WarpSettings warp;
     warp.where = reader.location(*node);
     const std::optional<std::string> field = reader.nonEmptyString("field");
@@ -44,6 +43,7 @@ void readWarpKeys(const TomlTableReader& mesh, MeshInstance& instance) {
 void readAnimationStepKeys(const TomlTableReader& reader, AnimationSettings& animation) {
   if (auto over = reader.choice("over", kOverChoices)) animation.overSteps = *over == 1;
   animation.framesGiven = reader.find("frames") != nullptr;
+  animation.degreesGiven = reader.find("degrees") != nullptr;
   if (auto range = reader.choice("range", kRangeChoices)) animation.perStepRange = *range == 1;
   if (auto label = reader.string("label")) {
     formatStepLabel(*label, 0.0, 0, reader.location(*reader.find("label")));  // names checked at load

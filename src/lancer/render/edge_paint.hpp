@@ -1,0 +1,42 @@
+// Element edges painted on the surfaces (edge_overlay.hpp) and the outline edges drawn whole
+// (outline_edges.hpp), for every integrator: how much of a pixel the edges at a hit cover.
+#pragma once
+
+#include <optional>
+
+#include "lancer/render/camera.hpp"
+#include "lancer/render/edge_overlay.hpp"
+#include "lancer/render/integrator.hpp"
+#include "lancer/render/outline_edges.hpp"
+#include "lancer/render/scene_queries.hpp"
+
+namespace lancer {
+
+class EdgePaint {
+ public:
+  // `footprint`: the world size of a pixel along primary rays, for edges drawn in pixel widths.
+  EdgePaint(const Scene& scene, PixelFootprint footprint) : scene_(scene), footprint_(footprint) {}
+  // For primary rays of `camera` (which must outlive this): edges on outlines are drawn whole.
+  EdgePaint(const Scene& scene, const Camera& camera, int width, int height);
+
+  // Coverage of the hit face's drawn edges at the hit (0 when its mesh draws none), with their colour.
+  // `pathLength`: how far the ray's origin is from the eye along the path.
+  float coverageAt(const Ray& ray, const Hit& hit, float pathLength, Vec3& color) const;
+  // Paints the outer half of outline edges over what primary ray `ray` saw at `hitDistance`;
+  // `known`: the ray's first query, already answered.
+  void paintOutlines(const SceneQueries& queries, const Ray& ray, float hitDistance, TraceResult& result,
+                     TraceCounters& counters, const KnownHit* known) const {
+    if (outlines_ && outlines_->near(ray))
+      paintOutlinesNear(queries, ray, hitDistance, result, counters, known);
+  }
+
+ private:
+  void paintOutlinesNear(const SceneQueries& queries, const Ray& ray, float hitDistance, TraceResult& result,
+                         TraceCounters& counters, const KnownHit* known) const;
+
+  const Scene& scene_;
+  PixelFootprint footprint_;
+  std::optional<OutlineEdges> outlines_;  // with a camera, when some mesh draws its edges
+};
+
+}  // namespace lancer

@@ -1,0 +1,36 @@
+// What every integrator shares with the renderer: the result of one camera ray, the counters, and
+// the concept an integrator satisfies (pbrt-v4's RayIntegrator::Li, Mitsuba's SamplingIntegrator).
+#pragma once
+
+#include <concepts>
+#include <cstdint>
+
+#include "lancer/math/ray.hpp"
+#include "lancer/math/vec3.hpp"
+#include "lancer/render/sample_sequence.hpp"
+
+namespace lancer {
+
+struct TraceResult {
+  Vec3 color{0, 0, 0};
+  float alpha = 0;  // 1 when the ray hit geometry (directly or through reflections), for coverage
+};
+
+struct TraceCounters {
+  std::uint64_t rays = 0;  // primary + secondary + shadow
+};
+
+// An integrator answers one camera ray: the radiance it brings back (linear RGB, the units of
+// docs/lighting.md) and the coverage of what it saw, drawing whatever random numbers it needs from
+// the pixel's own sample stream (so the image is the same for any thread count and any split of
+// the work). The integrators: the Whitted tracer (tracer.hpp, which ignores the stream), the path
+// tracer (path_integrator.hpp) and ambient occlusion (ao_integrator.hpp). They share the surface
+// records (surface_point.hpp), the scene queries (scene_queries.hpp), the lights and materials of
+// the Scene and its accelerator. Batching rays into packets is the renderer's business.
+template <typename I>
+concept RayIntegrator = requires(const I& integrator, const Ray& ray, SampleStream& samples,
+                                 TraceCounters& counters) {
+  { integrator.li(ray, samples, counters) } -> std::same_as<TraceResult>;
+};
+
+}  // namespace lancer

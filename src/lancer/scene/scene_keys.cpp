@@ -1,0 +1,62 @@
+#include "lancer/scene/scene_keys.hpp"
+
+#include <array>
+
+namespace lancer {
+namespace {
+
+constexpr std::array<std::string_view, 9> kDocumentKeys = {
+    "render", "camera", "ambient", "light", "material", "mesh", "animation", "clip", "floor"};
+constexpr std::array<std::string_view, 11> kRenderKeys = {
+    "width",      "height", "samples", "max_depth",          "sampler", "shading",
+    "background", "output", "srgb",    "adaptive_threshold", "step"};
+constexpr std::array<std::string_view, 8> kCameraKeys = {
+    "projection", "position", "look_at", "up", "up_axis", "fov", "view_height", "gmsh_view"};
+constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
+constexpr std::array<std::string_view, 3> kLightKeys = {"position", "intensity", "attenuation"};
+constexpr std::array<std::string_view, 9> kMaterialKeys = {
+    "ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "fresnel", "absorption"};
+constexpr std::array<std::string_view, 13> kMeshKeys = {
+    "file",   "material", "shading",  "smooth_angle", "translate", "rotate",    "scale",
+    "groups", "edges",    "color_by", "clip",         "warp",      "undeformed"};
+constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only", "feature_angle"};
+constexpr std::array<std::string_view, 5> kColorByKeys = {"field", "step", "map", "range", "component"};
+constexpr std::array<std::string_view, 2> kWarpKeys = {"field", "factor"};
+constexpr std::array<std::string_view, 3> kClipKeys = {"point", "normal", "cap"};
+constexpr std::array<std::string_view, 3> kFloorKeys = {"shadow_catcher", "height", "normal"};
+constexpr std::array<std::string_view, 10> kAnimationKeys = {
+    "frames", "fps", "orbit", "axis", "center", "degrees", "over", "range", "label", "label_position"};
+
+constexpr std::array<SceneTableKeys, 14> kSceneTables = {{
+    {SceneTable::Document, "", kDocumentKeys},
+    {SceneTable::Render, "render", kRenderKeys},
+    {SceneTable::Camera, "camera", kCameraKeys},
+    {SceneTable::Ambient, "ambient", kAmbientKeys},
+    {SceneTable::Light, "light", kLightKeys},
+    {SceneTable::Material, "material.NAME", kMaterialKeys},
+    {SceneTable::Mesh, "mesh", kMeshKeys},
+    {SceneTable::MeshEdges, "mesh.edges", kEdgeKeys},
+    {SceneTable::MeshColorBy, "mesh.color_by", kColorByKeys},
+    {SceneTable::MeshClip, "mesh.clip", kClipKeys},
+    {SceneTable::Clip, "clip", kClipKeys},
+    {SceneTable::Floor, "floor", kFloorKeys},
+    {SceneTable::Animation, "animation", kAnimationKeys},
+    {SceneTable::MeshWarp, "mesh.warp", kWarpKeys},
+}};
+
+constexpr bool inEnumOrder() {
+  for (std::size_t i = 0; i < kSceneTables.size(); ++i)
+    if (static_cast<std::size_t>(kSceneTables[i].table) != i) return false;
+  return true;
+}
+static_assert(inEnumOrder(), "kSceneTables lists the tables in the order of SceneTable");
+
+}  // namespace
+
+std::span<const std::string_view> sceneKeys(SceneTable table) {
+  return kSceneTables[static_cast<std::size_t>(table)].keys;
+}
+
+std::span<const SceneTableKeys> sceneFileKeys() { return kSceneTables; }
+
+}  // namespace lancer
