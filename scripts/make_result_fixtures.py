@@ -74,6 +74,27 @@ def write(path, views):
         gmsh.view.write(v, path, append=True)
 
 
+def write_view_options(root):
+    """cantilever.msh.opt as gmsh's "Save Model Options" writes it for a view set up in the GUI: the
+    displacement drawn as the deformed shape (x3), the stress at step 2 on a custom range with
+    iso-values, the temperature hidden. gmsh writes each view's FileName as an absolute path: those
+    lines are dropped (lancer does not read them; the file stays the same on every machine)."""
+    gmsh.initialize(["gmsh", "-v", "0"])
+    gmsh.open(os.path.join(root, "cantilever.msh"))
+    for name, value in [("View[0].VectorType", 5), ("View[0].DisplacementFactor", 3), ("View[1].RangeType", 2),
+                        ("View[1].CustomMin", 1), ("View[1].CustomMax", 4), ("View[1].TimeStep", 2),
+                        ("View[1].IntervalsType", 1), ("View[1].NbIso", 8), ("View[2].Visible", 0),
+                        ("General.Trackball", 0), ("General.RotationX", 10)]:
+        gmsh.option.setNumber(name, value)
+    path = os.path.join(root, "cantilever.msh.opt")
+    gmsh.write(path)
+    gmsh.finalize()
+    with open(path) as f:
+        lines = [line for line in f if ".FileName = " not in line]
+    with open(path, "w") as f:
+        f.writelines(lines)
+
+
 def main():
     root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "data", "results")
     os.makedirs(os.path.join(root, "steps"), exist_ok=True)
@@ -89,6 +110,7 @@ def main():
         for v in views:
             gmsh.view.remove(v)
     gmsh.finalize()
+    write_view_options(root)
     print("result fixtures:", ", ".join(sorted(os.listdir(root))), file=sys.stderr)
 
 

@@ -21,6 +21,7 @@
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/render/renderer.hpp"
+#include "lancer/scene/gmsh_post_options.hpp"
 #include "lancer/scene/gmsh_view.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
@@ -215,11 +216,15 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
     description = loadScene(input);
     if (up) applyUpAxis(description.camera, *up);
   }
+  std::vector<GmshPostView> postViews;  // View[i].* of the options file: steps, warps, ranges
+  std::string postViewsPath;
   if (overrides.gmshView) {
     // gmsh reads part.msh.opt beside part.msh whenever it opens it: the same file by default.
     std::string path = *overrides.gmshView;
     if (path.empty() && !description.meshes.empty()) path = description.meshes.front().file + ".opt";
     description.camera.gmshView = readGmshView(path);
+    postViews = readGmshPostViews(path);
+    postViewsPath = path;
     if (!preloaded.empty()) placeQuickLookLights(description, preloaded.front());  // lit from gmsh's side
   }
   RenderOverrides applied;
@@ -239,6 +244,7 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
                      imageBuffer ? imageBuffer(description.render) : ImageBuffer::Whole, input);
   std::vector<Mesh> meshes =
       preloaded.empty() ? readSceneMeshes(description, overrides.threads, &stages) : std::move(preloaded);
+  if (!postViews.empty() && !meshes.empty()) applyGmshPostViews(description, meshes.front(), postViews, postViewsPath);
   std::vector<Mesh> kept;
   Scene scene;
   if (keepMeshes) {

@@ -20,6 +20,11 @@ struct ColorBy {
   bool perStepRange = false;                       // range = "step": the range of the step shown
   FieldComponent component;                        // component = "magnitude" (default), 0..8, "x", ...
   SourceLocation where;                            // the color_by value, for errors found at load
+  // From a gmsh view's options (--gmsh-view): View[i].IntervalsType (1 iso-values, 2 continuous, 3
+  // discrete bands, 4 numeric) with NbIso, and ShowScale, for isolines, bands and the legend.
+  int gmshIntervalsType = 2;
+  int gmshNbIso = 10;
+  bool showScale = true;
 };
 
 }  // namespace lancer
