@@ -16,6 +16,7 @@
 #include "lancer/render/animation.hpp"
 #include "lancer/render/step_animation.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/result_keys.hpp"
 #include "lancer/util/stopwatch.hpp"
 #include "scene_setup.hpp"
 
@@ -28,10 +29,11 @@ struct AnimateCommandOptions {
   std::optional<int> frames;
   std::optional<double> fps;
   std::string orbit;
-  std::string over;               // --over orbit|steps
-  AnimationOutputOptions writer;  // --loop, --dither, --palette (the rest from the scene)
-  std::string shard;              // --shard I/N or auto
-  std::string frameRange;         // --frame-range A-B
+  std::string over;                  // --over orbit|steps
+  std::optional<std::string> label;  // --label "t = {time:.3g} s"
+  AnimationOutputOptions writer;     // --loop, --dither, --palette (the rest from the scene)
+  std::string shard;                 // --shard I/N or auto
+  std::string frameRange;            // --frame-range A-B
   bool skipExisting = false;
   SceneOverrides overrides;
 };
@@ -81,6 +83,14 @@ int runAnimate(const AnimateCommandOptions& options) {
   if (!options.over.empty()) animation.overSteps = overStepsAsked;
   if (options.frames) animation.frames = *options.frames, animation.framesGiven = true;
   if (options.fps) animation.fps = *options.fps;
+  if (options.label) {
+    formatStepLabel(*options.label, 0.0, 0, SourceLocation{"--label"});  // unknown names: said now
+    animation.label = *options.label;
+  }
+  if (!animation.label.empty() && !animation.overSteps)
+    throw InputError(SourceLocation{options.label ? "--label" : options.input},
+                     "a label shows the time and step of an animation over steps: add --over steps (or "
+                     "over = \"steps\" in [animation])");
   if (!options.orbit.empty())
     animation.orbitLight = parseOrbit(options.orbit, prepared.scene.appearance.lights.size());
   std::optional<StepScenes> steps;
@@ -203,9 +213,13 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
   command->add_option("--frames", options->frames, "Number of frames")->check(CLI::Range(1, kMaxFrames));
   command->add_option("--fps", options->fps, "Frames per second")->check(CLI::Range(0.01, 100.0));
   command->add_option("--orbit", options->orbit, "What turns: camera or light:K");
-  command->add_option("--over", options->over,
-                      "What the frames run through: orbit (default) or steps (the results' time steps)")
+  command
+      ->add_option("--over", options->over,
+                   "What the frames run through: orbit (default) or steps (the results' time steps)")
       ->check(CLI::IsMember({"orbit", "steps"}));
+  command->add_option(
+      "--label", options->label,
+      "Over steps: text drawn into each frame, {time} and {step} replaced (\"t = {time:.3g} s\")");
   addAnimationWriterOptions(*command, options->writer);
   command->add_option("--shard", options->shard,
                       "Job arrays: render only frames k with k % N == I (I/N), or take I and N from SLURM or "

@@ -103,9 +103,9 @@ void applyResultOverrides(SceneDescription& description, const SceneOverrides& o
                                      overrides.warp, factor));
     }
     if (warp.field.empty())
-      throw InputError(SourceLocation{"--warp"},
-                       fmt::format("'{}' names no field: use FIELD[:FACTOR], e.g. --warp displacement:2",
-                                   overrides.warp));
+      throw InputError(
+          SourceLocation{"--warp"},
+          fmt::format("'{}' names no field: use FIELD[:FACTOR], e.g. --warp displacement:2", overrides.warp));
     for (MeshInstance& mesh : description.meshes) mesh.warp = warp;
   }
   if (!overrides.colorBy.empty()) {
@@ -174,11 +174,13 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
       ->expected(0, 1);
   command.add_option("--step", overrides.step, "Time step of the results shown (colours and warps)")
       ->check(CLI::Range(0, 1'000'000'000));
-  command.add_option("--warp", overrides.warp,
-                     "Deformed shape: FIELD[:FACTOR], every node moved by FACTOR (default 1) times its vector");
+  command.add_option(
+      "--warp", overrides.warp,
+      "Deformed shape: FIELD[:FACTOR], every node moved by FACTOR (default 1) times its vector");
   command.add_option("--color-by", overrides.colorBy,
                      "Colour by a field: FIELD[:COMPONENT], COMPONENT magnitude, x, y, z, 0-8 or von_mises");
-  command.add_option("--undeformed", overrides.undeformed, "With --warp, the shape before it: edges or ghost")
+  command
+      .add_option("--undeformed", overrides.undeformed, "With --warp, the shape before it: edges or ghost")
       ->check(CLI::IsMember({"none", "edges", "ghost"}));
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
   command.add_flag("--timings", overrides.timings,
@@ -244,7 +246,8 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
                      imageBuffer ? imageBuffer(description.render) : ImageBuffer::Whole, input);
   std::vector<Mesh> meshes =
       preloaded.empty() ? readSceneMeshes(description, overrides.threads, &stages) : std::move(preloaded);
-  if (!postViews.empty() && !meshes.empty()) applyGmshPostViews(description, meshes.front(), postViews, postViewsPath);
+  if (!postViews.empty() && !meshes.empty())
+    applyGmshPostViews(description, meshes.front(), postViews, postViewsPath);
   std::vector<Mesh> kept;
   Scene scene;
   if (keepMeshes) {
@@ -263,8 +266,9 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
                                                parseAccelKind(overrides.accel), buildOptions);
   const double buildSeconds = build.seconds();
   stages.add("kd build", buildSeconds);
-  return PreparedScene{std::move(description), std::move(kept),   std::move(scene), std::move(accelerator),
-                       loadSeconds,            buildSeconds,      std::move(stages)};
+  return PreparedScene{std::move(description), std::move(kept), std::move(scene),
+                       std::move(accelerator), loadSeconds,     buildSeconds,
+                       std::move(stages)};
 }
 
 bool sceneAnimatesOverSteps(const std::string& input) {

@@ -47,8 +47,10 @@ void animate(const py::object& target, const std::string& output, const RenderAr
   std::optional<StepScenes> steps;
   if (animation.overSteps) {
     py::gil_scoped_release release;
-    if (source.quickLookMesh) meshes.push_back(*source.quickLookMesh);
-    else meshes = readSceneMeshes(prepared.description, arguments.threads);
+    if (source.quickLookMesh)
+      meshes.push_back(*source.quickLookMesh);
+    else
+      meshes = readSceneMeshes(prepared.description, arguments.threads);
     steps.emplace(prepared.description, meshes, animation, AccelKind::KdTreeSah, arguments.threads);
     animation = steps->animation();
   }
@@ -80,7 +82,8 @@ void animate(const py::object& target, const std::string& output, const RenderAr
       }
     } else {
       stats = renderAnimation(prepared.scene, prepared.accelerator, prepared.description, animation,
-                              render.options, [&](int frame, const Image& image) { writer.addFrame(frame, image); });
+                              render.options,
+                              [&](int frame, const Image& image) { writer.addFrame(frame, image); });
     }
   }
   render.finish();  // KeyboardInterrupt: the writer's destructor removes its temporary files

@@ -81,8 +81,8 @@ ColorBy colorByArgument(const std::string& field, const std::string& map,
   colorBy.where = SourceLocation{"color_by"};
   const std::optional<FieldComponent> parsed = parseFieldComponent(component);
   if (!parsed)
-    throw py::value_error(fmt::format("component='{}': use 'magnitude', 'x', 'y', 'z', '0' to '8' or 'von_mises'",
-                                      component));
+    throw py::value_error(
+        fmt::format("component='{}': use 'magnitude', 'x', 'y', 'z', '0' to '8' or 'von_mises'", component));
   colorBy.component = *parsed;
   const std::optional<ColorMapKind> kind = parseColorMap(map);
   if (!kind) throw py::value_error(fmt::format("color_map='{}': use one of {}", map, colorMapNames()));
@@ -187,9 +187,11 @@ void bindScene(py::module_& module) {
              const std::optional<std::string>& colorBy, const std::string& colorMap,
              const std::optional<std::pair<double, double>>& colorRange, const std::optional<int>& step,
              const py::object& warp, const std::string& component, const std::string& undeformed) {
-            if (step && *step < 0) throw py::value_error(fmt::format("step={}: a field's steps count from 0", *step));
+            if (step && *step < 0)
+              throw py::value_error(fmt::format("step={}: a field's steps count from 0", *step));
             if (undeformed != "none" && undeformed != "edges" && undeformed != "ghost")
-              throw py::value_error(fmt::format("undeformed='{}': use 'none', 'edges' or 'ghost'", undeformed));
+              throw py::value_error(
+                  fmt::format("undeformed='{}': use 'none', 'edges' or 'ghost'", undeformed));
             PythonScene scene = quickLookOf(std::move(mesh), upAxisArgument(up));
             MeshInstance& instance = scene.description.meshes.front();
             if (colorBy) instance.colorBy = colorByArgument(*colorBy, colorMap, colorRange, component);

@@ -15,7 +15,9 @@ namespace {
 constexpr double kLength = 10;
 
 // The fixture's deflection: the tip moves down by t.
-double deflection(double x, double t) { return t * x * x * (3 * kLength - x) / (2 * kLength * kLength * kLength); }
+double deflection(double x, double t) {
+  return t * x * x * (3 * kLength - x) / (2 * kLength * kLength * kLength);
+}
 
 Mesh cantilever() { return readMsh(test::dataFile("results/cantilever.msh")); }
 
@@ -32,7 +34,8 @@ TEST(FieldSteps, EveryStepOfEveryViewIsKeptInTimeOrder) {
   }
   EXPECT_EQ(stepTimes(mesh, {"displacement", "temperature"}), (std::vector<double>{0, 0.5, 1, 1.5}));
   EXPECT_EQ(describeViews(mesh),
-            "\"displacement\" (steps 0, 1, 2, 3), \"stress\" (steps 0, 1, 2, 3), \"temperature\" (steps 0, 1, 2, 3)");
+            "\"displacement\" (steps 0, 1, 2, 3), \"stress\" (steps 0, 1, 2, 3), \"temperature\" (steps 0, "
+            "1, 2, 3)");
 }
 
 TEST(FieldSteps, AStepIsTheFileValuesAndATimeBetweenStepsBlendsLinearly) {
@@ -81,9 +84,10 @@ TEST(FieldComponents, NamesAndIndices) {
   EXPECT_FALSE(parseFieldComponent("9"));
   EXPECT_FALSE(parseFieldComponent("w"));
   EXPECT_FALSE(parseFieldComponent(""));
-  EXPECT_EQ(componentProblem(FieldComponent{Kind::VonMises, 0}, 3),
-            "von_mises needs a tensor of 9 components, the view is a vector (3 components); use \"magnitude\" or 0 "
-            "to 2");
+  EXPECT_EQ(
+      componentProblem(FieldComponent{Kind::VonMises, 0}, 3),
+      "von_mises needs a tensor of 9 components, the view is a vector (3 components); use \"magnitude\" or 0 "
+      "to 2");
   EXPECT_EQ(componentProblem(FieldComponent{Kind::Index, 3}, 3),
             "component 3 does not exist: the view is a vector (3 components); use \"magnitude\" or 0 to 2");
   EXPECT_EQ(componentProblem(FieldComponent{Kind::Index, 2}, 3), "");

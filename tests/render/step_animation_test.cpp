@@ -20,13 +20,16 @@ constexpr int kWidth = 360, kImageHeight = 200;
 constexpr double kViewHeight = 6, kCentreX = 5.25, kCentreY = -0.25;
 constexpr double kPixel = kViewHeight / kImageHeight;
 
-double deflection(double x, double t) { return t * x * x * (3 * kLength - x) / (2 * kLength * kLength * kLength); }
+double deflection(double x, double t) {
+  return t * x * x * (3 * kLength - x) / (2 * kLength * kLength * kLength);
+}
 
 // The side view (looking down -z at the beam's face z = 1), the beam warped by its displacement.
 SceneDescription sideView(double factor) {
-  SceneDescription d = test::flatLitOnBlue(
-      test::orthographicView(kWidth, kImageHeight, {kCentreX, kCentreY, 10}, {kCentreX, kCentreY, 0}, kViewHeight),
-      {5, 5, 20});
+  SceneDescription d =
+      test::flatLitOnBlue(test::orthographicView(kWidth, kImageHeight, {kCentreX, kCentreY, 10},
+                                                 {kCentreX, kCentreY, 0}, kViewHeight),
+                          {5, 5, 20});
   d.materials = {test::matteMaterial("beam", {0.8f, 0.8f, 0.2f}, {0.8f, 0.8f, 0.2f})};
   MeshInstance beam;
   beam.file = test::dataFile("results/cantilever.msh");
@@ -50,7 +53,7 @@ void expectSilhouette(const Image& image, double t, double factor, const std::st
     for (int j = 0; j < kImageHeight; ++j)
       if (!isBackground(image.at(i, j))) (top < 0 ? top = j : 0), bottom = j;
     ASSERT_GE(top, 0) << what << ": column " << i << " is empty";
-    const double yTop = kCentreY + (kImageHeight / 2.0 - top) * kPixel;          // upper edge of the first row
+    const double yTop = kCentreY + (kImageHeight / 2.0 - top) * kPixel;  // upper edge of the first row
     const double yBottom = kCentreY + (kImageHeight / 2.0 - bottom - 1) * kPixel;  // lower edge of the last
     const double w = factor * deflection(x, t);
     EXPECT_NEAR(yTop, kHeight - w, 1.5 * kPixel) << what << ", x = " << x;
@@ -69,7 +72,8 @@ TEST(StepAnimation, EachStepsSilhouetteIsTheExactDeformedShape) {
   ASSERT_EQ(steps.frameCount(), 4);
   EXPECT_EQ(steps.frames().times, (std::vector<double>{0, 0.5, 1, 1.5}));
   EXPECT_EQ(steps.frames().steps, (std::vector<int>{0, 1, 2, 3}));
-  for (int k = 0; k < 4; ++k) expectSilhouette(steps.render(k, RenderOptions{}), 0.5 * k, 1.0, fmt::format("step {}", k));
+  for (int k = 0; k < 4; ++k)
+    expectSilhouette(steps.render(k, RenderOptions{}), 0.5 * k, 1.0, fmt::format("step {}", k));
   EXPECT_EQ(steps.rebuilds(), 3);
 }
 
@@ -83,7 +87,8 @@ TEST(StepAnimation, FramesBetweenStepsBlendLinearlyInTime) {
   StepScenes steps(description, meshes, animation, AccelKind::KdTreeSah, 0);
   ASSERT_EQ(steps.frameCount(), 7);
   EXPECT_EQ(steps.frames().steps, (std::vector<int>{0, 0, 1, 1, 2, 2, 3}));
-  for (int k : {1, 5}) expectSilhouette(steps.render(k, RenderOptions{}), 0.25 * k, 2.0, fmt::format("frame {}", k));
+  for (int k : {1, 5})
+    expectSilhouette(steps.render(k, RenderOptions{}), 0.25 * k, 2.0, fmt::format("frame {}", k));
 }
 
 TEST(StepAnimation, ColourRangeIsFixedOverTheFramesUnlessPerStep) {

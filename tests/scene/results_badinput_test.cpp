@@ -27,9 +27,10 @@ std::string warpError(const std::string& field, StepSelection when = {}) {
 
 TEST(ResultsBadInput, WarpByAViewThatIsNotANodeVector) {
   const std::string file = test::dataFile("results/cantilever.msh");
-  EXPECT_EQ(warpError("stress"), "scene.toml:4:8: error: warp field \"stress\" in " + file +
-                                     " has 9 components per node: a warp needs a vector of 3 (a displacement); "
-                                     "colour by this view instead");
+  EXPECT_EQ(warpError("stress"),
+            "scene.toml:4:8: error: warp field \"stress\" in " + file +
+                " has 9 components per node: a warp needs a vector of 3 (a displacement); "
+                "colour by this view instead");
   EXPECT_NE(warpError("temperature").find("is element data ($ElementData), one value per element"),
             std::string::npos);
   EXPECT_NE(warpError("displacment").find("is not in " + file + " (did you mean 'displacement'?); it has"),
@@ -38,16 +39,20 @@ TEST(ResultsBadInput, WarpByAViewThatIsNotANodeVector) {
 }
 
 TEST(ResultsBadInput, StepPastTheLast) {
-  EXPECT_NE(warpError("displacement", StepSelection{7, {}, "--step"})
-                .find("warp field \"displacement\" has no step 7: its steps are 0, 1, 2, 3 (give a step from 0 to 3) "
-                      "in " +
-                      test::dataFile("results/cantilever.msh") + " (--step)"),
-            std::string::npos)
+  EXPECT_NE(
+      warpError("displacement", StepSelection{7, {}, "--step"})
+          .find(
+              "warp field \"displacement\" has no step 7: its steps are 0, 1, 2, 3 (give a step from 0 to 3) "
+              "in " +
+              test::dataFile("results/cantilever.msh") + " (--step)"),
+      std::string::npos)
       << warpError("displacement", StepSelection{7, {}, "--step"});
   ColorBy spec;
   spec.field = "temperature";
   spec.where = SourceLocation{"scene.toml", 6, 12};
-  const std::string message = test::messageOf([&] { resolveColorBy(spec, cantilever(), StepSelection{4, {}, "--step"}); });
+  const std::string message = test::messageOf([&] {
+    resolveColorBy(spec, cantilever(), StepSelection{4, {}, "--step"});
+  });
   EXPECT_NE(message.find("color_by field \"temperature\" has no step 4"), std::string::npos) << message;
   EXPECT_NE(message.find("(--step)"), std::string::npos) << message;
 }
@@ -75,34 +80,43 @@ TEST(ResultsBadInput, ComponentThatDoesNotExist) {
   spec.where = SourceLocation{"scene.toml", 6, 12};
   spec.component = FieldComponent{FieldComponent::Kind::VonMises, 0};
   EXPECT_EQ(test::messageOf([&] { resolveColorBy(spec, cantilever()); }),
-            "scene.toml:6:12: error: color_by field \"displacement\" in " + test::dataFile("results/cantilever.msh") +
-                ": von_mises needs a tensor of 9 components, the view is a vector (3 components); use \"magnitude\" "
+            "scene.toml:6:12: error: color_by field \"displacement\" in " +
+                test::dataFile("results/cantilever.msh") +
+                ": von_mises needs a tensor of 9 components, the view is a vector (3 components); use "
+                "\"magnitude\" "
                 "or 0 to 2");
-  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\ncolor_by = { field = \"s\", component = \"w\" }\n",
-                                 "mesh[0].color_by.component must be \"magnitude\", \"x\", \"y\", \"z\", \"von_mises\" "
-                                 "or an index 0 to 8, found string \"w\"");
+  test::expectSceneErrorContains(
+      "[[mesh]]\nfile = \"a.msh\"\ncolor_by = { field = \"s\", component = \"w\" }\n",
+      "mesh[0].color_by.component must be \"magnitude\", \"x\", \"y\", \"z\", \"von_mises\" "
+      "or an index 0 to 8, found string \"w\"");
 }
 
 TEST(ResultsBadInput, LabelWithAnUnknownName) {
-  test::expectSceneErrorContains("[animation]\nover = \"steps\"\nlabel = \"t = {t:.3g}\"\n",
-                                 "the label \"t = {t:.3g}\" cannot be formatted (argument not found): it may use "
-                                 "{time} and {step}");
-  EXPECT_EQ(formatStepLabel("t = {time:.3g} s, step {step}", 0.123456, 4, SourceLocation{}), "t = 0.123 s, step 4");
+  test::expectSceneErrorContains(
+      "[animation]\nover = \"steps\"\nlabel = \"t = {t:.3g}\"\n",
+      "the label \"t = {t:.3g}\" cannot be formatted (argument not found): it may use "
+      "{time} and {step}");
+  EXPECT_EQ(formatStepLabel("t = {time:.3g} s, step {step}", 0.123456, 4, SourceLocation{}),
+            "t = 0.123 s, step 4");
 }
 
 TEST(ResultsBadInput, SceneKeys) {
-  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nwarp = \"displacement\"\n",
-                                 "mesh[0].warp must be a table like { field = \"displacement\", factor = 2.0 }");
-  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nwarp = { factor = 2 }\n", "field = \"displacement\"");
-  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nundeformed = \"edges\"\n",
-                                 "mesh[0].undeformed shows the shape before a warp, but this mesh has no warp");
+  test::expectSceneErrorContains(
+      "[[mesh]]\nfile = \"a.msh\"\nwarp = \"displacement\"\n",
+      "mesh[0].warp must be a table like { field = \"displacement\", factor = 2.0 }");
+  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nwarp = { factor = 2 }\n",
+                                 "field = \"displacement\"");
+  test::expectSceneErrorContains(
+      "[[mesh]]\nfile = \"a.msh\"\nundeformed = \"edges\"\n",
+      "mesh[0].undeformed shows the shape before a warp, but this mesh has no warp");
   test::expectSceneErrorContains("[animation]\nover = \"time\"\n", "animation.over");
 }
 
 TEST(ResultsBadInput, FilePatternMatchingNothing) {
   const std::string folder = test::dataFile("results/steps");
-  const std::string message =
-      test::messageOf([&] { matchStepFiles(folder + "/result_*.msh", SourceLocation{"scene.toml", 3, 8}); });
+  const std::string message = test::messageOf([&] {
+    matchStepFiles(folder + "/result_*.msh", SourceLocation{"scene.toml", 3, 8});
+  });
   EXPECT_EQ(message, "scene.toml:3:8: error: no file matches 'result_*.msh' in '" + folder +
                          "' (its .msh files: step_1.msh, step_2.msh, step_10.msh); give a pattern such as "
                          "\"result_*.msh\" that names one file per step");
@@ -114,7 +128,8 @@ TEST(ResultsBadInput, FilesWhoseMeshesDiffer) {
   folder.copy(test::dataFile("fields/node_vector_v41_bin.msh"), "r_2.msh");
   const std::string pattern = folder.file("r_*.msh");
   const std::string message = test::messageOf([&] {
-    readStepFiles(pattern, matchStepFiles(pattern, SourceLocation{"scene.toml"}), 0, SourceLocation{"scene.toml"});
+    readStepFiles(pattern, matchStepFiles(pattern, SourceLocation{"scene.toml"}), 0,
+                  SourceLocation{"scene.toml"});
   });
   EXPECT_NE(message.find(folder.file("r_2.msh") + " is step 1 of the pattern, but its mesh differs from " +
                          folder.file("r_1.msh") + "'s ("),

@@ -18,7 +18,9 @@ namespace {
 
 constexpr double kLength = 10;
 
-double deflection(double x, double t) { return t * x * x * (3 * kLength - x) / (2 * kLength * kLength * kLength); }
+double deflection(double x, double t) {
+  return t * x * x * (3 * kLength - x) / (2 * kLength * kLength * kLength);
+}
 
 Mesh cantilever() { return readMsh(test::dataFile("results/cantilever.msh")); }
 
@@ -34,7 +36,8 @@ TEST(Warp, MovesEveryNodeByFactorTimesItsDisplacementAtTheStep) {
   const Mesh original = cantilever();
   for (const int step : {0, 3}) {
     Mesh mesh = cantilever();
-    const WarpReport report = warpMesh(mesh, original, warpBy("displacement", 2.0), StepSelection{step, {}, ""});
+    const WarpReport report =
+        warpMesh(mesh, original, warpBy("displacement", 2.0), StepSelection{step, {}, ""});
     EXPECT_EQ(report.collapsedFaces, 0u);
     ASSERT_EQ(mesh.positions.size(), original.positions.size());
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
@@ -71,8 +74,10 @@ TEST(Warp, CollapsedFacesAreDroppedAndCountedWithoutNaN) {
   for (const Vec3& p : scene.geometry.positions) EXPECT_TRUE(isFinite(p));
   for (const Vec3& n : scene.geometry.faceNormals) EXPECT_NEAR(length(n), 1.0f, 1e-4f);
   ASSERT_FALSE(scene.warnings.empty());
-  EXPECT_NE(scene.warnings.back().find(fmt::format("{} of", faces - kept)), std::string::npos) << scene.warnings.back();
-  EXPECT_NE(scene.warnings.back().find("collapsed under the warp (factor 1) and were dropped"), std::string::npos);
+  EXPECT_NE(scene.warnings.back().find(fmt::format("{} of", faces - kept)), std::string::npos)
+      << scene.warnings.back();
+  EXPECT_NE(scene.warnings.back().find("collapsed under the warp (factor 1) and were dropped"),
+            std::string::npos);
 }
 
 TEST(ColorRange, OverEveryStepByDefaultOrPerStep) {
@@ -115,7 +120,8 @@ TEST(StepFiles, EachFileIsAStepInNaturalOrderOnOneMesh) {
     EXPECT_EQ(steps[k]->step, static_cast<int>(k));
     EXPECT_NEAR(stepTime(steps, k), tips[k], 1e-12);
     float lowest = 0;
-    for (std::size_t i = 1; i < steps[k]->values.size(); i += 3) lowest = std::min(lowest, steps[k]->values[i]);
+    for (std::size_t i = 1; i < steps[k]->values.size(); i += 3)
+      lowest = std::min(lowest, steps[k]->values[i]);
     EXPECT_NEAR(lowest, -tips[k], 1e-6);
   }
   EXPECT_NE(mesh.source.path.find("step_*.msh (3 files)"), std::string::npos) << mesh.source.path;

@@ -39,8 +39,9 @@ std::string componentProblem(const FieldComponent& component, int components) {
                            : components == 9 ? "a tensor (9 components)"
                                              : fmt::format("{} components", components);
   if (component.kind == FieldComponent::Kind::VonMises && components != 9)
-    return fmt::format("von_mises needs a tensor of 9 components, the view is {}; use \"magnitude\" or 0 to {}",
-                       kind, components - 1);
+    return fmt::format(
+        "von_mises needs a tensor of 9 components, the view is {}; use \"magnitude\" or 0 to {}", kind,
+        components - 1);
   if (component.kind == FieldComponent::Kind::Index && component.index >= components)
     return fmt::format("component {} does not exist: the view is {}; use {}", component.index, kind,
                        components == 1 ? std::string("0 or \"magnitude\"")
@@ -73,7 +74,8 @@ namespace {
 
 // Whether the steps, in step-index order, have strictly increasing times.
 bool timedByTags(std::vector<const MeshField*> steps) {
-  std::sort(steps.begin(), steps.end(), [](const MeshField* a, const MeshField* b) { return a->step < b->step; });
+  std::sort(steps.begin(), steps.end(),
+            [](const MeshField* a, const MeshField* b) { return a->step < b->step; });
   for (std::size_t i = 1; i < steps.size(); ++i)
     if (!(steps[i]->time > steps[i - 1]->time)) return false;
   return true;
@@ -155,7 +157,8 @@ std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, cons
   blend.step = -1;
   blend.time = t;
   blend.values.resize(a.values.size());
-  for (std::size_t i = 0; i < a.values.size(); ++i) blend.values[i] = a.values[i] + w * (b.values[i] - a.values[i]);
+  for (std::size_t i = 0; i < a.values.size(); ++i)
+    blend.values[i] = a.values[i] + w * (b.values[i] - a.values[i]);
   return blend;
 }
 

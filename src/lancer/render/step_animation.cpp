@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
+#include "lancer/image/text.hpp"
 #include "lancer/mesh/field_steps.hpp"
 #include "lancer/scene/result_keys.hpp"
 #include "lancer/scene/warp.hpp"
@@ -33,9 +35,10 @@ StepFrames planStepFrames(const SceneDescription& description, const std::vector
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
   if (times.empty())
-    throw InputError(SourceLocation{description.path},
-                     "an animation over steps needs a mesh coloured (color_by) or warped (warp) by a view of "
-                     "its file; add color_by = { field = \"...\" } or warp = { field = \"...\" } to a [[mesh]]");
+    throw InputError(
+        SourceLocation{description.path},
+        "an animation over steps needs a mesh coloured (color_by) or warped (warp) by a view of "
+        "its file; add color_by = { field = \"...\" } or warp = { field = \"...\" } to a [[mesh]]");
   StepFrames frames;
   if (!animation.framesGiven) {
     frames.times = times;
@@ -55,7 +58,10 @@ StepFrames planStepFrames(const SceneDescription& description, const std::vector
 
 StepScenes::StepScenes(SceneDescription description, const std::vector<Mesh>& meshes,
                        const AnimationSettings& animation, AccelKind accel, int threads)
-    : description_(std::move(description)), meshes_(meshes), animation_(animation), accel_(accel),
+    : description_(std::move(description)),
+      meshes_(meshes),
+      animation_(animation),
+      accel_(accel),
       threads_(threads) {
   frames_ = planStepFrames(description_, meshes_, animation_);
   animation_.frames = frameCount();
@@ -105,7 +111,28 @@ Image StepScenes::render(int frame, const RenderOptions& options, RenderStats* s
   const double time = frames_.times[static_cast<std::size_t>(frame)];
   if (!builtTime_ || *builtTime_ != time) buildAt(time);
   Image image = renderAnimationFrame(*scene_, *accelerator_, description_, animation_, frame, options, stats);
+  if (!animation_.label.empty()) {
+    const std::string text =
+        formatStepLabel(animation_.label, time, frames_.steps[static_cast<std::size_t>(frame)],
+                        SourceLocation{description_.path});
+    drawFrameLabel(image, text, animation_.labelPosition);
+  }
   return image;
+}
+
+void drawFrameLabel(Image& image, const std::string& text, LabelPosition position) {
+  const Font& font = defaultFont();
+  // A twentieth of the height, at least legible: 14 px in a 240-pixel frame, 36 px in 720.
+  const float size = std::max(12.0f, static_cast<float>(image.height()) / 20.0f);
+  const TextMetrics metrics = font.measure(text, size);
+  const int margin = static_cast<int>(std::lround(0.6f * size));
+  const bool right = position == LabelPosition::TopRight || position == LabelPosition::BottomRight;
+  const bool bottom = position == LabelPosition::BottomLeft || position == LabelPosition::BottomRight;
+  const int x = right ? image.width() - margin - metrics.inkRight : margin - metrics.inkLeft;
+  const int baseline = bottom ? image.height() - margin - metrics.inkBottom : margin - metrics.inkTop;
+  TextStyle style(Vec3{0.02f, 0.02f, 0.02f});
+  style.halo = Vec3{1, 1, 1};  // legible over any background and any colour map
+  font.draw(image, x, baseline, text, size, style);
 }
 
 }  // namespace lancer

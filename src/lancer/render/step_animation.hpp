@@ -26,12 +26,16 @@ struct StepFrames {
 StepFrames planStepFrames(const SceneDescription& description, const std::vector<Mesh>& meshes,
                           const AnimationSettings& animation);
 
+// Draws `text` into a corner of the frame (DejaVu Sans, dark with a white halo, a twentieth of the
+// frame's height).
+void drawFrameLabel(Image& image, const std::string& text, LabelPosition position);
+
 // The scenes of an animation over steps, one frame at a time (frames rendered in any order).
 class StepScenes {
  public:
   // `description.when` is replaced per frame; `meshes` (as read, every step) must outlive this.
-  StepScenes(SceneDescription description, const std::vector<Mesh>& meshes, const AnimationSettings& animation,
-             AccelKind accel, int threads);
+  StepScenes(SceneDescription description, const std::vector<Mesh>& meshes,
+             const AnimationSettings& animation, AccelKind accel, int threads);
 
   const StepFrames& frames() const { return frames_; }
   int frameCount() const { return static_cast<int>(frames_.times.size()); }

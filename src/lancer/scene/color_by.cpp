@@ -48,13 +48,15 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
   if (auto map = reader.choice("map", kMapNames))
     spec.map = *parseColorMap(kMapNames[static_cast<std::size_t>(*map)]);
   if (const toml::node* component = reader.find("component")) {
-    const std::string text = component->is_integer() ? std::to_string(component->value<std::int64_t>().value_or(-1))
-                                                     : component->value<std::string>().value_or("");
+    const std::string text = component->is_integer()
+                                 ? std::to_string(component->value<std::int64_t>().value_or(-1))
+                                 : component->value<std::string>().value_or("");
     const std::optional<FieldComponent> parsed = parseFieldComponent(text);
     if (!parsed)
-      reader.fail(*component, fmt::format("{} must be \"magnitude\", \"x\", \"y\", \"z\", \"von_mises\" or an "
-                                          "index 0 to 8, found {}",
-                                          reader.qualified("component"), describeValue(*component)));
+      reader.fail(*component,
+                  fmt::format("{} must be \"magnitude\", \"x\", \"y\", \"z\", \"von_mises\" or an "
+                              "index 0 to 8, found {}",
+                              reader.qualified("component"), describeValue(*component)));
     spec.component = *parsed;
   }
   if (const toml::node* range = reader.find("range"); range && range->is_string()) {
@@ -98,7 +100,8 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
                                              mesh.source.path, didYouMean(spec.field, viewNames(mesh)),
                                              describeViews(mesh)));
   }
-  if (const std::string problem = componentProblem(spec.component, steps.front()->components); !problem.empty())
+  if (const std::string problem = componentProblem(spec.component, steps.front()->components);
+      !problem.empty())
     throw InputError(spec.where,
                      fmt::format("color_by field \"{}\" in {}: {}", spec.field, mesh.source.path, problem));
   StepSelection when = scene;
@@ -107,9 +110,9 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
   const std::optional<MeshField> found = viewAt(steps, when, problem);
   if (!found) {
     const bool fromScene = !spec.step && !scene.where.empty();
-    const std::string message = fmt::format("color_by field \"{}\" {} in {}{}; it has {}", spec.field, problem,
-                                            mesh.source.path, fromScene ? fmt::format(" ({})", scene.where) : "",
-                                            describeViews(mesh));
+    const std::string message =
+        fmt::format("color_by field \"{}\" {} in {}{}; it has {}", spec.field, problem, mesh.source.path,
+                    fromScene ? fmt::format(" ({})", scene.where) : "", describeViews(mesh));
     throw InputError(spec.where, message);
   }
   FieldColoring coloring;
@@ -136,7 +139,8 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
   coloring.t.resize(found->itemCount());
   const auto components = static_cast<std::size_t>(found->components);
   for (std::size_t i = 0; i < coloring.t.size(); ++i) {
-    const double value = componentScalar(found->values.data() + i * components, found->components, spec.component);
+    const double value =
+        componentScalar(found->values.data() + i * components, found->components, spec.component);
     coloring.t[i] = std::isnan(value) ? NAN
                     : scale == 0      ? 0.5f
                                       : static_cast<float>(std::clamp((value - low) * scale, 0.0, 1.0));

@@ -20,7 +20,8 @@ namespace lancer {
 std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReader& mesh);
 
 // A field mapped for display: t = (scalar - low) / (high - low), clamped to [0, 1]; vector fields
-// show spec.component (their magnitude by default). NaN where the file gives no value (drawn as the map's low end).
+// show spec.component (their magnitude by default). NaN where the file gives no value (drawn as the map's low
+// end).
 struct FieldColoring {
   ColorMapKind map = ColorMapKind::Viridis;
   bool perFace = false;  // element data: t per face; node data: t per mesh vertex

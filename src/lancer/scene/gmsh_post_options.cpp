@@ -42,27 +42,49 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path) {
       continue;
     }
     static const std::map<std::string, int> kNumbers = {
-        {"TimeStep", 0},      {"VectorType", 1}, {"DisplacementFactor", 2}, {"RangeType", 3}, {"CustomMin", 4},
-        {"CustomMax", 5},     {"IntervalsType", 6}, {"NbIso", 7},            {"ShowScale", 8}, {"Visible", 9}};
+        {"TimeStep", 0},  {"VectorType", 1}, {"DisplacementFactor", 2}, {"RangeType", 3},
+        {"CustomMin", 4}, {"CustomMax", 5},  {"IntervalsType", 6},      {"NbIso", 7},
+        {"ShowScale", 8}, {"Visible", 9}};
     const auto known = kNumbers.find(name);
     if (known == kNumbers.end()) continue;  // colours, fonts, the rest: not lancer's
     char* numberEnd = nullptr;
     const double number = std::strtod(value.c_str() + first, &numberEnd);
     if (numberEnd == value.c_str() + first || !std::isfinite(number))
-      throw InputError(SourceLocation{path, lineNumber, static_cast<std::int64_t>(equals + 2)},
-                       fmt::format("View[{}].{} should be a number, not '{}'", index, name, value.substr(first)));
+      throw InputError(
+          SourceLocation{path, lineNumber, static_cast<std::int64_t>(equals + 2)},
+          fmt::format("View[{}].{} should be a number, not '{}'", index, name, value.substr(first)));
     const int whole = static_cast<int>(std::lround(number));
     switch (known->second) {
-      case 0: view.timeStep = whole; break;
-      case 1: view.vectorType = whole; break;
-      case 2: view.displacementFactor = number; break;
-      case 3: view.rangeType = whole; break;
-      case 4: view.customMin = number; break;
-      case 5: view.customMax = number; break;
-      case 6: view.intervalsType = whole; break;
-      case 7: view.nbIso = whole; break;
-      case 8: view.showScale = whole != 0; break;
-      default: view.visible = whole != 0; break;
+      case 0:
+        view.timeStep = whole;
+        break;
+      case 1:
+        view.vectorType = whole;
+        break;
+      case 2:
+        view.displacementFactor = number;
+        break;
+      case 3:
+        view.rangeType = whole;
+        break;
+      case 4:
+        view.customMin = number;
+        break;
+      case 5:
+        view.customMax = number;
+        break;
+      case 6:
+        view.intervalsType = whole;
+        break;
+      case 7:
+        view.nbIso = whole;
+        break;
+      case 8:
+        view.showScale = whole != 0;
+        break;
+      default:
+        view.visible = whole != 0;
+        break;
     }
   }
   std::vector<GmshPostView> result;
@@ -70,19 +92,20 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path) {
   return result;
 }
 
-void applyGmshPostViews(SceneDescription& description, const Mesh& mesh, const std::vector<GmshPostView>& views,
-                        const std::string& path) {
+void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
+                        const std::vector<GmshPostView>& views, const std::string& path) {
   if (views.empty() || description.meshes.empty()) return;
   MeshInstance& instance = description.meshes.front();
   const std::vector<std::string> names = viewNames(mesh);
   const auto nameOf = [&](const GmshPostView& view) -> std::string {
     if (view.name) return *view.name;
     if (view.index >= static_cast<int>(names.size()))
-      throw InputError(SourceLocation{path, view.line, 1},
-                       fmt::format("View[{}] is set here, but {} has {} view{} ({}): the options belong to another "
-                                   "file, or save them again from gmsh with this mesh open",
-                                   view.index, mesh.source.path, names.size(), names.size() == 1 ? "" : "s",
-                                   describeViews(mesh)));
+      throw InputError(
+          SourceLocation{path, view.line, 1},
+          fmt::format("View[{}] is set here, but {} has {} view{} ({}): the options belong to another "
+                      "file, or save them again from gmsh with this mesh open",
+                      view.index, mesh.source.path, names.size(), names.size() == 1 ? "" : "s",
+                      describeViews(mesh)));
     return names[static_cast<std::size_t>(view.index)];
   };
   const GmshPostView* displacement = nullptr;
@@ -91,8 +114,10 @@ void applyGmshPostViews(SceneDescription& description, const Mesh& mesh, const s
     if (!view.visible) continue;
     const std::vector<const MeshField*> steps = viewSteps(mesh, nameOf(view));
     const bool vector = !steps.empty() && steps.front()->components == 3 && !steps.front()->perElement;
-    if (view.vectorType == 5 && vector && !displacement) displacement = &view;
-    else if (!colour) colour = &view;
+    if (view.vectorType == 5 && vector && !displacement)
+      displacement = &view;
+    else if (!colour)
+      colour = &view;
   }
   if (displacement && !instance.warp) {
     WarpSettings warp;
@@ -119,10 +144,11 @@ void applyGmshPostViews(SceneDescription& description, const Mesh& mesh, const s
     const std::vector<const MeshField*> steps = viewSteps(mesh, color.field);
     const int k = *colour->timeStep;
     if (k < 0 || k >= static_cast<int>(steps.size()))
-      throw InputError(SourceLocation{path, colour->line, 1},
-                       fmt::format("View[{}].TimeStep = {}, but the view \"{}\" of {} has {} step{}: give 0 to {}",
-                                   colour->index, k, color.field, mesh.source.path, steps.size(),
-                                   steps.size() == 1 ? "" : "s", steps.empty() ? 0 : steps.size() - 1));
+      throw InputError(
+          SourceLocation{path, colour->line, 1},
+          fmt::format("View[{}].TimeStep = {}, but the view \"{}\" of {} has {} step{}: give 0 to {}",
+                      colour->index, k, color.field, mesh.source.path, steps.size(),
+                      steps.size() == 1 ? "" : "s", steps.empty() ? 0 : steps.size() - 1));
     description.when = StepSelection{steps[static_cast<std::size_t>(k)]->step, std::nullopt,
                                      fmt::format("View[{}].TimeStep in {}", colour->index, path)};
   }

@@ -16,14 +16,14 @@ namespace lancer {
 
 // gmsh's defaults where the file says nothing (gmsh saves only what changed).
 struct GmshPostView {
-  int index = 0;                   // View[index]
-  std::optional<std::string> name;  // View[i].Name, when saved
-  std::optional<int> timeStep;     // View[i].TimeStep: index into the view's steps
-  int vectorType = 4;              // View[i].VectorType: 5 draws the view as a displacement
-  double displacementFactor = 1;   // View[i].DisplacementFactor
-  int rangeType = 1;               // 1 default, 2 custom, 3 per time step
+  int index = 0;                        // View[index]
+  std::optional<std::string> name;      // View[i].Name, when saved
+  std::optional<int> timeStep;          // View[i].TimeStep: index into the view's steps
+  int vectorType = 4;                   // View[i].VectorType: 5 draws the view as a displacement
+  double displacementFactor = 1;        // View[i].DisplacementFactor
+  int rangeType = 1;                    // 1 default, 2 custom, 3 per time step
   double customMin = 0, customMax = 0;  // gmsh leaves a value out when it is 0
-  int intervalsType = 2;  // 1 iso-values, 2 continuous, 3 discrete bands, 4 numeric
+  int intervalsType = 2;                // 1 iso-values, 2 continuous, 3 discrete bands, 4 numeric
   int nbIso = 10;
   bool showScale = true;
   bool visible = true;
@@ -39,7 +39,7 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path);
 // displacement's magnitude), with the range, step and intervals gmsh showed. A mesh's own color_by
 // keeps its field; explicit --step and --warp win. Throws InputError at the options file for a view
 // index past the mesh's views or a step past the view's last.
-void applyGmshPostViews(SceneDescription& description, const Mesh& mesh, const std::vector<GmshPostView>& views,
-                        const std::string& path);
+void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
+                        const std::vector<GmshPostView>& views, const std::string& path);
 
 }  // namespace lancer

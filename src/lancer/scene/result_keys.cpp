@@ -19,8 +19,9 @@ void readWarpKeys(const TomlTableReader& mesh, MeshInstance& instance) {
   if (const toml::node* node = mesh.find("warp")) {
     const auto* table = node->as_table();
     if (!table)
-      mesh.fail(*node, fmt::format("{} must be a table like {{ field = \"displacement\", factor = 2.0 }}, found {}",
-                                   mesh.qualified("warp"), describeValue(*node)));
+      mesh.fail(*node,
+                fmt::format("{} must be a table like {{ field = \"displacement\", factor = 2.0 }}, found {}",
+                            mesh.qualified("warp"), describeValue(*node)));
     const TomlTableReader reader(*table, mesh.qualified("warp"), mesh.file(), SceneTable::MeshWarp);
     WarpSettings warp;
     warp.where = reader.location(*node);
@@ -33,10 +34,11 @@ void readWarpKeys(const TomlTableReader& mesh, MeshInstance& instance) {
   if (auto style = mesh.choice("undeformed", kUndeformedStyles)) {
     instance.undeformed = static_cast<UndeformedStyle>(*style);
     if (!instance.warp && instance.undeformed != UndeformedStyle::None)
-      mesh.fail(*mesh.find("undeformed"),
-                fmt::format("{} shows the shape before a warp, but this mesh has no warp; add warp = {{ field = "
-                            "\"displacement\", factor = 1.0 }}",
-                            mesh.qualified("undeformed")));
+      mesh.fail(
+          *mesh.find("undeformed"),
+          fmt::format("{} shows the shape before a warp, but this mesh has no warp; add warp = {{ field = "
+                      "\"displacement\", factor = 1.0 }}",
+                      mesh.qualified("undeformed")));
   }
 }
 

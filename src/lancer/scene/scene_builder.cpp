@@ -14,8 +14,8 @@
 #include "lancer/mesh/feature_edges.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
 #include "lancer/scene/color_by.hpp"
-#include "lancer/scene/scene.hpp"
 #include "lancer/scene/instance_transform.hpp"
+#include "lancer/scene/scene.hpp"
 #include "lancer/scene/warp.hpp"
 #include "lancer/util/check.hpp"
 #include "lancer/util/huge_pages.hpp"
@@ -384,7 +384,8 @@ std::vector<SceneEntry> sceneEntries(const SceneDescription& description, std::v
     std::optional<SceneEntry> undeformed;
     if (instance.warp) {
       if (instance.undeformed != UndeformedStyle::None)
-        undeformed = SceneEntry{undeformedInstance(instance, materials), geometryOf(entry.mesh), std::nullopt};
+        undeformed =
+            SceneEntry{undeformedInstance(instance, materials), geometryOf(entry.mesh), std::nullopt};
       std::vector<float>* perFace = entry.coloring && entry.coloring->perFace ? &entry.coloring->t : nullptr;
       const WarpReport report = warpMesh(entry.mesh, source, *instance.warp, description.when, perFace);
       if (report.collapsedFaces)
@@ -497,7 +498,8 @@ Scene buildSceneAt(const SceneDescription& description, const std::vector<Mesh>&
   }
   std::vector<Material> materials = description.materials;
   std::vector<std::string> warnings;
-  std::vector<SceneEntry> entries = sceneEntries(description, std::move(geometry), fields, materials, warnings);
+  std::vector<SceneEntry> entries =
+      sceneEntries(description, std::move(geometry), fields, materials, warnings);
   return assembleScene(description, std::move(entries), std::move(materials), std::move(warnings), threads,
                        times);
 }

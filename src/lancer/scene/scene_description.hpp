@@ -141,10 +141,10 @@ struct AnimationSettings {
   // `over = "steps"`: the frames run through the results' time steps (the orbit turns at the same
   // time, when `degrees` is not 0); `frames` then samples the time span evenly, blending steps.
   bool overSteps = false;
-  bool framesGiven = false;      // `frames` set (else one frame per step when over = "steps")
-  bool degreesGiven = false;     // `degrees` set (else an animation over steps does not turn)
-  bool perStepRange = false;     // `range = "step"`: each frame's colours span its own step
-  std::string label;             // e.g. "t = {time:.3g} s": drawn into each frame ({time}, {step})
+  bool framesGiven = false;   // `frames` set (else one frame per step when over = "steps")
+  bool degreesGiven = false;  // `degrees` set (else an animation over steps does not turn)
+  bool perStepRange = false;  // `range = "step"`: each frame's colours span its own step
+  std::string label;          // e.g. "t = {time:.3g} s": drawn into each frame ({time}, {step})
   LabelPosition labelPosition = LabelPosition::TopLeft;
 };
 

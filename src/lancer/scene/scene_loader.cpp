@@ -13,8 +13,8 @@
 #include <fmt/format.h>
 
 #include "lancer/scene/color_by.hpp"
-#include "lancer/scene/result_keys.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/result_keys.hpp"
 #include "lancer/scene/suggest.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
 #include "lancer/scene/up_axis.hpp"

@@ -39,7 +39,8 @@ std::string describeMeshDifference(const Mesh& first, const Mesh& other) {
   if (first.faces.size() != other.faces.size())
     return fmt::format("{} faces against {}", other.faces.size(), first.faces.size());
   for (std::size_t v = 0; v < first.positions.size(); ++v)
-    if (other.worldPosition(static_cast<std::uint32_t>(v)) != first.worldPosition(static_cast<std::uint32_t>(v)))
+    if (other.worldPosition(static_cast<std::uint32_t>(v)) !=
+        first.worldPosition(static_cast<std::uint32_t>(v)))
       return fmt::format("node {} of the mesh moved", v + 1);
   for (std::size_t f = 0; f < first.faces.size(); ++f)
     for (int c = 0; c < 4; ++c)
@@ -81,7 +82,8 @@ bool naturalLess(const std::string& a, const std::string& b) {
 
 std::vector<std::string> matchStepFiles(const std::string& pattern, const SourceLocation& where) {
   const std::filesystem::path path(pattern);
-  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  const std::filesystem::path folder =
+      path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   const std::string name = path.filename().string();
   std::vector<std::string> matches;
   std::error_code error;
@@ -116,10 +118,11 @@ Mesh readStepFiles(const std::string& pattern, const std::vector<std::string>& f
   for (std::size_t k = 1; k < files.size(); ++k) {
     Mesh next = readMsh(files[k], threads);
     if (const std::string difference = describeMeshDifference(mesh, next); !difference.empty())
-      throw InputError(where, fmt::format("{} is step {} of the pattern, but its mesh differs from {}'s ({}): "
-                                          "steps in several files need one mesh; keep only that mesh's "
-                                          "results in the pattern",
-                                          files[k], k, files.front(), difference));
+      throw InputError(where,
+                       fmt::format("{} is step {} of the pattern, but its mesh differs from {}'s ({}): "
+                                   "steps in several files need one mesh; keep only that mesh's "
+                                   "results in the pattern",
+                                   files[k], k, files.front(), difference));
     for (MeshField& field : next.fields) {
       field.step = static_cast<int>(k);
       mesh.fields.push_back(std::move(field));
@@ -133,9 +136,11 @@ namespace {
 
 Mesh readInstanceMesh(const MeshInstance& instance, int threads) {
   if (isStepFilePattern(instance.file)) {
-    Mesh mesh = readStepFiles(instance.file, matchStepFiles(instance.file, instance.where), threads, instance.where);
+    Mesh mesh =
+        readStepFiles(instance.file, matchStepFiles(instance.file, instance.where), threads, instance.where);
     if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
-      throw InputError(instance.where, fmt::format("mesh '{}' has nothing to draw: {}", instance.file, reason));
+      throw InputError(instance.where,
+                       fmt::format("mesh '{}' has nothing to draw: {}", instance.file, reason));
     return mesh;
   }
   std::error_code error;

@@ -11,7 +11,8 @@
 
 namespace lancer {
 
-void removeMeshFaces(Mesh& mesh, const std::vector<std::uint8_t>& removed, std::vector<float>* perFaceValues) {
+void removeMeshFaces(Mesh& mesh, const std::vector<std::uint8_t>& removed,
+                     std::vector<float>* perFaceValues) {
   const bool sides = !mesh.volumeSides.empty();
   const bool values = perFaceValues != nullptr && perFaceValues->size() == mesh.faces.size();
   std::size_t kept = 0;
@@ -55,10 +56,11 @@ WarpReport warpMesh(Mesh& mesh, const Mesh& fields, const WarpSettings& warp, co
                                        didYouMean(warp.field, viewNames(fields)), describeViews(fields)));
   const MeshField& first = *steps.front();
   if (first.perElement)
-    throw InputError(warp.where, fmt::format("warp field \"{}\" in {} is element data ($ElementData), one value "
-                                             "per element: a warp moves nodes, give a $NodeData view of 3 "
-                                             "components (colour by this one instead)",
-                                             warp.field, file));
+    throw InputError(warp.where,
+                     fmt::format("warp field \"{}\" in {} is element data ($ElementData), one value "
+                                 "per element: a warp moves nodes, give a $NodeData view of 3 "
+                                 "components (colour by this one instead)",
+                                 warp.field, file));
   if (first.components != 3)
     throw InputError(warp.where,
                      fmt::format("warp field \"{}\" in {} has {} component{} per node: a warp needs a vector "
@@ -70,10 +72,11 @@ WarpReport warpMesh(Mesh& mesh, const Mesh& fields, const WarpSettings& warp, co
     throw InputError(warp.where, fmt::format("warp field \"{}\" {} in {}{}", warp.field, problem, file,
                                              when.where.empty() ? "" : fmt::format(" ({})", when.where)));
   if (step->values.size() != mesh.positions.size() * 3)
-    throw InputError(warp.where, fmt::format("warp field \"{}\" step {} in {} has values for {} nodes, the mesh "
-                                             "has {}: the view belongs to another mesh",
-                                             warp.field, step->step, file, step->values.size() / 3,
-                                             mesh.positions.size()));
+    throw InputError(
+        warp.where,
+        fmt::format("warp field \"{}\" step {} in {} has values for {} nodes, the mesh "
+                    "has {}: the view belongs to another mesh",
+                    warp.field, step->step, file, step->values.size() / 3, mesh.positions.size()));
   std::uint64_t missing = 0;
   const auto factor = static_cast<float>(warp.factor);
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
@@ -85,10 +88,11 @@ WarpReport warpMesh(Mesh& mesh, const Mesh& fields, const WarpSettings& warp, co
     mesh.positions[v] += factor * Vec3{d[0], d[1], d[2]};
   }
   if (missing)
-    throw InputError(warp.where,
-                     fmt::format("warp field \"{}\" step {} in {} gives no vector for {} of the mesh's {} nodes; "
-                                 "a warp needs one for every node (save the view on all nodes in gmsh)",
-                                 warp.field, step->step, file, missing, mesh.positions.size()));
+    throw InputError(
+        warp.where,
+        fmt::format("warp field \"{}\" step {} in {} gives no vector for {} of the mesh's {} nodes; "
+                    "a warp needs one for every node (save the view on all nodes in gmsh)",
+                    warp.field, step->step, file, missing, mesh.positions.size()));
   WarpReport report;
   std::vector<std::uint8_t> collapsed(mesh.faces.size(), 0);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {

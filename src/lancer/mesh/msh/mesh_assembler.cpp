@@ -396,8 +396,8 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
     if (identity || usedNode[i]) mesh.positions[identity ? i : remap[i]] = toFloat(coords[i] - mesh.origin);
   });
 
-  // Drop the faces that are degenerate as the renderer will see them (isDegenerateFace, face_geometry.hpp): each
-  // chunk renumbers its faces and marks the degenerate ones, then one pass closes the gaps.
+  // Drop the faces that are degenerate as the renderer will see them (isDegenerateFace, face_geometry.hpp):
+  // each chunk renumbers its faces and marks the degenerate ones, then one pass closes the gaps.
   const std::vector<Vec3>& positions = mesh.positions;
   const ChunkPlan faceChunks(faces_.size(), kFaceGrain);
   std::vector<std::uint8_t> degenerate(faces_.size(), 0);
