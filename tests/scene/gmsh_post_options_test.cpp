@@ -75,7 +75,7 @@ TEST(GmshPostOptions, OptionsOfViewsTheFileDoesNotHave) {
   folder.write("c.opt", "View[0].NbIso = many;\n");
   EXPECT_NE(test::messageOf([&] {
               readGmshPostViews(folder.file("c.opt"));
-            }).find("c.opt:1:15: error: View[0].NbIso should be a number, not 'many'"),
+            }).find("c.opt:1:16: error: View[0].NbIso should be a number, not 'many'"),
             std::string::npos)
       << test::messageOf([&] { readGmshPostViews(folder.file("c.opt")); });
 }

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -41,11 +43,10 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path) {
       view.name = value.substr(first + 1, last == std::string::npos ? std::string::npos : last - first - 1);
       continue;
     }
-    static const std::map<std::string, int> kNumbers = {
-        {"TimeStep", 0},  {"VectorType", 1}, {"DisplacementFactor", 2}, {"RangeType", 3},
-        {"CustomMin", 4}, {"CustomMax", 5},  {"IntervalsType", 6},      {"NbIso", 7},
-        {"ShowScale", 8}, {"Visible", 9}};
-    const auto known = kNumbers.find(name);
+    constexpr std::array<std::string_view, 10> kNumbers = {
+        "TimeStep",      "VectorType", "DisplacementFactor", "RangeType", "CustomMin", "CustomMax",
+        "IntervalsType", "NbIso",      "ShowScale",          "Visible"};
+    const auto known = std::find(kNumbers.begin(), kNumbers.end(), name);
     if (known == kNumbers.end()) continue;  // colours, fonts, the rest: not lancer's
     char* numberEnd = nullptr;
     const double number = std::strtod(value.c_str() + first, &numberEnd);
@@ -54,7 +55,7 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path) {
           SourceLocation{path, lineNumber, static_cast<std::int64_t>(equals + 2)},
           fmt::format("View[{}].{} should be a number, not '{}'", index, name, value.substr(first)));
     const int whole = static_cast<int>(std::lround(number));
-    switch (known->second) {
+    switch (known - kNumbers.begin()) {
       case 0:
         view.timeStep = whole;
         break;
