@@ -17,8 +17,10 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
+#include "lancer/accel/bvh/bvh.hpp"
 #include "lancer/accel/kd_tree.hpp"
 #include "lancer/accel/ray_packet.hpp"
 #include "lancer/math/ray.hpp"
@@ -161,7 +163,22 @@ struct MeshContext {
   Mesh mesh;
   Aabb box;
   std::map<std::string, std::unique_ptr<KdTree>> trees;  // by kind, built with 2 threads
+  std::unique_ptr<Bvh> bvh;                              // the default accelerator ("bvh")
   std::unique_ptr<RaySet> primary, shadow, incoherent;
+
+  // f(tree) with the structure itself (no Accelerator dispatch per ray): the BVH for "bvh", else the
+  // kd-tree of that kind.
+  template <typename F>
+  void withTree(const std::string& kind, F&& f) {
+    if (kind != "bvh") return f(tree(kind));
+    if (!bvh)
+      bvh = std::make_unique<Bvh>(Bvh::build(mesh.positions, mesh.faces, [] {
+        BvhBuildOptions options;
+        options.threads = 2;
+        return options;
+      }()));
+    f(*bvh);
+  }
 
   const KdTree& tree(const std::string& kind) {
     std::unique_ptr<KdTree>& slot = trees[kind];
@@ -315,13 +332,36 @@ void registerPacketRows(const std::string& name, const std::string& mesh, MakeQu
 
 inline void registerLancerPackets(const std::string& kind, const std::string& mesh) {
   registerPacketRows(kind, mesh, [kind](MeshContext& ctx, bool anyHit) {
-    const KdTree* tree = &ctx.tree(kind);
-    return [tree, anyHit](const RayPacket& packet, std::uint32_t active) {
-      if (anyHit) return tree->occluded(packet, active);
+    const KdTree* tree = nullptr;
+    const Bvh* bvh = nullptr;
+    ctx.withTree(kind, [&](const auto& t) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(t)>, Bvh>) {
+        bvh = &t;
+      } else {
+        tree = &t;
+      }
+    });
+    return [tree, bvh, anyHit](const RayPacket& packet, std::uint32_t active) {
       Hit hits[kPacketSize];
-      return tree->intersect(packet, active, hits);
+      if (bvh != nullptr)
+        return anyHit ? bvh->occluded(packet, active) : bvh->intersect(packet, active, hits);
+      return anyHit ? tree->occluded(packet, active) : tree->intersect(packet, active, hits);
     };
   });
+}
+
+// Build statistics of `kind` on `threads` threads.
+inline AccelStats buildStats(const std::string& kind, const Mesh& mesh, int threads) {
+  if (kind == "bvh") {
+    BvhBuildOptions options;
+    options.threads = threads;
+    return Bvh::build(mesh.positions, mesh.faces, options).stats();
+  }
+  KdBuildOptions options;
+  options.threads = threads;
+  return (kind == "kdtree-median" ? KdTree::buildMedian(mesh.positions, mesh.faces, options)
+                                  : KdTree::buildSah(mesh.positions, mesh.faces, options))
+      .stats();
 }
 
 inline void registerLancer(const std::string& kind, const std::string& mesh) {
@@ -331,14 +371,9 @@ inline void registerLancer(const std::string& kind, const std::string& mesh) {
           ("build/" + kind + "/" + mesh + "/threads:" + std::to_string(threads)).c_str(),
           [=](benchmark::State& state) {
             MeshContext& ctx = meshContext(mesh);
-            KdBuildOptions options;
-            options.threads = threads;
             AccelStats stats;
             for (auto _ : state) {
-              KdTree tree = kind == "kdtree-median"
-                                ? KdTree::buildMedian(ctx.mesh.positions, ctx.mesh.faces, options)
-                                : KdTree::buildSah(ctx.mesh.positions, ctx.mesh.faces, options);
-              stats = tree.stats();
+              stats = buildStats(kind, ctx.mesh, threads);
               state.SetIterationTime(stats.buildSeconds);
             }
             state.counters["Mtris_per_s"] = stats.buildMillionTrianglesPerSecond();
@@ -362,17 +397,18 @@ inline void registerLancer(const std::string& kind, const std::string& mesh) {
             ("trace/" + kind + "/" + mesh + "/" + rk + "/threads:" + std::to_string(threads)).c_str(),
             [=](benchmark::State& state) {
               MeshContext& ctx = meshContext(mesh);
-              const KdTree& tree = ctx.tree(kind);
               const RaySet& set = ctx.rays(rk);
-              if (set.anyHit) {
-                traceBenchmark(state, set, threads,
-                               [&](const Ray& r, float t0, float t1) { return tree.occluded(r, t0, t1); });
-              } else {
-                traceBenchmark(state, set, threads, [&](const Ray& r, float t0, float t1) {
-                  Hit hit;
-                  return tree.intersect(r, t0, t1, hit);
-                });
-              }
+              ctx.withTree(kind, [&](const auto& tree) {
+                if (set.anyHit) {
+                  traceBenchmark(state, set, threads,
+                                 [&](const Ray& r, float t0, float t1) { return tree.occluded(r, t0, t1); });
+                } else {
+                  traceBenchmark(state, set, threads, [&](const Ray& r, float t0, float t1) {
+                    Hit hit;
+                    return tree.intersect(r, t0, t1, hit);
+                  });
+                }
+              });
             })
             ->UseManualTime()
             ->Iterations(1)

@@ -1,7 +1,8 @@
-// lancer's SAH kd-tree against Intel Embree 3 (RTC_BUILD_QUALITY_HIGH) on the same meshes and ray
-// sets, in the same process, so bench/run_accel_bench.sh can print lancer/Embree ratios measured
-// side by side: single rays (rtcIntersect1 / rtcOccluded1) and packets of eight of the same rays
-// (lancer's packet queries against rtcIntersect8 / rtcOccluded8).
+// lancer's default accelerator (the BVH) and its SAH kd-tree against Intel Embree 3 on the same meshes
+// and ray sets, in the same process, so bench/run_accel_bench.sh can print lancer/Embree ratios
+// measured side by side: builds (Embree HIGH and MEDIUM), single rays (rtcIntersect1 / rtcOccluded1,
+// HIGH's tree) and packets of eight of the same rays (lancer's packet queries against rtcIntersect8 /
+// rtcOccluded8).
 #include <embree3/rtcore.h>
 
 #include <stdexcept>
@@ -27,7 +28,7 @@ struct EmbreeScene {
   double buildSeconds = 0;
   std::int64_t bytes = 0;
 
-  EmbreeScene(const Mesh& mesh, int threads) {
+  EmbreeScene(const Mesh& mesh, int threads, RTCBuildQuality quality = RTC_BUILD_QUALITY_HIGH) {
     device = rtcNewDevice(("threads=" + std::to_string(threads)).c_str());
     if (!device) throw std::runtime_error("rtcNewDevice failed");
     rtcSetDeviceMemoryMonitorFunction(device, trackMemory, nullptr);
@@ -39,9 +40,9 @@ struct EmbreeScene {
     const auto start = std::chrono::steady_clock::now();
     const std::int64_t before = embreeBytes;
     scene = rtcNewScene(device);
-    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(scene, quality);
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_HIGH);
+    rtcSetGeometryBuildQuality(geometry, quality);
     rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, vertices.data(), 0,
                                4 * sizeof(float), mesh.positions.size());
     rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices.data(), 0,
@@ -141,29 +142,32 @@ struct EmbreeScene {
 };
 
 void registerEmbree(const std::string& mesh) {
-  for (int threads : {1, 2}) {
-    benchmark::RegisterBenchmark(
-        ("build/embree-high/" + mesh + "/threads:" + std::to_string(threads)).c_str(),
-        [=](benchmark::State& state) {
-          MeshContext& ctx = meshContext(mesh);
-          double seconds = 0;
-          std::int64_t bytes = 0;
-          std::size_t triangles = 0;
-          for (auto _ : state) {
-            EmbreeScene scene(ctx.mesh, threads);
-            seconds = scene.buildSeconds;
-            bytes = scene.bytes;
-            triangles = scene.indices.size() / 3;
-            state.SetIterationTime(seconds);
-          }
-          state.counters["Mtris_per_s"] = double(triangles) / seconds * 1e-6;
-          state.counters["triangles"] = double(triangles);
-          state.counters["bytes_per_tri"] = double(bytes) / double(triangles);
-        })
-        ->UseManualTime()
-        ->Iterations(1)
-        ->Repetitions(3)
-        ->Unit(benchmark::kMillisecond);
+  for (const auto& [name, quality] : {std::pair{"embree-high", RTC_BUILD_QUALITY_HIGH},
+                                      std::pair{"embree-medium", RTC_BUILD_QUALITY_MEDIUM}}) {
+    for (int threads : {1, 2}) {
+      benchmark::RegisterBenchmark(
+          ("build/" + std::string(name) + "/" + mesh + "/threads:" + std::to_string(threads)).c_str(),
+          [=](benchmark::State& state) {
+            MeshContext& ctx = meshContext(mesh);
+            double seconds = 0;
+            std::int64_t bytes = 0;
+            std::size_t triangles = 0;
+            for (auto _ : state) {
+              EmbreeScene scene(ctx.mesh, threads, quality);
+              seconds = scene.buildSeconds;
+              bytes = scene.bytes;
+              triangles = scene.indices.size() / 3;
+              state.SetIterationTime(seconds);
+            }
+            state.counters["Mtris_per_s"] = double(triangles) / seconds * 1e-6;
+            state.counters["triangles"] = double(triangles);
+            state.counters["bytes_per_tri"] = double(bytes) / double(triangles);
+          })
+          ->UseManualTime()
+          ->Iterations(1)
+          ->Repetitions(3)
+          ->Unit(benchmark::kMillisecond);
+    }
   }
   static std::map<std::string, std::shared_ptr<EmbreeScene>> scenes;
   for (const char* rayKind : kRayKinds) {
@@ -215,8 +219,10 @@ void registerEmbreePackets(const std::string& mesh) {
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   for (const std::string& mesh : lancer::bench::meshNames()) {
+    lancer::bench::registerLancer("bvh", mesh);
     lancer::bench::registerLancer("kdtree-sah", mesh);
     lancer::bench::registerEmbree(mesh);
+    lancer::bench::registerLancerPackets("bvh", mesh);
     lancer::bench::registerLancerPackets("kdtree-sah", mesh);
     lancer::bench::registerEmbreePackets(mesh);
   }

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Makes the bench meshes that are missing (gmsh, from bench/geo/), runs the accelerator benchmarks
 # and prints the tables of bench/RESULTS.md: build time and throughput, bytes per triangle, and ray throughput
-# for primary, shadow and incoherent rays on 1 and 2 threads, with lancer/Embree ratios from the
-# same run, ray by ray and in packets of 8 (lancer's packet queries, Embree's rtcIntersect8/rtcOccluded8).
+# for primary, shadow and incoherent rays on 1 and 2 threads, of lancer's default accelerator (the BVH)
+# beside its kd-tree and Embree, with lancer/Embree ratios from the same run, ray by ray and in packets
+# of 8 (lancer's packet queries, Embree's rtcIntersect8/rtcOccluded8).
+# BENCH_FILTER (a Google Benchmark regex) runs a part, e.g. BENCH_FILTER='trace/' for the rays only.
 #   bench/run_accel_bench.sh [build-dir] [meshes]    e.g. bench/run_accel_bench.sh build-accel 10k,100k
 # Tables show medians of 3 repetitions. Timings are wall-clock: run on an idle machine.
 set -euo pipefail
@@ -30,9 +32,12 @@ for mesh in ${meshes//,/ }; do
       echo "($program not built: skipped)" >&2
       continue
     fi
-    filter='.'
-    # The Embree program already runs lancer's SAH tree side by side; kd_tree_bench adds the median.
-    [[ $program == kd_tree_bench && -x "$build/bench/embree_compare_bench" ]] && filter='kdtree-median'
+    filter=${BENCH_FILTER:-.}
+    # The Embree program already runs lancer's BVH and SAH tree side by side; kd_tree_bench adds the median.
+    if [[ $program == kd_tree_bench && -x "$build/bench/embree_compare_bench" ]]; then
+      [[ -n ${BENCH_FILTER:-} ]] && continue  # a part of the run: the Embree program's rows only
+      filter="kdtree-median"
+    fi
     echo "running $program on $mesh..." >&2
     "$binary" --benchmark_filter="$filter" --benchmark_enable_random_interleaving=true \
       --benchmark_out="$results/$program-$mesh.json" --benchmark_out_format=json \
@@ -70,47 +75,54 @@ def size(m):
     return float(m[:-1]) * (1e3 if m[-1] == "k" else 1e6)
 
 meshes = sorted({n.split("/")[2] for n in rows}, key=size)
-accels = ["kdtree-sah", "kdtree-median", "embree-high"]
+default = "bvh"  # lancer's default accelerator (src/lancer/accel/accelerator.hpp, kDefaultAccel)
+accels = [default, "kdtree-sah", "kdtree-median", "embree-high", "embree-medium"]
+print(f"default accelerator: {default}; the kd-tree: kdtree-sah")
 
-print("\n## Build (medians of 3; Mtris/s = triangles / wall seconds)")
-print("| mesh | triangles | accel | threads | build s | Mtris/s | bytes/tri | nodes | depth | tris/leaf | SAH cost | SAH/Embree |")
-print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+print("\n## Build (medians of 3; Mtris/s = triangles / wall seconds; lancer's against Embree MEDIUM and HIGH on as many threads)")
+print("| mesh | triangles | accel | threads | build s | Mtris/s | bytes/tri | nodes | depth | tris/leaf | SAH cost | /Embree MEDIUM | /Embree HIGH |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for m in meshes:
     for a in accels:
         for t in (1, 2):
             n = f"build/{a}/{m}/threads:{t}"
             if n not in rows: continue
             b = rows[n]
-            r = ratio(b.get("Mtris_per_s"), get(f"build/embree-high/{m}/threads:{t}", "Mtris_per_s")) if a == "kdtree-sah" else None
+            lancer = not a.startswith("embree")
+            rm = ratio(b.get("Mtris_per_s"), get(f"build/embree-medium/{m}/threads:{t}", "Mtris_per_s")) if lancer else None
+            rh = ratio(b.get("Mtris_per_s"), get(f"build/embree-high/{m}/threads:{t}", "Mtris_per_s")) if lancer else None
             print(f"| {m} | {int(b['triangles'])} | {a} | {t} | {b['real_time']/1e3:.3f} | {b['Mtris_per_s']:.2f} | {b['bytes_per_tri']:.1f} | "
-                  f"{fmt(b.get('nodes'), '{:.0f}')} | {fmt(b.get('depth'), '{:.0f}')} | {fmt(b.get('tris_per_leaf'))} | {fmt(b.get('sah_cost'), '{:.1f}')} | {fmt(r)} |")
+                  f"{fmt(b.get('nodes'), '{:.0f}')} | {fmt(b.get('depth'), '{:.0f}')} | {fmt(b.get('tris_per_leaf'))} | {fmt(b.get('sah_cost'), '{:.1f}')} | {fmt(rm)} | {fmt(rh)} |")
 
-print("\n## Ray throughput, Mrays/s wall (medians of 3), lancer SAH / Embree; 1-thread rows also per CPU-second")
-print("| mesh | rays | threads | kdtree-sah | kdtree-median | embree-high | SAH/Embree (wall) | SAH cpu | Embree cpu | SAH/Embree (cpu) | hit fraction sah, embree |")
+traced = [default, "kdtree-sah", "kdtree-median", "embree-high"]
+print("\n## Ray throughput, Mrays/s wall (medians of 3), lancer / Embree (HIGH); 1-thread rows also per CPU-second")
+print(f"| mesh | rays | threads | {default} (default) | kdtree-sah | kdtree-median | embree-high | default/Embree (wall) | kd/Embree (wall) | default cpu | Embree cpu | default/Embree (cpu) | hit fraction default, kd, embree |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+for m in meshes:
+    for rk in ("primary", "shadow", "incoherent"):
+        for t in (1, 2):
+            names = {a: f"trace/{a}/{m}/{rk}/threads:{t}" for a in traced}
+            v = {a: get(names[a], "Mrays_per_s") for a in traced}
+            h = [get(names[a], "hit_fraction") for a in (default, "kdtree-sah", "embree-high")]
+            cd = per_cpu_second(names[default], get(names[default], "rays")) if t == 1 else None
+            ce = per_cpu_second(names["embree-high"], get(names["embree-high"], "rays")) if t == 1 else None
+            print(f"| {m} | {rk} | {t} | {fmt(v[default])} | {fmt(v['kdtree-sah'])} | {fmt(v['kdtree-median'])} | {fmt(v['embree-high'])} | "
+                  f"{fmt(ratio(v[default], v['embree-high']))} | {fmt(ratio(v['kdtree-sah'], v['embree-high']))} | {fmt(cd)} | {fmt(ce)} | {fmt(ratio(cd, ce))} | "
+                  f"{fmt(h[0], '{:.4f}')}, {fmt(h[1], '{:.4f}')}, {fmt(h[2], '{:.4f}')} |")
+
+print("\n## Packets of 8 (the same rays, 8 in a row of the set), Mrays/s wall (medians of 3)")
+print("lancer packets against Embree's single rays (rtcIntersect1/rtcOccluded1) and its own packets (rtcIntersect8/rtcOccluded8, coherent context)")
+print(f"| mesh | rays | threads | {default} single | {default} packets | kdtree-sah packets | embree single | embree packets | packets/single (default) | default packets / embree packets | kd packets / embree packets |")
 print("|---|---|---|---|---|---|---|---|---|---|---|")
 for m in meshes:
     for rk in ("primary", "shadow", "incoherent"):
         for t in (1, 2):
-            names = {a: f"trace/{a}/{m}/{rk}/threads:{t}" for a in accels}
-            v = {a: get(names[a], "Mrays_per_s") for a in accels}
-            h = [get(names[a], "hit_fraction") for a in ("kdtree-sah", "embree-high")]
-            cs = per_cpu_second(names["kdtree-sah"], get(names["kdtree-sah"], "rays")) if t == 1 else None
-            ce = per_cpu_second(names["embree-high"], get(names["embree-high"], "rays")) if t == 1 else None
-            print(f"| {m} | {rk} | {t} | {fmt(v['kdtree-sah'])} | {fmt(v['kdtree-median'])} | {fmt(v['embree-high'])} | "
-                  f"{fmt(ratio(v['kdtree-sah'], v['embree-high']))} | {fmt(cs)} | {fmt(ce)} | {fmt(ratio(cs, ce))} | {fmt(h[0], '{:.4f}')}, {fmt(h[1], '{:.4f}')} |")
-
-print("\n## Packets of 8 (the same rays, 8 in a row of the set), Mrays/s wall (medians of 3)")
-print("lancer packets against Embree's single rays (rtcIntersect1/rtcOccluded1) and its own packets (rtcIntersect8/rtcOccluded8, coherent context)")
-print("| mesh | rays | threads | kdtree-sah single | kdtree-sah packets | embree single | embree packets | packets/single (lancer) | lancer packets / embree single | lancer packets / embree packets |")
-print("|---|---|---|---|---|---|---|---|---|---|")
-for m in meshes:
-    for rk in ("primary", "shadow", "incoherent"):
-        for t in (1, 2):
-            ls = get(f"trace/kdtree-sah/{m}/{rk}/threads:{t}", "Mrays_per_s")
-            lp = get(f"packet/kdtree-sah/{m}/{rk}/threads:{t}", "Mrays_per_s")
+            ds = get(f"trace/{default}/{m}/{rk}/threads:{t}", "Mrays_per_s")
+            dp = get(f"packet/{default}/{m}/{rk}/threads:{t}", "Mrays_per_s")
+            kp = get(f"packet/kdtree-sah/{m}/{rk}/threads:{t}", "Mrays_per_s")
             es = get(f"trace/embree-high/{m}/{rk}/threads:{t}", "Mrays_per_s")
             ep = get(f"packet/embree-high/{m}/{rk}/threads:{t}", "Mrays_per_s")
-            if lp is None and ep is None: continue
-            print(f"| {m} | {rk} | {t} | {fmt(ls)} | {fmt(lp)} | {fmt(es)} | {fmt(ep)} | {fmt(ratio(lp, ls))} | {fmt(ratio(lp, es))} | {fmt(ratio(lp, ep))} |")
+            if dp is None and ep is None: continue
+            print(f"| {m} | {rk} | {t} | {fmt(ds)} | {fmt(dp)} | {fmt(kp)} | {fmt(es)} | {fmt(ep)} | {fmt(ratio(dp, ds))} | {fmt(ratio(dp, ep))} | {fmt(ratio(kp, ep))} |")
 PY
 rm -rf "$results"

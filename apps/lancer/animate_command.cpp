@@ -76,7 +76,7 @@ int runAnimate(const AnimateCommandOptions& options) {
   // Over steps, the meshes as read (every step) stay for the frames' scenes.
   const bool overStepsAsked = options.over == "steps";
   const bool sceneOverSteps = options.over.empty() && sceneAnimatesOverSteps(options.input);
-  PreparedScene prepared =
+  PreparedRender prepared =
       prepareScene(options.input, options.overrides, {}, overStepsAsked || sceneOverSteps);
   const RenderSettings& settings = prepared.description.render;
   AnimationSettings animation = prepared.description.animation.value_or(AnimationSettings{});
@@ -153,7 +153,8 @@ int runAnimate(const AnimateCommandOptions& options) {
     return image;
   };
   work.deliver = [&](int item, const Image& image) {
-    out->addFrame(frames[static_cast<std::size_t>(item)], image);
+    out->addFrame(frames[static_cast<std::size_t>(item)],
+                  out->takesRadiance() ? image : displayImage(image, settings));
   };
   if (progress && !alone) {
     work.onDelivered = [&](int done, int total) {
@@ -166,6 +167,10 @@ int runAnimate(const AnimateCommandOptions& options) {
   bool finished = false;
   try {
     finished = distribution->run(work);
+  } catch (const NonFiniteRenderError& e) {
+    if (progress) std::fputc('\n', stderr);
+    throw InputError(SourceLocation{options.input},
+                     fmt::format("frame {}: {}", frames[static_cast<std::size_t>(current)], e.what()));
   } catch (...) {
     if (progress) std::fputc('\n', stderr);  // the error goes below the progress line
     throw;
@@ -190,9 +195,10 @@ int runAnimate(const AnimateCommandOptions& options) {
   if (steps && !options.overrides.quiet && steps->rebuilds() > 0)
     std::fprintf(stderr,
                  "over steps: %d frames rebuilt their scene in %.3f s (%.3f s/frame, %.0f%% of the frames' "
-                 "time), of which the accelerator %.3f s\n",
+                 "time), of which the accelerator %.3f s (%d refitted, %d built)\n",
                  steps->rebuilds(), steps->rebuildSeconds(), steps->rebuildSeconds() / steps->rebuilds(),
-                 seconds > 0 ? 100 * steps->rebuildSeconds() / seconds : 0.0, steps->accelSeconds());
+                 seconds > 0 ? 100 * steps->rebuildSeconds() / seconds : 0.0, steps->accelSeconds(),
+                 steps->refits(), steps->rebuilds() - steps->refits());
   if (options.overrides.timings && talks)
     std::fprintf(stderr, "%s\n", formatStageTimes(prepared.stages).c_str());
   return kExitOk;

@@ -1,5 +1,6 @@
 // The subcommands of the lancer CLI. Each registers its options on the CLI11 app and sets the
 // runner that main() calls after parsing; runners return the process exit code.
+// Map: docs/architecture.md (the path of a ray through the modules).
 #pragma once
 
 #include <CLI/CLI.hpp>

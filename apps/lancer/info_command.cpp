@@ -250,9 +250,9 @@ void addInfoCommand(CLI::App& app, CommandRunner& runner) {
   command->add_flag("--json", options->json, "machine-readable output");
   command
       ->add_option("--accel", options->accel,
-                   "also build an accelerator (default kdtree-sah) and report its statistics")
+                   "also build an accelerator (default bvh) and report its statistics")
       ->expected(0, 1)
-      ->default_str("kdtree-sah")
+      ->default_str(std::string(kDefaultAccelName))
       ->check(CLI::IsMember(std::vector<std::string>(kAccelNames.begin(), kAccelNames.end())));
   command->callback([&runner, options] {
     runner = [options] {

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "lancer/cluster/tile_parts.hpp"
 #include "lancer/image/color_map.hpp"
+#include "lancer/image/exr_io.hpp"
 #include "lancer/image/image_io.hpp"
 #include "lancer/image/image_row_writer.hpp"
 #include "lancer/render/progress_line.hpp"
@@ -17,6 +18,12 @@
 
 namespace lancer::cli {
 namespace {
+
+// Which --aovs layers an EXR gets.
+struct ExrLayerChoice {
+  bool albedo = false, normal = false, depth = false;
+  bool any() const { return albedo || normal || depth; }
+};
 
 // The --legend image: a tall bar with room for the tick labels.
 constexpr int kLegendWidth = 120;
@@ -28,10 +35,11 @@ struct RenderCommandOptions {
   std::string pixel;
   std::string legend;  // --legend: colour bar of the first field-coloured mesh
   std::string shard;   // --shard I/N or auto: a job-array task's part of the image
+  std::string aovs;    // --aovs albedo,normal,depth: layers of an EXR output
   SceneOverrides overrides;
 };
 
-int tracePixel(const PreparedScene& prepared, const Renderer& renderer, const std::string& pixel) {
+int tracePixel(const PreparedRender& prepared, const Renderer& renderer, const std::string& pixel) {
   const RenderSettings& settings = prepared.description.render;
   int x = -1, y = -1;
   char trailing = 0;
@@ -53,34 +61,85 @@ std::string outputPath(const RenderCommandOptions& options, const RenderSettings
 }
 
 // PNG, BMP and PPM go to the file band by band as they finish, so memory holds a few bands of rows
-// whatever the image size; a GIF needs every pixel for its palette.
-bool streamsToFile(const std::string& output) {
-  return !output.empty() && ImageRowWriter::streams(imageFormatFromPath(output));
+// whatever the image size; a GIF needs every pixel for its palette, an EXR is written whole, and the
+// denoiser filters the whole image.
+bool streamsToFile(const std::string& output, const RenderSettings& settings) {
+  return !output.empty() && !settings.denoise && ImageRowWriter::streams(imageFormatFromPath(output));
+}
+
+bool isExr(const std::string& output) { return imageFormatFromPath(output) == ImageFormat::Exr; }
+
+// --aovs: a comma-separated subset of albedo, normal, depth; only an EXR holds them.
+ExrLayerChoice parseAovs(const std::string& aovs, const std::string& output) {
+  ExrLayerChoice choice;
+  if (aovs.empty()) return choice;
+  if (!isExr(output))
+    throw InputError(
+        SourceLocation{"--aovs"},
+        fmt::format("{} cannot hold albedo, normal or depth layers: write an .exr (-o NAME.exr)", output));
+  std::size_t start = 0;
+  while (start <= aovs.size()) {
+    const std::size_t comma = std::min(aovs.find(',', start), aovs.size());
+    const std::string name = aovs.substr(start, comma - start);
+    if (name == "albedo")
+      choice.albedo = true;
+    else if (name == "normal")
+      choice.normal = true;
+    else if (name == "depth")
+      choice.depth = true;
+    else
+      throw InputError(
+          SourceLocation{"--aovs"},
+          fmt::format("unknown layer '{}': use albedo, normal and depth, separated by commas", name));
+    start = comma + 1;
+  }
+  return choice;
+}
+
+// The finished image into `output`: an EXR takes the radiance (and the chosen layers), the other
+// formats the display image (exposure, tone curve) encoded as the settings say.
+void writeFinal(const std::string& output, const Image& radiance, const RenderSettings& settings,
+                const ExrLayerChoice& aovs, const FeatureBuffers* features) {
+  if (!isExr(output)) {
+    writeImage(output, displayImage(radiance, settings), imageWriteOptions(settings));
+    return;
+  }
+  ExrLayers layers;
+  if (features != nullptr) {
+    if (aovs.albedo) layers.albedo = features->albedo;
+    if (aovs.normal) layers.normal = features->normal;
+    if (aovs.depth) layers.depth = features->depth;
+  }
+  writeExr(output, radiance, layers);
 }
 
 // Renders into `output` (atomically: an interrupted or failed render leaves any existing file as it
 // was). Returns false when interrupted.
-bool renderToFile(const PreparedScene& prepared, const Renderer& renderer, const std::string& output,
-                  const RenderOptions& renderOptions, RenderStats& stats) {
+bool renderToFile(const PreparedRender& prepared, const Renderer& renderer, const std::string& output,
+                  const ExrLayerChoice& aovs, const RenderOptions& renderOptions, RenderStats& stats) {
   const RenderSettings& settings = prepared.description.render;
   const ImageWriteOptions writeOptions = imageWriteOptions(settings);
   const bool cancellable = renderOptions.cancel != nullptr;
-  if (!streamsToFile(output)) {
-    const Image image = renderer.renderImage(renderOptions, &stats);
-    if (cancellable && renderOptions.cancel->load()) return false;
-    writeImage(output, image, writeOptions);
+  if (!streamsToFile(output, settings)) {
+    FeatureBuffers features;
+    const Image image = renderer.renderFinal(renderOptions, &stats, aovs.any() ? &features : nullptr);
+    if (stats.cancelled || (cancellable && renderOptions.cancel->load())) return false;
+    writeFinal(output, image, settings, aovs, aovs.any() ? &features : nullptr);
     return true;
   }
   ImageRowWriter writer(output, settings.width, settings.height, writeOptions);  // a bad folder fails now
+  const bool toneMapped = settings.toneMap != ToneMap::None || settings.exposure != 0.0f;
   renderer.renderBands(
-      renderOptions, [&](int, const Image& band) { writer.writeRows(band); }, &stats);
+      renderOptions,
+      [&](int, const Image& band) { writer.writeRows(toneMapped ? displayImage(band, settings) : band); },
+      &stats);
   if (stats.cancelled || (cancellable && renderOptions.cancel->load())) return false;  // ~writer discards
   writer.commit();
   return true;
 }
 
 // Renders the band items of a job-array task into its part file (atomically); false when interrupted.
-bool renderPart(const PreparedScene& prepared, const Renderer& renderer, const std::string& output,
+bool renderPart(const PreparedRender& prepared, const Renderer& renderer, const std::string& output,
                 const ScheduledShard& shard, const RenderOptions& renderOptions, bool quiet,
                 RenderStats& stats) {
   const RenderSettings& settings = prepared.description.render;
@@ -106,7 +165,7 @@ bool renderPart(const PreparedScene& prepared, const Renderer& renderer, const s
     stats.rays += itemStats.rays;
     stats.seconds += itemStats.seconds;
     if (itemStats.cancelled) return false;  // ~part removes the temporary file
-    part.writeItem(rows);
+    part.writeItem(displayImage(rows, settings));
   }
   part.commit();
   return true;
@@ -114,7 +173,7 @@ bool renderPart(const PreparedScene& prepared, const Renderer& renderer, const s
 
 // The ranks of an MPI job share the band items; rank 0 writes them in order as they come (a few items
 // in memory at once for a streamed format). False when interrupted.
-bool renderDistributed(const PreparedScene& prepared, const Renderer& renderer, const std::string& output,
+bool renderDistributed(const PreparedRender& prepared, const Renderer& renderer, const std::string& output,
                        WorkDistribution& distribution, const RenderOptions& renderOptions,
                        RenderStats& stats) {
   const RenderSettings& settings = prepared.description.render;
@@ -123,7 +182,7 @@ bool renderDistributed(const PreparedScene& prepared, const Renderer& renderer, 
   std::optional<ImageRowWriter> writer;
   Image whole;
   if (distribution.delivers()) {
-    if (streamsToFile(output))
+    if (streamsToFile(output, settings))
       writer.emplace(output, settings.width, settings.height, writeOptions);  // a bad folder fails now
     else
       whole = Image(settings.width, settings.height);
@@ -141,7 +200,7 @@ bool renderDistributed(const PreparedScene& prepared, const Renderer& renderer, 
   };
   work.deliver = [&](int item, const Image& rows) {
     if (writer)
-      writer->writeRows(rows);
+      writer->writeRows(displayImage(rows, settings));
     else
       whole.pasteTile(rows, 0, items.item(item).first * kTileSize);
   };
@@ -159,7 +218,7 @@ bool renderDistributed(const PreparedScene& prepared, const Renderer& renderer, 
   if (writer)
     writer->commit();
   else
-    writeImage(output, whole, writeOptions);
+    writeFinal(output, whole, settings, {}, nullptr);
   return true;
 }
 
@@ -168,14 +227,27 @@ int runRender(const RenderCommandOptions& options) {
   const std::unique_ptr<WorkDistribution> distribution = commandDistribution(!options.shard.empty());
   std::optional<ScheduledShard> shard;
   if (!options.shard.empty()) shard = resolveShard(options.shard, processEnvironment());
-  PreparedScene prepared = prepareScene(options.input, options.overrides, [&](const RenderSettings& s) {
-    return streamsToFile(outputPath(options, s)) ? ImageBuffer::Bands : ImageBuffer::Whole;
-  });
+  const PreparedRender prepared =
+      prepareScene(options.input, options.overrides, [&](const RenderSettings& s) {
+        return streamsToFile(outputPath(options, s), s) ? ImageBuffer::Bands : ImageBuffer::Whole;
+      });
   const RenderSettings& settings = prepared.description.render;
   const std::string output = outputPath(options, settings);
   if (output.empty() && options.pixel.empty())
     throw InputError(SourceLocation{options.input}, "no output image: give -o FILE or set render.output");
-  if (!output.empty()) imageFormatFromPath(output);  // refuse a bad extension before rendering
+  ExrLayerChoice aovs;
+  if (!output.empty()) {  // refuse a bad extension, bit depth or layer before rendering
+    requireBitDepth(output, imageFormatFromPath(output), settings.bitDepth);
+    if (isExr(output) && !exrSupported()) writeExr(output, Image(1, 1));  // says how to get OpenEXR
+    aovs = parseAovs(options.aovs, output);
+  }
+  if (shard && (settings.denoise || (!output.empty() && isExr(output)) || settings.bitDepth != 8))
+    throw InputError(SourceLocation{"--shard"},
+                     "a job-array part holds 8-bit rows: --denoise, --bit-depth 16 and .exr need a render "
+                     "without --shard");
+  if (distribution->ranks() > 1 && (settings.denoise || !options.aovs.empty()))
+    throw InputError(SourceLocation{options.input},
+                     "--denoise and --aovs need the whole image in one process: run without mpirun");
   if (shard && !options.legend.empty())
     throw InputError(SourceLocation{"--legend"}, "--legend is written by a render without --shard");
   if (!options.legend.empty()) {
@@ -186,8 +258,7 @@ int runRender(const RenderCommandOptions& options) {
           "--legend needs a mesh coloured by a field (color_by = { field = \"...\" } in a [[mesh]])");
   }
 
-  const Camera camera = makeCamera(prepared.description.camera, prepared.scene, settings);
-  const Renderer renderer(prepared.scene, prepared.accelerator, camera, settings);
+  const Renderer renderer = prepared.renderer();
   if (!options.pixel.empty()) return tracePixel(prepared, renderer, options.pixel);
 
   RenderOptions renderOptions = commandRenderOptions(options.overrides);
@@ -203,7 +274,10 @@ int runRender(const RenderCommandOptions& options) {
     else if (distribution->ranks() > 1)
       written = renderDistributed(prepared, renderer, output, *distribution, renderOptions, stats);
     else
-      written = renderToFile(prepared, renderer, output, renderOptions, stats);
+      written = renderToFile(prepared, renderer, output, aovs, renderOptions, stats);
+  } catch (const NonFiniteRenderError& e) {
+    if (progress) std::fputc('\n', stderr);
+    throw InputError(SourceLocation{options.input}, e.what());
   } catch (...) {
     if (progress) std::fputc('\n', stderr);  // the error goes below the progress line
     throw;
@@ -246,6 +320,9 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
   addSceneOverrideOptions(*command, options->overrides);
   command->add_option("--legend", options->legend,
                       "Also write the colour bar of the first field-coloured mesh (color_by) to this image");
+  command->add_option(
+      "--aovs", options->aovs,
+      "Layers of an .exr output beside the radiance: albedo, normal, depth (comma-separated)");
   command->add_option("--pixel", options->pixel, "Trace only pixel x,y and print its value (debugging)");
   command->callback([options, &runner] { runner = [options] { return runRender(*options); }; });
 }

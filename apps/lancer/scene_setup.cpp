@@ -28,7 +28,6 @@
 #include "lancer/scene/render_overrides.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "lancer/scene/step_files.hpp"
-#include "lancer/util/memory_budget.hpp"
 #include "lancer/util/stopwatch.hpp"
 
 namespace lancer::cli {
@@ -64,24 +63,29 @@ std::vector<std::string> choices(const std::array<std::string_view, N>& names) {
   return {names.begin(), names.end()};
 }
 
-// Checked before loading any mesh. Whole: the float image and its 8-bit copy for the writer.
-// Bands: the bands renderBands keeps, plus the writer's encoded row and libpng's and zlib's state
-// (well under kWriterStateBytes), whatever the height.
-void requireImageMemory(const RenderSettings& settings, int threads, ImageBuffer buffer,
-                        const std::string& input) {
-  constexpr std::uint64_t kWriterStateBytes = 1 << 20;
-  const std::uint64_t pixels =
-      static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
-  if (buffer == ImageBuffer::Whole) {
-    requireMemory(saturatingProduct(pixels, sizeof(Rgba) + 4), SourceLocation{input},
-                  fmt::format("a {}x{} image", settings.width, settings.height));
-    return;
+// --tonemap, --exposure, --bit-depth, --denoise, checked here so that the messages name the option.
+void applyOutputOverrides(const SceneOverrides& overrides, RenderOverrides& applied) {
+  if (!overrides.toneMap.empty()) {
+    applied.toneMap = enumFromName<ToneMap>(kToneMapNames, overrides.toneMap);
+    if (!applied.toneMap)
+      throw InputError(SourceLocation{"--tonemap"},
+                       fmt::format("unknown tone map '{}': use none, filmic or aces", overrides.toneMap));
   }
-  const std::uint64_t bytes = bandMemoryBytes(settings.width, settings.height, threads) +
-                              static_cast<std::uint64_t>(settings.width) * 4 + kWriterStateBytes;
-  requireMemory(
-      bytes, SourceLocation{input},
-      fmt::format("a {}x{} image rendered in bands of {} rows", settings.width, settings.height, kTileSize));
+  if (overrides.exposure) {
+    const double stops = *overrides.exposure;
+    if (!std::isfinite(stops) || std::abs(stops) > kMaxExposureStops)
+      throw InputError(SourceLocation{"--exposure"},
+                       fmt::format("exposure {} is not a number of stops between -{} and {}", stops,
+                                   kMaxExposureStops, kMaxExposureStops));
+    applied.exposure = static_cast<float>(stops);
+  }
+  if (overrides.bitDepth) {
+    if (*overrides.bitDepth != 8 && *overrides.bitDepth != 16)
+      throw InputError(SourceLocation{"--bit-depth"},
+                       fmt::format("bit depth {} is not supported: use 8 or 16", *overrides.bitDepth));
+    applied.bitDepth = *overrides.bitDepth;
+  }
+  if (overrides.denoise) applied.denoise = true;
 }
 
 // --step, --warp, --color-by and --undeformed on every mesh of the description.
@@ -156,12 +160,25 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
   command
       .add_option(
           "--accel", overrides.accel,
-          "Accelerator: kdtree-sah (default), kdtree-sah-exact (slower build, the quality reference), "
-          "kdtree-median or naive")
+          "Accelerator: bvh (default: the wide BVH), kdtree-sah (the kd-tree), kdtree-sah-exact (its slower "
+          "build, the quality reference), kdtree-median or naive (brute force)")
       ->check(CLI::IsMember(choices(kAccelNames)));
   command.add_option("--threads", overrides.threads, "Worker threads (default 0: all cores)")
       ->check(CLI::Range(0, kMaxThreads));
-  command.add_flag("--srgb", overrides.srgb, "Encode the output with the sRGB curve instead of linear");
+  CLI::Option* srgb =
+      command.add_flag("--srgb", overrides.srgb,
+                       "Encode the output with the sRGB curve (the default; over a scene's linear encoding)");
+  command
+      .add_flag("--linear", overrides.linear,
+                "Encode the output linearly, round(255 * I): the raw values of the lighting model, for tests")
+      ->excludes(srgb);
+  command.add_option("--tonemap", overrides.toneMap,
+                     "Tone curve before the encoding: none (default, clip at 1), filmic (Hable) or aces");
+  command.add_option("--exposure", overrides.exposure,
+                     "Exposure in stops: radiance x 2^STOPS before the curve");
+  command.add_option("--bit-depth", overrides.bitDepth, "Bits per sample: 8 (default) or 16 (PNG only)");
+  command.add_flag("--denoise", overrides.denoise,
+                   "Filter the noise with the edge-aware denoiser guided by albedo, normal and depth");
   command.add_flag("--edges", overrides.edges,
                    "Draw element edges (1 pixel, black) on every mesh whose scene sets no edges");
   command.add_option("--up", overrides.up,
@@ -185,12 +202,11 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
   command.add_flag("--timings", overrides.timings,
                    "Print where the time before the first ray went: read, orient (shells, orientation, "
-                   "nesting), normals, scene, kd build");
+                   "nesting), normals, scene, accel build");
 }
 
-PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides,
-                           const ImageBufferChoice& imageBuffer, bool keepMeshes) {
-  const Stopwatch load;
+PreparedRender prepareScene(const std::string& input, const SceneOverrides& overrides,
+                            const ImageBufferChoice& imageBuffer, bool keepMeshes) {
   std::optional<UpAxis> up;
   if (!overrides.up.empty()) {
     up = parseUpAxis(overrides.up);
@@ -198,77 +214,59 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
       throw InputError(SourceLocation{"--up"},
                        fmt::format("'{}' is not an axis: use x, y, z, -x, -y or -z", overrides.up));
   }
-  SceneDescription description;
-  StageTimes stages;
-  std::vector<Mesh> preloaded;
+  RenderRequest request;
+  SceneDescription& description = request.description;
   if (isStepFilePattern(input)) {  // a quoted "result_*.msh": one step per file
     const Stopwatch read;
-    preloaded.push_back(readStepFiles(input, matchStepFiles(input, SourceLocation{input}), overrides.threads,
-                                      SourceLocation{input}));
-    stages.add("read", read.seconds());
-    description = quickLookScene(input, preloaded.front(), up);
+    request.quickLookMesh = readStepFiles(input, matchStepFiles(input, SourceLocation{input}),
+                                          overrides.threads, SourceLocation{input});
+    request.stages.add("read", read.seconds());
+    description = quickLookScene(input, *request.quickLookMesh, up);
   } else if (isMeshFile(input)) {
     const Stopwatch read;
-    preloaded.push_back(readMsh(input, overrides.threads));
-    stages.add("read", read.seconds());
-    if (const std::string reason = nothingToDrawReason(preloaded.front()); !reason.empty())
+    request.quickLookMesh = readMsh(input, overrides.threads);
+    request.stages.add("read", read.seconds());
+    if (const std::string reason = nothingToDrawReason(*request.quickLookMesh); !reason.empty())
       throw InputError(SourceLocation{input}, "nothing to draw: " + reason);
-    description = quickLookScene(input, preloaded.front(), up);
+    description = quickLookScene(input, *request.quickLookMesh, up);
   } else {
     description = loadScene(input);
     if (up) applyUpAxis(description.camera, *up);
   }
-  std::vector<GmshPostView> postViews;  // View[i].* of the options file: steps, warps, ranges
-  std::string postViewsPath;
   if (overrides.gmshView) {
     // gmsh reads part.msh.opt beside part.msh whenever it opens it: the same file by default.
     std::string path = *overrides.gmshView;
     if (path.empty() && !description.meshes.empty()) path = description.meshes.front().file + ".opt";
     description.camera.gmshView = readGmshView(path);
-    postViews = readGmshPostViews(path);
-    postViewsPath = path;
-    if (!preloaded.empty()) placeQuickLookLights(description, preloaded.front());  // lit from gmsh's side
+    // Its View[i] options (steps, warps, ranges) need the views' names: applied to the meshes read.
+    request.withMeshes = [views = readGmshPostViews(path), path](SceneDescription& scene,
+                                                                 const std::vector<Mesh>& meshes) {
+      if (!meshes.empty()) applyGmshPostViews(scene, meshes.front(), views, path);
+    };
+    if (request.quickLookMesh) placeQuickLookLights(description, *request.quickLookMesh);  // from gmsh's side
   }
-  RenderOverrides applied;
+  RenderOverrides& applied = request.overrides;
   applied.width = overrides.width;
   applied.height = overrides.height;
   applied.samples = overrides.samples;
   applied.maxDepth = overrides.maxDepth;
   if (overrides.srgb) applied.srgb = true;
+  if (overrides.linear) applied.srgb = false;
+  applyOutputOverrides(overrides, applied);
   if (!overrides.sampler.empty())
     applied.sampler = enumFromName<SamplerKind>(kSamplerNames, overrides.sampler);
   if (!overrides.shading.empty())
     applied.shading = enumFromName<ShadingMode>(kShadingNames, overrides.shading);
   applied.edges = overrides.edges;
-  applyRenderOverrides(description, applied, preloaded.empty() ? nullptr : &preloaded.front());
+  request.accel = parseAccelKind(overrides.accel);
+  request.threads = overrides.threads;
+  request.imageBuffer = imageBuffer;
+  request.keepMeshes = keepMeshes;
   applyResultOverrides(description, overrides);
-  requireImageMemory(description.render, overrides.threads,
-                     imageBuffer ? imageBuffer(description.render) : ImageBuffer::Whole, input);
-  std::vector<Mesh> meshes =
-      preloaded.empty() ? readSceneMeshes(description, overrides.threads, &stages) : std::move(preloaded);
-  if (!postViews.empty() && !meshes.empty())
-    applyGmshPostViews(description, meshes.front(), postViews, postViewsPath);
-  std::vector<Mesh> kept;
-  Scene scene;
-  if (keepMeshes) {
-    scene = buildSceneAt(description, meshes, overrides.threads, &stages);
-    kept = std::move(meshes);
-  } else {
-    scene = buildScene(description, std::move(meshes), overrides.threads, &stages);
-  }
+  PreparedRender prepared = prepareRender(std::move(request));
   if (!overrides.quiet)
-    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
-  const double loadSeconds = load.seconds();
-  const Stopwatch build;
-  KdBuildOptions buildOptions;
-  buildOptions.threads = overrides.threads;  // --threads bounds the build too, not only the trace
-  Accelerator accelerator = Accelerator::build(scene.geometry.positions, scene.geometry.faces,
-                                               parseAccelKind(overrides.accel), buildOptions);
-  const double buildSeconds = build.seconds();
-  stages.add("kd build", buildSeconds);
-  return PreparedScene{std::move(description), std::move(kept), std::move(scene),
-                       std::move(accelerator), loadSeconds,     buildSeconds,
-                       std::move(stages)};
+    for (const std::string& warning : prepared.scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
+  return prepared;
 }
 
 bool sceneAnimatesOverSteps(const std::string& input) {
@@ -298,6 +296,7 @@ bool showProgress(const SceneOverrides& overrides) { return !overrides.quiet && 
 ImageWriteOptions imageWriteOptions(const RenderSettings& settings) {
   ImageWriteOptions options;
   options.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
+  options.bitDepth = settings.bitDepth;
   options.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
   return options;
 }

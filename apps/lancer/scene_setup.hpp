@@ -1,5 +1,5 @@
 // What `render` and `animate` share: command-line overrides of the scene's render settings, loading
-// a scene file or a bare mesh, building the accelerator once, Ctrl-C handling and progress lines.
+// a scene file or a bare mesh into one render preparation, Ctrl-C handling and progress lines.
 #pragma once
 
 #include <atomic>
@@ -12,6 +12,7 @@
 #include "lancer/accel/accelerator.hpp"
 #include "lancer/image/animation_writer.hpp"
 #include "lancer/image/image_io.hpp"
+#include "lancer/render/render_preparation.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/scene.hpp"
 
@@ -21,9 +22,14 @@ struct SceneOverrides {
   std::optional<int> width, height, samples, maxDepth;
   std::string shading;
   std::string sampler;
-  std::string accel = "kdtree-sah";
+  std::string accel{kDefaultAccelName};
   int threads = 0;
-  bool srgb = false;
+  bool srgb = false;    // --srgb: the default encoding, over a scene's encoding = "linear"
+  bool linear = false;  // --linear: the brief's raw values (round(255 * I))
+  std::string toneMap;  // --tonemap none | filmic | aces
+  std::optional<double> exposure;
+  std::optional<int> bitDepth;
+  bool denoise = false;
   bool edges = false;  // draw element edges on every mesh that does not set its own
   std::string up;      // --up: the automatic camera's up axis (x, y, z, -x, -y, -z)
   // --gmsh-view [FILE]: the camera of a gmsh options file; "" for the mesh's own MESH.msh.opt.
@@ -40,32 +46,21 @@ struct SceneOverrides {
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides);
 
-struct PreparedScene {
-  SceneDescription description;
-  // The meshes as read, every step of their views (kept only when asked: an animation over steps
-  // builds each frame's scene from them).
-  std::vector<Mesh> meshes;
-  Scene scene;
-  Accelerator accelerator;
-  double loadSeconds = 0;
-  double buildSeconds = 0;
-  StageTimes stages;  // read, orient, normals, scene, kd build: where loadSeconds + buildSeconds went
-};
-
 // "timings: read 0.052 s, orient 0.081 s, ..." (--timings).
 std::string formatStageTimes(const StageTimes& stages);
 
-// How a command holds the image while it renders: whole (animation frames, GIF) or as the few bands
-// of rows that renderBands keeps (a still PNG, BMP or PPM streamed to its file).
-enum class ImageBuffer { Whole, Bands };
-// Asked once the overrides are applied, before any mesh is loaded, for the memory check.
+// Asked once the overrides are applied, before any mesh of a scene file is loaded, for the memory check.
 using ImageBufferChoice = std::function<ImageBuffer(const RenderSettings&)>;
 
-// Reads a scene file (.toml) or builds the quick-look scene of a mesh (.msh), applies the
-// overrides, checks the image's memory against the budget (--max-memory), loads the meshes and builds
-// the accelerator. Without a choice the image is held whole.
-PreparedScene prepareScene(const std::string& input, const SceneOverrides& overrides,
-                           const ImageBufferChoice& imageBuffer = {}, bool keepMeshes = false);
+// The command's input and options as a RenderRequest: a scene file (.toml), or the quick look of a
+// mesh (.msh, read here), with --up and --gmsh-view applied; then prepareRender
+// (render/render_preparation.hpp) checks the image's memory against the budget (--max-memory), builds
+// the scene, the accelerator and the camera. The meshes' warnings go to stderr unless --quiet.
+// Without a choice the image is held whole.
+// keepMeshes: the meshes as read (every step of their views) stay in PreparedRender::meshes, for an
+// animation over steps.
+PreparedRender prepareScene(const std::string& input, const SceneOverrides& overrides,
+                            const ImageBufferChoice& imageBuffer = {}, bool keepMeshes = false);
 
 // Whether `input` is a scene file whose [animation] says over = "steps" (read once more, before the
 // meshes, so that they are kept for the frames).

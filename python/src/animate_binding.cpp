@@ -51,7 +51,7 @@ void animate(const py::object& target, const std::string& output, const RenderAr
       meshes.push_back(*source.quickLookMesh);
     else
       meshes = readSceneMeshes(prepared.description, arguments.threads);
-    steps.emplace(prepared.description, meshes, animation, AccelKind::KdTreeSah, arguments.threads);
+    steps.emplace(prepared.description, meshes, animation, kDefaultAccel, arguments.threads);
     animation = steps->animation();
   }
 
@@ -73,17 +73,19 @@ void animate(const py::object& target, const std::string& output, const RenderAr
   AnimationStats stats;
   {
     py::gil_scoped_release release;
+    const auto deliver = [&](int frame, const Image& image) {
+      writer.addFrame(frame, writer.takesRadiance() ? image : displayImage(image, settings));
+    };
     if (steps) {
       for (int frame = 0; frame < steps->frameCount() && !stats.cancelled; ++frame) {
         RenderStats frameStats;
         const Image image = steps->render(frame, render.options, &frameStats);
         stats.cancelled = frameStats.cancelled || (render.options.cancel && render.options.cancel->load());
-        if (!stats.cancelled) writer.addFrame(frame, image);
+        if (!stats.cancelled) deliver(frame, image);
       }
     } else {
       stats = renderAnimation(prepared.scene, prepared.accelerator, prepared.description, animation,
-                              render.options,
-                              [&](int frame, const Image& image) { writer.addFrame(frame, image); });
+                              render.options, deliver);
     }
   }
   render.finish();  // KeyboardInterrupt: the writer's destructor removes its temporary files

@@ -1,5 +1,6 @@
 // The pieces of the _lancer extension module, one concept per file (mesh arrays, scenes and cameras,
 // rendering, images, errors), and the Python-side scene they share.
+// Map: docs/architecture.md (the path of a ray through the modules).
 #pragma once
 
 #include <pybind11/pybind11.h>

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -13,7 +14,6 @@
 #include "lancer/image/pixel_encoding.hpp"
 #include "lancer/render/progress_line.hpp"
 #include "lancer/scene/render_limits.hpp"
-#include "lancer/util/memory_budget.hpp"
 #include "render_session.hpp"
 
 namespace lancer::python {
@@ -49,8 +49,9 @@ py::array toArray(const Image& image, const RenderSettings& settings, bool linea
   py::array_t<std::uint8_t> array({height, width, static_cast<py::ssize_t>(channels)});
   const TransferCurve curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
   std::uint8_t* out = array.mutable_data();
-  for (int y = 0; y < image.height(); ++y)
-    encodeRow8(image.row(y), curve, channels, out + static_cast<std::size_t>(y) * image.width() * channels);
+  const Image shown = displayImage(image, settings);  // exposure and tone curve, as in the files
+  for (int y = 0; y < shown.height(); ++y)
+    encodeRow8(shown.row(y), curve, channels, out + static_cast<std::size_t>(y) * shown.width() * channels);
   return array;
 }
 
@@ -76,6 +77,21 @@ RenderOverrides renderOverridesFromArguments(const RenderArguments& arguments) {
   overrides.shading = choiceArgument<ShadingMode>(arguments.shading, "shading", kShadingNames);
   overrides.sampler = choiceArgument<SamplerKind>(arguments.sampler, "sampler", kSamplerNames);
   overrides.srgb = arguments.srgb;
+  if (arguments.encoding) {
+    if (*arguments.encoding != "srgb" && *arguments.encoding != "linear")
+      throw py::value_error(fmt::format("encoding='{}': use 'srgb' or 'linear'", *arguments.encoding));
+    if (arguments.srgb && *arguments.srgb != (*arguments.encoding == "srgb"))
+      throw py::value_error("srgb and encoding disagree: give encoding alone");
+    overrides.srgb = *arguments.encoding == "srgb";
+  }
+  overrides.toneMap = choiceArgument<ToneMap>(arguments.toneMap, "tonemap", kToneMapNames);
+  if (arguments.exposure) {
+    if (!std::isfinite(*arguments.exposure) || std::abs(*arguments.exposure) > kMaxExposureStops)
+      throw py::value_error(fmt::format("exposure={} is not a number of stops between -{} and {}",
+                                        *arguments.exposure, kMaxExposureStops, kMaxExposureStops));
+    overrides.exposure = static_cast<float>(*arguments.exposure);
+  }
+  overrides.denoise = arguments.denoise;
   overrides.transparentBackground = arguments.transparentBackground;
   overrides.edges = arguments.edges.value_or(false);
   overrides.samplesName = "samples";
@@ -116,21 +132,14 @@ void InterruptibleRender::finish() {
 }
 
 PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides, int threads) {
-  applyRenderOverrides(scene.description, overrides, scene.quickLookMesh.get());
-  const RenderSettings& settings = scene.description.render;
-  requireMemory(saturatingProduct(
-                    static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height),
-                    sizeof(Rgba) + 4),
-                SourceLocation{scene.description.path},
-                fmt::format("a {}x{} image", settings.width, settings.height));
   PreparedRender prepared = [&] {
-    py::gil_scoped_release release;
-    std::vector<Mesh> meshes;
-    if (scene.quickLookMesh) meshes.push_back(*scene.quickLookMesh);
-    Scene built = meshes.empty() ? buildScene(scene.description, threads)
-                                 : buildScene(scene.description, std::move(meshes), threads);
-    Accelerator accelerator = buildSceneAccelerator(built, threads);
-    return PreparedRender{std::move(scene.description), std::move(built), std::move(accelerator)};
+    const py::gil_scoped_release release;
+    RenderRequest request;
+    request.description = std::move(scene.description);
+    if (scene.quickLookMesh) request.quickLookMesh = *scene.quickLookMesh;
+    request.overrides = overrides;
+    request.threads = threads;
+    return lancer::prepareRender(std::move(request));
   }();
   for (const std::string& warning : sceneWarnings(prepared.scene))
     if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
@@ -144,14 +153,15 @@ void bindRender(py::module_& module) {
         const RenderOverrides overrides = renderOverridesFromArguments(arguments);
         PreparedRender prepared = prepareRender(sceneOf(target), overrides, arguments.threads);
         const RenderSettings& settings = prepared.description.render;
-        const Camera camera = makeCamera(prepared.description.camera, prepared.scene, settings);
-        const Renderer renderer(prepared.scene, prepared.accelerator, camera, settings);
+        const Renderer renderer = prepared.renderer();
         InterruptibleRender render(arguments.threads, arguments.progress);
         RenderStats stats;
         Image image;
-        {
+        try {
           py::gil_scoped_release release;
-          image = renderer.renderImage(render.options, &stats);
+          image = renderer.renderFinal(render.options, &stats);
+        } catch (const NonFiniteRenderError& e) {
+          throw InputError(SourceLocation{prepared.description.path}, e.what());
         }
         render.finish();
         py::dict info;
@@ -172,6 +182,10 @@ void bindRender(py::module_& module) {
       .def_readwrite("shading", &RenderArguments::shading)
       .def_readwrite("sampler", &RenderArguments::sampler)
       .def_readwrite("srgb", &RenderArguments::srgb)
+      .def_readwrite("encoding", &RenderArguments::encoding)
+      .def_readwrite("tonemap", &RenderArguments::toneMap)
+      .def_readwrite("exposure", &RenderArguments::exposure)
+      .def_readwrite("denoise", &RenderArguments::denoise)
       .def_readwrite("transparent_background", &RenderArguments::transparentBackground)
       .def_readwrite("edges", &RenderArguments::edges)
       .def_readwrite("threads", &RenderArguments::threads)

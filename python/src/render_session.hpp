@@ -1,5 +1,5 @@
-// What lancer.render and lancer.animate share: the keyword arguments as RenderOverrides, the scene
-// built and its accelerator, and a render that Ctrl-C stops (Python's signal handlers run on the
+// What lancer.render and lancer.animate share: the keyword arguments as RenderOverrides, the render
+// prepared from them, and a render that Ctrl-C stops (Python's signal handlers run on the
 // calling thread between tiles while the workers trace without the GIL).
 #pragma once
 
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "lancer/accel/accelerator.hpp"
+#include "lancer/render/render_preparation.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/render_overrides.hpp"
 #include "lancer/scene/scene.hpp"
@@ -20,7 +20,9 @@ namespace lancer::python {
 struct RenderArguments {
   std::optional<int> width, height, samples, maxDepth;
   std::optional<std::string> shading, sampler;
-  std::optional<bool> srgb, transparentBackground, edges;
+  std::optional<bool> srgb, transparentBackground, edges, denoise;
+  std::optional<std::string> encoding, toneMap;  // "srgb" | "linear"; "none" | "filmic" | "aces"
+  std::optional<double> exposure;
   int threads = 0;
   bool progress = false;
 };
@@ -31,22 +33,11 @@ RenderOverrides renderOverridesFromArguments(const RenderArguments& arguments);
 // A lancer.Scene, or the quick look of a lancer.Mesh (TypeError for anything else).
 PythonScene sceneOf(const py::object& target);
 
-struct PreparedRender {
-  SceneDescription description;
-  Scene scene;
-  Accelerator accelerator;
-};
-
-// Applies the overrides, checks the image's memory, loads the meshes and builds the accelerator
-// (without the GIL, on `threads` threads, 0: every core); the meshes' warnings become Python UserWarnings.
+// The library's prepareRender (render/render_preparation.hpp) of the scene with the overrides, run
+// without the GIL on `threads` threads (0: every core); the meshes' warnings become Python UserWarnings.
 PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides, int threads);
 
 // The two places that read Scene's fields, kept here so that a change to Scene's layout touches one file.
-inline Accelerator buildSceneAccelerator(const Scene& scene, int threads) {
-  KdBuildOptions options;
-  options.threads = threads;
-  return Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah, options);
-}
 inline const std::vector<std::string>& sceneWarnings(const Scene& scene) { return scene.warnings; }
 inline std::size_t sceneLightCount(const Scene& scene) { return scene.appearance.lights.size(); }
 

@@ -79,7 +79,7 @@ ClippedScene threeMeshes() {
 
 TEST(ClippedQueryProperty, EveryAcceleratorMatchesTheDefinition) {
   const ClippedScene scene = threeMeshes();
-  for (AccelKind kind : {AccelKind::KdTreeSah, AccelKind::KdTreeMedian, AccelKind::Naive}) {
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::KdTreeSah, AccelKind::KdTreeMedian, AccelKind::Naive}) {
     SCOPED_TRACE(std::string(accelKindName(kind)));
     const Accelerator accel = Accelerator::build(scene.soup.positions, scene.soup.faces, kind);
     std::mt19937 rng(7);
@@ -125,7 +125,7 @@ TEST(ClippedQueryProperty, CoincidentFacesOfTwoMeshesAtEqualT) {
   FaceClipSets clips;
   addPlanes(clips, a, {{{0, 0, -1}, {0, 0, 1}}});  // removes z > -1: all of A
   const Ray ray({0.5f, 0.5f, 3}, {0, 0, -1});
-  for (AccelKind kind : {AccelKind::KdTreeSah, AccelKind::KdTreeMedian, AccelKind::Naive}) {
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::KdTreeSah, AccelKind::KdTreeMedian, AccelKind::Naive}) {
     const Accelerator accel = Accelerator::build(soup.positions, soup.faces, kind);
     Hit plain, clipped;
     ASSERT_TRUE(accel.intersect(ray, 0.0f, 1e30f, plain));

@@ -16,12 +16,12 @@ using test::runCli;
 
 const std::string kFixture = test::quoted(test::dataFile("accel/holed_block.msh"));
 
-TEST(InfoAccelCli, BareFlagDescribesTheSahTree) {
+TEST(InfoAccelCli, BareFlagDescribesTheDefaultBvh) {
   const CommandResult result = runCli("info " + kFixture + " --accel");
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  test::expectContainsAll(result.output,
-                          {"accelerator:     kdtree-sah over ", "  nodes:", "  depth:", "  faces/leaf:",
-                           "  SAH cost:", "  build time:", "  memory:", "bytes/triangle"});
+  test::expectContainsAll(
+      result.output, {"accelerator:     bvh over ", "  nodes:", "  depth:", "  faces/leaf:", "  SAH cost:",
+                      "  build time:", "  memory:", "bytes/triangle"});
 }
 
 TEST(InfoAccelCli, NamedBuildAndJson) {
@@ -40,7 +40,7 @@ TEST(InfoAccelCli, UnknownKindIsAUsageError) {
   const CommandResult result = runCli("info " + kFixture + " --accel octree");
   EXPECT_NE(result.exitCode, 0);
   EXPECT_TRUE(contains(result.output, "octree")) << result.output;
-  test::expectContainsAll(result.output, {"kdtree-sah", "kdtree-sah-exact", "kdtree-median", "naive"});
+  test::expectContainsAll(result.output, {"bvh", "kdtree-sah", "kdtree-sah-exact", "kdtree-median", "naive"});
 }
 
 TEST(InfoAccelCli, ExactSahBuildIsSelectable) {
@@ -60,10 +60,13 @@ TEST(RenderAccelCli, ExactBuildAndAnyThreadCountRenderTheSameImage) {
   const std::string one = render("--threads 1", "one.png");
   test::expectSameFile(render("--threads 2", "two.png"), one);
   test::expectSameFile(render("--accel kdtree-sah-exact --threads 2", "exact.png"), one);
+  test::expectSameFile(render("--accel kdtree-sah --threads 3", "kd.png"), one);
+  test::expectSameFile(render("--accel bvh --threads 4", "bvh.png"), one);
   const CommandResult bad =
-      runCli("render -q " + kFixture + " --accel bvh -o " + test::quoted(folder.file("x.png")));
+      runCli("render -q " + kFixture + " --accel octree -o " + test::quoted(folder.file("x.png")));
   EXPECT_EQ(bad.exitCode, 2) << bad.output;
-  test::expectContainsAll(bad.output, {"bvh", "kdtree-sah", "kdtree-sah-exact", "kdtree-median", "naive"});
+  test::expectContainsAll(bad.output,
+                          {"octree", "bvh", "kdtree-sah", "kdtree-sah-exact", "kdtree-median", "naive"});
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
-// Property: on thousands of random and adversarial rays, every kd-tree build answers exactly as the
-// brute-force reference: same hit or miss, same face, same t (to 1e-6 relative), same occlusion.
+// Property: on thousands of random and adversarial rays, every accelerator build (the BVH and each
+// kd-tree build, with options that stress them) answers exactly as the brute-force reference: same
+// hit or miss, same face, same t (to 1e-6 relative), same occlusion.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <random>
 #include <sstream>
 #include <string>
@@ -19,21 +21,58 @@ namespace {
 
 using test::Soup;
 
+// A built accelerator as the test sees it: its two queries, and a kd-tree whose split planes the
+// adversarial rays aim at (its own for a kd-tree, the default kd build's for the BVH).
+struct Built {
+  std::shared_ptr<const void> keep;
+  std::shared_ptr<const KdTree> planes;
+  std::function<bool(const Ray&, float, float, Hit&)> intersect;
+  std::function<bool(const Ray&, float, float)> occluded;
+};
+
+template <typename Tree>
+Built builtOf(std::shared_ptr<const Tree> tree, std::shared_ptr<const KdTree> planes) {
+  return {tree, std::move(planes),
+          [tree](const Ray& r, float a, float b, Hit& h) { return tree->intersect(r, a, b, h); },
+          [tree](const Ray& r, float a, float b) { return tree->occluded(r, a, b); }};
+}
+
 struct BuildCase {
   std::string name;
-  std::function<KdTree(const Soup&)> build;
+  std::function<Built(const Soup&)> build;
 };
 
 std::vector<BuildCase> buildCases() {
-  auto sah = [](KdBuildOptions o) {
-    return [o](const Soup& s) { return KdTree::buildSah(s.positions, s.faces, o); };
+  auto kd = [](auto make) {
+    return [make](const Soup& s) {
+      auto tree = std::make_shared<const KdTree>(make(s));
+      return builtOf(tree, tree);
+    };
   };
-  auto exact = [](KdBuildOptions o) {
-    return [o](const Soup& s) { return KdTree::buildSahExact(s.positions, s.faces, o); };
+  auto sah = [&](KdBuildOptions o) {
+    return kd([o](const Soup& s) { return KdTree::buildSah(s.positions, s.faces, o); });
   };
-  auto median = [](KdBuildOptions o) {
-    return [o](const Soup& s) { return KdTree::buildMedian(s.positions, s.faces, o); };
+  auto exact = [&](KdBuildOptions o) {
+    return kd([o](const Soup& s) { return KdTree::buildSahExact(s.positions, s.faces, o); });
   };
+  auto median = [&](KdBuildOptions o) {
+    return kd([o](const Soup& s) { return KdTree::buildMedian(s.positions, s.faces, o); });
+  };
+  auto bvh = [](BvhBuildOptions o) {
+    return [o](const Soup& s) {
+      return builtOf(std::make_shared<const Bvh>(Bvh::build(s.positions, s.faces, o)),
+                     std::make_shared<const KdTree>(KdTree::buildSah(s.positions, s.faces)));
+    };
+  };
+  BvhBuildOptions bvhSerial;
+  bvhSerial.threads = 1;
+  BvhBuildOptions bvhParallelTop;  // the parallel top reaching test-sized ranges
+  bvhParallelTop.threads = 3;
+  bvhParallelTop.parallelTopAbove = 8;
+  BvhBuildOptions bvhDeep = bvhSerial;  // one triangle a leaf nearly everywhere
+  bvhDeep.traversalCost = 0.05f;
+  BvhBuildOptions bvhWideLeaves = bvhSerial;  // leaves of eight wherever they fit
+  bvhWideLeaves.traversalCost = 50.0f;
   KdBuildOptions serial;
   serial.threads = 1;
   KdBuildOptions parallel;
@@ -67,7 +106,11 @@ std::vector<BuildCase> buildCases() {
   unclipped.clipAboveFraction = 2.0f;
   KdBuildOptions bigClipped = binnedDeep;
   bigClipped.clipAboveFraction = 0.5f;
-  return {{"sah", sah(serial)},
+  return {{"bvh", bvh(bvhSerial)},
+          {"bvh-parallel-top", bvh(bvhParallelTop)},
+          {"bvh-deep", bvh(bvhDeep)},
+          {"bvh-wide-leaves", bvh(bvhWideLeaves)},
+          {"sah", sah(serial)},
           {"sah-2-threads", sah(parallel)},
           {"sah-deep", sah(cheapTraversal)},
           {"sah-shallow", sah(shallow)},
@@ -99,9 +142,9 @@ void expectSameAnswers(const Soup& soup, int rayCount, std::uint32_t seed) {
   const NaiveAccel naive(soup.positions, soup.faces);
   for (const BuildCase& build : buildCases()) {
     SCOPED_TRACE(build.name);
-    const KdTree tree = build.build(soup);
+    const Built tree = build.build(soup);
     std::mt19937 rng(seed);
-    const std::vector<test::TestRay> rays = test::adversarialRays(soup, tree, rng, rayCount);
+    const std::vector<test::TestRay> rays = test::adversarialRays(soup, *tree.planes, rng, rayCount);
     int failures = 0, hits = 0;
     for (const test::TestRay& r : rays) {
       Hit expected, actual;
@@ -119,7 +162,7 @@ void expectSameAnswers(const Soup& soup, int rayCount, std::uint32_t seed) {
         ADD_FAILURE() << describe(r)
                       << "\n  naive: " << (expectHit ? "face " + std::to_string(expected.face) : "miss")
                       << " t " << expected.t << " occluded " << expectOccluded
-                      << "\n  kd:    " << (gotHit ? "face " + std::to_string(actual.face) : "miss") << " t "
+                      << "\n  accel: " << (gotHit ? "face " + std::to_string(actual.face) : "miss") << " t "
                       << actual.t << " occluded " << gotOccluded;
       }
     }
@@ -142,18 +185,7 @@ TEST(KdTreeProperty, TessellatedSphereMatchesBruteForce) {
 }
 
 TEST(KdTreeProperty, DegenerateAndCoplanarFacesMatchBruteForce) {
-  std::mt19937 rng(4);
-  Soup soup = test::adversarialSoup(rng);
-  // Embed them in a grid so the tree has planes through the coincident faces.
-  const Soup grid = test::gridBox(4);
-  for (MeshFace f : grid.faces) {
-    for (std::uint32_t& v : f.vertex) {
-      if (v != kNoVertex) v += static_cast<std::uint32_t>(soup.positions.size());
-    }
-    soup.faces.push_back(f);
-  }
-  for (const Vec3& p : grid.positions) soup.positions.push_back(p * 0.25f);
-  expectSameAnswers(soup, 8000, 14);
+  expectSameAnswers(test::adversarialSoupInGrid(), 8000, 14);
 }
 
 // What binning finds hardest: hundreds of triangles in one axis-aligned plane (many of them in the
@@ -215,8 +247,8 @@ TEST(KdTreeProperty, GmshQuadBoxMatchesBruteForce) {
 TEST(KdTreeProperty, AcceleratorDispatchMatchesBruteForce) {
   const Soup soup = test::sphere(12, 16);
   const NaiveAccel naive(soup.positions, soup.faces);
-  for (AccelKind kind :
-       {AccelKind::KdTreeSah, AccelKind::KdTreeSahExact, AccelKind::KdTreeMedian, AccelKind::Naive}) {
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::KdTreeSah, AccelKind::KdTreeSahExact,
+                         AccelKind::KdTreeMedian, AccelKind::Naive}) {
     const Accelerator accel = Accelerator::build(soup.positions, soup.faces, kind);
     std::mt19937 rng(5);
     for (int i = 0; i < 2000; ++i) {

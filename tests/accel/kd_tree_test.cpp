@@ -150,27 +150,31 @@ TEST(KdTree, BinnedBuildMatchesTheExactBuildsCost) {
 }
 
 TEST(Accelerator, ParsesTheNamesTheCliAccepts) {
+  EXPECT_EQ(parseAccelKind("bvh"), AccelKind::Bvh);
+  EXPECT_EQ(kDefaultAccel, AccelKind::Bvh);
+  EXPECT_EQ(kDefaultAccelName, "bvh");
   EXPECT_EQ(parseAccelKind("kdtree-sah"), AccelKind::KdTreeSah);
   EXPECT_EQ(parseAccelKind("kdtree-sah-exact"), AccelKind::KdTreeSahExact);
   EXPECT_EQ(parseAccelKind("kdtree-median"), AccelKind::KdTreeMedian);
   EXPECT_EQ(parseAccelKind("naive"), AccelKind::Naive);
-  for (AccelKind kind :
-       {AccelKind::KdTreeSah, AccelKind::KdTreeSahExact, AccelKind::KdTreeMedian, AccelKind::Naive}) {
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::KdTreeSah, AccelKind::KdTreeSahExact,
+                         AccelKind::KdTreeMedian, AccelKind::Naive}) {
     EXPECT_EQ(parseAccelKind(accelKindName(kind)), kind);
   }
   try {
-    parseAccelKind("bvh");
+    parseAccelKind("octree");
     FAIL() << "expected an error";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(),
-                 "unknown accelerator 'bvh': expected kdtree-sah, kdtree-sah-exact, kdtree-median or naive");
+                 "unknown accelerator 'octree': expected bvh, kdtree-sah, kdtree-sah-exact, "
+                 "kdtree-median or naive");
   }
 }
 
 TEST(Accelerator, StatsForEveryKind) {
   const Soup soup = test::sphere(10, 12);
-  for (AccelKind kind :
-       {AccelKind::KdTreeSah, AccelKind::KdTreeSahExact, AccelKind::KdTreeMedian, AccelKind::Naive}) {
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::KdTreeSah, AccelKind::KdTreeSahExact,
+                         AccelKind::KdTreeMedian, AccelKind::Naive}) {
     const Accelerator accel = Accelerator::build(soup.positions, soup.faces, kind);
     EXPECT_EQ(accel.stats().kind, accelKindName(kind));
     EXPECT_EQ(accel.stats().faces, soup.faces.size());

@@ -1,4 +1,4 @@
-// Property: the kd-tree's packet queries answer every lane exactly as the single-ray query does
+// Property: the BVH's and the kd-tree's packet queries answer every lane exactly as the single-ray query does
 // (same hit or miss, same face, same t, same barycentrics, to the bit; same occlusion), on the
 // adversarial ray sets of the kd-tree property test grouped eight at a time by direction (so that the
 // packet walks the tree together) and in arrival order (mixed directions, traced one by one), on
@@ -87,7 +87,8 @@ int countDifferences(const std::vector<std::pair<RayPacket, std::uint32_t>>& pac
   return failures;
 }
 
-int countDifferences(const KdTree& tree, const std::vector<std::pair<RayPacket, std::uint32_t>>& packets,
+template <typename Tree>
+int countDifferences(const Tree& tree, const std::vector<std::pair<RayPacket, std::uint32_t>>& packets,
                      int& hits) {
   return countDifferences(
       packets, [&](const Ray& r, float a, float b, Hit& h) { return tree.intersect(r, a, b, h); },
@@ -100,7 +101,8 @@ int countDifferences(const KdTree& tree, const std::vector<std::pair<RayPacket, 
 
 // Pinhole views of the soup's box from several sides in 4x2-pixel packets, and from the points
 // they hit, shadow packets towards a point light (t up to 1).
-std::vector<TestRay> coherentRays(const Soup& soup, const KdTree& tree, std::mt19937& rng) {
+template <typename Tree>
+std::vector<TestRay> coherentRays(const Soup& soup, const Tree& tree, std::mt19937& rng) {
   Aabb box;
   for (const Vec3& p : soup.positions) box.extend(p);
   std::vector<TestRay> rays;
@@ -137,6 +139,23 @@ std::vector<TestRay> coherentRays(const Soup& soup, const KdTree& tree, std::mt1
   return rays;
 }
 
+// One tree's packets against its single rays; `planes` is the kd-tree the adversarial rays aim at.
+template <typename Tree>
+void expectSameAnswersOf(const Tree& tree, const KdTree& planes, const Soup& soup, int rayCount,
+                         std::uint32_t seed) {
+  SCOPED_TRACE(tree.stats().kind + " depth " + std::to_string(tree.stats().depth));
+  std::mt19937 rng(seed);
+  const std::vector<TestRay> rays = test::adversarialRays(soup, planes, rng, rayCount);
+  int hits = 0;
+  EXPECT_EQ(countDifferences(tree, packetsOf(rays, true), hits), 0) << "coherent packets";
+  EXPECT_EQ(countDifferences(tree, packetsOf(rays, false), hits), 0) << "mixed packets";
+  EXPECT_GT(hits, static_cast<int>(rays.size()) / 5);
+  hits = 0;
+  EXPECT_EQ(countDifferences(tree, packetsOf(coherentRays(soup, tree, rng), false), hits), 0)
+      << "camera and shadow packets";
+  EXPECT_GT(hits, 400);
+}
+
 void expectSameAnswers(const Soup& soup, int rayCount, std::uint32_t seed) {
   KdBuildOptions serial;
   serial.threads = 1;
@@ -145,19 +164,13 @@ void expectSameAnswers(const Soup& soup, int rayCount, std::uint32_t seed) {
   const KdTree trees[] = {KdTree::buildSah(soup.positions, soup.faces, serial),
                           KdTree::buildSah(soup.positions, soup.faces, deep),
                           KdTree::buildMedian(soup.positions, soup.faces, serial)};
-  for (const KdTree& tree : trees) {
-    SCOPED_TRACE(tree.stats().kind + " depth " + std::to_string(tree.stats().depth));
-    std::mt19937 rng(seed);
-    const std::vector<TestRay> rays = test::adversarialRays(soup, tree, rng, rayCount);
-    int hits = 0;
-    EXPECT_EQ(countDifferences(tree, packetsOf(rays, true), hits), 0) << "coherent packets";
-    EXPECT_EQ(countDifferences(tree, packetsOf(rays, false), hits), 0) << "mixed packets";
-    EXPECT_GT(hits, static_cast<int>(rays.size()) / 5);
-    hits = 0;
-    EXPECT_EQ(countDifferences(tree, packetsOf(coherentRays(soup, tree, rng), false), hits), 0)
-        << "camera and shadow packets";
-    EXPECT_GT(hits, 400);
-  }
+  for (const KdTree& tree : trees) expectSameAnswersOf(tree, tree, soup, rayCount, seed);
+  BvhBuildOptions bvhSerial;
+  bvhSerial.threads = 1;
+  BvhBuildOptions bvhDeep = bvhSerial;
+  bvhDeep.traversalCost = 0.05f;
+  for (const BvhBuildOptions& options : {bvhSerial, bvhDeep})
+    expectSameAnswersOf(Bvh::build(soup.positions, soup.faces, options), trees[0], soup, rayCount, seed);
 }
 
 TEST(PacketQueryProperty, RandomSoup) {
@@ -172,17 +185,7 @@ TEST(PacketQueryProperty, GridBoxWithVerticesOnSplitPlanes) {
 TEST(PacketQueryProperty, TessellatedSphere) { expectSameAnswers(test::sphere(40, 60), 6000, 13); }
 
 TEST(PacketQueryProperty, DegenerateAndCoplanarFaces) {
-  std::mt19937 rng(4);
-  Soup soup = test::adversarialSoup(rng);
-  const Soup grid = test::gridBox(4);
-  for (MeshFace f : grid.faces) {
-    for (std::uint32_t& v : f.vertex) {
-      if (v != kNoVertex) v += static_cast<std::uint32_t>(soup.positions.size());
-    }
-    soup.faces.push_back(f);
-  }
-  for (const Vec3& p : grid.positions) soup.positions.push_back(p * 0.25f);
-  expectSameAnswers(soup, 8000, 14);
+  expectSameAnswers(test::adversarialSoupInGrid(), 8000, 14);
 }
 
 Soup loadFixture(const std::string& name) {
@@ -213,7 +216,7 @@ TEST(PacketQueryProperty, ClippedQueriesSeeThroughTheSameFaces) {
   const HitFilter filter{&clips, [](const void* c, const Ray& ray, std::uint32_t face, float t) {
                            return static_cast<const FaceClipSets*>(c)->keeps(ray, face, t);
                          }};
-  for (AccelKind kind : {AccelKind::KdTreeSah, AccelKind::KdTreeMedian, AccelKind::Naive}) {
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::KdTreeSah, AccelKind::KdTreeMedian, AccelKind::Naive}) {
     SCOPED_TRACE(std::string(accelKindName(kind)));
     const Accelerator accel = Accelerator::build(soup.positions, soup.faces, kind);
     const KdTree tree = KdTree::buildSah(soup.positions, soup.faces);
@@ -289,7 +292,7 @@ TEST(PacketQueryProperty, FiltersRefusingEveryHitSeeEachLanesOwnRayAndEveryFaceO
     std::sort(faces.begin(), faces.end());
     return faces;
   };
-  for (AccelKind kind : {AccelKind::KdTreeSah, AccelKind::KdTreeMedian, AccelKind::Naive}) {
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::KdTreeSah, AccelKind::KdTreeMedian, AccelKind::Naive}) {
     SCOPED_TRACE(std::string(accelKindName(kind)));
     const Accelerator accel = Accelerator::build(soup.positions, soup.faces, kind);
     int lanesWithFaces = 0;
@@ -326,37 +329,32 @@ TEST(PacketQueryProperty, WatertightRaysFromInsideAllHitAsSingleRays) {
     SCOPED_TRACE(file);
     const Soup mesh = loadFixture(file);
     const KdTree tree = KdTree::buildSah(mesh.positions, mesh.faces);
-    Aabb box;
-    for (const Vec3& p : mesh.positions) box.extend(p);
-    std::mt19937 rng(12345);
-    std::uniform_real_distribution<float> jitter(-0.05f, 0.05f);
     std::vector<TestRay> rays;
-    for (const MeshFace& face : mesh.faces) {
-      for (int c = 0; c < face.cornerCount(); ++c) {
-        const Vec3 a = mesh.positions[face.vertex[c]];
-        const Vec3 b = mesh.positions[face.vertex[(c + 1) % face.cornerCount()]];
-        for (const float s : {0.0f, 0.5f, 0.25f}) {
-          const Vec3 origin = box.center() + box.extent() * Vec3{jitter(rng), jitter(rng), jitter(rng)};
-          TestRay r;
-          r.ray = Ray(origin, a + (b - a) * s - origin);
-          r.tMax = 2.0f;
-          rays.push_back(r);
-        }
-      }
+    for (const Ray& ray : test::raysAtCornersAndEdges(mesh.positions, mesh.faces)) {
+      TestRay r;
+      r.ray = ray;
+      r.tMax = 2.0f;
+      rays.push_back(r);
     }
-    for (const bool bySigns : {true, false}) {
+    const Bvh bvh = Bvh::build(mesh.positions, mesh.faces);
+    auto check = [&](const auto& accel, bool bySigns) {
+      SCOPED_TRACE(accel.stats().kind);
       const auto packets = packetsOf(rays, bySigns);
       int misses = 0, unblocked = 0, lanes = 0;
       for (const auto& [packet, active] : packets) {
         Hit hits[kPacketSize];
-        misses += std::popcount(active & ~tree.intersect(packet, active, std::span<Hit, kPacketSize>(hits)));
-        unblocked += std::popcount(active & ~tree.occluded(packet, active));
+        misses += std::popcount(active & ~accel.intersect(packet, active, std::span<Hit, kPacketSize>(hits)));
+        unblocked += std::popcount(active & ~accel.occluded(packet, active));
         lanes += std::popcount(active);
       }
       EXPECT_EQ(misses, 0) << "of " << lanes << " lanes";
       EXPECT_EQ(unblocked, 0) << "of " << lanes << " lanes";
       int hits = 0;
-      EXPECT_EQ(countDifferences(tree, packets, hits), 0);
+      EXPECT_EQ(countDifferences(accel, packets, hits), 0);
+    };
+    for (const bool bySigns : {true, false}) {
+      check(tree, bySigns);
+      check(bvh, bySigns);
     }
   }
 }

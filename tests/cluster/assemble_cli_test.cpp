@@ -79,10 +79,10 @@ TEST(AssembleCli, AForeignFrameIsNamedAndNothingIsWritten) {
   folder.write("a.gif", "old");
   const test::CommandResult r = runCli("assemble " + frames + " -o " + quoted(folder.file("a.gif")));
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_TRUE(
-      test::contains(r.output, folder.file("f_0002.png") +
-                                   ": error: frame 2 is 32x48, but frame 0 is 64x48: not from the same "
-                                   "animation"))
+  EXPECT_TRUE(test::contains(
+      r.output, folder.file("f_0002.png") +
+                    ": error: frame 2 is 32x48 sRGB, but frame 0 is 64x48 sRGB: not from the same "
+                    "animation"))
       << r.output;
   EXPECT_EQ(folder.read("a.gif"), "old");
   // --skip-existing renders the foreign frame again (it is not a complete frame of this animation).

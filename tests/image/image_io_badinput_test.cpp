@@ -20,14 +20,15 @@ TEST(ImageIoBadInput, UnknownExtensionNamesTheFileAndTheSupportedOnes) {
   const std::string path = folder.file("out.jpg");
   EXPECT_EQ(
       messageOf([&] { writeImage(path, image); }),
-      path + ": error: unknown image format: '.jpg'; the supported extensions are .png, .bmp, .ppm, .gif");
+      path +
+          ": error: unknown image format: '.jpg'; the supported extensions are .png, .bmp, .ppm, .gif, .exr");
   EXPECT_EQ(messageOf([&] { writeImage(folder.file("out"), image); }),
             folder.file("out") +
                 ": error: unknown image format: no extension; the supported extensions are "
-                ".png, .bmp, .ppm, .gif");
+                ".png, .bmp, .ppm, .gif, .exr");
   EXPECT_EQ(messageOf([] { static_cast<void>(imageFormatFromPath("renders.png/out")); }),
             "renders.png/out: error: unknown image format: no extension; the supported extensions are .png, "
-            ".bmp, .ppm, .gif");
+            ".bmp, .ppm, .gif, .exr");
   EXPECT_TRUE(folder.entries().empty());
 }
 

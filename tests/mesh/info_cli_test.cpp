@@ -16,29 +16,33 @@ using test::CommandResult;
 using test::contains;
 using test::runCli;
 
-TEST(InfoCli, TextReport) {
-  const CommandResult result = runCli("info '" + test::mshFixture("square_tri6_v41_bin.msh") + "'");
+// Runs `lancer info ARGUMENTS` on a file that reads, and checks that the report holds every one of `parts`.
+void expectInfoSays(const std::string& arguments, std::initializer_list<std::string_view> parts) {
+  const CommandResult result = runCli("info " + arguments);
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  test::expectContainsAll(result.output,
-                          {
-                              "format:          MSH 4.1 binary",
-                              "nodes:           81",
-                              "32  6-node triangle (type 9)",
-                              "16  3-node line (type 8)",
-                              "faces rendered:  128 (128 triangles, 0 quads)",
-                              "dim 2 tag 1      \"plate\"                  128 faces",
-                              "bounding box:    [0, 0, 0] .. [1, 1, 0]",
-                              "surface area:    1\n",
-                              "shells:          1 (0 closed, 0 closed and consistently oriented)",
-                              "load time:",
-                          });
+  test::expectContainsAll(result.output, parts);
+}
+
+TEST(InfoCli, TextReport) {
+  expectInfoSays(test::quoted(test::mshFixture("square_tri6_v41_bin.msh")),
+                 {
+                     "format:          MSH 4.1 binary",
+                     "nodes:           81",
+                     "32  6-node triangle (type 9)",
+                     "16  3-node line (type 8)",
+                     "faces rendered:  128 (128 triangles, 0 quads)",
+                     "dim 2 tag 1      \"plate\"                  128 faces",
+                     "bounding box:    [0, 0, 0] .. [1, 1, 0]",
+                     "surface area:    1\n",
+                     "shells:          1 (0 closed, 0 closed and consistently oriented)",
+                     "load time:",
+                 });
 }
 
 TEST(InfoCli, TextReportOfAClosedSkinAndUnrenderableElements) {
-  const CommandResult skin = runCli("info '" + test::mshFixture("cube_hex8_v22_bin.msh") + "'");
-  ASSERT_EQ(skin.exitCode, 0) << skin.output;
-  test::expectContainsAll(skin.output, {"volume skin:     54 faces from 27 volume elements",
-                                        "closed, consistently oriented (normals point outward, volume 1)"});
+  expectInfoSays(test::quoted(test::mshFixture("cube_hex8_v22_bin.msh")),
+                 {"volume skin:     54 faces from 27 volume elements",
+                  "closed, consistently oriented (normals point outward, volume 1)"});
   const CommandResult cubic = runCli("info '" + test::mshFixture("square_tri10_v41_ascii.msh") + "'");
   ASSERT_EQ(cubic.exitCode, 0) << cubic.output;
   test::expectContainsAll(
@@ -95,39 +99,30 @@ TEST(InfoCli, MissingFileExitsWithCodeTwo) {
 TEST(InfoCli, CavityWallIsReportedAsSuch) {
   // gmsh's hollow sphere: the tetrahedra's skin faces out of the material, into the cavity inside.
   const std::string path = test::dataFile("render/hollow_sphere.msh");
-  const CommandResult text = runCli("info '" + path + "'");
-  ASSERT_EQ(text.exitCode, 0) << text.output;
-  test::expectContainsAll(text.output, {"shells:          2 (2 closed, 2 closed and consistently oriented)",
-                                        "(normals point outward, volume ",
-                                        "(cavity wall, normals point into the cavity, volume 0."});
-  const CommandResult json = runCli("info --json '" + path + "'");
-  ASSERT_EQ(json.exitCode, 0) << json.output;
-  test::expectContainsAll(json.output, {", \"cavity\": true, \"interface\": false}",
-                                        ", \"cavity\": false, \"interface\": false}"});
+  expectInfoSays(test::quoted(path), {"shells:          2 (2 closed, 2 closed and consistently oriented)",
+                                      "(normals point outward, volume ",
+                                      "(cavity wall, normals point into the cavity, volume 0."});
+  expectInfoSays("--json " + test::quoted(path),
+                 {", \"cavity\": true, \"interface\": false}", ", \"cavity\": false, \"interface\": false}"});
 }
 
 TEST(InfoCli, VolumesListTheirSkinAndInterfaceFacesAndNameTheInterfaces) {
   // tests/data/multimaterial/three_materials.geo: housing around bushing around shaft, meshed together.
   const std::string path = test::dataFile("multimaterial/three_materials_v41.msh");
-  const CommandResult text = runCli("info '" + path + "'");
-  ASSERT_EQ(text.exitCode, 0) << text.output;
-  test::expectContainsAll(text.output,
-                          {
-                              "interfaces:      1004 faces shared by two volumes",
-                              "\"Housing\"                2618 faces (1980 skin, 638 interface)\n",
-                              "\"Bushing\"                1342 faces (338 skin, 1004 interface)\n",
-                              "\"Shaft\"                  722 faces (356 skin, 366 interface)\n",
-                              "  interface \"Housing\" (1) | \"Bushing\" (2): 638 faces\n",
-                              "  interface \"Bushing\" (2) | \"Shaft\" (3): 366 faces\n",
-                          });
-  const CommandResult json = runCli("info --json '" + path + "'");
-  ASSERT_EQ(json.exitCode, 0) << json.output;
-  test::expectContainsAll(
-      json.output, {"\"name\": \"Bushing\", \"faces\": 1342, \"interfaceFaces\": 1004}",
-                    "\"interfaceFaces\": 1004,\n  \"interfaces\": [\n    {\"tags\": [1, 2], "
-                    "\"entities\": [0, 0], \"names\": [\"Housing\", \"Bushing\"], \"faces\": 638},\n    "
-                    "{\"tags\": [2, 3], "
-                    "\"entities\": [0, 0], \"names\": [\"Bushing\", \"Shaft\"], \"faces\": 366}\n  ],"});
+  expectInfoSays(test::quoted(path), {
+                                         "interfaces:      1004 faces shared by two volumes",
+                                         "\"Housing\"                2618 faces (1980 skin, 638 interface)\n",
+                                         "\"Bushing\"                1342 faces (338 skin, 1004 interface)\n",
+                                         "\"Shaft\"                  722 faces (356 skin, 366 interface)\n",
+                                         "  interface \"Housing\" (1) | \"Bushing\" (2): 638 faces\n",
+                                         "  interface \"Bushing\" (2) | \"Shaft\" (3): 366 faces\n",
+                                     });
+  expectInfoSays("--json " + test::quoted(path),
+                 {"\"name\": \"Bushing\", \"faces\": 1342, \"interfaceFaces\": 1004}",
+                  "\"interfaceFaces\": 1004,\n  \"interfaces\": [\n    {\"tags\": [1, 2], "
+                  "\"entities\": [0, 0], \"names\": [\"Housing\", \"Bushing\"], \"faces\": 638},\n    "
+                  "{\"tags\": [2, 3], "
+                  "\"entities\": [0, 0], \"names\": [\"Bushing\", \"Shaft\"], \"faces\": 366}\n  ],"});
 }
 
 // render and animate say what info says about a mesh: faces dropped as degenerate (and element types

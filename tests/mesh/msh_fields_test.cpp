@@ -16,22 +16,30 @@ std::string fieldFixture(const std::string& name) {
   return std::string(LANCER_TEST_DATA_DIR) + "/fields/" + name;
 }
 
+// The fixtures' one field: "temperature", one component, step 0, with x + 2 y of `pointOf(i)` at
+// every item i (a vertex for node data, a face for element data).
+template <typename PointOf>
+void expectXPlus2YField(const Mesh& mesh, bool perElement, std::size_t items, PointOf pointOf) {
+  ASSERT_EQ(mesh.fields.size(), 1u);
+  const MeshField& field = mesh.fields[0];
+  EXPECT_EQ(field.name, "temperature");
+  EXPECT_EQ(field.perElement, perElement);
+  EXPECT_EQ(field.components, 1);
+  EXPECT_EQ(field.step, 0);
+  ASSERT_EQ(field.itemCount(), items);
+  for (std::size_t i = 0; i < items; ++i) {
+    const Vec3d p = pointOf(i);
+    EXPECT_NEAR(field.scalar(i), p.x + 2 * p.y, 1e-5) << (perElement ? "face " : "vertex ") << i;
+  }
+}
+
 class NodeDataTest : public testing::TestWithParam<const char*> {};
 
 TEST_P(NodeDataTest, ValuesLandOnTheirVertices) {
   const Mesh mesh = readMsh(fieldFixture(GetParam()));
-  ASSERT_EQ(mesh.fields.size(), 1u);
-  const MeshField& field = mesh.fields[0];
-  EXPECT_EQ(field.name, "temperature");
-  EXPECT_FALSE(field.perElement);
-  EXPECT_EQ(field.components, 1);
-  EXPECT_EQ(field.step, 0);
-  ASSERT_EQ(field.itemCount(), mesh.positions.size());
   EXPECT_EQ(mesh.positions.size(), 25u);
-  for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
-    const Vec3d p = mesh.worldPosition(v);
-    EXPECT_NEAR(field.scalar(v), p.x + 2 * p.y, 1e-5) << "vertex " << v;
-  }
+  expectXPlus2YField(mesh, false, mesh.positions.size(),
+                     [&](std::size_t v) { return mesh.worldPosition(static_cast<std::uint32_t>(v)); });
 }
 
 INSTANTIATE_TEST_SUITE_P(AllEncodings, NodeDataTest,
@@ -45,16 +53,9 @@ class ElementDataTest : public testing::TestWithParam<const char*> {};
 
 TEST_P(ElementDataTest, EveryFaceGetsItsElementsValue) {
   const Mesh mesh = readMsh(fieldFixture(GetParam()));
-  ASSERT_EQ(mesh.fields.size(), 1u);
-  const MeshField& field = mesh.fields[0];
-  EXPECT_EQ(field.name, "temperature");
-  EXPECT_TRUE(field.perElement);
-  ASSERT_EQ(field.itemCount(), mesh.faceCount());
   ASSERT_EQ(mesh.faceCount(), 32u);
-  for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
-    const Vec3d p = mesh.worldPosition(mesh.faces[f].vertex[2]);
-    EXPECT_NEAR(field.scalar(f), p.x + 2 * p.y, 1e-5) << "face " << f;
-  }
+  expectXPlus2YField(mesh, true, mesh.faceCount(),
+                     [&](std::size_t f) { return mesh.worldPosition(mesh.faces[f].vertex[2]); });
 }
 
 INSTANTIATE_TEST_SUITE_P(AllEncodings, ElementDataTest,

@@ -47,12 +47,17 @@ def test_live_model_is_its_file(session, tmp_path, dim):
     assert np.array_equal(lancer.render(live, width=48, height=36), lancer.render(saved, width=48, height=36))
 
 
-def test_view_node_data_becomes_a_field(session):
+def box_with_height_view():
+    """The meshed box with a view "height" of node data (each node's z), read by from_gmsh."""
     make_box(2)
     tags, coords, _ = gmsh.model.mesh.getNodes()
     view = gmsh.view.add("height")
     gmsh.view.addModelData(view, 0, "box", "NodeData", list(tags), [[z] for z in coords[2::3]])
-    mesh = lancer.from_gmsh()
+    return lancer.from_gmsh()
+
+
+def test_view_node_data_becomes_a_field(session):
+    mesh = box_with_height_view()
     assert mesh.fields == ["height"]
     # The world z of every vertex (float32, as lancer keeps field values).
     assert np.allclose(mesh.field("height")[:, 0], mesh.points[:, 2], atol=1e-5)
@@ -143,11 +148,7 @@ def test_gmsh_is_not_imported_by_import_lancer():
 
 
 def test_a_field_from_gmsh_colours_the_quick_look(session):
-    make_box(2)
-    tags, coords, _ = gmsh.model.mesh.getNodes()
-    view = gmsh.view.add("height")
-    gmsh.view.addModelData(view, 0, "box", "NodeData", list(tags), [[z] for z in coords[2::3]])
-    mesh = lancer.from_gmsh()
+    mesh = box_with_height_view()
     plain = lancer.render(lancer.Scene.quick_look(mesh), width=64, height=48)
     coloured = lancer.render(lancer.Scene.quick_look(mesh, color_by="height", color_map="magma"),
                              width=64, height=48)

@@ -55,12 +55,37 @@ def test_transparent_scene_gives_rgba(tmp_path):
 
 def test_linear_float_is_what_the_bytes_encode():
     mesh = lancer.read_msh(str(BRACKET))
-    linear = lancer.render(mesh, width=40, height=30, dtype="float32")
-    encoded = lancer.render(mesh, width=40, height=30)
+    linear = lancer.render(mesh, width=40, height=30, dtype="float32", encoding="linear")
+    encoded = lancer.render(mesh, width=40, height=30, encoding="linear")
     assert linear.shape == (30, 40, 4) and linear.dtype == np.float32
+    assert not encoded.srgb
     expected = np.round(255 * np.clip(linear[..., :3], 0, 1)).astype(np.uint8)
     assert np.array_equal(expected, np.asarray(encoded))
     assert np.all(linear[..., 3] == 1)
+
+
+def test_uint8_is_srgb_encoded_by_default():
+    mesh = lancer.read_msh(str(BRACKET))
+    linear = np.clip(lancer.render(mesh, width=40, height=30, dtype="float32")[..., :3].astype(np.float64), 0, 1)
+    encoded = lancer.render(mesh, width=40, height=30)
+    assert encoded.srgb
+    srgb = np.where(linear <= 0.0031308, 12.92 * linear, 1.055 * linear ** (1 / 2.4) - 0.055)
+    assert np.max(np.abs(np.round(255 * srgb) - np.asarray(encoded, dtype=np.float64))) <= 1
+
+
+def test_encoding_tonemap_and_denoise_arguments(tmp_path):
+    cli_path = tmp_path / "cli.png"
+    run_cli("render", BRACKET, "-o", cli_path, "--width", 48, "--height", 36, "--tonemap", "aces", "--exposure",
+            1, "--denoise", "--quiet")
+    image = lancer.render(lancer.read_msh(str(BRACKET)), width=48, height=36, tonemap="aces", exposure=1,
+                          denoise=True)
+    assert rendered_bytes(tmp_path, image) == cli_path.read_bytes()
+    with pytest.raises(ValueError, match="tonemap='agx'"):
+        lancer.render(lancer.read_msh(str(BRACKET)), width=8, height=8, tonemap="agx")
+    with pytest.raises(ValueError, match="encoding='gamma'"):
+        lancer.render(lancer.read_msh(str(BRACKET)), width=8, height=8, encoding="gamma")
+    with pytest.raises(ValueError, match="exposure=nan"):
+        lancer.render(lancer.read_msh(str(BRACKET)), width=8, height=8, exposure=float("nan"))
 
 
 def test_repr_png_is_a_png():

@@ -219,7 +219,8 @@ TEST(AnimateCli, AnimatedPngHasOneControlChunkPerFrameAndFrameZeroAsItsDefaultIm
     }
     if (chunk.type == "fcTL" || chunk.type == "fdAT") sequence.push_back(u32(&chunk.data[0]));
   }
-  EXPECT_EQ(order, "IHDR acTL fcTL IDAT fcTL fdAT fcTL fdAT fcTL fdAT IEND ");
+  // sRGB-encoded by default, so marked sRGB.
+  EXPECT_EQ(order, "IHDR sRGB acTL fcTL IDAT fcTL fdAT fcTL fdAT fcTL fdAT IEND ");
   EXPECT_EQ(sequence, (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 6}));
 }
 

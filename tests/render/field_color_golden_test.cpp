@@ -12,7 +12,8 @@ namespace lancer {
 namespace {
 
 TEST(FieldColorGolden, TiltedSquare) {
-  const SceneDescription description = loadScene(test::dataFile("render/field_square.toml"));
+  SceneDescription description = loadScene(test::dataFile("render/field_square.toml"));
+  description.render.srgb = false;  // the golden holds the linear encoding's raw values
   const Scene scene = buildScene(description);
   ASSERT_TRUE(scene.fieldColors);
   EXPECT_EQ(scene.fieldColors->legend.map, ColorMapKind::Magma);

@@ -1,12 +1,14 @@
 // The renderer's packets (primary rays of 4x2 pixels and their shadow rays, Tracer::tracePrimaries)
 // give the image single rays give, byte for byte, on every example scene (clip planes, per-mesh cuts
-// with caps, shadow catcher, glass, mirrors, edges and outlines, both samplers) at 1 and 3 threads.
+// with caps, shadow catcher, glass, mirrors, edges and outlines, both samplers) at 1 and 3 threads;
+// and the default BVH's image is the kd-tree's, byte for byte.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/scene_loader.hpp"
+#include "support/test_images.hpp"
 
 namespace lancer {
 namespace {
@@ -20,17 +22,6 @@ Image render(const SceneDescription& description, const Scene& scene, const Acce
   return Renderer(scene, accelerator, camera, description.render).renderImage(options, stats);
 }
 
-int differingPixels(const Image& a, const Image& b) {
-  int count = 0;
-  for (int y = 0; y < a.height(); ++y) {
-    for (int x = 0; x < a.width(); ++x) {
-      const Rgba p = a.at(x, y), q = b.at(x, y);
-      count += !(p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a);
-    }
-  }
-  return count;
-}
-
 class PacketRenderIdentity : public testing::TestWithParam<const char*> {};
 
 TEST_P(PacketRenderIdentity, PacketsAndSingleRaysRenderTheSameBytes) {
@@ -41,16 +32,22 @@ TEST_P(PacketRenderIdentity, PacketsAndSingleRaysRenderTheSameBytes) {
   description.render.height = std::max(1, 133 * height / width) | 1;
   const Scene scene = buildScene(description);
   const Accelerator accelerator =
-      Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah);
+      Accelerator::build(scene.geometry.positions, scene.geometry.faces, kDefaultAccel);
   RenderStats singleStats, packetStats;
   const Image single = render(description, scene, accelerator, false, 1, &singleStats);
   const Image packets = render(description, scene, accelerator, true, 1, &packetStats);
   ASSERT_EQ(single.width(), packets.width());
   ASSERT_EQ(single.height(), packets.height());
-  EXPECT_EQ(differingPixels(single, packets), 0);
+  EXPECT_EQ(test::differingPixels(single, packets), 0);
   EXPECT_EQ(singleStats.rays, packetStats.rays) << "the same rays, counted alike";
   EXPECT_EQ(singleStats.samplesPerPixel, packetStats.samplesPerPixel);
-  EXPECT_EQ(differingPixels(single, render(description, scene, accelerator, true, 3)), 0) << "3 threads";
+  EXPECT_EQ(test::differingPixels(single, render(description, scene, accelerator, true, 3)), 0) << "3 threads";
+  // Every accelerator renders the example's bytes (the BVH is the default, the kd-tree the seed's).
+  const Accelerator kdTree =
+      Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah);
+  EXPECT_EQ(test::differingPixels(single, render(description, scene, kdTree, true, 2)), 0) << "kd-tree, packets";
+  EXPECT_EQ(test::differingPixels(single, render(description, scene, kdTree, false, 1)), 0)
+      << "kd-tree, single rays";
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, PacketRenderIdentity,

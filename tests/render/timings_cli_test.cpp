@@ -1,5 +1,5 @@
 // `lancer render --timings` and `lancer animate --timings`: one line naming every preparation stage
-// in the order it ran (read, orient, normals, scene, kd build) with its seconds; nothing without it.
+// in the order it ran (read, orient, normals, scene, accel build) with its seconds; nothing without it.
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -14,7 +14,7 @@ namespace {
 using test::quoted;
 
 const std::regex kTimingsLine(
-    R"(timings: read [0-9.]+ s, orient [0-9.]+ s, normals [0-9.]+ s, scene [0-9.]+ s, kd build [0-9.]+ s)");
+    R"(timings: read [0-9.]+ s, orient [0-9.]+ s, normals [0-9.]+ s, scene [0-9.]+ s, accel build [0-9.]+ s)");
 
 TEST(TimingsCli, RenderOfAMeshAndOfASceneNameEveryStage) {
   const test::ScratchFolder folder;

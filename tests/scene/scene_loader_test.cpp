@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <tuple>
 
 #include "lancer/scene/scene_loader.hpp"
 
@@ -23,17 +24,31 @@ void expectVec(const Vec3d& actual, double x, double y, double z) {
   EXPECT_DOUBLE_EQ(actual.z, z);
 }
 
+// The fields the tests below check, as one comparable value (the loader stores what the file wrote,
+// converted once to float, so the values compare exactly).
+auto renderFields(const RenderSettings& r) {
+  return std::tie(r.width, r.height, r.samples, r.maxDepth, r.sampler, r.shading, r.background,
+                  r.transparentBackground, r.srgb, r.output);
+}
+auto materialFields(const Material& m) {
+  return std::tie(m.name, m.ka, m.kd, m.ks, m.shininess, m.reflectivity, m.transparency, m.ior, m.fresnel,
+                  m.absorption);
+}
+void expectRender(const RenderSettings& actual, const RenderSettings& expected) {
+  EXPECT_EQ(renderFields(actual), renderFields(expected));
+}
+void expectMaterial(const Material& actual, const Material& expected) {
+  EXPECT_EQ(materialFields(actual), materialFields(expected));
+}
+
+// The built-in material (docs/scene_file.md's defaults): neither reflective nor transparent.
 void expectDefaultMaterial(const Material& material) {
-  EXPECT_EQ(material.name, "default");
-  expectVec(material.ka, 0.2f, 0.2f, 0.2f);
-  expectVec(material.kd, 0.7f, 0.7f, 0.7f);
-  expectVec(material.ks, 0.3f, 0.3f, 0.3f);
-  EXPECT_FLOAT_EQ(material.shininess, 32);
-  expectVec(material.reflectivity, 0, 0, 0);
-  EXPECT_FLOAT_EQ(material.transparency, 0);
+  expectMaterial(material, Material{.name = "default",
+                                    .ka = {0.2f, 0.2f, 0.2f},
+                                    .kd = {0.7f, 0.7f, 0.7f},
+                                    .ks = {0.3f, 0.3f, 0.3f},
+                                    .shininess = 32});
   EXPECT_FLOAT_EQ(material.ior, 1.5f);
-  EXPECT_FALSE(material.fresnel);
-  expectVec(material.absorption, 0, 0, 0);
 }
 
 TEST(SceneLoader, FullSceneSetsEveryField) {
@@ -41,17 +56,15 @@ TEST(SceneLoader, FullSceneSetsEveryField) {
   const SceneDescription scene = loadScene(path);
   EXPECT_EQ(scene.path, path);
 
-  const RenderSettings& render = scene.render;
-  EXPECT_EQ(render.width, 320);
-  EXPECT_EQ(render.height, 240);
-  EXPECT_EQ(render.samples, 9);
-  EXPECT_EQ(render.maxDepth, 7);
-  EXPECT_EQ(render.sampler, SamplerKind::Stratified);
-  EXPECT_EQ(render.shading, ShadingMode::Gouraud);
-  expectVec(render.background, 0.25f, 0.5f, 1.0f);
-  EXPECT_FALSE(render.transparentBackground);
-  EXPECT_TRUE(render.srgb);
-  EXPECT_EQ(render.output, kDataDir + "/renders/full.png");
+  expectRender(scene.render, RenderSettings{.width = 320,
+                                            .height = 240,
+                                            .samples = 9,
+                                            .maxDepth = 7,
+                                            .sampler = SamplerKind::Stratified,
+                                            .shading = ShadingMode::Gouraud,
+                                            .background = {0.25f, 0.5f, 1.0f},
+                                            .output = kDataDir + "/renders/full.png",
+                                            .srgb = true});
 
   const CameraSettings& camera = scene.camera;
   EXPECT_EQ(camera.projection, Projection::Orthographic);
@@ -77,17 +90,16 @@ TEST(SceneLoader, FullSceneSetsEveryField) {
   // The built-in default first, then the file's materials in file order (not alphabetical).
   ASSERT_EQ(scene.materials.size(), 3u);
   expectDefaultMaterial(scene.materials[0]);
-  const Material& steel = scene.materials[1];
-  EXPECT_EQ(steel.name, "steel");
-  expectVec(steel.ka, 0.2f, 0.25f, 0.3f);
-  expectVec(steel.kd, 0.5f, 0.5f, 0.55f);
-  expectVec(steel.ks, 0.8f, 0.8f, 0.8f);
-  EXPECT_FLOAT_EQ(steel.shininess, 50);
-  expectVec(steel.reflectivity, 0.1f, 0.2f, 0.3f);
-  EXPECT_FLOAT_EQ(steel.transparency, 0.25f);
-  EXPECT_FLOAT_EQ(steel.ior, 1.33f);
-  EXPECT_TRUE(steel.fresnel);
-  expectVec(steel.absorption, 0.5f, 0.25f, 0);
+  expectMaterial(scene.materials[1], Material{.name = "steel",
+                                              .ka = {0.2f, 0.25f, 0.3f},
+                                              .kd = {0.5f, 0.5f, 0.55f},
+                                              .ks = {0.8f, 0.8f, 0.8f},
+                                              .shininess = 50,
+                                              .reflectivity = {0.1f, 0.2f, 0.3f},
+                                              .transparency = 0.25f,
+                                              .ior = 1.33f,
+                                              .fresnel = true,
+                                              .absorption = {0.5f, 0.25f, 0}});
   const Material& glass = scene.materials[2];
   EXPECT_EQ(glass.name, "glass");
   expectVec(glass.reflectivity, 0.1f, 0.1f, 0.1f);  // a number means the same for every channel
@@ -144,17 +156,15 @@ TEST(SceneLoader, FullSceneSetsEveryField) {
 TEST(SceneLoader, EmptySceneTakesEveryDefault) {
   const SceneDescription scene = parseScene("", "scene.toml");
   EXPECT_EQ(scene.path, "scene.toml");
-  const RenderSettings& render = scene.render;
-  EXPECT_EQ(render.width, 800);
-  EXPECT_EQ(render.height, 600);
-  EXPECT_EQ(render.samples, 1);
-  EXPECT_EQ(render.maxDepth, 5);
-  EXPECT_EQ(render.sampler, SamplerKind::Regular);
-  EXPECT_EQ(render.shading, ShadingMode::Phong);
-  expectVec(render.background, 0, 0, 0);
-  EXPECT_FALSE(render.transparentBackground);
-  EXPECT_FALSE(render.srgb);
-  EXPECT_EQ(render.output, "");
+  expectRender(scene.render, RenderSettings{.width = 800,
+                                            .height = 600,
+                                            .samples = 1,
+                                            .maxDepth = 5,
+                                            .sampler = SamplerKind::Regular,
+                                            .shading = ShadingMode::Phong,
+                                            .background = {0, 0, 0},
+                                            .output = "",
+                                            .srgb = true});
   EXPECT_EQ(scene.camera.projection, Projection::Perspective);
   EXPECT_FALSE(scene.camera.position);
   EXPECT_FALSE(scene.camera.lookAt);

@@ -153,6 +153,22 @@ struct TestRay {
   float tMax = std::numeric_limits<float>::infinity();
 };
 
+// adversarialSoup(seed 4) inside a 4x4x4 grid box scaled to a quarter, so the tree has split
+// planes through the coincident faces.
+inline Soup adversarialSoupInGrid() {
+  std::mt19937 rng(4);
+  Soup soup = adversarialSoup(rng);
+  const Soup grid = gridBox(4);
+  for (MeshFace f : grid.faces) {
+    for (std::uint32_t& v : f.vertex) {
+      if (v != kNoVertex) v += static_cast<std::uint32_t>(soup.positions.size());
+    }
+    soup.faces.push_back(f);
+  }
+  for (const Vec3& p : grid.positions) soup.positions.push_back(p * 0.25f);
+  return soup;
+}
+
 inline Vec3 corner(const Soup& soup, std::uint32_t face, int c) {
   return soup.positions[soup.faces[face].vertex[c]];
 }
@@ -251,6 +267,29 @@ inline std::vector<TestRay> adversarialRays(const Soup& soup, const KdTree& tree
         r.tMin = i % 16 < 8 ? 0.0f : 1e-4f;
         rays.push_back(r);
         break;
+      }
+    }
+  }
+  return rays;
+}
+
+// Rays from near the centre of a closed mesh to each corner of each face and to the middle and a
+// quarter of each edge, each from its own origin (the centre jittered by up to 5% of the box, fixed
+// seed): the rays that slip through a test that is not watertight.
+inline std::vector<Ray> raysAtCornersAndEdges(const std::vector<Vec3>& positions,
+                                              const std::vector<MeshFace>& faces) {
+  Aabb box;
+  for (const Vec3& p : positions) box.extend(p);
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<float> jitter(-0.05f, 0.05f);
+  std::vector<Ray> rays;
+  for (const MeshFace& face : faces) {
+    for (int c = 0; c < face.cornerCount(); ++c) {
+      const Vec3 a = positions[face.vertex[c]];
+      const Vec3 b = positions[face.vertex[(c + 1) % face.cornerCount()]];
+      for (const float s : {0.0f, 0.5f, 0.25f}) {
+        const Vec3 origin = box.center() + box.extent() * Vec3{jitter(rng), jitter(rng), jitter(rng)};
+        rays.emplace_back(origin, a + (b - a) * s - origin);
       }
     }
   }

@@ -58,4 +58,15 @@ std::vector<std::uint8_t> pngRgb8(const std::string& path) {
   return encodeImage8(readPng(path), TransferCurve::Linear, 3);
 }
 
+int differingPixels(const Image& a, const Image& b) {
+  int count = 0;
+  for (int y = 0; y < a.height(); ++y) {
+    for (int x = 0; x < a.width(); ++x) {
+      const Rgba p = a.at(x, y), q = b.at(x, y);
+      count += !(p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a);
+    }
+  }
+  return count;
+}
+
 }  // namespace lancer::test

@@ -27,6 +27,9 @@ Image shadedSphere(int width, int height, float phase);
 // file is about 3 bytes per pixel.
 Image noise(int width, int height);
 
+// How many pixels of two images of one size differ in any channel (0: the same image, bit for bit).
+int differingPixels(const Image& a, const Image& b);
+
 // A PNG as interleaved 8-bit RGB: exactly what lancer stored (linear curve, no alpha).
 std::vector<std::uint8_t> pngRgb8(const std::string& path);
 

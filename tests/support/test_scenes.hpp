@@ -40,12 +40,12 @@ Material ambientOnlyMaterial(const char* name, Vec3 ka);
 Material matteMaterial(const char* name, Vec3 ka, Vec3 kd);
 
 // Renders with the given accelerator kind and thread count.
-Image renderScene(const SceneDescription& description, const Scene& scene,
-                  AccelKind accel = AccelKind::KdTreeSah, int threads = 0, RenderStats* stats = nullptr);
+Image renderScene(const SceneDescription& description, const Scene& scene, AccelKind accel = kDefaultAccel,
+                  int threads = 0, RenderStats* stats = nullptr);
 // Builds the scene from in-memory meshes (one per description.meshes entry) and renders it.
 Image renderMeshes(const SceneDescription& description, std::vector<Mesh> meshes,
-                   AccelKind accel = AccelKind::KdTreeSah, int threads = 0);
-// Reads the description's meshes, builds its scene and renders it (kd-tree, all cores).
+                   AccelKind accel = kDefaultAccel, int threads = 0);
+// Reads the description's meshes, builds its scene and renders it (default accelerator, all cores).
 Image renderScene(const SceneDescription& description);
 
 // For the tests that guard a golden: renders `description`, then each of `changes` applied to it (a

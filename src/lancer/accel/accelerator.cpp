@@ -24,11 +24,13 @@ std::string_view accelKindName(AccelKind kind) {
 }
 
 bool Accelerator::intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const {
+  if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->intersect(ray, tMin, tMax, filter, hit);
   if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(ray, tMin, tMax, filter, hit);
   return std::get<NaiveAccel>(impl_).intersect(ray, tMin, tMax, filter, hit);
 }
 
 bool Accelerator::occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const {
+  if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->occluded(ray, tMin, tMax, filter);
   if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(ray, tMin, tMax, filter);
   return std::get<NaiveAccel>(impl_).occluded(ray, tMin, tMax, filter);
 }
@@ -49,6 +51,7 @@ std::uint32_t laneByLane(std::uint32_t active, Query&& query) {
 
 std::uint32_t Accelerator::intersect(const RayPacket& packet, std::uint32_t active,
                                      std::span<Hit, kPacketSize> hits) const {
+  if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->intersect(packet, active, hits);
   if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(packet, active, hits);
   const NaiveAccel& naive = std::get<NaiveAccel>(impl_);
   return laneByLane(
@@ -56,6 +59,7 @@ std::uint32_t Accelerator::intersect(const RayPacket& packet, std::uint32_t acti
 }
 
 std::uint32_t Accelerator::occluded(const RayPacket& packet, std::uint32_t active) const {
+  if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->occluded(packet, active);
   if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(packet, active);
   const NaiveAccel& naive = std::get<NaiveAccel>(impl_);
   return laneByLane(active,
@@ -64,6 +68,7 @@ std::uint32_t Accelerator::occluded(const RayPacket& packet, std::uint32_t activ
 
 std::uint32_t Accelerator::intersect(const RayPacket& packet, std::uint32_t active, const HitFilter& filter,
                                      std::span<Hit, kPacketSize> hits) const {
+  if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->intersect(packet, active, filter, hits);
   if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(packet, active, filter, hits);
   const NaiveAccel& naive = std::get<NaiveAccel>(impl_);
   return laneByLane(active, [&](int i) {
@@ -73,6 +78,7 @@ std::uint32_t Accelerator::intersect(const RayPacket& packet, std::uint32_t acti
 
 std::uint32_t Accelerator::occluded(const RayPacket& packet, std::uint32_t active,
                                     const HitFilter& filter) const {
+  if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->occluded(packet, active, filter);
   if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(packet, active, filter);
   const NaiveAccel& naive = std::get<NaiveAccel>(impl_);
   return laneByLane(
@@ -82,6 +88,13 @@ std::uint32_t Accelerator::occluded(const RayPacket& packet, std::uint32_t activ
 Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                                AccelKind kind, const KdBuildOptions& options) {
   switch (kind) {
+    case AccelKind::Bvh: {
+      BvhBuildOptions bvhOptions;
+      bvhOptions.threads = options.threads;
+      Bvh bvh = Bvh::build(positions, faces, bvhOptions);
+      AccelStats stats = bvh.stats();
+      return Accelerator(std::move(bvh), kind, std::move(stats));
+    }
     case AccelKind::KdTreeSah: {
       KdTree tree = KdTree::buildSah(positions, faces, options);
       AccelStats stats = tree.stats();
@@ -113,6 +126,20 @@ Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const 
   stats.bytes = naive.memoryBytes();
   stats.buildSeconds = stopwatch.seconds();
   return Accelerator(std::move(naive), kind, std::move(stats));
+}
+
+bool Accelerator::update(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                         const KdBuildOptions& options) {
+  if (Bvh* bvh = std::get_if<Bvh>(&impl_)) {
+    const Stopwatch stopwatch;
+    if (bvh->refit(positions, faces, options.threads) && !bvh->rebuildPays()) {
+      stats_ = bvh->stats();
+      stats_.buildSeconds = stopwatch.seconds();
+      return true;
+    }
+  }
+  *this = build(positions, faces, kind_, options);
+  return false;
 }
 
 }  // namespace lancer

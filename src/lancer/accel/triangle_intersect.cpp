@@ -16,4 +16,12 @@ std::vector<PackedTriangle> packTriangles(std::span<const Vec3> positions, std::
   return triangles;
 }
 
+bool isSliverTriangle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  constexpr double kSliverSine = 1e-4;
+  const Vec3d e1 = toDouble(b) - toDouble(a);
+  const Vec3d e2 = toDouble(c) - toDouble(a);
+  const Vec3d n = cross(e1, e2);
+  return dot(n, n) <= kSliverSine * kSliverSine * dot(e1, e1) * dot(e2, e2);
+}
+
 }  // namespace lancer

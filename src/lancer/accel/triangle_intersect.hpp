@@ -26,6 +26,12 @@ struct PackedTriangle {
 
 std::vector<PackedTriangle> packTriangles(std::span<const Vec3> positions, std::span<const MeshFace> faces);
 
+// Whether the corners are collinear to within a sine of 1e-4 of the corner angle: the determinant (the
+// sum of the edge functions) is then rounding noise, so a computed hit may lie anywhere on the ray, far
+// outside any box around the triangle. The accelerators test such slivers for every ray, outside their
+// trees, so that their answers still equal brute force.
+bool isSliverTriangle(const Vec3& a, const Vec3& b, const Vec3& c);
+
 // A hit of one triangle: the ray parameter (negative when there is none) and the barycentric
 // weights of corners v1 and v2 (v0's is 1 - b1 - b2), as the test computes them anyway.
 struct TriangleHit {

@@ -2,6 +2,7 @@
 // results meet: one process renders them all in order (LocalDistribution), or the ranks of an MPI job
 // share them and rank 0 receives them in order (mpi_distribution.hpp). Either way the items reach
 // `deliver` in order 0, 1, 2, ..., so the output is the same bytes.
+// Map: docs/architecture.md (the path of a ray through the modules).
 #pragma once
 
 #include <atomic>

@@ -33,6 +33,7 @@ AnimationWriter::AnimationWriter(const std::string& output, int width, int heigh
     : pattern_(parseFramePattern(output)), still_(options.still) {
   const ImageFormat format = imageFormatFromPath(pattern_ ? pattern_->name(0) : output);
   const bool animatedGif = !pattern_ && format == ImageFormat::Gif;
+  exrFrames_ = pattern_ && format == ImageFormat::Exr;
   if (!animatedGif && !options.dither.empty())
     throw InputError(SourceLocation{"--dither"}, "--dither applies to an animated .gif only");
   if (!animatedGif && !options.palette.empty())
@@ -40,6 +41,10 @@ AnimationWriter::AnimationWriter(const std::string& output, int width, int heigh
   if (pattern_ && options.loop)
     throw InputError(SourceLocation{"--loop"},
                      "--loop applies to an animated .gif or .png, not to numbered frames");
+  if (still_.bitDepth != 8 && !(pattern_ && format == ImageFormat::Png))
+    throw InputError(SourceLocation{"--bit-depth"},
+                     "16-bit samples are written to numbered PNG frames only (-o frame_%04d.png); GIF and "
+                     "animated PNG hold 8 bits");
   const int loop = options.loop.value_or(kGifLoopForever);
   if (pattern_) {
     if (checkOnly) return;
@@ -74,7 +79,7 @@ AnimationWriter::AnimationWriter(const std::string& output, int width, int heigh
     throw InputError(
         SourceLocation{output},
         "an animation is written as .gif, as an animated .png, or as numbered frames with %04d in the "
-        "name (frame_%04d.png, .bmp or .ppm)");
+        "name (frame_%04d.png, .bmp, .ppm or .exr)");
   }
 }
 

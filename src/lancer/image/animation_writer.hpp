@@ -33,6 +33,8 @@ class AnimationWriter {
 
   // Numbered frames (a %d in the name), else nullopt.
   const std::optional<FramePattern>& pattern() const { return pattern_; }
+  // Numbered .exr frames: they take linear radiance, not display values.
+  bool takesRadiance() const { return exrFrames_; }
 
   // Frames come in order; numbered frames may be any subset (a job-array shard's).
   void addFrame(int frame, const Image& image);
@@ -48,6 +50,7 @@ class AnimationWriter {
   std::optional<ApngWriter> apng_;
   StagedFrames frames_;
   ImageWriteOptions still_;
+  bool exrFrames_ = false;
   std::string frameRateNote_;
 };
 

@@ -56,6 +56,7 @@ bool completeFrameExists(const std::string& path, int width, int height) {
       return size ==
              54 + ((3 * static_cast<std::uint64_t>(width) + 3) / 4 * 4) * static_cast<std::uint64_t>(height);
     case ImageFormat::Gif:
+    case ImageFormat::Exr:
       return false;
   }
   return false;

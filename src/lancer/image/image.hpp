@@ -1,5 +1,6 @@
 // Images of linear floating-point RGBA as the renderer produces them, before any 8-bit encoding.
 // Rows run top to bottom (y = 0 is the top row), pixels left to right, as in PNG, PPM and GIF.
+// Map: docs/architecture.md (the path of a ray through the modules).
 #pragma once
 
 #include <cstddef>

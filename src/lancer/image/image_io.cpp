@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "lancer/image/exr_io.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
@@ -20,6 +21,7 @@ ImageFormat imageFormatFromPath(const std::string& path) {
   if (extension == ".bmp") return ImageFormat::Bmp;
   if (extension == ".ppm") return ImageFormat::Ppm;
   if (extension == ".gif") return ImageFormat::Gif;
+  if (extension == ".exr") return ImageFormat::Exr;
   const std::string found = extension.empty() ? "no extension" : fmt::format("'{}'", extension);
   throw InputError(
       SourceLocation{path},
@@ -50,8 +52,19 @@ void writeImage8(const std::string& path, int width, int height, int channels, T
   writeImage(path, image, options);
 }
 
+void requireBitDepth(const std::string& path, ImageFormat format, int bitDepth) {
+  if (format == ImageFormat::Exr) return;  // always 32-bit float
+  if (bitDepth == 8 || (bitDepth == 16 && format == ImageFormat::Png)) return;
+  if (bitDepth == 16)
+    throw InputError(SourceLocation{path},
+                     "16-bit samples are written to PNG only: give -o NAME.png, or leave --bit-depth at 8");
+  throw InputError(SourceLocation{path}, fmt::format("bit depth {} is not supported: use 8 or 16", bitDepth));
+}
+
 void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options) {
-  switch (imageFormatFromPath(path)) {
+  const ImageFormat format = imageFormatFromPath(path);
+  requireBitDepth(path, format, options.bitDepth);
+  switch (format) {
     case ImageFormat::Png:
       writePng(path, image, options);
       return;
@@ -71,6 +84,9 @@ void writeImage(const std::string& path, const Image& image, const ImageWriteOpt
       writer.finish();
       return;
     }
+    case ImageFormat::Exr:
+      writeExr(path, image);  // linear radiance: the curve does not apply
+      return;
   }
 }
 

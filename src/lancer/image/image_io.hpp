@@ -1,5 +1,6 @@
-// Reading and writing still images: PNG (libpng), BMP and PPM (written by lancer), and a single-frame
-// GIF; the format follows the file extension. Every write is atomic (see atomic_file.hpp).
+// Reading and writing still images: PNG (libpng), BMP and PPM (written by lancer), a single-frame
+// GIF and OpenEXR (exr_io.hpp); the format follows the file extension. Every write is atomic (see
+// atomic_file.hpp).
 #pragma once
 
 #include <cstdint>
@@ -12,7 +13,7 @@
 
 namespace lancer {
 
-enum class ImageFormat { Png, Bmp, Ppm, Gif };
+enum class ImageFormat { Png, Bmp, Ppm, Gif, Exr };
 
 // "Auto" stores alpha only when some pixel is not opaque; PNG is the only format with alpha.
 enum class AlphaChannel { Auto, Always, Never };
@@ -21,13 +22,17 @@ struct ImageWriteOptions {
   TransferCurve curve = TransferCurve::Linear;
   AlphaChannel alpha = AlphaChannel::Auto;
   Dither dither = Dither::Ordered;  // .gif only (256 colours; see GifOptions)
+  int bitDepth = 8;                 // 8, or 16 for PNG (other formats refuse 16 with an InputError)
 };
 
-// The extensions writeImage accepts, for messages and --help: ".png, .bmp, .ppm, .gif".
-inline constexpr const char* kImageExtensions = ".png, .bmp, .ppm, .gif";
+// The extensions writeImage accepts, for messages and --help: ".png, .bmp, .ppm, .gif, .exr".
+inline constexpr const char* kImageExtensions = ".png, .bmp, .ppm, .gif, .exr";
 
 // By extension, case-insensitive. Throws InputError naming the file and the supported extensions.
 ImageFormat imageFormatFromPath(const std::string& path);
+
+// Throws InputError naming `path` unless `bitDepth` is 8, or 16 for a PNG.
+void requireBitDepth(const std::string& path, ImageFormat format, int bitDepth);
 
 // Writes `image` in the format its extension names; throws InputError on a bad path or I/O failure.
 void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options = {});
@@ -37,6 +42,9 @@ void writePng(const std::string& path, const Image& image, const ImageWriteOptio
 // `srgbChunk` marks them as sRGB-encoded (what writePng does for TransferCurve::Srgb).
 void writePng8(const std::string& path, int width, int height, int channels, bool srgbChunk,
                const std::uint8_t* samples);
+// A PNG of 8- or 16-bit samples (16: two bytes each, big-endian, as PNG stores them).
+void writePngSamples(const std::string& path, int width, int height, int channels, bool srgbChunk,
+                     int bitDepth, const std::uint8_t* samples);
 // Any format by extension from 8-bit samples encoded with `curve`: exactly the bytes writeImage writes
 // for the image they came from (with AlphaChannel::Always for 4 channels, Never for 3).
 void writeImage8(const std::string& path, int width, int height, int channels, TransferCurve curve,
@@ -61,5 +69,7 @@ struct PngDescription {
 // oversized (> 2^26 pixels) files.
 Image readPng(const std::string& path, TransferCurve curve = TransferCurve::Linear,
               PngDescription* description = nullptr);
+// The same with every sample of 16 bits kept (8-bit files widened): v / 65535 decoded with `curve`.
+Image readPng16(const std::string& path, TransferCurve curve = TransferCurve::Linear);
 
 }  // namespace lancer

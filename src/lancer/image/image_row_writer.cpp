@@ -11,11 +11,14 @@
 namespace lancer {
 namespace {
 
-ImageFormat streamedFormat(const std::string& path) {
+ImageFormat streamedFormat(const std::string& path, const ImageWriteOptions& options) {
   const ImageFormat format = imageFormatFromPath(path);
+  requireBitDepth(path, format, options.bitDepth);
   if (!ImageRowWriter::streams(format))
     throw InputError(SourceLocation{path},
-                     "a GIF cannot be written row by row (its palette needs every pixel)");
+                     format == ImageFormat::Gif
+                         ? "a GIF cannot be written row by row (its palette needs every pixel)"
+                         : "an EXR is written whole, not row by row");
   return format;
 }
 
@@ -29,18 +32,21 @@ int fileChannels(ImageFormat format, const ImageWriteOptions& options) {
 
 ImageRowWriter::ImageRowWriter(const std::string& path, int width, int height,
                                const ImageWriteOptions& options)
-    : format_(streamedFormat(path)),
+    : format_(streamedFormat(path, options)),
       file_(path),
       width_(width),
       height_(height),
       curve_(options.curve),
-      channels_(fileChannels(format_, options)) {
+      channels_(fileChannels(format_, options)),
+      bitDepth_(options.bitDepth) {
   if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
     throw std::invalid_argument(fmt::format("ImageRowWriter: bad size {}x{}", width, height));
   switch (format_) {
     case ImageFormat::Png:
-      encoded_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(channels_));
-      png_ = std::make_unique<PngRowEncoder>(file_, width, height, channels_, curve_ == TransferCurve::Srgb);
+      encoded_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(channels_) *
+                      static_cast<std::size_t>(bitDepth_ / 8));
+      png_ = std::make_unique<PngRowEncoder>(file_, width, height, channels_, curve_ == TransferCurve::Srgb,
+                                             bitDepth_);
       break;
     case ImageFormat::Bmp: {
       std::vector<std::uint8_t> header;
@@ -61,6 +67,7 @@ ImageRowWriter::ImageRowWriter(const std::string& path, int width, int height,
       break;
     }
     case ImageFormat::Gif:
+    case ImageFormat::Exr:
       break;  // refused by streamedFormat
   }
   file_.throwIfFailed();
@@ -78,7 +85,10 @@ void ImageRowWriter::writeRow(std::span<const Rgba> row) {
                                             rowsWritten_, row.size(), width_, height_));
   switch (format_) {
     case ImageFormat::Png:
-      encodeRow8(row, curve_, channels_, encoded_.data());
+      if (bitDepth_ == 16)
+        encodeRow16(row, curve_, channels_, encoded_.data());
+      else
+        encodeRow8(row, curve_, channels_, encoded_.data());
       png_->writeRow(encoded_.data());
       break;
     case ImageFormat::Bmp: {
@@ -94,6 +104,7 @@ void ImageRowWriter::writeRow(std::span<const Rgba> row) {
       file_.write(encoded_.data(), encoded_.size());
       break;
     case ImageFormat::Gif:
+    case ImageFormat::Exr:
       break;
   }
   file_.throwIfFailed();

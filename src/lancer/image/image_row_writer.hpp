@@ -20,8 +20,8 @@ class PngRowEncoder;
 class ImageRowWriter {
  public:
   // True for the formats that can be written row by row: PNG, BMP, PPM (not GIF, whose palette
-  // needs every pixel first).
-  static bool streams(ImageFormat format) { return format != ImageFormat::Gif; }
+  // needs every pixel first, nor EXR, written whole with its layers).
+  static bool streams(ImageFormat format) { return format != ImageFormat::Gif && format != ImageFormat::Exr; }
 
   // Creates the temporary file and writes the header now, so a bad path fails before rendering.
   // `options.alpha` must be Always or Never (Auto would need every pixel; std::invalid_argument).
@@ -48,6 +48,7 @@ class ImageRowWriter {
   int width_, height_;
   TransferCurve curve_;
   int channels_;  // in the file: 3, or 4 for PNG with alpha
+  int bitDepth_;  // 8, or 16 for PNG
   std::unique_ptr<PngRowEncoder> png_;
   std::uint64_t bmpPixelsOffset_ = 0;  // BMP: where the bottom row starts
   std::vector<std::uint8_t> encoded_;  // one row in the file's layout

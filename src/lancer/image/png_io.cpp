@@ -43,8 +43,9 @@ void onPngFlush(png_structp) {}
 
 // The header chunks, shared by the whole-image and the row-by-row writers so both give the same bytes.
 // Called between setjmp and the last libpng call.
-void writePngHeader(png_structp png, png_infop info, int width, int height, int channels, bool srgbChunk) {
-  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
+void writePngHeader(png_structp png, png_infop info, int width, int height, int channels, bool srgbChunk,
+                    int bitDepth) {
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), bitDepth,
                channels == 4 ? PNG_COLOR_TYPE_RGBA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   if (srgbChunk) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
@@ -52,7 +53,7 @@ void writePngHeader(png_structp png, png_infop info, int width, int height, int 
 }
 
 // Returns false with error->text set when libpng fails (a failed write leaves the reason in `file`).
-bool encodePng(AtomicFileWriter* file, int width, int height, int channels, bool srgbChunk,
+bool encodePng(AtomicFileWriter* file, int width, int height, int channels, bool srgbChunk, int bitDepth,
                const std::uint8_t* samples, PngErrorText* error) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, error->text, onPngError, onPngWarning);
   if (png == nullptr) return false;
@@ -66,8 +67,9 @@ bool encodePng(AtomicFileWriter* file, int width, int height, int channels, bool
     return false;
   }
   png_set_write_fn(png, file, onPngWrite, onPngFlush);
-  writePngHeader(png, info, width, height, channels, srgbChunk);
-  const std::size_t stride = static_cast<std::size_t>(width) * static_cast<std::size_t>(channels);
+  writePngHeader(png, info, width, height, channels, srgbChunk, bitDepth);
+  const std::size_t stride = static_cast<std::size_t>(width) * static_cast<std::size_t>(channels) *
+                             static_cast<std::size_t>(bitDepth / 8);
   for (int y = 0; y < height; ++y) {
     png_write_row(png, samples + stride * static_cast<std::size_t>(y));
   }
@@ -81,8 +83,10 @@ struct PngSize {
   bool alpha = false, srgb = false;
 };
 
-// Decodes to 8-bit RGBA in `pixels`. Returns false with error->text on failure.
-bool decodePng(std::FILE* stream, std::vector<std::uint8_t>* pixels, PngSize* size, PngErrorText* error) {
+// Decodes to RGBA of 8-bit samples, or with `keep16` of 16-bit samples in the host's byte order (8-bit
+// files widened, v * 257). Returns false with error->text on failure.
+bool decodePng(std::FILE* stream, bool keep16, std::vector<std::uint8_t>* pixels, PngSize* size,
+               PngErrorText* error) {
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, error->text, onPngError, onPngWarning);
   if (png == nullptr) return false;
   png_infop info = png_create_info_struct(png);
@@ -109,12 +113,17 @@ bool decodePng(std::FILE* stream, std::vector<std::uint8_t>* pixels, PngSize* si
     return false;
   }
   png_set_expand(png);  // palette -> RGB, grey < 8 bits -> 8 bits, tRNS -> alpha
-  png_set_strip_16(png);
+  if (keep16) {
+    png_set_expand_16(png);
+    png_set_swap(png);  // PNG stores big-endian samples
+  } else {
+    png_set_strip_16(png);
+  }
   png_set_gray_to_rgb(png);
-  png_set_add_alpha(png, 0xff, PNG_FILLER_AFTER);
+  png_set_add_alpha(png, keep16 ? 0xffff : 0xff, PNG_FILLER_AFTER);
   const int passes = png_set_interlace_handling(png);
   png_read_update_info(png, info);
-  const std::size_t stride = static_cast<std::size_t>(size->width) * 4;
+  const std::size_t stride = static_cast<std::size_t>(size->width) * 4 * (keep16 ? 2 : 1);
   if (png_get_rowbytes(png, info) != stride) png_error(png, "unexpected row layout after transforms");
   pixels->resize(stride * size->height);
   for (int pass = 0; pass < passes; ++pass) {
@@ -133,9 +142,10 @@ struct FileCloser {
 
 }  // namespace
 
-PngRowEncoder::PngRowEncoder(AtomicFileWriter& file, int width, int height, int channels, bool srgbChunk)
+PngRowEncoder::PngRowEncoder(AtomicFileWriter& file, int width, int height, int channels, bool srgbChunk,
+                             int bitDepth)
     : file_(file) {
-  if (!start(width, height, channels, srgbChunk)) {
+  if (!start(width, height, channels, srgbChunk, bitDepth)) {
     destroy();  // no destructor runs after a throwing constructor
     fail();
   }
@@ -149,14 +159,14 @@ void PngRowEncoder::destroy() noexcept {
   info_ = nullptr;
 }
 
-bool PngRowEncoder::start(int width, int height, int channels, bool srgbChunk) {
+bool PngRowEncoder::start(int width, int height, int channels, bool srgbChunk, int bitDepth) {
   png_ = png_create_write_struct(PNG_LIBPNG_VER_STRING, errorText_, onPngError, onPngWarning);
   if (png_ == nullptr) return false;
   info_ = png_create_info_struct(png_);
   if (info_ == nullptr) return false;
   if (setjmp(png_jmpbuf(png_))) return false;
   png_set_write_fn(png_, &file_, onPngWrite, onPngFlush);
-  writePngHeader(png_, info_, width, height, channels, srgbChunk);
+  writePngHeader(png_, info_, width, height, channels, srgbChunk, bitDepth);
   return true;
 }
 
@@ -191,18 +201,28 @@ void writePng(const std::string& path, const Image& image, const ImageWriteOptio
   const bool alpha = options.alpha == AlphaChannel::Always ||
                      (options.alpha == AlphaChannel::Auto && image.hasTransparency());
   const int channels = alpha ? 4 : 3;
+  const bool srgb = options.curve == TransferCurve::Srgb;
+  if (options.bitDepth == 16) {
+    const std::vector<std::uint8_t> samples = encodeImage16(image, options.curve, channels);
+    writePngSamples(path, image.width(), image.height(), channels, srgb, 16, samples.data());
+    return;
+  }
   const std::vector<std::uint8_t> samples = encodeImage8(image, options.curve, channels);
-  writePng8(path, image.width(), image.height(), channels, options.curve == TransferCurve::Srgb,
-            samples.data());
+  writePng8(path, image.width(), image.height(), channels, srgb, samples.data());
 }
 
 void writePng8(const std::string& path, int width, int height, int channels, bool srgbChunk,
                const std::uint8_t* samples) {
+  writePngSamples(path, width, height, channels, srgbChunk, 8, samples);
+}
+
+void writePngSamples(const std::string& path, int width, int height, int channels, bool srgbChunk,
+                     int bitDepth, const std::uint8_t* samples) {
   if (width <= 0 || height <= 0)
     throw InputError(SourceLocation{path}, "cannot write an empty (0-pixel) PNG");
   AtomicFileWriter file(path);
   PngErrorText error;
-  const bool ok = encodePng(&file, width, height, channels, srgbChunk, samples, &error);
+  const bool ok = encodePng(&file, width, height, channels, srgbChunk, bitDepth, samples, &error);
   if (!ok && !file.failed()) {
     file.discard();
     throw InputError(SourceLocation{path}, fmt::format("PNG encoding failed: {}", error.text));
@@ -210,7 +230,10 @@ void writePng8(const std::string& path, int width, int height, int channels, boo
   file.commit();  // reports a failed write with its reason
 }
 
-Image readPng(const std::string& path, TransferCurve curve, PngDescription* description) {
+namespace {
+
+// The file's pixels as RGBA samples of 8 bits, or of 16 bits in the host's order with `keep16`.
+std::vector<std::uint8_t> readPngSamples(const std::string& path, bool keep16, PngSize& size) {
   std::unique_ptr<std::FILE, FileCloser> stream(std::fopen(path.c_str(), "rb"));
   if (!stream) {
     throw InputError(SourceLocation{path}, fmt::format("cannot open the file: {}", std::strerror(errno)));
@@ -226,11 +249,35 @@ Image readPng(const std::string& path, TransferCurve curve, PngDescription* desc
   }
   std::rewind(stream.get());
   std::vector<std::uint8_t> pixels;
-  PngSize size;
   PngErrorText error;
-  if (!decodePng(stream.get(), &pixels, &size, &error)) {
+  if (!decodePng(stream.get(), keep16, &pixels, &size, &error)) {
     throw InputError(SourceLocation{path}, fmt::format("unreadable PNG: {}", error.text));
   }
+  return pixels;
+}
+
+}  // namespace
+
+Image readPng16(const std::string& path, TransferCurve curve) {
+  PngSize size;
+  const std::vector<std::uint8_t> bytes = readPngSamples(path, true, size);
+  Image image(static_cast<int>(size.width), static_cast<int>(size.height));
+  std::size_t i = 0;
+  const auto next = [&] {
+    std::uint16_t v = 0;
+    std::memcpy(&v, bytes.data() + 2 * i++, 2);
+    return v;
+  };
+  for (Rgba& pixel : image.pixels()) {
+    const std::uint16_t r = next(), g = next(), b = next(), a = next();
+    pixel = {decode16(r, curve), decode16(g, curve), decode16(b, curve), decode16(a)};
+  }
+  return image;
+}
+
+Image readPng(const std::string& path, TransferCurve curve, PngDescription* description) {
+  PngSize size;
+  const std::vector<std::uint8_t> pixels = readPngSamples(path, false, size);
   if (description != nullptr) *description = PngDescription{size.alpha, size.srgb};
   Image image(static_cast<int>(size.width), static_cast<int>(size.height));
   const std::uint8_t* p = pixels.data();

@@ -18,13 +18,16 @@ inline constexpr std::size_t kPngErrorTextSize = 256;  // libpng's message, trun
 class PngRowEncoder {
  public:
   // Writes the signature and the header chunks (IHDR; sRGB, gAMA and cHRM when `srgbChunk`) to
-  // `file`. channels is 3 (RGB) or 4 (RGBA), 8 bits each. Throws InputError naming the file.
-  PngRowEncoder(AtomicFileWriter& file, int width, int height, int channels, bool srgbChunk);
+  // `file`. channels is 3 (RGB) or 4 (RGBA), of `bitDepth` 8 or 16 bits each (16: big-endian
+  // samples, as PNG stores them). Throws InputError naming the file.
+  PngRowEncoder(AtomicFileWriter& file, int width, int height, int channels, bool srgbChunk,
+                int bitDepth = 8);
   ~PngRowEncoder();
   PngRowEncoder(const PngRowEncoder&) = delete;
   PngRowEncoder& operator=(const PngRowEncoder&) = delete;
 
-  // One row of width * channels samples; rows go top to bottom. Throws InputError.
+  // One row of width * channels samples (bytes: times bitDepth / 8); rows go top to bottom. Throws
+  // InputError.
   void writeRow(const std::uint8_t* samples);
   // After the last row: the final IDAT data and IEND. Throws InputError.
   void finish();
@@ -32,7 +35,7 @@ class PngRowEncoder {
  private:
   // libpng reports errors by longjmp: these hold the setjmp and only trivially destructible locals,
   // and return false (with errorText_ set) when libpng failed.
-  bool start(int width, int height, int channels, bool srgbChunk);
+  bool start(int width, int height, int channels, bool srgbChunk, int bitDepth);
   bool row(const std::uint8_t* samples);
   bool end();
   void destroy() noexcept;

@@ -1,6 +1,7 @@
 // Axis-aligned bounding boxes: scene framing, kd-tree cells and the ray/slab test.
 #pragma once
 
+#include <cmath>
 #include <limits>
 
 #include "lancer/math/ray.hpp"
@@ -37,6 +38,19 @@ struct AabbT {
 
 using Aabb = AabbT<float>;
 using Aabbd = AabbT<double>;
+
+// The box grown by a relative margin, so that a ray clipped to it keeps the hits that rounding puts
+// on its faces (the accelerators' scene boxes).
+inline Aabb paddedBounds(const Aabb& box) {
+  if (box.empty()) return box;
+  const float pad = 1e-5f * maxComponent(box.extent()) + 1e-30f;
+  Aabb padded = box;
+  for (int axis = 0; axis < 3; ++axis) {
+    padded.lower[axis] -= pad + 1e-6f * std::abs(box.lower[axis]);
+    padded.upper[axis] += pad + 1e-6f * std::abs(box.upper[axis]);
+  }
+  return padded;
+}
 
 // Slab test (Kay & Kajiya); returns the entry/exit parameters clipped to [tMin, tMax].
 inline bool intersectAabb(const Aabb& box, const Ray& ray, float tMin, float tMax, float& tEnter,

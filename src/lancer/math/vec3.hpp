@@ -1,5 +1,6 @@
 // Small 3-vectors of float (geometry, colours) and double (file coordinates before recentring).
 // Plain aggregates with inline operators so the hot loops see straight-line arithmetic.
+// Map: docs/architecture.md (the path of a ray through the modules).
 #pragma once
 
 #include <algorithm>

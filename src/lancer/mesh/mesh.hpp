@@ -1,5 +1,6 @@
 // The surface mesh as lancer renders it: vertices and triangle/quad faces, with the physical and
 // elementary tags gmsh attached, plus what the reader saw (format, counts) for `lancer info`.
+// Map: docs/architecture.md (the path of a ray through the modules).
 #pragma once
 
 #include <algorithm>

@@ -1,16 +1,21 @@
 #include "lancer/render/renderer.hpp"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <thread>
 #include <vector>
 
+#include "lancer/image/tone_map.hpp"
 #include "lancer/render/adaptive_sampler.hpp"
+#include "lancer/render/denoiser.hpp"
 #include "lancer/render/pixel_sampler.hpp"
+#include "lancer/util/parallel_for.hpp"
 #include "lancer/util/stopwatch.hpp"
 #include "lancer/util/thread_count.hpp"
 
@@ -116,6 +121,33 @@ struct StopOnExit {
 
 }  // namespace
 
+NonFiniteRenderError::NonFiniteRenderError(int px, int py, const Rgba& value)
+    : std::runtime_error(fmt::format(
+          "pixel {},{} came out non-finite (rgb {} {} {}), so no image was written: look for extreme light "
+          "intensities or material values, and trace the pixel with --pixel {},{}",
+          px, py, value.r, value.g, value.b, px, py)),
+      x(px),
+      y(py) {}
+
+namespace {
+
+// Throws NonFiniteRenderError for the first pixel of `band` (rows from y0) that is NaN or infinite.
+void requireFinite(const Image& band, int y0) {
+  for (int y = 0; y < band.height(); ++y) {
+    const std::span<const Rgba> row = band.row(y);
+    float sum = 0;  // NaN or infinite as soon as one value is (+inf + -inf is NaN)
+    for (const Rgba& p : row) sum += p.r + p.g + p.b + p.a;
+    if (std::isfinite(sum)) continue;
+    for (int x = 0; x < band.width(); ++x) {
+      const Rgba& p = row[static_cast<std::size_t>(x)];
+      if (!std::isfinite(p.r) || !std::isfinite(p.g) || !std::isfinite(p.b) || !std::isfinite(p.a))
+        throw NonFiniteRenderError(x, y0 + y, p);
+    }
+  }
+}
+
+}  // namespace
+
 int bandWindow(int width, int threads) {
   // At least two tiles per worker beyond the band the sink is writing; at least three bands so a
   // slow sink (PNG deflate) overlaps tracing.
@@ -215,6 +247,44 @@ Rgba Renderer::renderPixel(int x, int y, TraceCounters& counters, std::uint64_t&
 
 int bandCountOf(int height) { return tilesAcross(height); }
 
+FeatureBuffers Renderer::renderFeatures(int threads) const {
+  constexpr int kMaxFeatureGrid = 4;
+  const RenderSettings& settings = settings_;
+  FeatureBuffers buffers(settings.width, settings.height);
+  const int n = std::clamp(static_cast<int>(std::lround(std::sqrt(static_cast<double>(settings.samples)))), 1,
+                           kMaxFeatureGrid);
+  const float weight = 1.0f / static_cast<float>(n * n);
+  const EdgePaint paint(tracer_.queries().scene(), camera_.pixelFootprint());
+  parallelFor(static_cast<std::size_t>(settings.height), threads, 4, [&](std::size_t row) {
+    const int y = static_cast<int>(row);
+    for (int x = 0; x < settings.width; ++x) {
+      Vec3 albedo{0, 0, 0}, normal{0, 0, 0};
+      float depth = 0;
+      int hits = 0;
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          float dx = 0.5f, dy = 0.5f;
+          gridSampleOffset(settings.sampler, n, i, j, x, y, dx, dy);
+          const SurfaceFeatures seen =
+              surfaceFeatures(tracer_.queries(), paint,
+                              camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy),
+                              settings.background, settings.srgb);
+          albedo += seen.albedo;
+          normal += seen.normal;
+          if (seen.hit) {
+            depth += seen.depth;
+            ++hits;
+          }
+        }
+      const std::size_t k = buffers.index(x, y);
+      buffers.albedo[k] = albedo * weight;
+      buffers.normal[k] = normal * weight;
+      buffers.depth[k] = hits > 0 ? depth / static_cast<float>(hits) : std::numeric_limits<float>::infinity();
+    }
+  });
+  return buffers;
+}
+
 void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, RenderStats* stats,
                            BandRange range) const {
   using Clock = std::chrono::steady_clock;
@@ -297,6 +367,7 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
     auto lastReport = Clock::now();
     while (bands.flushed() < bandCount && !cancelled()) {
       if (const Image* band = bands.waitForNext(poll)) {
+        requireFinite(*band, (firstBand + bands.flushed()) * kTileSize);
         sink((firstBand + bands.flushed()) * kTileSize, *band);
         bands.release();
       }
@@ -334,6 +405,28 @@ Image Renderer::renderImage(const RenderOptions& options, RenderStats* stats) co
   renderBands(
       options, [&](int y0, const Image& band) { image.pasteTile(band, 0, y0); }, stats);
   return image;
+}
+
+Image Renderer::renderFinal(const RenderOptions& options, RenderStats* stats,
+                            FeatureBuffers* features) const {
+  RenderStats own;
+  RenderStats& done = stats != nullptr ? *stats : own;
+  Image image = renderImage(options, &done);
+  if (done.cancelled || (!settings_.denoise && features == nullptr)) return image;
+  FeatureBuffers buffers = renderFeatures(options.threads);
+  if (settings_.denoise) {
+    DenoiseOptions denoiseOptions;
+    denoiseOptions.threads = options.threads;
+    image = denoise(image, buffers, denoiseOptions);
+  }
+  if (features != nullptr) *features = std::move(buffers);
+  return image;
+}
+
+Image displayImage(const Image& radiance, const RenderSettings& settings) {
+  Image shown = radiance;
+  applyToneMap(shown, settings.toneMap, settings.exposure);
+  return shown;
 }
 
 }  // namespace lancer

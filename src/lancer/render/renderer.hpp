@@ -2,14 +2,18 @@
 // within a band of 32 rows, bands top to bottom) and trace every sample of every pixel. Per-pixel
 // deterministic sampling makes the image bit-identical for any thread count. Finished bands go, in
 // order, to a sink on the calling thread, so an image of any height needs memory for a few bands.
+// Map: docs/architecture.md (the path of a ray through the modules).
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
+#include <string>
 
 #include "lancer/image/image.hpp"
 #include "lancer/render/camera.hpp"
+#include "lancer/render/feature_buffers.hpp"
 #include "lancer/render/tracer.hpp"
 
 namespace lancer {
@@ -40,6 +44,15 @@ struct RenderStats {
   double samplesPerPixel = 0;  // mean, as actually traced (adaptive sampling varies it)
   bool cancelled = false;
   int peakBufferedRows = 0;  // most image rows held at once in bands being traced or waiting for the sink
+};
+
+// A pixel came out NaN or infinite: never a picture with holes reported as success. renderBands
+// throws it before the band reaches the sink; the CLI and Python report it as an InputError of the
+// scene (extreme intensities overflow float), exit code 2.
+class NonFiniteRenderError : public std::runtime_error {
+ public:
+  NonFiniteRenderError(int x, int y, const Rgba& value);
+  int x, y;
 };
 
 // Receives rows [y0, y0 + band.height()) of the image, full width; bands come top to bottom, each
@@ -73,6 +86,15 @@ class Renderer {
   Image renderRows(BandRange range, const RenderOptions& options, RenderStats* stats = nullptr) const;
   // The whole image at once (animations, GIF output, tests): renderBands into one Image.
   Image renderImage(const RenderOptions& options, RenderStats* stats = nullptr) const;
+  // renderImage, then with settings.denoise the feature pass and the denoiser (denoiser.hpp);
+  // `features`, when given, receives the feature buffers (made for it even without denoising).
+  // A cancelled render is returned as it is, not denoised.
+  Image renderFinal(const RenderOptions& options, RenderStats* stats = nullptr,
+                    FeatureBuffers* features = nullptr) const;
+  // The albedo, normal and depth of the first surface of every pixel, averaged over an n x n grid of
+  // its camera samples (the render's own grid, at most 4 x 4), rows in parallel: the same buffers
+  // for any thread count. Primary rays only, no lighting: a fraction of a render's time.
+  FeatureBuffers renderFeatures(int threads) const;
   // Radiance of one pixel (all its samples), for `--pixel x,y` debugging and for tests.
   Rgba renderPixel(int x, int y, TraceCounters& counters, std::uint64_t& samplesTraced) const;
 
@@ -81,6 +103,10 @@ class Renderer {
   RenderSettings settings_;
   Tracer tracer_;
 };
+
+// What goes into an 8- or 16-bit file: the radiance times 2^exposure through the settings' tone curve
+// (a copy; the image itself when neither applies). EXR files take the radiance as it is.
+Image displayImage(const Image& radiance, const RenderSettings& settings);
 
 // The camera of a frame: `camera`'s view of the scene, for an image of the settings' size.
 Camera makeCamera(const CameraSettings& camera, const Scene& scene, const RenderSettings& settings);

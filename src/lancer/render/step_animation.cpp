@@ -80,21 +80,33 @@ void StepScenes::buildAt(double time) {
   const Stopwatch stopwatch;
   description_.when = StepSelection{std::nullopt, time, "the animation over steps"};
   const bool first = !scene_.has_value();
-  scene_.emplace(buildSceneAt(description_, meshes_, threads_));
+  Scene next = buildSceneAt(description_, meshes_, threads_);
   // Every frame is framed alike: the camera and the orbit see the bounds of the whole animation.
-  SceneGeometry& geometry = scene_->geometry;
+  SceneGeometry& geometry = next.geometry;
   geometry.bounds = Aabb{};
   if (!framing_.empty()) {
     geometry.bounds.extend(geometry.toSceneSpace(framing_.lower));
     geometry.bounds.extend(geometry.toSceneSpace(framing_.upper));
   }
-  const double sceneSeconds = stopwatch.seconds();
-  // Colours alone change when nothing is warped: the geometry, so the accelerator, stays.
-  if (first || anyWarp(description_)) {
+  // Colours alone change when nothing is warped: the geometry, so the accelerator, stays. A warped
+  // mesh with the same faces (none collapsed, none turned) moved its vertices only: the accelerator
+  // is refitted where it can be (the BVH), else built again.
+  const bool warped = anyWarp(description_);
+  const bool sameFaces = !first && scene_->geometry.faces.size() == geometry.faces.size() &&
+                         std::equal(geometry.faces.begin(), geometry.faces.end(),
+                                    scene_->geometry.faces.begin(), [](const MeshFace& a, const MeshFace& b) {
+                                      return std::equal(a.vertex, a.vertex + 4, b.vertex);
+                                    });
+  scene_.emplace(std::move(next));
+  if (first || warped) {
     const Stopwatch build;
     KdBuildOptions options;
     options.threads = threads_;
-    accelerator_.emplace(Accelerator::build(geometry.positions, geometry.faces, accel_, options));
+    if (sameFaces && accelerator_) {
+      if (accelerator_->update(geometry.positions, geometry.faces, options)) ++refits_;
+    } else {
+      accelerator_.emplace(Accelerator::build(geometry.positions, geometry.faces, accel_, options));
+    }
     if (!first) accelSeconds_ += build.seconds();
   }
   if (first) {
@@ -103,7 +115,6 @@ void StepScenes::buildAt(double time) {
     rebuildSeconds_ += stopwatch.seconds();
     ++rebuilds_;
   }
-  (void)sceneSeconds;
   builtTime_ = time;
 }
 

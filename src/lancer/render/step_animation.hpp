@@ -1,7 +1,8 @@
 // Animations over the time steps of results (`[animation] over = "steps"`, `--over steps`): one frame
 // per step in time order, or `frames` evenly spaced in time with the steps between blended linearly.
 // Each frame's scene is the scene at its time (colours, warps) built from meshes read once; when a
-// mesh is warped its geometry changes, so the accelerator is built again for the frame. The camera,
+// mesh is warped its geometry changes, so the accelerator is refitted (the BVH, when the faces are
+// the same) or built again for the frame. The camera,
 // the orbit's centre and the colour ranges stay fixed over the animation (a colour means the same
 // value in every frame; the picture does not jump as the part deforms).
 #pragma once
@@ -51,6 +52,7 @@ class StepScenes {
   double rebuildSeconds() const { return rebuildSeconds_; }
   double accelSeconds() const { return accelSeconds_; }
   int rebuilds() const { return rebuilds_; }
+  int refits() const { return refits_; }  // of the rebuilds, those whose accelerator was refitted
   // What the first frame's build warned about (collapsed faces, the readers' warnings).
   const std::vector<std::string>& warnings() const { return warnings_; }
   std::size_t faceCount() const { return scene_ ? scene_->geometry.faces.size() : 0; }
@@ -71,6 +73,7 @@ class StepScenes {
   double rebuildSeconds_ = 0;
   double accelSeconds_ = 0;
   int rebuilds_ = 0;
+  int refits_ = 0;
   std::vector<std::string> warnings_;
 };
 

@@ -18,6 +18,8 @@ inline constexpr int kMaxSamples = 1024;
 inline constexpr int kMaxDepth = 64;
 inline constexpr int kMaxFrames = 10000;
 inline constexpr int kMaxThreads = 1024;
+// render.exposure and --exposure, in stops: 2^20 is a million times brighter or darker.
+inline constexpr double kMaxExposureStops = 20;
 
 // In the order of the enums they name (checked below).
 inline constexpr std::array<std::string_view, 3> kShadingNames = {"flat", "gouraud", "phong"};

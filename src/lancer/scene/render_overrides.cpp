@@ -15,6 +15,10 @@ void applyRenderOverrides(SceneDescription& description, const RenderOverrides& 
   if (overrides.height) settings.height = *overrides.height;
   if (overrides.maxDepth) settings.maxDepth = *overrides.maxDepth;
   if (overrides.srgb) settings.srgb = *overrides.srgb;
+  if (overrides.toneMap) settings.toneMap = *overrides.toneMap;
+  if (overrides.exposure) settings.exposure = *overrides.exposure;
+  if (overrides.bitDepth) settings.bitDepth = *overrides.bitDepth;
+  if (overrides.denoise) settings.denoise = *overrides.denoise;
   if (overrides.transparentBackground) settings.transparentBackground = *overrides.transparentBackground;
   if (overrides.sampler) settings.sampler = *overrides.sampler;
   if (overrides.samples) settings.samples = *overrides.samples;

@@ -16,7 +16,11 @@ struct RenderOverrides {
   std::optional<int> width, height, samples, maxDepth;
   std::optional<ShadingMode> shading;  // for every mesh (their own shading keys are dropped)
   std::optional<SamplerKind> sampler;
-  std::optional<bool> srgb;
+  std::optional<bool> srgb;  // false: the linear encoding (--linear)
+  std::optional<ToneMap> toneMap;
+  std::optional<float> exposure;
+  std::optional<int> bitDepth;
+  std::optional<bool> denoise;
   std::optional<bool> transparentBackground;
   bool edges = false;  // draw element edges on every mesh that does not set its own
   // Names the samples check's messages give the value (the CLI's "--samples", Python's "samples").

@@ -1,5 +1,6 @@
 // The scene ready to render: every mesh instance transformed into one scene space (float, relative
 // to a double-precision origin), with per-face material and shading, smooth normals and lights.
+// Map: docs/architecture.md (the path of a ray through the modules).
 #pragma once
 
 #include <array>

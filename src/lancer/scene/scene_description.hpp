@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "lancer/image/tone_map.hpp"
 #include "lancer/math/vec3.hpp"
 #include "lancer/scene/color_by_spec.hpp"
 #include "lancer/scene/gmsh_view.hpp"
@@ -30,8 +31,15 @@ struct RenderSettings {
   ShadingMode shading = ShadingMode::Phong;
   Vec3 background{0, 0, 0};
   bool transparentBackground = false;  // background = "transparent": PNG with alpha
-  bool srgb = false;                   // encode output with the sRGB curve instead of linear
   std::string output;                  // resolved against the scene file's folder; may be empty
+  // How the radiance becomes a picture (docs/output.md): `encoding = "srgb"` (the default) or
+  // "linear" (the brief's raw values, round(255 * clamp(I, 0, 1))), after `exposure` (stops) and
+  // `tonemap`; 8 or 16 bits per sample (16: PNG only); `denoise` filters the radiance first.
+  bool srgb = true;
+  ToneMap toneMap = ToneMap::None;
+  float exposure = 0;
+  int bitDepth = 8;
+  bool denoise = false;
 };
 
 struct CameraSettings {
@@ -52,8 +60,9 @@ struct CameraSettings {
   std::optional<GmshView> gmshView;
 };
 
-// The camera settings of `camera.gmshView` for a scene of these world bounds (camera itself without one).
-CameraSettings resolveGmshView(const CameraSettings& camera, const Aabbd& worldBounds);
+// The camera settings of `camera.gmshView` for a scene of these world bounds and an image
+// `imageAspect` (width / height) wide, framed as gmsh frames its export (camera itself without one).
+CameraSettings resolveGmshView(const CameraSettings& camera, const Aabbd& worldBounds, double imageAspect);
 
 struct PointLight {
   Vec3d position;

@@ -7,9 +7,9 @@ namespace {
 
 constexpr std::array<std::string_view, 9> kDocumentKeys = {
     "render", "camera", "ambient", "light", "material", "mesh", "animation", "clip", "floor"};
-constexpr std::array<std::string_view, 11> kRenderKeys = {
-    "width",      "height", "samples", "max_depth",          "sampler", "shading",
-    "background", "output", "srgb",    "adaptive_threshold", "step"};
+constexpr std::array<std::string_view, 16> kRenderKeys = {
+    "width", "height",   "samples", "max_depth", "sampler",   "shading", "background",         "output",
+    "srgb",  "encoding", "tonemap", "exposure",  "bit_depth", "denoise", "adaptive_threshold", "step"};
 constexpr std::array<std::string_view, 8> kCameraKeys = {
     "projection", "position", "look_at", "up", "up_axis", "fov", "view_height", "gmsh_view"};
 constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -22,6 +23,7 @@
 namespace lancer {
 namespace {
 
+constexpr std::array<std::string_view, 2> kEncodingNames = {"srgb", "linear"};
 constexpr std::array<std::string_view, 2> kEdgeSelections = {"elements", "features"};
 // State shared by the section readers: the file for messages and the folder paths are relative to.
 struct SceneFile {
@@ -100,6 +102,29 @@ void readBackground(const TomlTableReader& reader, RenderSettings& render) {
   render.background = toFloat(*reader.vector("background", Triple::Rgb, NumberRange::atLeast(0)));
 }
 
+// encoding (or the older srgb = true | false), tonemap, exposure, bit_depth, denoise: docs/output.md.
+void readOutputKeys(const TomlTableReader& reader, RenderSettings& render) {
+  if (auto srgb = reader.boolean("srgb")) render.srgb = *srgb;
+  if (auto encoding = reader.choice("encoding", kEncodingNames)) {
+    if (reader.find("srgb"))
+      reader.fail(*reader.find("encoding"),
+                  "render.encoding and render.srgb both say how the image is encoded; keep encoding (srgb = "
+                  "false is encoding = \"linear\")");
+    render.srgb = *encoding == 0;
+  }
+  if (auto toneMap = reader.choice("tonemap", kToneMapNames)) render.toneMap = static_cast<ToneMap>(*toneMap);
+  if (auto exposure = reader.number("exposure", NumberRange::between(-kMaxExposureStops, kMaxExposureStops)))
+    render.exposure = static_cast<float>(*exposure);
+  if (auto bits = reader.integer("bit_depth", std::numeric_limits<std::int64_t>::min(),
+                                 std::numeric_limits<std::int64_t>::max())) {
+    if (*bits != 8 && *bits != 16)
+      reader.fail(*reader.find("bit_depth"),
+                  fmt::format("render.bit_depth must be 8 or 16, found {}", *bits));
+    render.bitDepth = static_cast<int>(*bits);
+  }
+  if (auto denoise = reader.boolean("denoise")) render.denoise = *denoise;
+}
+
 RenderSettings readRender(const SceneFile& file, const toml::table& table) {
   const TomlTableReader reader(table, "render", file.path, SceneTable::Render);
   RenderSettings render;
@@ -127,7 +152,7 @@ RenderSettings readRender(const SceneFile& file, const toml::table& table) {
     render.shading = static_cast<ShadingMode>(*shading);
   readBackground(reader, render);
   if (auto output = reader.nonEmptyString("output")) render.output = file.resolve(*output);
-  if (auto srgb = reader.boolean("srgb")) render.srgb = *srgb;
+  readOutputKeys(reader, render);
   return render;
 }
 

@@ -1,5 +1,6 @@
 // Errors caused by the user's input (mesh files, scene files, command-line values).
 // They carry the location in the user's file, are thrown by the library and printed once by the CLI.
+// Map: docs/architecture.md (the path of a ray through the modules).
 #pragma once
 
 #include <cstdint>

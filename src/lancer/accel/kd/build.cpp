@@ -16,17 +16,7 @@ namespace lancer {
 
 namespace {
 
-// A triangle whose corners are collinear to within this sine of the corner angle: its
-// determinant (the sum of the edge functions) is rounding noise, so a computed hit may lie anywhere
-// on the ray.
-constexpr double kSliverSine = 1e-4;
-
-bool isSliver(const std::array<Vec3, 3>& c) {
-  const Vec3d e1 = toDouble(c[1]) - toDouble(c[0]);
-  const Vec3d e2 = toDouble(c[2]) - toDouble(c[0]);
-  const Vec3d n = cross(e1, e2);
-  return dot(n, n) <= kSliverSine * kSliverSine * dot(e1, e1) * dot(e2, e2);
-}
+bool isSliver(const std::array<Vec3, 3>& c) { return isSliverTriangle(c[0], c[1], c[2]); }
 
 // Calls visit(face, corners) for each triangle of faces [begin, end), in face order, a quad as
 // (0,1,2) then (0,2,3) like packTriangles.
@@ -260,18 +250,6 @@ void writeNode(const BuildNode& node, const std::vector<std::uint32_t>& triangle
     }
     words[node.word] = KdNode::leaf(node.list, node.leaf.count);
   }
-}
-
-// Pads the scene box so that rays clipped to it keep hits that rounding puts on its faces.
-Aabb paddedBounds(const Aabb& box) {
-  if (box.empty()) return box;
-  const float pad = 1e-5f * maxComponent(box.extent()) + 1e-30f;
-  Aabb padded = box;
-  for (int axis = 0; axis < 3; ++axis) {
-    padded.lower[axis] -= pad + 1e-6f * std::abs(box.lower[axis]);
-    padded.upper[axis] += pad + 1e-6f * std::abs(box.upper[axis]);
-  }
-  return padded;
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
-// What the two kd-tree builders share: the gathered triangles they read, the temporary tree they
-// write (in per-thread arenas), and the assembler that lays that tree out as the final KdTree.
+// What the three kd-tree builders share (binned_build.cpp the default `kdtree-sah`, sah_build.cpp the
+// exact `kdtree-sah-exact`, median_build.cpp `kdtree-median`): the gathered triangles they read, the
+// temporary tree they write (in per-thread arenas), and the assembler that lays that tree out as the
+// final KdTree. (The BVH, the default accelerator, has its own build in accel/bvh/.)
 #pragma once
 
 #include <array>

@@ -1,5 +1,6 @@
-// The kd-tree packet walk's SIMD view of a packet (kd/packet_traversal.cpp): the rays as lanes of
-// AVX2 registers (PacketFrame), their set-up against the scene box, and the packet triangle test.
+// The packet walks' SIMD view of a packet (kd/packet_traversal.cpp, bvh/packet_traversal.cpp): the
+// rays as lanes of AVX2 registers (PacketFrame), their set-up against the scene box, the packet
+// triangle test and the closest-hit and any-hit bookkeeping per lane.
 #pragma once
 
 #include <bit>
@@ -106,12 +107,10 @@ inline TriangleHit finishLane(const ShearedCorners& c, const PacketFrame& f, int
 // |x| per lane (std::abs).
 inline __m256 absolute(__m256 x) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), x); }
 
-// Sets up the frame of the lanes `active`, keeping in `active` those whose rays meet the scene box,
-// with each one's interval in the box: the single-ray walk's set-up (intersectAabb and the bands)
-// lane by lane. False when the rays run different ways along some axis.
-inline bool setUpFrame(const RayPacket& packet, std::uint32_t& active, const Aabb& bounds, float magnitude,
-                       PacketFrame& f, __m256& tEnter, __m256& tExit) {
-  alignas(32) float lane[10][kPacketSize];
+// Loads the rays of the lanes `active` into the frame, for the triangle test (origins, shears,
+// axes) and the box tests (inverse directions); the other lanes get zeros.
+inline void loadPacketRays(const RayPacket& packet, std::uint32_t active, PacketFrame& f) {
+  alignas(32) float lane[8][kPacketSize];
   alignas(32) int axes[3][kPacketSize];
   for (int i = 0; i < kPacketSize; ++i) {
     if ((active >> i & 1u) == 0) {
@@ -129,8 +128,6 @@ inline bool setUpFrame(const RayPacket& packet, std::uint32_t& active, const Aab
     lane[5][i] = ray.invDirection.z;
     lane[6][i] = ray.shearX;
     lane[7][i] = ray.shearY;
-    lane[8][i] = packet.tMin[i];
-    lane[9][i] = packet.tMax[i];
     f.shearZ[i] = ray.shearZ;
     axes[0][i] = ray.kx;
     axes[1][i] = ray.ky;
@@ -140,10 +137,49 @@ inline bool setUpFrame(const RayPacket& packet, std::uint32_t& active, const Aab
     f.origin[a] = _mm256_load_ps(lane[a]);
     f.invDirection[a] = _mm256_load_ps(lane[3 + a]);
   }
+  f.shearX = _mm256_load_ps(lane[6]);
+  f.shearY = _mm256_load_ps(lane[7]);
+  auto isAxis = [&](int which, int axis) {
+    const __m256i values = _mm256_load_si256(reinterpret_cast<const __m256i*>(axes[which]));
+    return _mm256_castsi256_ps(_mm256_cmpeq_epi32(values, _mm256_set1_epi32(axis)));
+  };
+  // Inactive lanes were given axes 0, 0, 0 above: compare the active ones only.
+  const int firstLane = std::countr_zero(active | (1u << kPacketSize));
+  f.uniformAxes = firstLane < kPacketSize;
+  if (f.uniformAxes) {
+    f.kx = axes[0][firstLane];
+    f.ky = axes[1][firstLane];
+    f.kz = axes[2][firstLane];
+    for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+      const int i = std::countr_zero(lanes);
+      f.uniformAxes = f.uniformAxes && axes[0][i] == f.kx && axes[1][i] == f.ky && axes[2][i] == f.kz;
+    }
+  }
+  f.kxIs0 = isAxis(0, 0);
+  f.kxIs1 = isAxis(0, 1);
+  f.kyIs0 = isAxis(1, 0);
+  f.kyIs1 = isAxis(1, 1);
+  f.kzIs0 = isAxis(2, 0);
+  f.kzIs1 = isAxis(2, 1);
+}
+
+// The lanes' bounds as one register (inactive lanes: 0).
+inline __m256 loadLaneBounds(const float (&bound)[kPacketSize], std::uint32_t active) {
+  alignas(32) float lane[kPacketSize];
+  for (int i = 0; i < kPacketSize; ++i) lane[i] = (active >> i & 1u) != 0 ? bound[i] : 0.0f;
+  return _mm256_load_ps(lane);
+}
+
+// Sets up the frame of the lanes `active`, keeping in `active` those whose rays meet the scene box,
+// with each one's interval in the box: the single-ray walk's set-up (intersectAabb and the bands)
+// lane by lane. False when the rays run different ways along some axis.
+inline bool setUpFrame(const RayPacket& packet, std::uint32_t& active, const Aabb& bounds, float magnitude,
+                       PacketFrame& f, __m256& tEnter, __m256& tExit) {
+  loadPacketRays(packet, active, f);
   // intersectAabb, lane by lane (NaN from 0 * inf leaves the span as it is).
   const float lower[3] = {bounds.lower.x, bounds.lower.y, bounds.lower.z};
   const float upper[3] = {bounds.upper.x, bounds.upper.y, bounds.upper.z};
-  __m256 tIn = _mm256_load_ps(lane[8]), tOut = _mm256_load_ps(lane[9]);
+  __m256 tIn = loadLaneBounds(packet.tMin, active), tOut = loadLaneBounds(packet.tMax, active);
   for (int a = 0; a < 3; ++a) {
     const __m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(lower[a]), f.origin[a]), f.invDirection[a]);
     const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(upper[a]), f.origin[a]), f.invDirection[a]);
@@ -170,34 +206,72 @@ inline bool setUpFrame(const RayPacket& packet, std::uint32_t& active, const Aab
     f.farEdge[a] = _mm256_sub_ps(f.origin[a], signedBand);
   }
   f.eps = _mm256_mul_ps(_mm256_set1_ps(kSlack), _mm256_max_ps(absolute(tIn), absolute(tOut)));
-  f.shearX = _mm256_load_ps(lane[6]);
-  f.shearY = _mm256_load_ps(lane[7]);
-  auto isAxis = [&](int which, int axis) {
-    const __m256i values = _mm256_load_si256(reinterpret_cast<const __m256i*>(axes[which]));
-    return _mm256_castsi256_ps(_mm256_cmpeq_epi32(values, _mm256_set1_epi32(axis)));
-  };
-  // Inactive lanes were given axes 0, 0, 0 above: compare the active ones only.
-  const int firstLane = std::countr_zero(active | (1u << kPacketSize));
-  f.uniformAxes = firstLane < kPacketSize;
-  if (f.uniformAxes) {
-    f.kx = axes[0][firstLane];
-    f.ky = axes[1][firstLane];
-    f.kz = axes[2][firstLane];
-    for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
-      const int i = std::countr_zero(lanes);
-      f.uniformAxes = f.uniformAxes && axes[0][i] == f.kx && axes[1][i] == f.ky && axes[2][i] == f.kz;
-    }
-  }
-  f.kxIs0 = isAxis(0, 0);
-  f.kxIs1 = isAxis(0, 1);
-  f.kyIs0 = isAxis(1, 0);
-  f.kyIs1 = isAxis(1, 1);
-  f.kzIs0 = isAxis(2, 0);
-  f.kzIs1 = isAxis(2, 1);
   tEnter = tIn;
   tExit = tOut;
   return true;
 }
+
+// The closest-hit and any-hit bookkeeping of a packet, lane by lane as ClosestHit and AnyHit
+// (query.hpp) keep it for one ray; shared by the kd-tree's and the BVH's packet walks.
+template <typename Filter>
+struct PacketClosestHit {
+  const RayPacket& packet;
+  const PacketFrame& frame;
+  const Filter& keeps;
+  Hit best[kPacketSize];
+  float upper[kPacketSize];
+  alignas(32) float bestT[kPacketSize];
+
+  std::uint32_t test(const PackedTriangle& tri, std::uint32_t lanes) {
+    ShearedCorners corners;
+    for (std::uint32_t hit = sameSignLanes(tri, frame, lanes, corners); hit != 0; hit &= hit - 1) {
+      const int i = std::countr_zero(hit);
+      const TriangleHit h = finishLane(corners, frame, i, packet.tMin[i], upper[i]);
+      if (takeIfCloser(h, tri.face, packet.ray[i], packet.tMax[i], keeps, best[i], upper[i]))
+        bestT[i] = best[i].t;
+    }
+    return 0;
+  }
+  // test's finish on lane i for triangle k of an eight-triangle test (walkPacket's testLeafAlone).
+  bool finishAlone(const PackedTriangle& tri, int i, const LeafCorners& c, int k) {
+    const TriangleHit h =
+        triangle_detail::finishHit(c.ax[k], c.ay[k], c.az[k], c.bx[k], c.by[k], c.bz[k], c.cx[k], c.cy[k],
+                                   c.cz[k], frame.shearZ[i], packet.tMin[i], upper[i]);
+    if (takeIfCloser(h, tri.face, packet.ray[i], packet.tMax[i], keeps, best[i], upper[i]))
+      bestT[i] = best[i].t;
+    return false;
+  }
+  __m256 bound() const { return _mm256_load_ps(bestT); }
+  float laneBound(int lane) const { return bestT[lane]; }
+};
+
+template <typename Filter>
+struct PacketAnyHit {
+  const RayPacket& packet;
+  const PacketFrame& frame;
+  const Filter& keeps;
+  alignas(32) float tMax[kPacketSize];
+
+  std::uint32_t test(const PackedTriangle& tri, std::uint32_t lanes) const {
+    ShearedCorners corners;
+    std::uint32_t blocked = 0;
+    for (std::uint32_t hit = sameSignLanes(tri, frame, lanes, corners); hit != 0; hit &= hit - 1) {
+      const int i = std::countr_zero(hit);
+      const float t = finishLane(corners, frame, i, packet.tMin[i], packet.tMax[i]).t;
+      if (t >= 0.0f && keeps(packet.ray[i], tri.face, t)) blocked |= 1u << i;
+    }
+    return blocked;
+  }
+  bool finishAlone(const PackedTriangle& tri, int i, const LeafCorners& c, int k) const {
+    const float t =
+        triangle_detail::finishHit(c.ax[k], c.ay[k], c.az[k], c.bx[k], c.by[k], c.bz[k], c.cx[k], c.cy[k],
+                                   c.cz[k], frame.shearZ[i], packet.tMin[i], packet.tMax[i])
+            .t;
+    return t >= 0.0f && keeps(packet.ray[i], tri.face, t);
+  }
+  __m256 bound() const { return _mm256_load_ps(tMax); }
+  float laneBound(int lane) const { return tMax[lane]; }
+};
 
 #endif  // LANCER_PACKETS_AVX2
 

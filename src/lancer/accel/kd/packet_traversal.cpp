@@ -277,66 +277,6 @@ std::uint32_t walkPacket(std::span<const KdNode> layout, const PacketFrame& f, s
   }
 }
 
-template <typename Filter>
-struct PacketClosestHit {
-  const RayPacket& packet;
-  const PacketFrame& frame;
-  const Filter& keeps;
-  Hit best[kPacketSize];
-  float upper[kPacketSize];
-  alignas(32) float bestT[kPacketSize];
-
-  std::uint32_t test(const PackedTriangle& tri, std::uint32_t lanes) {
-    ShearedCorners corners;
-    for (std::uint32_t hit = sameSignLanes(tri, frame, lanes, corners); hit != 0; hit &= hit - 1) {
-      const int i = std::countr_zero(hit);
-      const TriangleHit h = finishLane(corners, frame, i, packet.tMin[i], upper[i]);
-      if (takeIfCloser(h, tri.face, packet.ray[i], packet.tMax[i], keeps, best[i], upper[i]))
-        bestT[i] = best[i].t;
-    }
-    return 0;
-  }
-  // test's finish on lane i for triangle k of an eight-triangle test (walkPacket's testLeafAlone).
-  bool finishAlone(const PackedTriangle& tri, int i, const LeafCorners& c, int k) {
-    const TriangleHit h =
-        triangle_detail::finishHit(c.ax[k], c.ay[k], c.az[k], c.bx[k], c.by[k], c.bz[k], c.cx[k], c.cy[k],
-                                   c.cz[k], frame.shearZ[i], packet.tMin[i], upper[i]);
-    if (takeIfCloser(h, tri.face, packet.ray[i], packet.tMax[i], keeps, best[i], upper[i]))
-      bestT[i] = best[i].t;
-    return false;
-  }
-  __m256 bound() const { return _mm256_load_ps(bestT); }
-  float laneBound(int lane) const { return bestT[lane]; }
-};
-
-template <typename Filter>
-struct PacketAnyHit {
-  const RayPacket& packet;
-  const PacketFrame& frame;
-  const Filter& keeps;
-  alignas(32) float tMax[kPacketSize];
-
-  std::uint32_t test(const PackedTriangle& tri, std::uint32_t lanes) const {
-    ShearedCorners corners;
-    std::uint32_t blocked = 0;
-    for (std::uint32_t hit = sameSignLanes(tri, frame, lanes, corners); hit != 0; hit &= hit - 1) {
-      const int i = std::countr_zero(hit);
-      const float t = finishLane(corners, frame, i, packet.tMin[i], packet.tMax[i]).t;
-      if (t >= 0.0f && keeps(packet.ray[i], tri.face, t)) blocked |= 1u << i;
-    }
-    return blocked;
-  }
-  bool finishAlone(const PackedTriangle& tri, int i, const LeafCorners& c, int k) const {
-    const float t =
-        triangle_detail::finishHit(c.ax[k], c.ay[k], c.az[k], c.bx[k], c.by[k], c.bz[k], c.cx[k], c.cy[k],
-                                   c.cz[k], frame.shearZ[i], packet.tMin[i], packet.tMax[i])
-            .t;
-    return t >= 0.0f && keeps(packet.ray[i], tri.face, t);
-  }
-  __m256 bound() const { return _mm256_load_ps(tMax); }
-  float laneBound(int lane) const { return tMax[lane]; }
-};
-
 #endif  // LANCER_PACKETS_AVX2
 
 }  // namespace

@@ -148,17 +148,15 @@ inline std::uint32_t keepSameSignLanes(__m256 u, __m256 v, __m256 w, std::uint32
   return passed;
 }
 
-// The float half of testTriangle for `count` (1..8) triangles at the layout's word offsets
-// `offsets`, against one ray: the lanes whose ray line meets the triangle.
-inline std::uint32_t sameSignTriangles(const KdNode* base, const std::uint32_t* offsets, std::uint32_t count,
-                                       const Ray& ray, LeafCorners& out) {
+// The float half of testTriangle for `count` (1..8) triangles `tri` (each a PackedTriangle's first
+// float; all eight readable, the ones past `count` repeats), against one ray: the lanes whose ray line
+// meets the triangle. Shared by the kd-tree's and the BVH's leaves.
+inline std::uint32_t sameSignTriangles(const float* const (&tri)[8], std::uint32_t count, const Ray& ray,
+                                       LeafCorners& out) {
   static_assert(offsetof(PackedTriangle, v0) == 0 && offsetof(PackedTriangle, v2) == 6 * sizeof(float) &&
                 sizeof(Vec3) == 3 * sizeof(float));
   // The triangles' first eight floats (v0, v1, v2.x, v2.y) as the rows of an 8x8 matrix, transposed
   // to one register per coordinate (unpack, shuffle, then swap halves); gathers measured slower.
-  const float* tri[8];
-  for (std::uint32_t i = 0; i < 8; ++i)
-    tri[i] = reinterpret_cast<const float*>(base + offsets[i < count ? i : 0]);
   __m256 row[8];
   for (int i = 0; i < 8; ++i) row[i] = _mm256_loadu_ps(tri[i]);
   __m256 coordinate[9];
@@ -196,6 +194,15 @@ inline std::uint32_t sameSignTriangles(const KdNode* base, const std::uint32_t* 
   const __m256 v = differenceOfProducts8(ax, cy, ay, cx);
   const __m256 w = differenceOfProducts8(bx, ay, by, ax);
   return keepSameSignLanes(u, v, w, (1u << count) - 1u, ax, ay, az, bx, by, bz, cx, cy, cz, out);
+}
+
+// The same for triangles at the kd layout's word offsets `offsets`.
+inline std::uint32_t sameSignTriangles(const KdNode* base, const std::uint32_t* offsets, std::uint32_t count,
+                                       const Ray& ray, LeafCorners& out) {
+  const float* tri[8];
+  for (std::uint32_t i = 0; i < 8; ++i)
+    tri[i] = reinterpret_cast<const float*>(base + offsets[i < count ? i : 0]);
+  return sameSignTriangles(tri, count, ray, out);
 }
 
 #endif  // LANCER_LEAF_AVX2

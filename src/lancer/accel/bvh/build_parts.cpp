@@ -1,0 +1,200 @@
+#include "lancer/accel/bvh/build_parts.hpp"
+
+#include <cmath>
+
+#include "lancer/util/huge_pages.hpp"
+#include "lancer/util/parallel_for.hpp"
+
+namespace lancer::bvh {
+
+namespace {
+
+constexpr int kBins = 32;
+
+// The bins of each axis over a range's centroids.
+struct Grid {
+  float origin[3] = {0, 0, 0};
+  float scale[3] = {0, 0, 0};
+  bool usable[3] = {false, false, false};
+
+  explicit Grid(const Range& range) {
+    for (int a = 0; a < 3; ++a) {
+      const float extent = range.centroids.hi[a] - range.centroids.lo[a];
+      usable[a] = extent > 0.0f && std::isfinite(extent);
+      origin[a] = range.centroids.lo[a];
+      scale[a] = usable[a] ? float(kBins) * (1.0f - 1e-5f) / extent : 0.0f;
+    }
+  }
+  int bin(int axis, float centroid) const {
+    const int b = static_cast<int>((centroid - origin[axis]) * scale[axis]);
+    return std::clamp(b, 0, kBins - 1);
+  }
+};
+
+struct Bins {
+  Box box[3][kBins];
+  std::uint32_t triangles[3][kBins] = {};
+
+  void add(const PrimRef* refs, std::size_t begin, std::size_t end, const Grid& grid) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const PrimRef& r = refs[i];
+      for (int a = 0; a < 3; ++a) {
+        const int b = grid.bin(a, r.lo[a] + r.hi[a]);
+        box[a][b].extend(r.lo, r.hi);
+        triangles[a][b] += r.triangles;
+      }
+    }
+  }
+  void add(const Bins& other) {
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < kBins; ++b) {
+        box[a][b].extend(other.box[a][b]);
+        triangles[a][b] += other.triangles[a][b];
+      }
+    }
+  }
+};
+
+}  // namespace
+
+Range rangeOf(const PrimRef* refs, std::uint32_t begin, std::uint32_t end) {
+  Range range;
+  range.begin = begin;
+  range.end = end;
+  for (std::uint32_t i = begin; i < end; ++i) {
+    const PrimRef& r = refs[i];
+    range.bounds.extend(r.lo, r.hi);
+    const float c[3] = {r.lo[0] + r.hi[0], r.lo[1] + r.hi[1], r.lo[2] + r.hi[2]};
+    range.centroids.extend(c, c);
+    range.triangles += r.triangles;
+  }
+  return range;
+}
+
+Split chooseSplit(const PrimRef* refs, const Range& range, const BvhBuildOptions& options, int threads) {
+  Split split;
+  if (range.count() <= 1) return split;
+  const Grid grid(range);
+  Bins bins;
+  const ChunkPlan plan(range.count(), 1 << 14);
+  if (threads > 1 && plan.chunks > 1) {
+    std::vector<Bins> chunkBins(plan.chunks);
+    parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+      chunkBins[chunk].add(refs, range.begin + begin, range.begin + end, grid);
+    });
+    for (const Bins& part : chunkBins) bins.add(part);
+  } else {
+    bins.add(refs, range.begin, range.end, grid);
+  }
+  // Cheapest boundary: the sum of each side's area times its triangles (the first of equal ones).
+  float best = std::numeric_limits<float>::infinity();
+  for (int a = 0; a < 3; ++a) {
+    if (!grid.usable[a]) continue;
+    float rightArea[kBins];
+    std::uint32_t rightCount[kBins];
+    Box right;
+    std::uint32_t count = 0;
+    for (int b = kBins - 1; b > 0; --b) {
+      right.extend(bins.box[a][b]);
+      count += bins.triangles[a][b];
+      rightArea[b] = right.area();
+      rightCount[b] = count;
+    }
+    Box left;
+    count = 0;
+    for (int b = 1; b < kBins; ++b) {
+      left.extend(bins.box[a][b - 1]);
+      count += bins.triangles[a][b - 1];
+      if (count == 0 || rightCount[b] == 0) continue;
+      const float cost = left.area() * float(count) + rightArea[b] * float(rightCount[b]);
+      if (cost < best) {
+        best = cost;
+        split.axis = a;
+        split.bin = b;
+      }
+    }
+  }
+  const float area = range.bounds.area();
+  const float leafCost = options.intersectionCost * float(range.triangles);
+  const bool binned = best < std::numeric_limits<float>::infinity();
+  split.cost =
+      options.traversalCost + (area > 0.0f && binned ? options.intersectionCost * best / area : leafCost);
+  if (range.triangles <= BvhNode::kMaxLeafTriangles && (!binned || leafCost <= split.cost)) return split;
+  split.kind = binned && range.depth < kMaxBinnedDepth ? SplitKind::Binned : SplitKind::Median;
+  return split;
+}
+
+void partition(PrimRef* refs, const Range& range, Range& left, Range& right) {
+  std::uint32_t middle = range.begin + static_cast<std::uint32_t>(range.count() / 2);
+  if (range.split.kind == SplitKind::Binned) {
+    const Grid grid(range);
+    const int axis = range.split.axis, bin = range.split.bin;
+    PrimRef* const at = std::partition(refs + range.begin, refs + range.end, [&](const PrimRef& r) {
+      return grid.bin(axis, r.lo[axis] + r.hi[axis]) < bin;
+    });
+    middle = static_cast<std::uint32_t>(at - refs);
+  }
+  left = rangeOf(refs, range.begin, middle);
+  right = rangeOf(refs, middle, range.end);
+  left.depth = right.depth = range.depth + 1;
+}
+
+GatheredFaces gatherFaces(std::span<const Vec3> positions, std::span<const MeshFace> faces, int threads) {
+  auto isSliverFace = [&](const MeshFace& face) {
+    const Vec3& a = positions[face.vertex[0]];
+    if (isSliverTriangle(a, positions[face.vertex[1]], positions[face.vertex[2]])) return true;
+    return face.isQuad() && isSliverTriangle(a, positions[face.vertex[2]], positions[face.vertex[3]]);
+  };
+  // A first pass counts each chunk's tree faces and sliver triangles, a second writes them where the
+  // counts before them put them, in face order.
+  const ChunkPlan plan(faces.size(), 1 << 14);
+  std::vector<std::size_t> kept(plan.chunks + 1, 0), dropped(plan.chunks + 1, 0);
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    std::size_t tree = 0, slivers = 0;
+    for (std::size_t f = begin; f < end; ++f) {
+      if (isSliverFace(faces[f])) {
+        slivers += faces[f].isQuad() ? 2 : 1;
+      } else {
+        ++tree;
+      }
+    }
+    kept[chunk + 1] = tree;
+    dropped[chunk + 1] = slivers;
+  });
+  for (std::size_t c = 0; c < plan.chunks; ++c) {
+    kept[c + 1] += kept[c];
+    dropped[c + 1] += dropped[c];
+  }
+  GatheredFaces out;
+  out.refs = vectorOnHugePages<PrimRef>(kept.back());
+  out.slivers.resize(dropped.back());
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    std::size_t tree = kept[chunk], sliver = dropped[chunk];
+    for (std::size_t f = begin; f < end; ++f) {
+      const MeshFace& face = faces[f];
+      const auto id = static_cast<std::uint32_t>(f);
+      if (isSliverFace(face)) {
+        const Vec3& a = positions[face.vertex[0]];
+        out.slivers[sliver++] = {a, positions[face.vertex[1]], positions[face.vertex[2]], id};
+        if (face.isQuad())
+          out.slivers[sliver++] = {a, positions[face.vertex[2]], positions[face.vertex[3]], id};
+        continue;
+      }
+      PrimRef& r = out.refs[tree++];
+      r.face = id;
+      r.triangles = face.isQuad() ? 2 : 1;
+      for (int a = 0; a < 3; ++a) {
+        // + 0.0f turns -0 into +0, so equal positions compare (and bin) alike.
+        r.lo[a] = r.hi[a] = positions[face.vertex[0]][a] + 0.0f;
+        for (int k = 1; k < face.cornerCount(); ++k) {
+          const float p = positions[face.vertex[k]][a] + 0.0f;
+          r.lo[a] = std::min(r.lo[a], p);
+          r.hi[a] = std::max(r.hi[a], p);
+        }
+      }
+    }
+  });
+  return out;
+}
+
+}  // namespace lancer::bvh

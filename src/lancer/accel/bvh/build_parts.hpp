@@ -1,0 +1,93 @@
+// The parts of the BVH build (bvh/build.cpp): face references, ranges of them with their bounds, the
+// binned SAH split of a range and its partition.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "lancer/accel/bvh/bvh.hpp"
+#include "lancer/math/aabb.hpp"
+
+namespace lancer::bvh {
+
+// One face as the build sees it: its box and how many triangles it holds (a quad two).
+struct PrimRef {
+  float lo[3];
+  std::uint32_t face;
+  float hi[3];
+  std::uint32_t triangles;
+};
+static_assert(sizeof(PrimRef) == 32);
+
+struct Box {
+  float lo[3] = {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
+                 std::numeric_limits<float>::infinity()};
+  float hi[3] = {-std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                 -std::numeric_limits<float>::infinity()};
+
+  void extend(const float* lower, const float* upper) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], lower[a]);
+      hi[a] = std::max(hi[a], upper[a]);
+    }
+  }
+  void extend(const Box& b) { extend(b.lo, b.hi); }
+  bool empty() const { return lo[0] > hi[0]; }
+  float area() const {
+    if (empty()) return 0.0f;
+    const float x = hi[0] - lo[0], y = hi[1] - lo[1], z = hi[2] - lo[2];
+    return 2.0f * (x * y + y * z + z * x);
+  }
+  Aabb aabb() const {
+    Aabb box;
+    if (!empty()) box = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+    return box;
+  }
+};
+
+// Binary splits deeper than this take the middle reference (a balanced tree below), so that the
+// traversal's fixed stack always suffices however the centroids fall.
+constexpr std::uint32_t kMaxBinnedDepth = 48;
+static_assert(kMaxBinnedDepth + 32 <= BvhNode::kMaxDepth);
+
+enum class SplitKind : std::uint8_t { Leaf, Binned, Median };
+
+// How a range is split: at a bin boundary of its centroids along an axis, at its middle reference
+// (centroids too close to bin), or not at all.
+struct Split {
+  SplitKind kind = SplitKind::Leaf;
+  int axis = 0;
+  int bin = 0;  // the left side holds bins [0, bin)
+  float cost = 0;
+};
+
+// References [begin, end) with the union of their boxes, of their centroids (as lo + hi, the
+// centroid doubled) and the sum of their triangles.
+struct Range {
+  std::uint32_t begin = 0, end = 0;
+  std::uint32_t triangles = 0;
+  std::uint32_t depth = 0;  // of the binary split that made it
+  Box bounds, centroids;
+  Split split;
+
+  std::size_t count() const { return end - begin; }
+};
+
+Range rangeOf(const PrimRef* refs, std::uint32_t begin, std::uint32_t end);
+
+// The binned SAH choice for `range` (on `threads` threads; the answer is the same on any number).
+Split chooseSplit(const PrimRef* refs, const Range& range, const BvhBuildOptions& options, int threads);
+
+// Splits `range` as its split says (references reordered in place), giving both sides' bounds.
+void partition(PrimRef* refs, const Range& range, Range& left, Range& right);
+
+struct GatheredFaces {
+  std::vector<PrimRef> refs;            // faces of the tree, in face order
+  std::vector<PackedTriangle> slivers;  // faces with a sliver half, as triangles in face order
+};
+GatheredFaces gatherFaces(std::span<const Vec3> positions, std::span<const MeshFace> faces, int threads);
+
+}  // namespace lancer::bvh

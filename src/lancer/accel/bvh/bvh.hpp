@@ -1,0 +1,112 @@
+// The default accelerator: a bounding volume hierarchy of 8-wide nodes (Wald, Benthin & Boulos 2008,
+// "Getting rid of packets"; Embree's BVH8), built by binned SAH over the faces, with the children's
+// boxes tested in one AVX2 step and leaves of pre-gathered triangles. Answers equal NaiveAccel's
+// exactly (the shared watertight test, ties to the lower face), so images equal the kd-tree's.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "lancer/accel/accel_stats.hpp"
+#include "lancer/accel/bvh/node.hpp"
+#include "lancer/accel/hit.hpp"
+#include "lancer/accel/hit_filter.hpp"
+#include "lancer/accel/ray_packet.hpp"
+#include "lancer/accel/triangle_intersect.hpp"
+#include "lancer/math/aabb.hpp"
+#include "lancer/mesh/mesh.hpp"
+
+namespace lancer {
+
+struct BvhBuildOptions {
+  // SAH cost constants of a binary split (the wide nodes are collapsed from binary splits): a node
+  // step and a triangle test, in the same unit.
+  float traversalCost = 1.0f;
+  float intersectionCost = 1.0f;
+  // Build threads; 0 uses every hardware thread. The tree does not depend on it.
+  int threads = 0;
+  // Ranges of more face references than this are split in the parallel top (binning on every
+  // thread); below, whole subtrees go to the threads. 0 picks faces / (4 threads). Only the schedule
+  // changes with it, never the tree (tests set it low).
+  std::uint32_t parallelTopAbove = 0;
+};
+
+class Bvh {
+ public:
+  static Bvh build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                   const BvhBuildOptions& options = {});
+
+  // Closest hit with t in (tMin, tMax), ties to the lower face; false (hit untouched) when none.
+  bool intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const;
+  // Any hit with t in (tMin, tMax): the shadow-ray query, stops at the first blocker.
+  bool occluded(const Ray& ray, float tMin, float tMax) const;
+  // The same two queries seeing only the hits `filter` keeps.
+  bool intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const;
+  bool occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const;
+
+  // The packet queries (bvh/packet_traversal.cpp): the active lanes walk the tree once together,
+  // each child box tested for every lane, each leaf triangle for the lanes that reached it. Each
+  // lane's answer is the single ray's, to the bit. Return the lanes that hit (or are occluded).
+  std::uint32_t intersect(const RayPacket& packet, std::uint32_t active,
+                          std::span<Hit, kPacketSize> hits) const;
+  std::uint32_t occluded(const RayPacket& packet, std::uint32_t active) const;
+  std::uint32_t intersect(const RayPacket& packet, std::uint32_t active, const HitFilter& filter,
+                          std::span<Hit, kPacketSize> hits) const;
+  std::uint32_t occluded(const RayPacket& packet, std::uint32_t active, const HitFilter& filter) const;
+
+  // Refit (bvh/refit.cpp): the same faces at new `positions` (a deformed time step: same vertex
+  // count, same topology), the tree kept and its boxes recomputed bottom up. Returns false, leaving
+  // the tree unusable, when it cannot keep the answers exact (a face turned into a sliver, or the
+  // vertex count changed): build again then. After a refit, sahGrowth() says how much worse the
+  // kept tree is than when it was built; rebuildPays() is the rule for when a new build is worth its
+  // time (bench/RESULTS.md measures refit at about a tenth of a build).
+  // On `threads` threads (0: every core); the result does not depend on it.
+  bool refit(std::span<const Vec3> positions, std::span<const MeshFace> faces, int threads = 0);
+  double sahGrowth() const { return builtSahCost_ > 0 ? stats_.sahCost / builtSahCost_ : 1.0; }
+  static constexpr double kRebuildAboveGrowth = 1.5;
+  bool rebuildPays() const { return sahGrowth() > kRebuildAboveGrowth; }
+
+  const AccelStats& stats() const { return stats_; }
+  const Aabb& bounds() const { return bounds_; }
+
+  // For tests: the nodes (root at 0, depth first) and the triangles in leaf order.
+  std::span<const BvhNode> nodes() const { return nodes_; }
+  std::span<const PackedTriangle> triangles() const { return triangles_; }
+  std::span<const PackedTriangle> slivers() const { return slivers_; }
+
+ private:
+  friend struct BvhBuilder;
+
+  template <typename Filter>
+  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const;
+  template <typename Filter>
+  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const;
+  template <typename Filter>
+  std::uint32_t closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
+                            std::span<Hit, kPacketSize> hits) const;
+  template <typename Filter>
+  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
+  // The SAH cost of the tree as it stands, in the build's units (stats_.sahCost).
+  double sahCost() const;
+  // The scene box of the tree's triangles, padded, and the largest coordinate in it.
+  void setBounds(const Aabb& box) {
+    bounds_ = paddedBounds(box);
+    magnitude_ = box.empty() ? 0.0f : std::max(maxComponent(abs(box.lower)), maxComponent(abs(box.upper)));
+  }
+
+  std::vector<BvhNode> nodes_;
+  // In leaf order: a leaf is a run [first, first + count); a quad's two halves are neighbours in one
+  // leaf, (0,1,2) first, so every traversal order tests them as brute force does.
+  std::vector<PackedTriangle> triangles_;
+  // Faces with a near-degenerate half, tested for every ray (see isSliverTriangle); in face order.
+  std::vector<PackedTriangle> slivers_;
+  Aabb bounds_;          // of the tree's triangles, padded
+  float magnitude_ = 0;  // largest absolute coordinate, for the boxes' rounding slack
+  float traversalCost_ = 1, intersectionCost_ = 1;
+  double builtSahCost_ = 0;
+  AccelStats stats_;
+};
+
+}  // namespace lancer

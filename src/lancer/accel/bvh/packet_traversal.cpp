@@ -1,0 +1,271 @@
+// Packet traversal of the BVH: the active lanes of a packet walk the tree once together, each child
+// box tested for all eight lanes in one AVX2 step (the lanes that meet it go down with it), each
+// leaf triangle tested against the lanes that reached it in one step (kd/packet_frame.hpp's shared
+// packet test). A lane's answer does not depend on the order it meets leaves in (the closest hit is
+// the least (t, face) however found, a quad's halves are tested in order in one leaf), so every lane
+// gets the single ray's answer, to the bit. Unlike the kd-tree's packets, the rays need not run
+// the same way along each axis.
+#include <bit>
+#include <cmath>
+#include <type_traits>
+
+#include "lancer/accel/bvh/box_test.hpp"
+#include "lancer/accel/bvh/bvh.hpp"
+#include "lancer/accel/kd/packet_frame.hpp"
+
+namespace lancer {
+namespace {
+
+using namespace bvh;
+using namespace kd;
+
+// The single-ray queries, lane by lane (a lone lane, and builds without AVX2).
+template <typename Filter>
+std::uint32_t closestHitsOneByOne(const Bvh& bvh, const RayPacket& packet, std::uint32_t active,
+                                  const Filter& keeps, std::span<Hit, kPacketSize> hits) {
+  std::uint32_t hitLanes = 0;
+  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    bool hit;
+    if constexpr (std::is_same_v<Filter, HitFilter>) {
+      hit = bvh.intersect(packet.ray[i], packet.tMin[i], packet.tMax[i], keeps, hits[i]);
+    } else {
+      hit = bvh.intersect(packet.ray[i], packet.tMin[i], packet.tMax[i], hits[i]);
+    }
+    hitLanes |= hit ? 1u << i : 0u;
+  }
+  return hitLanes;
+}
+
+template <typename Filter>
+std::uint32_t anyHitsOneByOne(const Bvh& bvh, const RayPacket& packet, std::uint32_t active,
+                              const Filter& keeps) {
+  std::uint32_t hitLanes = 0;
+  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    bool hit;
+    if constexpr (std::is_same_v<Filter, HitFilter>) {
+      hit = bvh.occluded(packet.ray[i], packet.tMin[i], packet.tMax[i], keeps);
+    } else {
+      hit = bvh.occluded(packet.ray[i], packet.tMin[i], packet.tMax[i]);
+    }
+    hitLanes |= hit ? 1u << i : 0u;
+  }
+  return hitLanes;
+}
+
+#ifdef LANCER_PACKETS_AVX2
+
+// The packet's view for the box tests: per axis each lane's origin moved by its band to the lower
+// and the upper side (box.lower - lowEdge and box.upper - highEdge, times the inverse direction,
+// are where the lane meets the grown box's planes, whichever way it runs), its interval's start,
+// and the slack of its pruning.
+struct PacketBoxes {
+  __m256 lowEdge[3], highEdge[3];
+  __m256 tMin, eps;
+};
+
+// Sets up the lanes of `active` that meet the scene box (kept in `active`).
+void setUpBoxes(const RayPacket& packet, std::uint32_t& active, const Aabb& bounds, float magnitude,
+                PacketBoxes& boxes) {
+  alignas(32) float low[3][kPacketSize] = {}, high[3][kPacketSize] = {}, tMin[kPacketSize] = {},
+                    eps[kPacketSize] = {};
+  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    const Ray& ray = packet.ray[i];
+    float tEnter, tExit;
+    if (!intersectAabb(bounds, ray, packet.tMin[i], packet.tMax[i], tEnter, tExit)) {
+      active &= ~(1u << i);
+      continue;
+    }
+    eps[i] = kSlack * std::max(std::abs(tEnter), std::abs(tExit));
+    tMin[i] = packet.tMin[i];
+    const float band = kPlaneSlack * std::max(magnitude, maxComponent(abs(ray.origin)));
+    const float origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+    for (int a = 0; a < 3; ++a) {
+      low[a][i] = origin[a] + band;
+      high[a][i] = origin[a] - band;
+    }
+  }
+  for (int a = 0; a < 3; ++a) {
+    boxes.lowEdge[a] = _mm256_load_ps(low[a]);
+    boxes.highEdge[a] = _mm256_load_ps(high[a]);
+  }
+  boxes.tMin = _mm256_load_ps(tMin);
+  boxes.eps = _mm256_load_ps(eps);
+}
+
+struct alignas(32) PacketStackEntry {
+  __m256 tNear;
+  std::uint32_t child, lanes;
+  float key;  // the order of the children pushed together
+};
+
+// Walks the tree with the lanes `active`; Query::test(tri, lanes) tests a triangle on some lanes and
+// returns those that are done (any-hit: blocked), Query::bound() is each lane's pruning distance.
+// Returns the lanes that are done.
+template <typename Query>
+std::uint32_t walkPacket(std::span<const BvhNode> nodes, const PackedTriangle* triangles,
+                         const PacketFrame& f, const PacketBoxes& boxes, std::uint32_t active, Query& query) {
+  PacketStackEntry stack[BvhNode::kMaxDepth * (BvhNode::kWidth - 1) + 1];
+  int top = 0;
+  std::uint32_t done = 0, lanes = active, child = 0;
+  while (true) {
+    if (!BvhNode::isLeaf(child)) {
+      const BvhNode& node = nodes[child];
+      const __m256 limit = _mm256_add_ps(query.bound(), boxes.eps);
+      alignas(32) float tNear[BvhNode::kWidth][kPacketSize];
+      __m256 enterOf[BvhNode::kWidth];
+      std::uint32_t childLanes[BvhNode::kWidth];
+      std::uint32_t hitMask = 0;
+      for (int k = 0; k < BvhNode::kWidth && node.child[k] != BvhNode::kEmpty; ++k) {
+        __m256 enter = boxes.tMin, exit = limit;
+        for (int a = 0; a < 3; ++a) {
+          const __m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(node.lower[a][k]), boxes.lowEdge[a]),
+                                          f.invDirection[a]);
+          const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(node.upper[a][k]), boxes.highEdge[a]),
+                                          f.invDirection[a]);
+          enter = _mm256_max_ps(_mm256_min_ps(t0, t1), enter);
+          exit = _mm256_min_ps(_mm256_max_ps(t0, t1), exit);
+        }
+        childLanes[k] = laneMask(_mm256_cmp_ps(enter, exit, _CMP_LE_OQ)) & lanes;
+        if (childLanes[k] == 0) continue;
+        hitMask |= 1u << k;
+        enterOf[k] = enter;
+        _mm256_store_ps(tNear[k], enter);
+      }
+      if (hitMask != 0) {
+        if ((hitMask & (hitMask - 1)) == 0) {
+          const int k = std::countr_zero(hitMask);
+          child = node.child[k];
+          lanes = childLanes[k];
+          continue;
+        }
+        // Far to near onto the stack, by where the first lane that meets each child enters it.
+        const int base = top;
+        for (std::uint32_t m = hitMask; m != 0; m &= m - 1) {
+          const int k = std::countr_zero(m);
+          const float key = tNear[k][std::countr_zero(childLanes[k])];
+          int at = top++;
+          while (at > base && stack[at - 1].key < key) {
+            stack[at] = stack[at - 1];
+            --at;
+          }
+          stack[at] = {enterOf[k], node.child[k], childLanes[k], key};
+        }
+        --top;
+        child = stack[top].child;
+        lanes = stack[top].lanes;
+        continue;
+      }
+    } else {
+      const PackedTriangle* tri = triangles + BvhNode::leafFirst(child);
+      std::uint32_t testLanes = lanes;
+      for (std::uint32_t i = 0, count = BvhNode::leafCount(child); i < count && testLanes != 0; ++i) {
+        const std::uint32_t finished = query.test(tri[i], testLanes);
+        done |= finished;
+        testLanes &= ~finished;
+      }
+      if ((active & ~done) == 0) return done;
+    }
+    // The next entry with lanes not done that entered it before their bound.
+    while (true) {
+      if (top == 0) return done;
+      --top;
+      const __m256 limit = _mm256_add_ps(query.bound(), boxes.eps);
+      lanes = stack[top].lanes & ~done & laneMask(_mm256_cmp_ps(stack[top].tNear, limit, _CMP_LE_OQ));
+      if (lanes != 0) break;
+    }
+    child = stack[top].child;
+  }
+}
+
+#endif  // LANCER_PACKETS_AVX2
+
+}  // namespace
+
+template <typename Filter>
+std::uint32_t Bvh::closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
+                               std::span<Hit, kPacketSize> hits) const {
+  active &= kAllLanes;
+#ifdef LANCER_PACKETS_AVX2
+  if (std::popcount(active) < 2) return closestHitsOneByOne(*this, packet, active, keeps, hits);
+  PacketFrame frame;
+  loadPacketRays(packet, active, frame);
+  PacketClosestHit<Filter> query{packet, frame, keeps, {}, {}, {}};
+  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    query.best[i] = Hit{packet.tMax[i], Hit{}.face};
+    query.upper[i] = packet.tMax[i];
+    for (const PackedTriangle& tri : slivers_) {
+      takeIfCloser(testTriangle(tri, packet.ray[i], packet.tMin[i], query.upper[i]), tri.face, packet.ray[i],
+                   packet.tMax[i], keeps, query.best[i], query.upper[i]);
+    }
+    query.bestT[i] = query.best[i].t;
+  }
+  std::uint32_t inBox = active;
+  PacketBoxes boxes;
+  setUpBoxes(packet, inBox, bounds_, magnitude_, boxes);
+  if (inBox != 0) walkPacket(nodes_, triangles_.data(), frame, boxes, inBox, query);
+  std::uint32_t hitLanes = 0;
+  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    if (!query.best[i].valid()) continue;
+    hits[i] = query.best[i];
+    hitLanes |= 1u << i;
+  }
+  return hitLanes;
+#else
+  return closestHitsOneByOne(*this, packet, active, keeps, hits);
+#endif
+}
+
+template <typename Filter>
+std::uint32_t Bvh::anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const {
+  active &= kAllLanes;
+#ifdef LANCER_PACKETS_AVX2
+  if (std::popcount(active) < 2) return anyHitsOneByOne(*this, packet, active, keeps);
+  std::uint32_t blocked = 0;
+  for (std::uint32_t lanes = active; lanes != 0 && !slivers_.empty(); lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    for (const PackedTriangle& tri : slivers_) {
+      const float t = intersectTriangle(tri, packet.ray[i], packet.tMin[i], packet.tMax[i]);
+      if (t >= 0.0f && keeps(packet.ray[i], tri.face, t)) {
+        blocked |= 1u << i;
+        break;
+      }
+    }
+  }
+  std::uint32_t inBox = active & ~blocked;
+  PacketBoxes boxes;
+  setUpBoxes(packet, inBox, bounds_, magnitude_, boxes);
+  if (inBox == 0) return blocked;
+  PacketFrame frame;
+  loadPacketRays(packet, inBox, frame);
+  PacketAnyHit<Filter> query{packet, frame, keeps, {}};
+  for (int i = 0; i < kPacketSize; ++i) query.tMax[i] = (inBox >> i & 1u) != 0 ? packet.tMax[i] : 0.0f;
+  return blocked | walkPacket(nodes_, triangles_.data(), frame, boxes, inBox, query);
+#else
+  return anyHitsOneByOne(*this, packet, active, keeps);
+#endif
+}
+
+std::uint32_t Bvh::intersect(const RayPacket& packet, std::uint32_t active,
+                             std::span<Hit, kPacketSize> hits) const {
+  return closestHits(packet, active, KeepEveryHit{}, hits);
+}
+
+std::uint32_t Bvh::occluded(const RayPacket& packet, std::uint32_t active) const {
+  return anyHits(packet, active, KeepEveryHit{});
+}
+
+std::uint32_t Bvh::intersect(const RayPacket& packet, std::uint32_t active, const HitFilter& filter,
+                             std::span<Hit, kPacketSize> hits) const {
+  return closestHits(packet, active, filter, hits);
+}
+
+std::uint32_t Bvh::occluded(const RayPacket& packet, std::uint32_t active, const HitFilter& filter) const {
+  return anyHits(packet, active, filter);
+}
+
+}  // namespace lancer

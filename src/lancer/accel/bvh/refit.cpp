@@ -1,0 +1,142 @@
+// Refit: the tree of one time step kept for the next, whose vertices moved (a deformed shape, same
+// faces): the leaves' triangles are gathered again from the new positions and every box recomputed
+// bottom up (children lie after their parents in the depth-first layout, so one backward pass
+// suffices). Answers stay exact as long as no triangle turned into a sliver; the SAH cost of the
+// kept tree says when a rebuild pays.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+#include "lancer/accel/bvh/bvh.hpp"
+#include "lancer/util/parallel_for.hpp"
+
+namespace lancer {
+
+namespace {
+
+// Corners of the triangle a face's half `half` is (packTriangles's order).
+PackedTriangle triangleOf(std::span<const Vec3> positions, const MeshFace& face, std::uint32_t id, int half) {
+  return {positions[face.vertex[0]], positions[face.vertex[1 + half]], positions[face.vertex[2 + half]], id};
+}
+
+bool validFace(const MeshFace& face, std::size_t vertexCount) {
+  for (int k = 0; k < face.cornerCount(); ++k) {
+    if (face.vertex[k] >= vertexCount) return false;
+  }
+  return true;
+}
+
+// Rewrites `triangles` (a quad's halves neighbours, (0,1,2) first) from `positions`; false when a face
+// is out of range or, with `noSlivers`, a triangle is now a sliver.
+bool regather(std::vector<PackedTriangle>& triangles, std::span<const Vec3> positions,
+              std::span<const MeshFace> faces, bool noSlivers, int threads) {
+  // Which half each triangle is, read before any is rewritten.
+  std::vector<std::uint8_t> half(triangles.size());
+  for (std::size_t i = 1; i < triangles.size(); ++i) half[i] = triangles[i - 1].face == triangles[i].face;
+  std::atomic<bool> ok{true};
+  parallelFor(triangles.size(), threads, 1 << 14, [&](std::size_t i) {
+    const std::uint32_t id = triangles[i].face;
+    if (id >= faces.size() || !validFace(faces[id], positions.size()) || (half[i] && !faces[id].isQuad())) {
+      ok = false;
+      return;
+    }
+    const PackedTriangle tri = triangleOf(positions, faces[id], id, half[i]);
+    if (noSlivers && isSliverTriangle(tri.v0, tri.v1, tri.v2)) ok = false;
+    triangles[i] = tri;
+  });
+  return ok;
+}
+
+}  // namespace
+
+bool Bvh::refit(std::span<const Vec3> positions, std::span<const MeshFace> faces, int threads) {
+  if (!regather(triangles_, positions, faces, true, threads) ||
+      !regather(slivers_, positions, faces, false, threads))
+    return false;
+  // Leaf boxes first, node by node on every thread; then the inner children, backwards.
+  parallelFor(nodes_.size(), threads, 256, [&](std::size_t n) {
+    BvhNode& node = nodes_[n];
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      const std::uint32_t child = node.child[k];
+      if (child == BvhNode::kEmpty || !BvhNode::isLeaf(child)) continue;
+      Aabb box;
+      const PackedTriangle* tri = triangles_.data() + BvhNode::leafFirst(child);
+      for (std::uint32_t i = 0; i < BvhNode::leafCount(child); ++i) {
+        box.extend(tri[i].v0);
+        box.extend(tri[i].v1);
+        box.extend(tri[i].v2);
+      }
+      for (int a = 0; a < 3; ++a) {
+        node.lower[a][k] = box.lower[a] + 0.0f;
+        node.upper[a][k] = box.upper[a] + 0.0f;
+      }
+    }
+  });
+  for (std::size_t n = nodes_.size(); n-- > 0;) {
+    BvhNode& node = nodes_[n];
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      const std::uint32_t child = node.child[k];
+      if (child == BvhNode::kEmpty || BvhNode::isLeaf(child)) continue;
+      const BvhNode& below = nodes_[child];
+      for (int a = 0; a < 3; ++a) {
+        float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+        for (int c = 0; c < BvhNode::kWidth; ++c) {
+          lo = std::min(lo, below.lower[a][c]);
+          hi = std::max(hi, below.upper[a][c]);
+        }
+        node.lower[a][k] = lo;
+        node.upper[a][k] = hi;
+      }
+    }
+  }
+  Aabb box;
+  for (const PackedTriangle& tri : triangles_) {
+    box.extend(tri.v0);
+    box.extend(tri.v1);
+    box.extend(tri.v2);
+  }
+  setBounds(box);
+  stats_.sahCost = sahCost();
+  return true;
+}
+
+double Bvh::sahCost() const {
+  if (nodes_.empty()) return 0.0;
+  auto area = [](const BvhNode& node, int k) {
+    const float x = node.upper[0][k] - node.lower[0][k], y = node.upper[1][k] - node.lower[1][k],
+                z = node.upper[2][k] - node.lower[2][k];
+    return x < 0 ? 0.0 : 2.0 * (double(x) * y + double(y) * z + double(z) * x);
+  };
+  // Each node's area is the union of its children's boxes, which its parent holds.
+  std::vector<double> nodeArea(nodes_.size(), 0.0);
+  {
+    Aabb root;
+    const BvhNode& node = nodes_[0];
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      if (node.child[k] == BvhNode::kEmpty) continue;
+      root.extend(Vec3{node.lower[0][k], node.lower[1][k], node.lower[2][k]});
+      root.extend(Vec3{node.upper[0][k], node.upper[1][k], node.upper[2][k]});
+    }
+    nodeArea[0] = root.empty() ? 0.0 : double(root.surfaceArea());
+  }
+  const double rootArea = nodeArea[0] > 0 ? nodeArea[0] : 1.0;
+  if (nodeArea[0] <= 0) nodeArea[0] = 1.0;
+  double cost = 0;
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    const BvhNode& node = nodes_[n];
+    cost += traversalCost_ * nodeArea[n] / rootArea;
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      const std::uint32_t child = node.child[k];
+      if (child == BvhNode::kEmpty) continue;
+      if (BvhNode::isLeaf(child)) {
+        cost += intersectionCost_ * BvhNode::leafCount(child) * area(node, k) / rootArea;
+      } else {
+        nodeArea[child] = area(node, k);
+      }
+    }
+  }
+  return cost;
+}
+
+}  // namespace lancer

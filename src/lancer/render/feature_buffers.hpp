@@ -1,0 +1,51 @@
+// What the first visible surface of each pixel is, for the denoiser and for EXR layers: its albedo,
+// normal and distance, averaged over the pixel's camera samples. A primary-ray pass of its own, made
+// only when asked for (--denoise, --aovs), so the integrators' loops never carry it.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "lancer/math/ray.hpp"
+#include "lancer/math/vec3.hpp"
+
+namespace lancer {
+
+// Per pixel, rows top to bottom. Samples that see nothing count the background as albedo and a zero
+// normal; depth averages the samples that hit and is +infinity where none did.
+struct FeatureBuffers {
+  int width = 0, height = 0;
+  std::vector<Vec3> albedo;  // the colour the surface multiplies light by (kd, the field colour, edges)
+  std::vector<Vec3> normal;  // world space, towards the viewer; not renormalised after averaging
+  std::vector<float> depth;  // world units from the eye along the ray (orthographic: from the view plane)
+
+  FeatureBuffers() = default;
+  FeatureBuffers(int w, int h)
+      : width(w),
+        height(h),
+        albedo(static_cast<std::size_t>(w) * static_cast<std::size_t>(h)),
+        normal(albedo.size()),
+        depth(albedo.size()) {}
+  std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+  }
+};
+
+// One camera sample's view of the first surface.
+struct SurfaceFeatures {
+  Vec3 albedo{0, 0, 0};
+  Vec3 normal{0, 0, 0};
+  float depth = 0;
+  bool hit = false;
+};
+
+class SceneQueries;
+class EdgePaint;
+
+// What `ray` sees first, as the integrators see it (cut views, caps, the shadow catcher, field
+// colours, drawn edges), without any light. `background`: the albedo of a miss and of the catcher;
+// `linearFieldColors`: field colours decoded to linear, as an sRGB render shows them.
+SurfaceFeatures surfaceFeatures(const SceneQueries& queries, const EdgePaint& paint, const Ray& ray,
+                                const Vec3& background, bool linearFieldColors);
+
+}  // namespace lancer

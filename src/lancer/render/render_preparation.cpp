@@ -1,0 +1,80 @@
+#include "lancer/render/render_preparation.hpp"
+
+#include <fmt/format.h>
+
+#include <utility>
+#include <vector>
+
+#include "lancer/util/memory_budget.hpp"
+#include "lancer/util/stopwatch.hpp"
+
+namespace lancer {
+
+std::uint64_t imageMemoryBytes(const RenderSettings& settings, int threads, ImageBuffer buffer) {
+  // libpng's and zlib's state, and the GIF and BMP writers' own, stay well under this.
+  constexpr std::uint64_t kWriterStateBytes = 1 << 20;
+  const std::uint64_t pixels =
+      static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
+  // The denoiser holds the whole image, its feature buffers, its guides and two work images.
+  constexpr std::uint64_t kDenoiseBytesPerPixel = 160;
+  if (settings.denoise) return saturatingProduct(pixels, kDenoiseBytesPerPixel);
+  if (buffer == ImageBuffer::Whole) return saturatingProduct(pixels, sizeof(Rgba) + 4);
+  return bandMemoryBytes(settings.width, settings.height, threads) +
+         static_cast<std::uint64_t>(settings.width) * 4 + kWriterStateBytes;
+}
+
+void requireImageMemory(const RenderSettings& settings, int threads, ImageBuffer buffer,
+                        const std::string& source) {
+  const std::string what =
+      settings.denoise
+          ? fmt::format("a {}x{} image with the denoiser's buffers", settings.width, settings.height)
+      : buffer == ImageBuffer::Whole ? fmt::format("a {}x{} image", settings.width, settings.height)
+                                     : fmt::format("a {}x{} image rendered in bands of {} rows",
+                                                   settings.width, settings.height, kTileSize);
+  requireMemory(imageMemoryBytes(settings, threads, buffer), SourceLocation{source}, what);
+}
+
+Accelerator buildAccelerator(const Scene& scene, AccelKind kind, int threads) {
+  KdBuildOptions options;
+  options.threads = threads;  // the caller's thread count bounds the build too, not only the trace
+  return Accelerator::build(scene.geometry.positions, scene.geometry.faces, kind, options);
+}
+
+PreparedRender prepareRender(RenderRequest request) {
+  const Stopwatch load;
+  SceneDescription& description = request.description;
+  const Mesh* quickLookMesh = request.quickLookMesh ? &*request.quickLookMesh : nullptr;
+  applyRenderOverrides(description, request.overrides, quickLookMesh);
+  const ImageBuffer buffer =
+      request.imageBuffer ? request.imageBuffer(description.render) : ImageBuffer::Whole;
+  requireImageMemory(description.render, request.threads, buffer, description.path);
+
+  StageTimes stages = std::move(request.stages);
+  const double secondsBefore = stages.totalSeconds();
+  std::vector<Mesh> meshes;
+  if (request.quickLookMesh)
+    meshes.push_back(std::move(*request.quickLookMesh));
+  else
+    meshes = readSceneMeshes(description, request.threads, &stages);
+  if (request.withMeshes) request.withMeshes(description, meshes);
+  Scene scene;
+  std::vector<Mesh> kept;
+  if (request.keepMeshes) {
+    scene = buildSceneAt(description, meshes, request.threads, &stages);
+    kept = std::move(meshes);
+  } else {
+    scene = buildScene(description, std::move(meshes), request.threads, &stages);
+  }
+  const double loadSeconds = secondsBefore + load.seconds();
+
+  const Stopwatch build;
+  Accelerator accelerator = buildAccelerator(scene, request.accel, request.threads);
+  const double buildSeconds = build.seconds();
+  stages.add("accel build", buildSeconds);
+
+  Camera camera = makeCamera(description.camera, scene, description.render);
+  return PreparedRender{std::move(description), std::move(scene), std::move(accelerator), camera,
+                        std::move(stages),      loadSeconds,      buildSeconds,           std::move(kept)};
+}
+
+}  // namespace lancer

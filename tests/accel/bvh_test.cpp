@@ -1,0 +1,203 @@
+// The BVH's own guarantees (its answers against brute force are in kd_tree_property_test.cpp and
+// packet_query_property_test.cpp, with every accelerator): the layout's invariants, the same tree on
+// any thread count, refit answering as a rebuild, and the rule for when a rebuild pays.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <string>
+
+#include "lancer/accel/accelerator.hpp"
+#include "lancer/accel/naive_accel.hpp"
+#include "lancer/mesh/msh_reader.hpp"
+#include "support/accel_test_geometry.hpp"
+
+namespace lancer {
+namespace {
+
+using test::Soup;
+
+Soup fixture(const std::string& name) {
+  const Mesh mesh = readMsh(std::string(LANCER_TEST_DATA_DIR) + "/" + name);
+  return Soup{mesh.positions, mesh.faces};
+}
+
+BvhBuildOptions onThreads(int threads) {
+  BvhBuildOptions options;
+  options.threads = threads;
+  return options;
+}
+
+TEST(Bvh, EmptyMeshHasNoHitsAndOneTriangleIsFound) {
+  const Bvh empty = Bvh::build({}, {}, onThreads(1));
+  Hit hit;
+  EXPECT_FALSE(empty.intersect(Ray({0, 0, 1}, {0, 0, -1}), 0.0f, 1e30f, hit));
+  EXPECT_FALSE(empty.occluded(Ray({0, 0, 1}, {0, 0, -1}), 0.0f, 1e30f));
+  Soup soup;
+  soup.triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  const Bvh one = Bvh::build(soup.positions, soup.faces, onThreads(1));
+  ASSERT_TRUE(one.intersect(Ray({0.25f, 0.25f, 1}, {0, 0, -1}), 0.0f, 1e30f, hit));
+  EXPECT_EQ(hit.face, 0u);
+  EXPECT_EQ(hit.t, 1.0f);
+  EXPECT_FALSE(one.intersect(Ray({0.25f, 0.25f, 1}, {0, 0, -1}), 0.0f, 1.0f, hit)) << "open interval";
+  EXPECT_EQ(one.stats().kind, "bvh");
+  EXPECT_EQ(one.stats().triangles, 1u);
+}
+
+// Every tree triangle in exactly one leaf of at most eight; a quad's halves side by side in one leaf,
+// (0,1,2) first; children's boxes hold their triangles.
+TEST(Bvh, LayoutInvariants) {
+  const Soup soup = fixture("accel/quad_box.msh");
+  const Bvh bvh = Bvh::build(soup.positions, soup.faces, onThreads(2));
+  const auto triangles = bvh.triangles();
+  std::vector<int> seen(triangles.size(), 0);
+  for (const BvhNode& node : bvh.nodes()) {
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      const std::uint32_t child = node.child[k];
+      if (child == BvhNode::kEmpty || !BvhNode::isLeaf(child)) continue;
+      const std::uint32_t first = BvhNode::leafFirst(child), count = BvhNode::leafCount(child);
+      ASSERT_LE(count, BvhNode::kMaxLeafTriangles);
+      ASSERT_LE(first + count, triangles.size());
+      for (std::uint32_t i = first; i < first + count; ++i) {
+        ++seen[i];
+        for (const Vec3& p : {triangles[i].v0, triangles[i].v1, triangles[i].v2}) {
+          for (int a = 0; a < 3; ++a) {
+            EXPECT_GE(p[a], node.lower[a][k]);
+            EXPECT_LE(p[a], node.upper[a][k]);
+          }
+        }
+        const MeshFace& face = soup.faces[triangles[i].face];
+        if (!face.isQuad()) continue;
+        const bool second = i > 0 && triangles[i - 1].face == triangles[i].face;
+        if (!second) {
+          ASSERT_LT(i + 1, first + count) << "a quad's halves share a leaf";
+          EXPECT_EQ(triangles[i + 1].face, triangles[i].face);
+        }
+        const Vec3 expectedV1 = soup.positions[face.vertex[second ? 2 : 1]];
+        EXPECT_EQ(triangles[i].v1, expectedV1);
+      }
+    }
+  }
+  for (int count : seen) EXPECT_EQ(count, 1);
+  EXPECT_EQ(bvh.stats().triangleReferences, triangles.size());
+}
+
+TEST(Bvh, SameTreeByteForByteOnOneToFourThreads) {
+  std::mt19937 rng(3);
+  Soup soup = test::randomSoup(rng, 20000);
+  const Soup quads = fixture("accel/quad_box.msh");
+  const auto base = static_cast<std::uint32_t>(soup.positions.size());
+  soup.positions.insert(soup.positions.end(), quads.positions.begin(), quads.positions.end());
+  for (MeshFace face : quads.faces) {
+    for (int c = 0; c < face.cornerCount(); ++c) face.vertex[c] += base;
+    soup.faces.push_back(face);
+  }
+  auto bytesOf = [](const Bvh& bvh) {
+    std::string bytes(reinterpret_cast<const char*>(bvh.nodes().data()), bvh.nodes().size_bytes());
+    bytes.append(reinterpret_cast<const char*>(bvh.triangles().data()), bvh.triangles().size_bytes());
+    return bytes;
+  };
+  const std::string one = bytesOf(Bvh::build(soup.positions, soup.faces, onThreads(1)));
+  for (int threads : {1, 2, 3, 4}) {
+    for (std::uint32_t topAbove : {0u, 64u, 1000u}) {
+      SCOPED_TRACE(std::to_string(threads) + " threads, parallel top above " + std::to_string(topAbove));
+      BvhBuildOptions options = onThreads(threads);
+      options.parallelTopAbove = topAbove;
+      EXPECT_TRUE(bytesOf(Bvh::build(soup.positions, soup.faces, options)) == one);
+    }
+  }
+}
+
+// A smooth warp of every vertex (a deformed time step): same faces, moved nodes.
+std::vector<Vec3> warped(const std::vector<Vec3>& positions, float amount) {
+  std::vector<Vec3> out = positions;
+  for (Vec3& p : out) {
+    p = p + Vec3{std::sin(3.0f * p.y), std::sin(2.0f * p.z + 1.0f), std::cos(2.5f * p.x)} * amount;
+  }
+  return out;
+}
+
+bool sameBits(const Hit& a, const Hit& b) {
+  return a.face == b.face && std::bit_cast<std::uint32_t>(a.t) == std::bit_cast<std::uint32_t>(b.t) &&
+         std::bit_cast<std::uint32_t>(a.b1) == std::bit_cast<std::uint32_t>(b.b1) &&
+         std::bit_cast<std::uint32_t>(a.b2) == std::bit_cast<std::uint32_t>(b.b2);
+}
+
+TEST(Bvh, RefitAnswersAsARebuildAndBruteForce) {
+  for (const std::string name : {"accel/holed_block.msh", "accel/quad_box.msh"}) {
+    SCOPED_TRACE(name);
+    const Soup soup = fixture(name);
+    Aabb box;
+    for (const Vec3& p : soup.positions) box.extend(p);
+    Bvh refitted = Bvh::build(soup.positions, soup.faces, onThreads(2));
+    ASSERT_TRUE(refitted.refit(soup.positions, soup.faces, 2));
+    EXPECT_NEAR(refitted.sahGrowth(), 1.0, 1e-9) << "refit in place changes nothing";
+    const std::vector<Vec3> moved = warped(soup.positions, 0.05f * maxComponent(box.extent()));
+    ASSERT_TRUE(refitted.refit(moved, soup.faces, 3));
+    const Bvh rebuilt = Bvh::build(moved, soup.faces, onThreads(1));
+    const NaiveAccel naive(moved, soup.faces);
+    const Soup movedSoup{moved, soup.faces};
+    const KdTree planes = KdTree::buildSah(moved, soup.faces);
+    std::mt19937 rng(9);
+    int differences = 0, hits = 0;
+    for (const test::TestRay& r : test::adversarialRays(movedSoup, planes, rng, 4000)) {
+      Hit a, b, c;
+      const bool hitA = refitted.intersect(r.ray, r.tMin, r.tMax, a);
+      const bool hitB = rebuilt.intersect(r.ray, r.tMin, r.tMax, b);
+      const bool hitC = naive.intersect(r.ray, r.tMin, r.tMax, c);
+      hits += hitA;
+      const bool same = hitA == hitB && hitA == hitC && (!hitA || (sameBits(a, b) && a.face == c.face)) &&
+                        refitted.occluded(r.ray, r.tMin, r.tMax) == rebuilt.occluded(r.ray, r.tMin, r.tMax);
+      if (!same && ++differences <= 5) ADD_FAILURE() << "refit " << a.face << " rebuild " << b.face;
+    }
+    EXPECT_EQ(differences, 0);
+    EXPECT_GT(hits, 1000);
+    EXPECT_GT(refitted.sahGrowth(), 0.5);
+  }
+}
+
+TEST(Bvh, RefitRefusesWhatItCannotKeepExact) {
+  Soup soup;
+  soup.triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  soup.triangle({2, 0, 0}, {3, 0, 0}, {2, 1, 0});
+  Bvh bvh = Bvh::build(soup.positions, soup.faces, onThreads(1));
+  std::vector<Vec3> flattened = soup.positions;
+  for (int c = 0; c < 3; ++c)  // the first triangle collapses onto a line: a sliver
+    flattened[soup.faces[0].vertex[c]] = {float(c), 0.0f, 0.0f};
+  EXPECT_FALSE(bvh.refit(flattened, soup.faces));
+  EXPECT_FALSE(bvh.refit(std::vector<Vec3>(2), soup.faces)) << "too few vertices";
+}
+
+TEST(Bvh, AcceleratorUpdateRefitsTheBvhAndRebuildsTheRest) {
+  const Soup soup = fixture("accel/holed_block.msh");
+  Aabb box;
+  for (const Vec3& p : soup.positions) box.extend(p);
+  const std::vector<Vec3> moved = warped(soup.positions, 0.02f * maxComponent(box.extent()));
+  Accelerator bvh = Accelerator::build(soup.positions, soup.faces, AccelKind::Bvh);
+  EXPECT_TRUE(bvh.update(moved, soup.faces));
+  Accelerator kd = Accelerator::build(soup.positions, soup.faces, AccelKind::KdTreeSah);
+  EXPECT_FALSE(kd.update(moved, soup.faces));
+  // A warp that scrambles the vertices makes the kept tree much worse: a rebuild pays.
+  std::vector<Vec3> scrambled = soup.positions;
+  std::mt19937 rng(4);
+  std::shuffle(scrambled.begin(), scrambled.end(), rng);
+  Bvh kept = Bvh::build(soup.positions, soup.faces, onThreads(1));
+  if (kept.refit(scrambled, soup.faces)) {
+    EXPECT_TRUE(kept.rebuildPays()) << kept.sahGrowth();
+  }
+  const NaiveAccel naive(moved, soup.faces);
+  std::mt19937 rays(5);
+  for (int i = 0; i < 500; ++i) {
+    const Ray ray(test::randomPoint(rays, box.lower, box.upper), test::randomDirection(rays));
+    Hit expected, a, b;
+    ASSERT_EQ(naive.intersect(ray, 0.0f, 1e30f, expected), bvh.intersect(ray, 0.0f, 1e30f, a));
+    ASSERT_EQ(naive.intersect(ray, 0.0f, 1e30f, expected), kd.intersect(ray, 0.0f, 1e30f, b));
+    EXPECT_EQ(a.face, expected.face);
+    EXPECT_EQ(b.face, expected.face);
+  }
+}
+
+}  // namespace
+}  // namespace lancer
