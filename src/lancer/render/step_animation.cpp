@@ -98,14 +98,15 @@ void StepScenes::buildAt(double time) {
                                       return std::equal(a.vertex, a.vertex + 4, b.vertex);
                                     });
   scene_.emplace(std::move(next));
+  const SceneGeometry& built = scene_->geometry;  // `geometry` was moved with `next`
   if (first || warped) {
     const Stopwatch build;
     KdBuildOptions options;
     options.threads = threads_;
     if (sameFaces && accelerator_) {
-      if (accelerator_->update(geometry.positions, geometry.faces, options)) ++refits_;
+      if (accelerator_->update(built.positions, built.faces, options)) ++refits_;
     } else {
-      accelerator_.emplace(Accelerator::build(geometry.positions, geometry.faces, accel_, options));
+      accelerator_.emplace(Accelerator::build(built.positions, built.faces, accel_, options));
     }
     if (!first) accelSeconds_ += build.seconds();
   }
