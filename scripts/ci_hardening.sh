@@ -19,7 +19,8 @@ SKIP=${SKIP:-}
 jobs=$(nproc)
 
 packages=(g++ cmake ninja-build pkg-config libfmt-dev libpng-dev libgif-dev libtomlplusplus-dev libcli11-dev
-          libgtest-dev clang libclang-rt-14-dev clang-format clang-tidy libopenexr-dev)
+          libfreetype-dev libfontconfig-dev fonts-dejavu-core libgtest-dev clang libclang-rt-14-dev clang-format
+          clang-tidy libopenexr-dev)
 missing=()
 for package in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then

@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake ninja-build pkg-config libfmt-dev libpng-dev libgif-dev libtomlplusplus-dev
+packages=(g++ cmake ninja-build pkg-config libfmt-dev libpng-dev libgif-dev libfreetype-dev libfontconfig-dev fonts-dejavu-core libtomlplusplus-dev
           libcli11-dev libgtest-dev libbenchmark-dev
           python3-dev pybind11-dev python3-numpy python3-pytest python3-gmsh
           libopenmpi-dev openmpi-bin libopenexr-dev)

@@ -106,8 +106,7 @@ def from_gmsh(dim=2, name=None):
 _VIEW_OPTIONS = ["Trackball", "TrackballQuaternion0", "TrackballQuaternion1", "TrackballQuaternion2",
                  "TrackballQuaternion3", "RotationX", "RotationY", "RotationZ", "TranslationX", "TranslationY",
                  "TranslationZ", "ScaleX", "ScaleY", "ScaleZ", "Orthographic", "ClipFactor",
-                 "DisplayBorderFactor", "GraphicsWidth", "GraphicsHeight", "MenuWidth", "ShowModuleMenu",
-                 "DetachedMenu"]
+                 "DisplayBorderFactor"]
 
 
 def camera_from_gmsh():

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "lancer/image/color_map.hpp"
-#include "lancer/image/tiny_font.hpp"
+#include "lancer/image/text.hpp"
 
 namespace lancer {
 namespace {
@@ -82,7 +82,7 @@ TEST(ColorBar, BarRunsFromLowAtTheBottomToHighAtTheTopWithLabels) {
   // Labels: ink to the right of the bar on the rows of the end ticks, paper between labels.
   int inkPixels = 0;
   for (int y = 0; y < legend.height(); ++y)
-    for (int xx = 45; xx < legend.width(); ++xx) inkPixels += legend.at(xx, y).r == 0 ? 1 : 0;
+    for (int xx = 45; xx < legend.width(); ++xx) inkPixels += legend.at(xx, y).r < 0.5f ? 1 : 0;
   EXPECT_GT(inkPixels, 5 * 20);  // five labels of at least a few glyph pixels each
   EXPECT_EQ(legend.at(legend.width() - 1, legend.height() / 2 - 20).r, 1.0f);
 }
@@ -91,7 +91,7 @@ TEST(ColorBar, BarRunsFromLowAtTheBottomToHighAtTheTopWithLabels) {
 int labelInk(const Image& legend) {
   int ink = 0;
   for (int y = 0; y < legend.height(); ++y)
-    for (int x = 32; x < legend.width(); ++x) ink += legend.at(x, y).r == 0 ? 1 : 0;
+    for (int x = 32; x < legend.width(); ++x) ink += legend.at(x, y).r < 0.5f ? 1 : 0;
   return ink;
 }
 
@@ -102,8 +102,8 @@ TEST(ColorBar, ConstantFieldIsLabelledOnce) {
   Image text(120, 300);
   for (int y = 0; y < 300; ++y)
     for (int x = 0; x < 120; ++x) text.at(x, y) = {1, 1, 1, 1};
-  drawTinyText(text, 50, 10, "2.5", 1, {0, 0, 0, 1});  // anywhere right of the bar
-  const int tickPixels = 3;                            // 3 * scale pixels of tick, scale 1 at 300 rows
+  defaultFont().draw(text, 50, 30, "2.5", 300 / 24.0f);  // anywhere right of the bar, at the legend's size
+  const int tickPixels = 3;                              // 3 * scale pixels of tick, scale 1 at 300 rows
   EXPECT_EQ(labelInk(legend), labelInk(text) + tickPixels);
   for (int y : {8, 150, 291})
     EXPECT_LT(length(legend.at(10, y).rgb() - colorMapLookup(ColorMapKind::Viridis, 0.5f)), 1e-6f);
@@ -112,21 +112,6 @@ TEST(ColorBar, ConstantFieldIsLabelledOnce) {
             labelInk(colorBarImage(ColorMapKind::Viridis, 1.0, 1.0, 120, 300)));
   // A real range keeps its five labels.
   EXPECT_GT(labelInk(colorBarImage(ColorMapKind::Viridis, 2.5, 12.5, 120, 300)), 4 * labelInk(legend));
-}
-
-TEST(TinyFont, WidthAndGlyphPixels) {
-  EXPECT_EQ(tinyTextWidth("", 1), 0);
-  EXPECT_EQ(tinyTextWidth("1", 1), 5);
-  EXPECT_EQ(tinyTextWidth("-0.5", 2), (4 * 6 - 1) * 2);
-  Image image(12, 9);
-  for (int y = 0; y < 9; ++y)
-    for (int x = 0; x < 12; ++x) image.at(x, y) = {1, 1, 1, 1};
-  drawTinyText(image, 1, 1, "1", 1, {0, 0, 0, 1});
-  // '1': the stem is column 2 of the glyph on every row, the foot spans columns 1..3.
-  for (int row = 0; row < kTinyFontHeight; ++row) EXPECT_EQ(image.at(1 + 2, 1 + row).r, 0.0f) << row;
-  EXPECT_EQ(image.at(1 + 1, 1 + 6).r, 0.0f);
-  EXPECT_EQ(image.at(1 + 0, 1 + 3).r, 1.0f);
-  drawTinyText(image, 9, 5, "8", 1, {0, 0, 0, 1});  // clipped at the image's edge without a crash
 }
 
 }  // namespace

@@ -30,16 +30,14 @@ TEST(GmshView, ReadsTheOptionsGmshSaved) {
   const GmshView view = readGmshView(viewFixture("euler_xyz.opt"));
   EXPECT_FALSE(view.trackball);
   expectNear(view.rotationDegrees, {30, 20, 10}, 0);
-  EXPECT_EQ(view.graphicsWidth, 360);
-  EXPECT_EQ(view.graphicsHeight, 120);
   EXPECT_TRUE(view.orthographic);  // gmsh's default: not in the file
   EXPECT_EQ(view.scale.x, 1);
 }
 
 TEST(GmshView, DefaultViewLooksDownMinusZWithTheBorderedWindow) {
-  const GmshView view;  // 800 x 600 window less the 200-pixel menu: a 600 x 600 graphics area
+  const GmshView view;
   const Aabbd box{{0, 0, 0}, {2, 1, 1}};
-  const GmshCamera camera = gmshViewCamera(view, box);
+  const GmshCamera camera = gmshViewCamera(view, box, 1);  // a square image
   EXPECT_TRUE(camera.orthographic);
   expectNear(camera.up, {0, 1, 0}, 1e-15);
   expectNear(camera.lookAt, {1, 0.5, 0.5}, 1e-15);
@@ -47,14 +45,24 @@ TEST(GmshView, DefaultViewLooksDownMinusZWithTheBorderedWindow) {
   expectNear({camera.position.x, camera.position.y, 0}, {1, 0.5, 0}, 1e-15);
   // The box's 2 x 1 fitted to a square area is 2 x 2, plus 20% of it on every side.
   EXPECT_NEAR(camera.viewHeight, 2 * 1.4, 1e-12);
-  EXPECT_NEAR(camera.aspect, 1, 0);
+}
+
+// gmsh's Print at Print.Width x Print.Height frames the box anew for the printed image's aspect: the
+// box's wider side fills the image less the borders, whatever the window it was set up in.
+TEST(GmshView, TheImagesAspectFramesTheBoxAsGmshsPrintDoes) {
+  const GmshView view;
+  const Aabbd box{{0, 0, 0}, {2, 1, 1}};
+  EXPECT_NEAR(gmshViewCamera(view, box, 4).viewHeight, 1 * 1.4, 1e-12);    // wide: the box's height
+  EXPECT_NEAR(gmshViewCamera(view, box, 2).viewHeight, 1 * 1.4, 1e-12);    // the box's own aspect
+  EXPECT_NEAR(gmshViewCamera(view, box, 0.5).viewHeight, 4 * 1.4, 1e-12);  // tall: its width fits
+  EXPECT_NEAR(gmshViewCamera(view, box, 4.0 / 3).viewHeight, 1.5 * 1.4, 1e-12);
 }
 
 TEST(GmshView, TranslationAndScaleMoveAndShrinkTheWindow) {
   GmshView view;
   view.translation = {0.5, -0.25, 0};
   view.scale = {2, 2, 2};
-  const GmshCamera camera = gmshViewCamera(view, Aabbd{{0, 0, 0}, {2, 1, 1}});
+  const GmshCamera camera = gmshViewCamera(view, Aabbd{{0, 0, 0}, {2, 1, 1}}, 1);
   // The model moves right and down on screen: the camera looks at a point left of and above its centre.
   expectNear(camera.lookAt, {0.5, 0.75, 0.5}, 1e-15);
   EXPECT_NEAR(camera.viewHeight, 1.4, 1e-12);
@@ -67,7 +75,7 @@ TEST(GmshView, EulerAnglesAndTheQuaternionGmshSavedForThemGiveOneCamera) {
   const Aabbd box{{-1.5, 0, -0.75}, {1.5, 1.8, 0.75}};
   for (const bool orthographic : {true, false}) {
     euler.orthographic = trackball.orthographic = orthographic;
-    const GmshCamera a = gmshViewCamera(euler, box), b = gmshViewCamera(trackball, box);
+    const GmshCamera a = gmshViewCamera(euler, box, 1.5), b = gmshViewCamera(trackball, box, 1.5);
     expectNear(a.position, b.position, 1e-9);
     expectNear(a.lookAt, b.lookAt, 1e-9);
     expectNear(a.up, b.up, 1e-12);
@@ -78,7 +86,7 @@ TEST(GmshView, PerspectiveSitsAtClipFactorTimesTheModelSizeWithGmshsWindowShift)
   GmshView view;
   view.orthographic = false;
   const Aabbd box{{0, 0, 0}, {2, 1, 1}};
-  const GmshCamera camera = gmshViewCamera(view, box);
+  const GmshCamera camera = gmshViewCamera(view, box, 1);
   const double diagonal = std::sqrt(6.0), near = 0.75 * 5 * diagonal;
   // The eye sits at view-space (cg.x, cg.y, near): over the world point (2 cg.x, 2 cg.y).
   expectNear(camera.position, {2, 1, 0.5 + near}, 1e-12);
@@ -91,7 +99,7 @@ TEST(GmshView, ResolvedSettingsReplaceTheCameraKeys) {
   CameraSettings settings;
   settings.fovDegrees = 12;
   settings.gmshView = GmshView{};
-  const CameraSettings resolved = resolveGmshView(settings, Aabbd{{0, 0, 0}, {1, 1, 1}});
+  const CameraSettings resolved = resolveGmshView(settings, Aabbd{{0, 0, 0}, {1, 1, 1}}, 4.0 / 3);
   EXPECT_FALSE(resolved.gmshView);
   EXPECT_EQ(resolved.projection, Projection::Orthographic);
   ASSERT_TRUE(resolved.position && resolved.lookAt && resolved.viewHeight);

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "lancer/image/tiny_font.hpp"
+#include "lancer/image/text.hpp"
 
 namespace lancer {
 namespace {
@@ -105,8 +105,11 @@ Image colorBarImage(ColorMapKind kind, double low, double high, int width, int h
   const Rgba paper{1, 1, 1, 1}, ink{0, 0, 0, 1};
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) image.at(x, y) = paper;
+  const Font& font = defaultFont();
+  const float textHeight = std::max(12.0f, static_cast<float>(height) / 24.0f);
+  const int digitHeight = font.measure("0", textHeight).inkHeight();
   const int scale = std::max(1, height / 200);
-  const int margin = (kTinyFontHeight * scale + 1) / 2 + 2;  // half a label above the top tick
+  const int margin = (digitHeight + 1) / 2 + 2;  // half a label above the top tick
   const int barLeft = 2 * scale, barRight = barLeft + std::max(4, width / 4);
   const int barTop = margin, barBottom = height - margin;
   // A constant field is drawn in the map's middle colour (color_by.cpp), so its bar is that colour.
@@ -133,8 +136,8 @@ Image colorBarImage(ColorMapKind kind, double low, double high, int width, int h
     const int row = barBottom - 1 - static_cast<int>(std::lround(fraction * (barBottom - 1 - barTop)));
     const int tickEnd = barRight + 3 * scale;
     for (int x = barRight; x < std::min(width, tickEnd); ++x) image.at(x, row) = ink;
-    drawTinyText(image, tickEnd + 2 * scale, row - kTinyFontHeight * scale / 2,
-                 labels[static_cast<std::size_t>(i)], scale, ink);
+    font.draw(image, tickEnd + 2 * scale, row + digitHeight / 2, labels[static_cast<std::size_t>(i)],
+              textHeight, TextStyle(ink.rgb()));
   }
   return image;
 }

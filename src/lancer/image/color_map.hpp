@@ -26,7 +26,7 @@ std::string_view colorMapNames();
 Vec3 colorMapLookup(ColorMapKind kind, float t);
 
 // A vertical colour-bar legend on white: the map from `low` (bottom) to `high` (top), with five
-// ticks labelled with their values (printf "%.4g", drawn with the built-in 5x7 font). Sizes
+// ticks labelled with their values (printf "%.4g", in DejaVu Sans: image/text.hpp). Sizes
 // below 48x64 are raised to it so the labels fit.
 Image colorBarImage(ColorMapKind kind, double low, double high, int width, int height);
 

@@ -44,11 +44,11 @@ CameraSettings orbitCamera(const CameraSettings& givenCamera, const AnimationSet
                            const Scene& scene, int imageWidth, int imageHeight, int frame) {
   const Aabbd worldBounds{scene.geometry.origin + toDouble(scene.geometry.bounds.lower),
                           scene.geometry.origin + toDouble(scene.geometry.bounds.upper)};
-  const CameraSettings camera = resolveGmshView(givenCamera, worldBounds);
+  const double aspect = static_cast<double>(imageWidth) / imageHeight;
+  const CameraSettings camera = resolveGmshView(givenCamera, worldBounds, aspect);
   CameraSettings result = camera;
   const Vec3d sceneCentre = worldBounds.empty() ? Vec3d{} : worldBounds.center();
-  const Vec3d position = camera.position.value_or(
-      defaultCameraPosition(worldBounds, camera, static_cast<double>(imageWidth) / imageHeight));
+  const Vec3d position = camera.position.value_or(defaultCameraPosition(worldBounds, camera, aspect));
   const Vec3d lookAt = camera.lookAt.value_or(sceneCentre);
   const Vec3d centre = orbitCenter(animation, scene);
   const Vec3d axis = orbitAxis(animation, camera);

@@ -17,7 +17,7 @@ Camera::Camera(const CameraSettings& givenSettings, const Vec3d& sceneOrigin, co
   const double aspect = static_cast<double>(imageWidth) / imageHeight;
   const Aabbd worldBounds{sceneOrigin + toDouble(sceneBounds.lower),
                           sceneOrigin + toDouble(sceneBounds.upper)};
-  const CameraSettings settings = resolveGmshView(givenSettings, worldBounds);
+  const CameraSettings settings = resolveGmshView(givenSettings, worldBounds, aspect);
   projection_ = settings.projection;
   const Vec3d lookAt = settings.lookAt.value_or(worldBounds.empty() ? Vec3d{} : worldBounds.center());
   const Vec3d position = settings.position.value_or(defaultCameraPosition(worldBounds, settings, aspect));

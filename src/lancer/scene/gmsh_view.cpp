@@ -79,13 +79,6 @@ GmshView gmshViewFromOptions(const GmshOptionLookup& option, const std::string& 
   flag("Orthographic", view.orthographic);
   set("ClipFactor", view.clipFactor);
   set("DisplayBorderFactor", view.displayBorderFactor);
-  set("GraphicsWidth", view.graphicsWidth);
-  set("GraphicsHeight", view.graphicsHeight);
-  set("MenuWidth", view.menuWidth);
-  bool showMenu = true, detached = false;
-  flag("ShowModuleMenu", showMenu);
-  flag("DetachedMenu", detached);
-  view.moduleMenuBeside = showMenu && !detached;
   return view;
 }
 
@@ -125,7 +118,7 @@ GmshView readGmshView(const std::string& path) {
       path);
 }
 
-GmshCamera gmshViewCamera(const GmshView& view, const Aabbd& worldBounds) {
+GmshCamera gmshViewCamera(const GmshView& view, const Aabbd& worldBounds, double imageAspect) {
   const Vec3d low = worldBounds.empty() ? Vec3d{} : worldBounds.lower;
   const Vec3d high = worldBounds.empty() ? Vec3d{} : worldBounds.upper;
   const Vec3d cg = 0.5 * (low + high);  // gmsh's CTX::cg: the bounding box's centre
@@ -133,17 +126,14 @@ GmshCamera gmshViewCamera(const GmshView& view, const Aabbd& worldBounds) {
       view.trackball ? trackballRotation(view.quaternion) : eulerRotation(view.rotationDegrees);
 
   // The world window at the model's depth, as initProjection frames it: the bounding box's x and y
-  // extents fitted to the graphics area's aspect, plus a border on every side.
-  const double width = std::max(view.graphicsWidth - (view.moduleMenuBeside ? view.menuWidth : 0.0), 1.0);
-  const double height = std::max(view.graphicsHeight, 1.0);
-  const double va = height / width;
+  // extents fitted to the viewport's aspect, plus a border on every side.
+  const double va = imageAspect > 0 ? 1 / imageAspect : 1;
   const double dx = std::max(high.x - low.x, 1e-300), dy = high.y - low.y;
   double windowHeight = va > dy / dx ? va * dx : dy;
   windowHeight *= 1 + 2 * view.displayBorderFactor;
 
   GmshCamera camera;
   camera.orthographic = view.orthographic;
-  camera.aspect = width / height;
   camera.up = r[1];
   // gmsh draws view = s * (t + R (p - cg)); the window is centred on view (0, 0).
   const Vec3d& s = view.scale;
@@ -170,9 +160,9 @@ GmshCamera gmshViewCamera(const GmshView& view, const Aabbd& worldBounds) {
   return camera;
 }
 
-CameraSettings resolveGmshView(const CameraSettings& camera, const Aabbd& worldBounds) {
+CameraSettings resolveGmshView(const CameraSettings& camera, const Aabbd& worldBounds, double imageAspect) {
   if (!camera.gmshView) return camera;
-  const GmshCamera view = gmshViewCamera(*camera.gmshView, worldBounds);
+  const GmshCamera view = gmshViewCamera(*camera.gmshView, worldBounds, imageAspect);
   CameraSettings resolved;
   resolved.projection = view.orthographic ? Projection::Orthographic : Projection::Perspective;
   resolved.position = view.position;

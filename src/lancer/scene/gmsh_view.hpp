@@ -1,7 +1,8 @@
 // The view a gmsh user set up in gmsh's GUI (the General.* options "File > Save Model Options" writes
 // to part.msh.opt, or the live values of the gmsh API) and the camera that reproduces gmsh's
 // projection of the model: its rotation (trackball quaternion or Euler angles), translation, scale,
-// and orthographic or gmsh's perspective (drawContext::initProjection and initPosition, gmsh 4.8).
+// and orthographic or gmsh's perspective (drawContext::initProjection and initPosition, gmsh 4.8),
+// framed for the image as gmsh's own export (Print at Print.Width x Print.Height) frames it.
 #pragma once
 
 #include <array>
@@ -25,9 +26,9 @@ struct GmshView {
   bool orthographic = true;                      // General.Orthographic
   double clipFactor = 5;                         // General.ClipFactor: sets the perspective eye distance
   double displayBorderFactor = 0.2;              // General.DisplayBorderFactor: margin around the model
-  // The graphics area: General.GraphicsWidth less the module menu beside it, General.GraphicsHeight.
-  double graphicsWidth = 800, graphicsHeight = 600, menuWidth = 200;
-  bool moduleMenuBeside = true;  // General.ShowModuleMenu and not General.DetachedMenu
+  // The graphics area's size (General.GraphicsWidth less the module menu beside it, General.
+  // GraphicsHeight) does not frame the model: gmsh frames it anew for each viewport, the window's
+  // or the printed image's.
 };
 
 // Looks up one General.* option by its name without "General." (e.g. "RotationX"); nullopt: unset.
@@ -39,19 +40,20 @@ GmshView gmshViewFromOptions(const GmshOptionLookup& option, const std::string& 
 // file that cannot be read or a view option whose value is not a number.
 GmshView readGmshView(const std::string& path);
 
-// The camera of that view for a model with these world bounds (what gmsh frames: its bounding box):
-// where it is, where it looks, its up, and either the orthographic window height or the perspective
-// field of view with the window's off-axis shift (gmsh's perspective eye sits at the model's centre
-// of gravity in view space while the window stays centred: tan units at distance 1).
+// The camera of that view for a model with these world bounds (what gmsh frames: its bounding box),
+// for an image `imageAspect` (width / height) wide: where it is, where it looks, its up, and either the
+// orthographic window height or the perspective field of view with the window's off-axis shift
+// (gmsh's perspective eye sits at the model's centre of gravity in view space while the window stays
+// centred: tan units at distance 1). gmsh fits the bounding box to its viewport's aspect
+// (drawContext::initProjection), and its export at a given size draws into a viewport of that size
+// (GetCompositePixelBuffer in common/CreateFile.cpp): the image's aspect frames the model.
 struct GmshCamera {
   bool orthographic = true;
   Vec3d position, lookAt, up;
   double viewHeight = 1;   // orthographic: world units
   double fovDegrees = 40;  // perspective: vertical
   double shiftX = 0, shiftY = 0;
-  // The graphics area's aspect (width / height): gmsh's window, for an image of the same shape.
-  double aspect = 4.0 / 3.0;
 };
-GmshCamera gmshViewCamera(const GmshView& view, const Aabbd& worldBounds);
+GmshCamera gmshViewCamera(const GmshView& view, const Aabbd& worldBounds, double imageAspect);
 
 }  // namespace lancer

@@ -94,14 +94,14 @@ void placeQuickLookLights(SceneDescription& scene, const Mesh& mesh) {
   const Vec3d centre = world.center();
   const double radius = std::max(0.5 * length(world.extent()), 1e-12);
   // A camera placed by the user (a position, a gmsh view) takes the lights along: its frame, its eye.
-  const CameraSettings camera = resolveGmshView(scene.camera, world);
+  const double aspect = static_cast<double>(scene.render.width) / scene.render.height;
+  const CameraSettings camera = resolveGmshView(scene.camera, world, aspect);
   const Vec3d viewFrom =
       camera.position ? *camera.position - camera.lookAt.value_or(centre) : camera.viewFrom;
   // The camera's frame: screen right, up, and the front (towards the viewer's side of the model).
   const Vec3d up = normalize(camera.up);
   const Vec3d right = normalize(cross(-viewFrom, up));
   const Vec3d front = cross(right, up);
-  const double aspect = static_cast<double>(scene.render.width) / scene.render.height;
   scene.lights.clear();
   // The key: high on the left, in front, so the top, front and side faces of the 3/4 view read
   // apart; far enough to light the whole part evenly.

@@ -60,8 +60,9 @@ struct CameraSettings {
   std::optional<GmshView> gmshView;
 };
 
-// The camera settings of `camera.gmshView` for a scene of these world bounds (camera itself without one).
-CameraSettings resolveGmshView(const CameraSettings& camera, const Aabbd& worldBounds);
+// The camera settings of `camera.gmshView` for a scene of these world bounds and an image
+// `imageAspect` (width / height) wide, framed as gmsh frames its export (camera itself without one).
+CameraSettings resolveGmshView(const CameraSettings& camera, const Aabbd& worldBounds, double imageAspect);
 
 struct PointLight {
   Vec3d position;
