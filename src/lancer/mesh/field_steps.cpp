@@ -127,6 +127,7 @@ std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, cons
     for (const MeshField* field : steps)
       if (field->step == wanted) return *field;
     std::vector<int> indices;
+    indices.reserve(steps.size());
     for (const MeshField* field : steps) indices.push_back(field->step);
     std::sort(indices.begin(), indices.end());
     problem = fmt::format("has no step {}: its steps are {} (give a step from {} to {})", wanted,

@@ -89,6 +89,7 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path) {
     }
   }
   std::vector<GmshPostView> result;
+  result.reserve(views.size());
   for (auto& [index, view] : views) result.push_back(std::move(view));
   return result;
 }

@@ -83,6 +83,7 @@ struct BvhBuilder {
     };
     std::vector<std::thread> pool2;
     const int helpers = std::min<int>(threads_, static_cast<int>(subtrees_.size())) - 1;
+    pool2.reserve(static_cast<std::size_t>(std::max(helpers, 0)));
     for (int t = 0; t < helpers; ++t) pool2.emplace_back(work);
     work();
     for (std::thread& thread : pool2) thread.join();
