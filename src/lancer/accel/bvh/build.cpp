@@ -81,12 +81,12 @@ struct BvhBuilder {
       for (std::size_t k; (k = next.fetch_add(1)) < subtrees_.size();)
         *subtrees_[k].slot = buildNode(subtrees_[k].range, own, false);
     };
-    std::vector<std::thread> pool2;
     const int helpers = std::min<int>(threads_, static_cast<int>(subtrees_.size())) - 1;
-    pool2.reserve(static_cast<std::size_t>(std::max(helpers, 0)));
-    for (int t = 0; t < helpers; ++t) pool2.emplace_back(work);
+    std::vector<std::thread> workers;
+    workers.reserve(static_cast<std::size_t>(std::max(helpers, 0)));
+    for (int t = 0; t < helpers; ++t) workers.emplace_back(work);
     work();
-    for (std::thread& thread : pool2) thread.join();
+    for (std::thread& thread : workers) thread.join();
     return top;
   }
 
