@@ -157,6 +157,16 @@ double runChunked(std::size_t count, int threads, Trace&& trace) {
 
 namespace lancer::bench {
 
+// The BVH's build options on `threads` threads; LANCER_BENCH_BVH_TRAVERSAL_COST overrides the SAH's
+// node-step cost (for tuning runs).
+inline BvhBuildOptions bvhBenchOptions(int threads) {
+  BvhBuildOptions options;
+  options.threads = threads;
+  if (const char* cost = std::getenv("LANCER_BENCH_BVH_TRAVERSAL_COST"))
+    options.traversalCost = std::stof(cost);
+  return options;
+}
+
 // One loaded mesh with its lazily built lancer trees and ray sets, shared by all benchmarks.
 struct MeshContext {
   std::string name;
@@ -171,12 +181,7 @@ struct MeshContext {
   template <typename F>
   void withTree(const std::string& kind, F&& f) {
     if (kind != "bvh") return f(tree(kind));
-    if (!bvh)
-      bvh = std::make_unique<Bvh>(Bvh::build(mesh.positions, mesh.faces, [] {
-        BvhBuildOptions options;
-        options.threads = 2;
-        return options;
-      }()));
+    if (!bvh) bvh = std::make_unique<Bvh>(Bvh::build(mesh.positions, mesh.faces, bvhBenchOptions(2)));
     f(*bvh);
   }
 
@@ -352,11 +357,7 @@ inline void registerLancerPackets(const std::string& kind, const std::string& me
 
 // Build statistics of `kind` on `threads` threads.
 inline AccelStats buildStats(const std::string& kind, const Mesh& mesh, int threads) {
-  if (kind == "bvh") {
-    BvhBuildOptions options;
-    options.threads = threads;
-    return Bvh::build(mesh.positions, mesh.faces, options).stats();
-  }
+  if (kind == "bvh") return Bvh::build(mesh.positions, mesh.faces, bvhBenchOptions(threads)).stats();
   KdBuildOptions options;
   options.threads = threads;
   return (kind == "kdtree-median" ? KdTree::buildMedian(mesh.positions, mesh.faces, options)

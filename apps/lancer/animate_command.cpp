@@ -14,7 +14,9 @@
 #include "lancer/image/animation_writer.hpp"
 #include "lancer/image/frame_sequence.hpp"
 #include "lancer/render/animation.hpp"
+#include "lancer/render/step_animation.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/result_keys.hpp"
 #include "lancer/util/stopwatch.hpp"
 #include "scene_setup.hpp"
 
@@ -27,9 +29,11 @@ struct AnimateCommandOptions {
   std::optional<int> frames;
   std::optional<double> fps;
   std::string orbit;
-  AnimationOutputOptions writer;  // --loop, --dither, --palette (the rest from the scene)
-  std::string shard;              // --shard I/N or auto
-  std::string frameRange;         // --frame-range A-B
+  std::string over;                  // --over orbit|steps
+  std::optional<std::string> label;  // --label "t = {time:.3g} s"
+  AnimationOutputOptions writer;     // --loop, --dither, --palette (the rest from the scene)
+  std::string shard;                 // --shard I/N or auto
+  std::string frameRange;            // --frame-range A-B
   bool skipExisting = false;
   SceneOverrides overrides;
 };
@@ -69,13 +73,32 @@ std::vector<int> framesToRender(const AnimateCommandOptions& options, const Anim
 int runAnimate(const AnimateCommandOptions& options) {
   // A job-array task works alone; a --frame-range under mpirun is shared by the ranks.
   const std::unique_ptr<WorkDistribution> distribution = commandDistribution(!options.shard.empty());
-  PreparedRender prepared = prepareScene(options.input, options.overrides);
+  // Over steps, the meshes as read (every step) stay for the frames' scenes.
+  const bool overStepsAsked = options.over == "steps";
+  const bool sceneOverSteps = options.over.empty() && sceneAnimatesOverSteps(options.input);
+  PreparedRender prepared =
+      prepareScene(options.input, options.overrides, {}, overStepsAsked || sceneOverSteps);
   const RenderSettings& settings = prepared.description.render;
   AnimationSettings animation = prepared.description.animation.value_or(AnimationSettings{});
-  if (options.frames) animation.frames = *options.frames;
+  if (!options.over.empty()) animation.overSteps = overStepsAsked;
+  if (options.frames) animation.frames = *options.frames, animation.framesGiven = true;
   if (options.fps) animation.fps = *options.fps;
+  if (options.label) {
+    formatStepLabel(*options.label, 0.0, 0, SourceLocation{"--label"});  // unknown names: said now
+    animation.label = *options.label;
+  }
+  if (!animation.label.empty() && !animation.overSteps)
+    throw InputError(SourceLocation{options.label ? "--label" : options.input},
+                     "a label shows the time and step of an animation over steps: add --over steps (or "
+                     "over = \"steps\" in [animation])");
   if (!options.orbit.empty())
     animation.orbitLight = parseOrbit(options.orbit, prepared.scene.appearance.lights.size());
+  std::optional<StepScenes> steps;
+  if (animation.overSteps) {
+    steps.emplace(prepared.description, prepared.meshes, animation, parseAccelKind(options.overrides.accel),
+                  options.overrides.threads);
+    animation = steps->animation();
+  }
 
   // render.output names `lancer render`'s still image: an animation never writes over it unasked.
   const std::string& output = options.output;
@@ -122,8 +145,10 @@ int runAnimate(const AnimateCommandOptions& options) {
   work.render = [&](int item) {
     current = item;
     RenderStats stats;
-    Image image = renderAnimationFrame(prepared.scene, prepared.accelerator, prepared.description, animation,
-                                       frames[static_cast<std::size_t>(item)], frameOptions, &stats);
+    const int frame = frames[static_cast<std::size_t>(item)];
+    Image image = steps ? steps->render(frame, frameOptions, &stats)
+                        : renderAnimationFrame(prepared.scene, prepared.accelerator, prepared.description,
+                                               animation, frame, frameOptions, &stats);
     rays += stats.rays;
     return image;
   };
@@ -167,6 +192,13 @@ int runAnimate(const AnimateCommandOptions& options) {
                  prepared.scene.geometry.faces.size(), prepared.loadSeconds, prepared.buildSeconds, seconds,
                  frames.empty() ? 0.0 : seconds / static_cast<double>(frames.size()), speed.c_str());
   }
+  if (steps && !options.overrides.quiet && steps->rebuilds() > 0)
+    std::fprintf(stderr,
+                 "over steps: %d frames rebuilt their scene in %.3f s (%.3f s/frame, %.0f%% of the frames' "
+                 "time), of which the accelerator %.3f s (%d refitted, %d built)\n",
+                 steps->rebuilds(), steps->rebuildSeconds(), steps->rebuildSeconds() / steps->rebuilds(),
+                 seconds > 0 ? 100 * steps->rebuildSeconds() / seconds : 0.0, steps->accelSeconds(),
+                 steps->refits(), steps->rebuilds() - steps->refits());
   if (options.overrides.timings && talks)
     std::fprintf(stderr, "%s\n", formatStageTimes(prepared.stages).c_str());
   return kExitOk;
@@ -187,6 +219,13 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
   command->add_option("--frames", options->frames, "Number of frames")->check(CLI::Range(1, kMaxFrames));
   command->add_option("--fps", options->fps, "Frames per second")->check(CLI::Range(0.01, 100.0));
   command->add_option("--orbit", options->orbit, "What turns: camera or light:K");
+  command
+      ->add_option("--over", options->over,
+                   "What the frames run through: orbit (default) or steps (the results' time steps)")
+      ->check(CLI::IsMember({"orbit", "steps"}));
+  command->add_option(
+      "--label", options->label,
+      "Over steps: text drawn into each frame, {time} and {step} replaced (\"t = {time:.3g} s\")");
   addAnimationWriterOptions(*command, options->writer);
   command->add_option("--shard", options->shard,
                       "Job arrays: render only frames k with k % N == I (I/N), or take I and N from SLURM or "

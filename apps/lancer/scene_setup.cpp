@@ -22,11 +22,13 @@
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/render/renderer.hpp"
+#include "lancer/scene/gmsh_post_options.hpp"
 #include "lancer/scene/gmsh_view.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/render_overrides.hpp"
 #include "lancer/scene/scene_loader.hpp"
+#include "lancer/scene/step_files.hpp"
 #include "lancer/util/stopwatch.hpp"
 
 namespace lancer::cli {
@@ -93,6 +95,59 @@ void applyOutputOverrides(const SceneOverrides& overrides, RenderOverrides& appl
   if (overrides.denoise) applied.denoise = true;
 }
 
+// --step, --warp, --color-by and --undeformed on every mesh of the description.
+void applyResultOverrides(SceneDescription& description, const SceneOverrides& overrides) {
+  if (overrides.step) description.when = StepSelection{overrides.step, std::nullopt, "--step"};
+  if (!overrides.warp.empty()) {
+    const std::size_t colon = overrides.warp.rfind(':');
+    WarpSettings warp;
+    warp.field = overrides.warp.substr(0, colon);
+    warp.where = SourceLocation{"--warp"};
+    if (colon != std::string::npos) {
+      const std::string factor = overrides.warp.substr(colon + 1);
+      char* end = nullptr;
+      warp.factor = std::strtod(factor.c_str(), &end);
+      if (factor.empty() || end != factor.c_str() + factor.size() || !std::isfinite(warp.factor))
+        throw InputError(SourceLocation{"--warp"},
+                         fmt::format("'{}' is not FIELD[:FACTOR]: the factor '{}' is not a number (e.g. "
+                                     "--warp displacement:2)",
+                                     overrides.warp, factor));
+    }
+    if (warp.field.empty())
+      throw InputError(
+          SourceLocation{"--warp"},
+          fmt::format("'{}' names no field: use FIELD[:FACTOR], e.g. --warp displacement:2", overrides.warp));
+    for (MeshInstance& mesh : description.meshes) mesh.warp = warp;
+  }
+  if (!overrides.colorBy.empty()) {
+    const std::size_t colon = overrides.colorBy.rfind(':');
+    ColorBy color;
+    color.field = overrides.colorBy.substr(0, colon);
+    color.where = SourceLocation{"--color-by"};
+    if (colon != std::string::npos) {
+      const std::string text = overrides.colorBy.substr(colon + 1);
+      const std::optional<FieldComponent> component = parseFieldComponent(text);
+      if (!component)
+        throw InputError(SourceLocation{"--color-by"},
+                         fmt::format("'{}' is not a component: use magnitude, x, y, z, 0 to 8 or von_mises "
+                                     "(--color-by FIELD[:COMPONENT])",
+                                     text));
+      color.component = *component;
+    }
+    for (MeshInstance& mesh : description.meshes) {
+      if (mesh.colorBy) color.map = mesh.colorBy->map;
+      mesh.colorBy = color;
+    }
+  }
+  if (!overrides.undeformed.empty()) {
+    const UndeformedStyle style = overrides.undeformed == "edges"   ? UndeformedStyle::Edges
+                                  : overrides.undeformed == "ghost" ? UndeformedStyle::Ghost
+                                                                    : UndeformedStyle::None;
+    for (MeshInstance& mesh : description.meshes)
+      if (mesh.warp) mesh.undeformed = style;
+  }
+}
+
 }  // namespace
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
@@ -142,6 +197,16 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
           "The view set up in gmsh, framed for the image as gmsh's own export at that size: its options "
           "file (File > Save Model Options; default: the mesh's MESH.msh.opt); before or after the input")
       ->expected(0, 1);
+  command.add_option("--step", overrides.step, "Time step of the results shown (colours and warps)")
+      ->check(CLI::Range(0, 1'000'000'000));
+  command.add_option(
+      "--warp", overrides.warp,
+      "Deformed shape: FIELD[:FACTOR], every node moved by FACTOR (default 1) times its vector");
+  command.add_option("--color-by", overrides.colorBy,
+                     "Colour by a field: FIELD[:COMPONENT], COMPONENT magnitude, x, y, z, 0-8 or von_mises");
+  command
+      .add_option("--undeformed", overrides.undeformed, "With --warp, the shape before it: edges or ghost")
+      ->check(CLI::IsMember({"none", "edges", "ghost"}));
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
   command.add_flag("--timings", overrides.timings,
                    "Print where the time before the first ray went: read, orient (shells, orientation, "
@@ -161,7 +226,7 @@ void takeInputFromGmshView(std::string& input, SceneOverrides& overrides) {
 }
 
 PreparedRender prepareScene(const std::string& input, const SceneOverrides& overrides,
-                            const ImageBufferChoice& imageBuffer) {
+                            const ImageBufferChoice& imageBuffer, bool keepMeshes) {
   std::optional<UpAxis> up;
   if (!overrides.up.empty()) {
     up = parseUpAxis(overrides.up);
@@ -171,7 +236,13 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
   }
   RenderRequest request;
   SceneDescription& description = request.description;
-  if (isMeshFile(input)) {
+  if (isStepFilePattern(input)) {  // a quoted "result_*.msh": one step per file
+    const Stopwatch read;
+    request.quickLookMesh = readStepFiles(input, matchStepFiles(input, SourceLocation{input}),
+                                          overrides.threads, SourceLocation{input});
+    request.stages.add("read", read.seconds());
+    description = quickLookScene(input, *request.quickLookMesh, up);
+  } else if (isMeshFile(input)) {
     const Stopwatch read;
     request.quickLookMesh = readMsh(input, overrides.threads);
     request.stages.add("read", read.seconds());
@@ -187,6 +258,11 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     std::string path = *overrides.gmshView;
     if (path.empty() && !description.meshes.empty()) path = description.meshes.front().file + ".opt";
     description.camera.gmshView = readGmshView(path);
+    // Its View[i] options (steps, warps, ranges) need the views' names: applied to the meshes read.
+    request.withMeshes = [views = readGmshPostViews(path), path](SceneDescription& scene,
+                                                                 const std::vector<Mesh>& meshes) {
+      if (!meshes.empty()) applyGmshPostViews(scene, meshes.front(), views, path);
+    };
     if (request.quickLookMesh) placeQuickLookLights(description, *request.quickLookMesh);  // from gmsh's side
   }
   RenderOverrides& applied = request.overrides;
@@ -205,10 +281,18 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
   request.accel = parseAccelKind(overrides.accel);
   request.threads = overrides.threads;
   request.imageBuffer = imageBuffer;
+  request.keepMeshes = keepMeshes;
+  applyResultOverrides(description, overrides);
   PreparedRender prepared = prepareRender(std::move(request));
   if (!overrides.quiet)
     for (const std::string& warning : prepared.scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
   return prepared;
+}
+
+bool sceneAnimatesOverSteps(const std::string& input) {
+  if (isStepFilePattern(input) || isMeshFile(input)) return false;
+  const SceneDescription description = loadScene(input);
+  return description.animation && description.animation->overSteps;
 }
 
 std::string formatStageTimes(const StageTimes& stages) {

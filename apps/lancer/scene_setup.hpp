@@ -36,6 +36,12 @@ struct SceneOverrides {
   std::optional<std::string> gmshView;
   bool quiet = false;
   bool timings = false;  // --timings: the preparation's stages on stderr
+  // Results (docs/results.md): --step K, --warp FIELD[:FACTOR], --color-by FIELD[:COMPONENT],
+  // --undeformed edges|ghost, applied to every mesh.
+  std::optional<int> step;
+  std::string warp;
+  std::string colorBy;
+  std::string undeformed;
 };
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides);
@@ -60,8 +66,14 @@ using ImageBufferChoice = std::function<ImageBuffer(const RenderSettings&)>;
 // (render/render_preparation.hpp) checks the image's memory against the budget (--max-memory), builds
 // the scene, the accelerator and the camera. The meshes' warnings go to stderr unless --quiet.
 // Without a choice the image is held whole.
+// keepMeshes: the meshes as read (every step of their views) stay in PreparedRender::meshes, for an
+// animation over steps.
 PreparedRender prepareScene(const std::string& input, const SceneOverrides& overrides,
-                            const ImageBufferChoice& imageBuffer = {});
+                            const ImageBufferChoice& imageBuffer = {}, bool keepMeshes = false);
+
+// Whether `input` is a scene file whose [animation] says over = "steps" (read once more, before the
+// meshes, so that they are kept for the frames).
+bool sceneAnimatesOverSteps(const std::string& input);
 
 // Ctrl-C and SIGTERM set the flag instead of killing the process, so outputs stay untouched.
 const std::atomic<bool>& installInterruptHandler();

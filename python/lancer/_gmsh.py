@@ -34,37 +34,41 @@ def _entities_to_take(gmsh, dims):
 
 
 def _view_fields(gmsh, tag_to_index, node_count):
-    """The first step of every view holding model data (gmsh.view.getModelData): node data as
-    values per mesh node (NaN where the view gives none), element data as (element tags, values)."""
+    """Every step of every view holding model data (gmsh.view.getModelData): node data as values per
+    mesh node (NaN where the view gives none), element data as (element tags, values), each with its
+    step index and time."""
     node_fields, element_fields = [], []
     for view in gmsh.view.getTags():
-        try:
-            data_type, tags, data, _, components = gmsh.view.getModelData(view, 0)
-        except Exception:  # a list-based view (no model data): nothing to map onto the mesh
-            continue
-        components = int(components)
-        if data_type not in ("NodeData", "ElementData") or components <= 0 or len(tags) == 0:
-            continue
-        name = gmsh.option.getString(f"View[{gmsh.view.getIndex(view)}].Name")
-        rows = np.array([np.asarray(d, dtype=float)[:components] for d in data]).reshape(len(tags), components)
-        tags = np.asarray(tags, dtype=np.int64)
-        if data_type == "ElementData":
-            element_fields.append((name, components, tags, rows.reshape(-1)))
-            continue
-        values = np.full((node_count, components), np.nan)
-        known = (tags >= 0) & (tags < len(tag_to_index))
-        slots = np.full(len(tags), -1, dtype=np.int64)
-        slots[known] = tag_to_index[tags[known]]
-        values[slots[slots >= 0]] = rows[slots >= 0]
-        node_fields.append((name, components, values.reshape(-1)))
+        index = gmsh.view.getIndex(view)
+        name = gmsh.option.getString(f"View[{index}].Name")
+        steps = int(gmsh.option.getNumber(f"View[{index}].NbTimeStep"))
+        for step in range(max(steps, 1)):
+            try:
+                data_type, tags, data, time, components = gmsh.view.getModelData(view, step)
+            except Exception:  # a list-based view (no model data), or a step without data
+                continue
+            components = int(components)
+            if data_type not in ("NodeData", "ElementData") or components <= 0 or len(tags) == 0:
+                continue
+            rows = np.array([np.asarray(d, dtype=float)[:components] for d in data]).reshape(len(tags), components)
+            tags = np.asarray(tags, dtype=np.int64)
+            if data_type == "ElementData":
+                element_fields.append((name, components, tags, rows.reshape(-1), step, float(time)))
+                continue
+            values = np.full((node_count, components), np.nan)
+            known = (tags >= 0) & (tags < len(tag_to_index))
+            slots = np.full(len(tags), -1, dtype=np.int64)
+            slots[known] = tag_to_index[tags[known]]
+            values[slots[slots >= 0]] = rows[slots >= 0]
+            node_fields.append((name, components, values.reshape(-1), step, float(time)))
     return node_fields, element_fields
 
 
 def from_gmsh(dim=2, name=None):
     """The mesh of gmsh's current model: dim=2 its surfaces, dim=3 also its volumes, whose skin and
     interfaces become faces as the .msh reader makes them. Physical groups and their names come
-    along, and the first step of each view with node or element data (gmsh.view.addModelData)
-    becomes a field for color_by, as the .msh reader makes one of $NodeData and $ElementData. Call it
+    along, and every step of each view with node or element data (gmsh.view.addModelData)
+    becomes a field for color_by and warp, as the .msh reader makes one of $NodeData and $ElementData. Call it
     after gmsh.model.mesh.generate(dim)."""
     if dim not in (2, 3):
         raise ValueError(f"dim={dim!r}: use 2 (surfaces) or 3 (surfaces and volumes)")

@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "lancer/image/animation_writer.hpp"
 #include "lancer/render/animation.hpp"
+#include "lancer/render/step_animation.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "render_session.hpp"
 
@@ -18,7 +19,10 @@ namespace {
 void animate(const py::object& target, const std::string& output, const RenderArguments& arguments,
              const std::optional<int>& frames, const std::optional<double>& fps,
              const std::optional<std::string>& orbit, const std::optional<int>& loop,
-             const std::optional<std::string>& dither, const std::optional<std::string>& palette) {
+             const std::optional<std::string>& dither, const std::optional<std::string>& palette,
+             const std::optional<std::string>& over) {
+  if (over && *over != "orbit" && *over != "steps")
+    throw py::value_error(fmt::format("over='{}': use 'orbit' or 'steps'", *over));
   if (frames && (*frames < 1 || *frames > kMaxFrames))
     throw py::value_error(fmt::format("frames={} is out of range: use 1 to {}", *frames, kMaxFrames));
   if (fps && !(*fps >= 0.01 && *fps <= 100))
@@ -30,13 +34,26 @@ void animate(const py::object& target, const std::string& output, const RenderAr
     throw py::value_error(fmt::format("dither='{}': use 'ordered', 'floyd-steinberg' or 'none'", *dither));
   if (palette && *palette != "global" && *palette != "per-frame")
     throw py::value_error(fmt::format("palette='{}': use 'global' or 'per-frame'", *palette));
-  PreparedRender prepared =
-      prepareRender(sceneOf(target), renderOverridesFromArguments(arguments), arguments.threads);
+  const PythonScene source = sceneOf(target);
+  PreparedRender prepared = prepareRender(source, renderOverridesFromArguments(arguments), arguments.threads);
   const RenderSettings& settings = prepared.description.render;
   AnimationSettings animation = prepared.description.animation.value_or(AnimationSettings{});
-  if (frames) animation.frames = *frames;
+  if (frames) animation.frames = *frames, animation.framesGiven = true;
   if (fps) animation.fps = *fps;
   if (orbit) animation.orbitLight = parseOrbit(*orbit, sceneLightCount(prepared.scene));
+  if (over) animation.overSteps = *over == "steps";
+  // Over steps: the meshes as read (every step) build each frame's scene (render/step_animation.hpp).
+  std::vector<Mesh> meshes;
+  std::optional<StepScenes> steps;
+  if (animation.overSteps) {
+    py::gil_scoped_release release;
+    if (source.quickLookMesh)
+      meshes.push_back(*source.quickLookMesh);
+    else
+      meshes = readSceneMeshes(prepared.description, arguments.threads);
+    steps.emplace(prepared.description, meshes, animation, kDefaultAccel, arguments.threads);
+    animation = steps->animation();
+  }
 
   AnimationOutputOptions outputOptions;
   outputOptions.frames = animation.frames;
@@ -56,11 +73,20 @@ void animate(const py::object& target, const std::string& output, const RenderAr
   AnimationStats stats;
   {
     py::gil_scoped_release release;
-    stats = renderAnimation(prepared.scene, prepared.accelerator, prepared.description, animation,
-                            render.options, [&](int frame, const Image& image) {
-                              writer.addFrame(frame,
-                                              writer.takesRadiance() ? image : displayImage(image, settings));
-                            });
+    const auto deliver = [&](int frame, const Image& image) {
+      writer.addFrame(frame, writer.takesRadiance() ? image : displayImage(image, settings));
+    };
+    if (steps) {
+      for (int frame = 0; frame < steps->frameCount() && !stats.cancelled; ++frame) {
+        RenderStats frameStats;
+        const Image image = steps->render(frame, render.options, &frameStats);
+        stats.cancelled = frameStats.cancelled || (render.options.cancel && render.options.cancel->load());
+        if (!stats.cancelled) deliver(frame, image);
+      }
+    } else {
+      stats = renderAnimation(prepared.scene, prepared.accelerator, prepared.description, animation,
+                              render.options, deliver);
+    }
   }
   render.finish();  // KeyboardInterrupt: the writer's destructor removes its temporary files
   if (!stats.cancelled) writer.finish();
@@ -71,7 +97,7 @@ void animate(const py::object& target, const std::string& output, const RenderAr
 void bindAnimate(py::module_& module) {
   module.def("_animate", &animate, py::arg("target"), py::arg("output"), py::arg("arguments"),
              py::arg("frames"), py::arg("fps"), py::arg("orbit"), py::arg("loop"), py::arg("dither"),
-             py::arg("palette"));
+             py::arg("palette"), py::arg("over"));
 }
 
 }  // namespace lancer::python

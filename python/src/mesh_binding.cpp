@@ -10,6 +10,7 @@
 #include <map>
 
 #include "bindings.hpp"
+#include "lancer/mesh/field_steps.hpp"
 #include "lancer/mesh/mesh_from_elements.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/util/huge_pages.hpp"
@@ -195,8 +196,8 @@ void rejectInfinite(const PointArray& values, int components, const std::string&
 // _mesh_from_elements(points, blocks, group_names, name, node_fields, element_fields): for
 // lancer.from_gmsh. blocks: [(type, dimension, physical, entity, nodes, tags)], nodes 0-based,
 // nodeCount per element, tags one per element (or None); group_names: {(dimension, tag): name};
-// node_fields: [(name, components, values (N * components,))]; element_fields: [(name, components,
-// tags (R,), values (R * components,))], tags naming the blocks' elements.
+// node_fields: [(name, components, values (N * components,)[, step, time])]; element_fields: [(name,
+// components, tags (R,), values (R * components,)[, step, time])], tags naming the blocks' elements.
 std::shared_ptr<Mesh> meshFromElementBlocks(const py::array& pointsIn, const py::list& blockList,
                                             const py::dict& groupNames, const std::string& name,
                                             const py::list& fieldList, const py::list& elementFieldList) {
@@ -244,20 +245,28 @@ std::shared_ptr<Mesh> meshFromElementBlocks(const py::array& pointsIn, const py:
   std::vector<PointArray> fieldValues;  // the converted values the fields' spans point into
   std::vector<NodeFieldInput> fields;
   for (const py::handle item : fieldList) {
-    const auto [fieldName, components, values] = item.cast<std::tuple<std::string, int, py::array>>();
+    const auto tuple = item.cast<py::tuple>();
+    const auto [fieldName, components, values] =
+        tuple[py::slice(0, 3, 1)].cast<std::tuple<std::string, int, py::array>>();
+    const auto [step, time] = py::len(tuple) >= 5 ? tuple[py::slice(3, 5, 1)].cast<std::pair<int, double>>()
+                                                  : std::pair<int, double>{0, 0.0};
     auto& array = fieldValues.emplace_back(PointArray::ensure(values));
     if (components <= 0 || array.size() != pointCount * components)
       valueError(fmt::format("field '{}' has {} values for {} nodes of {} components", fieldName,
                              array.size(), pointCount, components));
     rejectInfinite(array, components, fieldName, {});
     fields.push_back({fieldName, components,
-                      std::span<const double>(array.data(), static_cast<std::size_t>(array.size()))});
+                      std::span<const double>(array.data(), static_cast<std::size_t>(array.size())), step,
+                      time});
   }
   std::vector<std::vector<std::uint64_t>> recordTags;
   std::vector<ElementFieldInput> elementFields;
   for (const py::handle item : elementFieldList) {
+    const auto tuple = item.cast<py::tuple>();
     const auto [fieldName, components, tagArray, values] =
-        item.cast<std::tuple<std::string, int, py::array, py::array>>();
+        tuple[py::slice(0, 4, 1)].cast<std::tuple<std::string, int, py::array, py::array>>();
+    const auto [step, time] = py::len(tuple) >= 6 ? tuple[py::slice(4, 6, 1)].cast<std::pair<int, double>>()
+                                                  : std::pair<int, double>{0, 0.0};
     const std::vector<std::uint64_t>& tags =
         recordTags.emplace_back(checkedElementTags(tagArray, "element field tags"));
     auto& array = fieldValues.emplace_back(PointArray::ensure(values));
@@ -267,7 +276,8 @@ std::shared_ptr<Mesh> meshFromElementBlocks(const py::array& pointsIn, const py:
                              array.size(), tags.size(), components));
     rejectInfinite(array, components, fieldName, tags);
     elementFields.push_back({fieldName, components, tags,
-                             std::span<const double>(array.data(), static_cast<std::size_t>(array.size()))});
+                             std::span<const double>(array.data(), static_cast<std::size_t>(array.size())),
+                             step, time});
   }
   const std::span<const Vec3d> xyz(reinterpret_cast<const Vec3d*>(points.data()),
                                    static_cast<std::size_t>(pointCount));
@@ -303,9 +313,10 @@ py::array_t<std::int32_t> tagsOf(const std::vector<std::int32_t>& tags) {
 }
 
 // One field's values: (points, C) for node data, (faces, C) for element data; NaN where none.
-py::array_t<float> fieldOf(const Mesh& mesh, const std::string& name) {
+py::array_t<float> fieldOf(const Mesh& mesh, const std::string& name, const std::optional<int>& step) {
   std::string names;
   for (const MeshField& field : mesh.fields) {
+    if (field.name == name && step && field.step != *step) continue;
     if (field.name == name) {
       const auto components = static_cast<py::ssize_t>(field.components);
       py::array_t<float> values({static_cast<py::ssize_t>(field.itemCount()), components});
@@ -314,6 +325,9 @@ py::array_t<float> fieldOf(const Mesh& mesh, const std::string& name) {
     }
     names += fmt::format("{}'{}'", names.empty() ? "" : ", ", field.name);
   }
+  if (step && !viewSteps(mesh, name).empty())
+    throw py::key_error(
+        fmt::format("the field '{}' has no step {}; the mesh has {}", name, *step, describeViews(mesh)));
   throw py::key_error(
       fmt::format("the mesh has no field '{}'; its fields: {}", name, names.empty() ? "none" : names));
 }
@@ -347,16 +361,21 @@ void bindMesh(py::module_& module) {
           "(M,) int32 gmsh elementary entity of each face")
       .def_property_readonly("group_names", &groupNamesOf, "{tag: name} of the named physical groups")
       .def_property_readonly(
-          "fields",
-          [](const Mesh& mesh) {
-            std::vector<std::string> names;
-            for (const MeshField& field : mesh.fields) names.push_back(field.name);
-            return names;
+          "fields", [](const Mesh& mesh) { return viewNames(mesh); },
+          "names of the fields (gmsh views: node and element data) color_by and warp can use, once each")
+      .def(
+          "steps",
+          [](const Mesh& mesh, const std::string& name) {
+            std::vector<std::pair<int, double>> steps;
+            const std::vector<const MeshField*> fields = viewSteps(mesh, name);
+            for (std::size_t k = 0; k < fields.size(); ++k)
+              steps.emplace_back(fields[k]->step, stepTime(fields, k));
+            return steps;
           },
-          "names of the fields (node and element data) color_by can use")
-      .def("field", &fieldOf, py::arg("name"),
-           "values of one of `fields`: (len(points), C) float32 for node data, (len(faces), C) for "
-           "element data, NaN where the data gives none")
+          py::arg("name"), "the (step, time) of each step of a field, in time order")
+      .def("field", &fieldOf, py::arg("name"), py::arg("step") = py::none(),
+           "values of one of `fields` at a step (default: its first in the file): (len(points), C) float32 "
+           "for node data, (len(faces), C) for element data, NaN where the data gives none")
       .def_property_readonly("name", [](const Mesh& mesh) { return mesh.source.path; })
       .def_property_readonly("warnings", [](const Mesh& mesh) { return mesh.source.warnings; })
       .def_property_readonly("load_seconds", [](const Mesh& mesh) { return mesh.source.loadSeconds; })

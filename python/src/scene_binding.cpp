@@ -75,20 +75,41 @@ std::string describeCamera(const CameraSettings& camera) {
 // `color_by = {field, map, range, step}` does. The field's name is checked when the scene is built
 // (an InputError naming the fields the mesh has).
 ColorBy colorByArgument(const std::string& field, const std::string& map,
-                        const std::optional<std::pair<double, double>>& range, int step) {
+                        const std::optional<std::pair<double, double>>& range, const std::string& component) {
   ColorBy colorBy;
   colorBy.field = field;
-  colorBy.step = step;
   colorBy.where = SourceLocation{"color_by"};
+  const std::optional<FieldComponent> parsed = parseFieldComponent(component);
+  if (!parsed)
+    throw py::value_error(
+        fmt::format("component='{}': use 'magnitude', 'x', 'y', 'z', '0' to '8' or 'von_mises'", component));
+  colorBy.component = *parsed;
   const std::optional<ColorMapKind> kind = parseColorMap(map);
   if (!kind) throw py::value_error(fmt::format("color_map='{}': use one of {}", map, colorMapNames()));
   colorBy.map = *kind;
   if (range && !(std::isfinite(range->first) && std::isfinite(range->second) && range->first < range->second))
     throw py::value_error(fmt::format("color_range=({:g}, {:g}): give (low, high), finite, low < high",
                                       range->first, range->second));
-  if (step < 0) throw py::value_error(fmt::format("step={}: a field's steps count from 0", step));
   colorBy.range = range;
   return colorBy;
+}
+
+// warp= of Scene.quick_look: "displacement" or ("displacement", factor).
+WarpSettings warpArgument(const py::object& warp) {
+  WarpSettings settings;
+  settings.where = SourceLocation{"warp"};
+  if (py::isinstance<py::str>(warp)) {
+    settings.field = warp.cast<std::string>();
+  } else if (py::isinstance<py::tuple>(warp) && py::len(warp) == 2) {
+    const auto pair = warp.cast<py::tuple>();
+    settings.field = pair[0].cast<std::string>();
+    settings.factor = pair[1].cast<double>();
+  } else {
+    throw py::type_error("warp= takes a field name or (field name, factor), e.g. ('displacement', 2.0)");
+  }
+  if (settings.field.empty() || !std::isfinite(settings.factor))
+    throw py::value_error("warp=: give a field's name and a finite factor, e.g. ('displacement', 2.0)");
+  return settings;
 }
 
 }  // namespace
@@ -164,19 +185,35 @@ void bindScene(py::module_& module) {
           "quick_look",
           [](std::shared_ptr<const Mesh> mesh, const std::optional<std::string>& up,
              const std::optional<std::string>& colorBy, const std::string& colorMap,
-             const std::optional<std::pair<double, double>>& colorRange, int step) {
+             const std::optional<std::pair<double, double>>& colorRange, const std::optional<int>& step,
+             const py::object& warp, const std::string& component, const std::string& undeformed) {
+            if (step && *step < 0)
+              throw py::value_error(fmt::format("step={}: a field's steps count from 0", *step));
+            if (undeformed != "none" && undeformed != "edges" && undeformed != "ghost")
+              throw py::value_error(
+                  fmt::format("undeformed='{}': use 'none', 'edges' or 'ghost'", undeformed));
             PythonScene scene = quickLookOf(std::move(mesh), upAxisArgument(up));
-            if (colorBy)
-              scene.description.meshes.front().colorBy =
-                  colorByArgument(*colorBy, colorMap, colorRange, step);
+            MeshInstance& instance = scene.description.meshes.front();
+            if (colorBy) instance.colorBy = colorByArgument(*colorBy, colorMap, colorRange, component);
+            if (!warp.is_none()) {
+              instance.warp = warpArgument(warp);
+              instance.undeformed = undeformed == "edges"   ? UndeformedStyle::Edges
+                                    : undeformed == "ghost" ? UndeformedStyle::Ghost
+                                                            : UndeformedStyle::None;
+            }
+            if (step) scene.description.when = StepSelection{step, std::nullopt, "step="};
             return scene;
           },
           py::arg("mesh"), py::arg("up") = py::none(), py::kw_only(), py::arg("color_by") = py::none(),
-          py::arg("color_map") = "viridis", py::arg("color_range") = py::none(), py::arg("step") = 0,
+          py::arg("color_map") = "viridis", py::arg("color_range") = py::none(), py::arg("step") = py::none(),
+          py::arg("warp") = py::none(), py::arg("component") = "magnitude", py::arg("undeformed") = "none",
           "The scene `lancer render part.msh` makes of a bare mesh (up: 'x', 'y', 'z', '-x', ...; None: "
           "guessed); color_by names one of mesh.fields to colour it by, as a scene file's color_by "
           "(color_map 'viridis', 'magma', 'coolwarm' or 'grey'; color_range (low, high), default the "
-          "field's range; step, of a field with several)")
+          "field's range over every step; component 'magnitude', 'x', 'y', 'z', '0'-'8' or 'von_mises'); "
+          "warp 'displacement' or ('displacement', factor) draws the shape moved by that node vector "
+          "(undeformed 'edges' or 'ghost' shows the shape before); step: the time step shown (default "
+          "the first)")
       .def_property(
           "camera", [](const PythonScene& scene) { return scene.description.camera; },
           [](PythonScene& scene, const CameraSettings& camera) {

@@ -115,7 +115,8 @@ TEST(AccelImageIdentity, BvhImageIdenticalForAnyBuildThreadCount) {
     const Accelerator many = buildWith(threads);
     EXPECT_EQ(many.stats().nodes, one.stats().nodes);
     EXPECT_EQ(many.stats().sahCost, one.stats().sahCost);
-    EXPECT_EQ(test::differingPixels(Renderer(scene, many, camera, d.render).renderImage(render), reference), 0);
+    EXPECT_EQ(test::differingPixels(Renderer(scene, many, camera, d.render).renderImage(render), reference),
+              0);
   }
 }
 

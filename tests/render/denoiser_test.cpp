@@ -123,7 +123,7 @@ TEST(Denoiser, NoiseEstimateMatchesTheNoiseAdded) {
   Image clean;
   FeatureBuffers features;
   makeScene(Side{}, Side{.radiance = 0.2f, .depth = 30}, clean, features);
-  // Given as the demodulated image itself: the deviation found is the one added.
+  // The deviation found is the one added, whatever the albedo.
   Image demodulated = withNoise(clean, 0.05f);
   EXPECT_NEAR(estimateNoise(demodulated, features), 0.05, 0.006);
 }

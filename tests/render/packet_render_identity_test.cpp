@@ -41,11 +41,13 @@ TEST_P(PacketRenderIdentity, PacketsAndSingleRaysRenderTheSameBytes) {
   EXPECT_EQ(test::differingPixels(single, packets), 0);
   EXPECT_EQ(singleStats.rays, packetStats.rays) << "the same rays, counted alike";
   EXPECT_EQ(singleStats.samplesPerPixel, packetStats.samplesPerPixel);
-  EXPECT_EQ(test::differingPixels(single, render(description, scene, accelerator, true, 3)), 0) << "3 threads";
+  EXPECT_EQ(test::differingPixels(single, render(description, scene, accelerator, true, 3)), 0)
+      << "3 threads";
   // Every accelerator renders the example's bytes (the BVH is the default, the kd-tree the seed's).
   const Accelerator kdTree =
       Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah);
-  EXPECT_EQ(test::differingPixels(single, render(description, scene, kdTree, true, 2)), 0) << "kd-tree, packets";
+  EXPECT_EQ(test::differingPixels(single, render(description, scene, kdTree, true, 2)), 0)
+      << "kd-tree, packets";
   EXPECT_EQ(test::differingPixels(single, render(description, scene, kdTree, false, 1)), 0)
       << "kd-tree, single rays";
 }

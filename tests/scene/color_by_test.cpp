@@ -42,7 +42,7 @@ TEST(ColorByTest, DefaultsAndAbsence) {
   EXPECT_FALSE(parse("file = \"a.msh\""));
   const auto spec = parse("color_by = { field = \"t\" }");
   ASSERT_TRUE(spec);
-  EXPECT_EQ(spec->step, 0);
+  EXPECT_FALSE(spec->step);
   EXPECT_EQ(spec->map, ColorMapKind::Viridis);
   EXPECT_FALSE(spec->range);
 }

@@ -48,6 +48,8 @@ Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBloc
     MeshField field;
     field.name = input.name;
     field.components = input.components;
+    field.step = input.step;
+    field.time = input.time;
     field.values.assign(input.values.begin(), input.values.end());
     assembler.nodeFields.push_back(std::move(field));
   }
@@ -56,6 +58,8 @@ Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBloc
     raw.field.name = input.name;
     raw.field.perElement = true;
     raw.field.components = input.components;
+    raw.field.step = input.step;
+    raw.field.time = input.time;
     raw.field.values.assign(input.values.begin(), input.values.end());
     raw.tags.assign(input.tags.begin(), input.tags.end());
     assembler.elementFields.push_back(std::move(raw));

@@ -29,6 +29,8 @@ struct NodeFieldInput {
   std::string name;
   int components = 1;
   std::span<const double> values;
+  int step = 0;     // the view's time step index
+  double time = 0;  // and its time value
 };
 
 // Values of one field per element (a gmsh view's ElementData step): components values per record,
@@ -39,6 +41,8 @@ struct ElementFieldInput {
   int components = 1;
   std::span<const std::uint64_t> tags;
   std::span<const double> values;  // tags.size() * components
+  int step = 0;
+  double time = 0;
 };
 
 // The caller has checked the input (finite coordinates, indices below points.size(), known types

@@ -57,28 +57,30 @@ std::vector<Guide> makeGuides(const FeatureBuffers& f) {
   return guides;
 }
 
-// The weight the features give tap q of centre p at pixel offset (dx, dy): SVGF's w_n and w_z, and
-// a Gaussian in albedo.
-float featureWeight(const Guide& p, const Guide& q, int dx, int dy, const DenoiseOptions& options) {
+// The weight the features give tap q of centre p at pixel offset (dx, dy): SVGF's w_n and w_z, and a
+// Gaussian in albedo. Returns the factor outside the exponential (w_n, or 0 across a silhouette
+// against the background) and adds the exponents of the others to `exponent`, so that a tap takes
+// one exp.
+float featureWeight(const Guide& p, const Guide& q, int dx, int dy, const DenoiseOptions& options,
+                    float& exponent) {
   const bool pHit = std::isfinite(p.depth), qHit = std::isfinite(q.depth);
-  if (pHit != qHit) return 0.0f;  // a silhouette against the background
-  float w = 1.0f;
-  if (pHit) {
-    float cosine = std::max(0.0f, dot(p.normal, q.normal));
-    // cosine^128 by squaring (normalPower is a power of two by default; others use pow).
-    if (options.normalPower == 128.0f) {
-      for (int i = 0; i < 7; ++i) cosine *= cosine;
-      w = cosine;
-    } else {
-      w = std::pow(cosine, options.normalPower);
-    }
-    const float expected = options.depthSigma * (p.gradientX * static_cast<float>(std::abs(dx)) +
-                                                 p.gradientY * static_cast<float>(std::abs(dy))) +
-                           1e-4f * p.depth;
-    w *= std::exp(-std::abs(p.depth - q.depth) / expected);
-  }
+  if (pHit != qHit) return 0.0f;
   const Vec3 da = p.albedo - q.albedo;
-  return w * std::exp(-dot(da, da) / (options.albedoSigma * options.albedoSigma));
+  exponent += dot(da, da) / (options.albedoSigma * options.albedoSigma);
+  if (!pHit) return 1.0f;
+  float cosine = std::max(0.0f, dot(p.normal, q.normal));
+  float w = cosine;
+  // cosine^128 by squaring (the default power); other powers use pow.
+  if (options.normalPower == 128.0f) {
+    for (int i = 0; i < 7; ++i) w *= w;
+  } else {
+    w = std::pow(cosine, options.normalPower);
+  }
+  const float expected = options.depthSigma * (p.gradientX * static_cast<float>(std::abs(dx)) +
+                                               p.gradientY * static_cast<float>(std::abs(dy))) +
+                         1e-4f * p.depth;
+  exponent += std::abs(p.depth - q.depth) / expected;
+  return w;
 }
 
 // Pixels whose 2x2 block lies on one smooth surface: there the diagonal detail is noise alone.
@@ -133,10 +135,10 @@ void demodulate(const Image& image, const FeatureBuffers& f, std::vector<Vec3>& 
 
 }  // namespace
 
-float estimateNoise(const Image& demodulated, const FeatureBuffers& features) {
+float estimateNoise(const Image& image, const FeatureBuffers& features) {
   std::vector<Vec3> light;
   light.reserve(features.albedo.size());
-  for (const Rgba& p : demodulated.pixels()) light.push_back(p.rgb());
+  for (const Rgba& p : image.pixels()) light.push_back(p.rgb());
   return estimateNoiseOf(light, makeGuides(features), features.width, features.height);
 }
 
@@ -147,8 +149,13 @@ Image denoise(const Image& noisy, const FeatureBuffers& features, const DenoiseO
   const std::vector<Guide> guides = makeGuides(features);
   std::vector<Vec3> light, divisor;
   demodulate(noisy, features, light, divisor);
+  // Measured on the radiance itself, and colours compared at the centre's albedo below: dividing by a
+  // dark albedo (a dark background) multiplies the noise, which a global level would not follow.
+  std::vector<Vec3> radiance;
+  radiance.reserve(light.size());
+  for (const Rgba& c : noisy.pixels()) radiance.push_back(c.rgb());
   // A floor keeps the colour weight finite on a noiseless image (it then keeps equal colours only).
-  const float noise = std::max(estimateNoiseOf(light, guides, width, height), 1e-5f);
+  const float noise = std::max(estimateNoiseOf(radiance, guides, width, height), 1e-5f);
 
   std::vector<Vec3> filtered(light.size());
   for (int pass = 0; pass < options.passes; ++pass) {
@@ -168,9 +175,12 @@ Image denoise(const Image& noisy, const FeatureBuffers& features, const DenoiseO
             const int qx = x + i * step;
             if (qx < 0 || qx >= width) continue;
             const std::size_t q = features.index(qx, qy);
-            const Vec3 dc = light[q] - light[p];
-            const float w = kKernel[i + 2] * kKernel[j + 2] * std::exp(-dot(dc, dc) * colorScale) *
-                            featureWeight(guides[p], guides[q], i * step, j * step, options);
+            const Vec3 dc = (light[q] - light[p]) * divisor[p];
+            float exponent = dot(dc, dc) * colorScale;
+            const float factor = featureWeight(guides[p], guides[q], i * step, j * step, options, exponent);
+            // Below e^-30 a tap cannot move the sum: skip its exp.
+            if (factor < 1e-12f || exponent > 30.0f) continue;
+            const float w = kKernel[i + 2] * kKernel[j + 2] * factor * std::exp(-exponent);
             sum += light[q] * w;
             weightSum += w;
           }

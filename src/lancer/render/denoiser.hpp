@@ -5,8 +5,8 @@
 //
 // The radiance is divided by the albedo first (demodulated, so texture and element colours are not
 // blurred) and multiplied back after. Each of the passes blurs with the 5x5 B3-spline kernel at a
-// spacing of 2^pass pixels, every tap weighted down when its normal, depth, albedo or (demodulated)
-// colour differs from the centre's: colour differences are measured against the image's own noise
+// spacing of 2^pass pixels, every tap weighted down when its normal, depth, albedo or colour differs
+// from the centre's (at the centre's albedo): colour differences are measured against the image's noise
 // level, estimated robustly (median absolute deviation of the finest wavelet detail, Donoho and
 // Johnstone 1994), so a shadow edge far above the noise stays sharp and a clean image barely changes.
 #pragma once
@@ -29,6 +29,6 @@ struct DenoiseOptions {
 Image denoise(const Image& noisy, const FeatureBuffers& features, const DenoiseOptions& options = {});
 
 // The noise level of `image` where the features are smooth, as denoise estimates it (for tests).
-float estimateNoise(const Image& demodulated, const FeatureBuffers& features);
+float estimateNoise(const Image& image, const FeatureBuffers& features);
 
 }  // namespace lancer

@@ -51,13 +51,19 @@ PreparedRender prepareRender(RenderRequest request) {
 
   StageTimes stages = std::move(request.stages);
   const double secondsBefore = stages.totalSeconds();
-  Scene scene;
-  if (request.quickLookMesh) {
-    std::vector<Mesh> meshes;
+  std::vector<Mesh> meshes;
+  if (request.quickLookMesh)
     meshes.push_back(std::move(*request.quickLookMesh));
-    scene = buildScene(description, std::move(meshes), request.threads, &stages);
+  else
+    meshes = readSceneMeshes(description, request.threads, &stages);
+  if (request.withMeshes) request.withMeshes(description, meshes);
+  Scene scene;
+  std::vector<Mesh> kept;
+  if (request.keepMeshes) {
+    scene = buildSceneAt(description, meshes, request.threads, &stages);
+    kept = std::move(meshes);
   } else {
-    scene = buildScene(description, request.threads, &stages);
+    scene = buildScene(description, std::move(meshes), request.threads, &stages);
   }
   const double loadSeconds = secondsBefore + load.seconds();
 
@@ -67,13 +73,8 @@ PreparedRender prepareRender(RenderRequest request) {
   stages.add("accel build", buildSeconds);
 
   Camera camera = makeCamera(description.camera, scene, description.render);
-  return PreparedRender{std::move(description),
-                        std::move(scene),
-                        std::move(accelerator),
-                        camera,
-                        std::move(stages),
-                        loadSeconds,
-                        buildSeconds};
+  return PreparedRender{std::move(description), std::move(scene), std::move(accelerator), camera,
+                        std::move(stages),      loadSeconds,      buildSeconds,           std::move(kept)};
 }
 
 }  // namespace lancer

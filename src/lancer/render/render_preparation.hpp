@@ -31,6 +31,12 @@ struct RenderRequest {
   int threads = 0;  // of the scene preparation and the accelerator build; 0: every core
   // Asked once the overrides are applied, for the memory check; unset: the image is held whole.
   std::function<ImageBuffer(const RenderSettings&)> imageBuffer;
+  // Called with the meshes as read, before the scene is built (gmsh's View[i] options need the
+  // views' names); may change the description.
+  std::function<void(SceneDescription&, const std::vector<Mesh>&)> withMeshes;
+  // Keep the meshes as read (every step of their views) in PreparedRender::meshes: an animation
+  // over steps builds each frame's scene from them (render/step_animation.hpp).
+  bool keepMeshes = false;
   // Stages the caller already spent on this render (the CLI's read of a bare mesh), continued here
   // and counted as load time.
   StageTimes stages;
@@ -43,10 +49,11 @@ struct PreparedRender {
   SceneDescription description;  // with the overrides applied
   Scene scene;                   // scene.warnings: the mesh readers' warnings, for the caller to show
   Accelerator accelerator;
-  Camera camera;            // the description's camera for the settings' image size
-  StageTimes stages;        // read, orient, normals, scene, accel build
-  double loadSeconds = 0;   // everything before the accelerator build
-  double buildSeconds = 0;  // the accelerator build
+  Camera camera;             // the description's camera for the settings' image size
+  StageTimes stages;         // read, orient, normals, scene, accel build
+  double loadSeconds = 0;    // everything before the accelerator build
+  double buildSeconds = 0;   // the accelerator build
+  std::vector<Mesh> meshes;  // RenderRequest::keepMeshes: the meshes as read
 
   const RenderSettings& settings() const { return description.render; }
   Renderer renderer() const { return Renderer(scene, accelerator, camera, description.render); }

@@ -1,31 +1,29 @@
 #include "lancer/scene/color_by.hpp"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
+#include "lancer/mesh/field_steps.hpp"
 #include "lancer/scene/suggest.hpp"
 
 namespace lancer {
 namespace {
 
-// "\"temperature\" (steps 0, 1), \"velocity\" (step 0)": what a file offers, for messages.
-std::string describeFields(const Mesh& mesh) {
-  std::string text;
-  std::vector<std::string> names;
-  for (const MeshField& field : mesh.fields) {
-    if (std::find(names.begin(), names.end(), field.name) != names.end()) continue;
-    names.push_back(field.name);
-    std::vector<int> steps;
-    for (const MeshField& other : mesh.fields)
-      if (other.name == field.name) steps.push_back(other.step);
-    text += fmt::format("{}\"{}\" (step{} {})", text.empty() ? "" : ", ", field.name,
-                        steps.size() > 1 ? "s" : "", fmt::join(steps, ", "));
+// The least and greatest scalar of a step's values, NaN ignored; empty (low > high) when none.
+std::pair<double, double> scalarRange(const MeshField& field, const FieldComponent& component) {
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (std::size_t i = 0; i < field.itemCount(); ++i) {
+    const double value = componentScalar(field.values.data() + i * static_cast<std::size_t>(field.components),
+                                         field.components, component);
+    if (std::isnan(value)) continue;
+    low = std::min(low, value);
+    high = std::max(high, value);
   }
-  return text;
+  return {low, high};
 }
 
 }  // namespace
@@ -49,7 +47,25 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
   constexpr std::array<std::string_view, 5> kMapNames = {"viridis", "magma", "coolwarm", "grey", "gray"};
   if (auto map = reader.choice("map", kMapNames))
     spec.map = *parseColorMap(kMapNames[static_cast<std::size_t>(*map)]);
-  if (const toml::node* range = reader.find("range")) {
+  if (const toml::node* component = reader.find("component")) {
+    const std::string text = component->is_integer()
+                                 ? std::to_string(component->value<std::int64_t>().value_or(-1))
+                                 : component->value<std::string>().value_or("");
+    const std::optional<FieldComponent> parsed = parseFieldComponent(text);
+    if (!parsed)
+      reader.fail(*component,
+                  fmt::format("{} must be \"magnitude\", \"x\", \"y\", \"z\", \"von_mises\" or an "
+                              "index 0 to 8, found {}",
+                              reader.qualified("component"), describeValue(*component)));
+    spec.component = *parsed;
+  }
+  if (const toml::node* range = reader.find("range"); range && range->is_string()) {
+    if (range->value<std::string>() != "step")
+      reader.fail(*range, fmt::format("{} must be [min, max], \"step\" (each step its own range) or left out "
+                                      "(the range over every step), found {}",
+                                      reader.qualified("range"), describeValue(*range)));
+    spec.perStepRange = true;
+  } else if (range) {
     const auto* array = range->as_array();
     const auto number = [&](std::size_t i) -> std::optional<double> {
       const toml::node* item = array->get(i);
@@ -68,18 +84,9 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
   return spec;
 }
 
-FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh) {
-  const MeshField* found = nullptr;
-  bool nameFound = false;
-  for (const MeshField& field : mesh.fields) {
-    if (field.name != spec.field) continue;
-    nameFound = true;
-    if (field.step == spec.step) {
-      found = &field;
-      break;
-    }
-  }
-  if (!found) {
+FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSelection& scene) {
+  const std::vector<const MeshField*> steps = viewSteps(mesh, spec.field);
+  if (steps.empty()) {
     for (const auto& [name, warning] : mesh.source.skippedFields)
       if (name == spec.field)
         throw InputError(spec.where, fmt::format("color_by field \"{}\": its section in {} could not be read "
@@ -89,26 +96,51 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh) {
       throw InputError(spec.where,
                        fmt::format("color_by field \"{}\": {} has no fields ($NodeData or $ElementData)",
                                    spec.field, mesh.source.path));
-    std::vector<std::string> names;
-    for (const MeshField& field : mesh.fields) names.push_back(field.name);
-    throw InputError(
-        spec.where, nameFound
-                        ? fmt::format("color_by field \"{}\" has no step {} in {}; it has {}", spec.field,
-                                      spec.step, mesh.source.path, describeFields(mesh))
-                        : fmt::format("color_by field \"{}\" is not in {}{}; it has {}", spec.field,
-                                      mesh.source.path, didYouMean(spec.field, names), describeFields(mesh)));
+    throw InputError(spec.where, fmt::format("color_by field \"{}\" is not in {}{}; it has {}", spec.field,
+                                             mesh.source.path, didYouMean(spec.field, viewNames(mesh)),
+                                             describeViews(mesh)));
+  }
+  if (const std::string problem = componentProblem(spec.component, steps.front()->components);
+      !problem.empty())
+    throw InputError(spec.where,
+                     fmt::format("color_by field \"{}\" in {}: {}", spec.field, mesh.source.path, problem));
+  StepSelection when = scene;
+  if (spec.step) when = StepSelection{spec.step, std::nullopt, "color_by.step"};
+  std::string problem;
+  const std::optional<MeshField> found = viewAt(steps, when, problem);
+  if (!found) {
+    const bool fromScene = !spec.step && !scene.where.empty();
+    const std::string message =
+        fmt::format("color_by field \"{}\" {} in {}{}; it has {}", spec.field, problem, mesh.source.path,
+                    fromScene ? fmt::format(" ({})", scene.where) : "", describeViews(mesh));
+    throw InputError(spec.where, message);
   }
   FieldColoring coloring;
   coloring.map = spec.map;
   coloring.perFace = found->perElement;
-  const auto [low, high] = spec.range ? *spec.range : std::pair<double, double>(found->range());
+  std::pair<double, double> range;
+  if (spec.range) {
+    range = *spec.range;
+  } else if (spec.perStepRange) {
+    range = scalarRange(*found, spec.component);
+  } else {  // every step's: a colour means the same value whichever step is shown
+    range = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+    for (const MeshField* step : steps) {
+      const auto [low, high] = scalarRange(*step, spec.component);
+      range = {std::min(range.first, low), std::max(range.second, high)};
+    }
+  }
+  if (!(range.first <= range.second)) range = {0, 0};
+  const auto [low, high] = range;
   coloring.low = low;
   coloring.high = high;
   // A constant field (low == high) shows the middle of the map.
   const double scale = high > low ? 1.0 / (high - low) : 0.0;
   coloring.t.resize(found->itemCount());
+  const auto components = static_cast<std::size_t>(found->components);
   for (std::size_t i = 0; i < coloring.t.size(); ++i) {
-    const double value = found->scalar(i);
+    const double value =
+        componentScalar(found->values.data() + i * components, found->components, spec.component);
     coloring.t[i] = std::isnan(value) ? NAN
                     : scale == 0      ? 0.5f
                                       : static_cast<float>(std::clamp((value - low) * scale, 0.0, 1.0));

@@ -1,4 +1,5 @@
-// `color_by = { field = "temperature", step = 0, map = "viridis", range = [min, max] }` on a
+// `color_by = { field = "temperature", step = 0, map = "viridis", range = [min, max] | "step",
+// component = "magnitude" }` on a
 // [[mesh]]: colouring a surface by a field of its .msh file ($NodeData or $ElementData). Reading
 // the scene key, then resolving it against the loaded mesh into normalised scalars in [0, 1] that
 // the tracer maps to colours (per vertex, interpolated per pixel, or per face).
@@ -19,7 +20,8 @@ namespace lancer {
 std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReader& mesh);
 
 // A field mapped for display: t = (scalar - low) / (high - low), clamped to [0, 1]; vector fields
-// use their magnitude. NaN where the file gives no value (drawn as the map's low end).
+// show spec.component (their magnitude by default). NaN where the file gives no value (drawn as the map's low
+// end).
 struct FieldColoring {
   ColorMapKind map = ColorMapKind::Viridis;
   bool perFace = false;  // element data: t per face; node data: t per mesh vertex
@@ -28,8 +30,9 @@ struct FieldColoring {
   std::vector<float> t;
 };
 
-// Finds the field and step named by `spec` in the mesh; an unknown name or step is an InputError at
+// Finds the field named by `spec` in the mesh at the step `spec` pins, else at the scene's `when` (a
+// step, or a time between two steps); an unknown name, step or component is an InputError at
 // spec.where that lists what the file has (and the closest name).
-FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh);
+FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSelection& when = {});
 
 }  // namespace lancer

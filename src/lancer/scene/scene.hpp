@@ -119,5 +119,13 @@ Scene buildScene(const SceneDescription& description, int threads = 0, StageTime
 // Same, with the meshes already read: meshes[i] belongs to description.meshes[i].
 Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads = 0,
                  StageTimes* times = nullptr);
+// The meshes of the description as buildScene reads them (a `file` pattern: one step per file).
+std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threads = 0,
+                                  StageTimes* times = nullptr);
+// The scene at description.when from meshes read once and kept (they hold every step of their views):
+// each call copies their geometry, warps it and colours it for that step. An animation over steps
+// calls it per frame.
+Scene buildSceneAt(const SceneDescription& description, const std::vector<Mesh>& meshes, int threads = 0,
+                   StageTimes* times = nullptr);
 
 }  // namespace lancer

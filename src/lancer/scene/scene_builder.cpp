@@ -4,21 +4,19 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 #include <map>
-#include <numbers>
 #include <utility>
 
 #include <fmt/format.h>
 
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/feature_edges.hpp"
-#include "lancer/mesh/msh_reader.hpp"
-#include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
 #include "lancer/scene/color_by.hpp"
+#include "lancer/scene/instance_transform.hpp"
 #include "lancer/scene/scene.hpp"
+#include "lancer/scene/warp.hpp"
 #include "lancer/util/check.hpp"
 #include "lancer/util/huge_pages.hpp"
 #include "lancer/util/parallel_for.hpp"
@@ -26,45 +24,6 @@
 
 namespace lancer {
 namespace {
-
-// Scale, then rotate about x, y, z (degrees), then translate: the order the scene file documents.
-struct InstanceTransform {
-  Vec3d scale;
-  double rotation[3][3];
-  Vec3d translate;
-
-  explicit InstanceTransform(const MeshInstance& instance)
-      : scale(instance.scale), translate(instance.translate) {
-    const double k = std::numbers::pi / 180.0;
-    const double cx = std::cos(instance.rotateDegrees.x * k), sx = std::sin(instance.rotateDegrees.x * k);
-    const double cy = std::cos(instance.rotateDegrees.y * k), sy = std::sin(instance.rotateDegrees.y * k);
-    const double cz = std::cos(instance.rotateDegrees.z * k), sz = std::sin(instance.rotateDegrees.z * k);
-    // R = Rz * Ry * Rx
-    const double r[3][3] = {{cz * cy, cz * sy * sx - sz * cx, cz * sy * cx + sz * sx},
-                            {sz * cy, sz * sy * sx + cz * cx, sz * sy * cx - cz * sx},
-                            {-sy, cy * sx, cy * cx}};
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) rotation[i][j] = r[i][j];
-  }
-
-  Vec3d apply(const Vec3d& p) const {
-    const Vec3d s = p * scale;
-    return Vec3d{rotation[0][0] * s.x + rotation[0][1] * s.y + rotation[0][2] * s.z,
-                 rotation[1][0] * s.x + rotation[1][1] * s.y + rotation[1][2] * s.z,
-                 rotation[2][0] * s.x + rotation[2][1] * s.y + rotation[2][2] * s.z} +
-           translate;
-  }
-};
-
-Mesh readInstanceMesh(const MeshInstance& instance, int threads) {
-  std::error_code error;
-  if (!std::filesystem::exists(instance.file, error))
-    throw InputError(instance.where, fmt::format("mesh file '{}' does not exist", instance.file));
-  Mesh mesh = readMsh(instance.file, threads);
-  if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
-    throw InputError(instance.where, fmt::format("mesh '{}' has nothing to draw: {}", instance.file, reason));
-  return mesh;
-}
 
 // Material of each physical tag named in `groups`, checked against the mesh's groups.
 std::vector<std::pair<std::int32_t, std::uint32_t>> resolveGroupMaterials(const MeshInstance& instance,
@@ -354,49 +313,126 @@ ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const SceneGeometry& g
 }  // namespace
 
 Scene buildScene(const SceneDescription& description, int threads, StageTimes* times) {
-  const Stopwatch read;
-  std::vector<Mesh> meshes;
-  meshes.reserve(description.meshes.size());
-  for (const MeshInstance& instance : description.meshes)
-    meshes.push_back(readInstanceMesh(instance, threads));
-  if (times) times->add("read", read.seconds());
-  return buildScene(description, std::move(meshes), threads, times);
+  return buildScene(description, readSceneMeshes(description, threads, times), threads, times);
 }
 
-Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads,
-                 StageTimes* timesOrNull) {
+namespace {
+
+// A mesh as it joins the scene: its instance (the scene's, or one made for an undeformed copy), its
+// geometry (warped when asked) and its colours at the step shown.
+struct SceneEntry {
+  MeshInstance instance;
+  Mesh mesh;
+  std::optional<FieldColoring> coloring;
+};
+
+// Everything of a mesh but its fields: what a step's scene is built from (the fields stay with the
+// mesh as read, which holds every step).
+Mesh geometryOf(const Mesh& mesh) {
+  Mesh copy;
+  copy.origin = mesh.origin;
+  copy.positions = mesh.positions;
+  copy.faces = mesh.faces;
+  copy.facePhysicalTag = mesh.facePhysicalTag;
+  copy.faceEntityTag = mesh.faceEntityTag;
+  copy.faceEdgeMask = mesh.faceEdgeMask;
+  copy.volumeSides = mesh.volumeSides;
+  copy.physicalGroups = mesh.physicalGroups;
+  copy.extraPhysicalGroups = mesh.extraPhysicalGroups;
+  copy.source = mesh.source;
+  return copy;
+}
+
+// The undeformed shape beside a warped mesh: a faint glass-like copy ("ghost") or only its feature
+// edges on a surface that lets everything through ("edges"); neither is coloured nor cut.
+MeshInstance undeformedInstance(const MeshInstance& warped, std::vector<Material>& materials) {
+  MeshInstance copy = warped;
+  copy.warp.reset();
+  copy.colorBy.reset();
+  copy.groupMaterials.clear();
+  copy.undeformed = UndeformedStyle::None;
+  Material material;
+  material.name = "undeformed";
+  material.ka = material.kd = {0.8f, 0.8f, 0.85f};
+  material.ks = {0, 0, 0};
+  material.transparency = warped.undeformed == UndeformedStyle::Ghost ? 0.8f : 1.0f;
+  material.ior = 1;
+  materials.push_back(material);
+  copy.material = static_cast<int>(materials.size() - 1);
+  if (warped.undeformed == UndeformedStyle::Edges) {
+    EdgeSettings edges;
+    edges.featuresOnly = true;
+    edges.color = {0.25f, 0.25f, 0.25f};
+    copy.edges = edges;
+  } else {
+    copy.edges.reset();
+  }
+  return copy;
+}
+
+// The meshes at description.when: colours resolved, warps applied (undeformed copies added after
+// their mesh). `fields[i]` holds mesh i's views; null: mesh i itself (read for this scene alone).
+std::vector<SceneEntry> sceneEntries(const SceneDescription& description, std::vector<Mesh> meshes,
+                                     const std::vector<const Mesh*>& fields, std::vector<Material>& materials,
+                                     std::vector<std::string>& warnings) {
+  std::vector<SceneEntry> entries;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    const MeshInstance& instance = description.meshes[i];
+    SceneEntry entry{instance, std::move(meshes[i]), std::nullopt};
+    const Mesh& source = fields[i] ? *fields[i] : entry.mesh;
+    if (instance.colorBy) entry.coloring = resolveColorBy(*instance.colorBy, source, description.when);
+    std::optional<SceneEntry> undeformed;
+    if (instance.warp) {
+      if (instance.undeformed != UndeformedStyle::None)
+        undeformed =
+            SceneEntry{undeformedInstance(instance, materials), geometryOf(entry.mesh), std::nullopt};
+      std::vector<float>* perFace = entry.coloring && entry.coloring->perFace ? &entry.coloring->t : nullptr;
+      const WarpReport report = warpMesh(entry.mesh, source, *instance.warp, description.when, perFace);
+      if (report.collapsedFaces)
+        warnings.push_back(formatInputWarning(
+            instance.warp->where,
+            fmt::format("{} of {}'s faces collapsed under the warp (factor {}) and were dropped",
+                        report.collapsedFaces, source.source.path, instance.warp->factor)));
+    }
+    entries.push_back(std::move(entry));
+    if (undeformed) entries.push_back(std::move(*undeformed));
+  }
+  return entries;
+}
+
+Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry> entries,
+                    std::vector<Material> materials, std::vector<std::string> warnings, int threads,
+                    StageTimes& times) {
   const Stopwatch whole;
-  StageTimes unused;
-  StageTimes& times = timesOrNull ? *timesOrNull : unused;
   const double secondsBefore = times.totalSeconds();
   Scene scene;
+  scene.warnings = std::move(warnings);
   SceneGeometry& geometry = scene.geometry;
   SceneAppearance& appearance = scene.appearance;
-  appearance.materials = description.materials;
+  appearance.materials = std::move(materials);
   appearance.ambient = description.ambient;
 
   // One origin for the whole scene: the centre of all instances' world bounds, in double.
   std::vector<InstanceTransform> transforms;
   Aabbd worldBounds;
-  for (std::size_t i = 0; i < meshes.size(); ++i) {
-    transforms.emplace_back(description.meshes[i]);
-    for (const MeshFace& face : meshes[i].faces)
+  for (const SceneEntry& entry : entries) {
+    transforms.emplace_back(entry.instance);
+    for (const MeshFace& face : entry.mesh.faces)
       for (int c = 0; c < face.cornerCount(); ++c)
-        worldBounds.extend(transforms[i].apply(meshes[i].worldPosition(face.vertex[c])));
+        worldBounds.extend(transforms.back().apply(entry.mesh.worldPosition(face.vertex[c])));
   }
   geometry.origin = worldBounds.empty() ? Vec3d{} : worldBounds.center();
 
   // Gathered mesh by mesh, kept at the end when some mesh uses them.
   EdgeOverlay overlay;
   std::optional<FieldColors> fields;
-  for (std::size_t i = 0; i < meshes.size(); ++i) {
-    const MeshInstance& instance = description.meshes[i];
-    Mesh& mesh = meshes[i];
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const MeshInstance& instance = entries[i].instance;
+    Mesh& mesh = entries[i].mesh;
     scene.warnings.insert(scene.warnings.end(), mesh.source.warnings.begin(), mesh.source.warnings.end());
     const auto groupMaterials = resolveGroupMaterials(instance, mesh);
     PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin, threads, times);
-    std::optional<FieldColoring> coloring;
-    if (instance.colorBy) coloring = resolveColorBy(*instance.colorBy, mesh);
+    const std::optional<FieldColoring>& coloring = entries[i].coloring;
 
     const auto vertexBase = static_cast<std::uint32_t>(geometry.positions.size());
     const std::size_t faceBase = geometry.faces.size();
@@ -432,6 +468,40 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, 
   // "scene": the rest of this call (placing, gathering geometry, materials, edges, fields, clips).
   times.add("scene", whole.seconds() - (times.totalSeconds() - secondsBefore));
   return scene;
+}
+
+}  // namespace
+
+Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads,
+                 StageTimes* timesOrNull) {
+  StageTimes unused;
+  StageTimes& times = timesOrNull ? *timesOrNull : unused;
+  // Each mesh holds its own fields: colours are resolved before the warp moves its positions and
+  // drops faces (element colours follow).
+  const std::vector<const Mesh*> fields(meshes.size(), nullptr);
+  std::vector<Material> materials = description.materials;
+  std::vector<std::string> warnings;
+  std::vector<SceneEntry> entries = sceneEntries(description, std::move(meshes), fields, materials, warnings);
+  return assembleScene(description, std::move(entries), std::move(materials), std::move(warnings), threads,
+                       times);
+}
+
+Scene buildSceneAt(const SceneDescription& description, const std::vector<Mesh>& meshes, int threads,
+                   StageTimes* timesOrNull) {
+  StageTimes unused;
+  StageTimes& times = timesOrNull ? *timesOrNull : unused;
+  std::vector<Mesh> geometry;
+  std::vector<const Mesh*> fields;
+  for (const Mesh& mesh : meshes) {
+    geometry.push_back(geometryOf(mesh));
+    fields.push_back(&mesh);
+  }
+  std::vector<Material> materials = description.materials;
+  std::vector<std::string> warnings;
+  std::vector<SceneEntry> entries =
+      sceneEntries(description, std::move(geometry), fields, materials, warnings);
+  return assembleScene(description, std::move(entries), std::move(materials), std::move(warnings), threads,
+                       times);
 }
 
 }  // namespace lancer

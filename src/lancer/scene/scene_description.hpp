@@ -108,6 +108,18 @@ struct ClipSettings {
   bool cap = true;
 };
 
+// `warp = { field = "displacement", factor = 2.0 }`: every node moved by factor times its vector (a
+// node view of 3 components) at the step shown; the deformed shape is what is drawn, lit and cut.
+struct WarpSettings {
+  std::string field;
+  double factor = 1;
+  SourceLocation where;  // the warp value, for errors found when the mesh is loaded
+};
+
+// `undeformed = "edges" | "ghost"`: the mesh's shape before the warp, drawn too: its feature edges
+// on an invisible surface, or a faint transparent copy.
+enum class UndeformedStyle { None, Edges, Ghost };
+
 struct MeshInstance {
   std::string file;      // resolved against the scene file's folder
   SourceLocation where;  // of the [[mesh]] table, for errors found when the mesh is loaded
@@ -121,7 +133,12 @@ struct MeshInstance {
   std::vector<GroupMaterial> groupMaterials;
   std::optional<EdgeSettings> edges;
   std::vector<ClipSettings> clips;  // [[mesh.clip]]: planes that cut this mesh only
+  std::optional<WarpSettings> warp;
+  UndeformedStyle undeformed = UndeformedStyle::None;
 };
+
+// Where `[animation] label` goes in each frame.
+enum class LabelPosition { TopLeft, TopRight, BottomLeft, BottomRight };
 
 struct AnimationSettings {
   int frames = 36;
@@ -130,6 +147,14 @@ struct AnimationSettings {
   std::optional<Vec3d> axis;    // default: the camera's up (a turntable about the up axis)
   std::optional<Vec3d> center;  // default: centre of the scene's bounding box
   double degrees = 360;
+  // `over = "steps"`: the frames run through the results' time steps (the orbit turns at the same
+  // time, when `degrees` is not 0); `frames` then samples the time span evenly, blending steps.
+  bool overSteps = false;
+  bool framesGiven = false;   // `frames` set (else one frame per step when over = "steps")
+  bool degreesGiven = false;  // `degrees` set (else an animation over steps does not turn)
+  bool perStepRange = false;  // `range = "step"`: each frame's colours span its own step
+  std::string label;          // e.g. "t = {time:.3g} s": drawn into each frame ({time}, {step})
+  LabelPosition labelPosition = LabelPosition::TopLeft;
 };
 
 // `[floor] shadow_catcher = true`: an infinite plane that is never drawn itself but darkens the
@@ -151,6 +176,9 @@ struct SceneDescription {
   std::vector<ClipSettings> clips;
   std::optional<FloorSettings> floor;
   std::optional<AnimationSettings> animation;
+  // The moment of the results shown (`[render] step`, `--step`; an animation over steps sets the
+  // time of each frame): the colours and the warp of every mesh at that step or time.
+  StepSelection when;
   // The quick look's key and fill are placed for the automatic camera: an animation turns them with
   // the camera, so every frame is lit the same way.
   bool lightsFollowCamera = false;

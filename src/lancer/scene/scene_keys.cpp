@@ -7,26 +7,27 @@ namespace {
 
 constexpr std::array<std::string_view, 9> kDocumentKeys = {
     "render", "camera", "ambient", "light", "material", "mesh", "animation", "clip", "floor"};
-constexpr std::array<std::string_view, 15> kRenderKeys = {
-    "width", "height",   "samples", "max_depth", "sampler",   "shading", "background",        "output",
-    "srgb",  "encoding", "tonemap", "exposure",  "bit_depth", "denoise", "adaptive_threshold"};
+constexpr std::array<std::string_view, 16> kRenderKeys = {
+    "width", "height",   "samples", "max_depth", "sampler",   "shading", "background",         "output",
+    "srgb",  "encoding", "tonemap", "exposure",  "bit_depth", "denoise", "adaptive_threshold", "step"};
 constexpr std::array<std::string_view, 8> kCameraKeys = {
     "projection", "position", "look_at", "up", "up_axis", "fov", "view_height", "gmsh_view"};
 constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
 constexpr std::array<std::string_view, 3> kLightKeys = {"position", "intensity", "attenuation"};
 constexpr std::array<std::string_view, 9> kMaterialKeys = {
     "ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "fresnel", "absorption"};
-constexpr std::array<std::string_view, 11> kMeshKeys = {"file",      "material", "shading", "smooth_angle",
-                                                        "translate", "rotate",   "scale",   "groups",
-                                                        "edges",     "color_by", "clip"};
+constexpr std::array<std::string_view, 13> kMeshKeys = {
+    "file",   "material", "shading",  "smooth_angle", "translate", "rotate",    "scale",
+    "groups", "edges",    "color_by", "clip",         "warp",      "undeformed"};
 constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only", "feature_angle"};
-constexpr std::array<std::string_view, 4> kColorByKeys = {"field", "step", "map", "range"};
+constexpr std::array<std::string_view, 5> kColorByKeys = {"field", "step", "map", "range", "component"};
+constexpr std::array<std::string_view, 2> kWarpKeys = {"field", "factor"};
 constexpr std::array<std::string_view, 3> kClipKeys = {"point", "normal", "cap"};
 constexpr std::array<std::string_view, 3> kFloorKeys = {"shadow_catcher", "height", "normal"};
-constexpr std::array<std::string_view, 6> kAnimationKeys = {"frames", "fps",    "orbit",
-                                                            "axis",   "center", "degrees"};
+constexpr std::array<std::string_view, 10> kAnimationKeys = {
+    "frames", "fps", "orbit", "axis", "center", "degrees", "over", "range", "label", "label_position"};
 
-constexpr std::array<SceneTableKeys, 13> kSceneTables = {{
+constexpr std::array<SceneTableKeys, 14> kSceneTables = {{
     {SceneTable::Document, "", kDocumentKeys},
     {SceneTable::Render, "render", kRenderKeys},
     {SceneTable::Camera, "camera", kCameraKeys},
@@ -40,6 +41,7 @@ constexpr std::array<SceneTableKeys, 13> kSceneTables = {{
     {SceneTable::Clip, "clip", kClipKeys},
     {SceneTable::Floor, "floor", kFloorKeys},
     {SceneTable::Animation, "animation", kAnimationKeys},
+    {SceneTable::MeshWarp, "mesh.warp", kWarpKeys},
 }};
 
 constexpr bool inEnumOrder() {

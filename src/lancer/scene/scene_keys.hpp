@@ -24,6 +24,7 @@ enum class SceneTable {
   Clip,
   Floor,
   Animation,
+  MeshWarp,
 };
 
 struct SceneTableKeys {

@@ -15,6 +15,7 @@
 
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/result_keys.hpp"
 #include "lancer/scene/suggest.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
 #include "lancer/scene/up_axis.hpp"
@@ -153,6 +154,18 @@ RenderSettings readRender(const SceneFile& file, const toml::table& table) {
   if (auto output = reader.nonEmptyString("output")) render.output = file.resolve(*output);
   readOutputKeys(reader, render);
   return render;
+}
+
+// `[render] step = K`: the step of the results every mesh shows (colours and warps).
+StepSelection readRenderStep(const SceneFile& file, const toml::table& table) {
+  const TomlTableReader reader(table, "render", file.path, SceneTable::Render);
+  StepSelection when;
+  if (auto step = reader.integer("step", 0, 1'000'000'000)) {
+    when.step = static_cast<int>(*step);
+    const SourceLocation where = reader.location(*reader.find("step"));
+    when.where = fmt::format("render.step at {}:{}", where.file, where.line);
+  }
+  return when;
 }
 
 // A camera needs a direction (position != look_at) and an up that is not along it.
@@ -428,6 +441,7 @@ MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size
   mesh.groupMaterials = readGroupMaterials(file, reader, materials);
   mesh.edges = readEdges(file, reader);
   mesh.colorBy = readColorBy(file.path, reader);
+  readWarpKeys(reader, mesh);
   const std::string clipName = reader.qualified("clip");
   const std::vector<const toml::table*> clips = tableArray(file, table, "clip", clipName, "mesh.clip");
   for (std::size_t i = 0; i < clips.size(); ++i)
@@ -482,6 +496,7 @@ AnimationSettings readAnimation(const SceneFile& file, const toml::table& table,
   }
   animation.center = reader.vector("center", Triple::Xyz);
   if (auto degrees = reader.number("degrees")) animation.degrees = *degrees;
+  readAnimationStepKeys(reader, animation);
   return animation;
 }
 
@@ -512,8 +527,10 @@ SceneDescription parseScene(std::string_view text, const std::string& path) {
 
   SceneDescription scene;
   scene.path = path;
-  if (const toml::table* render = sectionTable(file, root, "render"))
+  if (const toml::table* render = sectionTable(file, root, "render")) {
     scene.render = readRender(file, *render);
+    scene.when = readRenderStep(file, *render);
+  }
   if (const toml::table* camera = sectionTable(file, root, "camera"))
     scene.camera = readCamera(file, *camera);
   if (const toml::table* ambient = sectionTable(file, root, "ambient")) {

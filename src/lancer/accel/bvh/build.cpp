@@ -83,6 +83,7 @@ struct BvhBuilder {
     };
     std::vector<std::thread> pool2;
     const int helpers = std::min<int>(threads_, static_cast<int>(subtrees_.size())) - 1;
+    pool2.reserve(static_cast<std::size_t>(std::max(helpers, 0)));
     for (int t = 0; t < helpers; ++t) pool2.emplace_back(work);
     work();
     for (std::thread& thread : pool2) thread.join();
@@ -220,8 +221,9 @@ Bvh Bvh::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
   const Aabb box = all.bounds.aabb();
   Flattener flattener{bvh.nodes_, firstTriangle, bvh.stats_};
   if (root != nullptr) {
-    bvh.nodes_.reserve(std::max<std::size_t>(1, n / 4));
+    bvh.nodes_.reserve(std::max<std::size_t>(1, n / 16));
     flattener.flatten(*root, 0);
+    bvh.nodes_.shrink_to_fit();
   } else {
     bvh.nodes_.emplace_back().clear();
     bvh.stats_.nodes = 1;

@@ -20,34 +20,6 @@ namespace {
 // Items per chunk of the parallel passes: big enough that a thread start is noise beside its work.
 constexpr std::size_t kFaceGrain = 32768;
 constexpr std::size_t kNodeGrain = 32768;
-
-// A face is degenerate as the renderer will see it (float positions) when its area is zero up to
-// rounding: twice its area below 1e-12 times its longest edge squared. Both sides are compared
-// squared, in double: no square root, no division, once per face of a million-face load.
-inline double maxOf(double a, double b) { return a > b ? a : b; }
-
-bool isDegenerateTriangle(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
-  const Vec3d ab = b - a, bc = c - b, ca = a - c;
-  const Vec3d normal = cross(ab, bc);  // = (b - a) x (c - a): twice the vector area
-  const double longest = maxOf(maxOf(dot(ab, ab), dot(bc, bc)), dot(ca, ca));
-  return !(dot(normal, normal) > 1e-24 * longest * longest);  // NaN counts as degenerate
-}
-
-bool isDegenerateQuad(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& d) {
-  const Vec3d ab = b - a, bc = c - b, cd = d - c, da = a - d;
-  const Vec3d normal = cross(c - a, d - b);  // twice the vector area of the quad (its diagonals)
-  const double longest = maxOf(maxOf(dot(ab, ab), dot(bc, bc)), maxOf(dot(cd, cd), dot(da, da)));
-  return !(dot(normal, normal) > 1e-24 * longest * longest);
-}
-
-bool isDegenerate(const Vec3* p, const MeshFace& face) {
-  const Vec3d a = toDouble(p[face.vertex[0]]);
-  const Vec3d b = toDouble(p[face.vertex[1]]);
-  const Vec3d c = toDouble(p[face.vertex[2]]);
-  if (!face.isQuad()) return isDegenerateTriangle(a, b, c);
-  return isDegenerateQuad(a, b, c, toDouble(p[face.vertex[3]]));
-}
-
 }  // namespace
 
 void MshMeshAssembler::reserveFaces(std::size_t count) {
@@ -424,8 +396,8 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
     if (identity || usedNode[i]) mesh.positions[identity ? i : remap[i]] = toFloat(coords[i] - mesh.origin);
   });
 
-  // Drop the faces that are degenerate as the renderer will see them (isDegenerate above): each
-  // chunk renumbers its faces and marks the degenerate ones, then one pass closes the gaps.
+  // Drop the faces that are degenerate as the renderer will see them (isDegenerateFace, face_geometry.hpp):
+  // each chunk renumbers its faces and marks the degenerate ones, then one pass closes the gaps.
   const std::vector<Vec3>& positions = mesh.positions;
   const ChunkPlan faceChunks(faces_.size(), kFaceGrain);
   std::vector<std::uint8_t> degenerate(faces_.size(), 0);
@@ -442,7 +414,7 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
       MeshFace& face = faces_[f];
       if (!identity)
         for (int c = 0; c < face.cornerCount(); ++c) face.vertex[c] = remap[face.vertex[c]];
-      if (isDegenerate(positions.data(), face)) degenerate[f] = 1, ++chunkDropped[k];
+      if (isDegenerateFace(positions.data(), face)) degenerate[f] = 1, ++chunkDropped[k];
     }
   });
   std::size_t kept = faces_.size();

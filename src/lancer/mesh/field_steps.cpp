@@ -1,0 +1,177 @@
+#include "lancer/mesh/field_steps.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+namespace lancer {
+
+std::optional<FieldComponent> parseFieldComponent(std::string_view text) {
+  using Kind = FieldComponent::Kind;
+  if (text == "magnitude") return FieldComponent{Kind::Magnitude, 0};
+  if (text == "von_mises") return FieldComponent{Kind::VonMises, 0};
+  if (text == "x" || text == "y" || text == "z") return FieldComponent{Kind::Index, text[0] - 'x'};
+  int index = -1;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), index);
+  if (!text.empty() && error == std::errc() && end == text.data() + text.size() && index >= 0 && index < 9)
+    return FieldComponent{Kind::Index, index};
+  return std::nullopt;
+}
+
+std::string describeComponent(const FieldComponent& component) {
+  switch (component.kind) {
+    case FieldComponent::Kind::Magnitude:
+      return "magnitude";
+    case FieldComponent::Kind::VonMises:
+      return "von_mises";
+    case FieldComponent::Kind::Index:
+      break;
+  }
+  return fmt::format("component {}", component.index);
+}
+
+std::string componentProblem(const FieldComponent& component, int components) {
+  const std::string kind = components == 1   ? "a scalar (1 component)"
+                           : components == 3 ? "a vector (3 components)"
+                           : components == 9 ? "a tensor (9 components)"
+                                             : fmt::format("{} components", components);
+  if (component.kind == FieldComponent::Kind::VonMises && components != 9)
+    return fmt::format(
+        "von_mises needs a tensor of 9 components, the view is {}; use \"magnitude\" or 0 to {}", kind,
+        components - 1);
+  if (component.kind == FieldComponent::Kind::Index && component.index >= components)
+    return fmt::format("component {} does not exist: the view is {}; use {}", component.index, kind,
+                       components == 1 ? std::string("0 or \"magnitude\"")
+                                       : fmt::format("\"magnitude\" or 0 to {}", components - 1));
+  return {};
+}
+
+float componentScalar(const float* v, int components, const FieldComponent& component) {
+  switch (component.kind) {
+    case FieldComponent::Kind::Index:
+      return v[component.index];
+    case FieldComponent::Kind::VonMises: {
+      const double xx = v[0], yy = v[4], zz = v[8];
+      const double xy = 0.5 * (double{v[1]} + v[3]), yz = 0.5 * (double{v[5]} + v[7]),
+                   zx = 0.5 * (double{v[2]} + v[6]);
+      const double sum = (xx - yy) * (xx - yy) + (yy - zz) * (yy - zz) + (zz - xx) * (zz - xx) +
+                         6 * (xy * xy + yz * yz + zx * zx);
+      return static_cast<float>(std::sqrt(0.5 * sum));
+    }
+    case FieldComponent::Kind::Magnitude:
+      break;
+  }
+  if (components == 1) return v[0];
+  double sum = 0;
+  for (int c = 0; c < components; ++c) sum += static_cast<double>(v[c]) * v[c];
+  return static_cast<float>(std::sqrt(sum));
+}
+
+namespace {
+
+// Whether the steps, in step-index order, have strictly increasing times.
+bool timedByTags(std::vector<const MeshField*> steps) {
+  std::sort(steps.begin(), steps.end(),
+            [](const MeshField* a, const MeshField* b) { return a->step < b->step; });
+  for (std::size_t i = 1; i < steps.size(); ++i)
+    if (!(steps[i]->time > steps[i - 1]->time)) return false;
+  return true;
+}
+
+}  // namespace
+
+std::vector<const MeshField*> viewSteps(const Mesh& mesh, std::string_view name) {
+  std::vector<const MeshField*> steps;
+  for (const MeshField& field : mesh.fields)
+    if (field.name == name) steps.push_back(&field);
+  const bool byTime = timedByTags(steps);
+  std::stable_sort(steps.begin(), steps.end(), [&](const MeshField* a, const MeshField* b) {
+    if (byTime && a->time != b->time) return a->time < b->time;
+    return a->step < b->step;
+  });
+  return steps;
+}
+
+double stepTime(const std::vector<const MeshField*>& steps, std::size_t i) {
+  return timedByTags(steps) ? steps[i]->time : static_cast<double>(steps[i]->step);
+}
+
+std::vector<std::string> viewNames(const Mesh& mesh) {
+  std::vector<std::string> names;
+  for (const MeshField& field : mesh.fields)
+    if (std::find(names.begin(), names.end(), field.name) == names.end()) names.push_back(field.name);
+  return names;
+}
+
+std::string describeViews(const Mesh& mesh) {
+  std::string text;
+  for (const std::string& name : viewNames(mesh)) {
+    std::vector<int> steps;
+    for (const MeshField* field : viewSteps(mesh, name)) steps.push_back(field->step);
+    const std::string list = steps.size() > 6 ? fmt::format("{} to {}", steps.front(), steps.back())
+                                              : fmt::format("{}", fmt::join(steps, ", "));
+    text += fmt::format("{}\"{}\" (step{} {})", text.empty() ? "" : ", ", name, steps.size() > 1 ? "s" : "",
+                        list);
+  }
+  return text;
+}
+
+std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, const StepSelection& when,
+                                std::string& problem) {
+  if (steps.empty()) return std::nullopt;
+  if (when.step || !when.time) {
+    const int wanted = when.step.value_or(steps.front()->step);
+    for (const MeshField* field : steps)
+      if (field->step == wanted) return *field;
+    std::vector<int> indices;
+    indices.reserve(steps.size());
+    for (const MeshField* field : steps) indices.push_back(field->step);
+    std::sort(indices.begin(), indices.end());
+    problem = fmt::format("has no step {}: its steps are {} (give a step from {} to {})", wanted,
+                          indices.size() > 6 ? fmt::format("{} to {}", indices.front(), indices.back())
+                                             : fmt::format("{}", fmt::join(indices, ", ")),
+                          indices.front(), indices.back());
+    return std::nullopt;
+  }
+  const double t = *when.time;
+  std::size_t next = 0;
+  while (next < steps.size() && stepTime(steps, next) < t) ++next;
+  if (next == 0) return *steps.front();
+  if (next == steps.size()) return *steps.back();
+  const double t0 = stepTime(steps, next - 1), t1 = stepTime(steps, next);
+  if (t1 == t) return *steps[next];
+  const MeshField& a = *steps[next - 1];
+  const MeshField& b = *steps[next];
+  if (a.values.size() != b.values.size() || a.components != b.components) {
+    problem = fmt::format("steps {} and {} have different sizes ({} and {} values); they cannot be blended",
+                          a.step, b.step, a.values.size(), b.values.size());
+    return std::nullopt;
+  }
+  const auto w = static_cast<float>((t - t0) / (t1 - t0));
+  MeshField blend;
+  blend.name = a.name;
+  blend.perElement = a.perElement;
+  blend.components = a.components;
+  blend.step = -1;
+  blend.time = t;
+  blend.values.resize(a.values.size());
+  for (std::size_t i = 0; i < a.values.size(); ++i)
+    blend.values[i] = a.values[i] + w * (b.values[i] - a.values[i]);
+  return blend;
+}
+
+std::vector<double> stepTimes(const Mesh& mesh, const std::vector<std::string>& names) {
+  std::vector<double> times;
+  for (const std::string& name : names) {
+    const std::vector<const MeshField*> steps = viewSteps(mesh, name);
+    for (std::size_t i = 0; i < steps.size(); ++i) times.push_back(stepTime(steps, i));
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
+}  // namespace lancer

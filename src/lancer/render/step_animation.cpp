@@ -1,0 +1,150 @@
+#include "lancer/render/step_animation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "lancer/image/text.hpp"
+#include "lancer/mesh/field_steps.hpp"
+#include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/warp.hpp"
+#include "lancer/util/stopwatch.hpp"
+
+namespace lancer {
+namespace {
+
+bool anyWarp(const SceneDescription& description) {
+  return std::any_of(description.meshes.begin(), description.meshes.end(),
+                     [](const MeshInstance& mesh) { return mesh.warp.has_value(); });
+}
+
+}  // namespace
+
+StepFrames planStepFrames(const SceneDescription& description, const std::vector<Mesh>& meshes,
+                          const AnimationSettings& animation) {
+  std::vector<double> times;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    const MeshInstance& instance = description.meshes[i];
+    std::vector<std::string> views;
+    if (instance.colorBy && !instance.colorBy->step) views.push_back(instance.colorBy->field);
+    if (instance.warp) views.push_back(instance.warp->field);
+    const std::vector<double> own = stepTimes(meshes[i], views);
+    times.insert(times.end(), own.begin(), own.end());
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  if (times.empty())
+    throw InputError(
+        SourceLocation{description.path},
+        "an animation over steps needs a mesh coloured (color_by) or warped (warp) by a view of "
+        "its file; add color_by = { field = \"...\" } or warp = { field = \"...\" } to a [[mesh]]");
+  StepFrames frames;
+  if (!animation.framesGiven) {
+    frames.times = times;
+  } else {
+    const int count = animation.frames;
+    for (int k = 0; k < count; ++k)
+      frames.times.push_back(count == 1 ? times.front()
+                                        : times.front() + (times.back() - times.front()) * k / (count - 1));
+    frames.times.back() = times.back();  // exactly the last step, not a rounding before it
+  }
+  for (const double t : frames.times) {
+    const auto after = std::upper_bound(times.begin(), times.end(), t);
+    frames.steps.push_back(static_cast<int>(std::max<std::ptrdiff_t>(after - times.begin() - 1, 0)));
+  }
+  return frames;
+}
+
+StepScenes::StepScenes(SceneDescription description, const std::vector<Mesh>& meshes,
+                       const AnimationSettings& animation, AccelKind accel, int threads)
+    : description_(std::move(description)),
+      meshes_(meshes),
+      animation_(animation),
+      accel_(accel),
+      threads_(threads) {
+  frames_ = planStepFrames(description_, meshes_, animation_);
+  animation_.frames = frameCount();
+  if (!animation_.degreesGiven) animation_.degrees = 0;  // the steps move; the camera stays unless asked
+  for (MeshInstance& mesh : description_.meshes)
+    if (mesh.colorBy && animation_.perStepRange) mesh.colorBy->perStepRange = true;
+  // The camera frames every frame's shape: the union of the deformed bounds over the frames.
+  const bool warped = anyWarp(description_);
+  for (std::size_t k = 0; k < (warped ? frames_.times.size() : 1); ++k) {
+    description_.when = StepSelection{std::nullopt, frames_.times[k], "the animation over steps"};
+    framing_.extend(warpedWorldBounds(description_, meshes_));
+  }
+}
+
+void StepScenes::buildAt(double time) {
+  const Stopwatch stopwatch;
+  description_.when = StepSelection{std::nullopt, time, "the animation over steps"};
+  const bool first = !scene_.has_value();
+  Scene next = buildSceneAt(description_, meshes_, threads_);
+  // Every frame is framed alike: the camera and the orbit see the bounds of the whole animation.
+  SceneGeometry& geometry = next.geometry;
+  geometry.bounds = Aabb{};
+  if (!framing_.empty()) {
+    geometry.bounds.extend(geometry.toSceneSpace(framing_.lower));
+    geometry.bounds.extend(geometry.toSceneSpace(framing_.upper));
+  }
+  // Colours alone change when nothing is warped: the geometry, so the accelerator, stays. A warped
+  // mesh with the same faces (none collapsed, none turned) moved its vertices only: the accelerator
+  // is refitted where it can be (the BVH), else built again.
+  const bool warped = anyWarp(description_);
+  const bool sameFaces = !first && scene_->geometry.faces.size() == geometry.faces.size() &&
+                         std::equal(geometry.faces.begin(), geometry.faces.end(),
+                                    scene_->geometry.faces.begin(), [](const MeshFace& a, const MeshFace& b) {
+                                      return std::equal(a.vertex, a.vertex + 4, b.vertex);
+                                    });
+  scene_.emplace(std::move(next));
+  const SceneGeometry& built = scene_->geometry;  // `geometry` was moved with `next`
+  if (first || warped) {
+    const Stopwatch build;
+    KdBuildOptions options;
+    options.threads = threads_;
+    if (sameFaces && accelerator_) {
+      if (accelerator_->update(built.positions, built.faces, options)) ++refits_;
+    } else {
+      accelerator_.emplace(Accelerator::build(built.positions, built.faces, accel_, options));
+    }
+    if (!first) accelSeconds_ += build.seconds();
+  }
+  if (first) {
+    warnings_ = scene_->warnings;
+  } else {
+    rebuildSeconds_ += stopwatch.seconds();
+    ++rebuilds_;
+  }
+  builtTime_ = time;
+}
+
+Image StepScenes::render(int frame, const RenderOptions& options, RenderStats* stats) {
+  const double time = frames_.times[static_cast<std::size_t>(frame)];
+  if (!builtTime_ || *builtTime_ != time) buildAt(time);
+  Image image = renderAnimationFrame(*scene_, *accelerator_, description_, animation_, frame, options, stats);
+  if (!animation_.label.empty()) {
+    const std::string text =
+        formatStepLabel(animation_.label, time, frames_.steps[static_cast<std::size_t>(frame)],
+                        SourceLocation{description_.path});
+    drawFrameLabel(image, text, animation_.labelPosition);
+  }
+  return image;
+}
+
+void drawFrameLabel(Image& image, const std::string& text, LabelPosition position) {
+  const Font& font = defaultFont();
+  // A twentieth of the height, at least legible: 14 px in a 240-pixel frame, 36 px in 720.
+  const float size = std::max(12.0f, static_cast<float>(image.height()) / 20.0f);
+  const TextMetrics metrics = font.measure(text, size);
+  const int margin = static_cast<int>(std::lround(0.6f * size));
+  const bool right = position == LabelPosition::TopRight || position == LabelPosition::BottomRight;
+  const bool bottom = position == LabelPosition::BottomLeft || position == LabelPosition::BottomRight;
+  const int x = right ? image.width() - margin - metrics.inkRight : margin - metrics.inkLeft;
+  const int baseline = bottom ? image.height() - margin - metrics.inkBottom : margin - metrics.inkTop;
+  TextStyle style(Vec3{0.02f, 0.02f, 0.02f});
+  style.halo = Vec3{1, 1, 1};  // legible over any background and any colour map
+  font.draw(image, x, baseline, text, size, style);
+}
+
+}  // namespace lancer

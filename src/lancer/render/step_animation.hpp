@@ -1,0 +1,80 @@
+// Animations over the time steps of results (`[animation] over = "steps"`, `--over steps`): one frame
+// per step in time order, or `frames` evenly spaced in time with the steps between blended linearly.
+// Each frame's scene is the scene at its time (colours, warps) built from meshes read once; when a
+// mesh is warped its geometry changes, so the accelerator is refitted (the BVH, when the faces are
+// the same) or built again for the frame. The camera,
+// the orbit's centre and the colour ranges stay fixed over the animation (a colour means the same
+// value in every frame; the picture does not jump as the part deforms).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lancer/accel/accelerator.hpp"
+#include "lancer/render/animation.hpp"
+
+namespace lancer {
+
+// The frames' times and, for the label, the step each shows (the step at or before its time).
+struct StepFrames {
+  std::vector<double> times;
+  std::vector<int> steps;  // 0-based position in the steps' time order
+};
+
+// The times of the steps of every view the scene uses (colours not pinned to a step, warps) and the
+// frames over them. Throws InputError when no mesh uses a view with steps.
+StepFrames planStepFrames(const SceneDescription& description, const std::vector<Mesh>& meshes,
+                          const AnimationSettings& animation);
+
+// Draws `text` into a corner of the frame (DejaVu Sans, dark with a white halo, a twentieth of the
+// frame's height).
+void drawFrameLabel(Image& image, const std::string& text, LabelPosition position);
+
+// The scenes of an animation over steps, one frame at a time (frames rendered in any order).
+class StepScenes {
+ public:
+  // `description.when` is replaced per frame; `meshes` (as read, every step) must outlive this.
+  StepScenes(SceneDescription description, const std::vector<Mesh>& meshes,
+             const AnimationSettings& animation, AccelKind accel, int threads);
+
+  const StepFrames& frames() const { return frames_; }
+  int frameCount() const { return static_cast<int>(frames_.times.size()); }
+  // The description every frame is rendered with (its camera fixed over the animation).
+  const SceneDescription& description() const { return description_; }
+  const AnimationSettings& animation() const { return animation_; }
+
+  // Frame `frame` (its label drawn when the animation has one). Builds the frame's scene and
+  // accelerator unless the previous frame had the same time and nothing is warped.
+  Image render(int frame, const RenderOptions& options, RenderStats* stats = nullptr);
+
+  // Seconds spent building scenes and accelerators for frames after the first, and how many.
+  double rebuildSeconds() const { return rebuildSeconds_; }
+  double accelSeconds() const { return accelSeconds_; }
+  int rebuilds() const { return rebuilds_; }
+  int refits() const { return refits_; }  // of the rebuilds, those whose accelerator was refitted
+  // What the first frame's build warned about (collapsed faces, the readers' warnings).
+  const std::vector<std::string>& warnings() const { return warnings_; }
+  std::size_t faceCount() const { return scene_ ? scene_->geometry.faces.size() : 0; }
+
+ private:
+  void buildAt(double time);
+
+  SceneDescription description_;
+  const std::vector<Mesh>& meshes_;
+  AnimationSettings animation_;
+  AccelKind accel_;
+  int threads_;
+  StepFrames frames_;
+  Aabbd framing_;  // world bounds of every frame's geometry
+  std::optional<Scene> scene_;
+  std::optional<Accelerator> accelerator_;
+  std::optional<double> builtTime_;
+  double rebuildSeconds_ = 0;
+  double accelSeconds_ = 0;
+  int rebuilds_ = 0;
+  int refits_ = 0;
+  std::vector<std::string> warnings_;
+};
+
+}  // namespace lancer

@@ -1,0 +1,159 @@
+#include "lancer/scene/gmsh_post_options.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+
+#include "lancer/mesh/field_steps.hpp"
+
+namespace lancer {
+
+std::vector<GmshPostView> readGmshPostViews(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return {};  // readGmshView has said why already
+  std::map<int, GmshPostView> views;
+  std::string line;
+  for (std::int64_t lineNumber = 1; std::getline(in, line); ++lineNumber) {
+    constexpr std::string_view kPrefix = "View[";
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line.compare(start, kPrefix.size(), kPrefix) != 0) continue;
+    const std::size_t close = line.find("].", start);
+    const std::size_t equals = line.find('=', start);
+    if (close == std::string::npos || equals == std::string::npos || equals < close) continue;
+    int index = -1;
+    const char* digits = line.data() + start + kPrefix.size();
+    const auto [end, error] = std::from_chars(digits, line.data() + close, index);
+    if (error != std::errc() || end != line.data() + close || index < 0 || index > 100000) continue;
+    std::string name = line.substr(close + 2, equals - close - 2);
+    name.erase(name.find_last_not_of(" \t") + 1);
+    std::string value = line.substr(equals + 1);
+    value = value.substr(0, value.find(';'));
+    const std::size_t first = value.find_first_not_of(" \t");
+    GmshPostView& view = views[index];
+    view.index = index;
+    if (view.line == 0) view.line = lineNumber;
+    if (first == std::string::npos) continue;
+    if (name == "Name" && value[first] == '"') {
+      const std::size_t last = value.find('"', first + 1);
+      view.name = value.substr(first + 1, last == std::string::npos ? std::string::npos : last - first - 1);
+      continue;
+    }
+    constexpr std::array<std::string_view, 10> kNumbers = {
+        "TimeStep",      "VectorType", "DisplacementFactor", "RangeType", "CustomMin", "CustomMax",
+        "IntervalsType", "NbIso",      "ShowScale",          "Visible"};
+    const auto known = std::find(kNumbers.begin(), kNumbers.end(), name);
+    if (known == kNumbers.end()) continue;  // colours, fonts, the rest: not lancer's
+    char* numberEnd = nullptr;
+    const double number = std::strtod(value.c_str() + first, &numberEnd);
+    if (numberEnd == value.c_str() + first || !std::isfinite(number))
+      throw InputError(
+          SourceLocation{path, lineNumber, static_cast<std::int64_t>(equals + 2)},
+          fmt::format("View[{}].{} should be a number, not '{}'", index, name, value.substr(first)));
+    const int whole = static_cast<int>(std::lround(number));
+    switch (known - kNumbers.begin()) {
+      case 0:
+        view.timeStep = whole;
+        break;
+      case 1:
+        view.vectorType = whole;
+        break;
+      case 2:
+        view.displacementFactor = number;
+        break;
+      case 3:
+        view.rangeType = whole;
+        break;
+      case 4:
+        view.customMin = number;
+        break;
+      case 5:
+        view.customMax = number;
+        break;
+      case 6:
+        view.intervalsType = whole;
+        break;
+      case 7:
+        view.nbIso = whole;
+        break;
+      case 8:
+        view.showScale = whole != 0;
+        break;
+      default:
+        view.visible = whole != 0;
+        break;
+    }
+  }
+  std::vector<GmshPostView> result;
+  result.reserve(views.size());
+  for (auto& [index, view] : views) result.push_back(std::move(view));
+  return result;
+}
+
+void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
+                        const std::vector<GmshPostView>& views, const std::string& path) {
+  if (views.empty() || description.meshes.empty()) return;
+  MeshInstance& instance = description.meshes.front();
+  const std::vector<std::string> names = viewNames(mesh);
+  const auto nameOf = [&](const GmshPostView& view) -> std::string {
+    if (view.name) return *view.name;
+    if (view.index >= static_cast<int>(names.size()))
+      throw InputError(
+          SourceLocation{path, view.line, 1},
+          fmt::format("View[{}] is set here, but {} has {} view{} ({}): the options belong to another "
+                      "file, or save them again from gmsh with this mesh open",
+                      view.index, mesh.source.path, names.size(), names.size() == 1 ? "" : "s",
+                      describeViews(mesh)));
+    return names[static_cast<std::size_t>(view.index)];
+  };
+  const GmshPostView* displacement = nullptr;
+  const GmshPostView* colour = nullptr;
+  for (const GmshPostView& view : views) {
+    if (!view.visible) continue;
+    const std::vector<const MeshField*> steps = viewSteps(mesh, nameOf(view));
+    const bool vector = !steps.empty() && steps.front()->components == 3 && !steps.front()->perElement;
+    if (view.vectorType == 5 && vector && !displacement)
+      displacement = &view;
+    else if (!colour)
+      colour = &view;
+  }
+  if (displacement && !instance.warp) {
+    WarpSettings warp;
+    warp.field = nameOf(*displacement);
+    warp.factor = displacement->displacementFactor;
+    warp.where = SourceLocation{path, displacement->line, 1};
+    instance.warp = warp;
+  }
+  if (!colour) colour = displacement;
+  if (!colour) return;
+  ColorBy color = instance.colorBy.value_or(ColorBy{});
+  if (!instance.colorBy) {
+    color.field = nameOf(*colour);
+    color.where = SourceLocation{path, colour->line, 1};
+  }
+  if (colour->rangeType == 2 && colour->customMin < colour->customMax)
+    color.range = std::pair{colour->customMin, colour->customMax};
+  color.perStepRange = colour->rangeType == 3;
+  color.gmshIntervalsType = colour->intervalsType;
+  color.gmshNbIso = colour->nbIso;
+  color.showScale = colour->showScale;
+  instance.colorBy = color;
+  if (colour->timeStep && !description.when.step) {
+    const std::vector<const MeshField*> steps = viewSteps(mesh, color.field);
+    const int k = *colour->timeStep;
+    if (k < 0 || k >= static_cast<int>(steps.size()))
+      throw InputError(
+          SourceLocation{path, colour->line, 1},
+          fmt::format("View[{}].TimeStep = {}, but the view \"{}\" of {} has {} step{}: give 0 to {}",
+                      colour->index, k, color.field, mesh.source.path, steps.size(),
+                      steps.size() == 1 ? "" : "s", steps.empty() ? 0 : steps.size() - 1));
+    description.when = StepSelection{steps[static_cast<std::size_t>(k)]->step, std::nullopt,
+                                     fmt::format("View[{}].TimeStep in {}", colour->index, path)};
+  }
+}
+
+}  // namespace lancer

@@ -1,0 +1,45 @@
+// What gmsh's GUI saved about its post-processing views (View[i].* in part.msh.opt, "File > Save
+// Model Options"), where lancer means the same: the time step shown, the displacement of a vector
+// view drawn as a deformed shape (VectorType = 5, DisplacementFactor), the range (RangeType,
+// CustomMin, CustomMax), iso-values or bands (IntervalsType, NbIso), the colour scale (ShowScale)
+// and which views are shown (Visible). View i is the i-th view of the mesh file, in file order.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lancer/mesh/mesh.hpp"
+#include "lancer/scene/scene_description.hpp"
+
+namespace lancer {
+
+// gmsh's defaults where the file says nothing (gmsh saves only what changed).
+struct GmshPostView {
+  int index = 0;                        // View[index]
+  std::optional<std::string> name;      // View[i].Name, when saved
+  std::optional<int> timeStep;          // View[i].TimeStep: index into the view's steps
+  int vectorType = 4;                   // View[i].VectorType: 5 draws the view as a displacement
+  double displacementFactor = 1;        // View[i].DisplacementFactor
+  int rangeType = 1;                    // 1 default, 2 custom, 3 per time step
+  double customMin = 0, customMax = 0;  // gmsh leaves a value out when it is 0
+  int intervalsType = 2;                // 1 iso-values, 2 continuous, 3 discrete bands, 4 numeric
+  int nbIso = 10;
+  bool showScale = true;
+  bool visible = true;
+  std::int64_t line = 0;  // the first line that sets an option of this view, for messages
+};
+
+// The View[i] options of a gmsh options file, by view index; empty when it sets none. Throws
+// InputError (file:line) for a view option whose value is not a number where one is expected.
+std::vector<GmshPostView> readGmshPostViews(const std::string& path);
+
+// Applies the views' options to the description's first mesh (whose file holds the views): the
+// displacement view becomes its warp, the first other visible view its colours (else the
+// displacement's magnitude), with the range, step and intervals gmsh showed. A mesh's own color_by
+// keeps its field; explicit --step and --warp win. Throws InputError at the options file for a view
+// index past the mesh's views or a step past the view's last.
+void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
+                        const std::vector<GmshPostView>& views, const std::string& path);
+
+}  // namespace lancer

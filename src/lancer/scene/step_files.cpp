@@ -1,0 +1,167 @@
+#include "lancer/scene/step_files.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "lancer/mesh/msh_reader.hpp"
+#include "lancer/mesh/nothing_to_draw.hpp"
+#include "lancer/scene/scene.hpp"
+#include "lancer/util/stopwatch.hpp"
+
+namespace lancer {
+namespace {
+
+// fnmatch-like matching of * and ? (no character classes): the shell's globs people type.
+bool globMatch(std::string_view pattern, std::string_view name) {
+  std::size_t p = 0, n = 0, star = std::string_view::npos, resume = 0;
+  while (n < name.size()) {
+    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == name[n])) {
+      ++p, ++n;
+    } else if (p < pattern.size() && pattern[p] == '*') {
+      star = p++;
+      resume = n;
+    } else if (star != std::string_view::npos) {
+      p = star + 1;
+      n = ++resume;
+    } else {
+      return false;
+    }
+  }
+  while (p < pattern.size() && pattern[p] == '*') ++p;
+  return p == pattern.size();
+}
+
+std::string describeMeshDifference(const Mesh& first, const Mesh& other) {
+  if (first.positions.size() != other.positions.size())
+    return fmt::format("{} nodes against {}", other.positions.size(), first.positions.size());
+  if (first.faces.size() != other.faces.size())
+    return fmt::format("{} faces against {}", other.faces.size(), first.faces.size());
+  for (std::size_t v = 0; v < first.positions.size(); ++v)
+    if (other.worldPosition(static_cast<std::uint32_t>(v)) !=
+        first.worldPosition(static_cast<std::uint32_t>(v)))
+      return fmt::format("node {} of the mesh moved", v + 1);
+  for (std::size_t f = 0; f < first.faces.size(); ++f)
+    for (int c = 0; c < 4; ++c)
+      if (first.faces[f].vertex[c] != other.faces[f].vertex[c])
+        return fmt::format("face {} uses other nodes", f + 1);
+  return {};
+}
+
+}  // namespace
+
+bool isStepFilePattern(const std::string& path) {
+  const std::string name = std::filesystem::path(path).filename().string();
+  return name.find_first_of("*?") != std::string::npos;
+}
+
+bool naturalLess(const std::string& a, const std::string& b) {
+  std::size_t i = 0, j = 0;
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  while (i < a.size() && j < b.size()) {
+    if (digit(a[i]) && digit(b[j])) {
+      std::size_t ei = i, ej = j;
+      while (ei < a.size() && digit(a[ei])) ++ei;
+      while (ej < b.size() && digit(b[ej])) ++ej;
+      // Compare as numbers: strip leading zeros, then the longer run is larger.
+      std::size_t si = i, sj = j;
+      while (si + 1 < ei && a[si] == '0') ++si;
+      while (sj + 1 < ej && b[sj] == '0') ++sj;
+      if (ei - si != ej - sj) return ei - si < ej - sj;
+      const int order = a.compare(si, ei - si, b, sj, ej - sj);
+      if (order != 0) return order < 0;
+      i = ei, j = ej;
+    } else {
+      if (a[i] != b[j]) return a[i] < b[j];
+      ++i, ++j;
+    }
+  }
+  return a.size() - i < b.size() - j;
+}
+
+std::vector<std::string> matchStepFiles(const std::string& pattern, const SourceLocation& where) {
+  const std::filesystem::path path(pattern);
+  const std::filesystem::path folder =
+      path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  const std::string name = path.filename().string();
+  std::vector<std::string> matches;
+  std::error_code error;
+  std::vector<std::string> others;
+  for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+    const std::string entry = it->path().filename().string();
+    if (globMatch(name, entry))
+      matches.push_back(path.has_parent_path() ? (folder / entry).string() : entry);
+    else if (entry.ends_with(".msh"))
+      others.push_back(entry);
+  }
+  if (error && matches.empty())
+    throw InputError(where, fmt::format("the steps' files '{}': cannot read the folder '{}': {}", pattern,
+                                        folder.string(), error.message()));
+  if (matches.empty()) {
+    std::sort(others.begin(), others.end(), naturalLess);
+    std::string seen = others.empty() ? "it has no .msh file" : "its .msh files: ";
+    for (std::size_t i = 0; i < others.size() && i < 5; ++i) seen += (i ? ", " : "") + others[i];
+    if (others.size() > 5) seen += ", ...";
+    throw InputError(where, fmt::format("no file matches '{}' in '{}' ({}); give a pattern such as "
+                                        "\"result_*.msh\" that names one file per step",
+                                        name, folder.string(), seen));
+  }
+  std::sort(matches.begin(), matches.end(), naturalLess);
+  return matches;
+}
+
+Mesh readStepFiles(const std::string& pattern, const std::vector<std::string>& files, int threads,
+                   const SourceLocation& where) {
+  Mesh mesh = readMsh(files.front(), threads);
+  for (MeshField& field : mesh.fields) field.step = 0;
+  for (std::size_t k = 1; k < files.size(); ++k) {
+    Mesh next = readMsh(files[k], threads);
+    if (const std::string difference = describeMeshDifference(mesh, next); !difference.empty())
+      throw InputError(where,
+                       fmt::format("{} is step {} of the pattern, but its mesh differs from {}'s ({}): "
+                                   "steps in several files need one mesh; keep only that mesh's "
+                                   "results in the pattern",
+                                   files[k], k, files.front(), difference));
+    for (MeshField& field : next.fields) {
+      field.step = static_cast<int>(k);
+      mesh.fields.push_back(std::move(field));
+    }
+  }
+  if (files.size() > 1) mesh.source.path = fmt::format("{} ({} files)", pattern, files.size());
+  return mesh;
+}
+
+namespace {
+
+Mesh readInstanceMesh(const MeshInstance& instance, int threads) {
+  if (isStepFilePattern(instance.file)) {
+    Mesh mesh =
+        readStepFiles(instance.file, matchStepFiles(instance.file, instance.where), threads, instance.where);
+    if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
+      throw InputError(instance.where,
+                       fmt::format("mesh '{}' has nothing to draw: {}", instance.file, reason));
+    return mesh;
+  }
+  std::error_code error;
+  if (!std::filesystem::exists(instance.file, error))
+    throw InputError(instance.where, fmt::format("mesh file '{}' does not exist", instance.file));
+  Mesh mesh = readMsh(instance.file, threads);
+  if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
+    throw InputError(instance.where, fmt::format("mesh '{}' has nothing to draw: {}", instance.file, reason));
+  return mesh;
+}
+
+}  // namespace
+
+std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threads, StageTimes* times) {
+  const Stopwatch read;
+  std::vector<Mesh> meshes;
+  meshes.reserve(description.meshes.size());
+  for (const MeshInstance& instance : description.meshes)
+    meshes.push_back(readInstanceMesh(instance, threads));
+  if (times) times->add("read", read.seconds());
+  return meshes;
+}
+
+}  // namespace lancer

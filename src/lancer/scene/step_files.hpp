@@ -1,0 +1,31 @@
+// Results saved one file per time step, as solvers write them: `file = "result_*.msh"` in a [[mesh]]
+// (or a quoted pattern on the command line) names every matching file, in natural order (result_2
+// before result_10); each file is one step of its views, on one mesh that every file must share.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "lancer/mesh/mesh.hpp"
+#include "lancer/util/input_error.hpp"
+
+namespace lancer {
+
+// Whether a mesh path is a pattern (has * or ? in its file name).
+bool isStepFilePattern(const std::string& path);
+
+// The files a pattern names, in natural order (runs of digits compared as numbers). Throws
+// InputError at `where` when none matches, naming the folder and what is in it.
+std::vector<std::string> matchStepFiles(const std::string& pattern, const SourceLocation& where);
+
+// "a2b" < "a10b": strings compared with their runs of digits as numbers.
+bool naturalLess(const std::string& a, const std::string& b);
+
+// Reads the files as one mesh whose views have one step per file: file k's fields become step k
+// (their times kept when they increase from file to file, else the step index is the time). The
+// first file's mesh is the mesh; a file whose mesh differs is an InputError naming both files. The
+// mesh's source.path is "PATTERN (N files)" for messages.
+Mesh readStepFiles(const std::string& pattern, const std::vector<std::string>& files, int threads,
+                   const SourceLocation& where);
+
+}  // namespace lancer

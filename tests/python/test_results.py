@@ -1,0 +1,80 @@
+"""Results from Python: quick_look with warp= and component=, lancer.animate(over="steps"), every step
+of every view from a live gmsh session, and the same errors as the CLI (tests/data/results/ is made by
+scripts/make_result_fixtures.py)."""
+
+import numpy as np
+import pytest
+
+import lancer
+
+import gmsh
+
+from conftest import data, run_cli
+
+CANTILEVER = str(data("tests", "data", "results", "cantilever.msh"))
+
+
+def test_quick_look_warp_matches_the_cli(tmp_path):
+    mesh = lancer.read_msh(CANTILEVER)
+    scene = lancer.Scene.quick_look(mesh, color_by="stress", component="von_mises", warp=("displacement", 2.0),
+                                    undeformed="edges", step=3)
+    image = np.asarray(lancer.render(scene, width=96, height=64))
+    run_cli("render", CANTILEVER, "--warp", "displacement:2", "--color-by", "stress:von_mises", "--undeformed",
+            "edges", "--step", "3", "--width", 96, "--height", 64, "-q", "-o", tmp_path / "cli.png")
+    assert np.array_equal(image, np.asarray(lancer.read_png(str(tmp_path / "cli.png")))[..., :3])
+    unwarped = np.asarray(lancer.render(lancer.Scene.quick_look(mesh, color_by="stress", step=3), width=96, height=64))
+    assert not np.array_equal(image, unwarped)
+
+
+def test_animate_over_steps_matches_the_cli(tmp_path):
+    mesh = lancer.read_msh(CANTILEVER)
+    scene = lancer.Scene.quick_look(mesh, color_by="temperature", warp="displacement")
+    lancer.animate(scene, tmp_path / "py_%02d.png", over="steps", frames=5, width=64, height=48)
+    run_cli("animate", CANTILEVER, "--over", "steps", "--frames", 5, "--color-by", "temperature", "--warp",
+            "displacement", "--width", 64, "--height", 48, "-q", "-o", tmp_path / "cli_%02d.png")
+    for k in range(5):
+        assert (tmp_path / f"py_{k:02d}.png").read_bytes() == (tmp_path / f"cli_{k:02d}.png").read_bytes()
+    assert not (tmp_path / "py_05.png").exists()
+
+
+def test_bad_results_input_raises_input_error():
+    mesh = lancer.read_msh(CANTILEVER)
+    with pytest.raises(lancer.InputError, match="has 9 components per node: a warp needs a vector of 3"):
+        lancer.render(lancer.Scene.quick_look(mesh, warp="stress"), width=16, height=16)
+    with pytest.raises(lancer.InputError, match="has no step 8"):
+        lancer.render(lancer.Scene.quick_look(mesh, color_by="temperature", step=8), width=16, height=16)
+    with pytest.raises(lancer.InputError, match="von_mises needs a tensor of 9 components"):
+        lancer.render(lancer.Scene.quick_look(mesh, color_by="displacement", component="von_mises"), width=16,
+                      height=16)
+    with pytest.raises(ValueError, match="component='w'"):
+        lancer.Scene.quick_look(mesh, color_by="displacement", component="w")
+    with pytest.raises(ValueError, match="over='time'"):
+        lancer.animate(lancer.Scene.quick_look(mesh, color_by="temperature"), "x.gif", over="time")
+
+
+def test_from_gmsh_keeps_every_step_of_every_view():
+    gmsh.initialize(["lancer-test"], readConfigFiles=False)
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.open(CANTILEVER)
+        live = lancer.from_gmsh()
+    finally:
+        gmsh.finalize()
+    read = lancer.read_msh(CANTILEVER)
+    assert live.fields == read.fields
+    assert len(live.fields) == 3
+    scene = lancer.Scene.quick_look(live, color_by="stress", component="von_mises", warp="displacement", step=2)
+    assert np.array_equal(np.asarray(lancer.render(scene, width=48, height=32)),
+                          np.asarray(lancer.render(lancer.Scene.quick_look(read, color_by="stress",
+                                                                           component="von_mises",
+                                                                           warp="displacement", step=2),
+                                                   width=48, height=32)))
+
+
+def test_steps_and_field_at_a_step():
+    mesh = lancer.read_msh(CANTILEVER)
+    assert mesh.steps("displacement") == [(0, 0.0), (1, 0.5), (2, 1.0), (3, 1.5)]
+    tip = mesh.field("displacement", step=3)[:, 1].min()
+    assert tip == pytest.approx(-1.5, abs=1e-6)
+    with pytest.raises(KeyError, match="has no step 9"):
+        mesh.field("displacement", step=9)

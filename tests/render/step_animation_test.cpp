@@ -1,0 +1,128 @@
+// Animations over time steps on the gmsh-made cantilever whose displacement is known in closed form
+// (scripts/make_result_fixtures.py): the deformed silhouette of every frame, seen from the side, is
+// the exact shape at the frame's time, at the steps and between them; frames come in time order;
+// colour ranges stay fixed over the animation.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "lancer/render/step_animation.hpp"
+#include "lancer/scene/result_keys.hpp"
+#include "support/files.hpp"
+#include "support/test_scenes.hpp"
+
+namespace lancer {
+namespace {
+
+constexpr double kLength = 10, kHeight = 1;
+constexpr int kWidth = 360, kImageHeight = 200;
+constexpr double kViewHeight = 6, kCentreX = 5.25, kCentreY = -0.25;
+constexpr double kPixel = kViewHeight / kImageHeight;
+
+double deflection(double x, double t) {
+  return t * x * x * (3 * kLength - x) / (2 * kLength * kLength * kLength);
+}
+
+// The side view (looking down -z at the beam's face z = 1), the beam warped by its displacement.
+SceneDescription sideView(double factor) {
+  SceneDescription d =
+      test::flatLitOnBlue(test::orthographicView(kWidth, kImageHeight, {kCentreX, kCentreY, 10},
+                                                 {kCentreX, kCentreY, 0}, kViewHeight),
+                          {5, 5, 20});
+  d.materials = {test::matteMaterial("beam", {0.8f, 0.8f, 0.2f}, {0.8f, 0.8f, 0.2f})};
+  MeshInstance beam;
+  beam.file = test::dataFile("results/cantilever.msh");
+  WarpSettings warp;
+  warp.field = "displacement";
+  warp.factor = factor;
+  beam.warp = warp;
+  d.meshes.push_back(beam);
+  return d;
+}
+
+bool isBackground(const Rgba& p) { return p.r < 0.05f && p.g < 0.05f && p.b > 0.9f; }
+
+// For columns across the beam, the top and bottom of the silhouette against y = H - f w, y = -f w.
+void expectSilhouette(const Image& image, double t, double factor, const std::string& what) {
+  int checked = 0;
+  for (int i = 0; i < kWidth; ++i) {
+    const double x = kCentreX + (i + 0.5 - kWidth / 2.0) * kPixel;
+    if (x < 0.2 || x > kLength - 0.2) continue;
+    int top = -1, bottom = -1;
+    for (int j = 0; j < kImageHeight; ++j)
+      if (!isBackground(image.at(i, j))) (top < 0 ? top = j : 0), bottom = j;
+    ASSERT_GE(top, 0) << what << ": column " << i << " is empty";
+    const double yTop = kCentreY + (kImageHeight / 2.0 - top) * kPixel;  // upper edge of the first row
+    const double yBottom = kCentreY + (kImageHeight / 2.0 - bottom - 1) * kPixel;  // lower edge of the last
+    const double w = factor * deflection(x, t);
+    EXPECT_NEAR(yTop, kHeight - w, 1.5 * kPixel) << what << ", x = " << x;
+    EXPECT_NEAR(yBottom, -w, 1.5 * kPixel) << what << ", x = " << x;
+    ++checked;
+  }
+  EXPECT_GT(checked, 300);
+}
+
+TEST(StepAnimation, EachStepsSilhouetteIsTheExactDeformedShape) {
+  SceneDescription description = sideView(1.0);
+  const std::vector<Mesh> meshes = readSceneMeshes(description);
+  AnimationSettings animation;
+  animation.overSteps = true;
+  StepScenes steps(description, meshes, animation, AccelKind::KdTreeSah, 0);
+  ASSERT_EQ(steps.frameCount(), 4);
+  EXPECT_EQ(steps.frames().times, (std::vector<double>{0, 0.5, 1, 1.5}));
+  EXPECT_EQ(steps.frames().steps, (std::vector<int>{0, 1, 2, 3}));
+  for (int k = 0; k < 4; ++k)
+    expectSilhouette(steps.render(k, RenderOptions{}), 0.5 * k, 1.0, fmt::format("step {}", k));
+  EXPECT_EQ(steps.rebuilds(), 3);
+}
+
+TEST(StepAnimation, FramesBetweenStepsBlendLinearlyInTime) {
+  SceneDescription description = sideView(2.0);
+  const std::vector<Mesh> meshes = readSceneMeshes(description);
+  AnimationSettings animation;
+  animation.overSteps = true;
+  animation.framesGiven = true;
+  animation.frames = 7;  // t = 0, 0.25, ..., 1.5
+  StepScenes steps(description, meshes, animation, AccelKind::KdTreeSah, 0);
+  ASSERT_EQ(steps.frameCount(), 7);
+  EXPECT_EQ(steps.frames().steps, (std::vector<int>{0, 0, 1, 1, 2, 2, 3}));
+  for (int k : {1, 5})
+    expectSilhouette(steps.render(k, RenderOptions{}), 0.25 * k, 2.0, fmt::format("frame {}", k));
+}
+
+TEST(StepAnimation, ColourRangeIsFixedOverTheFramesUnlessPerStep) {
+  SceneDescription description = sideView(1.0);
+  ColorBy color;
+  color.field = "temperature";
+  description.meshes[0].colorBy = color;
+  description.meshes[0].warp.reset();
+  const std::vector<Mesh> meshes = readSceneMeshes(description);
+  AnimationSettings animation;
+  animation.overSteps = true;
+  StepScenes fixed(description, meshes, animation, AccelKind::KdTreeSah, 0);
+  const Image first = fixed.render(0, RenderOptions{});
+  const Image last = fixed.render(3, RenderOptions{});
+  EXPECT_NE(first, last);  // the values moved through the one map
+  EXPECT_EQ(fixed.rebuilds(), 1);
+  animation.perStepRange = true;
+  StepScenes own(description, meshes, animation, AccelKind::KdTreeSah, 0);
+  // Each step spans its own [5k, 5k + 2] with the same pattern: every frame looks the same.
+  EXPECT_EQ(own.render(0, RenderOptions{}), own.render(3, RenderOptions{}));
+}
+
+TEST(StepAnimation, PinnedColoursAndNoViewsAreNotSteps) {
+  SceneDescription description = sideView(1.0);
+  description.meshes[0].warp.reset();
+  ColorBy color;
+  color.field = "temperature";
+  color.step = 2;
+  description.meshes[0].colorBy = color;
+  const std::vector<Mesh> meshes = readSceneMeshes(description);
+  AnimationSettings animation;
+  animation.overSteps = true;
+  EXPECT_THROW(planStepFrames(description, meshes, animation), InputError);
+}
+
+}  // namespace
+}  // namespace lancer
