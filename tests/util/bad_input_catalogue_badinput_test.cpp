@@ -347,6 +347,19 @@ std::vector<Case> catalogue() {
       {"cli_bad_up_mesh", "--up not an axis, bare mesh", "`--up=+z part.msh`",
        [](const Scratch& s) { s.copy(dataFile("msh/square_tri3_v41_ascii.msh"), "part.msh"); },
        "$LANCER animate -q --up=+z part.msh -o out.gif", nullptr},
+      // --- output encoding, tone curves, bit depth, EXR layers (docs/output.md) ---
+      {"out_unknown_tonemap", "unknown tone curve", "`--tonemap agx`", withScene(scene()),
+       "$LANCER render -q scene.toml --tonemap agx -o out.png", nullptr},
+      {"out_exposure_nan", "exposure that is no number of stops", "`--exposure nan`", withScene(scene()),
+       "$LANCER render -q scene.toml --exposure nan -o out.png", nullptr},
+      {"out_bit_depth_12", "bit depth other than 8 or 16", "`--bit-depth 12`", withScene(scene()),
+       "$LANCER render -q scene.toml --bit-depth 12 -o out.png", nullptr},
+      {"out_bit_depth_16_bmp", "16 bits for a format without them", "`--bit-depth 16 -o out.bmp`",
+       withScene(scene()), "$LANCER render -q scene.toml --bit-depth 16 -o out.bmp", nullptr},
+      {"out_aovs_png", "EXR layers asked of a PNG", "`--aovs albedo -o out.png`", withScene(scene()),
+       "$LANCER render -q scene.toml --aovs albedo -o out.png", nullptr},
+      {"out_encoding_key", "unknown encoding in the scene", "`encoding = \"gamma\"`",
+       withScene(scene("encoding = \"gamma\"\n")), "$LANCER render -q scene.toml -o out.png", nullptr},
   };
   return cases;
 }
