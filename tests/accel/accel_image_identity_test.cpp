@@ -54,23 +54,38 @@ TEST(AccelImageIdentity, NaiveBvhAndKdTreesRenderTheSameImage) {
   }
 }
 
+// The holed block's scene, camera and render options, rendered with any accelerator.
+struct BlockRender {
+  SceneDescription d = blockScene();
+  Scene scene =
+      test::sceneFromMeshes(d, {readMsh(std::string(LANCER_TEST_DATA_DIR) + "/accel/holed_block.msh")});
+  Camera camera = makeCamera(d.camera, scene, d.render);
+  RenderOptions render = [] {
+    RenderOptions options;
+    options.threads = 2;
+    return options;
+  }();
+  // The accelerator of `kind` built on `threads` threads, forking subtrees above `parallelSplitAbove`
+  // triangles when given (the fixture is small: the default forks none).
+  Accelerator build(AccelKind kind, int threads, int parallelSplitAbove = 0) const {
+    KdBuildOptions options;
+    options.threads = threads;
+    if (parallelSplitAbove > 0) options.parallelSplitAbove = static_cast<std::uint32_t>(parallelSplitAbove);
+    return Accelerator::build(scene.geometry.positions, scene.geometry.faces, kind, options);
+  }
+  Image with(const Accelerator& accelerator) const {
+    return Renderer(scene, accelerator, camera, d.render).renderImage(render);
+  }
+};
+
 // --threads bounds the build: the default tree built on 1, 2 and 3 threads (its parallel top
 // reaching the fixture's cells) is the same tree, word for word, and renders the same image.
 TEST(AccelImageIdentity, TreeAndImageIdenticalForAnyBuildThreadCount) {
-  const SceneDescription d = blockScene();
-  const Scene scene =
-      test::sceneFromMeshes(d, {readMsh(std::string(LANCER_TEST_DATA_DIR) + "/accel/holed_block.msh")});
-  const Camera camera = makeCamera(d.camera, scene, d.render);
-  RenderOptions render;
-  render.threads = 2;
-  auto buildWith = [&](int threads) {
-    KdBuildOptions options;
-    options.threads = threads;
-    options.parallelSplitAbove = 64;
-    return Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah, options);
-  };
+  const BlockRender block;
+  const Scene& scene = block.scene;
+  auto buildWith = [&](int threads) { return block.build(AccelKind::KdTreeSah, threads, 64); };
   const Accelerator one = buildWith(1);
-  const Image reference = Renderer(scene, one, camera, d.render).renderImage(render);
+  const Image reference = block.with(one);
   const KdTree oneTree = KdTree::buildSah(scene.geometry.positions, scene.geometry.faces, [] {
     KdBuildOptions o;
     o.threads = 1;
@@ -81,8 +96,7 @@ TEST(AccelImageIdentity, TreeAndImageIdenticalForAnyBuildThreadCount) {
     const Accelerator many = buildWith(threads);
     EXPECT_EQ(many.stats().nodes, one.stats().nodes);
     EXPECT_EQ(many.stats().triangleReferences, one.stats().triangleReferences);
-    EXPECT_EQ(test::differingPixels(Renderer(scene, many, camera, d.render).renderImage(render), reference),
-              0);
+    EXPECT_EQ(test::differingPixels(block.with(many), reference), 0);
     KdBuildOptions o;
     o.threads = threads;
     o.parallelSplitAbove = 64;
@@ -97,26 +111,16 @@ TEST(AccelImageIdentity, TreeAndImageIdenticalForAnyBuildThreadCount) {
 // The default BVH built on 1 to 4 threads: the same tree (bvh_test.cpp compares it byte for byte with
 // its parallel top reaching small ranges) and the same image.
 TEST(AccelImageIdentity, BvhImageIdenticalForAnyBuildThreadCount) {
-  const SceneDescription d = blockScene();
-  const Scene scene =
-      test::sceneFromMeshes(d, {readMsh(std::string(LANCER_TEST_DATA_DIR) + "/accel/holed_block.msh")});
-  const Camera camera = makeCamera(d.camera, scene, d.render);
-  RenderOptions render;
-  render.threads = 2;
-  auto buildWith = [&](int threads) {
-    KdBuildOptions options;
-    options.threads = threads;
-    return Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::Bvh, options);
-  };
+  const BlockRender block;
+  auto buildWith = [&](int threads) { return block.build(AccelKind::Bvh, threads); };
   const Accelerator one = buildWith(1);
-  const Image reference = Renderer(scene, one, camera, d.render).renderImage(render);
+  const Image reference = block.with(one);
   for (int threads : {2, 3, 4}) {
     SCOPED_TRACE(threads);
     const Accelerator many = buildWith(threads);
     EXPECT_EQ(many.stats().nodes, one.stats().nodes);
     EXPECT_EQ(many.stats().sahCost, one.stats().sahCost);
-    EXPECT_EQ(test::differingPixels(Renderer(scene, many, camera, d.render).renderImage(render), reference),
-              0);
+    EXPECT_EQ(test::differingPixels(block.with(many), reference), 0);
   }
 }
 

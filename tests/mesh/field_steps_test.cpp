@@ -7,19 +7,16 @@
 #include <cmath>
 
 #include "lancer/mesh/msh_reader.hpp"
+#include "support/cantilever.hpp"
 #include "support/files.hpp"
 
 namespace lancer {
 namespace {
 
-constexpr double kLength = 10;
+constexpr double kLength = test::kCantileverLength;
+using test::cantilever;
 
-// The fixture's deflection: the tip moves down by t.
-double deflection(double x, double t) {
-  return t * x * x * (3 * kLength - x) / (2 * kLength * kLength * kLength);
-}
-
-Mesh cantilever() { return readMsh(test::dataFile("results/cantilever.msh")); }
+double deflection(double x, double t) { return test::cantileverDeflection(x, t); }
 
 TEST(FieldSteps, EveryStepOfEveryViewIsKeptInTimeOrder) {
   const Mesh mesh = cantilever();

@@ -57,21 +57,20 @@ TEST(GmshPostOptions, OptionsOfViewsTheFileDoesNotHave) {
   folder.write("a.opt", "View[5].RangeType = 3;\n");
   SceneDescription description = oneMesh();
   const Mesh mesh = readMsh(description.meshes[0].file);
-  const std::string message = test::messageOf([&] {
-    applyGmshPostViews(description, mesh, readGmshPostViews(folder.file("a.opt")), folder.file("a.opt"));
-  });
-  EXPECT_NE(message.find("a.opt:1:1: error: View[5] is set here, but " + description.meshes[0].file +
-                         " has 3 views"),
-            std::string::npos)
-      << message;
+  // The message of applying the options file `name` of the folder to the mesh.
+  auto errorOf = [&](const std::string& name) {
+    return test::messageOf([&] {
+      applyGmshPostViews(description, mesh, readGmshPostViews(folder.file(name)), folder.file(name));
+    });
+  };
+  auto expectContains = [](const std::string& message, const std::string& part) {
+    EXPECT_NE(message.find(part), std::string::npos) << message;
+  };
+  expectContains(errorOf("a.opt"),
+                 "a.opt:1:1: error: View[5] is set here, but " + description.meshes[0].file + " has 3 views");
   folder.write("b.opt", "View[1].Name = \"stress\";\nView[1].TimeStep = 6;\n");
-  const std::string step = test::messageOf([&] {
-    applyGmshPostViews(description, mesh, readGmshPostViews(folder.file("b.opt")), folder.file("b.opt"));
-  });
-  EXPECT_NE(step.find("View[1].TimeStep = 6, but the view \"stress\" of " + description.meshes[0].file +
-                      " has 4 steps: give 0 to 3"),
-            std::string::npos)
-      << step;
+  expectContains(errorOf("b.opt"), "View[1].TimeStep = 6, but the view \"stress\" of " +
+                                       description.meshes[0].file + " has 4 steps: give 0 to 3");
   folder.write("c.opt", "View[0].NbIso = many;\n");
   EXPECT_NE(test::messageOf([&] {
               readGmshPostViews(folder.file("c.opt"));

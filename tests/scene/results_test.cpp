@@ -11,18 +11,16 @@
 #include "lancer/scene/scene.hpp"
 #include "lancer/scene/step_files.hpp"
 #include "lancer/scene/warp.hpp"
+#include "support/cantilever.hpp"
 #include "support/files.hpp"
 
 namespace lancer {
 namespace {
 
-constexpr double kLength = 10;
+constexpr double kLength = test::kCantileverLength;
+using test::cantilever;
 
-double deflection(double x, double t) {
-  return t * x * x * (3 * kLength - x) / (2 * kLength * kLength * kLength);
-}
-
-Mesh cantilever() { return readMsh(test::dataFile("results/cantilever.msh")); }
+double deflection(double x, double t) { return test::cantileverDeflection(x, t); }
 
 WarpSettings warpBy(const std::string& field, double factor) {
   WarpSettings warp;
