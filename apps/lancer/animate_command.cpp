@@ -13,6 +13,7 @@
 #include "lancer/cluster/shard.hpp"
 #include "lancer/image/animation_writer.hpp"
 #include "lancer/image/frame_sequence.hpp"
+#include "lancer/image/legend.hpp"
 #include "lancer/render/animation.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -124,6 +125,8 @@ int runAnimate(const AnimateCommandOptions& options) {
     RenderStats stats;
     Image image = renderAnimationFrame(prepared.scene, prepared.accelerator, prepared.description, animation,
                                        frames[static_cast<std::size_t>(item)], frameOptions, &stats);
+    if (const auto& fields = prepared.scene.fieldColors)
+      drawLegends(image, fields->legends, fields->legendPlacement, prepared.description.render.srgb);
     rays += stats.rays;
     return image;
   };

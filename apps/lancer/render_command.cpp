@@ -7,9 +7,9 @@
 #include "command_distribution.hpp"
 #include "commands.hpp"
 #include "lancer/cluster/tile_parts.hpp"
-#include "lancer/image/color_map.hpp"
 #include "lancer/image/image_io.hpp"
 #include "lancer/image/image_row_writer.hpp"
+#include "lancer/image/legend.hpp"
 #include "lancer/render/progress_line.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -18,15 +18,15 @@
 namespace lancer::cli {
 namespace {
 
-// The --legend image: a tall bar with room for the tick labels.
-constexpr int kLegendWidth = 120;
-constexpr int kLegendHeight = 320;
+// The --legend image: a bar 300 pixels tall, text 14 pixels (the em).
+constexpr int kLegendBarLength = 300;
+constexpr float kLegendTextHeight = 14;
 
 struct RenderCommandOptions {
   std::string input;
   std::string output;
   std::string pixel;
-  std::string legend;  // --legend: colour bar of the first field-coloured mesh
+  std::string legend;  // --legend: the legends of the field-coloured meshes
   std::string shard;   // --shard I/N or auto: a job-array task's part of the image
   SceneOverrides overrides;
 };
@@ -65,9 +65,13 @@ bool renderToFile(const PreparedScene& prepared, const Renderer& renderer, const
   const RenderSettings& settings = prepared.description.render;
   const ImageWriteOptions writeOptions = imageWriteOptions(settings);
   const bool cancellable = renderOptions.cancel != nullptr;
-  if (!streamsToFile(output)) {
-    const Image image = renderer.renderImage(renderOptions, &stats);
+  // Legends are drawn over the whole picture, so a picture with legends is not streamed.
+  const std::optional<FieldColors>& fields = prepared.scene.fieldColors;
+  const bool legends = fields && fields->legendPlacement != LegendPlacement::None;
+  if (!streamsToFile(output) || legends) {
+    Image image = renderer.renderImage(renderOptions, &stats);
     if (cancellable && renderOptions.cancel->load()) return false;
+    if (legends) drawLegends(image, fields->legends, fields->legendPlacement, settings.srgb);
     writeImage(output, image, writeOptions);
     return true;
   }
@@ -213,9 +217,8 @@ int runRender(const RenderCommandOptions& options) {
   if (!talks || shard) return kExitOk;
   if (!options.legend.empty()) {
     // The bar holds the map's display values: written as they are, like the picture's field colours.
-    const FieldColors::Legend& legend = prepared.scene.fieldColors->legend;
-    writeImage(options.legend,
-               colorBarImage(legend.map, legend.low, legend.high, kLegendWidth, kLegendHeight));
+    writeImage(options.legend, legendSheet(prepared.scene.fieldColors->legends, kLegendBarLength,
+                                           kLegendTextHeight, settings.srgb));
   }
   if (!options.overrides.quiet) {
     const double total = stopwatch.seconds();
@@ -245,7 +248,7 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
       "or mpirun); `lancer assemble --tiles` stitches the parts");
   addSceneOverrideOptions(*command, options->overrides);
   command->add_option("--legend", options->legend,
-                      "Also write the colour bar of the first field-coloured mesh (color_by) to this image");
+                      "Also write the legends of the field-coloured meshes (color_by) to this image");
   command->add_option("--pixel", options->pixel, "Trace only pixel x,y and print its value (debugging)");
   command->callback([options, &runner] { runner = [options] { return runRender(*options); }; });
 }

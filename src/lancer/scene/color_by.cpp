@@ -28,6 +28,15 @@ std::string describeFields(const Mesh& mesh) {
   return text;
 }
 
+// The legend and band keys: title, units, bands, legend.
+void readLegendKeys(const TomlTableReader& reader, ColorBy& spec) {
+  if (auto title = reader.string("title")) spec.title = *title;
+  if (auto units = reader.string("units")) spec.units = *units;
+  if (auto bands = reader.integer("bands", 1, 256)) spec.bands = static_cast<int>(*bands);
+  constexpr std::array<std::string_view, 3> kPlacements = {"none", "right", "bottom"};
+  if (auto legend = reader.choice("legend", kPlacements)) spec.legend = static_cast<LegendPlacement>(*legend);
+}
+
 }  // namespace
 
 std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReader& mesh) {
@@ -65,39 +74,42 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
                                       *number(0), *number(1)));
     spec.range = std::pair{*number(0), *number(1)};
   }
+  readLegendKeys(reader, spec);
   return spec;
 }
 
-FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh) {
+const MeshField& findMeshField(std::string_view key, const std::string& name, int step, const Mesh& mesh,
+                               const SourceLocation& where) {
   const MeshField* found = nullptr;
   bool nameFound = false;
   for (const MeshField& field : mesh.fields) {
-    if (field.name != spec.field) continue;
+    if (field.name != name) continue;
     nameFound = true;
-    if (field.step == spec.step) {
+    if (field.step == step) {
       found = &field;
       break;
     }
   }
-  if (!found) {
-    for (const auto& [name, warning] : mesh.source.skippedFields)
-      if (name == spec.field)
-        throw InputError(spec.where, fmt::format("color_by field \"{}\": its section in {} could not be read "
-                                                 "and was skipped ({})",
-                                                 spec.field, mesh.source.path, warning));
-    if (mesh.fields.empty())
-      throw InputError(spec.where,
-                       fmt::format("color_by field \"{}\": {} has no fields ($NodeData or $ElementData)",
-                                   spec.field, mesh.source.path));
-    std::vector<std::string> names;
-    for (const MeshField& field : mesh.fields) names.push_back(field.name);
-    throw InputError(
-        spec.where, nameFound
-                        ? fmt::format("color_by field \"{}\" has no step {} in {}; it has {}", spec.field,
-                                      spec.step, mesh.source.path, describeFields(mesh))
-                        : fmt::format("color_by field \"{}\" is not in {}{}; it has {}", spec.field,
-                                      mesh.source.path, didYouMean(spec.field, names), describeFields(mesh)));
-  }
+  if (found) return *found;
+  for (const auto& [skipped, warning] : mesh.source.skippedFields)
+    if (skipped == name)
+      throw InputError(
+          where, fmt::format("{} field \"{}\": its section in {} could not be read and was skipped ({})", key,
+                             name, mesh.source.path, warning));
+  if (mesh.fields.empty())
+    throw InputError(where, fmt::format("{} field \"{}\": {} has no fields ($NodeData or $ElementData)", key,
+                                        name, mesh.source.path));
+  std::vector<std::string> names;
+  for (const MeshField& field : mesh.fields) names.push_back(field.name);
+  throw InputError(where, nameFound
+                              ? fmt::format("{} field \"{}\" has no step {} in {}; it has {}", key, name,
+                                            step, mesh.source.path, describeFields(mesh))
+                              : fmt::format("{} field \"{}\" is not in {}{}; it has {}", key, name,
+                                            mesh.source.path, didYouMean(name, names), describeFields(mesh)));
+}
+
+FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh) {
+  const MeshField* found = &findMeshField("color_by", spec.field, spec.step, mesh, spec.where);
   FieldColoring coloring;
   coloring.map = spec.map;
   coloring.perFace = found->perElement;

@@ -17,6 +17,7 @@
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
+#include "lancer/scene/annotation_builder.hpp"
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/scene.hpp"
 #include "lancer/util/check.hpp"
@@ -270,13 +271,10 @@ void appendEdges(EdgeOverlay& overlay, const MeshInstance& instance, Mesh& mesh,
 // Records a coloured mesh whose vertices start at vertexBase and faces at faceBase and run to the
 // scene's last ones: its faces get the map, its vertices the field's t (the mesh's vertices are the
 // scene's from vertexBase on, in order). Earlier meshes' entries are filled with "not coloured"
-// first; the first coloured mesh gives the legend.
+// first.
 void appendFieldColoring(const SceneGeometry& geometry, std::optional<FieldColors>& fields,
                          const FieldColoring& coloring, std::uint32_t vertexBase, std::size_t faceBase) {
-  if (!fields) {
-    fields.emplace();
-    fields->legend = {coloring.map, coloring.low, coloring.high};
-  }
+  if (!fields) fields.emplace();
   const int perFace = coloring.perFace ? FieldColors::kPerFace : 0;
   fields->faceColorMap.resize(faceBase, 0);
   fields->faceColorMap.resize(geometry.faces.size(),
@@ -365,6 +363,11 @@ Scene buildScene(const SceneDescription& description, int threads, StageTimes* t
 
 Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads,
                  StageTimes* timesOrNull) {
+  if (hasArrows(description)) {  // the arrows are meshes of their own, built once here
+    SceneDescription withArrows = description;
+    addArrowMeshes(withArrows, meshes);
+    return buildScene(withArrows, std::move(meshes), threads, timesOrNull);
+  }
   const Stopwatch whole;
   StageTimes unused;
   StageTimes& times = timesOrNull ? *timesOrNull : unused;
@@ -389,6 +392,8 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, 
   // Gathered mesh by mesh, kept at the end when some mesh uses them.
   EdgeOverlay overlay;
   std::optional<FieldColors> fields;
+  std::optional<IsolineOverlay> isolines;
+  const std::vector<std::optional<ColorBy>> colorBy = sharedColorRanges(description, meshes);
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const MeshInstance& instance = description.meshes[i];
     Mesh& mesh = meshes[i];
@@ -396,7 +401,7 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, 
     const auto groupMaterials = resolveGroupMaterials(instance, mesh);
     PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin, threads, times);
     std::optional<FieldColoring> coloring;
-    if (instance.colorBy) coloring = resolveColorBy(*instance.colorBy, mesh);
+    if (colorBy[i]) coloring = resolveColorBy(*colorBy[i], mesh);
 
     const auto vertexBase = static_cast<std::uint32_t>(geometry.positions.size());
     const std::size_t faceBase = geometry.faces.size();
@@ -404,13 +409,21 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, 
     appendAppearance(appearance, faceBase, instance, mesh, placed.orientation, groupMaterials,
                      instance.shading.value_or(description.render.shading));
     appendEdges(overlay, instance, mesh, placed.edgeMasks);
-    if (coloring) appendFieldColoring(geometry, fields, *coloring, vertexBase, faceBase);
+    if (coloring) {
+      appendFieldColoring(geometry, fields, *coloring, vertexBase, faceBase);
+      appendLegendAndBands(*fields, *colorBy[i], *coloring, faceBase, geometry.faces.size());
+    }
+    if (instance.isolines)
+      appendIsolines(isolines, *instance.isolines, mesh, vertexBase, faceBase, geometry.faces.size(),
+                     geometry.positions.size());
     if (!instance.clips.empty() && !mesh.faces.empty())
       appendMeshClips(scene.clipping, geometry, instance.clips, faceBase);
   }
   if (!appearance.faceOuterMaterial.empty())
     appearance.faceOuterMaterial.resize(geometry.faces.size(), SceneAppearance::kNoMaterial);
+  if (fields) finishBands(*fields, geometry.faces.size());
   finishFieldColors(scene, std::move(fields));
+  finishIsolines(scene, std::move(isolines));
   finishEdgeOverlay(scene, std::move(overlay));
 
   // Every per-face array in step with the faces (the tracer indexes them all by face).
