@@ -48,6 +48,7 @@ std::optional<IsolineSpec> readIsolines(const std::string& file, const TomlTable
 
 std::vector<double> evenIsoValues(double low, double high, int count) {
   std::vector<double> values;
+  values.reserve(static_cast<std::size_t>(std::max(count, 0)));
   for (int i = 0; i < count; ++i) values.push_back(low + (high - low) * (i + 0.5) / count);
   return values;
 }
