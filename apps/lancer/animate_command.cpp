@@ -13,6 +13,7 @@
 #include "lancer/cluster/shard.hpp"
 #include "lancer/image/animation_writer.hpp"
 #include "lancer/image/frame_sequence.hpp"
+#include "lancer/image/legend.hpp"
 #include "lancer/render/animation.hpp"
 #include "lancer/render/step_animation.hpp"
 #include "lancer/scene/render_limits.hpp"
@@ -149,6 +150,8 @@ int runAnimate(const AnimateCommandOptions& options) {
     Image image = steps ? steps->render(frame, frameOptions, &stats)
                         : renderAnimationFrame(prepared.scene, prepared.accelerator, prepared.description,
                                                animation, frame, frameOptions, &stats);
+    if (const auto& fields = prepared.scene.fieldColors)
+      drawLegends(image, fields->legends, fields->legendPlacement, prepared.description.render.srgb);
     rays += stats.rays;
     return image;
   };

@@ -7,10 +7,10 @@
 #include "command_distribution.hpp"
 #include "commands.hpp"
 #include "lancer/cluster/tile_parts.hpp"
-#include "lancer/image/color_map.hpp"
 #include "lancer/image/exr_io.hpp"
 #include "lancer/image/image_io.hpp"
 #include "lancer/image/image_row_writer.hpp"
+#include "lancer/image/legend.hpp"
 #include "lancer/render/progress_line.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -25,15 +25,15 @@ struct ExrLayerChoice {
   bool any() const { return albedo || normal || depth; }
 };
 
-// The --legend image: a tall bar with room for the tick labels.
-constexpr int kLegendWidth = 120;
-constexpr int kLegendHeight = 320;
+// The --legend image: a bar 300 pixels tall, text 14 pixels (the em).
+constexpr int kLegendBarLength = 300;
+constexpr float kLegendTextHeight = 14;
 
 struct RenderCommandOptions {
   std::string input;
   std::string output;
   std::string pixel;
-  std::string legend;  // --legend: colour bar of the first field-coloured mesh
+  std::string legend;  // --legend: the legends of the field-coloured meshes
   std::string shard;   // --shard I/N or auto: a job-array task's part of the image
   std::string aovs;    // --aovs albedo,normal,depth: layers of an EXR output
   SceneOverrides overrides;
@@ -120,10 +120,14 @@ bool renderToFile(const PreparedRender& prepared, const Renderer& renderer, cons
   const RenderSettings& settings = prepared.description.render;
   const ImageWriteOptions writeOptions = imageWriteOptions(settings);
   const bool cancellable = renderOptions.cancel != nullptr;
-  if (!streamsToFile(output, settings)) {
+  // Legends are drawn over the whole picture, so a picture with legends is not streamed.
+  const std::optional<FieldColors>& fields = prepared.scene.fieldColors;
+  const bool legends = fields && fields->legendPlacement != LegendPlacement::None;
+  if (!streamsToFile(output, settings) || legends) {
     FeatureBuffers features;
-    const Image image = renderer.renderFinal(renderOptions, &stats, aovs.any() ? &features : nullptr);
+    Image image = renderer.renderFinal(renderOptions, &stats, aovs.any() ? &features : nullptr);
     if (stats.cancelled || (cancellable && renderOptions.cancel->load())) return false;
+    if (legends) drawLegends(image, fields->legends, fields->legendPlacement, settings.srgb);
     writeFinal(output, image, settings, aovs, aovs.any() ? &features : nullptr);
     return true;
   }
@@ -287,9 +291,8 @@ int runRender(const RenderCommandOptions& options) {
   if (!talks || shard) return kExitOk;
   if (!options.legend.empty()) {
     // The bar holds the map's display values: written as they are, like the picture's field colours.
-    const FieldColors::Legend& legend = prepared.scene.fieldColors->legend;
-    writeImage(options.legend,
-               colorBarImage(legend.map, legend.low, legend.high, kLegendWidth, kLegendHeight));
+    writeImage(options.legend, legendSheet(prepared.scene.fieldColors->legends, kLegendBarLength,
+                                           kLegendTextHeight, settings.srgb));
   }
   if (!options.overrides.quiet) {
     const double total = stopwatch.seconds();
@@ -319,7 +322,7 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
       "or mpirun); `lancer assemble --tiles` stitches the parts");
   addSceneOverrideOptions(*command, options->overrides);
   command->add_option("--legend", options->legend,
-                      "Also write the colour bar of the first field-coloured mesh (color_by) to this image");
+                      "Also write the legends of the field-coloured meshes (color_by) to this image");
   command->add_option(
       "--aovs", options->aovs,
       "Layers of an .exr output beside the radiance: albedo, normal, depth (comma-separated)");

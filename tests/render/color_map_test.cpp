@@ -1,11 +1,10 @@
 // Colour maps: the published end and middle colours, monotonic lightness where the map promises it,
-// clamping, and the legend image's bar and labels.
+// clamping.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "lancer/image/color_map.hpp"
-#include "lancer/image/text.hpp"
 
 namespace lancer {
 namespace {
@@ -68,50 +67,6 @@ TEST(ColorMap, NamesRoundTripAndUnknownIsRefused) {
   EXPECT_EQ(parseColorMap("gray"), ColorMapKind::Grey);
   EXPECT_FALSE(parseColorMap("jet").has_value());
   EXPECT_FALSE(parseColorMap("Viridis").has_value());
-}
-
-TEST(ColorBar, BarRunsFromLowAtTheBottomToHighAtTheTopWithLabels) {
-  const Image legend = colorBarImage(ColorMapKind::Viridis, -1.5, 2.5, 120, 300);
-  ASSERT_EQ(legend.width(), 120);
-  ASSERT_EQ(legend.height(), 300);
-  // Sample the bar's column near the top and bottom: close to the map's ends.
-  const int x = 10;
-  const Vec3 top = legend.at(x, 8).rgb(), bottom = legend.at(x, 291).rgb();
-  EXPECT_LT(length(top - colorMapLookup(ColorMapKind::Viridis, 1)), 0.03f);
-  EXPECT_LT(length(bottom - colorMapLookup(ColorMapKind::Viridis, 0)), 0.03f);
-  // Labels: ink to the right of the bar on the rows of the end ticks, paper between labels.
-  int inkPixels = 0;
-  for (int y = 0; y < legend.height(); ++y)
-    for (int xx = 45; xx < legend.width(); ++xx) inkPixels += legend.at(xx, y).r < 0.5f ? 1 : 0;
-  EXPECT_GT(inkPixels, 5 * 20);  // five labels of at least a few glyph pixels each
-  EXPECT_EQ(legend.at(legend.width() - 1, legend.height() / 2 - 20).r, 1.0f);
-}
-
-// Ink pixels right of the bar (120 wide: the bar ends at x = 32), the ticks and labels.
-int labelInk(const Image& legend) {
-  int ink = 0;
-  for (int y = 0; y < legend.height(); ++y)
-    for (int x = 32; x < legend.width(); ++x) ink += legend.at(x, y).r < 0.5f ? 1 : 0;
-  return ink;
-}
-
-// A constant field is labelled once, at the middle tick, and its bar is the one colour the field
-// is drawn in (the map's middle); five equal labels were drawn before.
-TEST(ColorBar, ConstantFieldIsLabelledOnce) {
-  const Image legend = colorBarImage(ColorMapKind::Viridis, 2.5, 2.5, 120, 300);
-  Image text(120, 300);
-  for (int y = 0; y < 300; ++y)
-    for (int x = 0; x < 120; ++x) text.at(x, y) = {1, 1, 1, 1};
-  defaultFont().draw(text, 50, 30, "2.5", 300 / 24.0f);  // anywhere right of the bar, at the legend's size
-  const int tickPixels = 3;                              // 3 * scale pixels of tick, scale 1 at 300 rows
-  EXPECT_EQ(labelInk(legend), labelInk(text) + tickPixels);
-  for (int y : {8, 150, 291})
-    EXPECT_LT(length(legend.at(10, y).rgb() - colorMapLookup(ColorMapKind::Viridis, 0.5f)), 1e-6f);
-  // A range narrower than the labels' four digits reads as one number too.
-  EXPECT_EQ(labelInk(colorBarImage(ColorMapKind::Viridis, 1.0, 1.000001, 120, 300)),
-            labelInk(colorBarImage(ColorMapKind::Viridis, 1.0, 1.0, 120, 300)));
-  // A real range keeps its five labels.
-  EXPECT_GT(labelInk(colorBarImage(ColorMapKind::Viridis, 2.5, 12.5, 120, 300)), 4 * labelInk(legend));
 }
 
 }  // namespace

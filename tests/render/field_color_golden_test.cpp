@@ -16,8 +16,8 @@ TEST(FieldColorGolden, TiltedSquare) {
   description.render.srgb = false;  // the golden holds the linear encoding's raw values
   const Scene scene = buildScene(description);
   ASSERT_TRUE(scene.fieldColors);
-  EXPECT_EQ(scene.fieldColors->legend.map, ColorMapKind::Magma);
-  EXPECT_EQ(scene.fieldColors->legend.low, 0.5);
+  EXPECT_EQ(scene.fieldColors->legends.at(0).map, ColorMapKind::Magma);
+  EXPECT_EQ(scene.fieldColors->legends.at(0).low, 0.5);
   test::expectImageNear(test::renderScene(description, scene),
                         test::dataFile("render/golden/field_square.png"), test::kRenderGoldenMinPsnrDb);
 }

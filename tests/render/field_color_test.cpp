@@ -80,7 +80,7 @@ TEST(FieldColor, ElementDataIsConstantPerFace) {
     EXPECT_EQ(fields.faceColorMap[f], (1 + static_cast<int>(ColorMapKind::Viridis)) | FieldColors::kPerFace);
     const Vec3d p =
         scene.geometry.origin + toDouble(scene.geometry.positions[scene.geometry.faces[f].vertex[2]]);
-    const double low = fields.legend.low, high = fields.legend.high;  // the triangles' range
+    const double low = fields.legends.at(0).low, high = fields.legends.at(0).high;  // the triangles' range
     EXPECT_NEAR(fields.faceFieldT[f], (p.x + 2 * p.y - low) / (high - low), 1e-5) << f;
   }
 }

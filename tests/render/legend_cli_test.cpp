@@ -2,11 +2,12 @@
 // picture, and refuses (exit 2, nothing written) when no mesh is coloured.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
-#include "lancer/image/color_map.hpp"
 #include "lancer/image/image_io.hpp"
+#include "lancer/image/legend.hpp"
 #include "support/cli.hpp"
 #include "support/files.hpp"
 
@@ -26,10 +27,17 @@ TEST(LegendCli, WritesTheColourBarOfTheColouredMesh) {
   const test::CommandResult result = renderWithLegend("field_square.toml", folder);
   ASSERT_EQ(result.exitCode, 0) << result.output;
   const Image legend = readPng(folder.file("legend.png"));
-  // field_square.toml colours with magma over [0.5, 3]: the bar is the one colorBarImage draws.
-  const Image expected = colorBarImage(ColorMapKind::Magma, 0.5, 3, legend.width(), legend.height());
+  // field_square.toml colours "temperature" with magma over [0.5, 3]: the sheet legendSheet draws.
+  const LegendSpec spec{ColorMapKind::Magma, 0.5, 3, "temperature", "", 0};
+  const Image expected = legendSheet({&spec, 1}, 300, 14, false);
   ASSERT_EQ(legend.width(), expected.width());
-  EXPECT_EQ(encodeImage8(legend, TransferCurve::Linear, 3), encodeImage8(expected, TransferCurve::Linear, 3));
+  ASSERT_EQ(legend.height(), expected.height());
+  // The written file is dithered to 8 bits: within one step of the exact values.
+  const auto written = encodeImage8(legend, TransferCurve::Linear, 3);
+  const auto exact = encodeImage8(expected, TransferCurve::Linear, 3);
+  ASSERT_EQ(written.size(), exact.size());
+  for (std::size_t i = 0; i < written.size(); ++i)
+    ASSERT_LE(std::abs(int(written[i]) - int(exact[i])), 1) << i;
 }
 
 TEST(LegendCli, NeedsAColouredMesh) {

@@ -6,8 +6,6 @@
 #include <cstdio>
 #include <string>
 
-#include "lancer/image/text.hpp"
-
 namespace lancer {
 namespace {
 
@@ -96,50 +94,6 @@ Vec3 colorMapLookup(ColorMapKind kind, float t) {
       return {t, t, t};
   }
   return {t, t, t};
-}
-
-Image colorBarImage(ColorMapKind kind, double low, double high, int width, int height) {
-  width = std::max(width, 48);
-  height = std::max(height, 64);
-  Image image(width, height);
-  const Rgba paper{1, 1, 1, 1}, ink{0, 0, 0, 1};
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) image.at(x, y) = paper;
-  const Font& font = defaultFont();
-  const float textHeight = std::max(12.0f, static_cast<float>(height) / 24.0f);
-  const int digitHeight = font.measure("0", textHeight).inkHeight();
-  const int scale = std::max(1, height / 200);
-  const int margin = (digitHeight + 1) / 2 + 2;  // half a label above the top tick
-  const int barLeft = 2 * scale, barRight = barLeft + std::max(4, width / 4);
-  const int barTop = margin, barBottom = height - margin;
-  // A constant field is drawn in the map's middle colour (color_by.cpp), so its bar is that colour.
-  const bool constant = low == high;
-  for (int y = barTop; y < barBottom; ++y) {
-    // Row centres map the bottom row to low and the top row to high.
-    const float t = 1.0f - (static_cast<float>(y - barTop) + 0.5f) / static_cast<float>(barBottom - barTop);
-    const Vec3 c = colorMapLookup(kind, constant ? 0.5f : t);
-    for (int x = barLeft; x < barRight; ++x) image.at(x, y) = {c.x, c.y, c.z, 1};
-  }
-  constexpr int kTicks = 5;
-  std::array<std::string, kTicks> labels;
-  for (int i = 0; i < kTicks; ++i) {
-    char label[32];
-    std::snprintf(label, sizeof label, "%.4g", low + static_cast<double>(i) / (kTicks - 1) * (high - low));
-    labels[static_cast<std::size_t>(i)] = label;
-  }
-  // Five ticks that would all read the same number (a constant field, or a range below the labels'
-  // four digits) are one tick, at the middle, labelled once.
-  const bool oneLabel =
-      std::all_of(labels.begin(), labels.end(), [&](const std::string& l) { return l == labels[0]; });
-  for (int i = oneLabel ? kTicks / 2 : 0; i < (oneLabel ? kTicks / 2 + 1 : kTicks); ++i) {
-    const double fraction = static_cast<double>(i) / (kTicks - 1);
-    const int row = barBottom - 1 - static_cast<int>(std::lround(fraction * (barBottom - 1 - barTop)));
-    const int tickEnd = barRight + 3 * scale;
-    for (int x = barRight; x < std::min(width, tickEnd); ++x) image.at(x, row) = ink;
-    font.draw(image, tickEnd + 2 * scale, row + digitHeight / 2, labels[static_cast<std::size_t>(i)],
-              textHeight, TextStyle(ink.rgb()));
-  }
-  return image;
 }
 
 }  // namespace lancer

@@ -1,5 +1,5 @@
-// Colour maps for field data (`color_by`): a scalar in [0, 1] to an RGB reflectance, and the
-// colour-bar legend image written beside a picture (`--legend`).
+// Colour maps for field data (`color_by`): a scalar in [0, 1] to an RGB reflectance (the legends
+// that show them: legend.hpp).
 #pragma once
 
 #include <optional>
@@ -24,10 +24,5 @@ std::string_view colorMapNames();
 // are defined on screen values, so with lancer's default linear output a field renders in exactly
 // the map's published colours (with --srgb the caller decodes them first).
 Vec3 colorMapLookup(ColorMapKind kind, float t);
-
-// A vertical colour-bar legend on white: the map from `low` (bottom) to `high` (top), with five
-// ticks labelled with their values (printf "%.4g", in DejaVu Sans: image/text.hpp). Sizes
-// below 48x64 are raised to it so the labels fit.
-Image colorBarImage(ColorMapKind kind, double low, double high, int width, int height);
 
 }  // namespace lancer

@@ -21,6 +21,18 @@ struct Rgba {
 
 constexpr Rgba toRgba(const Vec3& colour, float alpha = 1) { return {colour.x, colour.y, colour.z, alpha}; }
 
+// Porter-Duff "over" of `colour` with opacity `alpha` onto a pixel with straight (not premultiplied)
+// alpha: text, lines and legend panels drawn onto a picture, opaque or transparent.
+inline void blendOver(Rgba& pixel, const Vec3& colour, float alpha) {
+  if (!(alpha > 0)) return;
+  const float below = pixel.a * (1 - alpha);
+  const float total = alpha + below;
+  pixel.r = (colour.x * alpha + pixel.r * below) / total;
+  pixel.g = (colour.y * alpha + pixel.g * below) / total;
+  pixel.b = (colour.z * alpha + pixel.b * below) / total;
+  pixel.a = total;
+}
+
 // The largest width or height of an Image and of what the image writers accept: GIF's 16-bit limit.
 // Users get less: scenes and the CLI's --width and --height allow up to kMaxRenderSide (32768,
 // scene/render_limits.hpp), so this bound only catches a library caller's bug.

@@ -36,18 +36,6 @@ struct PlacedGlyph {
   int x, y;  // top-left of its coverage, relative to the pen origin
 };
 
-// "Over" of colour `c` with coverage `a` onto a pixel with straight (not premultiplied) alpha.
-void blendOver(Rgba& pixel, const Vec3& c, float a) {
-  if (a <= 0) return;
-  const float below = pixel.a * (1 - a);
-  const float alpha = a + below;
-  if (alpha <= 0) return;
-  pixel.r = (c.x * a + pixel.r * below) / alpha;
-  pixel.g = (c.y * a + pixel.g * below) / alpha;
-  pixel.b = (c.z * a + pixel.b * below) / alpha;
-  pixel.a = alpha;
-}
-
 // A coverage mask over a box of the image (x0, y0 its top-left in image pixels).
 struct Mask {
   int x0 = 0, y0 = 0, width = 0, height = 0;

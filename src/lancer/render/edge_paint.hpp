@@ -22,6 +22,8 @@ class EdgePaint {
   // Coverage of the hit face's drawn edges at the hit (0 when its mesh draws none), with their colour.
   // `pathLength`: how far the ray's origin is from the eye along the path.
   float coverageAt(const Ray& ray, const Hit& hit, float pathLength, Vec3& color) const;
+  // The world size of a pixel at `distance` from the eye along a path, for other paint (isolines).
+  float pixelSizeAt(float distance) const { return footprint_.at(distance); }
   // Paints the outer half of outline edges over what primary ray `ray` saw at `hitDistance`;
   // `known`: the ray's first query, already answered.
   void paintOutlines(const SceneQueries& queries, const Ray& ray, float hitDistance, TraceResult& result,

@@ -1,5 +1,6 @@
 #include "lancer/render/field_shading.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "lancer/image/color_map.hpp"
@@ -21,6 +22,11 @@ bool fieldColorAt(const Scene& scene, const SurfacePoint& surface, bool lineariz
       t += surface.cornerWeight[c] * fields.vertexFieldT[face.vertex[c]];
   }
   if (std::isnan(t)) return false;
+  if (!fields.faceBands.empty() && fields.faceBands[surface.face] > 0) {
+    // Discrete bands (gmsh's "discrete" intervals): each band shows the map at its middle.
+    const auto bands = static_cast<float>(fields.faceBands[surface.face]);
+    t = (std::min(std::floor(t * bands), bands - 1.0f) + 0.5f) / bands;
+  }
   color = colorMapLookup(static_cast<ColorMapKind>((map & ~FieldColors::kPerFace) - 1), t);
   if (linearize) color = {linearFromSrgb(color.x), linearFromSrgb(color.y), linearFromSrgb(color.z)};
   return true;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "lancer/render/field_shading.hpp"
+#include "lancer/render/isoline_paint.hpp"
 #include "lancer/render/lighting.hpp"
 #include "lancer/render/optics.hpp"
 #include "lancer/render/primary_ahead.hpp"
@@ -162,12 +163,17 @@ Vec3 Tracer::shadeSurface(const Ray& ray, const Hit& hit, float distance, const 
   Vec3 edgeColor;
   const float edge = paint_.coverageAt(ray, hit, path.length, edgeColor);
   if (edge >= 1.0f) return edgeColor;
-  auto withEdge = [&](const Vec3& color) {
-    return edge > 0.0f ? color * (1.0f - edge) + edgeColor * edge : color;
-  };
   SurfacePoint made;
   if (ahead == nullptr || !ahead->surfaceKnown) made = makeSurfacePoint(scene_, ray, hit);
   const SurfacePoint& surface = ahead != nullptr && ahead->surfaceKnown ? ahead->surface : made;
+  // Isolines are paint too, under the edges.
+  Vec3 isolineColor;
+  const float isoline =
+      isolineCoverage(scene_, ray, surface, paint_.pixelSizeAt(path.length + distance), isolineColor);
+  auto withEdge = [&](Vec3 color) {
+    if (isoline > 0.0f) color = color * (1.0f - isoline) + isolineColor * isoline;
+    return edge > 0.0f ? color * (1.0f - edge) + edgeColor * edge : color;
+  };
   // Closed shells and volumes face out of their material, so the side hit says whether the ray enters.
   const MediumCrossing media = queries_.crossingAt(hit.face, surface.normalSign > 0.0f);
   const Material& material = scene_.appearance.materials[media.shown];

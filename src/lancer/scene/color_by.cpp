@@ -26,6 +26,15 @@ std::pair<double, double> scalarRange(const MeshField& field, const FieldCompone
   return {low, high};
 }
 
+// The legend and band keys: title, units, bands, legend.
+void readLegendKeys(const TomlTableReader& reader, ColorBy& spec) {
+  if (auto title = reader.string("title")) spec.title = *title;
+  if (auto units = reader.string("units")) spec.units = *units;
+  if (auto bands = reader.integer("bands", 1, 256)) spec.bands = static_cast<int>(*bands);
+  constexpr std::array<std::string_view, 3> kPlacements = {"none", "right", "bottom"};
+  if (auto legend = reader.choice("legend", kPlacements)) spec.legend = static_cast<LegendPlacement>(*legend);
+}
+
 }  // namespace
 
 std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReader& mesh) {
@@ -81,7 +90,37 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
                                       *number(0), *number(1)));
     spec.range = std::pair{*number(0), *number(1)};
   }
+  readLegendKeys(reader, spec);
   return spec;
+}
+
+const MeshField& findMeshField(std::string_view key, const std::string& name, int step, const Mesh& mesh,
+                               const SourceLocation& where) {
+  const MeshField* found = nullptr;
+  bool nameFound = false;
+  for (const MeshField& field : mesh.fields) {
+    if (field.name != name) continue;
+    nameFound = true;
+    if (field.step == step) {
+      found = &field;
+      break;
+    }
+  }
+  if (found) return *found;
+  for (const auto& [skipped, warning] : mesh.source.skippedFields)
+    if (skipped == name)
+      throw InputError(
+          where, fmt::format("{} field \"{}\": its section in {} could not be read and was skipped ({})", key,
+                             name, mesh.source.path, warning));
+  if (mesh.fields.empty())
+    throw InputError(where, fmt::format("{} field \"{}\": {} has no fields ($NodeData or $ElementData)", key,
+                                        name, mesh.source.path));
+  const std::vector<std::string> names = viewNames(mesh);
+  throw InputError(where, nameFound
+                              ? fmt::format("{} field \"{}\" has no step {} in {}; it has {}", key, name,
+                                            step, mesh.source.path, describeViews(mesh))
+                              : fmt::format("{} field \"{}\" is not in {}{}; it has {}", key, name,
+                                            mesh.source.path, didYouMean(name, names), describeViews(mesh)));
 }
 
 FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSelection& scene) {

@@ -35,4 +35,9 @@ struct FieldColoring {
 // spec.where that lists what the file has (and the closest name).
 FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSelection& when = {});
 
+// The field `name` at `step` of the mesh; an unknown name or step is an InputError at `where`,
+// "<key> field ...", listing what the file has (and the closest name).
+const MeshField& findMeshField(std::string_view key, const std::string& name, int step, const Mesh& mesh,
+                               const SourceLocation& where);
+
 }  // namespace lancer

@@ -5,8 +5,11 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "lancer/image/color_map.hpp"
+#include "lancer/image/legend.hpp"
+#include "lancer/math/vec3.hpp"
 #include "lancer/mesh/field_steps.hpp"
 #include "lancer/util/input_error.hpp"
 
@@ -25,6 +28,35 @@ struct ColorBy {
   int gmshIntervalsType = 2;
   int gmshNbIso = 10;
   bool showScale = true;
+  std::optional<std::string> title;                // the legend's; default: the field's name
+  std::string units;                               // the legend's, after the title
+  int bands = 0;                                   // > 0: that many discrete colour bands
+  std::optional<LegendPlacement> legend;           // legends in the picture; default: none
+};
+
+// `isolines = { field = "T", count = 10 }` (or `values = [...]`) on a [[mesh]]: the curves where a
+// node field, interpolated over each face, takes the given values, drawn `widthPixels` wide.
+struct IsolineSpec {
+  std::string field;
+  int step = 0;
+  int count = 10;              // evenly spaced inside the field's range, when `values` is empty
+  std::vector<double> values;  // explicit values
+  Vec3 color{0, 0, 0};
+  float widthPixels = 1.5f;
+  SourceLocation where;  // the isolines value
+};
+
+// `arrows = { field = "velocity", max_count = 500, scale = "auto" }` on a [[mesh]]: 3D arrows (real
+// triangles: they shade, cast shadows and show in mirrors) along a node vector field, at most
+// maxCount of them, one per cell of a grid over the surface.
+struct ArrowSpec {
+  std::string field;
+  int step = 0;
+  int maxCount = 500;
+  std::optional<double> scale;  // length per unit of magnitude; default ("auto"): the longest is 0.9 cells
+  bool fixedLength = false;     // every arrow 0.8 cells long
+  std::optional<Vec3> color;    // default: coloured by magnitude
+  SourceLocation where;         // the arrows value
 };
 
 }  // namespace lancer

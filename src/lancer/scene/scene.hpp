@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "lancer/image/legend.hpp"
 #include "lancer/math/aabb.hpp"
 #include "lancer/mesh/mesh.hpp"
 #include "lancer/mesh/vertex_normals.hpp"
@@ -48,12 +49,25 @@ struct FieldColors {
   std::vector<std::uint8_t> faceColorMap;
   std::vector<float> vertexFieldT;
   std::vector<float> faceFieldT;
-  // The first coloured mesh's map and range, for the --legend colour bar.
-  struct Legend {
-    ColorMapKind map = ColorMapKind::Viridis;
-    double low = 0;
-    double high = 1;
-  } legend;
+  // Per face: the number of discrete colour bands (0: continuous); empty when no mesh has bands.
+  std::vector<std::uint16_t> faceBands;
+  // One per field (and map) the meshes are coloured by: meshes colouring by one field share its
+  // legend and its range. Drawn into the picture at legendPlacement, and by --legend.
+  std::vector<LegendSpec> legends;
+  LegendPlacement legendPlacement = LegendPlacement::None;
+};
+
+// Isolines (isolines = {...}, render/isoline_paint.hpp): per face 0 (none) or an index into styles;
+// the field value per scene vertex (NaN: none).
+struct IsolineStyle {
+  std::vector<float> values;  // sorted
+  Vec3 color{0, 0, 0};
+  float widthPixels = 1.5f;
+};
+struct IsolineOverlay {
+  std::vector<std::uint16_t> faceStyle;
+  std::vector<float> vertexValue;
+  std::vector<IsolineStyle> styles{IsolineStyle{}};
 };
 
 // The shadow-catcher floor: points p with dot(p, normal) = offset (scene space).
@@ -106,6 +120,7 @@ struct Scene {
   SceneClipping clipping;
   std::optional<EdgeOverlay> edges;
   std::optional<FieldColors> fieldColors;
+  std::optional<IsolineOverlay> isolines;
   std::optional<ShadowCatcher> shadowCatcher;
 
   // What the mesh readers warned about (MeshSourceInfo::warnings), for the CLI to print.

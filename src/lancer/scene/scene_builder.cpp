@@ -13,6 +13,7 @@
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/feature_edges.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
+#include "lancer/scene/annotation_builder.hpp"
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/instance_transform.hpp"
 #include "lancer/scene/scene.hpp"
@@ -229,13 +230,10 @@ void appendEdges(EdgeOverlay& overlay, const MeshInstance& instance, Mesh& mesh,
 // Records a coloured mesh whose vertices start at vertexBase and faces at faceBase and run to the
 // scene's last ones: its faces get the map, its vertices the field's t (the mesh's vertices are the
 // scene's from vertexBase on, in order). Earlier meshes' entries are filled with "not coloured"
-// first; the first coloured mesh gives the legend.
+// first.
 void appendFieldColoring(const SceneGeometry& geometry, std::optional<FieldColors>& fields,
                          const FieldColoring& coloring, std::uint32_t vertexBase, std::size_t faceBase) {
-  if (!fields) {
-    fields.emplace();
-    fields->legend = {coloring.map, coloring.low, coloring.high};
-  }
+  if (!fields) fields.emplace();
   const int perFace = coloring.perFace ? FieldColors::kPerFace : 0;
   fields->faceColorMap.resize(faceBase, 0);
   fields->faceColorMap.resize(geometry.faces.size(),
@@ -324,6 +322,8 @@ struct SceneEntry {
   MeshInstance instance;
   Mesh mesh;
   std::optional<FieldColoring> coloring;
+  std::optional<ColorBy> colorBy;  // what `coloring` was resolved from, its range shared (legends)
+  const Mesh* fields = nullptr;    // the mesh's views when `mesh` is a copy without them
 };
 
 // Everything of a mesh but its fields: what a step's scene is built from (the fields stay with the
@@ -349,6 +349,8 @@ MeshInstance undeformedInstance(const MeshInstance& warped, std::vector<Material
   MeshInstance copy = warped;
   copy.warp.reset();
   copy.colorBy.reset();
+  copy.isolines.reset();
+  copy.arrows.reset();
   copy.groupMaterials.clear();
   copy.undeformed = UndeformedStyle::None;
   Material material;
@@ -375,17 +377,41 @@ MeshInstance undeformedInstance(const MeshInstance& warped, std::vector<Material
 std::vector<SceneEntry> sceneEntries(const SceneDescription& description, std::vector<Mesh> meshes,
                                      const std::vector<const Mesh*>& fields, std::vector<Material>& materials,
                                      std::vector<std::string>& warnings) {
+  // Colours first: meshes colouring by one field and map without a range of their own share the
+  // union of their ranges, so that a colour (and one legend) means one value on all of them.
+  std::vector<std::optional<ColorBy>> specs(meshes.size());
+  std::vector<std::optional<FieldColoring>> colorings(meshes.size());
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    specs[i] = description.meshes[i].colorBy;
+    if (specs[i])
+      colorings[i] = resolveColorBy(*specs[i], fields[i] ? *fields[i] : meshes[i], description.when);
+  }
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    if (!specs[i] || specs[i]->range || specs[i]->perStepRange) continue;
+    std::pair<double, double> range{colorings[i]->low, colorings[i]->high};
+    for (std::size_t j = 0; j < meshes.size(); ++j)
+      if (specs[j] && !specs[j]->range && !specs[j]->perStepRange && specs[j]->field == specs[i]->field &&
+          specs[j]->map == specs[i]->map) {
+        range.first = std::min(range.first, colorings[j]->low);
+        range.second = std::max(range.second, colorings[j]->high);
+      }
+    if (range.first != colorings[i]->low || range.second != colorings[i]->high) {
+      ColorBy shared = *specs[i];
+      shared.range = range;
+      colorings[i] = resolveColorBy(shared, fields[i] ? *fields[i] : meshes[i], description.when);
+    }
+  }
   std::vector<SceneEntry> entries;
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const MeshInstance& instance = description.meshes[i];
-    SceneEntry entry{instance, std::move(meshes[i]), std::nullopt};
+    SceneEntry entry{instance, std::move(meshes[i]), std::move(colorings[i]), specs[i], fields[i]};
     const Mesh& source = fields[i] ? *fields[i] : entry.mesh;
-    if (instance.colorBy) entry.coloring = resolveColorBy(*instance.colorBy, source, description.when);
     std::optional<SceneEntry> undeformed;
     if (instance.warp) {
       if (instance.undeformed != UndeformedStyle::None)
         undeformed =
-            SceneEntry{undeformedInstance(instance, materials), geometryOf(entry.mesh), std::nullopt};
+            SceneEntry{undeformedInstance(instance, materials), geometryOf(entry.mesh), std::nullopt,
+                       std::nullopt, nullptr};
       std::vector<float>* perFace = entry.coloring && entry.coloring->perFace ? &entry.coloring->t : nullptr;
       const WarpReport report = warpMesh(entry.mesh, source, *instance.warp, description.when, perFace);
       if (report.collapsedFaces)
@@ -426,6 +452,7 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
   // Gathered mesh by mesh, kept at the end when some mesh uses them.
   EdgeOverlay overlay;
   std::optional<FieldColors> fields;
+  std::optional<IsolineOverlay> isolines;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const MeshInstance& instance = entries[i].instance;
     Mesh& mesh = entries[i].mesh;
@@ -440,13 +467,21 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
     appendAppearance(appearance, faceBase, instance, mesh, placed.orientation, groupMaterials,
                      instance.shading.value_or(description.render.shading));
     appendEdges(overlay, instance, mesh, placed.edgeMasks);
-    if (coloring) appendFieldColoring(geometry, fields, *coloring, vertexBase, faceBase);
+    if (coloring) {
+      appendFieldColoring(geometry, fields, *coloring, vertexBase, faceBase);
+      appendLegendAndBands(*fields, *entries[i].colorBy, *coloring, faceBase, geometry.faces.size());
+    }
+    if (instance.isolines)
+      appendIsolines(isolines, *instance.isolines, entries[i].fields ? *entries[i].fields : mesh, vertexBase,
+                     faceBase, geometry.faces.size(), geometry.positions.size());
     if (!instance.clips.empty() && !mesh.faces.empty())
       appendMeshClips(scene.clipping, geometry, instance.clips, faceBase);
   }
   if (!appearance.faceOuterMaterial.empty())
     appearance.faceOuterMaterial.resize(geometry.faces.size(), SceneAppearance::kNoMaterial);
+  if (fields) finishBands(*fields, geometry.faces.size());
   finishFieldColors(scene, std::move(fields));
+  finishIsolines(scene, std::move(isolines));
   finishEdgeOverlay(scene, std::move(overlay));
 
   // Every per-face array in step with the faces (the tracer indexes them all by face).
@@ -474,6 +509,11 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
 
 Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads,
                  StageTimes* timesOrNull) {
+  if (hasArrows(description)) {  // the arrows are meshes of their own, built once here
+    SceneDescription withArrows = description;
+    addArrowMeshes(withArrows, meshes);
+    return buildScene(withArrows, std::move(meshes), threads, timesOrNull);
+  }
   StageTimes unused;
   StageTimes& times = timesOrNull ? *timesOrNull : unused;
   // Each mesh holds its own fields: colours are resolved before the warp moves its positions and
@@ -488,6 +528,12 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, 
 
 Scene buildSceneAt(const SceneDescription& description, const std::vector<Mesh>& meshes, int threads,
                    StageTimes* timesOrNull) {
+  if (hasArrows(description)) {  // arrows of the step the scene names: meshes of their own
+    SceneDescription withArrows = description;
+    std::vector<Mesh> withArrowMeshes = meshes;
+    addArrowMeshes(withArrows, withArrowMeshes);
+    return buildSceneAt(withArrows, withArrowMeshes, threads, timesOrNull);
+  }
   StageTimes unused;
   StageTimes& times = timesOrNull ? *timesOrNull : unused;
   std::vector<Mesh> geometry;

@@ -127,6 +127,8 @@ struct MeshInstance {
   std::optional<ShadingMode> shading;
   float smoothAngleDegrees = 60;
   std::optional<ColorBy> colorBy;  // colour the surface by a field of the mesh file
+  std::optional<IsolineSpec> isolines;
+  std::optional<ArrowSpec> arrows;
   Vec3d translate{0, 0, 0};
   Vec3d rotateDegrees{0, 0, 0};  // about x, then y, then z
   Vec3d scale{1, 1, 1};

@@ -16,18 +16,23 @@ constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
 constexpr std::array<std::string_view, 3> kLightKeys = {"position", "intensity", "attenuation"};
 constexpr std::array<std::string_view, 9> kMaterialKeys = {
     "ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "fresnel", "absorption"};
-constexpr std::array<std::string_view, 13> kMeshKeys = {
-    "file",   "material", "shading",  "smooth_angle", "translate", "rotate",    "scale",
-    "groups", "edges",    "color_by", "clip",         "warp",      "undeformed"};
+constexpr std::array<std::string_view, 15> kMeshKeys = {
+    "file",     "material", "shading",  "smooth_angle", "translate", "rotate", "scale",     "groups",
+    "edges",    "color_by", "isolines", "arrows",       "clip",      "warp",   "undeformed"};
 constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only", "feature_angle"};
-constexpr std::array<std::string_view, 5> kColorByKeys = {"field", "step", "map", "range", "component"};
+constexpr std::array<std::string_view, 9> kColorByKeys = {"field", "step",  "map",   "range", "component",
+                                                          "title", "units", "bands", "legend"};
 constexpr std::array<std::string_view, 2> kWarpKeys = {"field", "factor"};
+constexpr std::array<std::string_view, 6> kArrowKeys = {"field", "step",   "max_count",
+                                                        "scale", "length", "color"};
+constexpr std::array<std::string_view, 6> kIsolineKeys = {"field",  "step",  "count",
+                                                          "values", "color", "width"};
 constexpr std::array<std::string_view, 3> kClipKeys = {"point", "normal", "cap"};
 constexpr std::array<std::string_view, 3> kFloorKeys = {"shadow_catcher", "height", "normal"};
 constexpr std::array<std::string_view, 10> kAnimationKeys = {
     "frames", "fps", "orbit", "axis", "center", "degrees", "over", "range", "label", "label_position"};
 
-constexpr std::array<SceneTableKeys, 14> kSceneTables = {{
+constexpr std::array<SceneTableKeys, 16> kSceneTables = {{
     {SceneTable::Document, "", kDocumentKeys},
     {SceneTable::Render, "render", kRenderKeys},
     {SceneTable::Camera, "camera", kCameraKeys},
@@ -37,6 +42,8 @@ constexpr std::array<SceneTableKeys, 14> kSceneTables = {{
     {SceneTable::Mesh, "mesh", kMeshKeys},
     {SceneTable::MeshEdges, "mesh.edges", kEdgeKeys},
     {SceneTable::MeshColorBy, "mesh.color_by", kColorByKeys},
+    {SceneTable::MeshIsolines, "mesh.isolines", kIsolineKeys},
+    {SceneTable::MeshArrows, "mesh.arrows", kArrowKeys},
     {SceneTable::MeshClip, "mesh.clip", kClipKeys},
     {SceneTable::Clip, "clip", kClipKeys},
     {SceneTable::Floor, "floor", kFloorKeys},

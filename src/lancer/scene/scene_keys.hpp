@@ -20,6 +20,8 @@ enum class SceneTable {
   Mesh,
   MeshEdges,
   MeshColorBy,
+  MeshIsolines,
+  MeshArrows,
   MeshClip,
   Clip,
   Floor,

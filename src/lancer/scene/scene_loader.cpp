@@ -13,7 +13,9 @@
 
 #include <fmt/format.h>
 
+#include "lancer/scene/arrows.hpp"
 #include "lancer/scene/color_by.hpp"
+#include "lancer/scene/isolines.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/result_keys.hpp"
 #include "lancer/scene/suggest.hpp"
@@ -442,6 +444,8 @@ MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size
   mesh.edges = readEdges(file, reader);
   mesh.colorBy = readColorBy(file.path, reader);
   readWarpKeys(reader, mesh);
+  mesh.isolines = readIsolines(file.path, reader);
+  mesh.arrows = readArrows(file.path, reader);
   const std::string clipName = reader.qualified("clip");
   const std::vector<const toml::table*> clips = tableArray(file, table, "clip", clipName, "mesh.clip");
   for (std::size_t i = 0; i < clips.size(); ++i)

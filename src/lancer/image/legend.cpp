@@ -1,0 +1,255 @@
+#include "lancer/image/legend.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "lancer/image/pixel_encoding.hpp"
+#include "lancer/image/text.hpp"
+
+namespace lancer {
+namespace {
+
+constexpr Vec3 kInk{0, 0, 0};
+constexpr Vec3 kTickInk{0.1f, 0.1f, 0.1f};
+constexpr Vec3 kPaper{1, 1, 1};
+constexpr float kPanelOpacity = 0.85f;  // in pictures: the surface shows faintly behind the legend
+
+// Heckbert's nice number: 1, 2, 5 or 10 times a power of ten near x (rounded, or at least x).
+double niceNumber(double x, bool round) {
+  const double power = std::pow(10.0, std::floor(std::log10(x)));
+  const double f = x / power;
+  double nice = 10;
+  if (round)
+    nice = f < 1.5 ? 1 : f < 3 ? 2 : f < 7 ? 5 : 10;
+  else
+    nice = f <= 1 ? 1 : f <= 2 ? 2 : f <= 5 ? 5 : 10;
+  return nice * power;
+}
+
+// The next smaller nice step: 10 -> 5 -> 2 -> 1 -> 0.5 ...
+double smallerStep(double step) {
+  const double power = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+  const double f = step / power;
+  return f > 4 ? 2 * power : f > 1.5 ? power : 0.5 * power;
+}
+
+std::string superscript(int exponent) {
+  static constexpr const char* kDigits[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
+                                            "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+  std::string text = exponent < 0 ? "\u207b" : "";
+  for (const char digit : std::to_string(std::abs(exponent))) text += kDigits[digit - '0'];
+  return text;
+}
+
+// "-1.50" with a real minus sign.
+std::string withMinus(std::string text) {
+  if (!text.empty() && text[0] == '-') text.replace(0, 1, "\u2212");
+  return text;
+}
+
+struct Layout {
+  const Font& font;
+  float textHeight;
+  int pad, barThickness, tickLength, labelGap, digitHeight, titleBlock;
+};
+
+Layout layoutFor(float textHeight, bool hasTitle) {
+  const Font& font = defaultFont();
+  const TextMetrics line = font.measure("0", textHeight);
+  return {font,
+          textHeight,
+          std::max(3, static_cast<int>(std::lround(0.6f * textHeight))),
+          std::max(6, static_cast<int>(std::lround(1.2f * textHeight))),
+          std::max(3, static_cast<int>(std::lround(0.35f * textHeight))),
+          std::max(2, static_cast<int>(std::lround(0.3f * textHeight))),
+          line.inkHeight(),
+          hasTitle ? static_cast<int>(std::ceil(line.ascent + line.descent)) : 0};
+}
+
+Vec3 barColour(const LegendSpec& spec, float t, bool linearize) {
+  if (spec.low == spec.high) t = 0.5f;  // a constant field shows the map's middle colour
+  if (spec.bands > 0)
+    t = (std::min(std::floor(t * static_cast<float>(spec.bands)), static_cast<float>(spec.bands - 1)) +
+         0.5f) /
+        static_cast<float>(spec.bands);
+  Vec3 c = colorMapLookup(spec.map, t);
+  if (linearize) c = {linearFromSrgb(c.x), linearFromSrgb(c.y), linearFromSrgb(c.z)};
+  return c;
+}
+
+// Where a tick's value falls along the bar, 0 at low and 1 at high.
+float tickFraction(const LegendSpec& spec, double value) {
+  return spec.high > spec.low ? static_cast<float>((value - spec.low) / (spec.high - spec.low)) : 0.5f;
+}
+
+Image legendPanel(const LegendSpec& spec, bool horizontal, int barLength, float textHeight, bool linearize,
+                  float panelOpacity) {
+  barLength = std::max(barLength, 16);
+  const std::string title = legendTitle(spec);
+  const Layout l = layoutFor(textHeight, !title.empty());
+  const NiceTicks ticks = niceTicks(spec.low, spec.high, horizontal ? 4 : 6);
+  const std::vector<std::string> labels = tickLabels(ticks);
+  std::vector<TextMetrics> labelMetrics;
+  int widestLabel = 0;
+  for (const std::string& label : labels) {
+    labelMetrics.push_back(l.font.measure(label, textHeight));
+    widestLabel = std::max(widestLabel, static_cast<int>(std::ceil(labelMetrics.back().advance)));
+  }
+  const int titleWidth =
+      title.empty() ? 0 : static_cast<int>(std::ceil(l.font.measure(title, textHeight).advance));
+  const int titleSpace = title.empty() ? 0 : l.titleBlock + l.pad / 2;
+
+  int width = 0, height = 0, barX = 0, barY = 0;
+  if (horizontal) {
+    barX = l.pad + widestLabel / 2;
+    barY = l.pad + titleSpace;
+    width = std::max(barX + barLength + widestLabel / 2 + l.pad, titleWidth + 2 * l.pad);
+    height = barY + l.barThickness + l.tickLength + l.labelGap + l.digitHeight + l.pad;
+  } else {
+    barX = l.pad;
+    barY = l.pad + titleSpace + l.digitHeight / 2 + 1;
+    width = std::max(barX + l.barThickness + l.tickLength + l.labelGap + widestLabel + l.pad,
+                     titleWidth + 2 * l.pad);
+    height = barY + barLength + l.digitHeight / 2 + 1 + l.pad;
+  }
+  Image panel(width, height, toRgba(kPaper, panelOpacity));
+  if (!title.empty())
+    l.font.draw(panel, l.pad, l.pad + static_cast<int>(std::lround(l.titleBlock * 0.78f)), title, textHeight,
+                TextStyle(kInk));
+  // The bar: pixel centres sample the map, low at the bottom (vertical) or the left (horizontal).
+  const int along = barLength, across = l.barThickness;
+  for (int i = 0; i < along; ++i) {
+    const float t = (static_cast<float>(i) + 0.5f) / static_cast<float>(along);
+    const Vec3 c = barColour(spec, t, linearize);
+    for (int j = 0; j < across; ++j) {
+      if (horizontal)
+        panel.at(barX + i, barY + j) = toRgba(c);
+      else
+        panel.at(barX + j, barY + along - 1 - i) = toRgba(c);
+    }
+  }
+  for (std::size_t k = 0; k < ticks.values.size(); ++k) {
+    const float f = std::clamp(tickFraction(spec, ticks.values[k]), 0.0f, 1.0f);
+    const int offset = static_cast<int>(std::lround(f * static_cast<float>(along - 1)));
+    const TextMetrics& m = labelMetrics[k];
+    if (horizontal) {
+      const int x = barX + offset;
+      for (int y = barY + across; y < barY + across + l.tickLength; ++y) panel.at(x, y) = toRgba(kTickInk);
+      l.font.draw(panel, x - static_cast<int>(std::lround(m.advance / 2)),
+                  barY + across + l.tickLength + l.labelGap + l.digitHeight, labels[k], textHeight,
+                  TextStyle(kInk));
+    } else {
+      const int y = barY + along - 1 - offset;
+      for (int x = barX + across; x < barX + across + l.tickLength; ++x) panel.at(x, y) = toRgba(kTickInk);
+      l.font.draw(panel, barX + across + l.tickLength + l.labelGap, y + l.digitHeight / 2, labels[k],
+                  textHeight, TextStyle(kInk));
+    }
+  }
+  return panel;
+}
+
+}  // namespace
+
+NiceTicks niceTicks(double low, double high, int targetCount) {
+  NiceTicks ticks;
+  if (!(high > low) || !std::isfinite(low) || !std::isfinite(high)) {
+    ticks.values = {low};
+    return ticks;
+  }
+  targetCount = std::max(targetCount, 2);
+  // Heckbert: a nice step for the range split into targetCount - 1 parts, then the multiples of it
+  // that lie in [low, high] (the bar spans exactly the range, so ticks outside it are dropped).
+  double step = niceNumber(niceNumber(high - low, false) / (targetCount - 1), true);
+  const double slack = 1e-9 * (high - low);
+  for (;;) {
+    ticks.values.clear();
+    const double first = std::ceil((low - slack) / step);
+    for (double k = first; k * step <= high + slack; k += 1)
+      ticks.values.push_back(k * step == 0 ? 0.0 : k * step);
+    if (ticks.values.size() >= 2) break;
+    step = smallerStep(step);
+  }
+  ticks.step = step;
+  return ticks;
+}
+
+std::vector<std::string> tickLabels(const NiceTicks& ticks) {
+  std::vector<std::string> labels;
+  double largest = 0;
+  for (const double v : ticks.values) largest = std::max(largest, std::abs(v));
+  if (ticks.step <= 0) {  // one value: a constant field
+    for (const double v : ticks.values) labels.push_back(withMinus(fmt::format("{:.4g}", v)));
+    return labels;
+  }
+  const bool scientific = largest >= 1e5 || largest < 1e-3;
+  const int exponent = scientific ? static_cast<int>(std::floor(std::log10(largest))) : 0;
+  const double scale = std::pow(10.0, exponent);
+  const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(ticks.step / scale) + 1e-9)));
+  for (const double v : ticks.values) {
+    if (std::abs(v) < ticks.step * 1e-6) {
+      labels.emplace_back("0");
+      continue;
+    }
+    std::string text = withMinus(fmt::format("{:.{}f}", v / scale, decimals));
+    if (scientific) text += "\u00d710" + superscript(exponent);
+    labels.push_back(std::move(text));
+  }
+  return labels;
+}
+
+std::string legendTitle(const LegendSpec& spec) {
+  if (spec.units.empty()) return spec.title;
+  return spec.title.empty() ? "(" + spec.units + ")" : spec.title + " (" + spec.units + ")";
+}
+
+Image legendImage(const LegendSpec& spec, bool horizontal, int barLength, float textHeight, bool linearize) {
+  return legendPanel(spec, horizontal, barLength, textHeight, linearize, 1.0f);
+}
+
+Image legendSheet(std::span<const LegendSpec> legends, int barLength, float textHeight, bool linearize) {
+  std::vector<Image> panels;
+  int width = 0, height = 0;
+  for (const LegendSpec& spec : legends) {
+    panels.push_back(legendImage(spec, false, barLength, textHeight, linearize));
+    width += panels.back().width();
+    height = std::max(height, panels.back().height());
+  }
+  Image sheet(std::max(width, 1), std::max(height, 1), toRgba(kPaper));
+  int x = 0;
+  for (const Image& panel : panels) {
+    sheet.pasteTile(panel, x, 0);
+    x += panel.width();
+  }
+  return sheet;
+}
+
+void drawLegends(Image& picture, std::span<const LegendSpec> legends, LegendPlacement placement,
+                 bool linearize) {
+  if (placement == LegendPlacement::None || legends.empty() || picture.empty()) return;
+  const bool horizontal = placement == LegendPlacement::Bottom;
+  const float textHeight = std::max(9.0f, static_cast<float>(picture.height()) / 40.0f);
+  const int margin = static_cast<int>(std::lround(0.6f * textHeight));
+  const int barLength = horizontal ? static_cast<int>(std::lround(0.45 * picture.width()))
+                                   : static_cast<int>(std::lround(0.55 * picture.height()));
+  int right = picture.width() - margin, bottom = picture.height() - margin;
+  for (const LegendSpec& spec : legends) {
+    const Image panel = legendPanel(spec, horizontal, barLength, textHeight, linearize, kPanelOpacity);
+    const int x0 = horizontal ? (picture.width() - panel.width()) / 2 : right - panel.width();
+    const int y0 = horizontal ? bottom - panel.height() : (picture.height() - panel.height()) / 2;
+    for (int y = 0; y < panel.height(); ++y)
+      for (int x = 0; x < panel.width(); ++x) {
+        const int px = x0 + x, py = y0 + y;
+        if (px < 0 || py < 0 || px >= picture.width() || py >= picture.height()) continue;
+        const Rgba& p = panel.at(x, y);
+        blendOver(picture.at(px, py), p.rgb(), p.a);
+      }
+    if (horizontal)
+      bottom = y0 - margin;
+    else
+      right = x0 - margin;
+  }
+}
+
+}  // namespace lancer

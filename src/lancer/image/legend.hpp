@@ -1,0 +1,62 @@
+// Colour-bar legends that say what they show: the map over the field's range with a title, units
+// and tick labels at round numbers, drawn into a picture (right or bottom) or as a separate image.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "lancer/image/color_map.hpp"
+#include "lancer/image/image.hpp"
+
+namespace lancer {
+
+// Where a picture's legends go (`color_by = { legend = ... }`): none, along the right edge (vertical
+// bars) or along the bottom edge (horizontal bars).
+enum class LegendPlacement { None, Right, Bottom };
+
+// One colour bar: the map from low to high (a constant field has low == high and shows the map's
+// middle colour), `bands` > 0 draws it in that many discrete bands as the surface shows them.
+struct LegendSpec {
+  ColorMapKind map = ColorMapKind::Viridis;
+  double low = 0;
+  double high = 1;
+  std::string title;  // default: the field's name
+  std::string units;  // shown after the title in parentheses
+  int bands = 0;
+};
+
+// Round tick values inside [low, high]: multiples of a step 1, 2 or 5 times a power of ten, chosen
+// as in Heckbert's "Nice numbers for graph labels" (Graphics Gems, 1990) for about `targetCount`
+// ticks, with at least two when low < high (one, the value, when low == high).
+struct NiceTicks {
+  std::vector<double> values;
+  double step = 0;
+};
+NiceTicks niceTicks(double low, double high, int targetCount = 5);
+
+// The ticks' labels, all in one notation: plain decimals with the digits the step needs ("0.25",
+// "1500", "−2") while every |value| is in [0.001, 100000); otherwise a mantissa and one common power
+// of ten ("1.5×10⁵", "−2×10⁻⁴"). Minus signs are U+2212, zero is "0".
+std::vector<std::string> tickLabels(const NiceTicks& ticks);
+
+// "title (units)", "title", or "(units)".
+std::string legendTitle(const LegendSpec& spec);
+
+// A legend on an opaque white panel, for `--legend FILE`: vertical (bar `barLength` pixels tall,
+// labels on its right) or horizontal (bar that wide, labels below), text `textHeight` pixels.
+// Its size follows from the bar, the labels and the title. `linearize`: decode the map's display
+// colours to linear (for pictures written with --srgb), as the surface's field colours are.
+Image legendImage(const LegendSpec& spec, bool horizontal, int barLength, float textHeight, bool linearize);
+
+// The `--legend FILE` image: every legend as a vertical bar `barLength` tall with text
+// `textHeight` pixels, side by side on white.
+Image legendSheet(std::span<const LegendSpec> legends, int barLength, float textHeight, bool linearize);
+
+// Draws the legends into `picture` along the edge `placement` names, on translucent white panels,
+// sized from the picture's height (vertical bars ~55% of it) or width (horizontal bars ~45%).
+// Several legends sit side by side (right) or one above the other (bottom).
+void drawLegends(Image& picture, std::span<const LegendSpec> legends, LegendPlacement placement,
+                 bool linearize);
+
+}  // namespace lancer

@@ -1,0 +1,123 @@
+#include "lancer/scene/annotation_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lancer/scene/arrows.hpp"
+#include "lancer/scene/isolines.hpp"
+
+namespace lancer {
+
+std::vector<std::optional<ColorBy>> sharedColorRanges(const SceneDescription& description,
+                                                      const std::vector<Mesh>& meshes) {
+  std::vector<std::optional<ColorBy>> specs(meshes.size());
+  // The range of each mesh's own field, when it has the field (else resolveColorBy reports it).
+  std::vector<std::optional<std::pair<double, double>>> own(meshes.size());
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    specs[i] = description.meshes[i].colorBy;
+    if (!specs[i] || specs[i]->range) continue;
+    for (const MeshField& field : meshes[i].fields)
+      if (field.name == specs[i]->field && field.step == specs[i]->step) {
+        const auto [low, high] = field.range();
+        if (std::isfinite(low) && std::isfinite(high)) own[i] = std::pair<double, double>(low, high);
+        break;
+      }
+  }
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    if (!own[i]) continue;
+    std::pair<double, double> range = *own[i];
+    for (std::size_t j = 0; j < meshes.size(); ++j)
+      if (own[j] && specs[j]->field == specs[i]->field && specs[j]->step == specs[i]->step &&
+          specs[j]->map == specs[i]->map) {
+        range.first = std::min(range.first, own[j]->first);
+        range.second = std::max(range.second, own[j]->second);
+      }
+    // Only a range shared with other meshes is written down; a mesh alone keeps its own.
+    if (range != *own[i]) specs[i]->range = range;
+  }
+  return specs;
+}
+
+void appendLegendAndBands(FieldColors& fields, const ColorBy& spec, const FieldColoring& coloring,
+                          std::size_t faceBase, std::size_t faceEnd) {
+  const std::string title = spec.title.value_or(spec.field);
+  auto same = [&](const LegendSpec& legend) {
+    return legend.map == coloring.map && legend.low == coloring.low && legend.high == coloring.high &&
+           legend.title == title && legend.units == spec.units && legend.bands == spec.bands;
+  };
+  if (std::none_of(fields.legends.begin(), fields.legends.end(), same))
+    fields.legends.push_back({coloring.map, coloring.low, coloring.high, title, spec.units, spec.bands});
+  if (spec.legend && fields.legendPlacement == LegendPlacement::None) fields.legendPlacement = *spec.legend;
+  if (spec.bands > 0) {
+    fields.faceBands.resize(faceBase, 0);
+    fields.faceBands.resize(faceEnd, static_cast<std::uint16_t>(spec.bands));
+  }
+}
+
+void finishBands(FieldColors& fields, std::size_t faceCount) {
+  if (!fields.faceBands.empty()) fields.faceBands.resize(faceCount, 0);
+}
+
+void appendIsolines(std::optional<IsolineOverlay>& overlay, const IsolineSpec& spec, const Mesh& mesh,
+                    std::uint32_t vertexBase, std::size_t faceBase, std::size_t faceEnd,
+                    std::size_t vertexEnd) {
+  ResolvedIsolines resolved = resolveIsolines(spec, mesh);
+  if (!overlay) overlay.emplace();
+  overlay->styles.push_back({std::move(resolved.values), spec.color, spec.widthPixels});
+  overlay->faceStyle.resize(faceBase, 0);
+  overlay->faceStyle.resize(faceEnd, static_cast<std::uint16_t>(overlay->styles.size() - 1));
+  // The mesh's vertices are the scene's from vertexBase on, in order.
+  overlay->vertexValue.resize(vertexBase, std::nanf(""));
+  overlay->vertexValue.insert(overlay->vertexValue.end(), resolved.vertexValue.begin(),
+                              resolved.vertexValue.end());
+  overlay->vertexValue.resize(vertexEnd, std::nanf(""));
+}
+
+void finishIsolines(Scene& scene, std::optional<IsolineOverlay> overlay) {
+  if (!overlay) return;
+  overlay->faceStyle.resize(scene.geometry.faces.size(), 0);
+  overlay->vertexValue.resize(scene.geometry.positions.size(), std::nanf(""));
+  scene.isolines = std::move(overlay);
+}
+
+bool hasArrows(const SceneDescription& description) {
+  return std::any_of(description.meshes.begin(), description.meshes.end(),
+                     [](const MeshInstance& instance) { return instance.arrows.has_value(); });
+}
+
+void addArrowMeshes(SceneDescription& description, std::vector<Mesh>& meshes) {
+  const std::size_t originals = description.meshes.size();
+  for (std::size_t i = 0; i < originals; ++i) {
+    if (!description.meshes[i].arrows) continue;
+    const ArrowSpec spec = *description.meshes[i].arrows;
+    description.meshes[i].arrows.reset();
+    Mesh arrows = arrowMesh(spec, meshes[i]);
+    MeshInstance instance = description.meshes[i];
+    instance.file += " (arrows)";
+    instance.groupMaterials.clear();
+    instance.edges.reset();
+    instance.isolines.reset();
+    instance.shading = ShadingMode::Phong;
+    if (spec.color) {
+      Material material = description.materials[static_cast<std::size_t>(instance.material)];
+      material.name += " (arrows)";
+      material.ka = material.kd = *spec.color;
+      material.transparency = 0;
+      instance.material = static_cast<int>(description.materials.size());
+      description.materials.push_back(material);
+      instance.colorBy.reset();
+    } else {
+      ColorBy colorBy;
+      colorBy.field = arrows.fields.front().name;
+      colorBy.step = spec.step;
+      colorBy.map = instance.colorBy ? instance.colorBy->map : ColorMapKind::Viridis;
+      colorBy.legend = instance.colorBy ? instance.colorBy->legend : std::nullopt;
+      colorBy.where = spec.where;
+      instance.colorBy = colorBy;
+    }
+    description.meshes.push_back(std::move(instance));
+    meshes.push_back(std::move(arrows));
+  }
+}
+
+}  // namespace lancer

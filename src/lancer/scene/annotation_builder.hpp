@@ -1,0 +1,42 @@
+// The scene builder's part for what annotates a result (buildScene calls these mesh by mesh): the
+// legends of field-coloured meshes (one per field, with one range shared by its meshes), colour
+// bands and isolines.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "lancer/scene/color_by.hpp"
+#include "lancer/scene/scene.hpp"
+
+namespace lancer {
+
+// Each mesh's color_by with the range its legend shows: meshes colouring by one field (name, step
+// and map) without a range of their own share the union of their ranges, so a colour means one
+// value on all of them. nullopt for meshes that are not coloured.
+std::vector<std::optional<ColorBy>> sharedColorRanges(const SceneDescription& description,
+                                                      const std::vector<Mesh>& meshes);
+
+// Adds the mesh's legend (or folds it into the one for its field) and its bands to `fields`, whose
+// faces from faceBase on are the mesh's. Call after appendFieldColoring.
+void appendLegendAndBands(FieldColors& fields, const ColorBy& spec, const FieldColoring& coloring,
+                          std::size_t faceBase, std::size_t faceEnd);
+// faceBands in step with the faces, when some mesh has bands.
+void finishBands(FieldColors& fields, std::size_t faceCount);
+
+// Records a mesh's isolines: its vertices start at vertexBase and faces at faceBase in the scene.
+void appendIsolines(std::optional<IsolineOverlay>& overlay, const IsolineSpec& spec, const Mesh& mesh,
+                    std::uint32_t vertexBase, std::size_t faceBase, std::size_t faceEnd,
+                    std::size_t vertexEnd);
+void finishIsolines(Scene& scene, std::optional<IsolineOverlay> overlay);
+
+// Whether some mesh asks for arrows.
+bool hasArrows(const SceneDescription& description);
+// Turns each mesh's `arrows` into a mesh instance of its own (after the others): the arrows built
+// by arrowMesh, placed like their mesh, coloured by magnitude with their mesh's map (or in a new
+// material of `color`). Clears the `arrows` of the originals.
+void addArrowMeshes(SceneDescription& description, std::vector<Mesh>& meshes);
+
+}  // namespace lancer

@@ -1,0 +1,184 @@
+#include "lancer/scene/arrows.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <unordered_map>
+
+#include "lancer/scene/color_by.hpp"
+
+namespace lancer {
+namespace {
+
+// The arrow's proportions, relative to its length.
+constexpr double kShaftRadius = 0.05;
+constexpr double kHeadRadius = 0.12;
+constexpr double kHeadLength = 0.3;
+
+Vec3d vectorAt(const MeshField& field, std::uint32_t vertex) {
+  const std::size_t i = static_cast<std::size_t>(vertex) * 3;
+  return {field.values[i], field.values[i + 1], field.values[i + 2]};
+}
+
+bool usable(const Vec3d& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && length(v) > 0;
+}
+
+// Appends one arrow from `base` along unit `direction`, `arrowLength` long, with `magnitude` as its
+// vertices' field value.
+void appendArrow(Mesh& out, std::vector<float>& values, const Vec3d& base, const Vec3d& direction,
+                 double arrowLength, float magnitude) {
+  // An orthonormal frame around the direction (Duff et al., "Building an Orthonormal Basis, Revisited").
+  const double sign = std::copysign(1.0, direction.z);
+  const double a = -1.0 / (sign + direction.z), b = direction.x * direction.y * a;
+  const Vec3d u{1 + sign * direction.x * direction.x * a, sign * b, -sign * direction.x};
+  const Vec3d w{b, sign + direction.y * direction.y * a, -direction.y};
+  const double shaftR = kShaftRadius * arrowLength, headR = kHeadRadius * arrowLength;
+  const Vec3d neck = base + direction * (arrowLength * (1 - kHeadLength));
+  const Vec3d tip = base + direction * arrowLength;
+  const auto first = static_cast<std::uint32_t>(out.positions.size());
+  auto add = [&](const Vec3d& p) {
+    out.positions.push_back(toFloat(p - out.origin));
+    values.push_back(magnitude);
+  };
+  // Rings: base (shaft), neck (shaft), neck (head); then the base centre and the tip.
+  for (const auto& [centre, radius] :
+       {std::pair{base, shaftR}, std::pair{neck, shaftR}, std::pair{neck, headR}})
+    for (int k = 0; k < kArrowSides; ++k) {
+      const double angle = 2 * std::numbers::pi * k / kArrowSides;
+      add(centre + (u * std::cos(angle) + w * std::sin(angle)) * radius);
+    }
+  add(base);
+  add(tip);
+  const std::uint32_t baseCentre = first + 3 * kArrowSides, tipVertex = baseCentre + 1;
+  auto ring = [&](int r, int k) {
+    return first + static_cast<std::uint32_t>(r * kArrowSides + (k % kArrowSides));
+  };
+  auto triangle = [&](std::uint32_t p, std::uint32_t q, std::uint32_t s) {
+    out.faces.push_back(MeshFace{{p, q, s, kNoVertex}});
+  };
+  for (int k = 0; k < kArrowSides; ++k) {
+    triangle(baseCentre, ring(0, k + 1), ring(0, k));      // the shaft's bottom, facing back
+    triangle(ring(0, k), ring(0, k + 1), ring(1, k + 1));  // the shaft's side
+    triangle(ring(0, k), ring(1, k + 1), ring(1, k));
+    triangle(ring(1, k), ring(1, k + 1), ring(2, k + 1));  // under the head
+    triangle(ring(1, k), ring(2, k + 1), ring(2, k));
+    triangle(ring(2, k), ring(2, k + 1), tipVertex);  // the head
+  }
+}
+
+}  // namespace
+
+std::optional<ArrowSpec> readArrows(const std::string& file, const TomlTableReader& mesh) {
+  const toml::node* node = mesh.find("arrows");
+  if (!node) return std::nullopt;
+  const auto* table = node->as_table();
+  if (!table)
+    mesh.fail(*node,
+              fmt::format("{} must be a table like {{ field = \"velocity\", max_count = 500 }}, found {}",
+                          mesh.qualified("arrows"), describeValue(*node)));
+  const TomlTableReader reader(*table, mesh.qualified("arrows"), file, SceneTable::MeshArrows);
+  ArrowSpec spec;
+  spec.where = reader.location(*node);
+  const std::optional<std::string> field = reader.nonEmptyString("field");
+  if (!field) reader.failMissing("field", "field = \"velocity\" (a $NodeData view of 3 components)");
+  spec.field = *field;
+  if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
+  if (auto count = reader.integer("max_count", 1, 100'000)) spec.maxCount = static_cast<int>(*count);
+  if (const toml::node* scale = reader.find("scale")) {
+    if (!(scale->is_string() && scale->value<std::string>() == "auto")) {
+      if (!scale->is_number())
+        reader.fail(*scale, fmt::format("{} must be \"auto\" or a number > 0, found {}",
+                                        reader.qualified("scale"), describeValue(*scale)));
+      spec.scale = reader.number("scale", NumberRange::above(0));
+    }
+  }
+  constexpr std::array<std::string_view, 2> kLengths = {"magnitude", "fixed"};
+  if (auto length = reader.choice("length", kLengths)) spec.fixedLength = *length == 1;
+  if (auto color = reader.vector("color", Triple::Rgb, NumberRange::between(0, 1)))
+    spec.color = toFloat(*color);
+  return spec;
+}
+
+ArrowPlacement placeArrows(const Mesh& mesh, const MeshField& field, int maxCount) {
+  ArrowPlacement placement;
+  std::vector<std::uint8_t> used(mesh.positions.size(), 0);
+  Aabb bounds;
+  double area = 0;
+  for (const MeshFace& face : mesh.faces) {
+    for (int c = 0; c < face.cornerCount(); ++c) {
+      used[face.vertex[c]] = 1;
+      bounds.extend(mesh.positions[face.vertex[c]]);
+    }
+    const Vec3 e1 = mesh.positions[face.vertex[1]] - mesh.positions[face.vertex[0]];
+    const Vec3 e2 = mesh.positions[face.vertex[2]] - mesh.positions[face.vertex[0]];
+    area += 0.5 * length(cross(e1, e2)) * (face.isQuad() ? 2 : 1);
+  }
+  std::vector<std::uint32_t> candidates;
+  for (std::uint32_t v = 0; v < used.size(); ++v)
+    if (used[v] && usable(vectorAt(field, v))) candidates.push_back(v);
+  if (candidates.empty() || area <= 0) return placement;
+  // About maxCount cells of a surface of this area; coarser until the occupied ones are few enough.
+  double cell = std::sqrt(area / maxCount);
+  for (;;) {
+    std::unordered_map<std::uint64_t, std::pair<double, std::uint32_t>> nearest;
+    for (const std::uint32_t v : candidates) {
+      const Vec3 p = mesh.positions[v] - bounds.lower;
+      const double cx = std::floor(p.x / cell), cy = std::floor(p.y / cell), cz = std::floor(p.z / cell);
+      const std::uint64_t key = (static_cast<std::uint64_t>(cx) << 42) ^
+                                (static_cast<std::uint64_t>(cy) << 21) ^ static_cast<std::uint64_t>(cz);
+      const Vec3d centre{(cx + 0.5) * cell, (cy + 0.5) * cell, (cz + 0.5) * cell};
+      const double d = length(toDouble(p) - centre);
+      auto [it, inserted] = nearest.try_emplace(key, d, v);
+      if (!inserted && (d < it->second.first || (d == it->second.first && v < it->second.second)))
+        it->second = {d, v};
+    }
+    if (static_cast<int>(nearest.size()) <= maxCount) {
+      for (const auto& [key, chosen] : nearest) placement.vertices.push_back(chosen.second);
+      std::sort(placement.vertices.begin(), placement.vertices.end());
+      placement.cellSize = cell;
+      return placement;
+    }
+    cell *= 1.15;
+  }
+}
+
+Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh) {
+  const MeshField& field = findMeshField("arrows", spec.field, spec.step, mesh, spec.where);
+  if (field.perElement || field.components != 3)
+    throw InputError(
+        spec.where, fmt::format("arrows field \"{}\" must be node data ($NodeData) of 3 components "
+                                "(a vector per node), but it is {} of {} component{}",
+                                spec.field, field.perElement ? "element data" : "node data", field.components,
+                                field.components == 1 ? "" : "s"));
+  const ArrowPlacement placement = placeArrows(mesh, field, spec.maxCount);
+  double largest = 0;
+  for (const std::uint32_t v : placement.vertices) largest = std::max(largest, length(vectorAt(field, v)));
+  const double scale = spec.scale ? *spec.scale : (largest > 0 ? 0.9 * placement.cellSize / largest : 0);
+  Mesh out;
+  out.origin = mesh.origin;
+  out.source.path = mesh.source.path;
+  std::vector<float> magnitudes;
+  for (const std::uint32_t v : placement.vertices) {
+    const Vec3d vector = vectorAt(field, v);
+    const double magnitude = length(vector);
+    const double arrowLength = spec.fixedLength ? 0.8 * placement.cellSize : scale * magnitude;
+    if (!(arrowLength > 0)) continue;
+    appendArrow(out, magnitudes, mesh.worldPosition(v), vector * (1 / magnitude), arrowLength,
+                static_cast<float>(magnitude));
+  }
+  out.facePhysicalTag.assign(out.faces.size(), 0);
+  out.faceEntityTag.assign(out.faces.size(), 1);
+  out.faceEdgeMask.assign(out.faces.size(), kAllEdges);
+  MeshField magnitude;
+  magnitude.name = spec.field + " magnitude";
+  magnitude.step = spec.step;
+  magnitude.time = field.time;
+  magnitude.values = std::move(magnitudes);
+  out.fields.push_back(std::move(magnitude));
+  return out;
+}
+
+}  // namespace lancer

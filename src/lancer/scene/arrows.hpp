@@ -1,0 +1,37 @@
+// `arrows = { field = "velocity", max_count = 500 }` on a [[mesh]]: reading the key, placing arrows
+// on a grid over the surface (one per occupied cell, not one per node, so they read at any mesh
+// density) and building them as a triangle mesh the scene renders like any other.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lancer/mesh/mesh.hpp"
+#include "lancer/scene/color_by_spec.hpp"
+#include "lancer/scene/toml_table_reader.hpp"
+
+namespace lancer {
+
+// The mesh table's `arrows`, if present (file: the scene file's path, for messages).
+std::optional<ArrowSpec> readArrows(const std::string& file, const TomlTableReader& mesh);
+
+// Where arrows go: a grid of cubes `cellSize` wide over the mesh's bounds, as fine as keeps the
+// occupied cells at most maxCount; in each occupied cell, the face-used vertex with a non-zero vector
+// nearest the cell's centre.
+struct ArrowPlacement {
+  double cellSize = 0;
+  std::vector<std::uint32_t> vertices;
+};
+ArrowPlacement placeArrows(const Mesh& mesh, const MeshField& field, int maxCount);
+
+// The arrows of `spec` on `mesh` as a closed triangle mesh in the mesh's coordinates (same origin),
+// with a node field "<field> magnitude" for colouring by magnitude. An InputError at spec.where when
+// the field is not node data with 3 components.
+Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh);
+
+// The sides of an arrow's shaft and head; each arrow has 6 * kArrowSides triangles.
+inline constexpr int kArrowSides = 12;
+
+}  // namespace lancer

@@ -1,0 +1,32 @@
+// `isolines = { field = "T", count = 10 }` on a [[mesh]] (or `values = [...]`, `color`, `width`):
+// reading the scene key, then resolving it against the loaded mesh into per-vertex values and the
+// sorted iso values the tracer draws lines at (render/isoline_paint.hpp).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lancer/mesh/mesh.hpp"
+#include "lancer/scene/color_by_spec.hpp"
+#include "lancer/scene/toml_table_reader.hpp"
+
+namespace lancer {
+
+// The mesh table's `isolines`, if present (file: the scene file's path, for messages).
+std::optional<IsolineSpec> readIsolines(const std::string& file, const TomlTableReader& mesh);
+
+struct ResolvedIsolines {
+  std::vector<float> vertexValue;  // per mesh vertex; NaN where the file gives none
+  std::vector<float> values;       // sorted, distinct
+};
+
+// Node data only: element data (constant over each face) has no curves, an InputError at
+// spec.where that suggests bands; an unknown field or step as color_by says it.
+ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh);
+
+// `count` values evenly inside (low, high): low + (high - low) * (i + 0.5) / count, as gmsh's iso
+// intervals put one line in the middle of each of `count` equal intervals.
+std::vector<double> evenIsoValues(double low, double high, int count);
+
+}  // namespace lancer

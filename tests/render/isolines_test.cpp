@@ -1,0 +1,150 @@
+// Isolines and colour bands on the gmsh-made unit square carrying the linear field x + 2 y, seen
+// from straight above: the lines lie on the exact lines x + 2 y = v, keep their width in pixels, and
+// bands split the surface into the asked number of colours.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "lancer/scene/isolines.hpp"
+#include "lancer/scene/scene_loader.hpp"
+#include "support/files.hpp"
+#include "support/input_errors.hpp"
+#include "support/test_scenes.hpp"
+
+namespace lancer {
+namespace {
+
+constexpr int kSide = 96;
+
+// The unit square [0, 1]^2 filling a kSide x kSide picture (pixel (i, j) sees x = (i + 0.5) / kSide,
+// y = 1 - (j + 0.5) / kSide), blue under white ambient light, with the mesh keys `meshKeys`.
+SceneDescription squareScene(const std::string& meshKeys) {
+  const std::string text = R"(
+[render]
+width = 96
+height = 96
+background = [0, 0, 0]
+[camera]
+projection = "orthographic"
+position = [0.5, 0.5, 5]
+look_at = [0.5, 0.5, 0]
+up = [0, 1, 0]
+view_height = 1
+[ambient]
+intensity = [1, 1, 1]
+[material.blue]
+ka = [0, 0, 1]
+kd = [0, 0, 0]
+ks = [0, 0, 0]
+[[mesh]]
+file = "../fields/node_xy_v41_bin.msh"
+material = "blue"
+)" + meshKeys + "\n";
+  return parseScene(text, test::dataFile("render/isolines.toml"));
+}
+
+TEST(Isolines, LieOnTheExactLinesOfALinearField) {
+  // Red lines of width 2 at x + 2 y = 1 and 2: the red channel is each pixel's line coverage.
+  const SceneDescription description = squareScene(
+      R"(isolines = { field = "temperature", values = [1.0, 2.0], color = [1, 0, 0], width = 2 })");
+  const Image image = test::renderScene(description);
+  for (const double value : {1.0, 2.0}) {
+    int rows = 0;
+    for (int j = 0; j < kSide; ++j) {
+      const double y = 1 - (j + 0.5) / kSide;
+      const double x = value - 2 * y;  // the exact line
+      if (x < 0.1 || x > 0.9) continue;
+      // The coverage-weighted centre of the line along the row, within 6 pixels of the exact one.
+      const double exactColumn = x * kSide - 0.5;
+      double sum = 0, weighted = 0;
+      for (int i = 0; i < kSide; ++i) {
+        if (std::abs(i - exactColumn) > 6) continue;
+        const double coverage = image.at(i, j).r;
+        sum += coverage;
+        weighted += coverage * i;
+      }
+      ASSERT_GT(sum, 0) << "row " << j;
+      EXPECT_NEAR(weighted / sum, exactColumn, 0.05) << "value " << value << " row " << j;
+      // A line 2 pixels wide across the field's gradient (1, 2) crosses a row over 2 sqrt(5) pixels.
+      EXPECT_NEAR(sum, 2 * std::sqrt(5.0), 0.05) << "value " << value << " row " << j;
+      ++rows;
+    }
+    EXPECT_GT(rows, 20);
+  }
+  // Nothing red away from the lines.
+  EXPECT_EQ(image.at(2, kSide - 3).r, 0.0f);  // x + 2 y = 0.08 there
+}
+
+TEST(Isolines, CountSpacesLinesEvenlyInsideTheRange) {
+  const SceneDescription description =
+      squareScene(R"(isolines = { field = "temperature", count = 3, color = [1, 0, 0], width = 1 })");
+  const Scene scene = buildScene(description);
+  ASSERT_TRUE(scene.isolines);
+  ASSERT_EQ(scene.isolines->styles.size(), 2u);
+  // The field x + 2 y runs over [0, 3] on the square: one line in the middle of each third.
+  EXPECT_EQ(scene.isolines->styles[1].values, (std::vector<float>{0.5f, 1.5f, 2.5f}));
+  EXPECT_EQ(evenIsoValues(0, 10, 5), (std::vector<double>{1, 3, 5, 7, 9}));
+}
+
+TEST(Bands, SplitTheSurfaceIntoTheAskedNumberOfColours) {
+  const SceneDescription description =
+      squareScene(R"(color_by = { field = "temperature", bands = 5, range = [0, 3] })");
+  const Image image = test::renderScene(description);
+  std::set<std::array<float, 3>> colours;
+  for (int j = 0; j < kSide; ++j)
+    for (int i = 0; i < kSide; ++i) colours.insert({image.at(i, j).r, image.at(i, j).g, image.at(i, j).b});
+  EXPECT_EQ(colours.size(), 5u);
+  // Each band shows the map at its middle: the pixel at (0.05, 0.05), where x + 2 y = 0.15, is in the
+  // first band of [0, 0.6).
+  const Vec3 first = colorMapLookup(ColorMapKind::Viridis, 0.1f);
+  EXPECT_LT(length(image.at(4, kSide - 5).rgb() - first), 1e-5f);
+}
+
+TEST(IsolinesBadInput, ElementDataSuggestsBands) {
+  const std::string text = R"(
+[[mesh]]
+file = "../fields/element_xy_v41_bin.msh"
+isolines = { field = "temperature", count = 5 }
+)";
+  const SceneDescription description = parseScene(text, test::dataFile("render/isolines.toml"));
+  const std::string message = test::messageOf([&] { buildScene(description); });
+  EXPECT_NE(message.find("isolines.toml:4:12: error: isolines field \"temperature\" is element data"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("color_by = { field = \"temperature\", bands = 8 }"), std::string::npos) << message;
+}
+
+TEST(IsolinesBadInput, UnknownFieldCountsAndKeys) {
+  const SceneDescription unknown = squareScene(R"(isolines = { field = "temprature" })");
+  const std::string message = test::messageOf([&] { buildScene(unknown); });
+  EXPECT_NE(message.find("isolines field \"temprature\" is not in"), std::string::npos) << message;
+  EXPECT_NE(message.find("did you mean 'temperature'?"), std::string::npos) << message;
+  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { field = \"T\", count = 0 }\n",
+                                 "scene.toml:3:");
+  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { field = \"T\", count = 0 }\n",
+                                 "mesh[0].isolines.count");
+  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { field = \"T\", count = 100000 }\n",
+                                 "mesh[0].isolines.count");
+  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { count = 3 }\n", "field");
+  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { field = \"T\", values = [] }\n",
+                                 "must be an array of 1 to 1000 numbers");
+  test::expectSceneErrorContains(
+      "[[mesh]]\nfile = \"a.msh\"\nisolines = { field = \"T\", values = [1, \"a\"] }\n",
+      "must hold finite numbers");
+  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { field = \"T\", width = 0 }\n",
+                                 "mesh[0].isolines.width");
+  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = 3\n", "must be a table");
+  test::expectSceneErrorContains(
+      "[[mesh]]\nfile = \"a.msh\"\ncolor_by = { field = \"T\", legend = \"left\" }\n", "scene.toml:3:");
+  test::expectSceneErrorContains(
+      "[[mesh]]\nfile = \"a.msh\"\ncolor_by = { field = \"T\", legend = \"left\" }\n", "right");
+  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\ncolor_by = { field = \"T\", bands = 0 }\n",
+                                 "mesh[0].color_by.bands");
+  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\ncolor_by = { field = \"T\", bands = 1000 }\n",
+                                 "mesh[0].color_by.bands");
+}
+
+}  // namespace
+}  // namespace lancer
