@@ -21,6 +21,7 @@
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/gmsh_view.hpp"
+#include "lancer/scene/looks.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/render_overrides.hpp"
@@ -116,6 +117,18 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
                   "The view set up in gmsh: its options file (File > Save Model Options; default: the mesh's "
                   "MESH.msh.opt)")
       ->expected(0, 1);
+  command
+      .add_option("--integrator", overrides.integrator,
+                  "How light is carried: whitted (the default, the brief's model), path (path tracing) or ao "
+                  "(ambient occlusion); see docs/lighting.md")
+      ->check(CLI::IsMember(choices(kIntegratorNames)));
+  command.add_option("--noise", overrides.noise,
+                     "path, ao: stop sampling a pixel once its relative error is below this (0 < noise < 1)");
+  command
+      .add_option("--look", overrides.look,
+                  "A lit scene in one option (path tracing, soft light, sky, a floor catching shadows): "
+                  "studio, sky or sun")
+      ->check(CLI::IsMember(choices(kLookNames)));
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
   command.add_flag("--timings", overrides.timings,
                    "Print where the time before the first ray went: read, orient (shells, orientation, "
@@ -164,7 +177,24 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
   if (!overrides.shading.empty())
     applied.shading = enumFromName<ShadingMode>(kShadingNames, overrides.shading);
   applied.edges = overrides.edges;
+  if (!overrides.integrator.empty())
+    applied.integrator = enumFromName<IntegratorKind>(kIntegratorNames, overrides.integrator);
+  if (overrides.noise) {
+    if (!(*overrides.noise > 0 && *overrides.noise < 1))
+      throw InputError(SourceLocation{"--noise"},
+                       fmt::format("--noise must be greater than 0 and less than 1 (a relative error, e.g. "
+                                   "0.01), found {}",
+                                   *overrides.noise));
+    applied.noise = static_cast<float>(*overrides.noise);
+  }
   applyRenderOverrides(description, applied, preloaded.empty() ? nullptr : &preloaded.front());
+  if (!overrides.look.empty()) {
+    applyLook(description, *enumFromName<Look>(kLookNames, overrides.look));
+    // What the command line asks for wins over the look's defaults.
+    if (overrides.samples) description.render.samples = *overrides.samples;
+    if (applied.noise) description.render.noise = *applied.noise;
+    if (applied.integrator) description.render.integrator = *applied.integrator;
+  }
   requireImageMemory(description.render, overrides.threads,
                      imageBuffer ? imageBuffer(description.render) : ImageBuffer::Whole, input);
   Scene scene = preloaded.empty() ? buildScene(description, overrides.threads, &stages)

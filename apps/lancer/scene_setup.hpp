@@ -29,7 +29,10 @@ struct SceneOverrides {
   // --gmsh-view [FILE]: the camera of a gmsh options file; "" for the mesh's own MESH.msh.opt.
   std::optional<std::string> gmshView;
   bool quiet = false;
-  bool timings = false;  // --timings: the preparation's stages on stderr
+  bool timings = false;         // --timings: the preparation's stages on stderr
+  std::string integrator;       // --integrator whitted|path|ao
+  std::optional<double> noise;  // --noise: adaptive stop, in (0, 1)
+  std::string look;             // --look studio|sky|sun
 };
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides);

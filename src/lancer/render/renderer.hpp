@@ -7,9 +7,12 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <variant>
 
 #include "lancer/image/image.hpp"
+#include "lancer/render/ao_integrator.hpp"
 #include "lancer/render/camera.hpp"
+#include "lancer/render/path_integrator.hpp"
 #include "lancer/render/tracer.hpp"
 
 namespace lancer {
@@ -58,8 +61,9 @@ struct BandRange {
 int bandCountOf(int height);
 
 // What a frame needs, held together: the scene and its accelerator, the camera, the settings, and
-// the tracer built from them once (as pbrt-v4's integrator holds its aggregate, lights and camera, so
-// that rendering takes only where the pixels go). The scene, accelerator and camera must outlive it.
+// the integrator of the settings (integrator.hpp) built from them once (as pbrt-v4's integrator holds its
+// aggregate, lights and camera, so that rendering takes only where the pixels go). The scene, accelerator and
+// camera must outlive it.
 class Renderer {
  public:
   Renderer(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
@@ -79,7 +83,9 @@ class Renderer {
  private:
   const Camera& camera_;
   RenderSettings settings_;
-  Tracer tracer_;
+  // The Whitted tracer keeps its own samplers (grid, adaptive) and packets; the others sample each
+  // pixel with their sample streams (sample_sequence.hpp), `samples` each, or fewer with `noise`.
+  std::variant<Tracer, PathIntegrator, AoIntegrator> integrator_;
 };
 
 // The camera of a frame: `camera`'s view of the scene, for an image of the settings' size.

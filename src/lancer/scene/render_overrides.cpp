@@ -22,7 +22,10 @@ void applyRenderOverrides(SceneDescription& description, const RenderOverrides& 
   if (quickLookMesh && (overrides.width || overrides.height))
     placeQuickLookLights(description, *quickLookMesh);
   const int root = static_cast<int>(std::lround(std::sqrt(settings.samples)));
-  if (settings.sampler != SamplerKind::Adaptive && root * root != settings.samples)
+  if (overrides.integrator) settings.integrator = *overrides.integrator;
+  if (overrides.noise) settings.noise = *overrides.noise;
+  if (settings.integrator == IntegratorKind::Whitted && settings.sampler != SamplerKind::Adaptive &&
+      root * root != settings.samples)
     throw InputError(
         SourceLocation{overrides.samplesName},
         fmt::format("{} samples cannot form an n x n grid: use a perfect square (1, 4, 9, 16, ...)",

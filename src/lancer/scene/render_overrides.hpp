@@ -16,6 +16,8 @@ struct RenderOverrides {
   std::optional<int> width, height, samples, maxDepth;
   std::optional<ShadingMode> shading;  // for every mesh (their own shading keys are dropped)
   std::optional<SamplerKind> sampler;
+  std::optional<IntegratorKind> integrator;
+  std::optional<float> noise;  // checked by the caller: in (0, 1)
   std::optional<bool> srgb;
   std::optional<bool> transparentBackground;
   bool edges = false;  // draw element edges on every mesh that does not set its own
