@@ -187,14 +187,8 @@ PreparedScene prepareScene(const std::string& input, const SceneOverrides& overr
                                    *overrides.noise));
     applied.noise = static_cast<float>(*overrides.noise);
   }
+  if (!overrides.look.empty()) applied.look = enumFromName<Look>(kLookNames, overrides.look);
   applyRenderOverrides(description, applied, preloaded.empty() ? nullptr : &preloaded.front());
-  if (!overrides.look.empty()) {
-    applyLook(description, *enumFromName<Look>(kLookNames, overrides.look));
-    // What the command line asks for wins over the look's defaults.
-    if (overrides.samples) description.render.samples = *overrides.samples;
-    if (applied.noise) description.render.noise = *applied.noise;
-    if (applied.integrator) description.render.integrator = *applied.integrator;
-  }
   requireImageMemory(description.render, overrides.threads,
                      imageBuffer ? imageBuffer(description.render) : ImageBuffer::Whole, input);
   Scene scene = preloaded.empty() ? buildScene(description, overrides.threads, &stages)

@@ -19,7 +19,7 @@ Camera.from_gmsh = staticmethod(camera_from_gmsh)
 
 
 def _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads, progress,
-               sampler, max_depth):
+               sampler, max_depth, integrator=None, noise=None, look=None):
     arguments = _lancer._RenderArguments()
     arguments.width = width
     arguments.height = height
@@ -32,13 +32,20 @@ def _arguments(width, height, samples, shading, srgb, transparent_background, ed
     arguments.progress = progress
     arguments.sampler = sampler
     arguments.max_depth = max_depth
+    arguments.integrator = integrator
+    arguments.noise = noise
+    arguments.look = look
     return arguments
 
 
 def render(scene, width=None, height=None, samples=None, shading=None, srgb=None,
            transparent_background=None, edges=None, threads=0, progress=False, dtype="uint8",
-           sampler=None, max_depth=None):
+           sampler=None, max_depth=None, integrator=None, noise=None, look=None):
     """Renders a lancer.Scene, or the quick look of a lancer.Mesh (as `lancer render part.msh`).
+
+    integrator: "whitted" (the default), "path" (path tracing) or "ao" (ambient occlusion); noise:
+    stop a pixel's sampling once its relative error is below this; look: "studio", "sky" or "sun"
+    (docs/lighting.md).
 
     None keeps the scene file's own value (for a mesh, the quick look's), as the CLI's options do.
     Returns a lancer.Image: (H, W, 3) uint8, (H, W, 4) with transparent_background; with
@@ -48,17 +55,18 @@ def render(scene, width=None, height=None, samples=None, shading=None, srgb=None
     if dtype not in ("uint8", "float32"):
         raise ValueError(f"dtype={dtype!r}: use 'uint8' (encoded, as the image files) or 'float32' (linear)")
     arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
-                           progress, sampler, max_depth)
+                           progress, sampler, max_depth, integrator, noise, look)
     array, info = _lancer._render(scene, arguments, dtype == "float32")
     return Image._wrap(array, srgb=info["srgb"], stats=info)
 
 
 def animate(scene, output, frames=None, fps=None, orbit=None, width=None, height=None, samples=None,
             shading=None, srgb=None, transparent_background=None, edges=None, threads=0, progress=False,
-            loop=None, dither=None, palette=None, sampler=None, max_depth=None):
+            loop=None, dither=None, palette=None, sampler=None, max_depth=None, integrator=None, noise=None,
+            look=None):
     """Writes an orbit of the camera (orbit="camera") or of light K (orbit="light:K") as `lancer
     animate` does: an animated .gif, an animated .png, or numbered frames ("frame_%04d.png").
     None keeps the scene's value (its [animation] table, else 36 frames at 12 fps, the camera)."""
     arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
-                           progress, sampler, max_depth)
+                           progress, sampler, max_depth, integrator, noise, look)
     _lancer._animate(scene, str(output), arguments, frames, fps, orbit, loop, dither, palette)

@@ -19,7 +19,8 @@ namespace lancer::python {
 // The keyword arguments of render and animate that override the scene's settings (None: the scene's).
 struct RenderArguments {
   std::optional<int> width, height, samples, maxDepth;
-  std::optional<std::string> shading, sampler;
+  std::optional<std::string> shading, sampler, integrator, look;
+  std::optional<double> noise;
   std::optional<bool> srgb, transparentBackground, edges;
   int threads = 0;
   bool progress = false;

@@ -77,7 +77,7 @@ TEST(PathIntegrator, ConstantHdrMapEqualsTheUniformEnvironment) {
   const double radiance = (191 + 0.5) / 256;
   double sum = 0;
   const int count = forSpherePixels(renderSphere(d), 2.4, [&](const Rgba& pixel, double, double) {
-    EXPECT_NEAR(pixel.g, 0.6 * radiance, 0.05);
+    EXPECT_NEAR(pixel.g, 0.6 * radiance, 0.1);  // one pixel: 16 samples of light and material sampling
     sum += pixel.g;
   });
   EXPECT_NEAR(sum / count, 0.6 * radiance, 0.005);
@@ -191,14 +191,17 @@ TEST(PathIntegrator, SameBytesForAnyThreadCountAndBandSplit) {
   const Scene scene = test::sceneFromMeshes(d, {readMsh(LANCER_TEST_DATA_DIR "/render/sphere_fine.msh")});
   const Image one = test::renderScene(d, scene, AccelKind::KdTreeSah, 1);
   const Image three = test::renderScene(d, scene, AccelKind::KdTreeSah, 3);
-  const Accelerator accelerator = Accelerator::build(scene.geometry.positions, scene.geometry.faces);
+  const Accelerator accelerator =
+      Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah);
   const Camera camera = makeCamera(d.camera, scene, d.render);
   const Image rows =
       Renderer(scene, accelerator, camera, d.render).renderRows(BandRange{1, 1}, RenderOptions{});
   for (int y = 0; y < d.render.height; ++y)
     for (int x = 0; x < d.render.width; ++x) {
       ASSERT_EQ(one.at(x, y), three.at(x, y)) << x << "," << y;
-      if (y >= 32 && y < 64) ASSERT_EQ(one.at(x, y), rows.at(x, y - 32)) << x << "," << y;
+      if (y >= 32 && y < 64) {
+        ASSERT_EQ(one.at(x, y), rows.at(x, y - 32)) << x << "," << y;
+      }
     }
 }
 

@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cmath>
 
 #include "lancer/mesh/msh_reader.hpp"
@@ -14,11 +13,9 @@
 namespace lancer {
 namespace {
 
-constexpr std::array<std::string_view, 2> kKeys = {"file", "color_by"};
-
 std::optional<ColorBy> parse(const std::string& text) {
   const toml::table root = toml::parse(std::string_view(text), std::string_view("scene.toml"));
-  const TomlTableReader reader(root, "mesh[0]", "scene.toml", kKeys);
+  const TomlTableReader reader(root, "mesh[0]", "scene.toml", SceneTable::Mesh);
   return readColorBy("scene.toml", reader);
 }
 

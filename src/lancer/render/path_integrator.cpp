@@ -211,12 +211,16 @@ TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, Trac
     lobe *= chances;
     if (lobe < chanceLocal) {
       const float choose = lobe / chanceLocal;
-      const Vec3 wi = bsdf.sample(choose, u, v);
-      if (dot(wi, surface.geometricNormal) <= 0.0f) break;
+      Vec3 wi = bsdf.sample(choose, u, v);
       const float pdf = bsdf.pdf(wi) * (chanceLocal / chances);
       if (!(pdf > 0.0f)) break;
       throughput *= localWeight * bsdf.eval(wi) * (dot(wi, surface.shadingNormal) / pdf);
       previousPdf = pdf;
+      // A direction about the interpolated normal may point under the flat face: mirrored back out
+      // through the face's plane, with its weight, rather than lost (a tessellated sphere in the white
+      // furnace would otherwise come out darker at every sample that does).
+      const float below = dot(wi, surface.geometricNormal);
+      if (below <= 0.0f) wi = normalize(wi - surface.geometricNormal * (2.0f * below));
       ray = Ray(shadowOrigin, wi);
     } else if (lobe < chanceLocal + chanceReflect) {
       Vec3 reflected = reflect(direction, surface.shadingNormal);

@@ -12,8 +12,6 @@
 namespace lancer {
 namespace {
 
-constexpr std::array<std::string_view, 4> kColorByKeys = {"field", "step", "map", "range"};
-
 // "\"temperature\" (steps 0, 1), \"velocity\" (step 0)": what a file offers, for messages.
 std::string describeFields(const Mesh& mesh) {
   std::string text;
@@ -40,7 +38,7 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
     mesh.fail(*node, fmt::format(
                          "{} must be a table like {{ field = \"temperature\", map = \"viridis\" }}, found {}",
                          mesh.qualified("color_by"), describeValue(*node)));
-  const TomlTableReader reader(*table, mesh.qualified("color_by"), file, kColorByKeys);
+  const TomlTableReader reader(*table, mesh.qualified("color_by"), file, SceneTable::MeshColorBy);
   ColorBy spec;
   spec.where = reader.location(*node);
   const std::optional<std::string> field = reader.nonEmptyString("field");

@@ -5,15 +5,11 @@
 #include <fmt/format.h>
 
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/scene_keys.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
 
 namespace lancer {
 namespace {
-
-constexpr std::array<std::string_view, 9> kLightKeys = {
-    "type", "position", "intensity", "attenuation", "direction", "angle", "radius", "width", "height"};
-constexpr std::array<std::string_view, 10> kEnvironmentKeys = {
-    "color", "zenith", "horizon", "ground", "map", "rotation", "strength", "visible", "intensity", "type"};
 
 // A direction that must not be zero, normalised.
 std::optional<Vec3d> readDirection(const TomlTableReader& reader, std::string_view key) {
@@ -27,7 +23,7 @@ std::optional<Vec3d> readDirection(const TomlTableReader& reader, std::string_vi
 }  // namespace
 
 PointLight readLight(const std::string& path, const toml::table& table, std::size_t index) {
-  const TomlTableReader reader(table, fmt::format("light[{}]", index), path, kLightKeys);
+  const TomlTableReader reader(table, fmt::format("light[{}]", index), path, SceneTable::Light);
   PointLight light;
   light.where = reader.location(table);
   if (auto type = reader.choice("type", kLightTypeNames)) light.type = static_cast<LightType>(*type);
@@ -89,13 +85,8 @@ PointLight readLight(const std::string& path, const toml::table& table, std::siz
 
 EnvironmentSettings readEnvironment(const std::string& path, const std::filesystem::path& folder,
                                     const toml::table& table) {
-  const TomlTableReader reader(table, "environment", path, kEnvironmentKeys);
+  const TomlTableReader reader(table, "environment", path, SceneTable::Environment);
   EnvironmentSettings environment;
-  for (std::string_view key : {"intensity", "type"})
-    if (const toml::node* node = reader.find(key))
-      reader.fail(*node, fmt::format("environment.{} is not a key: give color = [r, g, b] (uniform), zenith, "
-                                     "horizon and ground (a sky), or map = \"sky.hdr\"",
-                                     key));
   const NumberRange radiance = NumberRange::atLeast(0);
   const bool gradient = reader.find("zenith") || reader.find("horizon") || reader.find("ground");
   const toml::node* map = reader.find("map");

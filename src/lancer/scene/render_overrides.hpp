@@ -6,6 +6,7 @@
 #include <string>
 
 #include "lancer/mesh/mesh.hpp"
+#include "lancer/scene/looks.hpp"
 #include "lancer/scene/scene_description.hpp"
 #include "lancer/scene/up_axis.hpp"
 
@@ -18,6 +19,7 @@ struct RenderOverrides {
   std::optional<SamplerKind> sampler;
   std::optional<IntegratorKind> integrator;
   std::optional<float> noise;  // checked by the caller: in (0, 1)
+  std::optional<Look> look;    // applied last (applyLook); the overrides above win over its defaults
   std::optional<bool> srgb;
   std::optional<bool> transparentBackground;
   bool edges = false;  // draw element edges on every mesh that does not set its own

@@ -22,26 +22,7 @@
 namespace lancer {
 namespace {
 
-constexpr std::array<std::string_view, 10> kSceneTables = {
-    "render", "camera", "ambient", "light", "material", "mesh", "animation", "clip", "floor", "environment"};
-constexpr std::array<std::string_view, 14> kRenderKeys = {
-    "width",      "height",      "samples", "max_depth",  "sampler",
-    "shading",    "background",  "output",  "srgb",       "adaptive_threshold",
-    "integrator", "max_bounces", "noise",   "ao_distance"};
-constexpr std::array<std::string_view, 8> kCameraKeys = {
-    "projection", "position", "look_at", "up", "up_axis", "fov", "view_height", "gmsh_view"};
-constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
-constexpr std::array<std::string_view, 10> kMaterialKeys = {
-    "ka",           "kd",  "ks",      "shininess",  "reflectivity",
-    "transparency", "ior", "fresnel", "absorption", "emission"};
-constexpr std::array<std::string_view, 11> kMeshKeys = {"file",      "material", "shading", "smooth_angle",
-                                                        "translate", "rotate",   "scale",   "groups",
-                                                        "edges",     "color_by", "clip"};
-constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only", "feature_angle"};
 constexpr std::array<std::string_view, 2> kEdgeSelections = {"elements", "features"};
-constexpr std::array<std::string_view, 6> kAnimationKeys = {"frames", "fps",    "orbit",
-                                                            "axis",   "center", "degrees"};
-
 // State shared by the section readers: the file for messages and the folder paths are relative to.
 struct SceneFile {
   std::string path;
@@ -120,7 +101,7 @@ void readBackground(const TomlTableReader& reader, RenderSettings& render) {
 }
 
 RenderSettings readRender(const SceneFile& file, const toml::table& table) {
-  const TomlTableReader reader(table, "render", file.path, kRenderKeys);
+  const TomlTableReader reader(table, "render", file.path, SceneTable::Render);
   RenderSettings render;
   if (auto width = reader.integer("width", 1, kMaxRenderSide)) render.width = static_cast<int>(*width);
   if (auto height = reader.integer("height", 1, kMaxRenderSide)) render.height = static_cast<int>(*height);
@@ -186,7 +167,7 @@ void checkCameraFrame(const TomlTableReader& reader, const CameraSettings& camer
 }
 
 CameraSettings readCamera(const SceneFile& file, const toml::table& table) {
-  const TomlTableReader reader(table, "camera", file.path, kCameraKeys);
+  const TomlTableReader reader(table, "camera", file.path, SceneTable::Camera);
   CameraSettings camera;
   if (auto projection = reader.choice("projection", kProjectionNames))
     camera.projection = static_cast<Projection>(*projection);
@@ -227,9 +208,6 @@ CameraSettings readCamera(const SceneFile& file, const toml::table& table) {
   return camera;
 }
 
-constexpr std::array<std::string_view, 3> kClipKeys = {"point", "normal", "cap"};
-constexpr std::array<std::string_view, 3> kFloorKeys = {"shadow_catcher", "height", "normal"};
-
 // An optional [x, y, z] that must not be zero, returned normalised (plane normals).
 std::optional<Vec3d> readDirection(const TomlTableReader& reader, std::string_view key) {
   const std::optional<Vec3d> direction = reader.vector(key, Triple::Xyz);
@@ -240,7 +218,7 @@ std::optional<Vec3d> readDirection(const TomlTableReader& reader, std::string_vi
 }
 
 FloorSettings readFloor(const SceneFile& file, const toml::table& table) {
-  const TomlTableReader reader(table, "floor", file.path, kFloorKeys);
+  const TomlTableReader reader(table, "floor", file.path, SceneTable::Floor);
   const std::optional<bool> catcher = reader.boolean("shadow_catcher");
   if (!catcher || !*catcher) {
     if (const toml::node* node = reader.find("shadow_catcher"))
@@ -255,9 +233,10 @@ FloorSettings readFloor(const SceneFile& file, const toml::table& table) {
   return floor;
 }
 
-// `[[clip]]` and `[[mesh.clip]]` alike; `name` is "clip[1]" or "mesh[0].clip[1]", for messages.
-ClipSettings readClip(const SceneFile& file, const toml::table& table, const std::string& name) {
-  const TomlTableReader reader(table, name, file.path, kClipKeys);
+// `[[clip]]` and `[[mesh.clip]]` alike (`kind`); `name` is "clip[1]" or "mesh[0].clip[1]", for messages.
+ClipSettings readClip(const SceneFile& file, const toml::table& table, const std::string& name,
+                      SceneTable kind) {
+  const TomlTableReader reader(table, name, file.path, kind);
   ClipSettings clip;
   const std::optional<Vec3d> point = reader.vector("point", Triple::Xyz);
   if (!point) reader.failMissing("point", "point = [x, y, z] (a point on the cutting plane)");
@@ -270,7 +249,7 @@ ClipSettings readClip(const SceneFile& file, const toml::table& table, const std
 }
 
 Material readMaterial(const SceneFile& file, const toml::table& table, const std::string& name) {
-  const TomlTableReader reader(table, fmt::format("material.{}", name), file.path, kMaterialKeys);
+  const TomlTableReader reader(table, fmt::format("material.{}", name), file.path, SceneTable::Material);
   const NumberRange unit = NumberRange::between(0, 1);
   Material material = defaultMaterial();
   material.name = name;
@@ -385,7 +364,7 @@ std::optional<EdgeSettings> readEdges(const SceneFile& file, const TomlTableRead
               fmt::format("{} must be true, false or a table like {{ width = 1.0, color = [0, 0, 0] }}, "
                           "found {}",
                           mesh.qualified("edges"), describeValue(*node)));
-  const TomlTableReader reader(*table, mesh.qualified("edges"), file.path, kEdgeKeys);
+  const TomlTableReader reader(*table, mesh.qualified("edges"), file.path, SceneTable::MeshEdges);
   EdgeSettings edges;
   if (auto width = reader.number("width", NumberRange::between(0.1, 100))) edges.widthPixels = float(*width);
   if (auto color = reader.vector("color", Triple::Rgb, NumberRange::between(0, 1)))
@@ -398,7 +377,7 @@ std::optional<EdgeSettings> readEdges(const SceneFile& file, const TomlTableRead
 
 MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size_t index,
                       const std::vector<Material>& materials) {
-  const TomlTableReader reader(table, fmt::format("mesh[{}]", index), file.path, kMeshKeys);
+  const TomlTableReader reader(table, fmt::format("mesh[{}]", index), file.path, SceneTable::Mesh);
   MeshInstance mesh;
   mesh.where = reader.location(table);
   const std::optional<std::string> path = reader.nonEmptyString("file");
@@ -420,7 +399,7 @@ MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size
   const std::string clipName = reader.qualified("clip");
   const std::vector<const toml::table*> clips = tableArray(file, table, "clip", clipName, "mesh.clip");
   for (std::size_t i = 0; i < clips.size(); ++i)
-    mesh.clips.push_back(readClip(file, *clips[i], fmt::format("{}[{}]", clipName, i)));
+    mesh.clips.push_back(readClip(file, *clips[i], fmt::format("{}[{}]", clipName, i), SceneTable::MeshClip));
   return mesh;
 }
 
@@ -457,7 +436,7 @@ int readOrbit(const TomlTableReader& reader, std::size_t lightCount) {
 }
 
 AnimationSettings readAnimation(const SceneFile& file, const toml::table& table, std::size_t lightCount) {
-  const TomlTableReader reader(table, "animation", file.path, kAnimationKeys);
+  const TomlTableReader reader(table, "animation", file.path, SceneTable::Animation);
   AnimationSettings animation;
   if (auto frames = reader.integer("frames", 1, kMaxFrames)) animation.frames = static_cast<int>(*frames);
   if (auto fps = reader.number("fps", NumberRange::above(0))) animation.fps = *fps;
@@ -497,7 +476,7 @@ Material defaultMaterial() {
 SceneDescription parseScene(std::string_view text, const std::string& path) {
   const toml::table root = parseToml(text, path);
   const SceneFile file{path, std::filesystem::path(path).parent_path()};
-  const TomlTableReader document(root, "", path, kSceneTables);
+  const TomlTableReader document(root, "", path, SceneTable::Document);
 
   SceneDescription scene;
   scene.path = path;
@@ -506,7 +485,7 @@ SceneDescription parseScene(std::string_view text, const std::string& path) {
   if (const toml::table* camera = sectionTable(file, root, "camera"))
     scene.camera = readCamera(file, *camera);
   if (const toml::table* ambient = sectionTable(file, root, "ambient")) {
-    const TomlTableReader reader(*ambient, "ambient", path, kAmbientKeys);
+    const TomlTableReader reader(*ambient, "ambient", path, SceneTable::Ambient);
     if (auto intensity = reader.vector("intensity", Triple::Rgb, NumberRange::atLeast(0)))
       scene.ambient = toFloat(*intensity);
     scene.ambientSet = true;
@@ -517,7 +496,7 @@ SceneDescription parseScene(std::string_view text, const std::string& path) {
   for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(readLight(path, *lights[i], i));
   const std::vector<const toml::table*> clips = tableArray(file, root, "clip");
   for (std::size_t i = 0; i < clips.size(); ++i)
-    scene.clips.push_back(readClip(file, *clips[i], fmt::format("clip[{}]", i)));
+    scene.clips.push_back(readClip(file, *clips[i], fmt::format("clip[{}]", i), SceneTable::Clip));
   if (const toml::table* floor = sectionTable(file, root, "floor")) scene.floor = readFloor(file, *floor);
   scene.materials = readMaterials(file, root);
   if (const toml::table* materials = sectionTable(file, root, "material"))

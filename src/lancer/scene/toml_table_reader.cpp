@@ -112,8 +112,9 @@ std::string describeValue(const toml::node& node) {
 }
 
 TomlTableReader::TomlTableReader(const toml::table& table, std::string name, const std::string& file,
-                                 std::span<const std::string_view> knownKeys)
+                                 SceneTable kind)
     : table_(table), name_(std::move(name)), file_(file) {
+  const std::span<const std::string_view> knownKeys = sceneKeys(kind);
   const toml::key* firstUnknown = nullptr;
   for (const auto& [key, value] : table_) {
     bool known = false;

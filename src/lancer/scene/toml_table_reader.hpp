@@ -12,6 +12,7 @@
 #include <toml++/toml.h>
 
 #include "lancer/math/vec3.hpp"
+#include "lancer/scene/scene_keys.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
@@ -47,9 +48,9 @@ std::string_view typeName(const toml::node& node);
 class TomlTableReader {
  public:
   // `name` prefixes keys in messages ("render" -> "render.width"; "" for the document itself).
-  // Throws InputError at the first key (in file order) that is not one of `knownKeys`.
-  TomlTableReader(const toml::table& table, std::string name, const std::string& file,
-                  std::span<const std::string_view> knownKeys);
+  // Throws InputError at the first key (in file order) that is not one of `kind`'s keys
+  // (scene_keys.hpp).
+  TomlTableReader(const toml::table& table, std::string name, const std::string& file, SceneTable kind);
 
   const toml::table& table() const { return table_; }
   const std::string& file() const { return file_; }

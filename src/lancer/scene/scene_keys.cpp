@@ -1,0 +1,66 @@
+#include "lancer/scene/scene_keys.hpp"
+
+#include <array>
+
+namespace lancer {
+namespace {
+
+constexpr std::array<std::string_view, 10> kDocumentKeys = {
+    "render", "camera", "ambient", "light", "material", "mesh", "animation", "clip", "floor", "environment"};
+constexpr std::array<std::string_view, 14> kRenderKeys = {
+    "width",      "height",      "samples", "max_depth",  "sampler",
+    "shading",    "background",  "output",  "srgb",       "adaptive_threshold",
+    "integrator", "max_bounces", "noise",   "ao_distance"};
+constexpr std::array<std::string_view, 8> kCameraKeys = {
+    "projection", "position", "look_at", "up", "up_axis", "fov", "view_height", "gmsh_view"};
+constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
+constexpr std::array<std::string_view, 9> kLightKeys = {
+    "type", "position", "intensity", "attenuation", "direction", "angle", "radius", "width", "height"};
+constexpr std::array<std::string_view, 10> kMaterialKeys = {
+    "ka",           "kd",  "ks",      "shininess",  "reflectivity",
+    "transparency", "ior", "fresnel", "absorption", "emission"};
+constexpr std::array<std::string_view, 11> kMeshKeys = {"file",      "material", "shading", "smooth_angle",
+                                                        "translate", "rotate",   "scale",   "groups",
+                                                        "edges",     "color_by", "clip"};
+constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only", "feature_angle"};
+constexpr std::array<std::string_view, 4> kColorByKeys = {"field", "step", "map", "range"};
+constexpr std::array<std::string_view, 3> kClipKeys = {"point", "normal", "cap"};
+constexpr std::array<std::string_view, 3> kFloorKeys = {"shadow_catcher", "height", "normal"};
+constexpr std::array<std::string_view, 6> kAnimationKeys = {"frames", "fps",    "orbit",
+                                                            "axis",   "center", "degrees"};
+constexpr std::array<std::string_view, 8> kEnvironmentKeys = {"color", "zenith",   "horizon",  "ground",
+                                                              "map",   "rotation", "strength", "visible"};
+
+constexpr std::array<SceneTableKeys, 14> kSceneTables = {{
+    {SceneTable::Document, "", kDocumentKeys},
+    {SceneTable::Render, "render", kRenderKeys},
+    {SceneTable::Camera, "camera", kCameraKeys},
+    {SceneTable::Ambient, "ambient", kAmbientKeys},
+    {SceneTable::Light, "light", kLightKeys},
+    {SceneTable::Material, "material.NAME", kMaterialKeys},
+    {SceneTable::Mesh, "mesh", kMeshKeys},
+    {SceneTable::MeshEdges, "mesh.edges", kEdgeKeys},
+    {SceneTable::MeshColorBy, "mesh.color_by", kColorByKeys},
+    {SceneTable::MeshClip, "mesh.clip", kClipKeys},
+    {SceneTable::Clip, "clip", kClipKeys},
+    {SceneTable::Floor, "floor", kFloorKeys},
+    {SceneTable::Animation, "animation", kAnimationKeys},
+    {SceneTable::Environment, "environment", kEnvironmentKeys},
+}};
+
+constexpr bool inEnumOrder() {
+  for (std::size_t i = 0; i < kSceneTables.size(); ++i)
+    if (static_cast<std::size_t>(kSceneTables[i].table) != i) return false;
+  return true;
+}
+static_assert(inEnumOrder(), "kSceneTables lists the tables in the order of SceneTable");
+
+}  // namespace
+
+std::span<const std::string_view> sceneKeys(SceneTable table) {
+  return kSceneTables[static_cast<std::size_t>(table)].keys;
+}
+
+std::span<const SceneTableKeys> sceneFileKeys() { return kSceneTables; }
+
+}  // namespace lancer
