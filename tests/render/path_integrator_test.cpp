@@ -167,7 +167,30 @@ TEST(PathIntegrator, SmallSphereLightIsThePointLightItApproaches) {
     }
 }
 
-TEST(AoIntegrator, OpenPlaneShowsItsAlbedoAndARoofHidesIt) {
+TEST(PathIntegrator, DiskLightGivesTheClosedFormIrradianceOnItsAxis) {
+  // A disk of radius r at height h facing down: radiance L = pi I / (pi r^2) = I / r^2, and on its
+  // axis E = pi L r^2 / (r^2 + h^2), so a Lambertian face shows kd I / (r^2 + h^2) (not the far-field
+  // kd I / h^2 of the point it approaches). The pixels are within 0.02 of the axis.
+  SceneDescription d = test::topDownView(4, 4, 0.02);
+  d.render.integrator = IntegratorKind::Path;
+  d.render.samples = 256;
+  d.render.maxBounces = 1;
+  d.materials = {test::matteMaterial("matte", {0, 0, 0}, {0.5f, 0.5f, 0.5f})};
+  d.materials[0].ks = {0, 0, 0};
+  PointLight disk;
+  disk.type = LightType::Disk;
+  disk.position = {0, 0, 1};
+  disk.direction = {0, 0, -1};
+  disk.radius = 0.5;
+  disk.intensity = {1, 1, 1};
+  d.lights = {disk};
+  d.meshes.resize(1);
+  const Image image = test::renderMeshes(d, {test::squareMesh(-1, -1, 1, 1, 0)});
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) EXPECT_NEAR(image.at(x, y).r, 0.5 / (0.25 + 1.0), 0.004) << x << "," << y;
+}
+
+TEST(AoIntegrator, OpenPlaneShowsItsAlbedo) {
   SceneDescription d = test::topDownView(8, 8, 1.0);
   d.render.integrator = IntegratorKind::AmbientOcclusion;
   d.render.samples = 4;

@@ -1,6 +1,7 @@
 #include "lancer/image/hdr_reader.hpp"
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -59,9 +60,16 @@ HdrImage decodeRadianceHdr(const std::string& bytes, const std::string& path) {
   }
   if (!line(text)) return fail("no size line after the header");
   HdrImage image;
-  char ySign = 0, xSign = 0;
-  if (std::sscanf(text.c_str(), "%cY %d %cX %d", &ySign, &image.height, &xSign, &image.width) != 4 ||
-      ySign != '-' || xSign != '+')
+  // "-Y height +X width": rows top to bottom, columns left to right (the only orientation read).
+  auto number = [&](std::string_view field, int& value) {
+    const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
+    return error == std::errc() && end == field.data() + field.size();
+  };
+  std::istringstream fields(text);
+  std::string yAxis, height, xAxis, width, extra;
+  fields >> yAxis >> height >> xAxis >> width;
+  if (yAxis != "-Y" || xAxis != "+X" || !number(height, image.height) || !number(width, image.width) ||
+      (fields >> extra))
     return fail(fmt::format("the size line is \"{}\", expected \"-Y height +X width\"", text));
   if (image.width <= 0 || image.height <= 0 ||
       static_cast<long long>(image.width) * image.height > kMaxPixels)

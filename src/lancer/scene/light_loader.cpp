@@ -105,7 +105,7 @@ EnvironmentSettings readEnvironment(const std::string& path, const std::filesyst
     environment.kind = EnvironmentSettings::Kind::Map;
     const std::filesystem::path value(*file);
     environment.map = value.is_absolute() ? *file : (folder / value).lexically_normal().string();
-    environment.where = reader.location(*map);
+    if (map != nullptr) environment.where = reader.location(*map);
   }
   if (auto rotation = reader.number("rotation")) environment.rotationDegrees = *rotation;
   if (auto strength = reader.number("strength", radiance))
