@@ -1,6 +1,7 @@
 // `lancer render SCENE.toml | MESH.msh`: load, build the accelerator, trace, write the image.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 
@@ -33,9 +34,10 @@ struct RenderCommandOptions {
   std::string input;
   std::string output;
   std::string pixel;
-  std::string legend;  // --legend: the legends of the field-coloured meshes
-  std::string shard;   // --shard I/N or auto: a job-array task's part of the image
-  std::string aovs;    // --aovs albedo,normal,depth: layers of an EXR output
+  std::string legend;      // --legend: the legends of the field-coloured meshes
+  std::string shard;       // --shard I/N or auto: a job-array task's part of the image
+  std::string aovs;        // --aovs albedo,normal,depth: layers of an EXR output
+  double progressive = 0;  // --progressive SECONDS: rewrite the image at least this often as it converges
   SceneOverrides overrides;
 };
 
@@ -140,6 +142,34 @@ bool renderToFile(const PreparedRender& prepared, const Renderer& renderer, cons
   if (stats.cancelled || (cancellable && renderOptions.cancel->load())) return false;  // ~writer discards
   writer.commit();
   return true;
+}
+
+// --progressive: passes of 1, 2, 4, ... samples per pixel up to the scene's, each a whole image of
+// its own (per-pixel sample streams: the last pass is the image a plain render gives), written
+// (atomically) whenever `seconds` have passed since the last write, and at the end. False when
+// interrupted; the file then holds the last pass written.
+bool renderProgressive(const PreparedRender& prepared, const std::string& output, double seconds,
+                       const RenderOptions& renderOptions, RenderStats& stats) {
+  const RenderSettings& settings = prepared.description.render;
+  const ImageWriteOptions writeOptions = imageWriteOptions(settings);
+  RenderSettings pass = settings;
+  Stopwatch sinceWrite;
+  for (int samples = 1;; samples = std::min(2 * samples, settings.samples)) {
+    pass.samples = samples;
+    const Renderer renderer(prepared.scene, prepared.accelerator, prepared.camera, pass);
+    RenderStats passStats;
+    const Image image = renderer.renderImage(renderOptions, &passStats);
+    stats.rays += passStats.rays;
+    stats.seconds += passStats.seconds;
+    stats.samplesPerPixel = passStats.samplesPerPixel;
+    if (passStats.cancelled) return false;
+    const bool last = samples >= settings.samples;
+    if (last || sinceWrite.seconds() >= seconds) {
+      writeImage(output, image, writeOptions);
+      sinceWrite = Stopwatch();
+    }
+    if (last) return true;
+  }
 }
 
 // Renders the band items of a job-array task into its part file (atomically); false when interrupted.
@@ -252,6 +282,14 @@ int runRender(const RenderCommandOptions& options) {
   if (distribution->ranks() > 1 && (settings.denoise || !options.aovs.empty()))
     throw InputError(SourceLocation{options.input},
                      "--denoise and --aovs need the whole image in one process: run without mpirun");
+  if (options.progressive > 0 && settings.integrator == IntegratorKind::Whitted)
+    throw InputError(SourceLocation{"--progressive"},
+                     "--progressive refines the samples of integrator = \"path\" or \"ao\"; this render uses "
+                     "the Whitted model (add --integrator path)");
+  if (options.progressive > 0 && (shard || distribution->ranks() > 1))
+    throw InputError(SourceLocation{"--progressive"},
+                     "--progressive writes one image from one process; "
+                     "leave it out of --shard and MPI runs");
   if (shard && !options.legend.empty())
     throw InputError(SourceLocation{"--legend"}, "--legend is written by a render without --shard");
   if (!options.legend.empty()) {
@@ -277,6 +315,8 @@ int runRender(const RenderCommandOptions& options) {
       written = renderPart(prepared, renderer, output, *shard, renderOptions, options.overrides.quiet, stats);
     else if (distribution->ranks() > 1)
       written = renderDistributed(prepared, renderer, output, *distribution, renderOptions, stats);
+    else if (options.progressive > 0)
+      written = renderProgressive(prepared, output, options.progressive, renderOptions, stats);
     else
       written = renderToFile(prepared, renderer, output, aovs, renderOptions, stats);
   } catch (const NonFiniteRenderError& e) {
@@ -327,6 +367,12 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
       "--aovs", options->aovs,
       "Layers of an .exr output beside the radiance: albedo, normal, depth (comma-separated)");
   command->add_option("--pixel", options->pixel, "Trace only pixel x,y and print its value (debugging)");
+  command
+      ->add_option(
+          "--progressive", options->progressive,
+          "path, ao: render 1, 2, 4, ... samples per pixel up to the scene's, rewriting the image at "
+          "least every SECONDS as it converges")
+      ->check(CLI::PositiveNumber);
   command->callback([options, &runner] {
     takeInputFromGmshView(options->input, options->overrides);
     runner = [options] { return runRender(*options); };

@@ -24,6 +24,7 @@
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/gmsh_post_options.hpp"
 #include "lancer/scene/gmsh_view.hpp"
+#include "lancer/scene/looks.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/render_overrides.hpp"
@@ -207,6 +208,18 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
   command
       .add_option("--undeformed", overrides.undeformed, "With --warp, the shape before it: edges or ghost")
       ->check(CLI::IsMember({"none", "edges", "ghost"}));
+  command
+      .add_option("--integrator", overrides.integrator,
+                  "How light is carried: whitted (the default, the brief's model), path (path tracing) or ao "
+                  "(ambient occlusion); see docs/lighting.md")
+      ->check(CLI::IsMember(choices(kIntegratorNames)));
+  command.add_option("--noise", overrides.noise,
+                     "path, ao: stop sampling a pixel once its relative error is below this (0 < noise < 1)");
+  command
+      .add_option("--look", overrides.look,
+                  "A lit scene in one option (path tracing, soft light, sky, a floor catching shadows): "
+                  "studio, sky or sun")
+      ->check(CLI::IsMember(choices(kLookNames)));
   command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
   command.add_flag("--timings", overrides.timings,
                    "Print where the time before the first ray went: read, orient (shells, orientation, "
@@ -278,6 +291,17 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
   if (!overrides.shading.empty())
     applied.shading = enumFromName<ShadingMode>(kShadingNames, overrides.shading);
   applied.edges = overrides.edges;
+  if (!overrides.integrator.empty())
+    applied.integrator = enumFromName<IntegratorKind>(kIntegratorNames, overrides.integrator);
+  if (overrides.noise) {
+    if (!(*overrides.noise > 0 && *overrides.noise < 1))
+      throw InputError(SourceLocation{"--noise"},
+                       fmt::format("--noise must be greater than 0 and less than 1 (a relative error, e.g. "
+                                   "0.01), found {}",
+                                   *overrides.noise));
+    applied.noise = static_cast<float>(*overrides.noise);
+  }
+  if (!overrides.look.empty()) applied.look = enumFromName<Look>(kLookNames, overrides.look);
   request.accel = parseAccelKind(overrides.accel);
   request.threads = overrides.threads;
   request.imageBuffer = imageBuffer;

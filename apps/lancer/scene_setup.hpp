@@ -42,6 +42,9 @@ struct SceneOverrides {
   std::string warp;
   std::string colorBy;
   std::string undeformed;
+  std::string integrator;       // --integrator whitted|path|ao
+  std::optional<double> noise;  // --noise: adaptive stop, in (0, 1)
+  std::string look;             // --look studio|sky|sun
 };
 
 void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides);

@@ -19,7 +19,8 @@ Camera.from_gmsh = staticmethod(camera_from_gmsh)
 
 
 def _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads, progress,
-               sampler, max_depth, encoding=None, tonemap=None, exposure=None, denoise=None):
+               sampler, max_depth, encoding=None, tonemap=None, exposure=None, denoise=None, integrator=None,
+               noise=None, look=None):
     arguments = _lancer._RenderArguments()
     arguments.width = width
     arguments.height = height
@@ -36,13 +37,21 @@ def _arguments(width, height, samples, shading, srgb, transparent_background, ed
     arguments.tonemap = tonemap
     arguments.exposure = exposure
     arguments.denoise = denoise
+    arguments.integrator = integrator
+    arguments.noise = noise
+    arguments.look = look
     return arguments
 
 
 def render(scene, width=None, height=None, samples=None, shading=None, srgb=None,
            transparent_background=None, edges=None, threads=0, progress=False, dtype="uint8",
-           sampler=None, max_depth=None, encoding=None, tonemap=None, exposure=None, denoise=None):
+           sampler=None, max_depth=None, encoding=None, tonemap=None, exposure=None, denoise=None,
+           integrator=None, noise=None, look=None):
     """Renders a lancer.Scene, or the quick look of a lancer.Mesh (as `lancer render part.msh`).
+
+    integrator: "whitted" (the default), "path" (path tracing) or "ao" (ambient occlusion); noise:
+    stop a pixel's sampling once its relative error is below this; look: "studio", "sky" or "sun"
+    (docs/lighting.md).
 
     None keeps the scene file's own value (for a mesh, the quick look's), as the CLI's options do.
     Returns a lancer.Image: (H, W, 3) uint8, (H, W, 4) with transparent_background, sRGB-encoded by
@@ -54,7 +63,8 @@ def render(scene, width=None, height=None, samples=None, shading=None, srgb=None
     if dtype not in ("uint8", "float32"):
         raise ValueError(f"dtype={dtype!r}: use 'uint8' (encoded, as the image files) or 'float32' (linear)")
     arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
-                           progress, sampler, max_depth, encoding, tonemap, exposure, denoise)
+                           progress, sampler, max_depth, encoding, tonemap, exposure, denoise, integrator,
+                           noise, look)
     array, info = _lancer._render(scene, arguments, dtype == "float32")
     return Image._wrap(array, srgb=info["srgb"], stats=info)
 
@@ -62,12 +72,13 @@ def render(scene, width=None, height=None, samples=None, shading=None, srgb=None
 def animate(scene, output, frames=None, fps=None, orbit=None, width=None, height=None, samples=None,
             shading=None, srgb=None, transparent_background=None, edges=None, threads=0, progress=False,
             loop=None, dither=None, palette=None, sampler=None, max_depth=None, encoding=None, tonemap=None,
-            exposure=None, denoise=None, over=None):
+            exposure=None, denoise=None, over=None, integrator=None, noise=None, look=None):
     """Writes an orbit of the camera (orbit="camera") or of light K (orbit="light:K") as `lancer
     animate` does: an animated .gif, an animated .png, or numbered frames ("frame_%04d.png").
     over="steps": one frame per time step of the views the scene colours or warps by, in time order
     (frames=N: N frames evenly spaced in time, the steps between blended).
     None keeps the scene's value (its [animation] table, else 36 frames at 12 fps, the camera)."""
     arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
-                           progress, sampler, max_depth, encoding, tonemap, exposure, denoise)
+                           progress, sampler, max_depth, encoding, tonemap, exposure, denoise, integrator,
+                           noise, look)
     _lancer._animate(scene, str(output), arguments, frames, fps, orbit, loop, dither, palette, over)

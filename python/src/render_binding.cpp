@@ -95,6 +95,14 @@ RenderOverrides renderOverridesFromArguments(const RenderArguments& arguments) {
   overrides.transparentBackground = arguments.transparentBackground;
   overrides.edges = arguments.edges.value_or(false);
   overrides.samplesName = "samples";
+  overrides.integrator = choiceArgument<IntegratorKind>(arguments.integrator, "integrator", kIntegratorNames);
+  overrides.look = choiceArgument<Look>(arguments.look, "look", kLookNames);
+  if (arguments.noise) {
+    if (!(*arguments.noise > 0 && *arguments.noise < 1))
+      throw py::value_error(fmt::format(
+          "noise={} is out of range: use a relative error greater than 0 and less than 1", *arguments.noise));
+    overrides.noise = static_cast<float>(*arguments.noise);
+  }
   return overrides;
 }
 
@@ -181,6 +189,9 @@ void bindRender(py::module_& module) {
       .def_readwrite("max_depth", &RenderArguments::maxDepth)
       .def_readwrite("shading", &RenderArguments::shading)
       .def_readwrite("sampler", &RenderArguments::sampler)
+      .def_readwrite("integrator", &RenderArguments::integrator)
+      .def_readwrite("look", &RenderArguments::look)
+      .def_readwrite("noise", &RenderArguments::noise)
       .def_readwrite("srgb", &RenderArguments::srgb)
       .def_readwrite("encoding", &RenderArguments::encoding)
       .def_readwrite("tonemap", &RenderArguments::toneMap)

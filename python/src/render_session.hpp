@@ -23,6 +23,8 @@ struct RenderArguments {
   std::optional<bool> srgb, transparentBackground, edges, denoise;
   std::optional<std::string> encoding, toneMap;  // "srgb" | "linear"; "none" | "filmic" | "aces"
   std::optional<double> exposure;
+  std::optional<std::string> integrator, look;
+  std::optional<double> noise;
   int threads = 0;
   bool progress = false;
 };

@@ -118,3 +118,20 @@ def test_camera_set_from_python_moves_the_view():
     assert tuple(scene.camera.position) == (0, 0, 20) and scene.camera.fov == 35
     after = lancer.render(scene, width=48, height=36)
     assert not np.array_equal(before, after)
+
+
+def test_path_integrator_and_look_are_the_cli_image(tmp_path):
+    cli_path = tmp_path / "cli.png"
+    run_cli("render", BRACKET, "-o", cli_path, "--width", 48, "--height", 36, "--look", "studio", "--samples", 8,
+            "--noise", 0.05, "--integrator", "path", "--quiet")
+    image = lancer.render(lancer.read_msh(str(BRACKET)), width=48, height=36, look="studio", samples=8,
+                          noise=0.05, integrator="path")
+    assert rendered_bytes(tmp_path, image) == cli_path.read_bytes()
+
+
+def test_bad_integrator_and_noise_are_value_errors():
+    mesh = lancer.read_msh(str(BRACKET))
+    with pytest.raises(ValueError, match="integrator='photon'"):
+        lancer.render(mesh, width=8, height=8, integrator="photon")
+    with pytest.raises(ValueError, match="noise=1"):
+        lancer.render(mesh, width=8, height=8, integrator="path", noise=1.0)

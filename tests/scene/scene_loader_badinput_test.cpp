@@ -98,9 +98,11 @@ TEST(SceneLoaderBadInput, UnknownKeyWithNothingCloseListsTheKnownOnes) {
       sceneErrorOf("[render]\nwidth = 10\ncolour = [1, 0, 0]\n"),
       "scene.toml:3:1: error: unknown key 'colour' in [render]; expected one of: width, height, samples, "
       "max_depth, sampler, shading, background, output, srgb, encoding, tonemap, exposure, bit_depth, "
-      "denoise, adaptive_threshold, step");
-  EXPECT_TRUE(failsAt("[[light]]\nposition = [0, 0, 0]\ncolor = [1, 1, 1]\n", "3:1",
-                      "unknown key 'color' in light[0]; expected one of: position, intensity, attenuation"));
+      "denoise, adaptive_threshold, step, integrator, max_bounces, noise, ao_distance");
+  EXPECT_TRUE(
+      failsAt("[[light]]\nposition = [0, 0, 0]\ncolor = [1, 1, 1]\n", "3:1",
+              "unknown key 'color' in light[0]; expected one of: type, position, intensity, attenuation, "
+              "direction, angle, radius, width, height"));
 }
 
 TEST(SceneLoaderBadInput, FirstUnknownKeyInFileOrderIsReported) {
@@ -115,7 +117,7 @@ TEST(SceneLoaderBadInput, UnknownKeyWrittenAsDottedKey) {
 TEST(SceneLoaderBadInput, UnknownTopLevelTable) {
   EXPECT_EQ(sceneErrorOf("[ground]\nshadow_catcher = true\n"),
             "scene.toml:1:2: error: unknown key 'ground'; expected one of: render, camera, ambient, light, "
-            "material, mesh, animation, clip, floor");
+            "material, mesh, animation, clip, floor, environment");
   EXPECT_TRUE(failsAt("[[clip]]\npoint = [0, 0, 0]\n", "1:1", "clip[0] has no 'normal'"));
   EXPECT_TRUE(failsAt("[camra]\n", "1:2", "unknown key 'camra' (did you mean 'camera'?)"));
 }

@@ -96,9 +96,15 @@ Image renderAnimationFrame(Scene& scene, const Accelerator& accelerator, const S
   auto turnLight = [&](std::size_t index, double degrees) {
     // Scene space and back is not exact, so an unturned light keeps its own coordinates.
     scene.appearance.lights[index] = originalLights[index];
-    if (degrees != 0)
-      scene.appearance.lights[index].position = scene.geometry.toSceneSpace(rotateAbout(
-          scene.geometry.origin + toDouble(originalLights[index].position), centre, axis, degrees));
+    if (degrees == 0) return;
+    SceneLight& light = scene.appearance.lights[index];
+    light.position = scene.geometry.toSceneSpace(
+        rotateAbout(scene.geometry.origin + toDouble(originalLights[index].position), centre, axis, degrees));
+    // A sun's direction and a flat light's frame turn with it.
+    auto turn = [&](const Vec3& v) { return toFloat(rotateAbout(toDouble(v), Vec3d{}, axis, degrees)); };
+    light.direction = turn(light.direction);
+    light.axisU = turn(light.axisU);
+    light.axisV = turn(light.axisV);
   };
   CameraSettings cameraSettings = description.camera;
   const double degrees = orbitAngleDegrees(animation, frame);

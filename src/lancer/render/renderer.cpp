@@ -8,6 +8,7 @@
 #include <limits>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -18,6 +19,8 @@
 #include "lancer/util/parallel_for.hpp"
 #include "lancer/util/stopwatch.hpp"
 #include "lancer/util/thread_count.hpp"
+
+#include <fmt/format.h>
 
 namespace lancer {
 namespace {
@@ -231,6 +234,72 @@ void tracePixelBlock(const Tracer& tracer, const Camera& camera, const RenderSet
   }
 }
 
+// The pixel of a sampling integrator: `settings.samples` samples of its stream, each at a point of the
+// pixel from the stream's first two dimensions (a box filter); with `settings.noise`, fewer once the
+// relative standard error of the pixel's luminance falls below it (checked every 8 samples from the
+// 16th; a dark pixel is measured against 1/64 of full scale, or it might never stop).
+template <RayIntegrator Integrator>
+Rgba samplePixel(const Integrator& integrator, const Camera& camera, const RenderSettings& settings, int x,
+                 int y, TraceCounters& counters, std::uint64_t& samplesTraced) {
+  constexpr int kBatch = 8, kMinSamples = 16;
+  constexpr double kDarkest = 1.0 / 64.0;
+  Vec3 sum{0, 0, 0};
+  float alphaSum = 0;
+  double luminanceSum = 0, luminanceSquares = 0;
+  int n = 0;
+  while (n < settings.samples) {
+    SampleStream samples(x, y, static_cast<std::uint32_t>(n));
+    float dx, dy;
+    samples.next2D(dx, dy);
+    const Ray ray = camera.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy);
+    const TraceResult result = integrator.li(ray, samples, counters);
+    sum += result.color;
+    alphaSum += result.alpha;
+    const double luminance = 0.2126 * result.color.x + 0.7152 * result.color.y + 0.0722 * result.color.z;
+    luminanceSum += luminance;
+    luminanceSquares += luminance * luminance;
+    ++n;
+    if (settings.noise > 0.0f && n >= kMinSamples && n % kBatch == 0) {
+      const double mean = luminanceSum / n;
+      const double variance = std::max(0.0, (luminanceSquares - luminanceSum * mean) / (n - 1));
+      if (std::sqrt(variance / n) <= settings.noise * std::max(mean, kDarkest)) break;
+    }
+  }
+  samplesTraced += static_cast<std::uint64_t>(n);
+  const float weight = 1.0f / static_cast<float>(n);
+  const float alpha = settings.transparentBackground ? alphaSum * weight : 1.0f;
+  return toRgba(sum * weight, alpha);
+}
+
+// The first pixel of `band` (rows from bandY0, columns [x0, x1), rows to y1) that is not finite.
+void checkFinite(const Image& band, int x0, int x1, int bandY0, int y1) {
+  for (int y = bandY0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const Rgba& pixel = band.at(x, y - bandY0);
+      if (!(std::isfinite(pixel.r) && std::isfinite(pixel.g) && std::isfinite(pixel.b) &&
+            std::isfinite(pixel.a)))
+        throw std::runtime_error(
+            fmt::format("pixel {},{} came out non-finite ({}, {}, {}): the scene gives the renderer infinite "
+                        "or undefined "
+                        "light (check intensities, emission and the environment map); no image was written",
+                        x, y, pixel.r, pixel.g, pixel.b));
+    }
+}
+
+template <typename Variant>
+auto makeIntegrator(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
+                    const RenderSettings& settings) {
+  switch (settings.integrator) {
+    case IntegratorKind::Path:
+      return Variant(std::in_place_type<PathIntegrator>, scene, accelerator, settings, camera);
+    case IntegratorKind::AmbientOcclusion:
+      return Variant(std::in_place_type<AoIntegrator>, scene, accelerator, settings, camera);
+    case IntegratorKind::Whitted:
+      break;
+  }
+  return Variant(std::in_place_type<Tracer>, scene, accelerator, settings, camera);
+}
+
 }  // namespace
 
 Camera makeCamera(const CameraSettings& camera, const Scene& scene, const RenderSettings& settings) {
@@ -239,10 +308,21 @@ Camera makeCamera(const CameraSettings& camera, const Scene& scene, const Render
 
 Renderer::Renderer(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
                    const RenderSettings& settings)
-    : camera_(camera), settings_(settings), tracer_(scene, accelerator, settings, camera) {}
+    : camera_(camera),
+      settings_(settings),
+      integrator_(makeIntegrator<decltype(integrator_)>(scene, accelerator, camera, settings)) {}
 
 Rgba Renderer::renderPixel(int x, int y, TraceCounters& counters, std::uint64_t& samplesTraced) const {
-  return tracePixel(tracer_, camera_, settings_, x, y, counters, samplesTraced);
+  if (const auto* tracer = std::get_if<Tracer>(&integrator_))
+    return tracePixel(*tracer, camera_, settings_, x, y, counters, samplesTraced);
+  return std::visit(
+      [&](const auto& integrator) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(integrator)>, Tracer>)
+          return Rgba{};
+        else
+          return samplePixel(integrator, camera_, settings_, x, y, counters, samplesTraced);
+      },
+      integrator_);
 }
 
 int bandCountOf(int height) { return tilesAcross(height); }
@@ -289,7 +369,7 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
                            BandRange range) const {
   using Clock = std::chrono::steady_clock;
   const Stopwatch stopwatch;
-  const Tracer& tracer = tracer_;
+  const Tracer* whitted = std::get_if<Tracer>(&integrator_);
   const Camera& camera = camera_;
   const RenderSettings& settings = settings_;
 
@@ -305,14 +385,19 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
   std::atomic<std::uint64_t> pixelsDone{0};
   std::atomic<std::uint64_t> raysTraced{0};
   std::atomic<std::uint64_t> samplesTraced{0};
+  // A worker's error (a non-finite pixel) stops the render and is thrown on this thread.
+  std::atomic<bool> failed{false};
+  std::mutex failureMutex;
+  std::string failure;
   const auto cancelled = [&] {
-    return options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed);
+    return failed.load(std::memory_order_relaxed) ||
+           (options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed));
   };
 
   auto worker = [&] {
     std::optional<AdaptiveSampler> adaptive;
-    if (settings.sampler == SamplerKind::Adaptive)
-      adaptive.emplace(tracer, camera, settings, options.packets);
+    if (whitted != nullptr && settings.sampler == SamplerKind::Adaptive)
+      adaptive.emplace(*whitted, camera, settings, options.packets);
     for (;;) {
       if (cancelled()) break;
       const int tile = nextTile.fetch_add(1, std::memory_order_relaxed);
@@ -326,16 +411,27 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
                 y1 = std::min(bandY0 + kTileSize, settings.height);
       TraceCounters counters;
       std::uint64_t samples = 0;
-      if (adaptive) {
+      if (whitted == nullptr) {
+        for (int y = bandY0; y < y1; ++y)
+          for (int x = x0; x < x1; ++x) pixels->at(x, y - bandY0) = renderPixel(x, y, counters, samples);
+        try {
+          checkFinite(*pixels, x0, x1, bandY0, y1);
+        } catch (const std::runtime_error& error) {
+          const std::lock_guard lock(failureMutex);
+          if (!failed.exchange(true)) failure = error.what();
+          bands.stop();
+          break;
+        }
+      } else if (adaptive) {
         adaptive->renderTile(x0, bandY0, x1, y1, *pixels, bandY0, counters, samples);
       } else if (options.packets) {
         for (int y = bandY0; y < y1; y += 2)
           for (int x = x0; x < x1; x += 4)
-            tracePixelBlock(tracer, camera, settings, x, y, x1, y1, *pixels, bandY0, counters, samples);
+            tracePixelBlock(*whitted, camera, settings, x, y, x1, y1, *pixels, bandY0, counters, samples);
       } else {
         for (int y = bandY0; y < y1; ++y)
           for (int x = x0; x < x1; ++x)
-            pixels->at(x, y - bandY0) = tracePixel(tracer, camera, settings, x, y, counters, samples);
+            pixels->at(x, y - bandY0) = tracePixel(*whitted, camera, settings, x, y, counters, samples);
       }
       raysTraced.fetch_add(counters.rays, std::memory_order_relaxed);
       samplesTraced.fetch_add(samples, std::memory_order_relaxed);
@@ -377,6 +473,7 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
       }
     }
   }
+  if (failed.load()) throw std::runtime_error(failure);
   report();
 
   if (stats != nullptr) {

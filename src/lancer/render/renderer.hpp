@@ -10,10 +10,13 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 #include "lancer/image/image.hpp"
+#include "lancer/render/ao_integrator.hpp"
 #include "lancer/render/camera.hpp"
 #include "lancer/render/feature_buffers.hpp"
+#include "lancer/render/path_integrator.hpp"
 #include "lancer/render/tracer.hpp"
 
 namespace lancer {
@@ -71,8 +74,9 @@ struct BandRange {
 int bandCountOf(int height);
 
 // What a frame needs, held together: the scene and its accelerator, the camera, the settings, and
-// the tracer built from them once (as pbrt-v4's integrator holds its aggregate, lights and camera, so
-// that rendering takes only where the pixels go). The scene, accelerator and camera must outlive it.
+// the integrator of the settings (integrator.hpp) built from them once (as pbrt-v4's integrator holds its
+// aggregate, lights and camera, so that rendering takes only where the pixels go). The scene, accelerator and
+// camera must outlive it.
 class Renderer {
  public:
   Renderer(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
@@ -101,7 +105,9 @@ class Renderer {
  private:
   const Camera& camera_;
   RenderSettings settings_;
-  Tracer tracer_;
+  // The Whitted tracer keeps its own samplers (grid, adaptive) and packets; the others sample each
+  // pixel with their sample streams (sample_sequence.hpp), `samples` each, or fewer with `noise`.
+  std::variant<Tracer, PathIntegrator, AoIntegrator> integrator_;
 };
 
 // What goes into an 8- or 16-bit file: the radiance times 2^exposure through the settings' tone curve

@@ -105,13 +105,15 @@ void placeQuickLookLights(SceneDescription& scene, const Mesh& mesh) {
   scene.lights.clear();
   // The key: high on the left, in front, so the top, front and side faces of the 3/4 view read
   // apart; far enough to light the whole part evenly.
-  scene.lights.push_back({centre + normalize(right * -0.5 + up * 1.8 + front * 0.9) * (6 * radius),
-                          {0.9f, 0.9f, 0.9f},
-                          {1, 0, 0}});
+  PointLight key;
+  key.position = centre + normalize(right * -0.5 + up * 1.8 + front * 0.9) * (6 * radius);
+  key.intensity = {0.9f, 0.9f, 0.9f};
+  scene.lights.push_back(key);
   // The fill sits at the eye: whatever the camera sees, it lights (the shadow ray retraces the view).
-  scene.lights.push_back({camera.position.value_or(defaultCameraPosition(world, camera, aspect)),
-                          {0.5f, 0.5f, 0.52f},
-                          {1, 0, 0}});
+  PointLight fill;
+  fill.position = camera.position.value_or(defaultCameraPosition(world, camera, aspect));
+  fill.intensity = {0.5f, 0.5f, 0.52f};
+  scene.lights.push_back(fill);
 }
 
 }  // namespace lancer

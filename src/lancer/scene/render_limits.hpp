@@ -25,6 +25,10 @@ inline constexpr double kMaxExposureStops = 20;
 inline constexpr std::array<std::string_view, 3> kShadingNames = {"flat", "gouraud", "phong"};
 inline constexpr std::array<std::string_view, 2> kProjectionNames = {"perspective", "orthographic"};
 inline constexpr std::array<std::string_view, 3> kSamplerNames = {"regular", "stratified", "adaptive"};
+inline constexpr std::array<std::string_view, 3> kIntegratorNames = {"whitted", "path", "ao"};
+inline constexpr std::array<std::string_view, 5> kLightTypeNames = {"point", "sun", "sphere", "rect", "disk"};
+static_assert(kIntegratorNames[static_cast<int>(IntegratorKind::AmbientOcclusion)] == "ao");
+static_assert(kLightTypeNames[static_cast<int>(LightType::Disk)] == "disk");
 static_assert(kShadingNames[static_cast<int>(ShadingMode::Gouraud)] == "gouraud" &&
               kShadingNames[static_cast<int>(ShadingMode::Phong)] == "phong");
 static_assert(kProjectionNames[static_cast<int>(Projection::Orthographic)] == "orthographic");

@@ -25,15 +25,25 @@ void applyRenderOverrides(SceneDescription& description, const RenderOverrides& 
   // The quick look's fill sits at the automatic camera, whose distance depends on the image's aspect.
   if (quickLookMesh && (overrides.width || overrides.height))
     placeQuickLookLights(description, *quickLookMesh);
+  if (overrides.integrator) settings.integrator = *overrides.integrator;
+  if (overrides.noise) settings.noise = *overrides.noise;
+  if (overrides.edges)
+    for (MeshInstance& mesh : description.meshes)
+      if (!mesh.edges) mesh.edges = EdgeSettings{};
+  if (overrides.look) {
+    applyLook(description, *overrides.look);
+    if (overrides.samples) settings.samples = *overrides.samples;
+    if (overrides.noise) settings.noise = *overrides.noise;
+    if (overrides.integrator) settings.integrator = *overrides.integrator;
+  }
+  // The Whitted model's grids need a square count; path and AO take any.
   const int root = static_cast<int>(std::lround(std::sqrt(settings.samples)));
-  if (settings.sampler != SamplerKind::Adaptive && root * root != settings.samples)
+  if (settings.integrator == IntegratorKind::Whitted && settings.sampler != SamplerKind::Adaptive &&
+      root * root != settings.samples)
     throw InputError(
         SourceLocation{overrides.samplesName},
         fmt::format("{} samples cannot form an n x n grid: use a perfect square (1, 4, 9, 16, ...)",
                     settings.samples));
-  if (overrides.edges)
-    for (MeshInstance& mesh : description.meshes)
-      if (!mesh.edges) mesh.edges = EdgeSettings{};
   if (overrides.shading) {
     settings.shading = *overrides.shading;
     for (MeshInstance& mesh : description.meshes) mesh.shading.reset();

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "lancer/mesh/mesh.hpp"
+#include "lancer/scene/looks.hpp"
 #include "lancer/scene/scene_description.hpp"
 #include "lancer/scene/up_axis.hpp"
 
@@ -21,6 +22,9 @@ struct RenderOverrides {
   std::optional<float> exposure;
   std::optional<int> bitDepth;
   std::optional<bool> denoise;
+  std::optional<IntegratorKind> integrator;
+  std::optional<float> noise;  // checked by the caller: in (0, 1)
+  std::optional<Look> look;    // applied last (applyLook); the overrides above win over its defaults
   std::optional<bool> transparentBackground;
   bool edges = false;  // draw element edges on every mesh that does not set its own
   // Names the samples check's messages give the value (the CLI's "--samples", Python's "samples").

@@ -20,10 +20,33 @@
 
 namespace lancer {
 
+// A light in scene space. Every light has a `position` the Whitted model lights with (a point light's
+// own, an area light's centre, a point far towards the sun); the path tracer samples its shape.
 struct SceneLight {
   Vec3 position;  // scene space
   Vec3 intensity;
   Vec3 attenuation;  // constant, linear, quadratic
+  LightType type = LightType::Point;
+  Vec3 direction{0, 1, 0};              // sun: unit, towards it; rect, disk: the unit normal of the lit side
+  float cosHalfAngle = 1;               // sun: cosine of its angular radius
+  float radius = 0;                     // sphere, disk
+  Vec3 axisU{0, 0, 0}, axisV{0, 0, 0};  // rect: half its sides; disk: unit axes of its plane
+  float area = 0;                       // sphere: its cross-section pi r^2; rect, disk: the lit side's
+  Vec3 radiance{0, 0, 0};               // sun and area lights: what the path tracer sees on the light
+};
+
+// The environment in scene space (EnvironmentSettings), the map decoded to linear RGB.
+struct SceneEnvironment {
+  EnvironmentSettings::Kind kind = EnvironmentSettings::Kind::Uniform;
+  Vec3 color{1, 1, 1};
+  Vec3 zenith, horizon, ground;
+  Vec3 up{0, 1, 0};           // the camera's up: the sky's zenith and the map's pole
+  Vec3 front{0, 0, 1};        // the map's centre column (u = 0.5) at rotation 0, across `up`
+  float rotationRadians = 0;  // the map turned about `up`
+  float strength = 1;
+  bool visible = false;
+  int mapWidth = 0, mapHeight = 0;
+  std::vector<Vec3> map;  // row 0 at the zenith, radiance
 };
 
 // How a mesh's element edges are drawn (EdgeOverlay::styles[0] means "not drawn").
@@ -122,6 +145,7 @@ struct Scene {
   std::optional<FieldColors> fieldColors;
   std::optional<IsolineOverlay> isolines;
   std::optional<ShadowCatcher> shadowCatcher;
+  std::optional<SceneEnvironment> environment;
 
   // What the mesh readers warned about (MeshSourceInfo::warnings), for the CLI to print.
   std::vector<std::string> warnings;

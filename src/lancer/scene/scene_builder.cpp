@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "lancer/image/hdr_reader.hpp"
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/feature_edges.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
@@ -308,6 +309,88 @@ ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const SceneGeometry& g
   return catcher;
 }
 
+constexpr float kPi = 3.14159265358979f;
+
+// Any unit vector across `n`.
+Vec3 across(const Vec3& n) {
+  const Vec3 helper = std::abs(n.y) < 0.9f ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
+  return normalize(cross(helper, n));
+}
+
+// The light in scene space with what the path tracer samples (docs/lighting.md, units): a sun of
+// intensity I gives irradiance pi I on a face turned to it, spread over its disc of solid angle
+// 2 pi (1 - cos(angle / 2)); an area light of intensity I is, from afar, a point light of intensity
+// I with attenuation 1 / d^2 (the point the Whitted model lights with), so its surface's radiance
+// is pi I / area (area: the sphere's cross-section, the rect's or the disk's lit side).
+SceneLight sceneLight(const PointLight& light, const SceneGeometry& geometry) {
+  SceneLight out{geometry.toSceneSpace(light.position), light.intensity, light.attenuation};
+  out.type = light.type;
+  const Vec3 centre = geometry.bounds.empty() ? Vec3{0, 0, 0} : geometry.bounds.center();
+  const float size = geometry.bounds.empty() ? 1.0f : std::max(length(geometry.bounds.extent()), 1e-6f);
+  if (light.type == LightType::Sun) {
+    out.direction = normalize(toFloat(light.direction));
+    const double halfAngle = 0.5 * light.angleDegrees * 3.14159265358979323846 / 180.0;
+    out.cosHalfAngle = static_cast<float>(std::cos(halfAngle));
+    const double solidAngle = 2.0 * 3.14159265358979323846 * (1.0 - std::cos(halfAngle));
+    out.radiance = light.intensity * static_cast<float>(3.14159265358979323846 / solidAngle);
+    out.position = centre + out.direction * (1e4f * size);  // the Whitted model's point
+    out.attenuation = {1, 0, 0};
+    return out;
+  }
+  if (light.type == LightType::Point) return out;
+  out.attenuation = {0, 0, 1};  // the Whitted model's point: 1 / d^2, as the area light from afar
+  Vec3 facing = toFloat(light.direction);
+  if (length(facing) == 0.0f) facing = centre - out.position;
+  facing = length(facing) > 0.0f ? normalize(facing) : Vec3{0, -1, 0};
+  out.direction = facing;
+  out.radius = static_cast<float>(light.radius);
+  if (light.type == LightType::Sphere) {
+    out.area = kPi * out.radius * out.radius;
+  } else if (light.type == LightType::Rect) {
+    const Vec3 u = across(facing);
+    out.axisU = u * static_cast<float>(0.5 * light.width);
+    out.axisV = cross(facing, u) * static_cast<float>(0.5 * light.height);
+    out.area = static_cast<float>(light.width * light.height);
+  } else {
+    out.axisU = across(facing);
+    out.axisV = cross(facing, out.axisU);
+    out.area = kPi * out.radius * out.radius;
+  }
+  out.radiance = light.intensity * (kPi / out.area);
+  return out;
+}
+
+SceneEnvironment sceneEnvironment(const EnvironmentSettings& settings, const Vec3& up) {
+  SceneEnvironment environment;
+  environment.kind = settings.kind;
+  environment.color = settings.color;
+  environment.zenith = settings.zenith;
+  environment.horizon = settings.horizon;
+  environment.ground = settings.ground;
+  environment.up = normalize(up);
+  environment.front = across(environment.up);
+  environment.rotationRadians = static_cast<float>(settings.rotationDegrees * 3.14159265358979323846 / 180.0);
+  environment.strength = settings.strength;
+  environment.visible = settings.visible;
+  if (settings.kind != EnvironmentSettings::Kind::Map) return environment;
+  HdrImage image;
+  try {
+    image = readRadianceHdr(settings.map);
+  } catch (const InputError& error) {
+    throw InputError(settings.where, fmt::format("environment.map: {}", error.message()));
+  }
+  if (image.width != 2 * image.height)
+    throw InputError(
+        settings.where,
+        fmt::format("environment.map: '{}' is {} x {} pixels; an equirectangular map is twice as "
+                    "wide as it is high (e.g. 2048 x 1024)",
+                    settings.map, image.width, image.height));
+  environment.mapWidth = image.width;
+  environment.mapHeight = image.height;
+  environment.map = std::move(image.pixels);
+  return environment;
+}
+
 }  // namespace
 
 Scene buildScene(const SceneDescription& description, int threads, StageTimes* times) {
@@ -498,8 +581,14 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
     scene.clipping.planes.push_back({geometry.toSceneSpace(clip.point), toFloat(clip.normal)});
     scene.clipping.caps.push_back(clip.cap ? 1 : 0);
   }
-  for (const PointLight& light : description.lights)
-    appearance.lights.push_back({geometry.toSceneSpace(light.position), light.intensity, light.attenuation});
+  for (const PointLight& light : description.lights) appearance.lights.push_back(sceneLight(light, geometry));
+  if (description.environment)
+    scene.environment = sceneEnvironment(*description.environment, toFloat(description.camera.up));
+  if (description.render.integrator == IntegratorKind::Path && description.ambientSet)
+    scene.warnings.push_back(formatInputWarning(
+        SourceLocation{description.path},
+        "[ambient] and ka are not used by integrator = \"path\": light from all around comes from "
+        "[environment] (docs/lighting.md)"));
   // "scene": the rest of this call (placing, gathering geometry, materials, edges, fields, clips).
   times.add("scene", whole.seconds() - (times.totalSeconds() - secondsBefore));
   return scene;

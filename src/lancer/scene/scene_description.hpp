@@ -18,12 +18,19 @@ namespace lancer {
 enum class Projection { Perspective, Orthographic };
 enum class ShadingMode { Flat, Gouraud, Phong };
 enum class SamplerKind { Regular, Stratified, Adaptive };
+// How light is carried (docs/lighting.md): the brief's Whitted model, unidirectional path tracing,
+// or ambient occlusion.
+enum class IntegratorKind { Whitted, Path, AmbientOcclusion };
 
 struct RenderSettings {
   int width = 800;
   int height = 600;
   int samples = 1;   // samples per pixel, a perfect square for the regular grid
   int maxDepth = 5;  // reflection/refraction recursion depth
+  IntegratorKind integrator = IntegratorKind::Whitted;
+  int maxBounces = 8;    // path: scattering events after the camera ray
+  float noise = 0;       // path, ao: stop a pixel once its relative standard error is below this (0: off)
+  float aoDistance = 0;  // ao: occluders farther than this do not count (0: a tenth of the scene's size)
   SamplerKind sampler = SamplerKind::Regular;
   // Adaptive sampler: a square of the pixel is split when two of its corner samples differ by more
   // than this in some channel (linear radiance, 1 = full scale).
@@ -64,10 +71,35 @@ struct CameraSettings {
 // `imageAspect` (width / height) wide, framed as gmsh frames its export (camera itself without one).
 CameraSettings resolveGmshView(const CameraSettings& camera, const Aabbd& worldBounds, double imageAspect);
 
+// `type` of a [[light]]: a point, the sun (a direction and an angular diameter), or a light with
+// area (a sphere, a rectangle or a disk). The Whitted model lights with each one's centre.
+enum class LightType { Point, Sun, Sphere, Rect, Disk };
+
 struct PointLight {
-  Vec3d position;
+  Vec3d position;  // point and area lights (the centre)
   Vec3 intensity{1, 1, 1};
   Vec3 attenuation{1, 0, 0};  // constant, linear, quadratic: att(d) = 1 / (c + l d + q d^2)
+  LightType type = LightType::Point;
+  Vec3d direction{0, 1, 0};      // sun: unit, from the scene towards the sun; rect, disk: the side lit
+                                 // ([0, 0, 0]: towards the scene's centre)
+  double angleDegrees = 0.53;    // sun: angular diameter
+  double radius = 0;             // sphere, disk
+  double width = 0, height = 0;  // rect
+  SourceLocation where{};
+};
+
+// `[environment]`: the light that comes from every direction (the path and AO integrators; the
+// Whitted model keeps its [ambient]). A uniform colour, a sky graded from the ground through the
+// horizon to the zenith, or an equirectangular map (a Radiance .hdr file), radiance in all cases.
+struct EnvironmentSettings {
+  enum class Kind { Uniform, Gradient, Map } kind = Kind::Uniform;
+  Vec3 color{1, 1, 1};
+  Vec3 zenith{0.35f, 0.5f, 0.8f}, horizon{0.85f, 0.88f, 0.92f}, ground{0.3f, 0.28f, 0.25f};
+  std::string map;             // resolved against the scene file's folder
+  double rotationDegrees = 0;  // about the up axis
+  float strength = 1;          // multiplies the map
+  bool visible = false;        // camera rays that miss show the environment (else the background)
+  SourceLocation where{};      // of the map key, for errors reading the file
 };
 
 struct Material {
@@ -81,13 +113,14 @@ struct Material {
   float ior = 1.5f;
   bool fresnel = false;
   Vec3 absorption{0, 0, 0};  // Beer-Lambert, per unit length inside transparent media
+  Vec3 emission{0, 0, 0};    // path: radiance the faces send out (lamps); 0 elsewhere
 };
 
 // `groups = { Floor = "matte", 7 = "glass" }`: a physical group, by name or tag, and its material.
 struct GroupMaterial {
   std::string group;  // name, or the tag written as decimal digits
   int material = 0;   // index into SceneDescription::materials
-  SourceLocation where;
+  SourceLocation where{};
 };
 
 // `edges = { width = 1.0, color = [0, 0, 0], only = "features", feature_angle = 30 }`: element
@@ -173,6 +206,8 @@ struct SceneDescription {
   CameraSettings camera;
   Vec3 ambient{0.1f, 0.1f, 0.1f};
   std::vector<PointLight> lights;
+  std::optional<EnvironmentSettings> environment;
+  bool ambientSet = false;          // the file sets [ambient] or some material's ka (the path warning)
   std::vector<Material> materials;  // materials[0] is always present: "default" when none is named
   std::vector<MeshInstance> meshes;
   std::vector<ClipSettings> clips;

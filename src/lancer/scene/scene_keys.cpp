@@ -5,20 +5,24 @@
 namespace lancer {
 namespace {
 
-constexpr std::array<std::string_view, 9> kDocumentKeys = {
-    "render", "camera", "ambient", "light", "material", "mesh", "animation", "clip", "floor"};
-constexpr std::array<std::string_view, 16> kRenderKeys = {
-    "width", "height",   "samples", "max_depth", "sampler",   "shading", "background",         "output",
-    "srgb",  "encoding", "tonemap", "exposure",  "bit_depth", "denoise", "adaptive_threshold", "step"};
+constexpr std::array<std::string_view, 10> kDocumentKeys = {
+    "render", "camera", "ambient", "light", "material", "mesh", "animation", "clip", "floor", "environment"};
+constexpr std::array<std::string_view, 20> kRenderKeys = {
+    "width",   "height",     "samples",     "max_depth", "sampler",
+    "shading", "background", "output",      "srgb",      "encoding",
+    "tonemap", "exposure",   "bit_depth",   "denoise",   "adaptive_threshold",
+    "step",    "integrator", "max_bounces", "noise",     "ao_distance"};
 constexpr std::array<std::string_view, 8> kCameraKeys = {
     "projection", "position", "look_at", "up", "up_axis", "fov", "view_height", "gmsh_view"};
 constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};
-constexpr std::array<std::string_view, 3> kLightKeys = {"position", "intensity", "attenuation"};
-constexpr std::array<std::string_view, 9> kMaterialKeys = {
-    "ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "fresnel", "absorption"};
+constexpr std::array<std::string_view, 9> kLightKeys = {
+    "type", "position", "intensity", "attenuation", "direction", "angle", "radius", "width", "height"};
+constexpr std::array<std::string_view, 10> kMaterialKeys = {
+    "ka",           "kd",  "ks",      "shininess",  "reflectivity",
+    "transparency", "ior", "fresnel", "absorption", "emission"};
 constexpr std::array<std::string_view, 15> kMeshKeys = {
-    "file",     "material", "shading",  "smooth_angle", "translate", "rotate", "scale",     "groups",
-    "edges",    "color_by", "isolines", "arrows",       "clip",      "warp",   "undeformed"};
+    "file",  "material", "shading",  "smooth_angle", "translate", "rotate", "scale",     "groups",
+    "edges", "color_by", "isolines", "arrows",       "clip",      "warp",   "undeformed"};
 constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only", "feature_angle"};
 constexpr std::array<std::string_view, 9> kColorByKeys = {"field", "step",  "map",   "range", "component",
                                                           "title", "units", "bands", "legend"};
@@ -31,8 +35,10 @@ constexpr std::array<std::string_view, 3> kClipKeys = {"point", "normal", "cap"}
 constexpr std::array<std::string_view, 3> kFloorKeys = {"shadow_catcher", "height", "normal"};
 constexpr std::array<std::string_view, 10> kAnimationKeys = {
     "frames", "fps", "orbit", "axis", "center", "degrees", "over", "range", "label", "label_position"};
+constexpr std::array<std::string_view, 8> kEnvironmentKeys = {"color", "zenith",   "horizon",  "ground",
+                                                              "map",   "rotation", "strength", "visible"};
 
-constexpr std::array<SceneTableKeys, 16> kSceneTables = {{
+constexpr std::array<SceneTableKeys, 17> kSceneTables = {{
     {SceneTable::Document, "", kDocumentKeys},
     {SceneTable::Render, "render", kRenderKeys},
     {SceneTable::Camera, "camera", kCameraKeys},
@@ -49,6 +55,7 @@ constexpr std::array<SceneTableKeys, 16> kSceneTables = {{
     {SceneTable::Floor, "floor", kFloorKeys},
     {SceneTable::Animation, "animation", kAnimationKeys},
     {SceneTable::MeshWarp, "mesh.warp", kWarpKeys},
+    {SceneTable::Environment, "environment", kEnvironmentKeys},
 }};
 
 constexpr bool inEnumOrder() {

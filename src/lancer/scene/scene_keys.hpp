@@ -27,6 +27,7 @@ enum class SceneTable {
   Floor,
   Animation,
   MeshWarp,
+  Environment,
 };
 
 struct SceneTableKeys {

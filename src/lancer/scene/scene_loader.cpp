@@ -16,6 +16,7 @@
 #include "lancer/scene/arrows.hpp"
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/isolines.hpp"
+#include "lancer/scene/light_loader.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/result_keys.hpp"
 #include "lancer/scene/suggest.hpp"
@@ -134,9 +135,13 @@ RenderSettings readRender(const SceneFile& file, const toml::table& table) {
   if (auto height = reader.integer("height", 1, kMaxRenderSide)) render.height = static_cast<int>(*height);
   if (auto sampler = reader.choice("sampler", kSamplerNames))
     render.sampler = static_cast<SamplerKind>(*sampler);
+  if (auto integrator = reader.choice("integrator", kIntegratorNames))
+    render.integrator = static_cast<IntegratorKind>(*integrator);
   if (auto samples = reader.integer("samples", 1, kMaxSamples)) {
-    // The regular and the stratified sampler both lay an n x n grid over the pixel.
-    if (render.sampler != SamplerKind::Adaptive && !isPerfectSquare(*samples)) {
+    // The regular and the stratified sampler both lay an n x n grid over the pixel (the path and AO
+    // integrators take any count: their samples are a low-discrepancy sequence).
+    if (render.integrator == IntegratorKind::Whitted && render.sampler != SamplerKind::Adaptive &&
+        !isPerfectSquare(*samples)) {
       const auto below = static_cast<std::int64_t>(std::floor(std::sqrt(static_cast<double>(*samples))));
       reader.fail(
           *reader.find("samples"),
@@ -155,6 +160,12 @@ RenderSettings readRender(const SceneFile& file, const toml::table& table) {
   readBackground(reader, render);
   if (auto output = reader.nonEmptyString("output")) render.output = file.resolve(*output);
   readOutputKeys(reader, render);
+  if (auto bounces = reader.integer("max_bounces", 0, kMaxDepth))
+    render.maxBounces = static_cast<int>(*bounces);
+  if (auto noise = reader.number("noise", NumberRange::strictlyBetween(0, 1)))
+    render.noise = static_cast<float>(*noise);
+  if (auto distance = reader.number("ao_distance", NumberRange::above(0)))
+    render.aoDistance = static_cast<float>(*distance);
   return render;
 }
 
@@ -277,26 +288,6 @@ ClipSettings readClip(const SceneFile& file, const toml::table& table, const std
   return clip;
 }
 
-PointLight readLight(const SceneFile& file, const toml::table& table, std::size_t index) {
-  const TomlTableReader reader(table, fmt::format("light[{}]", index), file.path, SceneTable::Light);
-  PointLight light;
-  const std::optional<Vec3d> position = reader.vector("position", Triple::Xyz);
-  if (!position) reader.failMissing("position", "position = [x, y, z]");
-  light.position = *position;
-  if (auto intensity = reader.vector("intensity", Triple::Rgb, NumberRange::atLeast(0)))
-    light.intensity = toFloat(*intensity);
-  if (auto attenuation = reader.vector("attenuation", Triple::Xyz, NumberRange::atLeast(0))) {
-    if (*attenuation == Vec3d{0, 0, 0})
-      reader.fail(
-          *reader.find("attenuation"),
-          fmt::format("{} must not be [0, 0, 0]: att(d) = 1 / (c + l d + q d^2) would divide by zero; "
-                      "use [1, 0, 0] for no attenuation",
-                      reader.qualified("attenuation")));
-    light.attenuation = toFloat(*attenuation);
-  }
-  return light;
-}
-
 Material readMaterial(const SceneFile& file, const toml::table& table, const std::string& name) {
   const TomlTableReader reader(table, fmt::format("material.{}", name), file.path, SceneTable::Material);
   const NumberRange unit = NumberRange::between(0, 1);
@@ -315,6 +306,8 @@ Material readMaterial(const SceneFile& file, const toml::table& table, const std
   if (auto fresnel = reader.boolean("fresnel")) material.fresnel = *fresnel;
   if (auto absorption = reader.vector("absorption", Triple::Rgb, NumberRange::atLeast(0)))
     material.absorption = toFloat(*absorption);
+  if (auto emission = reader.vector("emission", Triple::Rgb, NumberRange::atLeast(0)))
+    material.emission = toFloat(*emission);
   // Reflected, transmitted and local light share what leaves a point; more than all of it would
   // let each bounce add light (the tracer's energy split, tracer.cpp).
   const float shared = maxComponent(material.reflectivity) + material.transparency;
@@ -541,14 +534,20 @@ SceneDescription parseScene(std::string_view text, const std::string& path) {
     const TomlTableReader reader(*ambient, "ambient", path, SceneTable::Ambient);
     if (auto intensity = reader.vector("intensity", Triple::Rgb, NumberRange::atLeast(0)))
       scene.ambient = toFloat(*intensity);
+    scene.ambientSet = true;
   }
+  if (const toml::table* environment = sectionTable(file, root, "environment"))
+    scene.environment = readEnvironment(path, file.folder, *environment);
   const std::vector<const toml::table*> lights = tableArray(file, root, "light");
-  for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(readLight(file, *lights[i], i));
+  for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(readLight(path, *lights[i], i));
   const std::vector<const toml::table*> clips = tableArray(file, root, "clip");
   for (std::size_t i = 0; i < clips.size(); ++i)
     scene.clips.push_back(readClip(file, *clips[i], fmt::format("clip[{}]", i), SceneTable::Clip));
   if (const toml::table* floor = sectionTable(file, root, "floor")) scene.floor = readFloor(file, *floor);
   scene.materials = readMaterials(file, root);
+  if (const toml::table* materials = sectionTable(file, root, "material"))
+    for (const auto& [name, value] : *materials)
+      if (const auto* table = value.as_table(); table && table->contains("ka")) scene.ambientSet = true;
   const std::vector<const toml::table*> meshes = tableArray(file, root, "mesh");
   for (std::size_t i = 0; i < meshes.size(); ++i)
     scene.meshes.push_back(readMesh(file, *meshes[i], i, scene.materials));

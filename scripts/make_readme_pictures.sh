@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Remakes the README's pictures (docs/images) with build/lancer, each by the command its caption
+# gives, so that the pictures show what those commands write today (sRGB PNGs since docs/output.md's
+# default). Run after scripts/setup.sh; takes a minute on 2 cores.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+lancer=build/lancer
+out=docs/images
+"$lancer" render examples/demo.toml -o "$out/demo.png" --quiet
+"$lancer" render examples/meshes/bracket.msh --samples 4 --width 640 --height 480 -o "$out/quick_look.png" --quiet
+"$lancer" render examples/glass_and_mirror.toml -o "$out/glass_and_mirror.png" --quiet
+"$lancer" render examples/cut_multimaterial.toml -o "$out/cut_multimaterial.png" --quiet
+"$lancer" render examples/field.toml -o "$out/field.png" --quiet
+"$lancer" animate examples/demo.toml -o "$out/turntable.gif" --frames 36 --fps 12 --width 400 --height 300 --quiet
+"$lancer" render tests/data/results/cantilever.msh --warp displacement:1 --color-by stress:von_mises --step 3 \
+  --undeformed edges --width 480 --height 270 --samples 4 -o "$out/results_warp.png" --quiet

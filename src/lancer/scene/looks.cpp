@@ -1,0 +1,60 @@
+#include "lancer/scene/looks.hpp"
+
+#include <algorithm>
+
+namespace lancer {
+
+void applyLook(SceneDescription& description, Look look) {
+  CameraSettings& camera = description.camera;
+  // The camera's frame: screen right, up, and the front (towards the viewer's side of the model).
+  const Vec3d viewFrom =
+      camera.position && camera.lookAt ? *camera.position - *camera.lookAt : camera.viewFrom;
+  const Vec3d up = normalize(camera.up);
+  const Vec3d right = normalize(cross(-viewFrom, up));
+  const Vec3d front = cross(right, up);
+  const Vec3d keyDirection = normalize(right * -1.2 + up * 1.5 + front * 0.5);
+
+  description.render.integrator = IntegratorKind::Path;
+  description.render.samples = std::max(description.render.samples, 64);
+  if (description.render.noise == 0) description.render.noise = 0.02f;
+  description.ambient = {0, 0, 0};
+  description.ambientSet = false;
+  for (Material& material : description.materials) material.ka = {0, 0, 0};
+  description.lights.clear();
+  FloorSettings floor;
+  floor.normal = up;
+  description.floor = floor;
+
+  PointLight key;
+  key.type = LightType::Sun;
+  key.direction = keyDirection;
+  EnvironmentSettings sky;
+  sky.kind = EnvironmentSettings::Kind::Gradient;
+  switch (look) {
+    case Look::Studio:  // a large soft box high on the left, a grey studio around
+      key.angleDegrees = 40;
+      key.intensity = {0.75f, 0.75f, 0.75f};
+      sky.zenith = {0.55f, 0.55f, 0.57f};
+      sky.horizon = {0.45f, 0.45f, 0.46f};
+      sky.ground = {0.25f, 0.25f, 0.25f};
+      break;
+    case Look::Sky:  // an overcast blue sky, a faint sun
+      key.angleDegrees = 15;
+      key.intensity = {0.3f, 0.29f, 0.27f};
+      sky.zenith = {0.45f, 0.6f, 0.9f};
+      sky.horizon = {0.85f, 0.88f, 0.92f};
+      sky.ground = {0.3f, 0.28f, 0.25f};
+      break;
+    case Look::Sun:  // a clear day: the sun's own half degree, a blue sky
+      key.angleDegrees = 0.53;
+      key.intensity = {1.0f, 0.96f, 0.9f};
+      sky.zenith = {0.2f, 0.3f, 0.55f};
+      sky.horizon = {0.45f, 0.5f, 0.6f};
+      sky.ground = {0.2f, 0.19f, 0.17f};
+      break;
+  }
+  description.lights.push_back(key);
+  description.environment = sky;
+}
+
+}  // namespace lancer

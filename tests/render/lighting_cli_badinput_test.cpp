@@ -1,0 +1,64 @@
+// The lighting options on the command line: --integrator, --noise, --look and --progressive, each
+// bad value with its message (ours: exit code 2; CLI11 names the choices of a closed list),
+// and a progressive render that ends with the image a plain render gives.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "support/cli.hpp"
+
+namespace lancer {
+namespace {
+
+const std::string kMesh = LANCER_TEST_DATA_DIR "/render/bracket_coarse.msh";
+
+std::string bytesOf(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(LightingCli, NoiseOutsideZeroToOneIsAnInputError) {
+  for (const char* noise : {"0", "1", "-0.5"}) {
+    const test::CommandResult result = test::runCli(
+        "render " + test::quoted(kMesh) + " -o /tmp/x.png --integrator path --noise " + noise + " 2>&1");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_TRUE(test::contains(result.output, "--noise must be greater than 0 and less than 1"))
+        << result.output;
+  }
+}
+
+TEST(LightingCli, UnknownIntegratorAndLookNameTheChoices) {
+  test::CommandResult result =
+      test::runCli("render " + test::quoted(kMesh) + " -o /tmp/x.png --integrator photon 2>&1");
+  EXPECT_NE(result.exitCode, 0);
+  EXPECT_TRUE(test::contains(result.output, "whitted")) << result.output;
+  result = test::runCli("render " + test::quoted(kMesh) + " -o /tmp/x.png --look noir 2>&1");
+  EXPECT_NE(result.exitCode, 0);
+  EXPECT_TRUE(test::contains(result.output, "studio")) << result.output;
+}
+
+TEST(LightingCli, ProgressiveNeedsASamplingIntegrator) {
+  const test::CommandResult result =
+      test::runCli("render " + test::quoted(kMesh) + " -o /tmp/x.png --progressive 1 2>&1");
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "--integrator path")) << result.output;
+}
+
+TEST(LightingCli, ProgressiveEndsWithThePlainImage) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "lancer_progressive_test";
+  std::filesystem::create_directories(folder);
+  const std::string common =
+      "render " + test::quoted(kMesh) + " --look sky --width 40 --height 30 --samples 8 -q";
+  ASSERT_EQ(test::runCli(common + " -o " + test::quoted((folder / "plain.png").string())).exitCode, 0);
+  ASSERT_EQ(
+      test::runCli(common + " --progressive 0.001 -o " + test::quoted((folder / "progressive.png").string()))
+          .exitCode,
+      0);
+  EXPECT_EQ(bytesOf(folder / "plain.png"), bytesOf(folder / "progressive.png"));
+  std::filesystem::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace lancer

@@ -1,0 +1,91 @@
+// Bad lighting input, each with the message the user sees: unknown integrator or light type, a
+// negative or non-finite intensity, a sun angle outside (0, 180), noise outside (0, 1), keys of
+// another light type, and environment maps that are missing, unreadable or not 2:1.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "lancer/scene/scene_loader.hpp"
+#include "support/input_errors.hpp"
+#include "support/test_scenes.hpp"
+
+namespace lancer {
+namespace {
+
+TEST(LightingKeys, UnknownIntegratorNamesTheChoices) {
+  test::expectSceneErrorContains("[render]\nintegrator = \"photon\"\n", "scene.toml:2");
+  test::expectSceneErrorContains("[render]\nintegrator = \"photon\"\n", "whitted");
+}
+
+TEST(LightingKeys, UnknownLightType) {
+  test::expectSceneErrorContains("[[light]]\ntype = \"spot\"\nposition = [0, 0, 0]\n", "scene.toml:2");
+  test::expectSceneErrorContains("[[light]]\ntype = \"spot\"\nposition = [0, 0, 0]\n", "sphere");
+}
+
+TEST(LightingKeys, NegativeOrNonFiniteIntensity) {
+  test::expectSceneErrorContains("[[light]]\nposition = [0, 0, 0]\nintensity = [1, -1, 1]\n", "scene.toml:3");
+  test::expectSceneErrorContains("[[light]]\nposition = [0, 0, 0]\nintensity = [1, inf, 1]\n", "finite");
+  test::expectSceneErrorContains("[[light]]\nposition = [0, 0, 0]\nintensity = [nan, 1, 1]\n",
+                                 "scene.toml:3");
+}
+
+TEST(LightingKeys, SunAngleOutsideZeroTo180) {
+  for (const char* angle : {"0", "180", "-5", "200"})
+    test::expectSceneErrorContains(
+        std::string("[[light]]\ntype = \"sun\"\ndirection = [0, 1, 0]\nangle = ") + angle + "\n",
+        "scene.toml:4");
+  test::expectSceneErrorContains("[[light]]\ntype = \"sun\"\n", "direction = [x, y, z]");
+}
+
+TEST(LightingKeys, KeysOfAnotherLightType) {
+  test::expectSceneErrorContains("[[light]]\nposition = [0, 0, 0]\nangle = 3\n", "sun lights");
+  test::expectSceneErrorContains("[[light]]\ntype = \"sphere\"\nposition = [0, 0, 0]\n", "radius");
+  test::expectSceneErrorContains("[[light]]\ntype = \"rect\"\nposition = [0, 0, 0]\nwidth = 1\n", "height");
+}
+
+TEST(LightingKeys, NoiseOutsideZeroToOne) {
+  for (const char* noise : {"0", "1", "-0.1", "2"})
+    test::expectSceneErrorContains(std::string("[render]\nnoise = ") + noise + "\n", "scene.toml:2");
+}
+
+TEST(LightingKeys, EnvironmentKindsAreExclusive) {
+  test::expectSceneErrorContains("[environment]\ncolor = [1, 1, 1]\nmap = \"sky.hdr\"\n", "give one of");
+}
+
+// buildScene's message for a description whose environment map is `file`.
+std::string mapErrorOf(const std::string& file) {
+  SceneDescription d = parseScene("[environment]\nmap = \"" + file + "\"\n", "scene.toml");
+  return test::messageOf([&] { buildScene(d, std::vector<Mesh>{}); });
+}
+
+TEST(LightingKeys, MissingMapNamesTheFileAndTheLine) {
+  const std::string message = mapErrorOf("/nonexistent/sky.hdr");
+  EXPECT_NE(message.find("scene.toml:2"), std::string::npos) << message;
+  EXPECT_NE(message.find("/nonexistent/sky.hdr"), std::string::npos) << message;
+}
+
+TEST(LightingKeys, UnreadableMapSaysWhatWasRead) {
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "lancer_not_a_map.hdr";
+  std::ofstream(file) << "P3\n2 2\n255\n";
+  const std::string message = mapErrorOf(file.string());
+  EXPECT_NE(message.find("P3"), std::string::npos) << message;
+  EXPECT_NE(message.find("#?RADIANCE"), std::string::npos) << message;
+  std::filesystem::remove(file);
+}
+
+TEST(LightingKeys, MapThatIsNotTwoToOne) {
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "lancer_square_map.hdr";
+  {
+    std::ofstream out(file, std::ios::binary);
+    out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 4\n";
+    for (int i = 0; i < 16; ++i) out << '\x80' << '\x80' << '\x80' << '\x80';
+  }
+  const std::string message = mapErrorOf(file.string());
+  EXPECT_NE(message.find("4 x 4"), std::string::npos) << message;
+  EXPECT_NE(message.find("twice as wide"), std::string::npos) << message;
+  std::filesystem::remove(file);
+}
+
+}  // namespace
+}  // namespace lancer
