@@ -310,6 +310,7 @@ Renderer::Renderer(const Scene& scene, const Accelerator& accelerator, const Cam
                    const RenderSettings& settings)
     : camera_(camera),
       settings_(settings),
+      queries_(scene, accelerator),
       integrator_(makeIntegrator<decltype(integrator_)>(scene, accelerator, camera, settings)) {}
 
 Rgba Renderer::renderPixel(int x, int y, TraceCounters& counters, std::uint64_t& samplesTraced) const {
@@ -334,7 +335,7 @@ FeatureBuffers Renderer::renderFeatures(int threads) const {
   const int n = std::clamp(static_cast<int>(std::lround(std::sqrt(static_cast<double>(settings.samples)))), 1,
                            kMaxFeatureGrid);
   const float weight = 1.0f / static_cast<float>(n * n);
-  const EdgePaint paint(tracer_.queries().scene(), camera_.pixelFootprint());
+  const EdgePaint paint(queries_.scene(), camera_.pixelFootprint());
   parallelFor(static_cast<std::size_t>(settings.height), threads, 4, [&](std::size_t row) {
     const int y = static_cast<int>(row);
     for (int x = 0; x < settings.width; ++x) {
@@ -346,7 +347,7 @@ FeatureBuffers Renderer::renderFeatures(int threads) const {
           float dx = 0.5f, dy = 0.5f;
           gridSampleOffset(settings.sampler, n, i, j, x, y, dx, dy);
           const SurfaceFeatures seen =
-              surfaceFeatures(tracer_.queries(), paint,
+              surfaceFeatures(queries_, paint,
                               camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy),
                               settings.background, settings.srgb);
           albedo += seen.albedo;

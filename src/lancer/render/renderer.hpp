@@ -105,6 +105,7 @@ class Renderer {
  private:
   const Camera& camera_;
   RenderSettings settings_;
+  SceneQueries queries_;  // the feature buffers' camera rays, whatever the integrator
   // The Whitted tracer keeps its own samplers (grid, adaptive) and packets; the others sample each
   // pixel with their sample streams (sample_sequence.hpp), `samples` each, or fewer with `noise`.
   std::variant<Tracer, PathIntegrator, AoIntegrator> integrator_;
