@@ -346,10 +346,9 @@ FeatureBuffers Renderer::renderFeatures(int threads) const {
         for (int i = 0; i < n; ++i) {
           float dx = 0.5f, dy = 0.5f;
           gridSampleOffset(settings.sampler, n, i, j, x, y, dx, dy);
-          const SurfaceFeatures seen =
-              surfaceFeatures(queries_, paint,
-                              camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy),
-                              settings.background, settings.srgb);
+          const SurfaceFeatures seen = surfaceFeatures(
+              queries_, paint, camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy),
+              settings.background, settings.srgb);
           albedo += seen.albedo;
           normal += seen.normal;
           if (seen.hit) {

@@ -28,10 +28,10 @@ struct ColorBy {
   int gmshIntervalsType = 2;
   int gmshNbIso = 10;
   bool showScale = true;
-  std::optional<std::string> title;                // the legend's; default: the field's name
-  std::string units;                               // the legend's, after the title
-  int bands = 0;                                   // > 0: that many discrete colour bands
-  std::optional<LegendPlacement> legend;           // legends in the picture; default: none
+  std::optional<std::string> title;       // the legend's; default: the field's name
+  std::string units;                      // the legend's, after the title
+  int bands = 0;                          // > 0: that many discrete colour bands
+  std::optional<LegendPlacement> legend;  // legends in the picture; default: none
 };
 
 // `isolines = { field = "T", count = 10 }` (or `values = [...]`) on a [[mesh]]: the curves where a

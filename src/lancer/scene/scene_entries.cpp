@@ -1,0 +1,115 @@
+#include "lancer/scene/scene_entries.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <utility>
+
+#include "lancer/scene/warp.hpp"
+#include "lancer/util/input_error.hpp"
+
+namespace lancer {
+namespace {
+
+// The undeformed shape beside a warped mesh: a faint glass-like copy ("ghost") or only its feature
+// edges on a surface that lets everything through ("edges"); neither is coloured nor cut.
+MeshInstance undeformedInstance(const MeshInstance& warped, std::vector<Material>& materials) {
+  MeshInstance copy = warped;
+  copy.warp.reset();
+  copy.colorBy.reset();
+  copy.isolines.reset();
+  copy.arrows.reset();
+  copy.groupMaterials.clear();
+  copy.undeformed = UndeformedStyle::None;
+  Material material;
+  material.name = "undeformed";
+  material.ka = material.kd = {0.8f, 0.8f, 0.85f};
+  material.ks = {0, 0, 0};
+  material.transparency = warped.undeformed == UndeformedStyle::Ghost ? 0.8f : 1.0f;
+  material.ior = 1;
+  materials.push_back(material);
+  copy.material = static_cast<int>(materials.size() - 1);
+  if (warped.undeformed == UndeformedStyle::Edges) {
+    EdgeSettings edges;
+    edges.featuresOnly = true;
+    edges.color = {0.25f, 0.25f, 0.25f};
+    copy.edges = edges;
+  } else {
+    copy.edges.reset();
+  }
+  return copy;
+}
+
+}  // namespace
+
+// Everything of a mesh but its fields: what a step's scene is built from (the fields stay with the
+// mesh as read, which holds every step).
+Mesh geometryOf(const Mesh& mesh) {
+  Mesh copy;
+  copy.origin = mesh.origin;
+  copy.positions = mesh.positions;
+  copy.faces = mesh.faces;
+  copy.facePhysicalTag = mesh.facePhysicalTag;
+  copy.faceEntityTag = mesh.faceEntityTag;
+  copy.faceEdgeMask = mesh.faceEdgeMask;
+  copy.volumeSides = mesh.volumeSides;
+  copy.physicalGroups = mesh.physicalGroups;
+  copy.extraPhysicalGroups = mesh.extraPhysicalGroups;
+  copy.source = mesh.source;
+  return copy;
+}
+
+// The meshes at description.when: colours resolved, warps applied (undeformed copies added after
+// their mesh). `fields[i]` holds mesh i's views; null: mesh i itself (read for this scene alone).
+std::vector<SceneEntry> sceneEntries(const SceneDescription& description, std::vector<Mesh> meshes,
+                                     const std::vector<const Mesh*>& fields, std::vector<Material>& materials,
+                                     std::vector<std::string>& warnings) {
+  // Colours first: meshes colouring by one field and map without a range of their own share the
+  // union of their ranges, so that a colour (and one legend) means one value on all of them.
+  std::vector<std::optional<ColorBy>> specs(meshes.size());
+  std::vector<std::optional<FieldColoring>> colorings(meshes.size());
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    specs[i] = description.meshes[i].colorBy;
+    if (specs[i])
+      colorings[i] = resolveColorBy(*specs[i], fields[i] ? *fields[i] : meshes[i], description.when);
+  }
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    if (!specs[i] || specs[i]->range || specs[i]->perStepRange) continue;
+    std::pair<double, double> range{colorings[i]->low, colorings[i]->high};
+    for (std::size_t j = 0; j < meshes.size(); ++j)
+      if (specs[j] && !specs[j]->range && !specs[j]->perStepRange && specs[j]->field == specs[i]->field &&
+          specs[j]->map == specs[i]->map) {
+        range.first = std::min(range.first, colorings[j]->low);
+        range.second = std::max(range.second, colorings[j]->high);
+      }
+    if (range.first != colorings[i]->low || range.second != colorings[i]->high) {
+      ColorBy shared = *specs[i];
+      shared.range = range;
+      colorings[i] = resolveColorBy(shared, fields[i] ? *fields[i] : meshes[i], description.when);
+    }
+  }
+  std::vector<SceneEntry> entries;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    const MeshInstance& instance = description.meshes[i];
+    SceneEntry entry{instance, std::move(meshes[i]), std::move(colorings[i]), specs[i], fields[i]};
+    const Mesh& source = fields[i] ? *fields[i] : entry.mesh;
+    std::optional<SceneEntry> undeformed;
+    if (instance.warp) {
+      if (instance.undeformed != UndeformedStyle::None)
+        undeformed = SceneEntry{undeformedInstance(instance, materials), geometryOf(entry.mesh), std::nullopt,
+                                std::nullopt, nullptr};
+      std::vector<float>* perFace = entry.coloring && entry.coloring->perFace ? &entry.coloring->t : nullptr;
+      const WarpReport report = warpMesh(entry.mesh, source, *instance.warp, description.when, perFace);
+      if (report.collapsedFaces)
+        warnings.push_back(formatInputWarning(
+            instance.warp->where,
+            fmt::format("{} of {}'s faces collapsed under the warp (factor {}) and were dropped",
+                        report.collapsedFaces, source.source.path, instance.warp->factor)));
+    }
+    entries.push_back(std::move(entry));
+    if (undeformed) entries.push_back(std::move(*undeformed));
+  }
+  return entries;
+}
+
+}  // namespace lancer
