@@ -26,6 +26,7 @@ SceneDescription squareScene(const std::string& meshKeys) {
 width = 96
 height = 96
 background = [0, 0, 0]
+encoding = "linear"  # the map's values as they are (sRGB output lights field colours in linear space)
 [camera]
 projection = "orthographic"
 position = [0.5, 0.5, 5]

@@ -16,9 +16,10 @@ namespace {
 
 using test::quoted;
 
-// `lancer render SCENE -q -o a.png --legend legend.png` with both outputs in `folder`.
+// `lancer render SCENE -q --linear -o a.png --legend legend.png` with both outputs in `folder` (linear:
+// the legend sheet compared value for value).
 test::CommandResult renderWithLegend(const std::string& scene, const test::ScratchFolder& folder) {
-  return test::runCli("render " + quoted(test::dataFile("render/" + scene)) + " -q -o " +
+  return test::runCli("render " + quoted(test::dataFile("render/" + scene)) + " -q --linear -o " +
                       quoted(folder.file("a.png")) + " --legend " + quoted(folder.file("legend.png")));
 }
 
