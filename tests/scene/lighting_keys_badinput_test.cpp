@@ -88,6 +88,22 @@ TEST(LightingKeys, MapThatIsNotTwoToOne) {
   std::filesystem::remove(file);
 }
 
+TEST(LightingKeys, KaInAPathSceneIsAWarning) {
+  const auto warningsOf = [](const std::string& text) {
+    SceneDescription d = parseScene(text, "scene.toml");
+    return buildScene(d, std::vector<Mesh>{}).warnings;
+  };
+  const std::vector<std::string> path =
+      warningsOf("[render]\nintegrator = \"path\"\n[material.m]\nka = [0.1, 0.1, 0.1]\n");
+  ASSERT_EQ(path.size(), 1u);
+  EXPECT_NE(path[0].find("scene.toml"), std::string::npos) << path[0];
+  EXPECT_NE(path[0].find("ka are not used by integrator = \"path\""), std::string::npos) << path[0];
+  EXPECT_EQ(warningsOf("[render]\nintegrator = \"path\"\n[ambient]\nintensity = [0.1, 0.1, 0.1]\n").size(),
+            1u);
+  EXPECT_TRUE(warningsOf("[material.m]\nka = [0.1, 0.1, 0.1]\n").empty());  // the Whitted model uses it
+  EXPECT_TRUE(warningsOf("[render]\nintegrator = \"path\"\n").empty());
+}
+
 TEST(LightingKeys, MissingExrMapNamesTheFileAndTheLine) {
   const std::string message = mapErrorOf("/nonexistent/sky.exr");
   EXPECT_NE(message.find("scene.toml:2"), std::string::npos) << message;
