@@ -1,5 +1,5 @@
 """Renders a lancer scene file with Blender Cycles, in lancer's units, for bench/cycles_compare.sh and the
-committed Cycles reference of tests/render/cycles_reference_slow_test.cpp (a development tool: lancer
+committed Cycles reference of tests/render/cycles_reference_test.cpp (a development tool: lancer
 never needs Blender to build, test or run).
 
   blender -b --factory-startup --python bench/cycles_scene.py -- SCENE.toml -o OUT.exr \
