@@ -14,7 +14,7 @@ namespace lancer {
 namespace {
 
 using namespace bvh;
-using namespace kd;
+using namespace accel;
 
 struct StackEntry {
   std::uint32_t child;
@@ -120,20 +120,9 @@ bool Bvh::anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) co
   return walk(nodes_, triangles_.data(), bounds_, magnitude_, ray, tMin, tMax, query);
 }
 
-bool Bvh::intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
-  return closestHit(ray, tMin, tMax, KeepEveryHit{}, hit);
-}
-
-bool Bvh::occluded(const Ray& ray, float tMin, float tMax) const {
-  return anyHit(ray, tMin, tMax, KeepEveryHit{});
-}
-
-bool Bvh::intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const {
-  return closestHit(ray, tMin, tMax, filter, hit);
-}
-
-bool Bvh::occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const {
-  return anyHit(ray, tMin, tMax, filter);
-}
+template bool Bvh::closestHit(const Ray&, float, float, const KeepEveryHit&, Hit&) const;
+template bool Bvh::closestHit(const Ray&, float, float, const HitFilter&, Hit&) const;
+template bool Bvh::anyHit(const Ray&, float, float, const KeepEveryHit&) const;
+template bool Bvh::anyHit(const Ray&, float, float, const HitFilter&) const;
 
 }  // namespace lancer
