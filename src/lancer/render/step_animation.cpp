@@ -80,6 +80,12 @@ void StepScenes::buildAt(double time) {
   const Stopwatch stopwatch;
   description_.when = StepSelection{std::nullopt, time, "the animation over steps"};
   const bool first = !scene_.has_value();
+  // The previous frame's scene goes before the next one is built (two scenes of a 1M-face mesh at
+  // once would raise the peak by one scene); its faces stay, to tell whether the next has the same.
+  std::vector<MeshFace> previousFaces;
+  if (scene_) previousFaces = std::move(scene_->geometry.faces);
+  scene_.reset();
+  builtTime_.reset();
   Scene next = buildSceneAt(description_, meshes_, threads_);
   // Every frame is framed alike: the camera and the orbit see the bounds of the whole animation.
   SceneGeometry& geometry = next.geometry;
@@ -92,11 +98,12 @@ void StepScenes::buildAt(double time) {
   // mesh with the same faces (none collapsed, none turned) moved its vertices only: the accelerator
   // is refitted where it can be (the BVH), else built again.
   const bool warped = anyWarp(description_);
-  const bool sameFaces = !first && scene_->geometry.faces.size() == geometry.faces.size() &&
-                         std::equal(geometry.faces.begin(), geometry.faces.end(),
-                                    scene_->geometry.faces.begin(), [](const MeshFace& a, const MeshFace& b) {
+  const bool sameFaces = !first && previousFaces.size() == geometry.faces.size() &&
+                         std::equal(geometry.faces.begin(), geometry.faces.end(), previousFaces.begin(),
+                                    [](const MeshFace& a, const MeshFace& b) {
                                       return std::equal(a.vertex, a.vertex + 4, b.vertex);
                                     });
+  previousFaces = {};
   scene_.emplace(std::move(next));
   const SceneGeometry& built = scene_->geometry;  // `geometry` was moved with `next`
   if (first || warped) {
@@ -106,6 +113,7 @@ void StepScenes::buildAt(double time) {
     if (sameFaces && accelerator_) {
       if (accelerator_->update(built.positions, built.faces, options)) ++refits_;
     } else {
+      accelerator_.reset();  // the old one goes first: one accelerator at a time
       accelerator_.emplace(Accelerator::build(built.positions, built.faces, accel_, options));
     }
     if (!first) accelSeconds_ += build.seconds();
