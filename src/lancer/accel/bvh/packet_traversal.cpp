@@ -5,12 +5,13 @@
 // the least (t, face) however found, a quad's halves are tested in order in one leaf), so every lane
 // gets the single ray's answer, to the bit. Unlike the kd-tree's packets, the rays need not run
 // the same way along each axis.
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <type_traits>
 
-#include "lancer/accel/bvh/box_test.hpp"
 #include "lancer/accel/bvh/bvh.hpp"
+#include "lancer/accel/bvh/walk.hpp"
 #include "lancer/accel/packet_frame.hpp"
 
 namespace lancer {
@@ -28,6 +29,7 @@ using namespace accel;
 struct PacketBoxes {
   __m256 lowEdge[3], highEdge[3];
   __m256 tMin, eps;
+  alignas(32) float laneEps[kPacketSize];  // eps, lane by lane (a lane left alone walks on its own)
 };
 
 // Sets up the lanes of `active` that meet the scene box (kept in `active`).
@@ -58,6 +60,7 @@ void setUpBoxes(const RayPacket& packet, std::uint32_t& active, const Aabb& boun
   }
   boxes.tMin = _mm256_load_ps(tMin);
   boxes.eps = _mm256_load_ps(eps);
+  std::copy(eps, eps + kPacketSize, boxes.laneEps);
 }
 
 struct alignas(32) PacketStackEntry {
@@ -68,15 +71,23 @@ struct alignas(32) PacketStackEntry {
 
 // Walks the tree with the lanes `active`; Query::test(tri, lanes) tests a triangle on some lanes and
 // returns those that are done (any-hit: blocked), Query::bound() is each lane's pruning distance.
-// Returns the lanes that are done.
-template <typename Query>
+// A lane left alone in a subtree finishes it on the single-ray walk (bvh/walk.hpp): one box test
+// for one ray instead of eight lanes for one, as the kd-tree's packets do; alone(child, lane) says
+// whether the lane is done. Returns the lanes that are done.
+template <typename Query, typename Alone>
 std::uint32_t walkPacket(std::span<const BvhNode> nodes, const PackedTriangle* triangles,
-                         const PacketFrame& f, const PacketBoxes& boxes, std::uint32_t active, Query& query) {
+                         const PacketFrame& f, const PacketBoxes& boxes, std::uint32_t active, Query& query,
+                         const Alone& alone) {
   PacketStackEntry stack[BvhNode::kMaxDepth * (BvhNode::kWidth - 1) + 1];
   int top = 0;
   std::uint32_t done = 0, lanes = active, child = 0;
   while (true) {
-    if (!BvhNode::isLeaf(child)) {
+    if ((lanes & (lanes - 1)) == 0) {
+      if (alone(child, std::countr_zero(lanes))) {
+        done |= lanes;
+        if ((active & ~done) == 0) return done;
+      }
+    } else if (!BvhNode::isLeaf(child)) {
       const BvhNode& node = nodes[child];
       const __m256 limit = _mm256_add_ps(query.bound(), boxes.eps);
       alignas(32) float tNear[BvhNode::kWidth][kPacketSize];
@@ -162,7 +173,16 @@ std::uint32_t Bvh::closestHits(const RayPacket& packet, std::uint32_t active, co
   std::uint32_t inBox = active;
   PacketBoxes boxes;
   setUpBoxes(packet, inBox, bounds_, magnitude_, boxes);
-  if (inBox != 0) walkPacket(nodes_, triangles_.data(), frame, boxes, inBox, query);
+  auto alone = [&](std::uint32_t start, int i) {
+    ClosestHit<Filter> single{query.best[i], query.upper[i], keeps};
+    walkFrom(start, nodes_, triangles_.data(), BoxRay(packet.ray[i], magnitude_), boxes.laneEps[i],
+             packet.ray[i], packet.tMin[i], packet.tMax[i], single);
+    query.best[i] = single.best;
+    query.upper[i] = single.upper;
+    query.bestT[i] = single.best.t;
+    return false;
+  };
+  if (inBox != 0) walkPacket(nodes_, triangles_.data(), frame, boxes, inBox, query, alone);
   return query.answer(active, hits);
 #else
   return closestHitsOneByOne(packet, active, keeps, hits);
@@ -183,7 +203,12 @@ std::uint32_t Bvh::anyHits(const RayPacket& packet, std::uint32_t active, const 
   loadPacketRays(packet, inBox, frame);
   PacketAnyHit<Filter> query{packet, frame, keeps, {}};
   query.start(inBox);
-  return blocked | walkPacket(nodes_, triangles_.data(), frame, boxes, inBox, query);
+  auto alone = [&](std::uint32_t start, int i) {
+    AnyHit<Filter> single{keeps};
+    return walkFrom(start, nodes_, triangles_.data(), BoxRay(packet.ray[i], magnitude_), boxes.laneEps[i],
+                    packet.ray[i], packet.tMin[i], packet.tMax[i], single);
+  };
+  return blocked | walkPacket(nodes_, triangles_.data(), frame, boxes, inBox, query, alone);
 #else
   return anyHitsOneByOne(packet, active, keeps);
 #endif
