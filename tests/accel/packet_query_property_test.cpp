@@ -198,6 +198,11 @@ TEST(PacketQueryProperty, GmshHoledBlockAndQuadBox) {
   expectSameAnswers(loadFixture("accel/quad_box.msh"), 5000, 16);
 }
 
+// A gmsh tutorial model as its authors wrote it (scripts/make_accel_fixtures.sh).
+TEST(PacketQueryProperty, GmshTutorialT5) {
+  expectSameAnswers(loadFixture("accel/gmsh_tutorial_t5.msh"), 4000, 17);
+}
+
 TEST(PacketQueryProperty, ClippedQueriesSeeThroughTheSameFaces) {
   // A sphere cut by two planes of its own inside a grid box: rays pass removed faces.
   Soup soup = test::sphere(24, 32, {2, 2, 2}, 1.5f);

@@ -1,8 +1,8 @@
 // Job arrays through the built CLI on the committed 4-frame turntable: numbered frames rendered as
 // shards (explicit, and --shard auto from faked SLURM variables) and assembled give the bytes of
 // `lancer animate -o` directly (GIF and APNG); --skip-existing resumes; a missing or foreign frame is
-// named; `render --shard` parts stitched by `assemble --tiles` are the single render's file, legends
-// in the picture included.
+// named; `render --shard` parts stitched by `assemble --tiles` are the single render's file, path
+// traced too and legends in the picture included.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -117,6 +117,28 @@ TEST(AssembleCli, RenderShardPartsStitchedAreTheSingleRender) {
                                        "/t.png.part-* -o " + quoted(folder.file("t.png")));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   expectSameFile(folder.file("t.png"), folder.file("direct.png"));
+}
+
+TEST(AssembleCli, PathTracedShardsAndThreadCountsGiveTheSameBytes) {
+  // The path tracer's samples come from per-pixel streams: one thread, two, or three job-array
+  // parts stitched write one file.
+  ScratchFolder folder;
+  const std::string look = " --look studio --samples 4 --noise 0.05 --tonemap filmic --width 40 --height 150";
+  ASSERT_EQ(
+      runCli("render -q " + kScene + look + " --threads 1 -o " + quoted(folder.file("one.png"))).exitCode, 0);
+  ASSERT_EQ(
+      runCli("render -q " + kScene + look + " --threads 2 -o " + quoted(folder.file("two.png"))).exitCode, 0);
+  expectSameFile(folder.file("two.png"), folder.file("one.png"));
+  for (const char* shard : {"0/3", "1/3", "2/3"})
+    ASSERT_EQ(
+        runCli("render -q " + kScene + look + " -o " + quoted(folder.file("t.png")) + " --shard " + shard)
+            .exitCode,
+        0);
+  ASSERT_EQ(runCli("assemble -q --tiles " + quoted(folder.path().string()) + "/t.png.part-* -o " +
+                   quoted(folder.file("t.png")))
+                .exitCode,
+            0);
+  expectSameFile(folder.file("t.png"), folder.file("one.png"));
 }
 
 TEST(AssembleCli, LegendsDrawnByTheShardsAreTheSingleRendersLegends) {

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "lancer/image/hdr_reader.hpp"
+#include "lancer/image/environment_map.hpp"
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/feature_edges.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
@@ -376,7 +376,7 @@ SceneEnvironment sceneEnvironment(const EnvironmentSettings& settings, const Vec
   if (settings.kind != EnvironmentSettings::Kind::Map) return environment;
   HdrImage image;
   try {
-    image = readRadianceHdr(settings.map);
+    image = readEnvironmentMap(settings.map);
   } catch (const InputError& error) {
     throw InputError(settings.where, fmt::format("environment.map: {}", error.message()));
   }
