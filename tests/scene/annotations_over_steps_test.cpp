@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lancer/mesh/msh_reader.hpp"
+#include "lancer/render/step_animation.hpp"
 #include "lancer/scene/arrows.hpp"
 #include "lancer/scene/isolines.hpp"
 #include "lancer/scene/scene.hpp"
@@ -126,6 +127,19 @@ TEST(AnnotationsOverSteps, TheScenesArrowsAreThoseOfItsStep) {
   EXPECT_EQ(first.fieldColors->legends.front().low, 1);
   EXPECT_EQ(first.fieldColors->legends.front().high, 2);
   EXPECT_EQ(second.fieldColors->legends.front().low, 1);
+}
+
+TEST(AnnotationsOverSteps, ArrowsAloneMakeAnAnimationOverSteps) {
+  SceneDescription description;
+  MeshInstance instance;
+  ArrowSpec spec;
+  spec.field = "velocity";
+  instance.arrows = spec;
+  description.meshes.push_back(instance);
+  const std::vector<Mesh> meshes{turningFlow()};
+  EXPECT_EQ(planStepFrames(description, meshes, AnimationSettings{}).times, (std::vector<double>{0, 1}));
+  description.meshes[0].arrows->step = 0;  // pinned: no steps to run through
+  EXPECT_THROW(planStepFrames(description, meshes, AnimationSettings{}), InputError);
 }
 
 TEST(AnnotationsOverSteps, IsolinesFollowTheStepWithValuesFixedOverTheSteps) {

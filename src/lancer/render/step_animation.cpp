@@ -29,6 +29,8 @@ StepFrames planStepFrames(const SceneDescription& description, const std::vector
     std::vector<std::string> views;
     if (instance.colorBy && !instance.colorBy->step) views.push_back(instance.colorBy->field);
     if (instance.warp) views.push_back(instance.warp->field);
+    if (instance.isolines && !instance.isolines->step) views.push_back(instance.isolines->field);
+    if (instance.arrows && !instance.arrows->step) views.push_back(instance.arrows->field);
     const std::vector<double> own = stepTimes(meshes[i], views);
     times.insert(times.end(), own.begin(), own.end());
   }
@@ -37,8 +39,9 @@ StepFrames planStepFrames(const SceneDescription& description, const std::vector
   if (times.empty())
     throw InputError(
         SourceLocation{description.path},
-        "an animation over steps needs a mesh coloured (color_by) or warped (warp) by a view of "
-        "its file; add color_by = { field = \"...\" } or warp = { field = \"...\" } to a [[mesh]]");
+        "an animation over steps needs a mesh coloured (color_by), warped (warp), with isolines or arrows "
+        "by a view of its file; add color_by = { field = \"...\" } or warp = { field = \"...\" } to a "
+        "[[mesh]]");
   StepFrames frames;
   if (!animation.framesGiven) {
     frames.times = times;
