@@ -29,12 +29,6 @@ std::vector<std::filesystem::path> exampleScenes() {
   return scenes;
 }
 
-bool sameBits(const Hit& a, const Hit& b) {
-  return a.face == b.face && std::bit_cast<std::uint32_t>(a.t) == std::bit_cast<std::uint32_t>(b.t) &&
-         std::bit_cast<std::uint32_t>(a.b1) == std::bit_cast<std::uint32_t>(b.b1) &&
-         std::bit_cast<std::uint32_t>(a.b2) == std::bit_cast<std::uint32_t>(b.b2);
-}
-
 TEST(AccelExamples, EveryExampleAnswersAsBruteForceAndRendersAlikeOnEveryTree) {
   const std::vector<std::filesystem::path> scenes = exampleScenes();
   ASSERT_GE(scenes.size(), 5u);
@@ -58,7 +52,7 @@ TEST(AccelExamples, EveryExampleAnswersAsBruteForceAndRendersAlikeOnEveryTree) {
       const bool expectHit = naive.intersect(r.ray, r.tMin, r.tMax, expected);
       hits += expectHit;
       const bool same = bvh.intersect(r.ray, r.tMin, r.tMax, actual) == expectHit &&
-                        (!expectHit || sameBits(actual, expected)) &&
+                        (!expectHit || test::sameBits(actual, expected)) &&
                         bvh.occluded(r.ray, r.tMin, r.tMax) == naive.occluded(r.ray, r.tMin, r.tMax);
       if (!same) ++differences;
     }

@@ -122,12 +122,6 @@ std::vector<Vec3> warped(const std::vector<Vec3>& positions, float amount) {
   return out;
 }
 
-bool sameBits(const Hit& a, const Hit& b) {
-  return a.face == b.face && std::bit_cast<std::uint32_t>(a.t) == std::bit_cast<std::uint32_t>(b.t) &&
-         std::bit_cast<std::uint32_t>(a.b1) == std::bit_cast<std::uint32_t>(b.b1) &&
-         std::bit_cast<std::uint32_t>(a.b2) == std::bit_cast<std::uint32_t>(b.b2);
-}
-
 TEST(Bvh, RefitAnswersAsARebuildAndBruteForce) {
   for (const std::string name : {"accel/holed_block.msh", "accel/quad_box.msh"}) {
     SCOPED_TRACE(name);
@@ -151,7 +145,8 @@ TEST(Bvh, RefitAnswersAsARebuildAndBruteForce) {
       const bool hitB = rebuilt.intersect(r.ray, r.tMin, r.tMax, b);
       const bool hitC = naive.intersect(r.ray, r.tMin, r.tMax, c);
       hits += hitA;
-      const bool same = hitA == hitB && hitA == hitC && (!hitA || (sameBits(a, b) && a.face == c.face)) &&
+      const bool same = hitA == hitB && hitA == hitC &&
+                        (!hitA || (test::sameBits(a, b) && a.face == c.face)) &&
                         refitted.occluded(r.ray, r.tMin, r.tMax) == rebuilt.occluded(r.ray, r.tMin, r.tMax);
       if (!same && ++differences <= 5) ADD_FAILURE() << "refit " << a.face << " rebuild " << b.face;
     }
@@ -246,9 +241,10 @@ TEST(Bvh, RaysAtItsOwnBoxesMatchBruteForce) {
         ++rays;
         bool same =
             bvh.intersect(ray, tMin, tMax, single) == expectHit && ((hitLanes >> i & 1u) != 0) == expectHit;
-        same = same && (!expectHit || (sameBits(single, expected) && sameBits(packetHits[i], expected)));
+        same = same &&
+               (!expectHit || (test::sameBits(single, expected) && test::sameBits(packetHits[i], expected)));
         same = same && ((filteredLanes >> i & 1u) != 0) == expectFiltered &&
-               (!expectFiltered || sameBits(filteredHits[i], expectedFiltered));
+               (!expectFiltered || test::sameBits(filteredHits[i], expectedFiltered));
         const bool expectOccluded = naive.occluded(ray, tMin, tMax);
         same = same && bvh.occluded(ray, tMin, tMax) == expectOccluded &&
                ((occludedLanes >> i & 1u) != 0) == expectOccluded &&
