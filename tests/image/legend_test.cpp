@@ -21,6 +21,8 @@ TEST(NiceTicks, RoundStepsInsideTheRange) {
   EXPECT_EQ(niceTicks(-1.5, 2.5).values, (std::vector<double>{-1, 0, 1, 2}));
   EXPECT_EQ(niceTicks(0, 350000).values, (std::vector<double>{0, 100000, 200000, 300000}));
   EXPECT_EQ(niceTicks(12.3, 87.6).step, 20);
+  // A horizontal legend asks for 4: a stress range of 0..240 gets 0, 100, 200, not only 0 and 200.
+  EXPECT_EQ(niceTicks(0, 240, 4).values, (std::vector<double>{0, 100, 200}));
   // Every tick a multiple of the step, 1, 2 or 5 times a power of ten, inside the range.
   for (const auto& [low, high] : std::vector<std::pair<double, double>>{
            {0.001, 0.0047}, {-273.15, 1200}, {1e5, 1.01e5}, {3.3, 3.4}, {-7e-6, 2e-6}, {0.9, 1.1}}) {

@@ -161,14 +161,17 @@ NiceTicks niceTicks(double low, double high, int targetCount) {
   targetCount = std::max(targetCount, 2);
   // Heckbert: a nice step for the range split into targetCount - 1 parts, then the multiples of it
   // that lie in [low, high] (the bar spans exactly the range, so ticks outside it are dropped).
+  // Heckbert's loose labelling would widen the range to the outer ticks; here a range such as
+  // 0..240 would keep only 0 and 200, so the step shrinks until three (or half the wanted) are there.
   double step = niceNumber(niceNumber(high - low, false) / (targetCount - 1), true);
   const double slack = 1e-9 * (high - low);
+  const std::size_t fewest = static_cast<std::size_t>(std::max(3, targetCount / 2));
   for (;;) {
     ticks.values.clear();
     const double first = std::ceil((low - slack) / step);
     for (double k = first; k * step <= high + slack; k += 1)
       ticks.values.push_back(k * step == 0 ? 0.0 : k * step);
-    if (ticks.values.size() >= 2) break;
+    if (ticks.values.size() >= fewest) break;
     step = smallerStep(step);
   }
   ticks.step = step;
