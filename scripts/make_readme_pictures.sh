@@ -16,3 +16,10 @@ out=docs/images
   --undeformed edges --width 480 --height 270 --samples 4 -o "$out/results_warp.png" --quiet
 "$lancer" render examples/meshes/bracket.msh --look studio --samples 64 --denoise --width 480 --height 360 \
   -o "$out/look_studio.png" --quiet
+# Results made by gmsh (scripts/make_result_examples.py writes examples/results/*.msh): a beam bent by
+# its displacement, coloured by von Mises stress with isolines and a legend; the same over its time
+# steps, labelled; arrows on a flow.
+"$lancer" render examples/results/beam.toml -o "$out/results_beam.png" --quiet
+"$lancer" animate examples/results/beam.toml --over steps --frames 20 --width 480 --height 270 \
+  -o "$out/results_beam.gif" --quiet
+"$lancer" render examples/results/flow.toml -o "$out/results_flow.png" --quiet

@@ -12,6 +12,7 @@
 #include "lancer/image/image_io.hpp"
 #include "lancer/image/image_row_writer.hpp"
 #include "lancer/image/legend.hpp"
+#include "lancer/render/denoiser.hpp"
 #include "lancer/render/progress_line.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -146,30 +147,52 @@ bool renderToFile(const PreparedRender& prepared, const Renderer& renderer, cons
 
 // --progressive: passes of 1, 2, 4, ... samples per pixel up to the scene's, each a whole image of
 // its own (per-pixel sample streams: the last pass is the image a plain render gives), written
-// (atomically) whenever `seconds` have passed since the last write, and at the end. False when
-// interrupted; the file then holds the last pass written.
-bool renderProgressive(const PreparedRender& prepared, const std::string& output, double seconds,
+// (atomically) whenever `seconds` have passed since the last write, and at the end, each through
+// the plain render's pipeline: the denoiser with the final render's feature buffers (made once),
+// the legends, the tone curve and encoding, or the EXR with its layers. False when interrupted;
+// the file then holds the last pass written.
+bool renderProgressive(const PreparedRender& prepared, const Renderer& finalRenderer,
+                       const std::string& output, double seconds, const ExrLayerChoice& aovs,
                        const RenderOptions& renderOptions, RenderStats& stats) {
   const RenderSettings& settings = prepared.description.render;
-  const ImageWriteOptions writeOptions = imageWriteOptions(settings);
+  const std::optional<FieldColors>& fields = prepared.scene.fieldColors;
+  const bool legends = fields && fields->legendPlacement != LegendPlacement::None;
+  std::optional<FeatureBuffers> features;
+  if (settings.denoise || aovs.any()) features = finalRenderer.renderFeatures(renderOptions.threads);
   RenderSettings pass = settings;
   Stopwatch sinceWrite;
   for (int samples = 1;; samples = std::min(2 * samples, settings.samples)) {
     pass.samples = samples;
     const Renderer renderer(prepared.scene, prepared.accelerator, prepared.camera, pass);
     RenderStats passStats;
-    const Image image = renderer.renderImage(renderOptions, &passStats);
+    Image image = renderer.renderImage(renderOptions, &passStats);
     stats.rays += passStats.rays;
     stats.seconds += passStats.seconds;
     stats.samplesPerPixel = passStats.samplesPerPixel;
     if (passStats.cancelled) return false;
     const bool last = samples >= settings.samples;
     if (last || sinceWrite.seconds() >= seconds) {
-      writeImage(output, image, writeOptions);
+      if (settings.denoise) {
+        DenoiseOptions denoiseOptions;
+        denoiseOptions.threads = renderOptions.threads;
+        image = denoise(image, *features, denoiseOptions);
+      }
+      if (legends) drawLegends(image, fields->legends, fields->legendPlacement, settings.srgb);
+      writeFinal(output, image, settings, aovs, features ? &*features : nullptr);
       sinceWrite = Stopwatch();
     }
     if (last) return true;
   }
+}
+
+// The part of the picture's legends in `rows`, the picture's rows from firstRow on: a task or a rank
+// draws its share, so the assembled picture is the one a single render draws.
+void drawLegendParts(const PreparedRender& prepared, Image& rows, int firstRow) {
+  const std::optional<FieldColors>& fields = prepared.scene.fieldColors;
+  const RenderSettings& settings = prepared.description.render;
+  if (fields)
+    drawLegendsInRows(rows, fields->legends, fields->legendPlacement, settings.srgb, settings.width,
+                      settings.height, firstRow);
 }
 
 // Renders the band items of a job-array task into its part file (atomically); false when interrupted.
@@ -195,10 +218,11 @@ bool renderPart(const PreparedRender& prepared, const Renderer& renderer, const 
   TilePartWriter part(path, header);
   for (const int item : mine) {
     RenderStats itemStats;
-    const Image rows = renderer.renderRows(items.item(item), renderOptions, &itemStats);
+    Image rows = renderer.renderRows(items.item(item), renderOptions, &itemStats);
     stats.rays += itemStats.rays;
     stats.seconds += itemStats.seconds;
     if (itemStats.cancelled) return false;  // ~part removes the temporary file
+    drawLegendParts(prepared, rows, items.item(item).first * kTileSize);
     part.writeItem(displayImage(rows, settings));
   }
   part.commit();
@@ -230,6 +254,7 @@ bool renderDistributed(const PreparedRender& prepared, const Renderer& renderer,
     RenderStats itemStats;
     Image rows = renderer.renderRows(items.item(item), renderOptions, &itemStats);
     stats.rays += itemStats.rays;
+    drawLegendParts(prepared, rows, items.item(item).first * kTileSize);
     return rows;
   };
   work.deliver = [&](int item, const Image& rows) {
@@ -316,7 +341,8 @@ int runRender(const RenderCommandOptions& options) {
     else if (distribution->ranks() > 1)
       written = renderDistributed(prepared, renderer, output, *distribution, renderOptions, stats);
     else if (options.progressive > 0)
-      written = renderProgressive(prepared, output, options.progressive, renderOptions, stats);
+      written =
+          renderProgressive(prepared, renderer, output, options.progressive, aovs, renderOptions, stats);
     else
       written = renderToFile(prepared, renderer, output, aovs, renderOptions, stats);
   } catch (const NonFiniteRenderError& e) {

@@ -1,7 +1,8 @@
 // Job arrays through the built CLI on the committed 4-frame turntable: numbered frames rendered as
 // shards (explicit, and --shard auto from faked SLURM variables) and assembled give the bytes of
 // `lancer animate -o` directly (GIF and APNG); --skip-existing resumes; a missing or foreign frame is
-// named; `render --shard` parts stitched by `assemble --tiles` are the single render's file.
+// named; `render --shard` parts stitched by `assemble --tiles` are the single render's file, path
+// traced too and legends in the picture included.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -116,6 +117,57 @@ TEST(AssembleCli, RenderShardPartsStitchedAreTheSingleRender) {
                                        "/t.png.part-* -o " + quoted(folder.file("t.png")));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   expectSameFile(folder.file("t.png"), folder.file("direct.png"));
+}
+
+TEST(AssembleCli, PathTracedShardsAndThreadCountsGiveTheSameBytes) {
+  // The path tracer's samples come from per-pixel streams: one thread, two, or three job-array
+  // parts stitched write one file.
+  ScratchFolder folder;
+  const std::string look = " --look studio --samples 4 --noise 0.05 --tonemap filmic --width 40 --height 150";
+  ASSERT_EQ(
+      runCli("render -q " + kScene + look + " --threads 1 -o " + quoted(folder.file("one.png"))).exitCode, 0);
+  ASSERT_EQ(
+      runCli("render -q " + kScene + look + " --threads 2 -o " + quoted(folder.file("two.png"))).exitCode, 0);
+  expectSameFile(folder.file("two.png"), folder.file("one.png"));
+  for (const char* shard : {"0/3", "1/3", "2/3"})
+    ASSERT_EQ(
+        runCli("render -q " + kScene + look + " -o " + quoted(folder.file("t.png")) + " --shard " + shard)
+            .exitCode,
+        0);
+  ASSERT_EQ(runCli("assemble -q --tiles " + quoted(folder.path().string()) + "/t.png.part-* -o " +
+                   quoted(folder.file("t.png")))
+                .exitCode,
+            0);
+  expectSameFile(folder.file("t.png"), folder.file("one.png"));
+}
+
+TEST(AssembleCli, LegendsDrawnByTheShardsAreTheSingleRendersLegends) {
+  // Each task draws the part of the legends that falls in its band items: a vertical legend (right)
+  // and gmsh's horizontal scale (--gmsh-view, ShowScale: bottom) straddle several tasks' rows.
+  ScratchFolder folder;
+  const std::string mesh = test::dataFile("results/cantilever.msh");
+  folder.write("legend.toml", "[[mesh]]\nfile = \"" + mesh +
+                                  "\"\ncolor_by = { field = \"stress\", component = \"von_mises\", title = "
+                                  "\"von Mises stress\", units = \"MPa\", legend = \"right\" }\n");
+  const std::string options = test::dataFile("results/cantilever.msh.opt");
+  for (const std::string& input :
+       {quoted(folder.file("legend.toml")), quoted(mesh) + " --gmsh-view " + quoted(options)}) {
+    const std::string size = " --width 120 --height 230";
+    ASSERT_EQ(runCli("render -q " + input + size + " -o " + quoted(folder.file("direct.png"))).exitCode, 0);
+    for (const char* shard : {"0/3", "1/3", "2/3"}) {
+      const test::CommandResult r =
+          runCli("render -q " + input + size + " -o " + quoted(folder.file("t.png")) + " --shard " + shard);
+      ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
+    const test::CommandResult r = runCli("assemble -q --tiles " + quoted(folder.path().string()) +
+                                         "/t.png.part-* -o " + quoted(folder.file("t.png")));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    expectSameFile(folder.file("t.png"), folder.file("direct.png"));
+    std::filesystem::remove(folder.file("t.png"));
+    for (const auto& entry : std::filesystem::directory_iterator(folder.path()))
+      if (entry.path().filename().string().rfind("t.png.part-", 0) == 0)
+        std::filesystem::remove(entry.path());
+  }
 }
 
 }  // namespace

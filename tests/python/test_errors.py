@@ -129,3 +129,16 @@ def test_threads_change_nothing_and_the_first_bad_row_is_reported():
     for call in (lambda: lancer.Mesh(points, faces, threads=-1), lambda: lancer.read_msh(str(BRACKET), threads=5000)):
         with pytest.raises(ValueError, match="threads=.* is out of range: use 0"):
             call()
+
+
+def test_bad_environment_map_is_an_input_error(tmp_path):
+    mesh_path = data("tests", "data", "render", "bracket_coarse.msh")
+    for name, content in (("missing.exr", None), ("text.exr", "P3\n2 2\n255\n")):
+        if content is not None:
+            (tmp_path / name).write_text(content)
+        scene = tmp_path / "scene.toml"
+        scene.write_text(f'[render]\nintegrator = "path"\n[[mesh]]\nfile = "{mesh_path}"\n'
+                         f'[environment]\nmap = "{name}"\n')
+        with pytest.raises(lancer.InputError) as caught:
+            lancer.render(lancer.Scene.load(str(scene)), width=8, height=8)
+        assert name in str(caught.value) and caught.value.line == 6

@@ -73,6 +73,16 @@ def test_uint8_is_srgb_encoded_by_default():
     assert np.max(np.abs(np.round(255 * srgb) - np.asarray(encoded, dtype=np.float64))) <= 1
 
 
+def test_path_float32_is_the_radiance_the_bytes_encode():
+    mesh = lancer.read_msh(str(BRACKET))
+    arguments = dict(width=40, height=30, integrator="path", samples=4, noise=0.05, denoise=True)
+    linear = lancer.render(mesh, dtype="float32", encoding="linear", **arguments)
+    encoded = lancer.render(mesh, encoding="linear", **arguments)
+    assert linear.shape == (30, 40, 4) and linear.dtype == np.float32 and np.all(np.isfinite(linear))
+    expected = np.round(255 * np.clip(linear[..., :3], 0, 1)).astype(np.uint8)
+    assert np.array_equal(expected, np.asarray(encoded))
+
+
 def test_encoding_tonemap_and_denoise_arguments(tmp_path):
     cli_path = tmp_path / "cli.png"
     run_cli("render", BRACKET, "-o", cli_path, "--width", 48, "--height", 36, "--tonemap", "aces", "--exposure",

@@ -60,5 +60,29 @@ TEST(LightingCli, ProgressiveEndsWithThePlainImage) {
   std::filesystem::remove_all(folder);
 }
 
+TEST(LightingCli, ProgressiveWritesThroughThePlainRendersPipeline) {
+  // Tone curve, exposure and the denoiser on a PNG, and an EXR with its layers: the last pass
+  // written is the plain render's file, byte for byte.
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "lancer_progressive_pipeline";
+  std::filesystem::create_directories(folder);
+  const std::string common =
+      "render " + test::quoted(kMesh) + " --look studio --width 40 --height 30 --samples 8 -q";
+  for (const std::string& variant : {std::string("--tonemap aces --exposure 0.7 --denoise -o {}.png"),
+                                     std::string("--denoise --aovs albedo,depth -o {}.exr")}) {
+    auto named = [&](const char* name) {
+      std::string command = variant;
+      return command.replace(command.find("{}"), 2, (folder / name).string());
+    };
+    ASSERT_EQ(test::runCli(common + " " + named("plain")).exitCode, 0) << variant;
+    ASSERT_EQ(test::runCli(common + " --progressive 0.000001 " + named("progressive")).exitCode, 0)
+        << variant;
+    const std::string extension = variant.substr(variant.size() - 4);
+    const std::string plain = bytesOf(folder / ("plain" + extension));
+    EXPECT_FALSE(plain.empty()) << variant;
+    EXPECT_EQ(plain, bytesOf(folder / ("progressive" + extension))) << variant;
+  }
+  std::filesystem::remove_all(folder);
+}
+
 }  // namespace
 }  // namespace lancer

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "lancer/image/exr_io.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "support/test_scenes.hpp"
 
@@ -81,6 +82,26 @@ TEST(PathIntegrator, ConstantHdrMapEqualsTheUniformEnvironment) {
     sum += pixel.g;
   });
   EXPECT_NEAR(sum / count, 0.6 * radiance, 0.005);
+  std::filesystem::remove(file);
+}
+
+TEST(PathIntegrator, ConstantExrMapEqualsTheUniformEnvironment) {
+  if (!exrSupported()) GTEST_SKIP() << "built without OpenEXR";
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "lancer_constant_map.exr";
+  Image map(16, 8);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 16; ++x) map.at(x, y) = Rgba{0.7f, 0.7f, 0.7f, 1.0f};
+  writeExr(file.string(), map);
+  SceneDescription d = sphereInEnvironment({1, 1, 1}, 16);
+  d.environment->kind = EnvironmentSettings::Kind::Map;
+  d.environment->map = file.string();
+  d.environment->rotationDegrees = -50;
+  double sum = 0;
+  const int count = forSpherePixels(renderSphere(d), 2.4, [&](const Rgba& pixel, double, double) {
+    EXPECT_NEAR(pixel.b, 0.6 * 0.7, 0.1);
+    sum += pixel.b;
+  });
+  EXPECT_NEAR(sum / count, 0.6 * 0.7, 0.005);
   std::filesystem::remove(file);
 }
 

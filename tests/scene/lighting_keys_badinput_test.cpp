@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "lancer/image/exr_io.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "support/input_errors.hpp"
 #include "support/test_scenes.hpp"
@@ -84,6 +85,57 @@ TEST(LightingKeys, MapThatIsNotTwoToOne) {
   const std::string message = mapErrorOf(file.string());
   EXPECT_NE(message.find("4 x 4"), std::string::npos) << message;
   EXPECT_NE(message.find("twice as wide"), std::string::npos) << message;
+  std::filesystem::remove(file);
+}
+
+TEST(LightingKeys, KaInAPathSceneIsAWarning) {
+  const auto warningsOf = [](const std::string& text) {
+    SceneDescription d = parseScene(text, "scene.toml");
+    return buildScene(d, std::vector<Mesh>{}).warnings;
+  };
+  const std::vector<std::string> path =
+      warningsOf("[render]\nintegrator = \"path\"\n[material.m]\nka = [0.1, 0.1, 0.1]\n");
+  ASSERT_EQ(path.size(), 1u);
+  EXPECT_NE(path[0].find("scene.toml"), std::string::npos) << path[0];
+  EXPECT_NE(path[0].find("ka are not used by integrator = \"path\""), std::string::npos) << path[0];
+  EXPECT_EQ(warningsOf("[render]\nintegrator = \"path\"\n[ambient]\nintensity = [0.1, 0.1, 0.1]\n").size(),
+            1u);
+  EXPECT_TRUE(warningsOf("[material.m]\nka = [0.1, 0.1, 0.1]\n").empty());  // the Whitted model uses it
+  EXPECT_TRUE(warningsOf("[render]\nintegrator = \"path\"\n").empty());
+}
+
+TEST(LightingKeys, MissingExrMapNamesTheFileAndTheLine) {
+  const std::string message = mapErrorOf("/nonexistent/sky.exr");
+  EXPECT_NE(message.find("scene.toml:2"), std::string::npos) << message;
+  EXPECT_NE(message.find("cannot open '/nonexistent/sky.exr'"), std::string::npos) << message;
+}
+
+TEST(LightingKeys, ExrMapThatIsNotAnExrSaysWhatWasRead) {
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "lancer_not_a_map.exr";
+  std::ofstream(file) << "P3\n2 2\n255\n";
+  const std::string message = mapErrorOf(file.string());
+  EXPECT_NE(message.find("is not an OpenEXR image"), std::string::npos) << message;
+  EXPECT_NE(message.find("50 33 0a 32"), std::string::npos) << message;  // "P3\n2"
+  EXPECT_NE(message.find("76 2f 31 01"), std::string::npos) << message;
+  std::ofstream(file, std::ios::trunc) << "v/";
+  EXPECT_NE(mapErrorOf(file.string()).find("2 bytes long"), std::string::npos);
+  std::filesystem::remove(file);
+}
+
+TEST(LightingKeys, ExrMapThatIsNotTwoToOneOrNotFinite) {
+  if (!exrSupported()) GTEST_SKIP() << "built without OpenEXR";
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "lancer_bad_map.exr";
+  writeExr(file.string(), Image(6, 4));
+  std::string message = mapErrorOf(file.string());
+  EXPECT_NE(message.find("6 x 4"), std::string::npos) << message;
+  EXPECT_NE(message.find("twice as wide"), std::string::npos) << message;
+  Image withNan(8, 4);
+  withNan.at(5, 2).g = std::nanf("");
+  writeExr(file.string(), withNan);
+  message = mapErrorOf(file.string());
+  EXPECT_NE(message.find("non-finite"), std::string::npos) << message;
+  EXPECT_NE(message.find("pixel (5, 2)"), std::string::npos) << message;
+  EXPECT_NE(message.find("scene.toml:2"), std::string::npos) << message;
   std::filesystem::remove(file);
 }
 

@@ -16,21 +16,6 @@ namespace {
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 constexpr int kRouletteFrom = 3;  // bounces before Russian roulette may end a path
 
-// The flat face of a capped clip plane, as the Whitted tracer's shadeCap builds it.
-SurfacePoint capPoint(const Scene& scene, const Ray& ray, const ClipPlane& plane, float t,
-                      std::uint32_t face) {
-  SurfacePoint cap{};
-  cap.face = face;
-  cap.position = ray.at(t);
-  cap.positionError = rayPointError(ray.origin, ray.direction, t);
-  cap.geometricNormal = cap.shadingNormal = plane.normal;
-  cap.normalSign = 1.0f;
-  cap.isCap = true;
-  const int corners = scene.geometry.faces[face].cornerCount();
-  for (int c = 0; c < corners; ++c) cap.cornerWeight[c] = 1.0f / static_cast<float>(corners);
-  return cap;
-}
-
 }  // namespace
 
 PathIntegrator::PathIntegrator(const Scene& scene, const Accelerator& accelerator,
@@ -38,6 +23,7 @@ PathIntegrator::PathIntegrator(const Scene& scene, const Accelerator& accelerato
     : scene_(scene),
       queries_(scene, accelerator),
       paint_(scene, camera, settings.width, settings.height),
+      emissive_(scene),
       background_(settings.background),
       maxBounces_(settings.maxBounces),
       sceneSize_(scene.geometry.bounds.empty() ? 1.0f : length(scene.geometry.bounds.extent())),
@@ -60,21 +46,29 @@ Vec3 PathIntegrator::escaped(const Vec3& origin, const Vec3& direction, float bs
 Vec3 PathIntegrator::directLight(const SurfacePoint& surface, const Vec3& shadowOrigin, const LocalBsdf& bsdf,
                                  float lobeChance, SampleStream& samples, TraceCounters& counters) const {
   Vec3 sum{0, 0, 0};
+  auto addLightSample = [&](const LightSample& sample) {
+    if (dot(surface.geometricNormal, sample.direction) <= 0.0f) return;
+    const Vec3 f = bsdf.eval(sample.direction);
+    if (maxComponent(f) <= 0.0f) return;
+    const Vec3 through = queries_.lightTransmission(shadowOrigin, sample.target, counters);
+    if (maxComponent(through) <= 0.0f) return;
+    const float weight =
+        sample.pdf > 0.0f ? powerHeuristic(sample.pdf, lobeChance * bsdf.pdf(sample.direction)) : 1.0f;
+    sum += f * sample.weight * through * (dot(surface.shadingNormal, sample.direction) * weight);
+  };
   // Each light gets its pair of dimensions whether or not it lights the point, so the dimensions
   // of a path do not depend on which lights are behind it.
   for (const SceneLight& light : scene_.appearance.lights) {
     float u, v;
     samples.next2D(u, v);
     LightSample sample;
-    if (!sampleLight(light, surface.position, u, v, sceneSize_, sample)) continue;
-    if (dot(surface.geometricNormal, sample.direction) <= 0.0f) continue;
-    const Vec3 f = bsdf.eval(sample.direction);
-    if (maxComponent(f) <= 0.0f) continue;
-    const Vec3 through = queries_.lightTransmission(shadowOrigin, sample.target, counters);
-    if (maxComponent(through) <= 0.0f) continue;
-    const float weight =
-        sample.pdf > 0.0f ? powerHeuristic(sample.pdf, lobeChance * bsdf.pdf(sample.direction)) : 1.0f;
-    sum += f * sample.weight * through * (dot(surface.shadingNormal, sample.direction) * weight);
+    if (sampleLight(light, surface.position, u, v, sceneSize_, sample)) addLightSample(sample);
+  }
+  if (!emissive_.empty()) {
+    float u, v;
+    samples.next2D(u, v);
+    LightSample sample;
+    if (emissive_.sample(surface.position, u, v, sample)) addLightSample(sample);
   }
   if (environment_.sampled()) {
     float u, v, pdf;
@@ -110,6 +104,17 @@ Vec3 PathIntegrator::shadeShadowCatcher(const Vec3& point, const Vec3& direction
     const Vec3 irradiance = sample.weight * cosTheta;
     lit += irradiance;
     shadowed += irradiance * queries_.lightTransmission(from, sample.target, counters);
+  }
+  if (!emissive_.empty()) {
+    float u, v;
+    samples.next2D(u, v);
+    LightSample sample;
+    const float cosTheta = emissive_.sample(point, u, v, sample) ? dot(normal, sample.direction) : 0.0f;
+    if (cosTheta > 0.0f) {
+      const Vec3 irradiance = sample.weight * cosTheta;
+      lit += irradiance;
+      shadowed += irradiance * queries_.lightTransmission(from, sample.target, counters);
+    }
   }
   if (!environment_.black()) {
     float u, v;
@@ -163,7 +168,7 @@ TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, Trac
 
     // The surface: a face (with the media it separates) or a cap (opaque, in the cut solid's material).
     const bool isCap = seen.kind == Sighting::Kind::kCap;
-    const SurfacePoint surface = isCap ? capPoint(scene_, ray, *seen.capPlane, seen.t, seen.hit.face)
+    const SurfacePoint surface = isCap ? makeCapPoint(scene_, ray, *seen.capPlane, seen.t, seen.hit.face)
                                        : makeSurfacePoint(scene_, ray, seen.hit);
     MediumCrossing media{SceneAppearance::kNoMaterial, SceneAppearance::kNoMaterial, seen.capMaterial};
     if (!isCap) {
@@ -176,7 +181,15 @@ TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, Trac
       if (maxComponent(absorption) > 0.0f) throughput *= beerLambert(absorption, distance);
     }
     const Material& material = scene_.appearance.materials[media.shown];
-    radiance += throughput * material.emission;
+    if (maxComponent(material.emission) > 0.0f) {
+      // Found by the material's sample: weighted against next-event estimation's choice of the point.
+      const float weight =
+          previousPdf > 0.0f && !isCap
+              ? powerHeuristic(previousPdf, emissive_.pdf(seen.hit.face, distance,
+                                                          std::abs(dot(surface.geometricNormal, direction))))
+              : 1.0f;
+      radiance += throughput * material.emission * weight;
+    }
     if (bounce >= maxBounces_) break;
 
     // The lobes: mirror and dielectric shares first (optics.hpp), the local lobe the rest.

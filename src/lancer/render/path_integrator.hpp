@@ -10,14 +10,15 @@
 // Whitted model's diffuse term kd I cos(theta) (light_sampling.hpp); a uniform environment of
 // radiance L gives kd L on a face nothing occludes. [ambient] and ka are not used: the
 // environment is the light from all around. Materials: bsdf.hpp. Faces of a material with
-// `emission` are lamps (found by the material's samples only). The shadow catcher, seen by camera
-// rays, shows the miss colour darkened by the ratio of the irradiance it gets with and without the
+// `emission` are lamps, sampled like the lights with area (emissive_faces.hpp). The shadow catcher, seen by
+// camera rays, shows the miss colour darkened by the ratio of the irradiance it gets with and without the
 // meshes in the way; rays past the first do not see it.
 #pragma once
 
 #include "lancer/accel/accelerator.hpp"
 #include "lancer/render/camera.hpp"
 #include "lancer/render/edge_paint.hpp"
+#include "lancer/render/emissive_faces.hpp"
 #include "lancer/render/environment_light.hpp"
 #include "lancer/render/integrator.hpp"
 #include "lancer/render/scene_queries.hpp"
@@ -53,6 +54,7 @@ class PathIntegrator {
   const Scene& scene_;
   SceneQueries queries_;
   EdgePaint paint_;
+  EmissiveFaces emissive_;
   EnvironmentLight environment_;
   Vec3 background_;
   int maxBounces_;

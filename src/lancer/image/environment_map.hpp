@@ -1,0 +1,16 @@
+// Equirectangular environment maps from either format users have: Radiance .hdr (hdr_reader.hpp) or
+// OpenEXR (exr_io.hpp), told apart by the file's first bytes, so the name's extension does not matter.
+#pragma once
+
+#include <string>
+
+#include "lancer/image/hdr_reader.hpp"
+
+namespace lancer {
+
+// The map's linear RGB radiance, row 0 at the top. Throws InputError naming the file and what was
+// read: missing or unreadable, neither format, an EXR with a non-finite value (negative values, a
+// filter's ringing, are read as 0). The 2:1 shape is the caller's check.
+HdrImage readEnvironmentMap(const std::string& path);
+
+}  // namespace lancer
