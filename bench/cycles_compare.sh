@@ -8,7 +8,8 @@
 #     then lancer at increasing samples until its RMSE against the reference is at most Cycles@64's,
 #     without and with --denoise; the time ratio lancer / Cycles.
 # RMSE: over every pixel and R, G, B, of linear float values (EXR), no clamp (bench/exr_compare).
-# Every render holds /tmp/lancer-build.lock (one render at a time, none beside a build).
+# Every render holds /tmp/lancer-build.lock (one render at a time, none beside a build), a section of
+# at most a few minutes at a time.
 #   bench/cycles_compare.sh [build-dir] [meshes]      e.g. bench/cycles_compare.sh build 10k,1m
 # Needs Blender (Debian's blender 3.4) and gmsh: development tools, never lancer's.
 set -euo pipefail
@@ -30,14 +31,20 @@ for mesh in cycles_floor ${meshes//,/ }; do
   fi
 done
 
+hold() { exec 9> "$lock" && flock 9; }  # the lock for a section of renders (no flock inside it)
+release() { flock -u 9 && exec 9>&-; }
+
 cycles() {  # SCENE OUT SAMPLES SEED
-  flock $lock blender -b --factory-startup --python "$here/cycles_scene.py" -- "$1" -o "$2" --samples "$3" \
+  blender -b --factory-startup --python "$here/cycles_scene.py" -- "$1" -o "$2" --samples "$3" \
     --seed "$4" --threads 2 2>&1 | grep 'cycles_scene.py' >&2
 }
 
 # Wall seconds of a whole command (process start to file), holding the lock.
 timed() {
-  flock $lock bash -c 'start=$(date +%s.%N); "$@" > /dev/null 2>&1; printf "%.2f\n" "$(echo "$(date +%s.%N) - $start" | bc)"' _ "$@"
+  local start
+  start=$(date +%s.%N)
+  "$@" > /dev/null 2>&1
+  printf "%.2f\n" "$(echo "$(date +%s.%N) - $start" | bc)"
 }
 
 median3() { printf '%s\n' "$@" | sort -g | sed -n 2p; }
@@ -48,8 +55,10 @@ echo "CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2) x $(nproc); $(bl
 echo
 echo "## Units (64 samples each; expected floor: uniform environment kd L = 0.4 0.42 0.42, sun kd I cos = 0.3 0.36 0.42)"
 for check in plane_env plane_sun; do
+  hold
   cycles "$here/cycles/$check.toml" "$data/$check-cycles.exr" 64 0
-  flock $lock "$lancer" render "$here/cycles/$check.toml" -o "$data/$check-lancer.exr" --samples 64 --threads 2 -q
+  "$lancer" render "$here/cycles/$check.toml" -o "$data/$check-lancer.exr" --samples 64 --threads 2 -q
+  release
   echo "$check: lancer $("$compare" stats "$data/$check-lancer.exr" | sed 's/.*mean/mean/')," \
     "Cycles $("$compare" stats "$data/$check-cycles.exr" | sed 's/.*mean/mean/')"
 done
@@ -60,7 +69,10 @@ for mesh in ${meshes//,/ }; do
   if [[ ! -f $ref ]]; then
     for seed in 1 2 3 4; do
       part=$data/bracket_${mesh}_ref1024_seed$seed.exr
-      [[ -f $part ]] || cycles "$scene" "$part" 1024 "$seed"
+      [[ -f $part ]] && continue
+      hold
+      cycles "$scene" "$part" 1024 "$seed"
+      release
     done
     "$compare" average "$ref" "$data"/bracket_${mesh}_ref1024_seed{1,2,3,4}.exr > /dev/null
   fi
@@ -70,28 +82,48 @@ for mesh in ${meshes//,/ }; do
     "$(rmse "$data/bracket_${mesh}_ref1024_seed1.exr" "$data/bracket_${mesh}_ref1024_seed2.exr") (1024 samples each)"
   cycles_out=$data/bracket_${mesh}_cycles64.exr
   c=()
+  hold
   for run in 1 2 3; do
     c+=("$(timed blender -b --factory-startup --python "$here/cycles_scene.py" -- "$scene" -o "$cycles_out" \
       --samples 64 --seed 7 --threads 2)")
   done
+  release
   cycles_time=$(median3 "${c[@]}")
   target=$(rmse "$cycles_out" "$ref")
   echo "Cycles 64 samples: RMSE $target, ${cycles_time} s (runs: ${c[*]})"
   echo "bias check, Cycles 64 against the reference:"
   "$compare" diff "$cycles_out" "$ref" | tail -n +2
   echo "bias check, lancer 256 samples against the reference:"
-  flock $lock "$lancer" render "$scene" -o "$data/bracket_${mesh}_lancer256.exr" --samples 256 --threads 2 -q
+  hold
+  "$lancer" render "$scene" -o "$data/bracket_${mesh}_lancer256.exr" --samples 256 --threads 2 -q
+  release
   "$compare" diff "$data/bracket_${mesh}_lancer256.exr" "$ref" | tail -n +2
 
   echo
   echo "| renderer | samples | time (s) | RMSE | time / Cycles@64 |"
   echo "|---|---|---|---|---|"
   echo "| Cycles | 64 | $cycles_time | $target | 1 |"
+  out=$data/bracket_${mesh}_lancer.exr
   for denoise in "" "--denoise"; do
+    hold
+    if [[ -z $denoise ]]; then
+      # RMSE falls as 1/sqrt(samples): start below the count 16 samples predict, then 8% steps.
+      "$lancer" render "$scene" -o "$out" --samples 16 --threads 2 -q
+      error=$(rmse "$out" "$ref")
+      start=$(echo "16 * 0.85 * ($error / $target)^2" | bc -l | cut -d. -f1)
+      count=${start:-1}
+      ((count >= 1)) || count=1
+      candidates=()
+      while ((count <= 1024)); do
+        candidates+=("$count")
+        count=$((count * 108 / 100 + 1))
+      done
+    else
+      candidates=(1 2 3 4 6 8 12 16 24 32 48 64 96 128)
+    fi
     found=""
-    for samples in 1 2 3 4 6 8 12 16 20 24 28 32 40 48 56 64 80 96 128 160 192 256; do
-      out=$data/bracket_${mesh}_lancer.exr
-      flock $lock "$lancer" render "$scene" -o "$out" --samples "$samples" --threads 2 -q $denoise
+    for samples in "${candidates[@]}"; do
+      "$lancer" render "$scene" -o "$out" --samples "$samples" --threads 2 -q $denoise
       error=$(rmse "$out" "$ref")
       echo "  lancer $denoise $samples samples: RMSE $error" >&2
       if (($(echo "$error <= $target" | bc -l))); then
@@ -100,13 +132,15 @@ for mesh in ${meshes//,/ }; do
       fi
     done
     if [[ -z $found ]]; then
-      echo "| lancer $denoise | > 256 | - | - | - |"
+      release
+      echo "| lancer $denoise | > ${candidates[-1]} | - | - | - |"
       continue
     fi
     t=()
     for run in 1 2 3; do
       t+=("$(timed "$lancer" render "$scene" -o "$out" --samples "$found" --threads 2 -q $denoise)")
     done
+    release
     lancer_time=$(median3 "${t[@]}")
     echo "| lancer $denoise | $found | $lancer_time | $error | $(echo "scale=3; $lancer_time / $cycles_time" | bc) |"
   done
