@@ -13,12 +13,12 @@ file="$here/data/bracket_$mesh.msh"
 echo "CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2) x $(nproc); load: $(cut -d' ' -f1-3 /proc/loadavg)"
 for threads in 1 2; do
   accel=$(LANCER_BENCH_MESHES=$mesh "$build/bench/kd_tree_bench" \
-    --benchmark_filter="trace/(bvh|kdtree-sah)/$mesh/incoherent/threads:$threads\$" 2>/dev/null |
-    awk '/_median/ {for (i = 1; i <= NF; ++i) if ($i ~ /Mrays/) {print $(i); exit}}')
+    --benchmark_filter="trace/bvh/$mesh/incoherent/threads:$threads\$" 2>/dev/null |
+    awk '/_median/ {for (i = 1; i <= NF; ++i) if ($i ~ /Mrays/) {sub(/Mrays_per_s=/, "", $(i)); print $(i); exit}}')
   [[ -n $accel ]] || accel=$(LANCER_BENCH_MESHES=$mesh "$build/bench/embree_compare_bench" \
     --benchmark_filter="trace/bvh/$mesh/incoherent/threads:$threads/" 2>/dev/null |
-    awk '/_median/ {for (i = 1; i <= NF; ++i) if ($i ~ /rays_per_s|Mrays/) {print $(i); exit}}')
+    awk '/_median/ {for (i = 1; i <= NF; ++i) if ($i ~ /rays_per_s|Mrays/) {sub(/Mrays_per_s=/, "", $(i)); print $(i); exit}}')
   path=$("$build/lancer" render "$file" --look studio --samples 16 --threads "$threads" --width 320 \
     --height 240 -o /tmp/lancer_path_overhead.png 2>&1 | sed -n 's/.*(\([0-9.]*\) Mrays\/s).*/\1/p')
-  echo "threads $threads: accelerator incoherent ${accel:-?} | path integrator (--look studio) $path Mrays/s"
+  echo "threads $threads: BVH incoherent ${accel:-?} Mrays/s | path integrator (--look studio) $path Mrays/s"
 done
