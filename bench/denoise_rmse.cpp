@@ -10,31 +10,16 @@
 #include <cstdlib>
 #include <exception>
 
+#include "lancer/image/image_difference.hpp"
 #include "lancer/render/denoiser.hpp"
-#include "lancer/render/pixel_sampler.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "lancer/util/stopwatch.hpp"
+#include "support/seeded_noise.hpp"
 
 namespace {
 
 using namespace lancer;
-
-// Box-Muller on the renderer's per-pixel hash: the same noise on every run and platform.
-float gaussian(int x, int y, int channel) {
-  const float u1 = std::max(sampleJitter(x, y, channel, 0), 1e-7f), u2 = sampleJitter(x, y, channel, 1);
-  return std::sqrt(-2.0f * std::log(u1)) * std::cos(6.2831853f * u2);
-}
-
-double rmse(const Image& a, const Image& b) {
-  double sum = 0;
-  for (int y = 0; y < a.height(); ++y)
-    for (int x = 0; x < a.width(); ++x) {
-      const Vec3 d = a.at(x, y).rgb() - b.at(x, y).rgb();
-      sum += dot(d, d) / 3.0;
-    }
-  return std::sqrt(sum / (static_cast<double>(a.width()) * a.height()));
-}
 
 int run(const char* scenePath, int threads) {
   const SceneDescription description = loadScene(scenePath);
@@ -56,22 +41,16 @@ int run(const char* scenePath, int threads) {
   std::printf(
       "| noise (deviation) | RMSE noisy | RMSE denoised | ratio | denoise s |\n|---|---|---|---|---|\n");
   for (const float sigma : {0.01f, 0.02f, 0.05f, 0.1f}) {
-    Image noisy = clean;
-    for (int y = 0; y < clean.height(); ++y)
-      for (int x = 0; x < clean.width(); ++x) {
-        Rgba& p = noisy.at(x, y);
-        p.r += sigma * gaussian(x, y, 0);
-        p.g += sigma * gaussian(x, y, 1);
-        p.b += sigma * gaussian(x, y, 2);
-      }
+    const Image noisy = test::withSeededNoise(clean, sigma);
     const Stopwatch time;
     const Image denoised = denoise(noisy, features, denoiseOptions);
     const double seconds = time.seconds();
-    const double before = rmse(noisy, clean), after = rmse(denoised, clean);
+    const double before = rootMeanSquareDifference(noisy, clean),
+                 after = rootMeanSquareDifference(denoised, clean);
     std::printf("| %.2f | %.4f | %.4f | %.2f | %.3f |\n", sigma, before, after, after / before, seconds);
   }
   std::printf("clean render denoised: RMSE %.5f against itself\n",
-              rmse(denoise(clean, features, denoiseOptions), clean));
+              rootMeanSquareDifference(denoise(clean, features, denoiseOptions), clean));
   return 0;
 }
 

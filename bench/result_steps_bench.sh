@@ -6,6 +6,8 @@
 #   bench/result_steps_bench.sh animate BUILD [N=707] [STEPS=5] [THREADS=2]
 #     `lancer animate --over steps` of the plate warped by the steps, 1280x720, 4 samples: the frames'
 #     time and the share the per-step scene and accelerator rebuilds take (the summary's last line).
+#   bench/result_steps_bench.sh memory BUILD [N=707] [STEPS=50] [THREADS=2]
+#     peak RSS (/usr/bin/time) of that animation over STEPS steps against a still of one step.
 set -euo pipefail
 mode=${1:?read or animate}
 build=$(realpath "${2:?build folder}")
@@ -40,7 +42,22 @@ elif [[ $mode == animate ]]; then
   /usr/bin/time -f "peak RSS %M KB, wall %e s" "$build/lancer" animate "$work/plate_${steps}steps.msh" --over steps \
     --warp displacement:20 --color-by displacement --width 1280 --height 720 --samples 4 --threads "$threads" \
     -o "$work/frame_%02d.png" 2>&1 | tr '\r' '\n' | grep -v "^  frame"
+elif [[ $mode == memory ]]; then
+  # Peak memory of the animation over STEPS warped steps against what it needs at least: a still of
+  # the same scene (one step) plus the steps' data it holds (4 bytes per node and component).
+  n=${3:-707}; steps=${4:-50}; threads=${5:-2}
+  /usr/bin/python3 "$here/make_result_steps.py" "$work/plate" "$n" "$steps"
+  rm -f "$work/plate_mesh.msh"
+  peak() { /usr/bin/time -f "%M" "$@" 2>&1 >/dev/null | tail -1; }
+  common=(--warp displacement:20 --color-by displacement --width 1280 --height 720 --samples 4 --threads "$threads" -q)
+  still=$(peak "$build/lancer" render "$work/plate_1step.msh" "${common[@]}" -o "$work/still.png")
+  anim=$(peak "$build/lancer" animate "$work/plate_${steps}steps.msh" --over steps "${common[@]}" -o "$work/frame_%02d.png")
+  nodes=$(( (n + 1) * (n + 1) ))
+  awk -v n="$n" -v s="$steps" -v st="$still" -v an="$anim" -v nodes="$nodes" 'BEGIN {
+    step = nodes * 3 * 4 / 1024
+    printf "plate %d triangles, %d nodes, %d steps (%.0f MB each as floats, %.0f MB all): still (1 step) %.0f MB peak RSS; animation %.0f MB; budget (still + 1 more step) %.0f MB; animation - still = %.0f MB\n",
+      2 * n * n, nodes, s, step / 1024, s * step / 1024, st / 1024, an / 1024, (st + step) / 1024, (an - st) / 1024 }'
 else
-  echo "usage: $0 read|animate BUILD [...]" >&2
+  echo "usage: $0 read|animate|memory BUILD [...]" >&2
   exit 2
 fi

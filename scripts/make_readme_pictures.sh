@@ -21,3 +21,10 @@ for look in studio sky sun; do
   "$lancer" render examples/meshes/bracket.msh --look "$look" --denoise --width 320 --height 240 \
     -o "$out/look_preset_$look.png" --quiet
 done
+# Results made by gmsh (scripts/make_result_examples.py writes examples/results/*.msh): a beam bent by
+# its displacement, coloured by von Mises stress with isolines and a legend; the same over its time
+# steps, labelled; arrows on a flow.
+"$lancer" render examples/results/beam.toml -o "$out/results_beam.png" --quiet
+"$lancer" animate examples/results/beam.toml --over steps --frames 20 --width 480 --height 270 \
+  -o "$out/results_beam.gif" --quiet
+"$lancer" render examples/results/flow.toml -o "$out/results_flow.png" --quiet

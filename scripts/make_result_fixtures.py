@@ -8,7 +8,8 @@ known in closed form at steps k = 0..3, time t_k = 0.5 k:
   "stress" (9 components per node): only sigma_xx = t (L - x) (y - H/2), the bending stress (its
       von Mises value is |sigma_xx|);
   "temperature" (1 component per element): 10 t + the element's tag mod 3.
-cantilever.msh holds all steps of all views (MSH 4.1, binary); steps/step_1.msh, step_2.msh,
+cantilever.msh holds all steps of all views (MSH 4.1, binary); cantilever.msh.opt, discrete.opt and
+hidden.opt are gmsh's options files for views set up in its GUI (VIEW_OPTIONS); steps/step_1.msh, step_2.msh,
 step_10.msh hold one step each of "displacement" (t = 1, 2 and 10 times 0.1), for patterns and
 natural sort.
 Run: /usr/bin/python3 scripts/make_result_fixtures.py
@@ -74,19 +75,34 @@ def write(path, views):
         gmsh.view.write(v, path, append=True)
 
 
+# The options files: cantilever.msh.opt (the displacement drawn as the deformed shape, x3, the
+# stress at step 2 on a custom range with iso-values, the temperature hidden), discrete.opt (the
+# stress in 5 filled bands without its scale) and hidden.opt (every view hidden).
+VIEW_OPTIONS = {
+    "cantilever.msh.opt": [("View[0].VectorType", 5), ("View[0].DisplacementFactor", 3), ("View[1].RangeType", 2),
+                           ("View[1].CustomMin", 1), ("View[1].CustomMax", 4), ("View[1].TimeStep", 2),
+                           ("View[1].IntervalsType", 1), ("View[1].NbIso", 8), ("View[2].Visible", 0),
+                           ("General.Trackball", 0), ("General.RotationX", 10)],
+    "discrete.opt": [("View[0].Visible", 0), ("View[1].IntervalsType", 3), ("View[1].NbIso", 5),
+                     ("View[1].ShowScale", 0), ("View[2].Visible", 0)],
+    "hidden.opt": [("View[0].Visible", 0), ("View[1].Visible", 0), ("View[2].Visible", 0)],
+}
+
+
 def write_view_options(root):
-    """cantilever.msh.opt as gmsh's "Save Model Options" writes it for a view set up in the GUI: the
-    displacement drawn as the deformed shape (x3), the stress at step 2 on a custom range with
-    iso-values, the temperature hidden. gmsh writes each view's FileName as an absolute path: those
-    lines are dropped (lancer does not read them; the file stays the same on every machine)."""
+    """Each options file as gmsh's "Save Model Options" writes it for views set up in the GUI. gmsh
+    writes each view's FileName as an absolute path: those lines are dropped (lancer does not read
+    them; the file stays the same on every machine)."""
+    for name, options in VIEW_OPTIONS.items():
+        write_options_file(root, name, options)
+
+
+def write_options_file(root, name, options):
     gmsh.initialize(["gmsh", "-v", "0"])
     gmsh.open(os.path.join(root, "cantilever.msh"))
-    for name, value in [("View[0].VectorType", 5), ("View[0].DisplacementFactor", 3), ("View[1].RangeType", 2),
-                        ("View[1].CustomMin", 1), ("View[1].CustomMax", 4), ("View[1].TimeStep", 2),
-                        ("View[1].IntervalsType", 1), ("View[1].NbIso", 8), ("View[2].Visible", 0),
-                        ("General.Trackball", 0), ("General.RotationX", 10)]:
-        gmsh.option.setNumber(name, value)
-    path = os.path.join(root, "cantilever.msh.opt")
+    for option, value in options:
+        gmsh.option.setNumber(option, value)
+    path = os.path.join(root, name)
     gmsh.write(path)
     gmsh.finalize()
     with open(path) as f:

@@ -99,6 +99,21 @@ int runAnimate(const AnimateCommandOptions& options) {
     steps.emplace(prepared.description, prepared.meshes, animation, parseAccelKind(options.overrides.accel),
                   options.overrides.threads);
     animation = steps->animation();
+    // The frames' scenes are the steps' own: the scene and accelerator prepareScene built go (its
+    // legends stay), so that one scene and one accelerator are held while the frames render.
+    prepared.scene.geometry = SceneGeometry{};
+    prepared.scene.appearance.faceMaterial = {};
+    prepared.scene.appearance.faceOuterMaterial = {};
+    prepared.scene.appearance.faceShading = {};
+    prepared.scene.edges.reset();
+    prepared.scene.isolines.reset();
+    if (prepared.scene.fieldColors) {
+      prepared.scene.fieldColors->vertexFieldT = {};
+      prepared.scene.fieldColors->faceFieldT = {};
+      prepared.scene.fieldColors->faceColorMap = {};
+      prepared.scene.fieldColors->faceBands = {};
+    }
+    prepared.accelerator = Accelerator::build({}, {}, parseAccelKind(options.overrides.accel));
   }
 
   // render.output names `lancer render`'s still image: an animation never writes over it unasked.
@@ -192,7 +207,8 @@ int runAnimate(const AnimateCommandOptions& options) {
                  "%s: %zu frames %dx%d, %zu faces, load %.3f s, build %.3f s (once), frames %.3f s "
                  "(%.3f s/frame%s)\n",
                  output.c_str(), frames.size(), settings.width, settings.height,
-                 prepared.scene.geometry.faces.size(), prepared.loadSeconds, prepared.buildSeconds, seconds,
+                 steps ? steps->faceCount() : prepared.scene.geometry.faces.size(), prepared.loadSeconds,
+                 prepared.buildSeconds, seconds,
                  frames.empty() ? 0.0 : seconds / static_cast<double>(frames.size()), speed.c_str());
   }
   if (steps && !options.overrides.quiet && steps->rebuilds() > 0)

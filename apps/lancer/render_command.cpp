@@ -185,6 +185,16 @@ bool renderProgressive(const PreparedRender& prepared, const Renderer& finalRend
   }
 }
 
+// The part of the picture's legends in `rows`, the picture's rows from firstRow on: a task or a rank
+// draws its share, so the assembled picture is the one a single render draws.
+void drawLegendParts(const PreparedRender& prepared, Image& rows, int firstRow) {
+  const std::optional<FieldColors>& fields = prepared.scene.fieldColors;
+  const RenderSettings& settings = prepared.description.render;
+  if (fields)
+    drawLegendsInRows(rows, fields->legends, fields->legendPlacement, settings.srgb, settings.width,
+                      settings.height, firstRow);
+}
+
 // Renders the band items of a job-array task into its part file (atomically); false when interrupted.
 bool renderPart(const PreparedRender& prepared, const Renderer& renderer, const std::string& output,
                 const ScheduledShard& shard, const RenderOptions& renderOptions, bool quiet,
@@ -208,10 +218,11 @@ bool renderPart(const PreparedRender& prepared, const Renderer& renderer, const 
   TilePartWriter part(path, header);
   for (const int item : mine) {
     RenderStats itemStats;
-    const Image rows = renderer.renderRows(items.item(item), renderOptions, &itemStats);
+    Image rows = renderer.renderRows(items.item(item), renderOptions, &itemStats);
     stats.rays += itemStats.rays;
     stats.seconds += itemStats.seconds;
     if (itemStats.cancelled) return false;  // ~part removes the temporary file
+    drawLegendParts(prepared, rows, items.item(item).first * kTileSize);
     part.writeItem(displayImage(rows, settings));
   }
   part.commit();
@@ -243,6 +254,7 @@ bool renderDistributed(const PreparedRender& prepared, const Renderer& renderer,
     RenderStats itemStats;
     Image rows = renderer.renderRows(items.item(item), renderOptions, &itemStats);
     stats.rays += itemStats.rays;
+    drawLegendParts(prepared, rows, items.item(item).first * kTileSize);
     return rows;
   };
   work.deliver = [&](int item, const Image& rows) {

@@ -73,7 +73,9 @@ void animate(const py::object& target, const std::string& output, const RenderAr
   AnimationStats stats;
   {
     py::gil_scoped_release release;
-    const auto deliver = [&](int frame, const Image& image) {
+    const auto deliver = [&](int frame, const Image& rendered) {
+      Image image = rendered;
+      drawSceneLegends(image, prepared);
       writer.addFrame(frame, writer.takesRadiance() ? image : displayImage(image, settings));
     };
     if (steps) {

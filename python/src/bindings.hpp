@@ -6,6 +6,8 @@
 #include <pybind11/pybind11.h>
 
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "lancer/mesh/mesh.hpp"
 #include "lancer/scene/scene_description.hpp"
@@ -25,6 +27,17 @@ struct PythonScene {
 // The quick look of a mesh, as `lancer render part.msh` makes it.
 PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh);
 PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh, std::optional<UpAxis> up);
+
+// Scene.quick_look's keywords for results, each None when not given: color_by as a dict of the
+// scene file's keys (a field's name is read apart, with color_map=, color_range=, component=),
+// isolines and arrows (a field's name or a dict), legend ('right', 'bottom' or 'none').
+struct ResultKeywords {
+  std::optional<py::object> colorBy, isolines, arrows;
+  std::optional<std::string> legend;
+};
+// Reads them into the instance through the scene loader's readers (result_arguments.cpp): a bad
+// value is an InputError with the scene file's message, a bad type a TypeError.
+void applyResultKeywords(MeshInstance& instance, const ResultKeywords& keywords);
 
 // A threads= argument: 0 (every core) to kMaxThreads, else a ValueError saying so.
 void requireThreads(int threads);

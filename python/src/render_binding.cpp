@@ -172,6 +172,7 @@ void bindRender(py::module_& module) {
           throw InputError(SourceLocation{prepared.description.path}, e.what());
         }
         render.finish();
+        drawSceneLegends(image, prepared);
         py::dict info;
         info["srgb"] = settings.srgb;
         info["seconds"] = stats.seconds;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "lancer/image/legend.hpp"
 #include "lancer/render/render_preparation.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/render_overrides.hpp"
@@ -41,6 +42,13 @@ PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides
 
 // The two places that read Scene's fields, kept here so that a change to Scene's layout touches one file.
 inline const std::vector<std::string>& sceneWarnings(const Scene& scene) { return scene.warnings; }
+
+// The legends the scene asks for (color_by's `legend`, legend=), drawn into a rendered picture as
+// `lancer render` and `lancer animate` draw them.
+inline void drawSceneLegends(Image& image, const PreparedRender& prepared) {
+  if (const std::optional<FieldColors>& fields = prepared.scene.fieldColors)
+    drawLegends(image, fields->legends, fields->legendPlacement, prepared.description.render.srgb);
+}
 inline std::size_t sceneLightCount(const Scene& scene) { return scene.appearance.lights.size(); }
 
 // Render options whose progress callback runs Python's signal handlers: a KeyboardInterrupt sets the

@@ -184,9 +184,10 @@ void bindScene(py::module_& module) {
       .def_static(
           "quick_look",
           [](std::shared_ptr<const Mesh> mesh, const std::optional<std::string>& up,
-             const std::optional<std::string>& colorBy, const std::string& colorMap,
+             const py::object& colorBy, const std::string& colorMap,
              const std::optional<std::pair<double, double>>& colorRange, const std::optional<int>& step,
-             const py::object& warp, const std::string& component, const std::string& undeformed) {
+             const py::object& warp, const std::string& component, const std::string& undeformed,
+             const py::object& isolines, const py::object& arrows, const std::optional<std::string>& legend) {
             if (step && *step < 0)
               throw py::value_error(fmt::format("step={}: a field's steps count from 0", *step));
             if (undeformed != "none" && undeformed != "edges" && undeformed != "ghost")
@@ -194,7 +195,25 @@ void bindScene(py::module_& module) {
                   fmt::format("undeformed='{}': use 'none', 'edges' or 'ghost'", undeformed));
             PythonScene scene = quickLookOf(std::move(mesh), upAxisArgument(up));
             MeshInstance& instance = scene.description.meshes.front();
-            if (colorBy) instance.colorBy = colorByArgument(*colorBy, colorMap, colorRange, component);
+            if (py::isinstance<py::str>(colorBy)) {
+              instance.colorBy =
+                  colorByArgument(colorBy.cast<std::string>(), colorMap, colorRange, component);
+            } else if (!colorBy.is_none()) {
+              if (!py::isinstance<py::dict>(colorBy))
+                throw py::type_error(
+                    "color_by= takes a field's name or a dict of the scene file's color_by keys, "
+                    "e.g. {'field': 'stress', 'title': 'von Mises stress', 'units': 'MPa'}");
+              if (colorMap != "viridis" || colorRange || component != "magnitude")
+                throw py::value_error(
+                    "color_by as a dict holds its own 'map', 'range' and 'component': put them "
+                    "in it instead of color_map=, color_range=, component=");
+            }
+            ResultKeywords keywords;
+            if (py::isinstance<py::dict>(colorBy)) keywords.colorBy = colorBy;
+            keywords.isolines = isolines;
+            keywords.arrows = arrows;
+            keywords.legend = legend;
+            applyResultKeywords(instance, keywords);
             if (!warp.is_none()) {
               instance.warp = warpArgument(warp);
               instance.undeformed = undeformed == "edges"   ? UndeformedStyle::Edges
@@ -207,13 +226,18 @@ void bindScene(py::module_& module) {
           py::arg("mesh"), py::arg("up") = py::none(), py::kw_only(), py::arg("color_by") = py::none(),
           py::arg("color_map") = "viridis", py::arg("color_range") = py::none(), py::arg("step") = py::none(),
           py::arg("warp") = py::none(), py::arg("component") = "magnitude", py::arg("undeformed") = "none",
+          py::arg("isolines") = py::none(), py::arg("arrows") = py::none(), py::arg("legend") = py::none(),
           "The scene `lancer render part.msh` makes of a bare mesh (up: 'x', 'y', 'z', '-x', ...; None: "
           "guessed); color_by names one of mesh.fields to colour it by, as a scene file's color_by "
           "(color_map 'viridis', 'magma', 'coolwarm' or 'grey'; color_range (low, high), default the "
           "field's range over every step; component 'magnitude', 'x', 'y', 'z', '0'-'8' or 'von_mises'); "
           "warp 'displacement' or ('displacement', factor) draws the shape moved by that node vector "
           "(undeformed 'edges' or 'ghost' shows the shape before); step: the time step shown (default "
-          "the first)")
+          "the first). color_by may also be a dict of the scene file's color_by keys ({'field': 'stress', "
+          "'component': 'von_mises', 'title': 'von Mises stress', 'units': 'MPa', 'bands': 8}); isolines "
+          "and arrows a field's name or a dict of their scene keys ({'field': 'T', 'count': 12, 'color': "
+          "[0, 0, 0], 'width': 1.5}, {'field': 'velocity', 'max_count': 300}); legend 'right', 'bottom' "
+          "or 'none' draws the colours' legend into the picture")
       .def_property(
           "camera", [](const PythonScene& scene) { return scene.description.camera; },
           [](PythonScene& scene, const CameraSettings& camera) {

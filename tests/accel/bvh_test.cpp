@@ -1,13 +1,16 @@
-// The BVH's own guarantees (its answers against brute force are in kd_tree_property_test.cpp and
-// packet_query_property_test.cpp, with every accelerator): the layout's invariants, the same tree on
-// any thread count, refit answering as a rebuild, and the rule for when a rebuild pays.
+// The BVH's own guarantees (its answers against brute force on rays aimed at kd split planes are in
+// kd_tree_property_test.cpp and packet_query_property_test.cpp, with every accelerator): rays aimed
+// at its own boxes, the layout's invariants, the same tree on any thread count, refit answering as a
+// rebuild, and the rule for when a rebuild pays.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "lancer/accel/accelerator.hpp"
 #include "lancer/accel/naive_accel.hpp"
@@ -119,12 +122,6 @@ std::vector<Vec3> warped(const std::vector<Vec3>& positions, float amount) {
   return out;
 }
 
-bool sameBits(const Hit& a, const Hit& b) {
-  return a.face == b.face && std::bit_cast<std::uint32_t>(a.t) == std::bit_cast<std::uint32_t>(b.t) &&
-         std::bit_cast<std::uint32_t>(a.b1) == std::bit_cast<std::uint32_t>(b.b1) &&
-         std::bit_cast<std::uint32_t>(a.b2) == std::bit_cast<std::uint32_t>(b.b2);
-}
-
 TEST(Bvh, RefitAnswersAsARebuildAndBruteForce) {
   for (const std::string name : {"accel/holed_block.msh", "accel/quad_box.msh"}) {
     SCOPED_TRACE(name);
@@ -148,13 +145,118 @@ TEST(Bvh, RefitAnswersAsARebuildAndBruteForce) {
       const bool hitB = rebuilt.intersect(r.ray, r.tMin, r.tMax, b);
       const bool hitC = naive.intersect(r.ray, r.tMin, r.tMax, c);
       hits += hitA;
-      const bool same = hitA == hitB && hitA == hitC && (!hitA || (sameBits(a, b) && a.face == c.face)) &&
+      const bool same = hitA == hitB && hitA == hitC &&
+                        (!hitA || (test::sameBits(a, b) && a.face == c.face)) &&
                         refitted.occluded(r.ray, r.tMin, r.tMax) == rebuilt.occluded(r.ray, r.tMin, r.tMax);
       if (!same && ++differences <= 5) ADD_FAILURE() << "refit " << a.face << " rebuild " << b.face;
     }
     EXPECT_EQ(differences, 0);
     EXPECT_GT(hits, 1000);
     EXPECT_GT(refitted.sahGrowth(), 0.5);
+  }
+}
+
+// The boxes of every child of every node (the BVH's planes, as the kd-tree's split planes are the
+// kd-tree's).
+std::vector<Aabb> childBoxes(const Bvh& bvh) {
+  std::vector<Aabb> boxes;
+  for (const BvhNode& node : bvh.nodes()) {
+    for (int k = 0; k < BvhNode::kWidth && node.child[k] != BvhNode::kEmpty; ++k) {
+      boxes.push_back({{node.lower[0][k], node.lower[1][k], node.lower[2][k]},
+                       {node.upper[0][k], node.upper[1][k], node.upper[2][k]}});
+    }
+  }
+  return boxes;
+}
+
+// Packets of eight rays aimed at the BVH's own boxes: from inside a box in random directions, from
+// outside at a box's eight corners, lying in a box's face plane parallel to it, along a box's edges,
+// and with intervals that end on a corner. Every lane of every query, packet or single, with and
+// without a filter, equals brute force (the hit bit for bit).
+TEST(Bvh, RaysAtItsOwnBoxesMatchBruteForce) {
+  for (const std::string name :
+       {"accel/holed_block.msh", "accel/quad_box.msh", "accel/gmsh_tutorial_t5.msh"}) {
+    SCOPED_TRACE(name);
+    const Soup soup = fixture(name);
+    const Bvh bvh = Bvh::build(soup.positions, soup.faces, onThreads(2));
+    const NaiveAccel naive(soup.positions, soup.faces);
+    const std::vector<Aabb> boxes = childBoxes(bvh);
+    ASSERT_GT(boxes.size(), 100u);
+    Aabb scene;
+    for (const Vec3& p : soup.positions) scene.extend(p);
+    const Vec3 pad = scene.extent() * 0.5f;
+    std::mt19937 rng(23);
+    std::uniform_int_distribution<std::size_t> anyBox(0, boxes.size() - 1);
+    // Refuses every third face: the filtered queries see through them.
+    const HitFilter everyThird{
+        nullptr, [](const void*, const Ray&, std::uint32_t face, float) { return face % 3 != 0; }};
+    int differences = 0, hits = 0, rays = 0;
+    for (int p = 0; p < 600; ++p) {
+      const Aabb& box = boxes[anyBox(rng)];
+      const int variant = p % 5;
+      RayPacket packet;
+      for (int i = 0; i < kPacketSize; ++i) {
+        const Vec3 corner{i & 1 ? box.upper.x : box.lower.x, i & 2 ? box.upper.y : box.lower.y,
+                          i & 4 ? box.upper.z : box.lower.z};
+        Vec3 origin = test::randomPoint(rng, scene.lower - pad, scene.upper + pad), direction;
+        packet.tMin[i] = 0.0f;
+        packet.tMax[i] = 1e30f;
+        if (variant == 0) {  // inside the box
+          origin = test::randomPoint(rng, box.lower, box.upper);
+          direction = test::randomDirection(rng);
+        } else if (variant == 1) {  // at a corner, the interval ending on it for half the lanes
+          direction = corner - origin;
+          if (i % 2 == 1) packet.tMax[i] = 1.0f;
+        } else if (variant == 2) {  // in a face plane, parallel to it
+          const int axis = static_cast<int>(rng() % 3);
+          origin[axis] = i % 2 == 0 ? box.lower[axis] : box.upper[axis];
+          direction = test::randomDirection(rng);
+          direction[axis] = 0.0f;
+          if (dot(direction, direction) == 0.0f) direction[(axis + 1) % 3] = 1.0f;
+        } else if (variant == 3) {  // along an edge, axis-parallel
+          const int axis = static_cast<int>(rng() % 3);
+          origin = corner;
+          origin[axis] = i % 2 == 0 ? scene.lower[axis] - pad[axis] : scene.upper[axis] + pad[axis];
+          direction = Vec3{0, 0, 0};
+          direction[axis] = i % 2 == 0 ? 1.0f : -1.0f;
+        } else {  // a coherent bundle through the box, starting past its near side
+          origin = box.lower - pad * 0.25f;
+          direction = test::randomPoint(rng, box.lower, box.upper) - origin;
+          packet.tMin[i] = 0.5f;
+        }
+        new (&packet.ray[i]) Ray(origin, direction);
+      }
+      std::array<Hit, kPacketSize> packetHits, filteredHits;
+      const std::uint32_t hitLanes = bvh.intersect(packet, kAllLanes, packetHits);
+      const std::uint32_t occludedLanes = bvh.occluded(packet, kAllLanes);
+      const std::uint32_t filteredLanes = bvh.intersect(packet, kAllLanes, everyThird, filteredHits);
+      const std::uint32_t filteredOccluded = bvh.occluded(packet, kAllLanes, everyThird);
+      for (int i = 0; i < kPacketSize; ++i) {
+        const Ray& ray = packet.ray[i];
+        const float tMin = packet.tMin[i], tMax = packet.tMax[i];
+        Hit expected, single, expectedFiltered;
+        const bool expectHit = naive.intersect(ray, tMin, tMax, expected);
+        const bool expectFiltered = naive.intersect(ray, tMin, tMax, everyThird, expectedFiltered);
+        hits += expectHit;
+        ++rays;
+        bool same =
+            bvh.intersect(ray, tMin, tMax, single) == expectHit && ((hitLanes >> i & 1u) != 0) == expectHit;
+        same = same &&
+               (!expectHit || (test::sameBits(single, expected) && test::sameBits(packetHits[i], expected)));
+        same = same && ((filteredLanes >> i & 1u) != 0) == expectFiltered &&
+               (!expectFiltered || test::sameBits(filteredHits[i], expectedFiltered));
+        const bool expectOccluded = naive.occluded(ray, tMin, tMax);
+        same = same && bvh.occluded(ray, tMin, tMax) == expectOccluded &&
+               ((occludedLanes >> i & 1u) != 0) == expectOccluded &&
+               ((filteredOccluded >> i & 1u) != 0) == naive.occluded(ray, tMin, tMax, everyThird);
+        if (!same && ++differences <= 5) {
+          ADD_FAILURE() << "packet " << p << " lane " << i << " (variant " << variant << "): brute force "
+                        << (expectHit ? std::to_string(expected.face) : "miss");
+        }
+      }
+    }
+    EXPECT_EQ(differences, 0) << "of " << rays << " rays";
+    EXPECT_GT(hits, rays / 4);
   }
 }
 

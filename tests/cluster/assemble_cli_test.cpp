@@ -2,7 +2,7 @@
 // shards (explicit, and --shard auto from faked SLURM variables) and assembled give the bytes of
 // `lancer animate -o` directly (GIF and APNG); --skip-existing resumes; a missing or foreign frame is
 // named; `render --shard` parts stitched by `assemble --tiles` are the single render's file, path
-// traced too.
+// traced too and legends in the picture included.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -139,6 +139,35 @@ TEST(AssembleCli, PathTracedShardsAndThreadCountsGiveTheSameBytes) {
                 .exitCode,
             0);
   expectSameFile(folder.file("t.png"), folder.file("one.png"));
+}
+
+TEST(AssembleCli, LegendsDrawnByTheShardsAreTheSingleRendersLegends) {
+  // Each task draws the part of the legends that falls in its band items: a vertical legend (right)
+  // and gmsh's horizontal scale (--gmsh-view, ShowScale: bottom) straddle several tasks' rows.
+  ScratchFolder folder;
+  const std::string mesh = test::dataFile("results/cantilever.msh");
+  folder.write("legend.toml", "[[mesh]]\nfile = \"" + mesh +
+                                  "\"\ncolor_by = { field = \"stress\", component = \"von_mises\", title = "
+                                  "\"von Mises stress\", units = \"MPa\", legend = \"right\" }\n");
+  const std::string options = test::dataFile("results/cantilever.msh.opt");
+  for (const std::string& input :
+       {quoted(folder.file("legend.toml")), quoted(mesh) + " --gmsh-view " + quoted(options)}) {
+    const std::string size = " --width 120 --height 230";
+    ASSERT_EQ(runCli("render -q " + input + size + " -o " + quoted(folder.file("direct.png"))).exitCode, 0);
+    for (const char* shard : {"0/3", "1/3", "2/3"}) {
+      const test::CommandResult r =
+          runCli("render -q " + input + size + " -o " + quoted(folder.file("t.png")) + " --shard " + shard);
+      ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
+    const test::CommandResult r = runCli("assemble -q --tiles " + quoted(folder.path().string()) +
+                                         "/t.png.part-* -o " + quoted(folder.file("t.png")));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    expectSameFile(folder.file("t.png"), folder.file("direct.png"));
+    std::filesystem::remove(folder.file("t.png"));
+    for (const auto& entry : std::filesystem::directory_iterator(folder.path()))
+      if (entry.path().filename().string().rfind("t.png.part-", 0) == 0)
+        std::filesystem::remove(entry.path());
+  }
 }
 
 }  // namespace

@@ -78,3 +78,57 @@ def test_steps_and_field_at_a_step():
     assert tip == pytest.approx(-1.5, abs=1e-6)
     with pytest.raises(KeyError, match="has no step 9"):
         mesh.field("displacement", step=9)
+
+
+def test_quick_look_isolines_arrows_and_legend():
+    """isolines=, arrows= and the legend keywords take what the scene file's keys take, checked by the
+    scene loader's own readers: each changes the picture, legend='none' is the picture without one."""
+    mesh = lancer.read_msh(CANTILEVER)
+    colours = {"field": "stress", "component": "von_mises", "title": "von Mises stress", "units": "MPa"}
+
+    def picture(**keywords):
+        scene = lancer.Scene.quick_look(mesh, step=3, warp="displacement", **keywords)
+        return np.asarray(lancer.render(scene, width=160, height=90))
+
+    plain = picture(color_by=colours)
+    assert np.array_equal(plain, picture(color_by=colours, legend="none"))
+    assert np.array_equal(plain, picture(color_by="stress", component="von_mises"))
+    lines = picture(color_by=colours, isolines={"field": "stress", "component": "von_mises", "count": 6,
+                                                "color": [0, 0, 0], "width": 2})
+    assert not np.array_equal(plain, lines)
+    assert np.array_equal(picture(color_by=colours, isolines="stress"),
+                          picture(color_by=colours, isolines={"field": "stress"}))
+    right = picture(color_by=colours, legend="right")
+    bottom = picture(color_by={**colours, "legend": "bottom"})
+    assert not np.array_equal(plain[:, -30:], right[:, -30:])  # a bar along the right edge
+    assert not np.array_equal(plain[-20:], bottom[-20:])  # along the bottom
+    arrows = picture(color_by=colours, arrows={"field": "displacement", "max_count": 20, "color": [1, 0, 0]})
+    assert not np.array_equal(plain, arrows)
+    assert np.array_equal(arrows, picture(color_by=colours, arrows={"field": "displacement", "max_count": 20,
+                                                                    "color": (1, 0, 0)}))
+
+
+def test_quick_look_result_keywords_bad_input():
+    mesh = lancer.read_msh(CANTILEVER)
+    with pytest.raises(lancer.InputError, match=r"quick_look: error: isolines.count must be an integer"):
+        lancer.Scene.quick_look(mesh, isolines={"field": "stress", "count": "many"})
+    with pytest.raises(lancer.InputError, match=r"unknown key 'feld' in \[isolines\].*'field'"):
+        lancer.Scene.quick_look(mesh, isolines={"feld": "stress"})
+    with pytest.raises(lancer.InputError, match=r"color_by.bands"):
+        lancer.Scene.quick_look(mesh, color_by={"field": "stress", "bands": -1})
+    with pytest.raises(lancer.InputError, match="element data.*bands = 8"):
+        lancer.render(lancer.Scene.quick_look(mesh, isolines="temperature"), width=16, height=16)
+    with pytest.raises(lancer.InputError, match="arrows field \"stress\" must be node data .* of 3 components"):
+        lancer.render(lancer.Scene.quick_look(mesh, arrows="stress"), width=16, height=16)
+    with pytest.raises(TypeError, match=r"isolines= takes a field's name or a dict"):
+        lancer.Scene.quick_look(mesh, isolines=3)
+    with pytest.raises(TypeError, match=r"arrows=: .* is not a str, number, bool, list or dict"):
+        lancer.Scene.quick_look(mesh, arrows={"field": "displacement", "color": object()})
+    with pytest.raises(TypeError, match=r"color_by= takes a field's name or a dict"):
+        lancer.Scene.quick_look(mesh, color_by=["stress"])
+    with pytest.raises(ValueError, match=r"legend='left': use 'right', 'bottom' or 'none'"):
+        lancer.Scene.quick_look(mesh, color_by="stress", legend="left")
+    with pytest.raises(ValueError, match=r"give color_by= too"):
+        lancer.Scene.quick_look(mesh, legend="right")
+    with pytest.raises(ValueError, match=r"holds its own 'map', 'range' and 'component'"):
+        lancer.Scene.quick_look(mesh, color_by={"field": "stress"}, color_map="magma")

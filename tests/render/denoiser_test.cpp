@@ -10,7 +10,8 @@
 #include <functional>
 #include <limits>
 
-#include "lancer/render/pixel_sampler.hpp"
+#include "lancer/image/image_difference.hpp"
+#include "support/seeded_noise.hpp"
 #include "support/test_scenes.hpp"
 
 namespace lancer {
@@ -18,35 +19,6 @@ namespace {
 
 constexpr int kSize = 64;
 constexpr int kEdge = 32;  // columns x < kEdge are the left side
-
-// Seeded Gaussian noise of deviation 1 (Box-Muller on the renderer's own hash): the same on every
-// platform, unlike std::normal_distribution.
-float gaussian(int x, int y, int channel) {
-  const float u1 = std::max(sampleJitter(x, y, channel, 0), 1e-7f), u2 = sampleJitter(x, y, channel, 1);
-  return std::sqrt(-2.0f * std::log(u1)) * std::cos(6.2831853f * u2);
-}
-
-Image withNoise(const Image& clean, float sigma) {
-  Image noisy = clean;
-  for (int y = 0; y < clean.height(); ++y)
-    for (int x = 0; x < clean.width(); ++x) {
-      Rgba& p = noisy.at(x, y);
-      p.r += sigma * gaussian(x, y, 0);
-      p.g += sigma * gaussian(x, y, 1);
-      p.b += sigma * gaussian(x, y, 2);
-    }
-  return noisy;
-}
-
-double rmse(const Image& a, const Image& b) {
-  double sum = 0;
-  for (int y = 0; y < a.height(); ++y)
-    for (int x = 0; x < a.width(); ++x) {
-      const Vec3 d = a.at(x, y).rgb() - b.at(x, y).rgb();
-      sum += dot(d, d) / 3.0;
-    }
-  return std::sqrt(sum / (a.width() * a.height()));
-}
 
 // The mean red value of column x.
 double columnMean(const Image& image, int x) {
@@ -84,11 +56,11 @@ void expectEdgeKept(const Side& left, const Side& right, float sigma) {
   Image clean;
   FeatureBuffers features;
   makeScene(left, right, clean, features);
-  const Image noisy = withNoise(clean, sigma);
+  const Image noisy = test::withSeededNoise(clean, sigma);
   const Image denoised = denoise(noisy, features);
   EXPECT_NEAR(columnMean(denoised, kEdge - 1), left.radiance, 0.012);
   EXPECT_NEAR(columnMean(denoised, kEdge), right.radiance, 0.012);
-  EXPECT_LT(rmse(denoised, clean), 0.6 * rmse(noisy, clean));
+  EXPECT_LT(rootMeanSquareDifference(denoised, clean), 0.6 * rootMeanSquareDifference(noisy, clean));
 }
 
 TEST(Denoiser, KeepsAShadowEdgeSharp) {
@@ -125,7 +97,7 @@ TEST(Denoiser, NoiseEstimateMatchesTheNoiseAdded) {
   FeatureBuffers features;
   makeScene(Side{}, Side{.radiance = 0.2f, .depth = 30}, clean, features);
   // The deviation found is the one added, whatever the albedo.
-  Image demodulated = withNoise(clean, 0.05f);
+  Image demodulated = test::withSeededNoise(clean, 0.05f);
   EXPECT_NEAR(estimateNoise(demodulated, features), 0.05, 0.006);
 }
 
@@ -136,7 +108,7 @@ TEST(Denoiser, LeavesACleanImageAlmostAsItIs) {
   // A smooth ramp of light on top: no noise to find, so nothing to smooth.
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) clean.at(x, y).g += 0.004f * static_cast<float>(x + y);
-  EXPECT_LT(rmse(denoise(clean, features), clean), 1e-3);
+  EXPECT_LT(rootMeanSquareDifference(denoise(clean, features), clean), 1e-3);
 }
 
 // A render of two squares, the upper one shadowing the lower, in two colours: the clean render's
@@ -169,8 +141,9 @@ RenderedScene renderTwoSquares(int threads) {
 TEST(Denoiser, LowersTheErrorOfANoisyRender) {
   const RenderedScene scene = renderTwoSquares(0);
   for (const float sigma : {0.02f, 0.05f, 0.1f}) {
-    const Image noisy = withNoise(scene.clean, sigma);
-    const double before = rmse(noisy, scene.clean), after = rmse(denoise(noisy, scene.features), scene.clean);
+    const Image noisy = test::withSeededNoise(scene.clean, sigma);
+    const double before = rootMeanSquareDifference(noisy, scene.clean),
+                 after = rootMeanSquareDifference(denoise(noisy, scene.features), scene.clean);
     EXPECT_LT(after, 0.35 * before) << "noise " << sigma << ": RMSE " << before << " -> " << after;
   }
 }
@@ -192,7 +165,7 @@ TEST(Denoiser, SameResultForAnyThreadCount) {
   const RenderedScene one = renderTwoSquares(1), four = renderTwoSquares(4);
   EXPECT_EQ(one.features.albedo, four.features.albedo);
   EXPECT_EQ(one.features.depth, four.features.depth);
-  const Image noisy = withNoise(one.clean, 0.05f);
+  const Image noisy = test::withSeededNoise(one.clean, 0.05f);
   DenoiseOptions serial, parallel;
   serial.threads = 1;
   parallel.threads = 4;
@@ -212,7 +185,7 @@ TEST(Denoiser, NoiseIsMeasuredWhereMostOfThePictureIsNoiseless) {
   Image clean, noisy;
   FeatureBuffers features;
   makeScene(Side{}, Side{}, clean, features);
-  noisy = withNoise(clean, 0.1f);
+  noisy = test::withSeededNoise(clean, 0.1f);
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
       if (x < kSize / 2 && y < kSize / 4) continue;  // the part: a corner, noisy
@@ -221,7 +194,7 @@ TEST(Denoiser, NoiseIsMeasuredWhereMostOfThePictureIsNoiseless) {
     }
   EXPECT_GT(estimateNoise(noisy, features), 0.05f);
   const Image denoised = denoise(noisy, features);
-  EXPECT_LT(rmse(denoised, clean), 0.5 * rmse(noisy, clean));
+  EXPECT_LT(rootMeanSquareDifference(denoised, clean), 0.5 * rootMeanSquareDifference(noisy, clean));
 }
 
 }  // namespace

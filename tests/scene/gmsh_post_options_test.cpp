@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "lancer/mesh/msh_reader.hpp"
+#include "lancer/scene/isolines.hpp"
+#include "lancer/scene/scene.hpp"
 #include "support/files.hpp"
 #include "support/input_errors.hpp"
 
@@ -47,9 +49,73 @@ TEST(GmshPostOptions, TheViewRendersAsSetUp) {
   ASSERT_TRUE(mesh.colorBy);
   EXPECT_EQ(mesh.colorBy->field, "stress");
   EXPECT_EQ(mesh.colorBy->range, (std::pair<double, double>{1, 4}));
-  EXPECT_EQ(mesh.colorBy->gmshIntervalsType, 1);
-  EXPECT_EQ(mesh.colorBy->gmshNbIso, 8);
   EXPECT_EQ(description.when.step, 2);
+  // IntervalsType = 1 with NbIso = 8: isolines of the stress at gmsh's 8 values over the colours'
+  // range, ends included; ShowScale (gmsh's default): the legend along the bottom, as gmsh draws it.
+  ASSERT_TRUE(mesh.isolines);
+  EXPECT_EQ(mesh.isolines->field, "stress");
+  EXPECT_EQ(mesh.isolines->count, 8);
+  EXPECT_TRUE(mesh.isolines->colorRangeEnds);
+  EXPECT_EQ(mesh.colorBy->bands, 0);
+  EXPECT_EQ(mesh.colorBy->legend, LegendPlacement::Bottom);
+}
+
+// The description and scene of cantilever.msh under the options file `name` of tests/data/results.
+struct AppliedView {
+  SceneDescription description;
+  Scene scene;
+};
+AppliedView applyOptions(const std::string& name) {
+  const std::string path = test::dataFile("results/" + name);
+  AppliedView applied{oneMesh(), {}};
+  applied.description.render.width = applied.description.render.height = 32;
+  const Mesh mesh = readMsh(applied.description.meshes[0].file);
+  applyGmshPostViews(applied.description, mesh, readGmshPostViews(path), path);
+  applied.scene = buildScene(applied.description, {mesh}, 1);
+  return applied;
+}
+
+TEST(GmshPostOptions, IsoValuesAreIsolinesOfTheColouredFieldAtGmshsValues) {
+  // View[1]: the stress (von Mises, gmsh's default for a tensor) on the custom range [1, 4] with
+  // IntervalsType = 1 and NbIso = 8: lines at 1 + 3 k / 7 for k = 0..7, as gmsh's getScaleValue.
+  const AppliedView applied = applyOptions("cantilever.msh.opt");
+  EXPECT_EQ(applied.description.meshes[0].colorBy->component.kind, FieldComponent::Kind::VonMises);
+  ASSERT_TRUE(applied.scene.isolines);
+  ASSERT_EQ(applied.scene.isolines->styles.size(), 2u);  // style 0: faces without lines
+  const std::vector<float>& values = applied.scene.isolines->styles[1].values;
+  ASSERT_EQ(values.size(), 8u);
+  for (int k = 0; k < 8; ++k) EXPECT_NEAR(values[static_cast<std::size_t>(k)], 1 + 3.0 * k / 7, 1e-6) << k;
+  ASSERT_TRUE(applied.scene.fieldColors);
+  EXPECT_EQ(applied.scene.fieldColors->legendPlacement, LegendPlacement::Bottom);
+}
+
+TEST(GmshPostOptions, GmshsIsoValuesIncludeBothEnds) {
+  EXPECT_EQ(gmshIsoValues(0, 3, 3), (std::vector<double>{0, 1.5, 3}));
+  EXPECT_EQ(gmshIsoValues(2, 4, 1), (std::vector<double>{3}));
+}
+
+TEST(GmshPostOptions, DiscreteIntervalsAreBandsAndShowScaleZeroHidesTheLegend) {
+  // discrete.opt: the displacement hidden, the stress in IntervalsType = 3 with NbIso = 5 and
+  // ShowScale = 0: 5 bands on the mesh, no isolines, no legend, no warp.
+  const AppliedView applied = applyOptions("discrete.opt");
+  const MeshInstance& mesh = applied.description.meshes[0];
+  EXPECT_FALSE(mesh.warp);
+  EXPECT_FALSE(mesh.isolines);
+  ASSERT_TRUE(mesh.colorBy);
+  EXPECT_EQ(mesh.colorBy->field, "stress");
+  EXPECT_EQ(mesh.colorBy->bands, 5);
+  ASSERT_TRUE(applied.scene.fieldColors);
+  EXPECT_EQ(applied.scene.fieldColors->legendPlacement, LegendPlacement::None);
+  ASSERT_FALSE(applied.scene.fieldColors->faceBands.empty());
+  EXPECT_EQ(applied.scene.fieldColors->faceBands.front(), 5);
+  EXPECT_FALSE(applied.scene.isolines);
+}
+
+TEST(GmshPostOptions, HiddenViewsColourNothing) {
+  const AppliedView applied = applyOptions("hidden.opt");
+  EXPECT_FALSE(applied.description.meshes[0].colorBy);
+  EXPECT_FALSE(applied.description.meshes[0].warp);
+  EXPECT_FALSE(applied.scene.fieldColors);
 }
 
 TEST(GmshPostOptions, OptionsOfViewsTheFileDoesNotHave) {

@@ -159,8 +159,10 @@ TEST(ResultsBadInput, CommandLine) {
   EXPECT_NE(result.output.find("no file matches 'none_*.msh'"), std::string::npos) << result.output;
   result = test::runCli("animate " + mesh + " --over steps -o " + test::quoted(folder.file("a.gif")));
   EXPECT_EQ(result.exitCode, 2);
-  EXPECT_NE(result.output.find("an animation over steps needs a mesh coloured (color_by) or warped (warp)"),
-            std::string::npos)
+  EXPECT_NE(
+      result.output.find(
+          "an animation over steps needs a mesh coloured (color_by), warped (warp), with isolines or arrows"),
+      std::string::npos)
       << result.output;
 }
 

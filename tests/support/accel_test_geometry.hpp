@@ -3,6 +3,7 @@
 // rays aimed at vertices, edges and split planes.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -13,6 +14,13 @@
 #include "lancer/mesh/mesh.hpp"
 
 namespace lancer::test {
+
+// The same hit to the bit: face, t and barycentrics (what "equals brute force" means here).
+inline bool sameBits(const Hit& a, const Hit& b) {
+  return a.face == b.face && std::bit_cast<std::uint32_t>(a.t) == std::bit_cast<std::uint32_t>(b.t) &&
+         std::bit_cast<std::uint32_t>(a.b1) == std::bit_cast<std::uint32_t>(b.b1) &&
+         std::bit_cast<std::uint32_t>(a.b2) == std::bit_cast<std::uint32_t>(b.b2);
+}
 
 struct Soup {
   std::vector<Vec3> positions;

@@ -23,66 +23,9 @@ std::string_view accelKindName(AccelKind kind) {
   return k < kAccelNames.size() ? kAccelNames[k] : "unknown";
 }
 
-bool Accelerator::intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const {
-  if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->intersect(ray, tMin, tMax, filter, hit);
-  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(ray, tMin, tMax, filter, hit);
-  return std::get<NaiveAccel>(impl_).intersect(ray, tMin, tMax, filter, hit);
-}
-
-bool Accelerator::occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const {
-  if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->occluded(ray, tMin, tMax, filter);
-  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(ray, tMin, tMax, filter);
-  return std::get<NaiveAccel>(impl_).occluded(ray, tMin, tMax, filter);
-}
-
-namespace {
-
-// A packet query of the brute-force reference: lane by lane.
-template <typename Query>
-std::uint32_t laneByLane(std::uint32_t active, Query&& query) {
-  std::uint32_t answered = 0;
-  for (int i = 0; i < kPacketSize; ++i) {
-    if ((active >> i & 1u) != 0 && query(i)) answered |= 1u << i;
-  }
-  return answered;
-}
-
-}  // namespace
-
-std::uint32_t Accelerator::intersect(const RayPacket& packet, std::uint32_t active,
-                                     std::span<Hit, kPacketSize> hits) const {
-  if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->intersect(packet, active, hits);
-  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(packet, active, hits);
-  const NaiveAccel& naive = std::get<NaiveAccel>(impl_);
-  return laneByLane(
-      active, [&](int i) { return naive.intersect(packet.ray[i], packet.tMin[i], packet.tMax[i], hits[i]); });
-}
-
-std::uint32_t Accelerator::occluded(const RayPacket& packet, std::uint32_t active) const {
-  if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->occluded(packet, active);
-  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(packet, active);
-  const NaiveAccel& naive = std::get<NaiveAccel>(impl_);
-  return laneByLane(active,
-                    [&](int i) { return naive.occluded(packet.ray[i], packet.tMin[i], packet.tMax[i]); });
-}
-
-std::uint32_t Accelerator::intersect(const RayPacket& packet, std::uint32_t active, const HitFilter& filter,
-                                     std::span<Hit, kPacketSize> hits) const {
-  if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->intersect(packet, active, filter, hits);
-  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(packet, active, filter, hits);
-  const NaiveAccel& naive = std::get<NaiveAccel>(impl_);
-  return laneByLane(active, [&](int i) {
-    return naive.intersect(packet.ray[i], packet.tMin[i], packet.tMax[i], filter, hits[i]);
-  });
-}
-
-std::uint32_t Accelerator::occluded(const RayPacket& packet, std::uint32_t active,
-                                    const HitFilter& filter) const {
-  if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->occluded(packet, active, filter);
-  if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(packet, active, filter);
-  const NaiveAccel& naive = std::get<NaiveAccel>(impl_);
-  return laneByLane(
-      active, [&](int i) { return naive.occluded(packet.ray[i], packet.tMin[i], packet.tMax[i], filter); });
+Accelerator Accelerator::kdTree(KdTree tree, AccelKind kind) {
+  AccelStats stats = tree.stats();
+  return Accelerator(std::move(tree), kind, std::move(stats));
 }
 
 Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
@@ -95,21 +38,12 @@ Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const 
       AccelStats stats = bvh.stats();
       return Accelerator(std::move(bvh), kind, std::move(stats));
     }
-    case AccelKind::KdTreeSah: {
-      KdTree tree = KdTree::buildSah(positions, faces, options);
-      AccelStats stats = tree.stats();
-      return Accelerator(std::move(tree), kind, std::move(stats));
-    }
-    case AccelKind::KdTreeSahExact: {
-      KdTree tree = KdTree::buildSahExact(positions, faces, options);
-      AccelStats stats = tree.stats();
-      return Accelerator(std::move(tree), kind, std::move(stats));
-    }
-    case AccelKind::KdTreeMedian: {
-      KdTree tree = KdTree::buildMedian(positions, faces, options);
-      AccelStats stats = tree.stats();
-      return Accelerator(std::move(tree), kind, std::move(stats));
-    }
+    case AccelKind::KdTreeSah:
+      return kdTree(KdTree::buildSah(positions, faces, options), kind);
+    case AccelKind::KdTreeSahExact:
+      return kdTree(KdTree::buildSahExact(positions, faces, options), kind);
+    case AccelKind::KdTreeMedian:
+      return kdTree(KdTree::buildMedian(positions, faces, options), kind);
     case AccelKind::Naive:
       break;
   }

@@ -1,17 +1,6 @@
 // The accelerator the renderer holds, chosen by name (`--accel`), behind one value type with no
-// virtual call per ray. A map of accel/ (docs/accelerators.md says more):
-//
-//   default   bvh/        the wide BVH (`bvh`): bvh.hpp the interface; build.cpp and build_parts.*
-//                         the binned-SAH build collapsed into 8-wide nodes (node.hpp); traversal.cpp
-//                         single rays, packet_traversal.cpp packets; box_test.hpp the 8-box AVX2 test;
-//                         leaf_test.hpp the leaf's triangles; refit.cpp refit for moved vertices.
-//   reference naive_accel.hpp  brute force: every triangle; what every accelerator must equal.
-//   second    kd_tree.hpp, kd/ the seed's kd-tree (`kdtree-sah`, `kdtree-sah-exact`, `kdtree-median`),
-//                         kept selectable and tested: kd/binned_build.cpp its default build.
-//   shared    triangle_intersect.* the watertight triangle test every accelerator uses; hit.hpp the
-//                         hit and its tie rule; hit_filter.hpp refusable hits; ray_packet.hpp packets;
-//                         kd/query.hpp and kd/packet_frame.hpp the closest/any-hit bookkeeping and
-//                         the 8-lane triangle tests both trees call.
+// virtual call per ray. accel/README.md maps the folder: bvh/ the default, naive_accel.hpp the
+// reference, kd_tree.hpp and kd/ the seed's kd-tree kept selectable.
 #pragma once
 
 #include <array>
@@ -26,6 +15,7 @@
 #include "lancer/accel/kd_tree.hpp"
 #include "lancer/accel/naive_accel.hpp"
 #include "lancer/accel/ray_packet.hpp"
+#include "lancer/accel/tree_queries.hpp"
 
 namespace lancer {
 
@@ -44,38 +34,29 @@ inline constexpr std::string_view kDefaultAccelName = kAccelNames[static_cast<st
 AccelKind parseAccelKind(std::string_view name);
 std::string_view accelKindName(AccelKind kind);
 
-class Accelerator {
+class Accelerator : public TreeQueries<Accelerator> {
  public:
   static Accelerator build(std::span<const Vec3> positions, std::span<const MeshFace> faces, AccelKind kind,
                            const KdBuildOptions& options = {});
 
-  // Closest hit with t in (tMin, tMax), ties to the lower face; false (hit untouched) when none.
-  bool intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
-    if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->intersect(ray, tMin, tMax, hit);
-    if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->intersect(ray, tMin, tMax, hit);
-    return std::get<NaiveAccel>(impl_).intersect(ray, tMin, tMax, hit);
+  // The walks behind TreeQueries' eight queries: the chosen tree's (no virtual call per ray).
+  template <typename Filter>
+  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const {
+    return visit([&](const auto& tree) { return tree.closestHit(ray, tMin, tMax, keeps, hit); });
   }
-  // Any hit with t in (tMin, tMax).
-  bool occluded(const Ray& ray, float tMin, float tMax) const {
-    if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return bvh->occluded(ray, tMin, tMax);
-    if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return tree->occluded(ray, tMin, tMax);
-    return std::get<NaiveAccel>(impl_).occluded(ray, tMin, tMax);
+  template <typename Filter>
+  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const {
+    return visit([&](const auto& tree) { return tree.anyHit(ray, tMin, tMax, keeps); });
   }
-
-  // The same two queries seeing only the hits `filter` keeps (the renderer's per-mesh cut views).
-  // Out of line: the rare path stays out of the code of callers that choose between these and the
-  // plain queries once per ray (the tracer).
-  bool intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const;
-  bool occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const;
-
-  // The packet queries (KdTree's; the brute-force reference answers lane by lane). Return the lanes
-  // of `active` that hit, or are occluded; hits[i] is set for each lane i that hit.
-  std::uint32_t intersect(const RayPacket& packet, std::uint32_t active,
-                          std::span<Hit, kPacketSize> hits) const;
-  std::uint32_t occluded(const RayPacket& packet, std::uint32_t active) const;
-  std::uint32_t intersect(const RayPacket& packet, std::uint32_t active, const HitFilter& filter,
-                          std::span<Hit, kPacketSize> hits) const;
-  std::uint32_t occluded(const RayPacket& packet, std::uint32_t active, const HitFilter& filter) const;
+  template <typename Filter>
+  std::uint32_t closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
+                            std::span<Hit, kPacketSize> hits) const {
+    return visit([&](const auto& tree) { return tree.closestHits(packet, active, keeps, hits); });
+  }
+  template <typename Filter>
+  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const {
+    return visit([&](const auto& tree) { return tree.anyHits(packet, active, keeps); });
+  }
 
   // A new time step of the same mesh (same faces, moved vertices; animation): the BVH is refitted
   // (Bvh::refit) unless that cannot stay exact or its SAH cost grew past Bvh::kRebuildAboveGrowth,
@@ -90,6 +71,14 @@ class Accelerator {
   using Impl = std::variant<Bvh, KdTree, NaiveAccel>;
   Accelerator(Impl impl, AccelKind kind, AccelStats stats)
       : impl_(std::move(impl)), kind_(kind), stats_(std::move(stats)) {}
+  static Accelerator kdTree(KdTree tree, AccelKind kind);
+  // `query` on the tree held, the default first.
+  template <typename Query>
+  auto visit(const Query& query) const {
+    if (const Bvh* bvh = std::get_if<Bvh>(&impl_)) return query(*bvh);
+    if (const KdTree* tree = std::get_if<KdTree>(&impl_)) return query(*tree);
+    return query(std::get<NaiveAccel>(impl_));
+  }
 
   Impl impl_;
   AccelKind kind_;

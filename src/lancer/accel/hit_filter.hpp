@@ -23,4 +23,9 @@ struct HitFilter {
   bool operator()(const Ray& ray, std::uint32_t face, float t) const { return keeps(context, ray, face, t); }
 };
 
+// Every hit counts: the filter of the unfiltered queries, compiled away.
+struct KeepEveryHit {
+  bool operator()(const Ray&, std::uint32_t, float) const { return true; }
+};
+
 }  // namespace lancer

@@ -8,13 +8,10 @@
 #include <vector>
 
 #include "lancer/accel/accel_stats.hpp"
-#include "lancer/accel/hit.hpp"
-#include "lancer/accel/hit_filter.hpp"
 #include "lancer/accel/kd/node.hpp"
-#include "lancer/accel/ray_packet.hpp"
+#include "lancer/accel/tree_queries.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/aabb.hpp"
-#include "lancer/math/ray.hpp"
 #include "lancer/mesh/mesh.hpp"
 
 namespace lancer {
@@ -32,8 +29,8 @@ struct KdBuildOptions {
   float emptySpaceFactor = 0.8f;
   float emptySpaceMinFraction = 0.1f;
   // Exact build (buildSahExact): cells holding more triangles than this are split by binning
-  // (kd/sah_binning.hpp) rather than by sweeping sorted events; 0 sweeps from the root (the pure
-  // O(N log N) build).
+  // (kd/binned_split.hpp, the default build's search) rather than by sweeping sorted events; 0 sweeps from
+  // the root (the pure O(N log N) build).
   std::uint32_t binnedAbove = 4096;
   // Binning: a triangle that crosses the split plane is clipped to each child cell ("perfect
   // splits") when its box is at least this fraction of the cell along one of the other two axes;
@@ -63,7 +60,7 @@ struct KdTraversalCounters {
 };
 KdTraversalCounters& kdTraversalCounters();
 
-class KdTree {
+class KdTree : public TreeQueries<KdTree> {
  public:
   static constexpr int kMaxDepth = 60;  // the traversal stack holds one entry per level
 
@@ -77,26 +74,19 @@ class KdTree {
   static KdTree buildMedian(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                             const KdBuildOptions& options = {});
 
-  // Closest hit with t in (tMin, tMax), ties to the lower face; false (hit untouched) when none.
-  // tMin >= 0 (rays start at their origin).
-  bool intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const;
-  // Any hit with t in (tMin, tMax): the shadow-ray query, stops at the first blocker.
-  bool occluded(const Ray& ray, float tMin, float tMax) const;
-  // The same two queries seeing only the hits `filter` keeps (a refused face is passed through, and
-  // casts no shadow). Separate entry points: queries without a filter pay nothing for it.
-  bool intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const;
-  bool occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const;
-
-  // The same queries for the lanes `active` of a packet (kd/packet_traversal.cpp): traced together
-  // down the tree with 8-wide SIMD where the build has AVX2, one by one otherwise or when the rays
-  // run in different directions. Each lane's answer is the single ray's, to the bit. Return the
-  // lanes that hit (or are occluded); hits[i] is set for each lane i that hit.
-  std::uint32_t intersect(const RayPacket& packet, std::uint32_t active,
-                          std::span<Hit, kPacketSize> hits) const;
-  std::uint32_t occluded(const RayPacket& packet, std::uint32_t active) const;
-  std::uint32_t intersect(const RayPacket& packet, std::uint32_t active, const HitFilter& filter,
-                          std::span<Hit, kPacketSize> hits) const;
-  std::uint32_t occluded(const RayPacket& packet, std::uint32_t active, const HitFilter& filter) const;
+  // The walks behind TreeQueries' eight queries (tMin >= 0: rays start at their origin),
+  // instantiated for KeepEveryHit and HitFilter: single rays (kd/traversal.cpp) and packets
+  // (kd/packet_traversal.cpp: traced together down the tree with 8-wide SIMD where the build has
+  // AVX2, one by one otherwise or when the rays run in different directions).
+  template <typename Filter>
+  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const;
+  template <typename Filter>
+  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const;
+  template <typename Filter>
+  std::uint32_t closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
+                            std::span<Hit, kPacketSize> hits) const;
+  template <typename Filter>
+  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
 
   const AccelStats& stats() const { return stats_; }
   const Aabb& bounds() const { return bounds_; }
@@ -121,18 +111,6 @@ class KdTree {
 
  private:
   friend class KdTreeAssembler;
-
-  // The one traversal behind the four queries (kd/traversal.cpp), instantiated there for no filter
-  // and for HitFilter.
-  template <typename Filter>
-  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const;
-  template <typename Filter>
-  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const;
-  template <typename Filter>
-  std::uint32_t closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
-                            std::span<Hit, kPacketSize> hits) const;
-  template <typename Filter>
-  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
 
   // Depth first from the root at 0 (then a pad): each inner node's child pair (16-byte aligned),
   // followed at once by what its leaf children hold: the list of a leaf of 2+ triangles (32-bit

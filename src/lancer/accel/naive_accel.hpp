@@ -1,5 +1,5 @@
 // The simplest accelerator: test every triangle. Slow (linear in faces) but obviously right,
-// it is the reference that the kd-tree is checked against.
+// it is the reference that every accelerator is checked against.
 #pragma once
 
 #include <cmath>
@@ -8,47 +8,30 @@
 
 #include "lancer/accel/hit.hpp"
 #include "lancer/accel/hit_filter.hpp"
+#include "lancer/accel/tree_queries.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
 
 namespace lancer {
 
-class NaiveAccel {
+// Its packet queries are its single-ray ones, lane by lane.
+class NaiveAccel : public TreeQueries<NaiveAccel> {
  public:
   NaiveAccel(std::span<const Vec3> positions, std::span<const MeshFace> faces)
       : triangles_(packTriangles(positions, faces)) {}
 
-  // Closest hit with t in (tMin, tMax); returns false (hit untouched) when there is none.
-  bool intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
-    return closest(ray, tMin, tMax, keepEveryHit, hit);
-  }
-  // The same among the hits `filter` keeps: a refused face is passed through.
-  bool intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const {
-    return closest(ray, tMin, tMax, filter, hit);
-  }
-
-  // Any hit with t in (tMin, tMax): the shadow-ray query, stops at the first blocker.
-  bool occluded(const Ray& ray, float tMin, float tMax) const { return any(ray, tMin, tMax, keepEveryHit); }
-  // The same with refused faces casting no shadow.
-  bool occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const {
-    return any(ray, tMin, tMax, filter);
-  }
-
   std::size_t memoryBytes() const { return triangles_.capacity() * sizeof(PackedTriangle); }
 
- private:
-  static bool keepEveryHit(const Ray&, std::uint32_t, float) { return true; }
-
-  template <typename Keep>
-  bool any(const Ray& ray, float tMin, float tMax, const Keep& keep) const {
+  // The walks behind TreeQueries' eight queries, for any filter.
+  template <typename Filter>
+  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keep) const {
     for (const PackedTriangle& tri : triangles_) {
       const float t = intersectTriangle(tri, ray, tMin, tMax);
       if (t >= 0.0f && keep(ray, tri.face, t)) return true;
     }
     return false;
   }
-
-  template <typename Keep>
-  bool closest(const Ray& ray, float tMin, float tMax, const Keep& keep, Hit& hit) const {
+  template <typename Filter>
+  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keep, Hit& hit) const {
     Hit best;
     best.t = tMax;
     for (const PackedTriangle& tri : triangles_) {
@@ -62,7 +45,17 @@ class NaiveAccel {
     hit = best;
     return true;
   }
+  template <typename Filter>
+  std::uint32_t closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
+                            std::span<Hit, kPacketSize> hits) const {
+    return closestHitsOneByOne(packet, active & kAllLanes, keeps, hits);
+  }
+  template <typename Filter>
+  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const {
+    return anyHitsOneByOne(packet, active & kAllLanes, keeps);
+  }
 
+ private:
   std::vector<PackedTriangle> triangles_;
 };
 

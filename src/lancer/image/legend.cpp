@@ -227,23 +227,31 @@ Image legendSheet(std::span<const LegendSpec> legends, int barLength, float text
 
 void drawLegends(Image& picture, std::span<const LegendSpec> legends, LegendPlacement placement,
                  bool linearize) {
-  if (placement == LegendPlacement::None || legends.empty() || picture.empty()) return;
+  drawLegendsInRows(picture, legends, placement, linearize, picture.width(), picture.height(), 0);
+}
+
+void drawLegendsInRows(Image& rows, std::span<const LegendSpec> legends, LegendPlacement placement,
+                       bool linearize, int width, int height, int firstRow) {
+  if (placement == LegendPlacement::None || legends.empty() || rows.empty()) return;
   const bool horizontal = placement == LegendPlacement::Bottom;
-  const float textHeight = std::max(9.0f, static_cast<float>(picture.height()) / 40.0f);
+  const float textHeight = std::max(9.0f, static_cast<float>(height) / 40.0f);
   const int margin = static_cast<int>(std::lround(0.6f * textHeight));
-  const int barLength = horizontal ? static_cast<int>(std::lround(0.45 * picture.width()))
-                                   : static_cast<int>(std::lround(0.55 * picture.height()));
-  int right = picture.width() - margin, bottom = picture.height() - margin;
+  const int barLength =
+      horizontal ? static_cast<int>(std::lround(0.45 * width)) : static_cast<int>(std::lround(0.55 * height));
+  int right = width - margin, bottom = height - margin;
   for (const LegendSpec& spec : legends) {
     const Image panel = legendPanel(spec, horizontal, barLength, textHeight, linearize, kPanelOpacity);
-    const int x0 = horizontal ? (picture.width() - panel.width()) / 2 : right - panel.width();
-    const int y0 = horizontal ? bottom - panel.height() : (picture.height() - panel.height()) / 2;
-    for (int y = 0; y < panel.height(); ++y)
+    const int x0 = horizontal ? (width - panel.width()) / 2 : right - panel.width();
+    const int y0 = horizontal ? bottom - panel.height() : (height - panel.height()) / 2;
+    // The panel's rows that fall in this band of the picture.
+    const int yBegin = std::max(0, firstRow - y0),
+              yEnd = std::min(panel.height(), firstRow + rows.height() - y0);
+    for (int y = yBegin; y < yEnd; ++y)
       for (int x = 0; x < panel.width(); ++x) {
         const int px = x0 + x, py = y0 + y;
-        if (px < 0 || py < 0 || px >= picture.width() || py >= picture.height()) continue;
+        if (px < 0 || py < 0 || px >= rows.width() || py >= height) continue;
         const Rgba& p = panel.at(x, y);
-        blendOver(picture.at(px, py), p.rgb(), p.a);
+        blendOver(rows.at(px, py - firstRow), p.rgb(), p.a);
       }
     if (horizontal)
       bottom = y0 - margin;

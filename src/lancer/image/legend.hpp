@@ -59,4 +59,10 @@ Image legendSheet(std::span<const LegendSpec> legends, int barLength, float text
 void drawLegends(Image& picture, std::span<const LegendSpec> legends, LegendPlacement placement,
                  bool linearize);
 
+// The same legends' part that falls in `rows`, a band of a picture `width` x `height` whose first
+// row is the picture's `firstRow` (a job-array task's or a rank's band items): the bands drawn
+// one by one make the picture drawLegends draws in one go.
+void drawLegendsInRows(Image& rows, std::span<const LegendSpec> legends, LegendPlacement placement,
+                       bool linearize, int width, int height, int firstRow);
+
 }  // namespace lancer

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 
 namespace lancer {
 
@@ -68,6 +69,18 @@ float componentScalar(const float* v, int components, const FieldComponent& comp
   double sum = 0;
   for (int c = 0; c < components; ++c) sum += static_cast<double>(v[c]) * v[c];
   return static_cast<float>(std::sqrt(sum));
+}
+
+std::pair<double, double> componentRange(const MeshField& field, const FieldComponent& component) {
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (std::size_t i = 0; i < field.itemCount(); ++i) {
+    const double value = componentScalar(field.values.data() + i * static_cast<std::size_t>(field.components),
+                                         field.components, component);
+    if (std::isnan(value)) continue;
+    low = std::min(low, value);
+    high = std::max(high, value);
+  }
+  return {low, high};
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "lancer/mesh/mesh.hpp"
@@ -33,6 +34,10 @@ std::string componentProblem(const FieldComponent& component, int components);
 // sqrt(((sxx-syy)^2 + (syy-szz)^2 + (szz-sxx)^2 + 6 (sxy^2 + syz^2 + szx^2)) / 2), the shear terms
 // averaged over the two off-diagonal halves.
 float componentScalar(const float* values, int components, const FieldComponent& component);
+
+// The least and greatest `component` scalar of a step's items, NaN ignored; empty (low > high) when
+// there is none.
+std::pair<double, double> componentRange(const MeshField& field, const FieldComponent& component);
 
 // The steps of view `name`, in time order (ties by step index). Their time is the file's real tag;
 // a view whose times do not increase with its step index (gmsh writes time 0 for every step when the

@@ -16,21 +16,6 @@ namespace {
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 constexpr int kRouletteFrom = 3;  // bounces before Russian roulette may end a path
 
-// The flat face of a capped clip plane, as the Whitted tracer's shadeCap builds it.
-SurfacePoint capPoint(const Scene& scene, const Ray& ray, const ClipPlane& plane, float t,
-                      std::uint32_t face) {
-  SurfacePoint cap{};
-  cap.face = face;
-  cap.position = ray.at(t);
-  cap.positionError = rayPointError(ray.origin, ray.direction, t);
-  cap.geometricNormal = cap.shadingNormal = plane.normal;
-  cap.normalSign = 1.0f;
-  cap.isCap = true;
-  const int corners = scene.geometry.faces[face].cornerCount();
-  for (int c = 0; c < corners; ++c) cap.cornerWeight[c] = 1.0f / static_cast<float>(corners);
-  return cap;
-}
-
 }  // namespace
 
 PathIntegrator::PathIntegrator(const Scene& scene, const Accelerator& accelerator,
@@ -183,7 +168,7 @@ TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, Trac
 
     // The surface: a face (with the media it separates) or a cap (opaque, in the cut solid's material).
     const bool isCap = seen.kind == Sighting::Kind::kCap;
-    const SurfacePoint surface = isCap ? capPoint(scene_, ray, *seen.capPlane, seen.t, seen.hit.face)
+    const SurfacePoint surface = isCap ? makeCapPoint(scene_, ray, *seen.capPlane, seen.t, seen.hit.face)
                                        : makeSurfacePoint(scene_, ray, seen.hit);
     MediumCrossing media{SceneAppearance::kNoMaterial, SceneAppearance::kNoMaterial, seen.capMaterial};
     if (!isCap) {

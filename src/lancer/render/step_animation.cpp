@@ -29,6 +29,8 @@ StepFrames planStepFrames(const SceneDescription& description, const std::vector
     std::vector<std::string> views;
     if (instance.colorBy && !instance.colorBy->step) views.push_back(instance.colorBy->field);
     if (instance.warp) views.push_back(instance.warp->field);
+    if (instance.isolines && !instance.isolines->step) views.push_back(instance.isolines->field);
+    if (instance.arrows && !instance.arrows->step) views.push_back(instance.arrows->field);
     const std::vector<double> own = stepTimes(meshes[i], views);
     times.insert(times.end(), own.begin(), own.end());
   }
@@ -37,8 +39,9 @@ StepFrames planStepFrames(const SceneDescription& description, const std::vector
   if (times.empty())
     throw InputError(
         SourceLocation{description.path},
-        "an animation over steps needs a mesh coloured (color_by) or warped (warp) by a view of "
-        "its file; add color_by = { field = \"...\" } or warp = { field = \"...\" } to a [[mesh]]");
+        "an animation over steps needs a mesh coloured (color_by), warped (warp), with isolines or arrows "
+        "by a view of its file; add color_by = { field = \"...\" } or warp = { field = \"...\" } to a "
+        "[[mesh]]");
   StepFrames frames;
   if (!animation.framesGiven) {
     frames.times = times;
@@ -80,6 +83,12 @@ void StepScenes::buildAt(double time) {
   const Stopwatch stopwatch;
   description_.when = StepSelection{std::nullopt, time, "the animation over steps"};
   const bool first = !scene_.has_value();
+  // The previous frame's scene goes before the next one is built (two scenes of a 1M-face mesh at
+  // once would raise the peak by one scene); its faces stay, to tell whether the next has the same.
+  std::vector<MeshFace> previousFaces;
+  if (scene_) previousFaces = std::move(scene_->geometry.faces);
+  scene_.reset();
+  builtTime_.reset();
   Scene next = buildSceneAt(description_, meshes_, threads_);
   // Every frame is framed alike: the camera and the orbit see the bounds of the whole animation.
   SceneGeometry& geometry = next.geometry;
@@ -92,11 +101,12 @@ void StepScenes::buildAt(double time) {
   // mesh with the same faces (none collapsed, none turned) moved its vertices only: the accelerator
   // is refitted where it can be (the BVH), else built again.
   const bool warped = anyWarp(description_);
-  const bool sameFaces = !first && scene_->geometry.faces.size() == geometry.faces.size() &&
-                         std::equal(geometry.faces.begin(), geometry.faces.end(),
-                                    scene_->geometry.faces.begin(), [](const MeshFace& a, const MeshFace& b) {
+  const bool sameFaces = !first && previousFaces.size() == geometry.faces.size() &&
+                         std::equal(geometry.faces.begin(), geometry.faces.end(), previousFaces.begin(),
+                                    [](const MeshFace& a, const MeshFace& b) {
                                       return std::equal(a.vertex, a.vertex + 4, b.vertex);
                                     });
+  previousFaces = {};
   scene_.emplace(std::move(next));
   const SceneGeometry& built = scene_->geometry;  // `geometry` was moved with `next`
   if (first || warped) {
@@ -106,6 +116,7 @@ void StepScenes::buildAt(double time) {
     if (sameFaces && accelerator_) {
       if (accelerator_->update(built.positions, built.faces, options)) ++refits_;
     } else {
+      accelerator_.reset();  // the old one goes first: one accelerator at a time
       accelerator_.emplace(Accelerator::build(built.positions, built.faces, accel_, options));
     }
     if (!first) accelSeconds_ += build.seconds();

@@ -22,8 +22,8 @@ struct StepFrames {
   std::vector<int> steps;  // 0-based position in the steps' time order
 };
 
-// The times of the steps of every view the scene uses (colours not pinned to a step, warps) and the
-// frames over them. Throws InputError when no mesh uses a view with steps.
+// The times of the steps of every view the scene uses (colours, isolines and arrows not pinned to a
+// step, warps) and the frames over them. Throws InputError when no mesh uses a view with steps.
 StepFrames planStepFrames(const SceneDescription& description, const std::vector<Mesh>& meshes,
                           const AnimationSettings& animation);
 

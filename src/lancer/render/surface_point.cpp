@@ -176,4 +176,18 @@ SurfacePoint makeSurfacePoint(const Scene& scene, const Ray& ray, const Hit& hit
   return sp;
 }
 
+SurfacePoint makeCapPoint(const Scene& scene, const Ray& ray, const ClipPlane& plane, float t,
+                          std::uint32_t face) {
+  SurfacePoint cap{};
+  cap.face = face;
+  cap.position = ray.at(t);
+  cap.positionError = rayPointError(ray.origin, ray.direction, t);
+  cap.geometricNormal = cap.shadingNormal = plane.normal;
+  cap.normalSign = 1.0f;
+  cap.isCap = true;
+  const int corners = scene.geometry.faces[face].cornerCount();
+  for (int c = 0; c < corners; ++c) cap.cornerWeight[c] = 1.0f / static_cast<float>(corners);
+  return cap;
+}
+
 }  // namespace lancer

@@ -30,4 +30,11 @@ void faceCornerWeights(const Scene& scene, const MeshFace& face, const Vec3& p, 
 
 SurfacePoint makeSurfacePoint(const Scene& scene, const Ray& ray, const Hit& hit);
 
+// The flat cut face of a capped clip plane where `ray` meets it at `t`, inside the shell of `face`
+// (the face the ray leaves by). The ray came from the removed side, where the plane's normal points,
+// so the cap faces it; the corner weights are equal, so a field-coloured shell colours its cap with
+// the mean of that face. Both integrators shade caps from this one point.
+SurfacePoint makeCapPoint(const Scene& scene, const Ray& ray, const ClipPlane& plane, float t,
+                          std::uint32_t face);
+
 }  // namespace lancer

@@ -113,17 +113,7 @@ Vec3 Tracer::shadeShadowCatcher(const Vec3& point, TraceCounters& counters, floa
 
 Vec3 Tracer::shadeCap(const Ray& ray, const ClipPlane& plane, float tCap, std::uint32_t face,
                       std::uint32_t material, bool parallelView, TraceCounters& counters) const {
-  SurfacePoint cap{};
-  cap.face = face;
-  cap.position = ray.at(tCap);
-  cap.positionError = rayPointError(ray.origin, ray.direction, tCap);
-  // The ray came from the removed side, where the plane's normal points: the cap faces it.
-  cap.geometricNormal = cap.shadingNormal = plane.normal;
-  cap.normalSign = 1.0f;
-  cap.isCap = true;
-  // A field-coloured shell colours its cap with the mean of the face the ray leaves by.
-  const int corners = scene_.geometry.faces[face].cornerCount();
-  for (int c = 0; c < corners; ++c) cap.cornerWeight[c] = 1.0f / static_cast<float>(corners);
+  const SurfacePoint cap = makeCapPoint(scene_, ray, plane, tCap, face);
   return shadeLocal(ray, cap, scene_.appearance.materials[material], parallelView, counters);
 }
 

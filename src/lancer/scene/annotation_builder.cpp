@@ -58,10 +58,9 @@ void finishBands(FieldColors& fields, std::size_t faceCount) {
   if (!fields.faceBands.empty()) fields.faceBands.resize(faceCount, 0);
 }
 
-void appendIsolines(std::optional<IsolineOverlay>& overlay, const IsolineSpec& spec, const Mesh& mesh,
-                    std::uint32_t vertexBase, std::size_t faceBase, std::size_t faceEnd,
-                    std::size_t vertexEnd) {
-  ResolvedIsolines resolved = resolveIsolines(spec, mesh);
+void appendIsolines(std::optional<IsolineOverlay>& overlay, const IsolineSpec& spec,
+                    ResolvedIsolines resolved, std::uint32_t vertexBase, std::size_t faceBase,
+                    std::size_t faceEnd, std::size_t vertexEnd) {
   if (!overlay) overlay.emplace();
   overlay->styles.push_back({std::move(resolved.values), spec.color, spec.widthPixels});
   overlay->faceStyle.resize(faceBase, 0);
@@ -85,18 +84,22 @@ bool hasArrows(const SceneDescription& description) {
                      [](const MeshInstance& instance) { return instance.arrows.has_value(); });
 }
 
-void addArrowMeshes(SceneDescription& description, std::vector<Mesh>& meshes) {
+std::vector<Mesh> addArrowMeshes(SceneDescription& description, const std::vector<Mesh>& meshes) {
+  std::vector<Mesh> added;
   const std::size_t originals = description.meshes.size();
   for (std::size_t i = 0; i < originals; ++i) {
     if (!description.meshes[i].arrows) continue;
     const ArrowSpec spec = *description.meshes[i].arrows;
     description.meshes[i].arrows.reset();
-    Mesh arrows = arrowMesh(spec, meshes[i]);
-    MeshInstance instance = description.meshes[i];
+    const MeshInstance& original = description.meshes[i];
+    Mesh arrows = arrowMesh(spec, meshes[i], description.when, original.warp ? &*original.warp : nullptr);
+    MeshInstance instance = original;
     instance.file += " (arrows)";
     instance.groupMaterials.clear();
     instance.edges.reset();
     instance.isolines.reset();
+    instance.warp.reset();  // the arrows stand on the warped surface already
+    instance.undeformed = UndeformedStyle::None;
     instance.shading = ShadingMode::Phong;
     if (spec.color) {
       Material material = description.materials[static_cast<std::size_t>(instance.material)];
@@ -109,15 +112,24 @@ void addArrowMeshes(SceneDescription& description, std::vector<Mesh>& meshes) {
     } else {
       ColorBy colorBy;
       colorBy.field = arrows.fields.front().name;
-      colorBy.step = spec.step;
+      colorBy.step = 0;
+      if (!spec.step) {  // one colour range over every step, as the mesh's own colours
+        std::pair<double, double> range{INFINITY, -INFINITY};
+        for (const MeshField* step : viewSteps(meshes[i], spec.field)) {
+          const auto [low, high] = componentRange(*step, FieldComponent{});
+          range = {std::min(range.first, low), std::max(range.second, high)};
+        }
+        if (range.first <= range.second) colorBy.range = range;
+      }
       colorBy.map = instance.colorBy ? instance.colorBy->map : ColorMapKind::Viridis;
       colorBy.legend = instance.colorBy ? instance.colorBy->legend : std::nullopt;
       colorBy.where = spec.where;
       instance.colorBy = colorBy;
     }
     description.meshes.push_back(std::move(instance));
-    meshes.push_back(std::move(arrows));
+    added.push_back(std::move(arrows));
   }
+  return added;
 }
 
 }  // namespace lancer

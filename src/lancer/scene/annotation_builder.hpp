@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lancer/scene/color_by.hpp"
+#include "lancer/scene/isolines.hpp"
 #include "lancer/scene/scene.hpp"
 
 namespace lancer {
@@ -26,17 +27,19 @@ void appendLegendAndBands(FieldColors& fields, const ColorBy& spec, const FieldC
 // faceBands in step with the faces, when some mesh has bands.
 void finishBands(FieldColors& fields, std::size_t faceCount);
 
-// Records a mesh's isolines: its vertices start at vertexBase and faces at faceBase in the scene.
-void appendIsolines(std::optional<IsolineOverlay>& overlay, const IsolineSpec& spec, const Mesh& mesh,
-                    std::uint32_t vertexBase, std::size_t faceBase, std::size_t faceEnd,
-                    std::size_t vertexEnd);
+// Records a mesh's isolines (resolveIsolines's, drawn as `spec` says): its vertices start at
+// vertexBase and faces at faceBase in the scene.
+void appendIsolines(std::optional<IsolineOverlay>& overlay, const IsolineSpec& spec,
+                    ResolvedIsolines resolved, std::uint32_t vertexBase, std::size_t faceBase,
+                    std::size_t faceEnd, std::size_t vertexEnd);
 void finishIsolines(Scene& scene, std::optional<IsolineOverlay> overlay);
 
 // Whether some mesh asks for arrows.
 bool hasArrows(const SceneDescription& description);
 // Turns each mesh's `arrows` into a mesh instance of its own (after the others): the arrows built
-// by arrowMesh, placed like their mesh, coloured by magnitude with their mesh's map (or in a new
-// material of `color`). Clears the `arrows` of the originals.
-void addArrowMeshes(SceneDescription& description, std::vector<Mesh>& meshes);
+// by arrowMesh at description.when, placed like their mesh (on its warped shape), coloured by
+// magnitude with their mesh's map (or in a new material of `color`). Clears the `arrows` of the
+// originals and returns the arrows' meshes, in the order of their new instances.
+std::vector<Mesh> addArrowMeshes(SceneDescription& description, const std::vector<Mesh>& meshes);
 
 }  // namespace lancer

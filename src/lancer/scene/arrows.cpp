@@ -145,8 +145,8 @@ ArrowPlacement placeArrows(const Mesh& mesh, const MeshField& field, int maxCoun
   }
 }
 
-Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh) {
-  const MeshField& field = findMeshField("arrows", spec.field, spec.step, mesh, spec.where);
+Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh, const StepSelection& when, const WarpSettings* warp) {
+  const MeshField field = meshFieldAt("arrows", spec.field, spec.step, mesh, when, spec.where);
   if (field.perElement || field.components != 3)
     throw InputError(
         spec.where, fmt::format("arrows field \"{}\" must be node data ($NodeData) of 3 components "
@@ -154,9 +154,18 @@ Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh) {
                                 spec.field, field.perElement ? "element data" : "node data", field.components,
                                 field.components == 1 ? "" : "s"));
   const ArrowPlacement placement = placeArrows(mesh, field, spec.maxCount);
+  // The longest arrow of the step shown, or of every step when they follow the scene's: an arrow's
+  // length means the same magnitude in every frame of an animation.
   double largest = 0;
-  for (const std::uint32_t v : placement.vertices) largest = std::max(largest, length(vectorAt(field, v)));
+  std::vector<const MeshField*> steps{&field};
+  if (!spec.step) steps = viewSteps(mesh, spec.field);
+  for (const MeshField* step : steps)
+    if (step->values.size() == field.values.size())
+      for (const std::uint32_t v : placement.vertices)
+        largest = std::max(largest, length(vectorAt(*step, v)));
   const double scale = spec.scale ? *spec.scale : (largest > 0 ? 0.9 * placement.cellSize / largest : 0);
+  std::optional<MeshField> displacement;
+  if (warp) displacement = meshFieldAt("warp", warp->field, std::nullopt, mesh, when, warp->where);
   Mesh out;
   out.origin = mesh.origin;
   out.source.path = mesh.source.path;
@@ -166,15 +175,19 @@ Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh) {
     const double magnitude = length(vector);
     const double arrowLength = spec.fixedLength ? 0.8 * placement.cellSize : scale * magnitude;
     if (!(arrowLength > 0)) continue;
-    appendArrow(out, magnitudes, mesh.worldPosition(v), vector * (1 / magnitude), arrowLength,
-                static_cast<float>(magnitude));
+    Vec3d base = mesh.worldPosition(v);
+    if (displacement && displacement->components == 3) {
+      const Vec3d moved = base + vectorAt(*displacement, v) * warp->factor;
+      if (std::isfinite(moved.x) && std::isfinite(moved.y) && std::isfinite(moved.z)) base = moved;
+    }
+    appendArrow(out, magnitudes, base, vector * (1 / magnitude), arrowLength, static_cast<float>(magnitude));
   }
   out.facePhysicalTag.assign(out.faces.size(), 0);
   out.faceEntityTag.assign(out.faces.size(), 1);
   out.faceEdgeMask.assign(out.faces.size(), kAllEdges);
   MeshField magnitude;
   magnitude.name = spec.field + " magnitude";
-  magnitude.step = spec.step;
+  magnitude.step = 0;
   magnitude.time = field.time;
   magnitude.values = std::move(magnitudes);
   out.fields.push_back(std::move(magnitude));

@@ -10,6 +10,7 @@
 
 #include "lancer/mesh/mesh.hpp"
 #include "lancer/scene/color_by_spec.hpp"
+#include "lancer/scene/scene_description.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
 
 namespace lancer {
@@ -26,10 +27,13 @@ struct ArrowPlacement {
 };
 ArrowPlacement placeArrows(const Mesh& mesh, const MeshField& field, int maxCount);
 
-// The arrows of `spec` on `mesh` as a closed triangle mesh in the mesh's coordinates (same origin),
-// with a node field "<field> magnitude" for colouring by magnitude. An InputError at spec.where when
-// the field is not node data with 3 components.
-Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh);
+// The arrows of `spec` on `mesh` at the step spec pins, else at the scene's `when`, as a closed
+// triangle mesh in the mesh's coordinates (same origin), with a node field "<field> magnitude" for
+// colouring by magnitude. Their automatic scale is the same at every step (the longest arrow over the
+// steps is 0.9 cells) unless a step is pinned. With `warp`, they stand on the deformed surface. An
+// InputError at spec.where when the field is not node data with 3 components.
+Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh, const StepSelection& when = {},
+               const WarpSettings* warp = nullptr);
 
 // The sides of an arrow's shaft and head; each arrow has 6 * kArrowSides triangles.
 inline constexpr int kArrowSides = 12;

@@ -13,19 +13,6 @@
 namespace lancer {
 namespace {
 
-// The least and greatest scalar of a step's values, NaN ignored; empty (low > high) when none.
-std::pair<double, double> scalarRange(const MeshField& field, const FieldComponent& component) {
-  double low = std::numeric_limits<double>::infinity(), high = -low;
-  for (std::size_t i = 0; i < field.itemCount(); ++i) {
-    const double value = componentScalar(field.values.data() + i * static_cast<std::size_t>(field.components),
-                                         field.components, component);
-    if (std::isnan(value)) continue;
-    low = std::min(low, value);
-    high = std::max(high, value);
-  }
-  return {low, high};
-}
-
 // The legend and band keys: title, units, bands, legend.
 void readLegendKeys(const TomlTableReader& reader, ColorBy& spec) {
   if (auto title = reader.string("title")) spec.title = *title;
@@ -56,18 +43,7 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
   constexpr std::array<std::string_view, 5> kMapNames = {"viridis", "magma", "coolwarm", "grey", "gray"};
   if (auto map = reader.choice("map", kMapNames))
     spec.map = *parseColorMap(kMapNames[static_cast<std::size_t>(*map)]);
-  if (const toml::node* component = reader.find("component")) {
-    const std::string text = component->is_integer()
-                                 ? std::to_string(component->value<std::int64_t>().value_or(-1))
-                                 : component->value<std::string>().value_or("");
-    const std::optional<FieldComponent> parsed = parseFieldComponent(text);
-    if (!parsed)
-      reader.fail(*component,
-                  fmt::format("{} must be \"magnitude\", \"x\", \"y\", \"z\", \"von_mises\" or an "
-                              "index 0 to 8, found {}",
-                              reader.qualified("component"), describeValue(*component)));
-    spec.component = *parsed;
-  }
+  if (auto component = readFieldComponent(reader)) spec.component = *component;
   if (const toml::node* range = reader.find("range"); range && range->is_string()) {
     if (range->value<std::string>() != "step")
       reader.fail(*range, fmt::format("{} must be [min, max], \"step\" (each step its own range) or left out "
@@ -123,6 +99,33 @@ const MeshField& findMeshField(std::string_view key, const std::string& name, in
                                             mesh.source.path, didYouMean(name, names), describeViews(mesh)));
 }
 
+std::optional<FieldComponent> readFieldComponent(const TomlTableReader& reader) {
+  const toml::node* component = reader.find("component");
+  if (!component) return std::nullopt;
+  const std::string text = component->is_integer()
+                               ? std::to_string(component->value<std::int64_t>().value_or(-1))
+                               : component->value<std::string>().value_or("");
+  const std::optional<FieldComponent> parsed = parseFieldComponent(text);
+  if (!parsed)
+    reader.fail(*component, fmt::format("{} must be \"magnitude\", \"x\", \"y\", \"z\", \"von_mises\" or an "
+                                        "index 0 to 8, found {}",
+                                        reader.qualified("component"), describeValue(*component)));
+  return parsed;
+}
+
+MeshField meshFieldAt(std::string_view key, const std::string& name, std::optional<int> step,
+                      const Mesh& mesh, const StepSelection& when, const SourceLocation& where) {
+  const std::vector<const MeshField*> steps = viewSteps(mesh, name);
+  if (step || steps.empty()) return findMeshField(key, name, step.value_or(0), mesh, where);
+  std::string problem;
+  std::optional<MeshField> found = viewAt(steps, when, problem);
+  if (!found)
+    throw InputError(
+        where, fmt::format("{} field \"{}\" {} in {}{}; it has {}", key, name, problem, mesh.source.path,
+                           when.where.empty() ? "" : fmt::format(" ({})", when.where), describeViews(mesh)));
+  return std::move(*found);
+}
+
 FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSelection& scene) {
   const std::vector<const MeshField*> steps = viewSteps(mesh, spec.field);
   if (steps.empty()) {
@@ -161,11 +164,11 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
   if (spec.range) {
     range = *spec.range;
   } else if (spec.perStepRange) {
-    range = scalarRange(*found, spec.component);
+    range = componentRange(*found, spec.component);
   } else {  // every step's: a colour means the same value whichever step is shown
     range = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
     for (const MeshField* step : steps) {
-      const auto [low, high] = scalarRange(*step, spec.component);
+      const auto [low, high] = componentRange(*step, spec.component);
       range = {std::min(range.first, low), std::max(range.second, high)};
     }
   }

@@ -35,9 +35,18 @@ struct FieldColoring {
 // spec.where that lists what the file has (and the closest name).
 FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSelection& when = {});
 
+// A table's `component` key (color_by, isolines): "magnitude", "x", "y", "z", "von_mises" or an
+// index 0 to 8; nullopt when absent.
+std::optional<FieldComponent> readFieldComponent(const TomlTableReader& reader);
+
 // The field `name` at `step` of the mesh; an unknown name or step is an InputError at `where`,
 // "<key> field ...", listing what the file has (and the closest name).
 const MeshField& findMeshField(std::string_view key, const std::string& name, int step, const Mesh& mesh,
                                const SourceLocation& where);
+
+// The view `name` at `step` when one is pinned, else at the scene's `when` (a blend of the two steps
+// around a time); an unknown name or step is an InputError at `where` as findMeshField says it.
+MeshField meshFieldAt(std::string_view key, const std::string& name, std::optional<int> step,
+                      const Mesh& mesh, const StepSelection& when, const SourceLocation& where);
 
 }  // namespace lancer

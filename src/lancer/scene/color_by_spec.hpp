@@ -23,24 +23,23 @@ struct ColorBy {
   bool perStepRange = false;                       // range = "step": the range of the step shown
   FieldComponent component;                        // component = "magnitude" (default), 0..8, "x", ...
   SourceLocation where;                            // the color_by value, for errors found at load
-  // From a gmsh view's options (--gmsh-view): View[i].IntervalsType (1 iso-values, 2 continuous, 3
-  // discrete bands, 4 numeric) with NbIso, and ShowScale, for isolines, bands and the legend.
-  int gmshIntervalsType = 2;
-  int gmshNbIso = 10;
-  bool showScale = true;
-  std::optional<std::string> title;       // the legend's; default: the field's name
-  std::string units;                      // the legend's, after the title
-  int bands = 0;                          // > 0: that many discrete colour bands
-  std::optional<LegendPlacement> legend;  // legends in the picture; default: none
+  std::optional<std::string> title;                // the legend's; default: the field's name
+  std::string units;                               // the legend's, after the title
+  int bands = 0;                                   // > 0: that many discrete colour bands
+  std::optional<LegendPlacement> legend;           // legends in the picture; default: none
 };
 
 // `isolines = { field = "T", count = 10 }` (or `values = [...]`) on a [[mesh]]: the curves where a
 // node field, interpolated over each face, takes the given values, drawn `widthPixels` wide.
 struct IsolineSpec {
   std::string field;
-  int step = 0;
+  std::optional<int> step;     // pins the lines to one step; default: the scene's step or time
+  FieldComponent component;    // of a vector or tensor field: its magnitude by default
   int count = 10;              // evenly spaced inside the field's range, when `values` is empty
   std::vector<double> values;  // explicit values
+  // gmsh's iso-values (View.IntervalsType = 1, --gmsh-view): `count` values from the low end of the
+  // mesh's colour range to its high end, both included (one value, the middle, when count is 1).
+  bool colorRangeEnds = false;
   Vec3 color{0, 0, 0};
   float widthPixels = 1.5f;
   SourceLocation where;  // the isolines value
@@ -51,7 +50,7 @@ struct IsolineSpec {
 // maxCount of them, one per cell of a grid over the surface.
 struct ArrowSpec {
   std::string field;
-  int step = 0;
+  std::optional<int> step;  // pins the arrows to one step; default: the scene's step or time
   int maxCount = 500;
   std::optional<double> scale;  // length per unit of magnitude; default ("auto"): the longest is 0.9 cells
   bool fixedLength = false;     // every arrow 0.8 cells long

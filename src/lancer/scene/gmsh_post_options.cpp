@@ -134,13 +134,28 @@ void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
   if (!instance.colorBy) {
     color.field = nameOf(*colour);
     color.where = SourceLocation{path, colour->line, 1};
+    // gmsh shows a tensor view's von Mises value (View.TensorType = 1, its default).
+    const std::vector<const MeshField*> steps = viewSteps(mesh, color.field);
+    if (!steps.empty() && steps.front()->components == 9)
+      color.component.kind = FieldComponent::Kind::VonMises;
   }
   if (colour->rangeType == 2 && colour->customMin < colour->customMax)
     color.range = std::pair{colour->customMin, colour->customMax};
   color.perStepRange = colour->rangeType == 3;
-  color.gmshIntervalsType = colour->intervalsType;
-  color.gmshNbIso = colour->nbIso;
-  color.showScale = colour->showScale;
+  // gmsh's colour scale: a horizontal bar along the bottom (View.AutoPosition), or none.
+  if (!color.legend) color.legend = colour->showScale ? LegendPlacement::Bottom : LegendPlacement::None;
+  const int nbIso = std::clamp(colour->nbIso, 1, 1000);
+  if (colour->intervalsType == 3 && color.bands == 0) color.bands = nbIso;  // discrete: filled bands
+  if (colour->intervalsType == 1 && !instance.isolines) {  // iso-values: lines at gmsh's values
+    IsolineSpec lines;
+    lines.field = color.field;
+    lines.step = color.step;
+    lines.component = color.component;
+    lines.count = nbIso;
+    lines.colorRangeEnds = true;
+    lines.where = SourceLocation{path, colour->line, 1};
+    instance.isolines = lines;
+  }
   instance.colorBy = color;
   if (colour->timeStep && !description.when.step) {
     const std::vector<const MeshField*> steps = viewSteps(mesh, color.field);

@@ -36,9 +36,12 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path);
 
 // Applies the views' options to the description's first mesh (whose file holds the views): the
 // displacement view becomes its warp, the first other visible view its colours (else the
-// displacement's magnitude), with the range, step and intervals gmsh showed. A mesh's own color_by
-// keeps its field; explicit --step and --warp win. Throws InputError at the options file for a view
-// index past the mesh's views or a step past the view's last.
+// displacement's magnitude; a hidden view colours nothing), with the range and step gmsh showed;
+// IntervalsType 1 (iso-values) adds isolines of the coloured field at gmsh's NbIso values (both ends
+// of the range included), 3 (discrete) NbIso colour bands, 2 (continuous) and 4 the plain map;
+// ShowScale puts the legend along the bottom, as gmsh draws its scale, or leaves it out. A mesh's
+// own color_by, isolines, bands and legend win, as do explicit --step and --warp. Throws InputError at the
+// options file for a view index past the mesh's views or a step past the view's last.
 void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
                         const std::vector<GmshPostView>& views, const std::string& path);
 

@@ -24,6 +24,7 @@ std::optional<IsolineSpec> readIsolines(const std::string& file, const TomlTable
   if (!field) reader.failMissing("field", "field = \"temperature\" (a $NodeData view's name)");
   spec.field = *field;
   if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
+  if (auto component = readFieldComponent(reader)) spec.component = *component;
   if (auto count = reader.integer("count", 1, 1000)) spec.count = static_cast<int>(*count);
   if (const toml::node* values = reader.find("values")) {
     const auto* array = values->as_array();
@@ -53,22 +54,46 @@ std::vector<double> evenIsoValues(double low, double high, int count) {
   return values;
 }
 
-ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh) {
-  const MeshField& field = findMeshField("isolines", spec.field, spec.step, mesh, spec.where);
+std::vector<double> gmshIsoValues(double low, double high, int count) {
+  if (count == 1) return {0.5 * (low + high)};
+  std::vector<double> values;
+  values.reserve(static_cast<std::size_t>(std::max(count, 0)));
+  for (int i = 0; i < count; ++i)
+    values.push_back(i == 0 ? low : i == count - 1 ? high : low + (high - low) * i / (count - 1));
+  return values;
+}
+
+ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh, const StepSelection& when,
+                                 std::optional<std::pair<double, double>> colorRange) {
+  const MeshField field = meshFieldAt("isolines", spec.field, spec.step, mesh, when, spec.where);
   if (field.perElement)
     throw InputError(
         spec.where, fmt::format("isolines field \"{}\" is element data ($ElementData: one value per element, "
                                 "constant over each face), so it has no curves to draw; show its steps as "
                                 "colours with color_by = {{ field = \"{}\", bands = 8 }} instead",
                                 spec.field, spec.field));
+  if (const std::string problem = componentProblem(spec.component, field.components); !problem.empty())
+    throw InputError(spec.where,
+                     fmt::format("isolines field \"{}\" in {}: {}", spec.field, mesh.source.path, problem));
   ResolvedIsolines resolved;
   resolved.vertexValue.resize(field.itemCount());
+  const auto components = static_cast<std::size_t>(field.components);
   for (std::size_t i = 0; i < resolved.vertexValue.size(); ++i)
-    resolved.vertexValue[i] = static_cast<float>(field.scalar(i));
+    resolved.vertexValue[i] =
+        componentScalar(field.values.data() + i * components, field.components, spec.component);
   std::vector<double> values = spec.values;
-  if (values.empty()) {
-    const auto [low, high] = field.range();
-    values = evenIsoValues(low, high, low < high ? spec.count : 1);
+  if (values.empty() && spec.colorRangeEnds && colorRange) {
+    values = gmshIsoValues(colorRange->first, colorRange->second, spec.count);
+  } else if (values.empty()) {
+    // The range of the step shown when pinned, else of every step: a line means one value throughout.
+    std::pair<double, double> range = componentRange(field, spec.component);
+    if (!spec.step)
+      for (const MeshField* step : viewSteps(mesh, spec.field)) {
+        const auto [low, high] = componentRange(*step, spec.component);
+        range = {std::min(range.first, low), std::max(range.second, high)};
+      }
+    const auto [low, high] = range;
+    if (low <= high) values = evenIsoValues(low, high, low < high ? spec.count : 1);
   }
   for (const double v : values) resolved.values.push_back(static_cast<float>(v));
   std::sort(resolved.values.begin(), resolved.values.end());

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lancer/mesh/mesh.hpp"
@@ -21,12 +22,20 @@ struct ResolvedIsolines {
   std::vector<float> values;       // sorted, distinct
 };
 
-// Node data only: element data (constant over each face) has no curves, an InputError at
-// spec.where that suggests bands; an unknown field or step as color_by says it.
-ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh);
+// The lines at the step spec pins, else at the scene's `when`. Without `values`, `count` values
+// spread over the range of that step (when pinned) or of every step (as the colours), or with
+// spec.colorRangeEnds over `colorRange` (the mesh's colour range, when it is coloured by the field).
+// Node data only: element data (constant over each face) has no curves, an InputError at spec.where
+// that suggests bands; an unknown field, step or component as color_by says it.
+ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh, const StepSelection& when = {},
+                                 std::optional<std::pair<double, double>> colorRange = std::nullopt);
 
-// `count` values evenly inside (low, high): low + (high - low) * (i + 0.5) / count, as gmsh's iso
-// intervals put one line in the middle of each of `count` equal intervals.
+// `count` values evenly inside (low, high): low + (high - low) * (i + 0.5) / count, one line in the
+// middle of each of `count` equal intervals.
 std::vector<double> evenIsoValues(double low, double high, int count);
+
+// gmsh's iso-values (PViewOptions::getScaleValue, linear scale): low + (high - low) * i / (count - 1)
+// for i = 0 .. count - 1, both ends included; the middle when count is 1.
+std::vector<double> gmshIsoValues(double low, double high, int count);
 
 }  // namespace lancer

@@ -445,9 +445,17 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
       appendFieldColoring(geometry, fields, *coloring, vertexBase, faceBase);
       appendLegendAndBands(*fields, *entries[i].colorBy, *coloring, faceBase, geometry.faces.size());
     }
-    if (instance.isolines)
-      appendIsolines(isolines, *instance.isolines, entries[i].fields ? *entries[i].fields : mesh, vertexBase,
-                     faceBase, geometry.faces.size(), geometry.positions.size());
+    if (instance.isolines) {
+      const IsolineSpec& spec = *instance.isolines;
+      const std::optional<ColorBy>& colorBy = entries[i].colorBy;
+      std::optional<std::pair<double, double>> colorRange;  // gmsh's iso-values span the colours' range
+      if (coloring && colorBy && colorBy->field == spec.field && colorBy->component == spec.component)
+        colorRange = std::pair{coloring->low, coloring->high};
+      appendIsolines(
+          isolines, spec,
+          resolveIsolines(spec, entries[i].fields ? *entries[i].fields : mesh, description.when, colorRange),
+          vertexBase, faceBase, geometry.faces.size(), geometry.positions.size());
+    }
     if (!instance.clips.empty() && !mesh.faces.empty())
       appendMeshClips(scene.clipping, geometry, instance.clips, faceBase);
   }
@@ -491,7 +499,8 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, 
                  StageTimes* timesOrNull) {
   if (hasArrows(description)) {  // the arrows are meshes of their own, built once here
     SceneDescription withArrows = description;
-    addArrowMeshes(withArrows, meshes);
+    std::vector<Mesh> arrows = addArrowMeshes(withArrows, meshes);
+    for (Mesh& mesh : arrows) meshes.push_back(std::move(mesh));
     return buildScene(withArrows, std::move(meshes), threads, timesOrNull);
   }
   StageTimes unused;
@@ -508,25 +517,27 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, 
 
 Scene buildSceneAt(const SceneDescription& description, const std::vector<Mesh>& meshes, int threads,
                    StageTimes* timesOrNull) {
-  if (hasArrows(description)) {  // arrows of the step the scene names: meshes of their own
-    SceneDescription withArrows = description;
-    std::vector<Mesh> withArrowMeshes = meshes;
-    addArrowMeshes(withArrows, withArrowMeshes);
-    return buildSceneAt(withArrows, withArrowMeshes, threads, timesOrNull);
-  }
   StageTimes unused;
   StageTimes& times = timesOrNull ? *timesOrNull : unused;
+  // Arrows of the step the scene names: meshes of their own, holding their one field (the meshes as
+  // read, with every step, are not copied).
+  SceneDescription withArrows = description;
+  std::vector<Mesh> arrows = addArrowMeshes(withArrows, meshes);
   std::vector<Mesh> geometry;
   std::vector<const Mesh*> fields;
   for (const Mesh& mesh : meshes) {
     geometry.push_back(geometryOf(mesh));
     fields.push_back(&mesh);
   }
-  std::vector<Material> materials = description.materials;
+  for (Mesh& mesh : arrows) {
+    geometry.push_back(std::move(mesh));
+    fields.push_back(nullptr);  // its own
+  }
+  std::vector<Material> materials = withArrows.materials;
   std::vector<std::string> warnings;
   std::vector<SceneEntry> entries =
-      sceneEntries(description, std::move(geometry), fields, materials, warnings);
-  return assembleScene(description, std::move(entries), std::move(materials), std::move(warnings), threads,
+      sceneEntries(withArrows, std::move(geometry), fields, materials, warnings);
+  return assembleScene(withArrows, std::move(entries), std::move(materials), std::move(warnings), threads,
                        times);
 }
 

@@ -29,7 +29,7 @@ constexpr std::array<std::string_view, 9> kColorByKeys = {"field", "step",  "map
 constexpr std::array<std::string_view, 2> kWarpKeys = {"field", "factor"};
 constexpr std::array<std::string_view, 6> kArrowKeys = {"field", "step",   "max_count",
                                                         "scale", "length", "color"};
-constexpr std::array<std::string_view, 6> kIsolineKeys = {"field",  "step",  "count",
+constexpr std::array<std::string_view, 7> kIsolineKeys = {"field",  "step",  "component", "count",
                                                           "values", "color", "width"};
 constexpr std::array<std::string_view, 3> kClipKeys = {"point", "normal", "cap"};
 constexpr std::array<std::string_view, 3> kFloorKeys = {"shadow_catcher", "height", "normal"};

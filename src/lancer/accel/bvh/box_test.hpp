@@ -1,6 +1,6 @@
 // The BVH's ray/box test: one ray against a node's eight child boxes in one AVX2 step (slabs,
 // Kay & Kajiya), each box grown by a band against rounding as the kd-tree's split planes are
-// (kd/query.hpp's kPlaneSlack), so that no hit the triangle test accepts lies outside the boxes that
+// (hit_query.hpp: kPlaneSlack), so that no hit the triangle test accepts lies outside the boxes that
 // lead to it. Shared by the single-ray and packet walks.
 #pragma once
 
@@ -9,7 +9,7 @@
 #include <cstdint>
 
 #include "lancer/accel/bvh/node.hpp"
-#include "lancer/accel/kd/query.hpp"
+#include "lancer/accel/hit_query.hpp"
 #include "lancer/math/ray.hpp"
 
 #if defined(__AVX2__) && defined(__FMA__)
@@ -29,7 +29,7 @@ struct BoxRay {
   BoxRay(const Ray& ray, float magnitude) {
     const float origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
     const float inv[3] = {ray.invDirection.x, ray.invDirection.y, ray.invDirection.z};
-    const float band = kd::kPlaneSlack * std::max(magnitude, maxComponent(abs(ray.origin)));
+    const float band = accel::kPlaneSlack * std::max(magnitude, maxComponent(abs(ray.origin)));
     for (int a = 0; a < 3; ++a) {
       towardsMinus[a] = inv[a] < 0.0f ? 1 : 0;
       const float signedBand = towardsMinus[a] ? -band : band;

@@ -16,6 +16,7 @@
 #include <string>
 #include <thread>
 
+#include "lancer/accel/build_threads.hpp"
 #include "lancer/accel/bvh/build_parts.hpp"
 #include "lancer/accel/bvh/bvh.hpp"
 #include "lancer/util/huge_pages.hpp"
@@ -75,18 +76,10 @@ struct BvhBuilder {
     // Biggest subtrees first, each on whichever thread is free.
     std::stable_sort(subtrees_.begin(), subtrees_.end(),
                      [](const Subtree& a, const Subtree& b) { return a.range.count() > b.range.count(); });
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-      std::deque<BuildNode>& own = nodes_.create();
-      for (std::size_t k; (k = next.fetch_add(1)) < subtrees_.size();)
-        *subtrees_[k].slot = buildNode(subtrees_[k].range, own, false);
-    };
-    const int helpers = std::min<int>(threads_, static_cast<int>(subtrees_.size())) - 1;
-    std::vector<std::thread> workers;
-    workers.reserve(static_cast<std::size_t>(std::max(helpers, 0)));
-    for (int t = 0; t < helpers; ++t) workers.emplace_back(work);
-    work();
-    for (std::thread& thread : workers) thread.join();
+    BuildThreads threads(threads_);
+    threads.runEach(std::span<Subtree>(subtrees_), [&](const Subtree& subtree) {
+      *subtree.slot = buildNode(subtree.range, nodes_.create(), false);
+    });
     return top;
   }
 

@@ -11,9 +11,7 @@
 
 #include "lancer/accel/accel_stats.hpp"
 #include "lancer/accel/bvh/node.hpp"
-#include "lancer/accel/hit.hpp"
-#include "lancer/accel/hit_filter.hpp"
-#include "lancer/accel/ray_packet.hpp"
+#include "lancer/accel/tree_queries.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/aabb.hpp"
 #include "lancer/mesh/mesh.hpp"
@@ -36,28 +34,24 @@ struct BvhBuildOptions {
   std::uint32_t parallelTopAbove = 0;
 };
 
-class Bvh {
+class Bvh : public TreeQueries<Bvh> {
  public:
   static Bvh build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                    const BvhBuildOptions& options = {});
 
-  // Closest hit with t in (tMin, tMax), ties to the lower face; false (hit untouched) when none.
-  bool intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const;
-  // Any hit with t in (tMin, tMax): the shadow-ray query, stops at the first blocker.
-  bool occluded(const Ray& ray, float tMin, float tMax) const;
-  // The same two queries seeing only the hits `filter` keeps.
-  bool intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const;
-  bool occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const;
-
-  // The packet queries (bvh/packet_traversal.cpp): the active lanes walk the tree once together,
-  // each child box tested for every lane, each leaf triangle for the lanes that reached it. Each
-  // lane's answer is the single ray's, to the bit. Return the lanes that hit (or are occluded).
-  std::uint32_t intersect(const RayPacket& packet, std::uint32_t active,
-                          std::span<Hit, kPacketSize> hits) const;
-  std::uint32_t occluded(const RayPacket& packet, std::uint32_t active) const;
-  std::uint32_t intersect(const RayPacket& packet, std::uint32_t active, const HitFilter& filter,
-                          std::span<Hit, kPacketSize> hits) const;
-  std::uint32_t occluded(const RayPacket& packet, std::uint32_t active, const HitFilter& filter) const;
+  // The walks behind TreeQueries' eight queries, instantiated for KeepEveryHit and HitFilter:
+  // single rays (bvh/traversal.cpp) and packets (bvh/packet_traversal.cpp: the active lanes walk
+  // the tree once together, each child box tested for every lane, each leaf triangle for the lanes
+  // that reached it).
+  template <typename Filter>
+  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const;
+  template <typename Filter>
+  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const;
+  template <typename Filter>
+  std::uint32_t closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
+                            std::span<Hit, kPacketSize> hits) const;
+  template <typename Filter>
+  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
 
   // Refit (bvh/refit.cpp): the same faces at new `positions` (a deformed time step: same vertex
   // count, same topology), the tree kept and its boxes recomputed bottom up. Returns false, leaving
@@ -82,15 +76,6 @@ class Bvh {
  private:
   friend struct BvhBuilder;
 
-  template <typename Filter>
-  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const;
-  template <typename Filter>
-  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const;
-  template <typename Filter>
-  std::uint32_t closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
-                            std::span<Hit, kPacketSize> hits) const;
-  template <typename Filter>
-  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
   // The SAH cost of the tree as it stands, in the build's units (stats_.sahCost).
   double sahCost() const;
   // The scene box of the tree's triangles, padded, and the largest coordinate in it.

@@ -1,58 +1,24 @@
 // Packet traversal of the BVH: the active lanes of a packet walk the tree once together, each child
 // box tested for all eight lanes in one AVX2 step (the lanes that meet it go down with it), each
-// leaf triangle tested against the lanes that reached it in one step (kd/packet_frame.hpp's shared
+// leaf triangle tested against the lanes that reached it in one step (accel/packet_frame.hpp's shared
 // packet test). A lane's answer does not depend on the order it meets leaves in (the closest hit is
 // the least (t, face) however found, a quad's halves are tested in order in one leaf), so every lane
 // gets the single ray's answer, to the bit. Unlike the kd-tree's packets, the rays need not run
 // the same way along each axis.
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <type_traits>
 
-#include "lancer/accel/bvh/box_test.hpp"
 #include "lancer/accel/bvh/bvh.hpp"
-#include "lancer/accel/kd/packet_frame.hpp"
+#include "lancer/accel/bvh/walk.hpp"
+#include "lancer/accel/packet_frame.hpp"
 
 namespace lancer {
 namespace {
 
 using namespace bvh;
-using namespace kd;
-
-// The single-ray queries, lane by lane (a lone lane, and builds without AVX2).
-template <typename Filter>
-std::uint32_t closestHitsOneByOne(const Bvh& bvh, const RayPacket& packet, std::uint32_t active,
-                                  const Filter& keeps, std::span<Hit, kPacketSize> hits) {
-  std::uint32_t hitLanes = 0;
-  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
-    const int i = std::countr_zero(lanes);
-    bool hit;
-    if constexpr (std::is_same_v<Filter, HitFilter>) {
-      hit = bvh.intersect(packet.ray[i], packet.tMin[i], packet.tMax[i], keeps, hits[i]);
-    } else {
-      hit = bvh.intersect(packet.ray[i], packet.tMin[i], packet.tMax[i], hits[i]);
-    }
-    hitLanes |= hit ? 1u << i : 0u;
-  }
-  return hitLanes;
-}
-
-template <typename Filter>
-std::uint32_t anyHitsOneByOne(const Bvh& bvh, const RayPacket& packet, std::uint32_t active,
-                              const Filter& keeps) {
-  std::uint32_t hitLanes = 0;
-  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
-    const int i = std::countr_zero(lanes);
-    bool hit;
-    if constexpr (std::is_same_v<Filter, HitFilter>) {
-      hit = bvh.occluded(packet.ray[i], packet.tMin[i], packet.tMax[i], keeps);
-    } else {
-      hit = bvh.occluded(packet.ray[i], packet.tMin[i], packet.tMax[i]);
-    }
-    hitLanes |= hit ? 1u << i : 0u;
-  }
-  return hitLanes;
-}
+using namespace accel;
 
 #ifdef LANCER_PACKETS_AVX2
 
@@ -63,6 +29,7 @@ std::uint32_t anyHitsOneByOne(const Bvh& bvh, const RayPacket& packet, std::uint
 struct PacketBoxes {
   __m256 lowEdge[3], highEdge[3];
   __m256 tMin, eps;
+  alignas(32) float laneEps[kPacketSize];  // eps, lane by lane (a lane left alone walks on its own)
 };
 
 // Sets up the lanes of `active` that meet the scene box (kept in `active`).
@@ -93,6 +60,7 @@ void setUpBoxes(const RayPacket& packet, std::uint32_t& active, const Aabb& boun
   }
   boxes.tMin = _mm256_load_ps(tMin);
   boxes.eps = _mm256_load_ps(eps);
+  std::copy(eps, eps + kPacketSize, boxes.laneEps);
 }
 
 struct alignas(32) PacketStackEntry {
@@ -103,15 +71,23 @@ struct alignas(32) PacketStackEntry {
 
 // Walks the tree with the lanes `active`; Query::test(tri, lanes) tests a triangle on some lanes and
 // returns those that are done (any-hit: blocked), Query::bound() is each lane's pruning distance.
-// Returns the lanes that are done.
-template <typename Query>
+// A lane left alone in a subtree finishes it on the single-ray walk (bvh/walk.hpp): one box test
+// for one ray instead of eight lanes for one, as the kd-tree's packets do; alone(child, lane) says
+// whether the lane is done. Returns the lanes that are done.
+template <typename Query, typename Alone>
 std::uint32_t walkPacket(std::span<const BvhNode> nodes, const PackedTriangle* triangles,
-                         const PacketFrame& f, const PacketBoxes& boxes, std::uint32_t active, Query& query) {
+                         const PacketFrame& f, const PacketBoxes& boxes, std::uint32_t active, Query& query,
+                         const Alone& alone) {
   PacketStackEntry stack[BvhNode::kMaxDepth * (BvhNode::kWidth - 1) + 1];
   int top = 0;
   std::uint32_t done = 0, lanes = active, child = 0;
   while (true) {
-    if (!BvhNode::isLeaf(child)) {
+    if ((lanes & (lanes - 1)) == 0) {
+      if (alone(child, std::countr_zero(lanes))) {
+        done |= lanes;
+        if ((active & ~done) == 0) return done;
+      }
+    } else if (!BvhNode::isLeaf(child)) {
       const BvhNode& node = nodes[child];
       const __m256 limit = _mm256_add_ps(query.bound(), boxes.eps);
       alignas(32) float tNear[BvhNode::kWidth][kPacketSize];
@@ -189,34 +165,27 @@ std::uint32_t Bvh::closestHits(const RayPacket& packet, std::uint32_t active, co
                                std::span<Hit, kPacketSize> hits) const {
   active &= kAllLanes;
 #ifdef LANCER_PACKETS_AVX2
-  if (std::popcount(active) < 2) return closestHitsOneByOne(*this, packet, active, keeps, hits);
+  if (std::popcount(active) < 2) return closestHitsOneByOne(packet, active, keeps, hits);
   PacketFrame frame;
   loadPacketRays(packet, active, frame);
   PacketClosestHit<Filter> query{packet, frame, keeps, {}, {}, {}};
-  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
-    const int i = std::countr_zero(lanes);
-    query.best[i] = Hit{packet.tMax[i], Hit{}.face};
-    query.upper[i] = packet.tMax[i];
-    for (const PackedTriangle& tri : slivers_) {
-      takeIfCloser(testTriangle(tri, packet.ray[i], packet.tMin[i], query.upper[i]), tri.face, packet.ray[i],
-                   packet.tMax[i], keeps, query.best[i], query.upper[i]);
-    }
-    query.bestT[i] = query.best[i].t;
-  }
+  query.start(active, slivers_);
   std::uint32_t inBox = active;
   PacketBoxes boxes;
   setUpBoxes(packet, inBox, bounds_, magnitude_, boxes);
-  if (inBox != 0) walkPacket(nodes_, triangles_.data(), frame, boxes, inBox, query);
-  std::uint32_t hitLanes = 0;
-  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
-    const int i = std::countr_zero(lanes);
-    if (!query.best[i].valid()) continue;
-    hits[i] = query.best[i];
-    hitLanes |= 1u << i;
-  }
-  return hitLanes;
+  auto alone = [&](std::uint32_t start, int i) {
+    ClosestHit<Filter> single{query.best[i], query.upper[i], keeps};
+    walkFrom(start, nodes_, triangles_.data(), BoxRay(packet.ray[i], magnitude_), boxes.laneEps[i],
+             packet.ray[i], packet.tMin[i], packet.tMax[i], single);
+    query.best[i] = single.best;
+    query.upper[i] = single.upper;
+    query.bestT[i] = single.best.t;
+    return false;
+  };
+  if (inBox != 0) walkPacket(nodes_, triangles_.data(), frame, boxes, inBox, query, alone);
+  return query.answer(active, hits);
 #else
-  return closestHitsOneByOne(*this, packet, active, keeps, hits);
+  return closestHitsOneByOne(packet, active, keeps, hits);
 #endif
 }
 
@@ -224,18 +193,8 @@ template <typename Filter>
 std::uint32_t Bvh::anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const {
   active &= kAllLanes;
 #ifdef LANCER_PACKETS_AVX2
-  if (std::popcount(active) < 2) return anyHitsOneByOne(*this, packet, active, keeps);
-  std::uint32_t blocked = 0;
-  for (std::uint32_t lanes = active; lanes != 0 && !slivers_.empty(); lanes &= lanes - 1) {
-    const int i = std::countr_zero(lanes);
-    for (const PackedTriangle& tri : slivers_) {
-      const float t = intersectTriangle(tri, packet.ray[i], packet.tMin[i], packet.tMax[i]);
-      if (t >= 0.0f && keeps(packet.ray[i], tri.face, t)) {
-        blocked |= 1u << i;
-        break;
-      }
-    }
-  }
+  if (std::popcount(active) < 2) return anyHitsOneByOne(packet, active, keeps);
+  const std::uint32_t blocked = lanesBlockedBySlivers(packet, active, slivers_, keeps);
   std::uint32_t inBox = active & ~blocked;
   PacketBoxes boxes;
   setUpBoxes(packet, inBox, bounds_, magnitude_, boxes);
@@ -243,29 +202,23 @@ std::uint32_t Bvh::anyHits(const RayPacket& packet, std::uint32_t active, const 
   PacketFrame frame;
   loadPacketRays(packet, inBox, frame);
   PacketAnyHit<Filter> query{packet, frame, keeps, {}};
-  for (int i = 0; i < kPacketSize; ++i) query.tMax[i] = (inBox >> i & 1u) != 0 ? packet.tMax[i] : 0.0f;
-  return blocked | walkPacket(nodes_, triangles_.data(), frame, boxes, inBox, query);
+  query.start(inBox);
+  auto alone = [&](std::uint32_t start, int i) {
+    AnyHit<Filter> single{keeps};
+    return walkFrom(start, nodes_, triangles_.data(), BoxRay(packet.ray[i], magnitude_), boxes.laneEps[i],
+                    packet.ray[i], packet.tMin[i], packet.tMax[i], single);
+  };
+  return blocked | walkPacket(nodes_, triangles_.data(), frame, boxes, inBox, query, alone);
 #else
-  return anyHitsOneByOne(*this, packet, active, keeps);
+  return anyHitsOneByOne(packet, active, keeps);
 #endif
 }
 
-std::uint32_t Bvh::intersect(const RayPacket& packet, std::uint32_t active,
-                             std::span<Hit, kPacketSize> hits) const {
-  return closestHits(packet, active, KeepEveryHit{}, hits);
-}
-
-std::uint32_t Bvh::occluded(const RayPacket& packet, std::uint32_t active) const {
-  return anyHits(packet, active, KeepEveryHit{});
-}
-
-std::uint32_t Bvh::intersect(const RayPacket& packet, std::uint32_t active, const HitFilter& filter,
-                             std::span<Hit, kPacketSize> hits) const {
-  return closestHits(packet, active, filter, hits);
-}
-
-std::uint32_t Bvh::occluded(const RayPacket& packet, std::uint32_t active, const HitFilter& filter) const {
-  return anyHits(packet, active, filter);
-}
+template std::uint32_t Bvh::closestHits(const RayPacket&, std::uint32_t, const KeepEveryHit&,
+                                        std::span<Hit, kPacketSize>) const;
+template std::uint32_t Bvh::closestHits(const RayPacket&, std::uint32_t, const HitFilter&,
+                                        std::span<Hit, kPacketSize>) const;
+template std::uint32_t Bvh::anyHits(const RayPacket&, std::uint32_t, const KeepEveryHit&) const;
+template std::uint32_t Bvh::anyHits(const RayPacket&, std::uint32_t, const HitFilter&) const;
 
 }  // namespace lancer

@@ -6,97 +6,23 @@
 #include <bit>
 #include <cmath>
 
-#include "lancer/accel/bvh/box_test.hpp"
 #include "lancer/accel/bvh/bvh.hpp"
-#include "lancer/accel/bvh/leaf_test.hpp"
+#include "lancer/accel/bvh/walk.hpp"
 
 namespace lancer {
 namespace {
 
 using namespace bvh;
-using namespace kd;
+using namespace accel;
 
-struct StackEntry {
-  std::uint32_t child;
-  float tNear;
-};
-
-// Pushes the children of `mask` (other than the nearest, returned) so that the nearest pops first;
-// any-hit queries take them in slot order.
-template <bool kSorted>
-std::uint32_t pushChildren(const BvhNode& node, std::uint32_t mask, const float* tNear, StackEntry* stack,
-                           int& top) {
-  if constexpr (!kSorted) {
-    const int first = std::countr_zero(mask);
-    for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
-      const int k = std::countr_zero(mask);
-      stack[top++] = {node.child[k], tNear[k]};
-    }
-    return node.child[first];
-  } else {
-    // Insertion sort, far to near, straight onto the stack (at most eight entries).
-    const int base = top;
-    for (; mask != 0; mask &= mask - 1) {
-      const int k = std::countr_zero(mask);
-      const StackEntry entry{node.child[k], tNear[k]};
-      int at = top++;
-      while (at > base && stack[at - 1].tNear < entry.tNear) {
-        stack[at] = stack[at - 1];
-        --at;
-      }
-      stack[at] = entry;
-    }
-    return stack[--top].child;
-  }
-}
-
-// Walks the tree; Query::test/finish return true to stop (any hit), Query::bound is the current
-// pruning distance (the closest hit so far, or tMax for any-hit).
+// The whole tree for one ray: its span in the scene box sets the slack of the pruning.
 template <typename Query>
 bool walk(std::span<const BvhNode> nodes, const PackedTriangle* triangles, const Aabb& bounds,
           float magnitude, const Ray& ray, float tMin, float tMax, Query& query) {
   float tEnter, tExit;
   if (!intersectAabb(bounds, ray, tMin, tMax, tEnter, tExit)) return false;
   const float eps = kSlack * std::max(std::abs(tEnter), std::abs(tExit));
-  const BoxRay boxRay(ray, magnitude);
-#ifdef LANCER_BVH_AVX2
-  const BoxRay8 boxRay8(boxRay);
-  const __m256 lowest = _mm256_set1_ps(tMin);
-#endif
-  StackEntry stack[BvhNode::kMaxDepth * (BvhNode::kWidth - 1) + 1];
-  int top = 0;
-  std::uint32_t child = 0;  // the root
-  while (true) {
-    if (!BvhNode::isLeaf(child)) {
-      const BvhNode& node = nodes[child];
-      const float limit = query.bound(tMax) + eps;
-      alignas(32) float tNear[BvhNode::kWidth];
-#ifdef LANCER_BVH_AVX2
-      __m256 enter;
-      const std::uint32_t mask = hitChildren(node, boxRay8, lowest, _mm256_set1_ps(limit), enter);
-      _mm256_store_ps(tNear, enter);
-#else
-      const std::uint32_t mask = hitChildrenScalar(node, boxRay, tMin, limit, tNear);
-#endif
-      if (mask != 0) {
-        if ((mask & (mask - 1)) == 0) {
-          child = node.child[std::countr_zero(mask)];
-        } else {
-          child = pushChildren<!Query::kAnyHit>(node, mask, tNear, stack, top);
-        }
-        continue;
-      }
-    } else if (testLeaf(triangles + BvhNode::leafFirst(child), BvhNode::leafCount(child), ray, tMin, tMax,
-                        query)) {
-      return true;
-    }
-    // The next child on the stack still entered before the bound.
-    do {
-      if (top == 0) return false;
-      --top;
-    } while (stack[top].tNear > query.bound(tMax) + eps);
-    child = stack[top].child;
-  }
+  return walkFrom(0, nodes, triangles, BoxRay(ray, magnitude), eps, ray, tMin, tMax, query);
 }
 
 }  // namespace
@@ -120,20 +46,9 @@ bool Bvh::anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) co
   return walk(nodes_, triangles_.data(), bounds_, magnitude_, ray, tMin, tMax, query);
 }
 
-bool Bvh::intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
-  return closestHit(ray, tMin, tMax, KeepEveryHit{}, hit);
-}
-
-bool Bvh::occluded(const Ray& ray, float tMin, float tMax) const {
-  return anyHit(ray, tMin, tMax, KeepEveryHit{});
-}
-
-bool Bvh::intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const {
-  return closestHit(ray, tMin, tMax, filter, hit);
-}
-
-bool Bvh::occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const {
-  return anyHit(ray, tMin, tMax, filter);
-}
+template bool Bvh::closestHit(const Ray&, float, float, const KeepEveryHit&, Hit&) const;
+template bool Bvh::closestHit(const Ray&, float, float, const HitFilter&, Hit&) const;
+template bool Bvh::anyHit(const Ray&, float, float, const KeepEveryHit&) const;
+template bool Bvh::anyHit(const Ray&, float, float, const HitFilter&) const;
 
 }  // namespace lancer

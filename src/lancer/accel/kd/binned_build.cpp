@@ -23,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "lancer/accel/build_threads.hpp"
 #include "lancer/accel/kd/binned_partition.hpp"
 #include "lancer/accel/kd/binned_split.hpp"
 #include "lancer/accel/kd/build.hpp"
@@ -30,7 +31,6 @@
 #include "lancer/accel/kd_tree.hpp"
 #include "lancer/util/huge_pages.hpp"
 #include "lancer/util/parallel_for.hpp"
-#include "lancer/util/stopwatch.hpp"
 
 #if defined(__AVX2__)
 #include <immintrin.h>
@@ -118,7 +118,8 @@ class BinnedBuilder {
         arenas_(arenas),
         maxDepth_(resolveMaxDepth(options, input.triangles.size())),
         threads_(resolveThreads(options)),
-        chunkGrain_(std::clamp<std::size_t>(options.parallelSplitAbove / 4, 1, 16384)) {}
+        chunkGrain_(std::clamp<std::size_t>(options.parallelSplitAbove / 4, 1, 16384)),
+        forks_(threads_) {}
 
   BuildNode* buildRoot() {
     const std::size_t n = input_.triangles.size();
@@ -153,23 +154,13 @@ class BinnedBuilder {
     });
     refs.wrote(n);
     for (const Box& used : chunkUsed) root.used.extend(used);
-    spareThreads_ = threads_ - 1;
     BuildArena& arena = arenas_.create();
     BuildNode* top = buildTop(std::move(refs), n, root, 0, arena);
     std::sort(subtrees_.begin(), subtrees_.end(),
               [](const Subtree& a, const Subtree& b) { return a.count > b.count; });
-    std::vector<std::future<void>> running;
-    for (Subtree& subtree : subtrees_) {
-      if (&subtree != &subtrees_.back() && takeSpareThread()) {
-        running.push_back(std::async(std::launch::async, [&] {
-          buildDetached(std::move(subtree.refs), subtree.count, subtree.cell, subtree.depth, *subtree.slot);
-          ++spareThreads_;
-        }));
-      } else {
-        buildDetached(std::move(subtree.refs), subtree.count, subtree.cell, subtree.depth, *subtree.slot);
-      }
-    }
-    for (std::future<void>& task : running) task.get();
+    forks_.runEach(std::span<Subtree>(subtrees_), [&](Subtree& subtree) {
+      buildDetached(std::move(subtree.refs), subtree.count, subtree.cell, subtree.depth, *subtree.slot);
+    });
     return top;
   }
 
@@ -180,11 +171,7 @@ class BinnedBuilder {
   struct Scratch {
     RefBuffer stack;
     BinCounts counts;
-    // Room for a window's events, not zeroed: a window holds a small part of the cell's 2n
-    // bounds, so only the pages it writes come into memory (a zeroed vector of the root's 2n stays
-    // in memory until the subtree is built: 16 bytes a triangle).
-    std::unique_ptr<WindowEvent[]> window;
-    std::size_t windowRoom = 0;
+    WindowRoom window;
     std::vector<std::uint32_t> leaf;
   };
 
@@ -196,27 +183,6 @@ class BinnedBuilder {
     // No split can cost less than kt * emptySpaceFactor, so cells this small stay leaves.
     const float cheapestSplit = options_.traversalCost * std::min(1.0f, options_.emptySpaceFactor);
     return n == 0 || depth >= maxDepth_ || options_.intersectionCost * float(n) <= cheapestSplit;
-  }
-
-  // The split of the cell holding refs[0, n): binned and refined in the window around the best
-  // boundary (exact for a small cell, though build() hands those to buildSmall).
-  Split chooseSplit(const Ref* refs, std::size_t n, const Cell& cell, Scratch& scratch) const {
-    if (n < kSmallCell) return exactSmallSplit(refs, n, cell.box, options_);
-    const BinGrid grid(cell, n);
-    scratch.counts.clear(grid.bins);
-    scratch.counts.count(refs, n, grid, cell.box);
-    const auto count = static_cast<std::uint32_t>(n);
-    Split split = bestBinnedSplit(scratch.counts, grid, cell, count, options_);
-    if (split.bin > 0) {
-      if (scratch.windowRoom < 2 * n) {
-        scratch.window = std::make_unique_for_overwrite<WindowEvent[]>(2 * n);
-        scratch.windowRoom = 2 * n;
-      }
-      const std::size_t events =
-          collectWindow(refs, n, grid, split.axis, split.bin - 1, split.bin, scratch.window.get());
-      refineInWindow(split, scratch.counts, cell, count, scratch.window.get(), events, options_);
-    }
-    return split;
   }
 
   // Big cells: binning and partition run over chunks on every thread; their children are kept in
@@ -235,14 +201,8 @@ class BinnedBuilder {
       chunkCounts[chunk].count(refs.data() + begin, end - begin, grid, cell.box);
     });
     for (std::size_t c = 1; c < plan.chunks; ++c) chunkCounts[0].add(chunkCounts[c]);
-    const auto count = static_cast<std::uint32_t>(n);
-    Split split = bestBinnedSplit(chunkCounts[0], grid, cell, count, options_);
-    if (split.bin > 0) {
-      const auto window = std::make_unique_for_overwrite<WindowEvent[]>(2 * n);  // as in chooseSplit
-      const std::size_t events =
-          collectWindow(refs.data(), n, grid, split.axis, split.bin - 1, split.bin, window.get());
-      refineInWindow(split, chunkCounts[0], cell, count, window.get(), events, options_);
-    }
+    WindowRoom window;
+    const Split split = splitFromBins(chunkCounts[0], grid, refs.data(), n, cell, options_, window);
     if (split.axis < 0 || split.cost >= options_.intersectionCost * float(n)) {
       BuildNode* slot = arena.leaf({});
       subtrees_.push_back({std::move(refs), n, cell, depth, slot});  // its subtree makes it a leaf
@@ -280,27 +240,6 @@ class BinnedBuilder {
     BuildNode* leftNode = buildTop(std::move(left), nl, children.left, depth + 1, arena);
     BuildNode* rightNode = buildTop(std::move(right), nr, children.right, depth + 1, arena);
     return arena.inner(split.axis, split.pos, leftNode, rightNode);
-  }
-
-  // Whether a build thread is free to take a subtree; the caller gives it back when done. At most
-  // `threads` run at once, however the subtrees fall.
-  bool takeSpareThread() {
-    int spare = spareThreads_.load();
-    while (spare > 0 && !spareThreads_.compare_exchange_weak(spare, spare - 1)) {
-    }
-    return spare > 0;
-  }
-
-  // Waits for the forked child's subtree. Waiting, this thread runs nothing, so it lends its
-  // place to the others (the forked subtree may have far more left to do than this thread had);
-  // it takes a place again before going on, so that at most `threads` run at once.
-  void awaitChild(std::future<void>& task) {
-    if (task.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
-      ++spareThreads_;
-      task.wait();
-      while (!takeSpareThread()) std::this_thread::yield();
-    }
-    task.get();
   }
 
   // A subtree with its own working memory and arena, built by the calling thread into `node`.
@@ -350,7 +289,8 @@ class BinnedBuilder {
              Scratch& scratch, BuildNode& node) {
     if (n < kSmallCell) return buildSmall(begin, n, cell.box, depth, arena, scratch, node);
     if (leafByCount(n, depth)) return makeLeaf(scratch.stack.data() + begin, n, arena, scratch, node);
-    const Split split = chooseSplit(scratch.stack.data() + begin, n, cell, scratch);
+    const Split split =
+        findSplit(scratch.stack.data() + begin, n, cell, options_, scratch.counts, scratch.window);
     if (split.axis < 0 || split.cost >= options_.intersectionCost * float(n)) {
       return makeLeaf(scratch.stack.data() + begin, n, arena, scratch, node);
     }
@@ -362,19 +302,20 @@ class BinnedBuilder {
     partition(base + begin, n, base + begin, base + leftBegin, children);
     scratch.stack.wrote(leftBegin + children.leftCount);
     BuildNode* left = setInner(node, split, arena);
-    if (children.leftCount >= kForkAbove && takeSpareThread()) {
+    if (children.leftCount >= kForkAbove && forks_.spare()) {
       // A thread is idle (its subtree done): it takes the left child, with a copy of its references.
       RefBuffer leftRefs(stackSize(children.leftCount));
       std::copy_n(base + leftBegin, children.leftCount, leftRefs.data());
       leftRefs.wrote(children.leftCount);
-      scratch.stack.release(begin + children.rightCount);
-      auto task = std::async(std::launch::async, [&] {
-        buildDetached(std::move(leftRefs), children.leftCount, children.left, depth + 1, *left);
-        ++spareThreads_;
+      std::future<void> task = forks_.fork([&, refs = std::move(leftRefs)]() mutable {
+        buildDetached(std::move(refs), children.leftCount, children.left, depth + 1, *left);
       });
-      build(begin, children.rightCount, children.right, depth + 1, arena, scratch, *node.child[1]);
-      awaitChild(task);
-      return;
+      if (task.valid()) {
+        scratch.stack.release(begin + children.rightCount);
+        build(begin, children.rightCount, children.right, depth + 1, arena, scratch, *node.child[1]);
+        forks_.join(task);
+        return;
+      }
     }
     build(leftBegin, children.leftCount, children.left, depth + 1, arena, scratch, *left);
     scratch.stack.release(begin + children.rightCount);  // the left subtree's references are done
@@ -395,7 +336,7 @@ class BinnedBuilder {
   int threads_;
   std::size_t chunkGrain_;  // references per chunk of the parallel top
   std::size_t topBelow_ = 0;
-  std::atomic<int> spareThreads_{0};
+  BuildThreads forks_;
   static constexpr std::size_t kForkAbove = 4096;  // smaller subtrees are not worth a thread
   std::vector<Subtree> subtrees_;
 };
@@ -404,15 +345,8 @@ class BinnedBuilder {
 
 KdTree KdTree::buildSah(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                         const KdBuildOptions& options) {
-  const Stopwatch stopwatch;
-  KdBuildInput input = gatherTriangles(positions, faces, false, options.threads);
-  BuildArenas arenas;
-  BinnedBuilder builder(input, options, arenas);
-  BuildNode* root = builder.buildRoot();
-  // The layout pass is part of the build the user waits for, so it is inside the timing.
-  KdTree tree = KdTreeAssembler::assemble(*root, arenas, std::move(input), options, "kdtree-sah", 0.0);
-  tree.stats_.buildSeconds = stopwatch.seconds();
-  return tree;
+  return KdTreeAssembler::build<BinnedBuilder>(positions, faces, options, /*withCorners=*/false,
+                                               "kdtree-sah");
 }
 
 }  // namespace lancer

@@ -428,4 +428,25 @@ Split exactSmallSplit(const Ref* refs, std::size_t n, const Box& cell, const KdB
   return best;
 }
 
+Split splitFromBins(const BinCounts& counts, const BinGrid& grid, const Ref* refs, std::size_t n,
+                    const Cell& cell, const KdBuildOptions& options, WindowRoom& window) {
+  const auto count = static_cast<std::uint32_t>(n);
+  Split split = bestBinnedSplit(counts, grid, cell, count, options);
+  if (split.bin > 0) {
+    WindowEvent* events = window.forRefs(n);
+    const std::size_t eventCount = collectWindow(refs, n, grid, split.axis, split.bin - 1, split.bin, events);
+    refineInWindow(split, counts, cell, count, events, eventCount, options);
+  }
+  return split;
+}
+
+Split findSplit(const Ref* refs, std::size_t n, const Cell& cell, const KdBuildOptions& options,
+                BinCounts& counts, WindowRoom& window) {
+  if (n < kSmallCell) return exactSmallSplit(refs, n, cell.box, options);
+  const BinGrid grid(cell, n);
+  counts.clear(grid.bins);
+  counts.count(refs, n, grid, cell.box);
+  return splitFromBins(counts, grid, refs, n, cell, options, window);
+}
+
 }  // namespace lancer::binned

@@ -1,11 +1,13 @@
-// The split search of the binned kd-tree build (binned_build.cpp): a cell's references, the bins
-// one pass over them fills, and the plane those bins and an exact sweep of their window choose;
-// small cells are searched exactly instead (exactSmallSplit).
+// The one binned-SAH search of the kd-tree builds (the default binned_build.cpp, and the binned top
+// of sah_build.cpp): a cell's references, the bins one pass over them fills, and the plane those
+// bins and an exact sweep of their window choose; small cells are searched exactly instead
+// (exactSmallSplit). The BVH bins centroids and boxes instead of planes (bvh/build_parts.hpp).
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "lancer/accel/kd_tree.hpp"
@@ -149,6 +151,33 @@ std::size_t collectWindow(const Ref* refs, std::size_t n, const BinGrid& grid, i
 // bounds (sorted here) exactly, from the counts below the window, and keeps a cheaper plane.
 void refineInWindow(Split& best, const BinCounts& counts, const Cell& cell, std::uint32_t n,
                     WindowEvent* events, std::size_t eventCount, const KdBuildOptions& options);
+
+// Where findSplit's window events go: grown on demand, never zeroed (a window holds a small part of
+// the cell's 2n bounds, so only the pages it writes come into memory).
+class WindowRoom {
+ public:
+  WindowEvent* forRefs(std::size_t n) {
+    if (room_ < 2 * n) {
+      events_ = std::make_unique_for_overwrite<WindowEvent[]>(2 * n);
+      room_ = 2 * n;
+    }
+    return events_.get();
+  }
+
+ private:
+  std::unique_ptr<WindowEvent[]> events_;
+  std::size_t room_ = 0;
+};
+
+// The split `counts` (of refs[0, n) on `grid`) choose: the best bin boundary or empty-space plane,
+// refined by the exact sweep of the window around a boundary.
+Split splitFromBins(const BinCounts& counts, const BinGrid& grid, const Ref* refs, std::size_t n,
+                    const Cell& cell, const KdBuildOptions& options, WindowRoom& window);
+
+// The split of the cell holding refs[0, n), on one thread: exact for a small cell (n < kSmallCell),
+// else binned (into `counts`) and refined in the window.
+Split findSplit(const Ref* refs, std::size_t n, const Cell& cell, const KdBuildOptions& options,
+                BinCounts& counts, WindowRoom& window);
 
 // The plane the exact event sweep (sah_build.cpp, Wald & Havran 2006 section 4.2) would choose for
 // the n < kSmallCell references: every bound strictly inside the cell tried with the planar

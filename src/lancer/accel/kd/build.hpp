@@ -15,6 +15,7 @@
 
 #include "lancer/accel/kd_tree.hpp"
 #include "lancer/util/parallel_for.hpp"
+#include "lancer/util/stopwatch.hpp"
 
 namespace lancer {
 
@@ -119,6 +120,22 @@ class BuildArenas {
 // options.threads threads, node by node of the arenas and triangle by triangle.
 class KdTreeAssembler {
  public:
+  // The steps every kd builder takes: the triangles gathered (with their corners for a builder that
+  // clips through them), Builder(input, options, arenas).buildRoot() for the temporary tree, and its
+  // layout, inside the timing (the user waits for all of it).
+  template <typename Builder>
+  static KdTree build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                      const KdBuildOptions& options, bool withCorners, std::string kind) {
+    const Stopwatch stopwatch;
+    KdBuildInput input = gatherTriangles(positions, faces, withCorners, options.threads);
+    BuildArenas arenas;
+    Builder builder(input, options, arenas);
+    BuildNode* root = builder.buildRoot();
+    KdTree tree = assemble(*root, arenas, std::move(input), options, std::move(kind), 0.0);
+    tree.stats_.buildSeconds = stopwatch.seconds();
+    return tree;
+  }
+
   static KdTree assemble(BuildNode& root, BuildArenas& arenas, KdBuildInput&& input,
                          const KdBuildOptions& options, std::string kind, double buildSeconds);
 };

@@ -5,9 +5,9 @@
 #include <chrono>
 #include <future>
 
+#include "lancer/accel/build_threads.hpp"
 #include "lancer/accel/kd/build.hpp"
 #include "lancer/accel/kd_tree.hpp"
-#include "lancer/util/stopwatch.hpp"
 
 namespace lancer {
 
@@ -17,21 +17,22 @@ class MedianBuilder {
  public:
   MedianBuilder(const KdBuildInput& input, const KdBuildOptions& options, BuildArenas& arenas)
       : arenas_(arenas),
+        rootBox_(input.bounds),
         maxDepth_(resolveMaxDepth(options, input.triangles.size())),
-        leafSize_(static_cast<std::uint32_t>(std::max(1, options.medianLeafSize))) {
+        leafSize_(static_cast<std::uint32_t>(std::max(1, options.medianLeafSize))),
+        forks_(resolveThreads(options)) {
     bounds_.reserve(input.triangles.size());
     for (const PackedTriangle& triangle : input.triangles) {
       Aabb box;
       for (const Vec3& v : cornersOf(triangle)) box.extend(v);
       bounds_.push_back(box);
     }
-    forkDepth_ = resolveThreads(options) > 1 ? 3 : 0;
   }
 
-  BuildNode* buildRoot(const Aabb& box) {
+  BuildNode* buildRoot() {
     std::vector<std::uint32_t> all(bounds_.size());
     for (std::uint32_t t = 0; t < all.size(); ++t) all[t] = t;
-    return build(all, box, 0, 0, arenas_.create());
+    return build(all, rootBox_, 0, 0, arenas_.create());
   }
 
  private:
@@ -56,12 +57,14 @@ class MedianBuilder {
     Aabb leftBox = box, rightBox = box;
     leftBox.upper[axis] = split;
     rightBox.lower[axis] = split;
-    BuildNode *leftNode, *rightNode;
-    if (depth < forkDepth_) {
-      auto task = std::async(std::launch::async,
-                             [&] { return build(left, leftBox, depth + 1, badSplits, arenas_.create()); });
+    BuildNode *leftNode = nullptr, *rightNode = nullptr;
+    std::future<void> task;
+    if (depth < kForkDepth) {
+      task = forks_.fork([&] { leftNode = build(left, leftBox, depth + 1, badSplits, arenas_.create()); });
+    }
+    if (task.valid()) {
       rightNode = build(right, rightBox, depth + 1, badSplits, arena);
-      leftNode = task.get();
+      forks_.join(task);
     } else {
       leftNode = build(left, leftBox, depth + 1, badSplits, arena);
       rightNode = build(right, rightBox, depth + 1, badSplits, arena);
@@ -70,26 +73,22 @@ class MedianBuilder {
   }
 
   static constexpr int kMaxBadSplits = 3;
+  static constexpr int kForkDepth = 3;  // only the top levels fork, while a thread is free
 
   BuildArenas& arenas_;
+  Aabb rootBox_;
   std::vector<Aabb> bounds_;
   int maxDepth_;
   std::uint32_t leafSize_;
-  int forkDepth_ = 0;
+  BuildThreads forks_;
 };
 
 }  // namespace
 
 KdTree KdTree::buildMedian(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                            const KdBuildOptions& options) {
-  const Stopwatch stopwatch;
-  KdBuildInput input = gatherTriangles(positions, faces);
-  BuildArenas arenas;
-  MedianBuilder builder(input, options, arenas);
-  BuildNode* root = builder.buildRoot(input.bounds);
-  KdTree tree = KdTreeAssembler::assemble(*root, arenas, std::move(input), options, "kdtree-median", 0.0);
-  tree.stats_.buildSeconds = stopwatch.seconds();
-  return tree;
+  return KdTreeAssembler::build<MedianBuilder>(positions, faces, options, /*withCorners=*/false,
+                                               "kdtree-median");
 }
 
 }  // namespace lancer

@@ -11,51 +11,66 @@
 #include <cmath>
 #include <type_traits>
 
-#include "lancer/accel/kd/packet_frame.hpp"
 #include "lancer/accel/kd/query.hpp"
 #include "lancer/accel/kd_tree.hpp"
+#include "lancer/accel/packet_frame.hpp"
 
 namespace lancer {
 namespace {
 
+using namespace accel;
 using namespace kd;
 
-// The single-ray queries, lane by lane: the portable build, and packets whose rays diverge.
-template <typename Filter>
-std::uint32_t closestHitsOneByOne(const KdTree& tree, const RayPacket& packet, std::uint32_t active,
-                                  const Filter& keeps, std::span<Hit, kPacketSize> hits) {
-  std::uint32_t hitLanes = 0;
-  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
-    const int i = std::countr_zero(lanes);
-    bool hit;
-    if constexpr (std::is_same_v<Filter, HitFilter>) {
-      hit = tree.intersect(packet.ray[i], packet.tMin[i], packet.tMax[i], keeps, hits[i]);
-    } else {
-      hit = tree.intersect(packet.ray[i], packet.tMin[i], packet.tMax[i], hits[i]);
-    }
-    hitLanes |= hit ? 1u << i : 0u;
-  }
-  return hitLanes;
-}
-
-template <typename Filter>
-std::uint32_t anyHitsOneByOne(const KdTree& tree, const RayPacket& packet, std::uint32_t active,
-                              const Filter& keeps) {
-  std::uint32_t hitLanes = 0;
-  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
-    const int i = std::countr_zero(lanes);
-    bool hit;
-    if constexpr (std::is_same_v<Filter, HitFilter>) {
-      hit = tree.occluded(packet.ray[i], packet.tMin[i], packet.tMax[i], keeps);
-    } else {
-      hit = tree.occluded(packet.ray[i], packet.tMin[i], packet.tMax[i]);
-    }
-    hitLanes |= hit ? 1u << i : 0u;
-  }
-  return hitLanes;
-}
-
 #ifdef LANCER_PACKETS_AVX2
+
+// The packet's rays (accel/packet_frame.hpp) with what the kd walk adds: per axis the split-plane
+// band's edges and which child is near, as in the single-ray walk, and the slack of its decisions.
+struct KdPacketFrame : PacketFrame {
+  __m256 nearEdge[3], farEdge[3];
+  __m256 eps;
+  std::uint32_t firstIsRight[3];
+};
+
+// Sets up the frame of the lanes `active`, keeping in `active` those whose rays meet the scene box,
+// with each one's interval in the box: the single-ray walk's set-up (intersectAabb and the bands)
+// lane by lane. False when the rays run different ways along some axis.
+bool setUpFrame(const RayPacket& packet, std::uint32_t& active, const Aabb& bounds, float magnitude,
+                KdPacketFrame& f, __m256& tEnter, __m256& tExit) {
+  loadPacketRays(packet, active, f);
+  // intersectAabb, lane by lane (NaN from 0 * inf leaves the span as it is).
+  const float lower[3] = {bounds.lower.x, bounds.lower.y, bounds.lower.z};
+  const float upper[3] = {bounds.upper.x, bounds.upper.y, bounds.upper.z};
+  __m256 tIn = loadLaneBounds(packet.tMin, active), tOut = loadLaneBounds(packet.tMax, active);
+  for (int a = 0; a < 3; ++a) {
+    const __m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(lower[a]), f.origin[a]), f.invDirection[a]);
+    const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(upper[a]), f.origin[a]), f.invDirection[a]);
+    const __m256 swap = _mm256_cmp_ps(t0, t1, _CMP_GT_OQ);
+    const __m256 near = _mm256_blendv_ps(t0, t1, swap), far = _mm256_blendv_ps(t1, t0, swap);
+    tIn = _mm256_blendv_ps(tIn, near, _mm256_cmp_ps(near, tIn, _CMP_GT_OQ));
+    tOut = _mm256_blendv_ps(tOut, far, _mm256_cmp_ps(far, tOut, _CMP_LT_OQ));
+  }
+  active &= laneMask(_mm256_cmp_ps(tIn, tOut, _CMP_LE_OQ));
+  const __m256 zero = _mm256_setzero_ps();
+  const __m256 band = _mm256_mul_ps(
+      _mm256_set1_ps(kPlaneSlack),
+      _mm256_max_ps(
+          _mm256_set1_ps(magnitude),
+          _mm256_max_ps(_mm256_max_ps(absolute(f.origin[0]), absolute(f.origin[1])), absolute(f.origin[2]))));
+  for (int a = 0; a < 3; ++a) {
+    const __m256 towardsMinus = _mm256_cmp_ps(f.invDirection[a], zero, _CMP_LT_OQ);
+    const std::uint32_t right = laneMask(towardsMinus) & active;
+    if (right != 0 && right != active) return false;
+    f.firstIsRight[a] = right != 0 ? 1u : 0u;
+    const __m256 signedBand =
+        _mm256_blendv_ps(band, _mm256_xor_ps(band, _mm256_set1_ps(-0.0f)), towardsMinus);
+    f.nearEdge[a] = _mm256_add_ps(f.origin[a], signedBand);
+    f.farEdge[a] = _mm256_sub_ps(f.origin[a], signedBand);
+  }
+  f.eps = _mm256_mul_ps(_mm256_set1_ps(kSlack), _mm256_max_ps(absolute(tIn), absolute(tOut)));
+  tEnter = tIn;
+  tExit = tOut;
+  return true;
+}
 
 // A cell the packet visits later: `lanes` enter it, and those of `direct` (which the single-ray
 // walk would have gone to at once, without a look at its bound) are not pruned when it is popped.
@@ -74,7 +89,7 @@ inline float laneOf(__m256 v, int lane) {
 // in scalar, from `node` with the lane's interval; testLeaf(leaf, lanes) tests a leaf's triangles.
 // Returns whether the lane is done (any-hit: blocked).
 template <typename Query, typename TestLeaf>
-bool walkLane(const KdNode* base, const KdNode* node, const PacketFrame& f, int lane, float tEnter,
+bool walkLane(const KdNode* base, const KdNode* node, const KdPacketFrame& f, int lane, float tEnter,
               float tExit, const Query& query, TestLeaf& testLeaf) {
   float nearEdge[3], farEdge[3], invDirection[3];
   for (int a = 0; a < 3; ++a) {
@@ -124,7 +139,7 @@ bool walkLane(const KdNode* base, const KdNode* node, const PacketFrame& f, int 
 // distance. A lane left alone in a subtree finishes it on its own (walkLane). Returns the lanes
 // that are done.
 template <typename Query>
-std::uint32_t walkPacket(std::span<const KdNode> layout, const PacketFrame& f, std::uint32_t active,
+std::uint32_t walkPacket(std::span<const KdNode> layout, const KdPacketFrame& f, std::uint32_t active,
                          __m256 tEnter, __m256 tExit, Query& query) {
   PacketStackEntry stack[KdTree::kMaxDepth + 2];
   struct MailboxSlot {
@@ -166,7 +181,7 @@ std::uint32_t walkPacket(std::span<const KdNode> layout, const PacketFrame& f, s
     return finishedLanes;
   };
   // The same for a lane left alone in a subtree (walkLane): the triangles of a larger leaf eight at a
-  // time against its one ray (kd/query.hpp), with the packet's mailbox kept as testLeaf keeps it. A
+  // time against its one ray (accel/hit_query.hpp), with the packet's mailbox kept as testLeaf keeps it. A
   // triangle marked tested whose test an any-hit lane then skips, being blocked, is never tested again
   // by that lane anyway; an evicted slot only makes another lane test a triangle again, which gives
   // the same answer (as in the single-ray walk).
@@ -286,35 +301,19 @@ std::uint32_t KdTree::closestHits(const RayPacket& packet, std::uint32_t active,
                                   std::span<Hit, kPacketSize> hits) const {
   active &= kAllLanes;
 #ifdef LANCER_PACKETS_AVX2
-  if (std::popcount(active) < 2) return closestHitsOneByOne(*this, packet, active, keeps, hits);
-  PacketFrame frame;
+  if (std::popcount(active) < 2) return closestHitsOneByOne(packet, active, keeps, hits);
+  KdPacketFrame frame;
   PacketClosestHit<Filter> query{packet, frame, keeps, {}, {}, {}};
-  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
-    const int i = std::countr_zero(lanes);
-    query.best[i] = Hit{packet.tMax[i], Hit{}.face};
-    query.upper[i] = packet.tMax[i];
-    for (const PackedTriangle& tri : slivers_) {
-      takeIfCloser(testTriangle(tri, packet.ray[i], packet.tMin[i], query.upper[i]), tri.face, packet.ray[i],
-                   packet.tMax[i], keeps, query.best[i], query.upper[i]);
-    }
-    query.bestT[i] = query.best[i].t;
-  }
+  query.start(active, slivers_);
   std::uint32_t inBox = active;
   __m256 tEnter, tExit;
   if (!setUpFrame(packet, inBox, bounds_, magnitude_, frame, tEnter, tExit)) {
-    return closestHitsOneByOne(*this, packet, active, keeps, hits);
+    return closestHitsOneByOne(packet, active, keeps, hits);
   }
   if (inBox != 0) walkPacket(layout_, frame, inBox, tEnter, tExit, query);
-  std::uint32_t hitLanes = 0;
-  for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
-    const int i = std::countr_zero(lanes);
-    if (!query.best[i].valid()) continue;
-    hits[i] = query.best[i];
-    hitLanes |= 1u << i;
-  }
-  return hitLanes;
+  return query.answer(active, hits);
 #else
-  return closestHitsOneByOne(*this, packet, active, keeps, hits);
+  return closestHitsOneByOne(packet, active, keeps, hits);
 #endif
 }
 
@@ -322,50 +321,29 @@ template <typename Filter>
 std::uint32_t KdTree::anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const {
   active &= kAllLanes;
 #ifdef LANCER_PACKETS_AVX2
-  if (std::popcount(active) < 2) return anyHitsOneByOne(*this, packet, active, keeps);
-  std::uint32_t blocked = 0;
-  for (std::uint32_t lanes = active; lanes != 0 && !slivers_.empty(); lanes &= lanes - 1) {
-    const int i = std::countr_zero(lanes);
-    for (const PackedTriangle& tri : slivers_) {
-      const float t = intersectTriangle(tri, packet.ray[i], packet.tMin[i], packet.tMax[i]);
-      if (t >= 0.0f && keeps(packet.ray[i], tri.face, t)) {
-        blocked |= 1u << i;
-        break;
-      }
-    }
-  }
+  if (std::popcount(active) < 2) return anyHitsOneByOne(packet, active, keeps);
+  const std::uint32_t blocked = lanesBlockedBySlivers(packet, active, slivers_, keeps);
   std::uint32_t inBox = active & ~blocked;
   if (inBox == 0) return blocked;
-  PacketFrame frame;
+  KdPacketFrame frame;
   __m256 tEnter, tExit;
   if (!setUpFrame(packet, inBox, bounds_, magnitude_, frame, tEnter, tExit)) {
-    return blocked | anyHitsOneByOne(*this, packet, active & ~blocked, keeps);
+    return blocked | anyHitsOneByOne(packet, active & ~blocked, keeps);
   }
   if (inBox == 0) return blocked;
   PacketAnyHit<Filter> query{packet, frame, keeps, {}};
-  for (int i = 0; i < kPacketSize; ++i) query.tMax[i] = (inBox >> i & 1u) != 0 ? packet.tMax[i] : 0.0f;
+  query.start(inBox);
   return blocked | walkPacket(layout_, frame, inBox, tEnter, tExit, query);
 #else
-  return anyHitsOneByOne(*this, packet, active, keeps);
+  return anyHitsOneByOne(packet, active, keeps);
 #endif
 }
 
-std::uint32_t KdTree::intersect(const RayPacket& packet, std::uint32_t active,
-                                std::span<Hit, kPacketSize> hits) const {
-  return closestHits(packet, active, KeepEveryHit{}, hits);
-}
-
-std::uint32_t KdTree::occluded(const RayPacket& packet, std::uint32_t active) const {
-  return anyHits(packet, active, KeepEveryHit{});
-}
-
-std::uint32_t KdTree::intersect(const RayPacket& packet, std::uint32_t active, const HitFilter& filter,
-                                std::span<Hit, kPacketSize> hits) const {
-  return closestHits(packet, active, filter, hits);
-}
-
-std::uint32_t KdTree::occluded(const RayPacket& packet, std::uint32_t active, const HitFilter& filter) const {
-  return anyHits(packet, active, filter);
-}
+template std::uint32_t KdTree::closestHits(const RayPacket&, std::uint32_t, const KeepEveryHit&,
+                                           std::span<Hit, kPacketSize>) const;
+template std::uint32_t KdTree::closestHits(const RayPacket&, std::uint32_t, const HitFilter&,
+                                           std::span<Hit, kPacketSize>) const;
+template std::uint32_t KdTree::anyHits(const RayPacket&, std::uint32_t, const KeepEveryHit&) const;
+template std::uint32_t KdTree::anyHits(const RayPacket&, std::uint32_t, const HitFilter&) const;
 
 }  // namespace lancer

@@ -1,21 +1,23 @@
 // The exact SAH kd-tree build (--accel kdtree-sah-exact), the default's quality reference: in O(N log N),
 // Wald & Havran 2006, "On building fast kd-trees for ray tracing, and on doing that in O(N log N)". Cells of
-// more than KdBuildOptions::binnedAbove triangles are split by binning (sah_binning.hpp); below, per-axis
-// event lists are sorted once per subtree; every split sweeps them to find the best plane (section 4.2),
-// classifies triangles as left, right or both, and splits the sorted lists in linear time, clipping only the
-// straddlers (section 4.3).
+// more than KdBuildOptions::binnedAbove triangles are split by the default build's binning
+// (binned_split.hpp); below, per-axis event lists are sorted once per subtree; every split sweeps them to
+// find the best plane (section 4.2), classifies triangles as left, right or both, and splits the sorted lists
+// in linear time, clipping only the straddlers (section 4.3).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <future>
 #include <limits>
+#include <memory>
 #include <utility>
 
+#include "lancer/accel/build_threads.hpp"
+#include "lancer/accel/kd/binned_partition.hpp"
+#include "lancer/accel/kd/binned_split.hpp"
 #include "lancer/accel/kd/build.hpp"
 #include "lancer/accel/kd/clip.hpp"
-#include "lancer/accel/kd/sah_binning.hpp"
 #include "lancer/accel/kd_tree.hpp"
-#include "lancer/util/stopwatch.hpp"
 
 namespace lancer {
 
@@ -110,6 +112,9 @@ struct Scratch {
   // child's are consumed (its whole subtree built) before the right child's are read, and only
   // deeper levels are written meanwhile.
   std::vector<std::array<EventLists, 2>> levels;
+  // The binned top's search (6 KiB of counts, so on the heap).
+  std::unique_ptr<binned::BinCounts> counts = std::make_unique<binned::BinCounts>();
+  binned::WindowRoom window;
 };
 
 class SahBuilder {
@@ -118,21 +123,34 @@ class SahBuilder {
       : input_(input),
         options_(options),
         arenas_(arenas),
-        maxDepth_(resolveMaxDepth(options, input.triangles.size())) {
-    // A few more tasks than threads balance uneven subtrees; each task below this depth forks.
-    const int threads = resolveThreads(options);
+        maxDepth_(resolveMaxDepth(options, input.triangles.size())),
+        forks_(resolveThreads(options)) {
+    // Only the top levels fork (each fork copies its parent's scratch), while a thread is free.
+    const int threads = forks_.count();
     forkDepth_ = threads > 1 ? std::min(6, 2 + static_cast<int>(std::log2(double(threads)))) : 0;
   }
 
   BuildNode* buildRoot() {
     const std::size_t n = input_.triangles.size();
     if (options_.binnedAbove > 0 && n > options_.binnedAbove) {
-      std::vector<BuildRef> refs(n);
-      for (std::uint32_t t = 0; t < n; ++t) {
-        refs[t].triangle = t;
-        for (const Vec3& c : input_.corners[t]) refs[t].box.extend(c);
+      std::vector<binned::Ref> refs(n);
+      binned::Cell root;
+      for (int k = 0; k < 3; ++k) {
+        root.box.lo[k] = input_.bounds.lower[k];
+        root.box.hi[k] = input_.bounds.upper[k];
       }
-      return binnedTask(std::move(refs), input_.bounds, 0);
+      for (std::uint32_t t = 0; t < n; ++t) {
+        const std::array<Vec3, 3>& c = input_.corners[t];
+        for (int k = 0; k < 3; ++k) {
+          // + 0.0f turns -0 into +0, so equal positions compare (and bin) alike.
+          refs[t].lo[k] = std::min({c[0][k], c[1][k], c[2][k]}) + 0.0f;
+          refs[t].hi[k] = std::max({c[0][k], c[1][k], c[2][k]}) + 0.0f;
+        }
+        refs[t].id = t;
+        refs[t].unused = 0;
+        root.used.extend(refs[t]);
+      }
+      return binnedTask(std::move(refs), root, 0);
     }
     EventLists events;
     auto makeAxis = [&](int axis) {
@@ -164,56 +182,64 @@ class SahBuilder {
   }
 
  private:
-  // The top of the tree: big cells split by binning, their triangles handed down as references.
-  BuildNode* binnedTask(std::vector<BuildRef> refs, const Aabb& box, int depth) {
+  // The top of the tree: big cells split by the binned search of the default build
+  // (binned_split.hpp), their triangles handed down as references clipped to each side
+  // (binned_partition.hpp).
+  BuildNode* binnedTask(std::vector<binned::Ref> refs, const binned::Cell& cell, int depth) {
     BuildArena& arena = arenas_.create();
     Scratch scratch;
     scratch.levels.resize(static_cast<std::size_t>(maxDepth_) + 2);
-    return buildBinned(std::move(refs), box, depth, arena, scratch);
+    return buildBinned(std::move(refs), cell, depth, arena, scratch);
   }
 
-  BuildNode* buildBinned(std::vector<BuildRef> refs, const Aabb& box, int depth, BuildArena& arena,
-                         Scratch& scratch) {
-    const BinnedSplit split = refs.size() > options_.binnedAbove && depth < maxDepth_
-                                  ? findBinnedSplit(refs, box, options_)
-                                  : BinnedSplit{};
-    if (split.axis < 0) {
+  BuildNode* buildBinned(std::vector<binned::Ref> refs, const binned::Cell& cell, int depth,
+                         BuildArena& arena, Scratch& scratch) {
+    const std::size_t n = refs.size();
+    binned::Split split;
+    if (n > options_.binnedAbove && depth < maxDepth_) {
+      split = binned::findSplit(refs.data(), n, cell, options_, *scratch.counts, scratch.window);
+    }
+    if (split.axis < 0 || split.cost >= options_.intersectionCost * float(n)) {
       // Small enough (or nothing to gain by binning): the exact sweep from here on, over events
       // made from the references' clipped boxes.
-      const auto count = static_cast<std::uint32_t>(refs.size());
+      const auto count = static_cast<std::uint32_t>(n);
       scratch.globalIds.resize(count);
       scratch.localCorners.resize(count);
       EventLists& events = scratch.levels[static_cast<std::size_t>(depth)][0];
       for (std::vector<Event>& list : events) list.clear();
       for (std::uint32_t id = 0; id < count; ++id) {
-        scratch.globalIds[id] = refs[id].triangle;
-        scratch.localCorners[id] = input_.corners[refs[id].triangle];
-        addEvents(id, refs[id].box, events);
+        const binned::Ref& r = refs[id];
+        scratch.globalIds[id] = r.id;
+        scratch.localCorners[id] = input_.corners[r.id];
+        addEvents(id, Aabb{{r.lo[0], r.lo[1], r.lo[2]}, {r.hi[0], r.hi[1], r.hi[2]}}, events);
       }
       scratch.corners = scratch.localCorners;
       scratch.side.assign(count, kBoth);
-      std::vector<BuildRef>().swap(refs);
+      std::vector<binned::Ref>().swap(refs);
       for (std::vector<Event>& list : events) sortEvents(list);
-      return build(events, count, box, depth, arena, scratch);
+      return build(events, count, cell.box.aabb(), depth, arena, scratch);
     }
-    Aabb leftBox = box, rightBox = box;
-    leftBox.upper[split.axis] = split.pos;
-    rightBox.lower[split.axis] = split.pos;
-    std::vector<BuildRef> left, right;
-    left.reserve(refs.size() / 2 + refs.size() / 8);
-    right.reserve(refs.size() / 2 + refs.size() / 8);
-    partitionRefs(refs, input_.corners, split, leftBox, rightBox, options_.clipAboveFraction, left, right);
-    std::vector<BuildRef>().swap(refs);  // free before recursing
+    // The right side is written over refs, the left into a buffer of its own.
+    binned::Children children = binned::childCells(cell, split);
+    std::vector<binned::Ref> left(n);
+    const binned::Partitioner partition{input_, options_, split, cell.box};
+    partition(refs.data(), n, refs.data(), left.data(), children);
+    left.resize(children.leftCount);
+    refs.resize(children.rightCount);
+    left.shrink_to_fit();
+    refs.shrink_to_fit();
 
-    BuildNode *leftNode, *rightNode;
+    BuildNode *leftNode = nullptr, *rightNode = nullptr;
+    std::future<void> task;
     if (depth < forkDepth_) {
-      auto task =
-          std::async(std::launch::async, [&] { return binnedTask(std::move(left), leftBox, depth + 1); });
-      rightNode = buildBinned(std::move(right), rightBox, depth + 1, arena, scratch);
-      leftNode = task.get();
+      task = forks_.fork([&] { leftNode = binnedTask(std::move(left), children.left, depth + 1); });
+    }
+    if (task.valid()) {
+      rightNode = buildBinned(std::move(refs), children.right, depth + 1, arena, scratch);
+      forks_.join(task);
     } else {
-      leftNode = buildBinned(std::move(left), leftBox, depth + 1, arena, scratch);
-      rightNode = buildBinned(std::move(right), rightBox, depth + 1, arena, scratch);
+      leftNode = buildBinned(std::move(left), children.left, depth + 1, arena, scratch);
+      rightNode = buildBinned(std::move(refs), children.right, depth + 1, arena, scratch);
     }
     return arena.inner(split.axis, split.pos, leftNode, rightNode);
   }
@@ -252,13 +278,15 @@ class SahBuilder {
     std::uint32_t leftCount = 0, rightCount = 0;
     splitEvents(events, plane, leftBox, rightBox, scratch, left, right, leftCount, rightCount);
 
-    BuildNode *leftNode, *rightNode;
+    BuildNode *leftNode = nullptr, *rightNode = nullptr;
+    std::future<void> task;
     if (depth < forkDepth_) {
-      auto task = std::async(std::launch::async, [&] {
-        return buildTask(std::move(left), leftCount, leftBox, depth + 1, &scratch);
-      });
+      task = forks_.fork(
+          [&] { leftNode = buildTask(std::move(left), leftCount, leftBox, depth + 1, &scratch); });
+    }
+    if (task.valid()) {
       rightNode = build(right, rightCount, rightBox, depth + 1, arena, scratch);
-      leftNode = task.get();
+      forks_.join(task);
     } else {
       leftNode = build(left, leftCount, leftBox, depth + 1, arena, scratch);
       rightNode = build(right, rightCount, rightBox, depth + 1, arena, scratch);
@@ -420,6 +448,7 @@ class SahBuilder {
   const KdBuildOptions& options_;
   BuildArenas& arenas_;
   int maxDepth_;
+  BuildThreads forks_;
   int forkDepth_ = 0;
 };
 
@@ -427,15 +456,8 @@ class SahBuilder {
 
 KdTree KdTree::buildSahExact(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                              const KdBuildOptions& options) {
-  const Stopwatch stopwatch;
-  KdBuildInput input = gatherTriangles(positions, faces, /*withCorners=*/true);
-  BuildArenas arenas;
-  SahBuilder builder(input, options, arenas);
-  BuildNode* root = builder.buildRoot();
-  // The layout pass is part of the build the user waits for, so it is inside the timing.
-  KdTree tree = KdTreeAssembler::assemble(*root, arenas, std::move(input), options, "kdtree-sah-exact", 0.0);
-  tree.stats_.buildSeconds = stopwatch.seconds();
-  return tree;
+  return KdTreeAssembler::build<SahBuilder>(positions, faces, options, /*withCorners=*/true,
+                                            "kdtree-sah-exact");
 }
 
 }  // namespace lancer

@@ -24,6 +24,7 @@ KdTraversalCounters& kdTraversalCounters() { return kdCounters; }
 
 namespace {
 
+using namespace accel;
 using namespace kd;
 
 struct StackEntry {
@@ -197,20 +198,9 @@ bool KdTree::anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps)
   return walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query);
 }
 
-bool KdTree::intersect(const Ray& ray, float tMin, float tMax, Hit& hit) const {
-  return closestHit(ray, tMin, tMax, KeepEveryHit{}, hit);
-}
-
-bool KdTree::occluded(const Ray& ray, float tMin, float tMax) const {
-  return anyHit(ray, tMin, tMax, KeepEveryHit{});
-}
-
-bool KdTree::intersect(const Ray& ray, float tMin, float tMax, const HitFilter& filter, Hit& hit) const {
-  return closestHit(ray, tMin, tMax, filter, hit);
-}
-
-bool KdTree::occluded(const Ray& ray, float tMin, float tMax, const HitFilter& filter) const {
-  return anyHit(ray, tMin, tMax, filter);
-}
+template bool KdTree::closestHit(const Ray&, float, float, const KeepEveryHit&, Hit&) const;
+template bool KdTree::closestHit(const Ray&, float, float, const HitFilter&, Hit&) const;
+template bool KdTree::anyHit(const Ray&, float, float, const KeepEveryHit&) const;
+template bool KdTree::anyHit(const Ray&, float, float, const HitFilter&) const;
 
 }  // namespace lancer

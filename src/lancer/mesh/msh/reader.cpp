@@ -220,6 +220,19 @@ void readFieldSection(MshReadState& state, std::string_view name, const char* st
 }
 
 // False when it stopped at a $ElementData because faces did not remember their elements.
+// Hands back the whole pages of the file mapping between state.releaseFrom and the cursor (the
+// steps just parsed into floats): MADV_DONTNEED on a private read-only file mapping drops them, and
+// any later read of them faults them in from the file again.
+void releaseReadPages(MshReadState& state) {
+  if (!state.releaseFrom) return;
+  const auto page = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
+  const auto from = (reinterpret_cast<std::uintptr_t>(state.releaseFrom) + page - 1) / page * page;
+  const auto to = reinterpret_cast<std::uintptr_t>(state.cursor.position()) / page * page;
+  if (to <= from) return;
+  ::madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+  state.releaseFrom = reinterpret_cast<const char*>(to);
+}
+
 bool readSections(MshReadState& state) {
   MshCursor& cursor = state.cursor;
   const char* formatStart = cursor.tokenStart();
@@ -259,9 +272,11 @@ bool readSections(MshReadState& state) {
       state.elementsRead = true;
     } else if (name == "$NodeData") {
       readFieldSection(state, name, start, readMshNodeData);
+      releaseReadPages(state);
     } else if (name == "$ElementData") {
       if (state.elementsRead && !state.assembler.tracksElements()) return false;
       readFieldSection(state, name, start, readMshElementData);
+      releaseReadPages(state);
     } else {
       // Every other section is skipped to its end marker: $Comments, $Periodic, $GhostElements,
       // $Parametrizations, $ElementNodeData, $InterpolationScheme and any unknown one.
@@ -304,7 +319,8 @@ void addDeclaredGroups(MshReadState& state, Mesh& mesh) {
   mesh.extraPhysicalGroups = std::move(state.extraGroups);
 }
 
-Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64_t fileBytes, int threads) {
+Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64_t fileBytes, int threads,
+               bool mapped = false) {
   // Faces remember their element (8 bytes each) only when a $ElementData needs it. gmsh writes it
   // after $Elements, so the first read does not track, and meeting one reads the file again with
   // tracking: twice the load time for those files only, and no cost (not even a scan) for others.
@@ -323,6 +339,7 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64
     source.path = name;
     source.fileBytes = fileBytes;
     MshReadState state(cursor, assembler, source);
+    if (mapped) state.releaseFrom = bytes.data();
     if (readSections(state)) {
       Mesh mesh = assembler.finish(std::move(source), std::move(state.namedGroups));
       addDeclaredGroups(state, mesh);
@@ -344,7 +361,7 @@ Mesh readMshFromMemory(std::span<const char> bytes, const std::string& nameForEr
 Mesh readMsh(const std::string& path, int threads) {
   const Stopwatch stopwatch;
   const MappedFile file(path);
-  Mesh mesh = readBytes(file.bytes(), path, file.bytes().size(), threads);
+  Mesh mesh = readBytes(file.bytes(), path, file.bytes().size(), threads, /*mapped=*/true);
   mesh.source.loadSeconds = stopwatch.seconds();
   return mesh;
 }

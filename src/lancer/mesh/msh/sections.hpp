@@ -41,6 +41,10 @@ struct MshReadState {
   std::map<std::string, std::string_view, std::less<>> meshSections;
   // Entities in several physical groups (Mesh::extraPhysicalGroups), one entry per entity.
   std::vector<ExtraPhysicalGroups> extraGroups;
+  // readMsh's file mapping: the pages before this are handed back to the kernel after each view's
+  // step ($NodeData, $ElementData), so that a file of many steps is never resident all at once (a
+  // later read of those bytes faults them in again from the file). Null for memory the caller owns.
+  const char* releaseFrom = nullptr;
   // Element tags of the file are within [minElementTag, maxElementTag] (for $ElementData checks).
   std::uint64_t minElementTag = UINT64_MAX;
   std::uint64_t maxElementTag = 0;

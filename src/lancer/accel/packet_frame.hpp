@@ -1,12 +1,13 @@
-// The packet walks' SIMD view of a packet (kd/packet_traversal.cpp, bvh/packet_traversal.cpp): the
-// rays as lanes of AVX2 registers (PacketFrame), their set-up against the scene box, the packet
-// triangle test and the closest-hit and any-hit bookkeeping per lane.
+// The packet walks' SIMD view of a packet (bvh/packet_traversal.cpp, kd/packet_traversal.cpp): the
+// rays as lanes of AVX2 registers (PacketFrame), the packet triangle test and the closest-hit and
+// any-hit bookkeeping per lane, shared by both trees.
 #pragma once
 
 #include <bit>
 #include <cstdint>
+#include <span>
 
-#include "lancer/accel/kd/query.hpp"
+#include "lancer/accel/hit_query.hpp"
 #include "lancer/accel/ray_packet.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/aabb.hpp"
@@ -16,7 +17,7 @@
 #define LANCER_PACKETS_AVX2 1
 #endif
 
-namespace lancer::kd {
+namespace lancer::accel {
 
 #ifdef LANCER_PACKETS_AVX2
 
@@ -29,7 +30,7 @@ inline __m256 pickAxis(__m256 x, __m256 y, __m256 z, __m256 is0, __m256 is1) {
   return _mm256_blendv_ps(_mm256_blendv_ps(z, y, is1), x, is0);
 }
 
-// A triangle's corners relative to each lane's origin in the lane's sheared frame (query.hpp's
+// A triangle's corners relative to each lane's origin in the lane's sheared frame (hit_query.hpp's
 // eight-lane corners).
 static_assert(kPacketSize == 8);
 using ShearedCorners = LeafCorners;
@@ -38,8 +39,6 @@ using ShearedCorners = LeafCorners;
 struct PacketFrame {
   __m256 origin[3];
   __m256 invDirection[3];
-  __m256 nearEdge[3], farEdge[3];  // the split-plane band's edges, as in the single-ray walk
-  __m256 eps;
   __m256 shearX, shearY;
   __m256 kxIs0, kxIs1, kyIs0, kyIs1, kzIs0, kzIs1;
   std::uint32_t firstIsRight[3];
@@ -170,49 +169,8 @@ inline __m256 loadLaneBounds(const float (&bound)[kPacketSize], std::uint32_t ac
   return _mm256_load_ps(lane);
 }
 
-// Sets up the frame of the lanes `active`, keeping in `active` those whose rays meet the scene box,
-// with each one's interval in the box: the single-ray walk's set-up (intersectAabb and the bands)
-// lane by lane. False when the rays run different ways along some axis.
-inline bool setUpFrame(const RayPacket& packet, std::uint32_t& active, const Aabb& bounds, float magnitude,
-                       PacketFrame& f, __m256& tEnter, __m256& tExit) {
-  loadPacketRays(packet, active, f);
-  // intersectAabb, lane by lane (NaN from 0 * inf leaves the span as it is).
-  const float lower[3] = {bounds.lower.x, bounds.lower.y, bounds.lower.z};
-  const float upper[3] = {bounds.upper.x, bounds.upper.y, bounds.upper.z};
-  __m256 tIn = loadLaneBounds(packet.tMin, active), tOut = loadLaneBounds(packet.tMax, active);
-  for (int a = 0; a < 3; ++a) {
-    const __m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(lower[a]), f.origin[a]), f.invDirection[a]);
-    const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(upper[a]), f.origin[a]), f.invDirection[a]);
-    const __m256 swap = _mm256_cmp_ps(t0, t1, _CMP_GT_OQ);
-    const __m256 near = _mm256_blendv_ps(t0, t1, swap), far = _mm256_blendv_ps(t1, t0, swap);
-    tIn = _mm256_blendv_ps(tIn, near, _mm256_cmp_ps(near, tIn, _CMP_GT_OQ));
-    tOut = _mm256_blendv_ps(tOut, far, _mm256_cmp_ps(far, tOut, _CMP_LT_OQ));
-  }
-  active &= laneMask(_mm256_cmp_ps(tIn, tOut, _CMP_LE_OQ));
-  const __m256 zero = _mm256_setzero_ps();
-  const __m256 band = _mm256_mul_ps(
-      _mm256_set1_ps(kPlaneSlack),
-      _mm256_max_ps(
-          _mm256_set1_ps(magnitude),
-          _mm256_max_ps(_mm256_max_ps(absolute(f.origin[0]), absolute(f.origin[1])), absolute(f.origin[2]))));
-  for (int a = 0; a < 3; ++a) {
-    const __m256 towardsMinus = _mm256_cmp_ps(f.invDirection[a], zero, _CMP_LT_OQ);
-    const std::uint32_t right = laneMask(towardsMinus) & active;
-    if (right != 0 && right != active) return false;
-    f.firstIsRight[a] = right != 0 ? 1u : 0u;
-    const __m256 signedBand =
-        _mm256_blendv_ps(band, _mm256_xor_ps(band, _mm256_set1_ps(-0.0f)), towardsMinus);
-    f.nearEdge[a] = _mm256_add_ps(f.origin[a], signedBand);
-    f.farEdge[a] = _mm256_sub_ps(f.origin[a], signedBand);
-  }
-  f.eps = _mm256_mul_ps(_mm256_set1_ps(kSlack), _mm256_max_ps(absolute(tIn), absolute(tOut)));
-  tEnter = tIn;
-  tExit = tOut;
-  return true;
-}
-
 // The closest-hit and any-hit bookkeeping of a packet, lane by lane as ClosestHit and AnyHit
-// (query.hpp) keep it for one ray; shared by the kd-tree's and the BVH's packet walks.
+// (hit_query.hpp) keep it for one ray; shared by the kd-tree's and the BVH's packet walks.
 template <typename Filter>
 struct PacketClosestHit {
   const RayPacket& packet;
@@ -221,6 +179,32 @@ struct PacketClosestHit {
   Hit best[kPacketSize];
   float upper[kPacketSize];
   alignas(32) float bestT[kPacketSize];
+
+  // Each lane of `active` starts at its tMax, then takes its closest hit among `slivers` (the
+  // near-degenerate triangles kept out of a tree and tested for every ray).
+  void start(std::uint32_t active, std::span<const PackedTriangle> slivers) {
+    for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+      const int i = std::countr_zero(lanes);
+      best[i] = Hit{packet.tMax[i], Hit{}.face};
+      upper[i] = packet.tMax[i];
+      for (const PackedTriangle& tri : slivers) {
+        takeIfCloser(testTriangle(tri, packet.ray[i], packet.tMin[i], upper[i]), tri.face, packet.ray[i],
+                     packet.tMax[i], keeps, best[i], upper[i]);
+      }
+      bestT[i] = best[i].t;
+    }
+  }
+  // The lanes of `active` that hit, with their hits written to `hits`.
+  std::uint32_t answer(std::uint32_t active, std::span<Hit, kPacketSize> hits) const {
+    std::uint32_t hitLanes = 0;
+    for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
+      const int i = std::countr_zero(lanes);
+      if (!best[i].valid()) continue;
+      hits[i] = best[i];
+      hitLanes |= 1u << i;
+    }
+    return hitLanes;
+  }
 
   std::uint32_t test(const PackedTriangle& tri, std::uint32_t lanes) {
     ShearedCorners corners;
@@ -232,7 +216,7 @@ struct PacketClosestHit {
     }
     return 0;
   }
-  // test's finish on lane i for triangle k of an eight-triangle test (walkPacket's testLeafAlone).
+  // test's finish on lane i for triangle k of an eight-triangle test (the kd walk's testLeafAlone).
   bool finishAlone(const PackedTriangle& tri, int i, const LeafCorners& c, int k) {
     const TriangleHit h =
         triangle_detail::finishHit(c.ax[k], c.ay[k], c.az[k], c.bx[k], c.by[k], c.bz[k], c.cx[k], c.cy[k],
@@ -245,12 +229,35 @@ struct PacketClosestHit {
   float laneBound(int lane) const { return bestT[lane]; }
 };
 
+// The lanes of `active` that one of `slivers` blocks (any-hit's start).
+template <typename Filter>
+std::uint32_t lanesBlockedBySlivers(const RayPacket& packet, std::uint32_t active,
+                                    std::span<const PackedTriangle> slivers, const Filter& keeps) {
+  std::uint32_t blocked = 0;
+  for (std::uint32_t lanes = slivers.empty() ? 0u : active; lanes != 0; lanes &= lanes - 1) {
+    const int i = std::countr_zero(lanes);
+    for (const PackedTriangle& tri : slivers) {
+      const float t = intersectTriangle(tri, packet.ray[i], packet.tMin[i], packet.tMax[i]);
+      if (t >= 0.0f && keeps(packet.ray[i], tri.face, t)) {
+        blocked |= 1u << i;
+        break;
+      }
+    }
+  }
+  return blocked;
+}
+
 template <typename Filter>
 struct PacketAnyHit {
   const RayPacket& packet;
   const PacketFrame& frame;
   const Filter& keeps;
   alignas(32) float tMax[kPacketSize];
+
+  // The lanes of `active` search up to their tMax; the others are done.
+  void start(std::uint32_t active) {
+    for (int i = 0; i < kPacketSize; ++i) tMax[i] = (active >> i & 1u) != 0 ? packet.tMax[i] : 0.0f;
+  }
 
   std::uint32_t test(const PackedTriangle& tri, std::uint32_t lanes) const {
     ShearedCorners corners;
@@ -275,4 +282,4 @@ struct PacketAnyHit {
 
 #endif  // LANCER_PACKETS_AVX2
 
-}  // namespace lancer::kd
+}  // namespace lancer::accel
