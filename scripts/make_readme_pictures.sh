@@ -16,6 +16,11 @@ out=docs/images
   --undeformed edges --width 480 --height 270 --samples 4 -o "$out/results_warp.png" --quiet
 "$lancer" render examples/meshes/bracket.msh --look studio --samples 64 --denoise --width 480 --height 360 \
   -o "$out/look_studio.png" --quiet
+# The three looks side by side (docs/lighting.md#looks): the same part, one option apart.
+for look in studio sky sun; do
+  "$lancer" render examples/meshes/bracket.msh --look "$look" --denoise --width 320 --height 240 \
+    -o "$out/look_preset_$look.png" --quiet
+done
 # Results made by gmsh (scripts/make_result_examples.py writes examples/results/*.msh): a beam bent by
 # its displacement, coloured by von Mises stress with isolines and a legend; the same over its time
 # steps, labelled; arrows on a flow.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 
 #include "lancer/image/image_difference.hpp"
 #include "support/seeded_noise.hpp"
@@ -169,6 +170,31 @@ TEST(Denoiser, SameResultForAnyThreadCount) {
   serial.threads = 1;
   parallel.threads = 4;
   EXPECT_EQ(denoise(noisy, one.features, serial), denoise(noisy, one.features, parallel));
+}
+
+}  // namespace
+}  // namespace lancer
+
+namespace lancer {
+namespace {
+
+TEST(Denoiser, NoiseIsMeasuredWhereMostOfThePictureIsNoiseless) {
+  // A render where the background (no hit) and an unshadowed floor are exactly constant over 7/8
+  // of the picture and only the part is noisy: the noise level comes from the noisy pixels, not
+  // from a median of zeros that would leave the part unfiltered.
+  Image clean, noisy;
+  FeatureBuffers features;
+  makeScene(Side{}, Side{}, clean, features);
+  noisy = test::withSeededNoise(clean, 0.1f);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      if (x < kSize / 2 && y < kSize / 4) continue;  // the part: a corner, noisy
+      noisy.setRgb(x, y, clean.at(x, y).rgb());
+      if (x >= kSize / 2) features.depth[features.index(x, y)] = std::numeric_limits<float>::infinity();
+    }
+  EXPECT_GT(estimateNoise(noisy, features), 0.05f);
+  const Image denoised = denoise(noisy, features);
+  EXPECT_LT(rootMeanSquareDifference(denoised, clean), 0.5 * rootMeanSquareDifference(noisy, clean));
 }
 
 }  // namespace

@@ -109,6 +109,10 @@ float estimateNoiseOf(const std::vector<Vec3>& light, const std::vector<Guide>& 
       // The finest diagonal Haar detail of each channel: a smooth gradient cancels, pixel noise of
       // deviation s leaves a detail of deviation s.
       const Vec3 d = (light[k[0]] - light[k[1]] - light[k[2]] + light[k[3]]) * 0.5f;
+      // A block of exactly equal pixels has no noise to measure (the background, a floor the shadow
+      // catcher sees unshadowed): where such blocks are most of the picture, counting them would put
+      // the median at 0 and leave the rendered part as noisy as it came.
+      if (d.x == 0.0f && d.y == 0.0f && d.z == 0.0f) continue;
       details.insert(details.end(), {std::abs(d.x), std::abs(d.y), std::abs(d.z)});
     }
   if (details.empty()) return 0.0f;

@@ -32,15 +32,15 @@ void applyLook(SceneDescription& description, Look look) {
   sky.kind = EnvironmentSettings::Kind::Gradient;
   switch (look) {
     case Look::Studio:  // a large soft box high on the left, a grey studio around
-      key.angleDegrees = 40;
-      key.intensity = {0.75f, 0.75f, 0.75f};
-      sky.zenith = {0.55f, 0.55f, 0.57f};
-      sky.horizon = {0.45f, 0.45f, 0.46f};
+      key.angleDegrees = 20;
+      key.intensity = {0.9f, 0.9f, 0.9f};
+      sky.zenith = {0.45f, 0.45f, 0.47f};
+      sky.horizon = {0.38f, 0.38f, 0.39f};
       sky.ground = {0.25f, 0.25f, 0.25f};
       break;
     case Look::Sky:  // an overcast blue sky, a faint sun
-      key.angleDegrees = 15;
-      key.intensity = {0.3f, 0.29f, 0.27f};
+      key.angleDegrees = 10;
+      key.intensity = {0.45f, 0.435f, 0.4f};
       sky.zenith = {0.45f, 0.6f, 0.9f};
       sky.horizon = {0.85f, 0.88f, 0.92f};
       sky.ground = {0.3f, 0.28f, 0.25f};
