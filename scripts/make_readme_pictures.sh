@@ -14,8 +14,6 @@ out=docs/images
 "$lancer" animate examples/demo.toml -o "$out/turntable.gif" --frames 36 --fps 12 --width 400 --height 300 --quiet
 "$lancer" render tests/data/results/cantilever.msh --warp displacement:1 --color-by stress:von_mises --step 3 \
   --undeformed edges --width 480 --height 270 --samples 4 -o "$out/results_warp.png" --quiet
-"$lancer" render examples/meshes/bracket.msh --look studio --samples 64 --denoise --width 480 --height 360 \
-  -o "$out/look_studio.png" --quiet
 # The three looks side by side (docs/lighting.md#looks): the same part, one option apart.
 for look in studio sky sun; do
   "$lancer" render examples/meshes/bracket.msh --look "$look" --denoise --width 320 --height 240 \
