@@ -20,6 +20,20 @@ using test::ScratchFolder;
 
 const std::string kScene = quoted(test::kTurntableScene);
 
+// Renders `input` with `options` as three `--shard` tasks writing parts of `output`, then stitches
+// them with `assemble --tiles`; returns the failing command's output, or "" when all succeeded.
+std::string renderAsThreeTasks(const ScratchFolder& folder, const std::string& input,
+                               const std::string& options, const std::string& output) {
+  for (const char* shard : {"0/3", "1/3", "2/3"}) {
+    const test::CommandResult r =
+        runCli("render -q " + input + options + " -o " + quoted(folder.file(output)) + " --shard " + shard);
+    if (r.exitCode != 0) return r.output;
+  }
+  const test::CommandResult r = runCli("assemble -q --tiles " + quoted(folder.path().string()) + "/" +
+                                       output + ".part-* -o " + quoted(folder.file(output)));
+  return r.exitCode == 0 ? "" : r.output;
+}
+
 TEST(AssembleCli, ShardsAssembledAreTheDirectGifAndApng) {
   ScratchFolder folder;
   ASSERT_EQ(runCli("animate -q " + kScene + " -o " + quoted(folder.file("direct.gif"))).exitCode, 0);
@@ -129,15 +143,7 @@ TEST(AssembleCli, PathTracedShardsAndThreadCountsGiveTheSameBytes) {
   ASSERT_EQ(
       runCli("render -q " + kScene + look + " --threads 2 -o " + quoted(folder.file("two.png"))).exitCode, 0);
   expectSameFile(folder.file("two.png"), folder.file("one.png"));
-  for (const char* shard : {"0/3", "1/3", "2/3"})
-    ASSERT_EQ(
-        runCli("render -q " + kScene + look + " -o " + quoted(folder.file("t.png")) + " --shard " + shard)
-            .exitCode,
-        0);
-  ASSERT_EQ(runCli("assemble -q --tiles " + quoted(folder.path().string()) + "/t.png.part-* -o " +
-                   quoted(folder.file("t.png")))
-                .exitCode,
-            0);
+  ASSERT_EQ(renderAsThreeTasks(folder, kScene, look, "t.png"), "");
   expectSameFile(folder.file("t.png"), folder.file("one.png"));
 }
 
@@ -154,14 +160,7 @@ TEST(AssembleCli, LegendsDrawnByTheShardsAreTheSingleRendersLegends) {
        {quoted(folder.file("legend.toml")), quoted(mesh) + " --gmsh-view " + quoted(options)}) {
     const std::string size = " --width 120 --height 230";
     ASSERT_EQ(runCli("render -q " + input + size + " -o " + quoted(folder.file("direct.png"))).exitCode, 0);
-    for (const char* shard : {"0/3", "1/3", "2/3"}) {
-      const test::CommandResult r =
-          runCli("render -q " + input + size + " -o " + quoted(folder.file("t.png")) + " --shard " + shard);
-      ASSERT_EQ(r.exitCode, 0) << r.output;
-    }
-    const test::CommandResult r = runCli("assemble -q --tiles " + quoted(folder.path().string()) +
-                                         "/t.png.part-* -o " + quoted(folder.file("t.png")));
-    ASSERT_EQ(r.exitCode, 0) << r.output;
+    ASSERT_EQ(renderAsThreeTasks(folder, input, size, "t.png"), "");
     expectSameFile(folder.file("t.png"), folder.file("direct.png"));
     std::filesystem::remove(folder.file("t.png"));
     for (const auto& entry : std::filesystem::directory_iterator(folder.path()))
