@@ -165,7 +165,7 @@ int runAnimate(const AnimateCommandOptions& options) {
     Image image = steps ? steps->render(frame, frameOptions, &stats)
                         : renderAnimationFrame(prepared.scene, prepared.accelerator, prepared.description,
                                                animation, frame, frameOptions, &stats);
-    if (const auto& fields = prepared.scene.fieldColors)
+    if (const auto& fields = prepared.scene.fieldColors; fields && !steps)  // steps draw their own
       drawLegends(image, fields->legends, fields->legendPlacement, prepared.description.render.srgb);
     rays += stats.rays;
     return image;

@@ -75,7 +75,7 @@ void animate(const py::object& target, const std::string& output, const RenderAr
     py::gil_scoped_release release;
     const auto deliver = [&](int frame, const Image& rendered) {
       Image image = rendered;
-      drawSceneLegends(image, prepared);
+      if (!steps) drawSceneLegends(image, prepared);  // a step's frame has its own scene's legends
       writer.addFrame(frame, writer.takesRadiance() ? image : displayImage(image, settings));
     };
     if (steps) {

@@ -8,12 +8,14 @@
 #include <cmath>
 #include <vector>
 
+#include "lancer/image/legend.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/render/step_animation.hpp"
 #include "lancer/scene/arrows.hpp"
 #include "lancer/scene/isolines.hpp"
 #include "lancer/scene/scene.hpp"
 #include "support/files.hpp"
+#include "support/test_scenes.hpp"
 
 namespace lancer {
 namespace {
@@ -171,6 +173,42 @@ TEST(AnnotationsOverSteps, IsolinesFollowTheStepWithValuesFixedOverTheSteps) {
   const ResolvedIsolines pinned = resolveIsolines(spec, mesh, atStep(3));
   EXPECT_EQ(pinned.vertexValue, early.vertexValue);
   EXPECT_NEAR(pinned.values.front(), -0.5 + 0.05, 1e-5);
+}
+
+TEST(AnnotationsOverSteps, EachFramesLegendShowsTheRangeOfItsColours) {
+  // The turning flow's speed is 1 everywhere at step 0 and 2 at step 1. With range = "step" each
+  // frame's colours span its own step (one value: the map's middle colour in both frames), so only
+  // the legend's label tells the frames apart; with the default range both frames share [1, 2].
+  const std::vector<Mesh> meshes{turningFlow()};
+  const auto frames = [&](bool perStepRange, LegendPlacement legend) {
+    SceneDescription description =
+        test::flatLitOnBlue(test::orthographicView(96, 64, {0.5, 0.5, 5}, {0.5, 0.5, 0}, 1.5), {0.5, 0.5, 5});
+    description.materials = {test::matteMaterial("plain", {0.2f, 0.2f, 0.2f}, {0.7f, 0.7f, 0.7f})};
+    MeshInstance instance;
+    ColorBy colour;
+    colour.field = "velocity";
+    colour.perStepRange = perStepRange;
+    colour.legend = legend;
+    instance.colorBy = colour;
+    description.meshes.push_back(instance);
+    StepScenes steps(description, meshes, AnimationSettings{}, kDefaultAccel, 1);
+    std::vector<Image> images;
+    std::vector<std::pair<double, double>> ranges;
+    for (int frame = 0; frame < steps.frameCount(); ++frame) {
+      images.push_back(steps.render(frame, RenderOptions{}));
+      const LegendSpec& shown = steps.frameScene()->fieldColors->legends.at(0);
+      ranges.emplace_back(shown.low, shown.high);
+    }
+    return std::pair{images, ranges};
+  };
+  const auto [perStep, perStepRanges] = frames(true, LegendPlacement::Right);
+  ASSERT_EQ(perStep.size(), 2u);
+  EXPECT_EQ(perStepRanges, (std::vector<std::pair<double, double>>{{1, 1}, {2, 2}}));
+  EXPECT_NE(perStep[0], perStep[1]);  // the labels 1 and 2
+  const auto [unlabelled, ignored] = frames(true, LegendPlacement::None);
+  EXPECT_EQ(unlabelled[0], unlabelled[1]);  // so the difference above is the legend's
+  const auto [fixed, fixedRanges] = frames(false, LegendPlacement::Right);
+  EXPECT_EQ(fixedRanges, (std::vector<std::pair<double, double>>{{1, 2}, {1, 2}}));
 }
 
 }  // namespace

@@ -28,7 +28,8 @@ struct LegendSpec {
 
 // Round tick values inside [low, high]: multiples of a step 1, 2 or 5 times a power of ten, chosen
 // as in Heckbert's "Nice numbers for graph labels" (Graphics Gems, 1990) for about `targetCount`
-// ticks, with at least two when low < high (one, the value, when low == high).
+// ticks, with at least three (or half of targetCount) when low < high (one, the value, when low ==
+// high).
 struct NiceTicks {
   std::vector<double> values;
   double step = 0;

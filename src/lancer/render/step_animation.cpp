@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lancer/image/legend.hpp"
 #include "lancer/image/text.hpp"
 #include "lancer/mesh/field_steps.hpp"
 #include "lancer/scene/result_keys.hpp"
@@ -140,6 +141,10 @@ Image StepScenes::render(int frame, const RenderOptions& options, RenderStats* s
                         SourceLocation{description_.path});
     drawFrameLabel(image, text, animation_.labelPosition);
   }
+  // The frame's own legends: with range = "step" each frame's colour range is its step's, so a
+  // legend made once for the animation would show the first step's range on every frame.
+  if (const std::optional<FieldColors>& fields = scene_->fieldColors)
+    drawLegends(image, fields->legends, fields->legendPlacement, description_.render.srgb);
   return image;
 }
 

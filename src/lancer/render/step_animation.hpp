@@ -44,7 +44,8 @@ class StepScenes {
   const SceneDescription& description() const { return description_; }
   const AnimationSettings& animation() const { return animation_; }
 
-  // Frame `frame` (its label drawn when the animation has one). Builds the frame's scene and
+  // Frame `frame`, with its label when the animation has one and the legends of the frame's own
+  // scene (its colour ranges: per step with range = "step"). Builds the frame's scene and
   // accelerator unless the previous frame had the same time and nothing is warped.
   Image render(int frame, const RenderOptions& options, RenderStats* stats = nullptr);
 
@@ -56,6 +57,8 @@ class StepScenes {
   // What the first frame's build warned about (collapsed faces, the readers' warnings).
   const std::vector<std::string>& warnings() const { return warnings_; }
   std::size_t faceCount() const { return scene_ ? scene_->geometry.faces.size() : 0; }
+  // The scene of the frame rendered last (empty before the first render).
+  const std::optional<Scene>& frameScene() const { return scene_; }
 
  private:
   void buildAt(double time);
