@@ -94,27 +94,24 @@ Vec3 PathIntegrator::shadeShadowCatcher(const Vec3& point, const Vec3& direction
   const Vec3& normal = scene_.shadowCatcher->normal;
   const Vec3 from = offsetRayOrigin(point, normal);
   Vec3 lit{0, 0, 0}, shadowed{0, 0, 0};
+  auto catchSample = [&](const LightSample& sample) {
+    const float cosTheta = dot(normal, sample.direction);
+    if (cosTheta <= 0.0f) return;
+    const Vec3 irradiance = sample.weight * cosTheta;
+    lit += irradiance;
+    shadowed += irradiance * queries_.lightTransmission(from, sample.target, counters);
+  };
   for (const SceneLight& light : scene_.appearance.lights) {
     float u, v;
     samples.next2D(u, v);
     LightSample sample;
-    if (!sampleLight(light, point, u, v, sceneSize_, sample)) continue;
-    const float cosTheta = dot(normal, sample.direction);
-    if (cosTheta <= 0.0f) continue;
-    const Vec3 irradiance = sample.weight * cosTheta;
-    lit += irradiance;
-    shadowed += irradiance * queries_.lightTransmission(from, sample.target, counters);
+    if (sampleLight(light, point, u, v, sceneSize_, sample)) catchSample(sample);
   }
   if (!emissive_.empty()) {
     float u, v;
     samples.next2D(u, v);
     LightSample sample;
-    const float cosTheta = emissive_.sample(point, u, v, sample) ? dot(normal, sample.direction) : 0.0f;
-    if (cosTheta > 0.0f) {
-      const Vec3 irradiance = sample.weight * cosTheta;
-      lit += irradiance;
-      shadowed += irradiance * queries_.lightTransmission(from, sample.target, counters);
-    }
+    if (emissive_.sample(point, u, v, sample)) catchSample(sample);
   }
   if (!environment_.black()) {
     float u, v;
