@@ -116,6 +116,16 @@ void writeFinal(const std::string& output, const Image& radiance, const RenderSe
   writeExr(output, radiance, layers);
 }
 
+// The rendered radiance with the scene's legends drawn in, written as writeFinal writes it: what a
+// plain render and each --progressive pass leave in `output`.
+void writeWithLegends(const std::string& output, Image radiance, const PreparedRender& prepared,
+                      const ExrLayerChoice& aovs, const FeatureBuffers* features) {
+  const RenderSettings& settings = prepared.description.render;
+  if (const std::optional<FieldColors>& fields = prepared.scene.fieldColors)
+    drawLegends(radiance, fields->legends, fields->legendPlacement, settings.srgb);
+  writeFinal(output, radiance, settings, aovs, features);
+}
+
 // Renders into `output` (atomically: an interrupted or failed render leaves any existing file as it
 // was). Returns false when interrupted.
 bool renderToFile(const PreparedRender& prepared, const Renderer& renderer, const std::string& output,
@@ -130,8 +140,7 @@ bool renderToFile(const PreparedRender& prepared, const Renderer& renderer, cons
     FeatureBuffers features;
     Image image = renderer.renderFinal(renderOptions, &stats, aovs.any() ? &features : nullptr);
     if (stats.cancelled || (cancellable && renderOptions.cancel->load())) return false;
-    if (legends) drawLegends(image, fields->legends, fields->legendPlacement, settings.srgb);
-    writeFinal(output, image, settings, aovs, aovs.any() ? &features : nullptr);
+    writeWithLegends(output, std::move(image), prepared, aovs, aovs.any() ? &features : nullptr);
     return true;
   }
   ImageRowWriter writer(output, settings.width, settings.height, writeOptions);  // a bad folder fails now
@@ -155,8 +164,6 @@ bool renderProgressive(const PreparedRender& prepared, const Renderer& finalRend
                        const std::string& output, double seconds, const ExrLayerChoice& aovs,
                        const RenderOptions& renderOptions, RenderStats& stats) {
   const RenderSettings& settings = prepared.description.render;
-  const std::optional<FieldColors>& fields = prepared.scene.fieldColors;
-  const bool legends = fields && fields->legendPlacement != LegendPlacement::None;
   std::optional<FeatureBuffers> features;
   if (settings.denoise || aovs.any()) features = finalRenderer.renderFeatures(renderOptions.threads);
   RenderSettings pass = settings;
@@ -177,8 +184,7 @@ bool renderProgressive(const PreparedRender& prepared, const Renderer& finalRend
         denoiseOptions.threads = renderOptions.threads;
         image = denoise(image, *features, denoiseOptions);
       }
-      if (legends) drawLegends(image, fields->legends, fields->legendPlacement, settings.srgb);
-      writeFinal(output, image, settings, aovs, features ? &*features : nullptr);
+      writeWithLegends(output, std::move(image), prepared, aovs, features ? &*features : nullptr);
       sinceWrite = Stopwatch();
     }
     if (last) return true;
