@@ -72,6 +72,16 @@ float componentScalar(const float* v, int components, const FieldComponent& comp
 }
 
 std::pair<double, double> componentRange(const MeshField& field, const FieldComponent& component) {
+  if (field.stored) {
+    const auto components = static_cast<std::size_t>(field.components);
+    const std::size_t slot = component.kind == FieldComponent::Kind::Index      ? static_cast<std::size_t>(component.index)
+                             : component.kind == FieldComponent::Kind::VonMises ? components + 1
+                                                                                : components;
+    const std::vector<std::pair<float, float>>& ranges = field.stored->ranges;
+    if (slot < ranges.size() && ranges[slot].first <= ranges[slot].second)
+      return {ranges[slot].first, ranges[slot].second};
+    return {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  }
   double low = std::numeric_limits<double>::infinity(), high = -low;
   for (std::size_t i = 0; i < field.itemCount(); ++i) {
     const double value = componentScalar(field.values.data() + i * static_cast<std::size_t>(field.components),
@@ -81,6 +91,25 @@ std::pair<double, double> componentRange(const MeshField& field, const FieldComp
     high = std::max(high, value);
   }
   return {low, high};
+}
+
+std::vector<std::pair<float, float>> componentRanges(const std::vector<float>& values, int components) {
+  const float none = std::numeric_limits<float>::infinity();
+  std::vector<std::pair<float, float>> ranges(static_cast<std::size_t>(components) + (components == 9 ? 2 : 1),
+                                              {none, -none});
+  const auto include = [](std::pair<float, float>& range, float value) {
+    if (std::isnan(value)) return;
+    range.first = std::min(range.first, value);
+    range.second = std::max(range.second, value);
+  };
+  const auto n = static_cast<std::size_t>(components);
+  for (std::size_t i = 0; i + n <= values.size(); i += n) {
+    const float* v = values.data() + i;
+    for (std::size_t c = 0; c < n; ++c) include(ranges[c], v[c]);
+    include(ranges[n], componentScalar(v, components, FieldComponent{}));
+    if (components == 9) include(ranges[n + 1], componentScalar(v, components, {FieldComponent::Kind::VonMises, 0}));
+  }
+  return ranges;
 }
 
 namespace {
@@ -138,7 +167,7 @@ std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, cons
   if (when.step || !when.time) {
     const int wanted = when.step.value_or(steps.front()->step);
     for (const MeshField* field : steps)
-      if (field->step == wanted) return *field;
+      if (field->step == wanted) return loadedField(*field);
     std::vector<int> indices;
     indices.reserve(steps.size());
     for (const MeshField* field : steps) indices.push_back(field->step);
@@ -152,17 +181,21 @@ std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, cons
   const double t = *when.time;
   std::size_t next = 0;
   while (next < steps.size() && stepTime(steps, next) < t) ++next;
-  if (next == 0) return *steps.front();
-  if (next == steps.size()) return *steps.back();
+  if (next == 0) return loadedField(*steps.front());
+  if (next == steps.size()) return loadedField(*steps.back());
   const double t0 = stepTime(steps, next - 1), t1 = stepTime(steps, next);
-  if (t1 == t) return *steps[next];
-  const MeshField& a = *steps[next - 1];
-  const MeshField& b = *steps[next];
-  if (a.values.size() != b.values.size() || a.components != b.components) {
+  if (t1 == t) return loadedField(*steps[next]);
+  if (steps[next - 1]->itemCount() != steps[next]->itemCount() ||
+      steps[next - 1]->components != steps[next]->components) {
     problem = fmt::format("steps {} and {} have different sizes ({} and {} values); they cannot be blended",
-                          a.step, b.step, a.values.size(), b.values.size());
+                          steps[next - 1]->step, steps[next]->step,
+                          steps[next - 1]->itemCount() * static_cast<std::size_t>(steps[next - 1]->components),
+                          steps[next]->itemCount() * static_cast<std::size_t>(steps[next]->components));
     return std::nullopt;
   }
+  // Read back when stored (the two steps of a blend are the two a stored file keeps).
+  const MeshField a = loadedField(*steps[next - 1]);
+  const MeshField b = loadedField(*steps[next]);
   const auto w = static_cast<float>((t - t0) / (t1 - t0));
   MeshField blend;
   blend.name = a.name;

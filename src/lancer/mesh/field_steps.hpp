@@ -36,8 +36,11 @@ std::string componentProblem(const FieldComponent& component, int components);
 float componentScalar(const float* values, int components, const FieldComponent& component);
 
 // The least and greatest `component` scalar of a step's items, NaN ignored; empty (low > high) when
-// there is none.
+// there is none. A stored step's come from what the reader saw (StoredFieldValues::ranges).
 std::pair<double, double> componentRange(const MeshField& field, const FieldComponent& component);
+
+// The ranges a stored step keeps: each component's, the magnitude's, von Mises' for a tensor.
+std::vector<std::pair<float, float>> componentRanges(const std::vector<float>& values, int components);
 
 // The steps of view `name`, in time order (ties by step index). Their time is the file's real tag;
 // a view whose times do not increase with its step index (gmsh writes time 0 for every step when the

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "lancer/mesh/msh/stored_steps.hpp"
+
 namespace lancer {
 
 float MeshField::scalar(std::size_t item) const {
@@ -15,6 +17,10 @@ float MeshField::scalar(std::size_t item) const {
 }
 
 std::pair<float, float> MeshField::range() const {
+  if (stored) {  // the magnitude's (a scalar's own), kept by the reader
+    const std::pair<float, float> kept = stored->ranges.at(static_cast<std::size_t>(components));
+    return kept.first <= kept.second ? kept : std::pair{0.0f, 0.0f};
+  }
   float low = std::numeric_limits<float>::infinity(), high = -low;
   for (std::size_t i = 0; i < itemCount(); ++i) {
     const float value = scalar(i);
@@ -23,6 +29,18 @@ std::pair<float, float> MeshField::range() const {
     high = std::max(high, value);
   }
   return low <= high ? std::pair{low, high} : std::pair{0.0f, 0.0f};
+}
+
+MeshField loadedField(const MeshField& field) {
+  if (!field.stored) return field;
+  MeshField copy;
+  copy.name = field.name;
+  copy.perElement = field.perElement;
+  copy.components = field.components;
+  copy.step = field.step;
+  copy.time = field.time;
+  copy.values = *field.stored->file->load(field.stored->section);
+  return copy;
 }
 
 }  // namespace lancer

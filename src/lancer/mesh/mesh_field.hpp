@@ -2,14 +2,32 @@
 // time step of one gmsh view), mapped onto the mesh lancer renders so that surfaces can be coloured
 // by it. Values are float: a colour map needs no more, and a field costs 4 bytes per vertex and
 // component instead of 8.
+//
+// A file whose steps would take much memory (fifty steps of a million-face result) leaves them in
+// the file: such a step is *stored* (its `values` empty) and read back when a picture needs it
+// (loadedField). The reader has already read it once, checked it and kept its ranges, so colour
+// ranges over every step need no second read.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace lancer {
+
+class StoredFieldSteps;  // mesh/msh/stored_steps.hpp: reads stored steps back from their file
+
+// Where a stored step's values are, and what the reader saw of them.
+struct StoredFieldValues {
+  std::shared_ptr<const StoredFieldSteps> file;
+  std::size_t section = 0;  // which of the file's field sections
+  std::size_t items = 0;    // vertices or faces
+  // The least and greatest of each component, then of the magnitude, then of von Mises (a tensor;
+  // else empty), NaN ignored; low > high when there is none. componentRange() reads them.
+  std::vector<std::pair<float, float>> ranges;
+};
 
 struct MeshField {
   std::string name;         // the view's name (first string tag)
@@ -18,16 +36,25 @@ struct MeshField {
   int step = 0;             // time step index (first integer tag)
   double time = 0;          // time value (first real tag)
   // components values per mesh vertex (node data) or per face (element data), in mesh order; NaN
-  // where the file gives no value (e.g. the centre lancer adds to an 8-node quad).
+  // where the file gives no value (e.g. the centre lancer adds to an 8-node quad). Empty while the
+  // step is stored.
   std::vector<float> values;
+  std::shared_ptr<const StoredFieldValues> stored = nullptr;  // set while the values wait in the file
 
+  bool isStored() const { return stored != nullptr; }
   std::size_t itemCount() const {
+    if (stored) return stored->items;
     return components > 0 ? values.size() / static_cast<std::size_t>(components) : 0;
   }
-  // The scalar colour maps show: the value of a scalar, the length of a vector or tensor.
+  // The scalar colour maps show: the value of a scalar, the length of a vector or tensor (not for
+  // a stored step: load it first).
   float scalar(std::size_t item) const;
   // The least and greatest scalar over the items, ignoring NaN; {0, 0} when there is none.
   std::pair<float, float> range() const;
 };
+
+// The field with its values in memory: a copy of it, read back from its file when it is stored.
+// Throws InputError when the file cannot be read again or changed since it was read.
+MeshField loadedField(const MeshField& field);
 
 }  // namespace lancer

@@ -159,10 +159,14 @@ Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh, const StepSelection& whe
   double largest = 0;
   std::vector<const MeshField*> steps{&field};
   if (!spec.step) steps = viewSteps(mesh, spec.field);
-  for (const MeshField* step : steps)
+  for (const MeshField* step : steps) {
+    // A step left in its file (mesh_field.hpp) is not read back for this: its largest magnitude
+    // over every node, which the reader kept, stands in for the largest at the arrows' nodes.
+    if (step->isStored()) largest = std::max(largest, componentRange(*step, FieldComponent{}).second);
     if (step->values.size() == field.values.size())
       for (const std::uint32_t v : placement.vertices)
         largest = std::max(largest, length(vectorAt(*step, v)));
+  }
   const double scale = spec.scale ? *spec.scale : (largest > 0 ? 0.9 * placement.cellSize / largest : 0);
   std::optional<MeshField> displacement;
   if (warp) displacement = meshFieldAt("warp", warp->field, std::nullopt, mesh, when, warp->where);

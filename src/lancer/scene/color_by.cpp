@@ -116,7 +116,7 @@ std::optional<FieldComponent> readFieldComponent(const TomlTableReader& reader) 
 MeshField meshFieldAt(std::string_view key, const std::string& name, std::optional<int> step,
                       const Mesh& mesh, const StepSelection& when, const SourceLocation& where) {
   const std::vector<const MeshField*> steps = viewSteps(mesh, name);
-  if (step || steps.empty()) return findMeshField(key, name, step.value_or(0), mesh, where);
+  if (step || steps.empty()) return loadedField(findMeshField(key, name, step.value_or(0), mesh, where));
   std::string problem;
   std::optional<MeshField> found = viewAt(steps, when, problem);
   if (!found)

@@ -113,10 +113,18 @@ std::vector<std::string> matchStepFiles(const std::string& pattern, const Source
 
 Mesh readStepFiles(const std::string& pattern, const std::vector<std::string>& files, int threads,
                    const SourceLocation& where) {
-  Mesh mesh = readMsh(files.front(), threads);
+  // The files' steps together decide whether they stay in memory, as one file's would: when the
+  // first file's times the file count exceed the budget, every file's steps are left in the file.
+  const std::uint64_t budget = defaultResidentFieldBytes();
+  Mesh mesh = readMsh(files.front(), threads, budget);
+  std::uint64_t stepBytes = 0;
+  for (const MeshField& field : mesh.fields)
+    stepBytes += field.itemCount() * static_cast<std::uint64_t>(field.components) * sizeof(float);
+  const bool store = stepBytes > 0 && files.size() > budget / stepBytes;
+  if (store && !mesh.fields.empty() && !mesh.fields.front().isStored()) mesh = readMsh(files.front(), threads, 0);
   for (MeshField& field : mesh.fields) field.step = 0;
   for (std::size_t k = 1; k < files.size(); ++k) {
-    Mesh next = readMsh(files[k], threads);
+    Mesh next = readMsh(files[k], threads, store ? 0 : UINT64_MAX);
     if (const std::string difference = describeMeshDifference(mesh, next); !difference.empty())
       throw InputError(where,
                        fmt::format("{} is step {} of the pattern, but its mesh differs from {}'s ({}): "

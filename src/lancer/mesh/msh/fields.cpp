@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace lancer {
@@ -84,41 +85,66 @@ void expectFieldSectionEnd(MshCursor& cursor, std::string_view expected, const c
   cursor.expectToken(expected, context);
 }
 
-}  // namespace
-
-void readMshNodeData(MshReadState& state, const char* sectionStart) {
+// Notes where the section's records are and moves the cursor past them to the end marker: binary
+// records by their size (their bytes may hold anything), text ones to the first "$End" (a number
+// never holds a '$', and gmsh ends the section at the first such token too).
+void skipRecords(MshReadState& state, MshFieldSection section, const char* sectionStart, const char* what,
+                 std::string_view endMarker) {
   MshCursor& cursor = state.cursor;
-  if (!state.nodesRead)
-    cursor.failAt(sectionStart, "$NodeData comes before $Nodes; its values need the nodes");
-  FieldHeader header = readHeader(state, "$NodeData");
-  MshNodeTable& nodes = state.assembler.nodes;
-  const auto components = static_cast<std::uint64_t>(header.components);
+  const auto components = static_cast<std::uint64_t>(section.field.components);
   const std::uint64_t recordBytes =
       state.binary ? 4 + 8 * components : (1 + components) * kMinTextNumberBytes;
   if (state.binary) cursor.skipLine();
-  cursor.requireBytes(header.count, recordBytes, "$NodeData");
+  cursor.requireBytes(section.count, recordBytes, what);
+  section.binary = state.binary;
+  section.sectionBegin = cursor.offset() - static_cast<std::uint64_t>(cursor.position() - sectionStart);
+  section.recordsBegin = cursor.offset();
+  if (state.binary) {
+    cursor.advance(section.count * recordBytes);
+  } else {
+    const void* end = ::memmem(cursor.position(), cursor.remaining(), "$End", 4);
+    if (!end)
+      cursor.failAt(sectionStart, fmt::format("{} '{}' has no {} (the file looks truncated)", what,
+                                              section.field.name, endMarker));
+    cursor.seek(static_cast<const char*>(end));
+  }
+  section.recordsEnd = cursor.offset();
+  expectFieldSectionEnd(cursor, endMarker,
+                        section.field.perElement ? "after the element data values" : "after the node data values");
+  state.fieldSections.push_back(std::move(section));
+}
 
-  MeshField field;
-  field.name = std::move(header.name);
-  field.step = header.step;
-  field.time = header.time;
-  field.components = header.components;
-  field.values.assign(nodes.size() * components, std::numeric_limits<float>::quiet_NaN());
+MshFieldSection sectionOf(FieldHeader header, bool perElement) {
+  MshFieldSection section;
+  section.field.name = std::move(header.name);
+  section.field.perElement = perElement;
+  section.field.step = header.step;
+  section.field.time = header.time;
+  section.field.components = header.components;
+  section.count = header.count;
+  return section;
+}
+
+// The records' values in mesh-vertex order.
+void readNodeRecords(MshCursor& cursor, const MshFieldSection& section, const MshFieldMapping& mapping,
+                     MeshField& field, std::vector<std::string>& warnings) {
+  const bool binary = section.binary;
+  const auto components = static_cast<std::uint64_t>(field.components);
+  field.values.assign(mapping.nodeCount * components, std::numeric_limits<float>::quiet_NaN());
   // Values for nodes the file does not save (a view built over all of a model's nodes, saved with
   // only its physical groups' elements) are dropped, with one warning for the section.
   std::uint64_t dropped = 0, firstDropped = 0;
   const char* firstDroppedAt = nullptr;
-  for (std::uint64_t i = 0; i < header.count; ++i) {
+  for (std::uint64_t i = 0; i < section.count; ++i) {
     // Binary records may start with bytes that look like whitespace: only text skips to the token.
-    const char* recordAt = state.binary ? cursor.position() : cursor.tokenStart();
-    const std::uint64_t tag = readRecordTag(cursor, state.binary, "a node tag");
-    const std::uint32_t index = nodes.find(tag);
+    const char* recordAt = binary ? cursor.position() : cursor.tokenStart();
+    const std::uint64_t tag = readRecordTag(cursor, binary, "a node tag");
+    const std::uint32_t index = mapping.nodes.find(tag);
     if (index == kNoVertex && dropped++ == 0) firstDropped = tag, firstDroppedAt = recordAt;
     float* out = index == kNoVertex ? nullptr : field.values.data() + index * components;
     for (std::uint64_t c = 0; c < components; ++c) {
-      const char* valueAt = state.binary ? cursor.position() : cursor.tokenStart();
-      const double value =
-          state.binary ? cursor.readRaw<double>("a field value") : cursor.readDouble("a field value");
+      const char* valueAt = binary ? cursor.position() : cursor.tokenStart();
+      const double value = binary ? cursor.readRaw<double>("a field value") : cursor.readDouble("a field value");
       if (!std::isfinite(value))
         cursor.failAt(valueAt,
                       fmt::format("$NodeData '{}' has a non-finite value for node {}", field.name, tag));
@@ -126,64 +152,85 @@ void readMshNodeData(MshReadState& state, const char* sectionStart) {
     }
   }
   if (dropped)
-    state.warnAt(firstDroppedAt,
-                 fmt::format("$NodeData '{}' gives values for {} node{} that $Nodes does not define (the "
-                             "first: node {}); they were dropped and the other {} kept",
-                             field.name, dropped, dropped == 1 ? "" : "s",
-                             static_cast<std::int64_t>(firstDropped), header.count - dropped));
-  expectFieldSectionEnd(cursor, "$EndNodeData", "after the node data values");
-  state.assembler.nodeFields.push_back(std::move(field));
+    warnings.push_back(formatInputWarning(
+        cursor.locate(firstDroppedAt),
+        fmt::format("$NodeData '{}' gives values for {} node{} that $Nodes does not define (the "
+                    "first: node {}); they were dropped and the other {} kept",
+                    field.name, dropped, dropped == 1 ? "" : "s", static_cast<std::int64_t>(firstDropped),
+                    section.count - dropped)));
+  remapNodeValues(field.values, field.components, mapping.usedNode, mapping.usedCount,
+                  mapping.nodes.taggedCount(), mapping.derivedSources);
 }
 
-void readMshElementData(MshReadState& state, const char* sectionStart) {
-  MshCursor& cursor = state.cursor;
-  if (!state.elementsRead)
-    cursor.failAt(sectionStart, "$ElementData comes before $Elements; its values need the elements");
-  FieldHeader header = readHeader(state, "$ElementData");
-  const auto components = static_cast<std::uint64_t>(header.components);
-  const std::uint64_t recordBytes =
-      state.binary ? 4 + 8 * components : (1 + components) * kMinTextNumberBytes;
+// The records' values per face, from the element each face came from.
+void readElementRecords(MshCursor& cursor, const MshFieldSection& section, const MshFieldMapping& mapping,
+                        MeshField& field, std::vector<std::string>& warnings) {
+  const bool binary = section.binary;
+  const auto components = static_cast<std::uint64_t>(field.components);
   // Records naming an element that made no face are ignored: gmsh writes values for every element
   // of a view, lines and points too. Tags outside the file's element tags are dropped with a warning.
-  if (state.binary) cursor.skipLine();
-  cursor.requireBytes(header.count, recordBytes, "$ElementData");
-
-  MshMeshAssembler::ElementField raw;
-  raw.field.name = std::move(header.name);
-  raw.field.perElement = true;
-  raw.field.step = header.step;
-  raw.field.time = header.time;
-  raw.field.components = header.components;
-  raw.field.values.reserve(header.count * components);
-  raw.tags.reserve(header.count);
+  std::vector<float> values;
+  std::vector<std::uint64_t> tags;
+  values.reserve(section.count * components);
+  tags.reserve(section.count);
   std::uint64_t dropped = 0, firstDropped = 0;
   const char* firstDroppedAt = nullptr;
-  for (std::uint64_t i = 0; i < header.count; ++i) {
-    const char* recordAt = state.binary ? cursor.position() : cursor.tokenStart();
-    const std::uint64_t tag = readRecordTag(cursor, state.binary, "an element tag");
+  for (std::uint64_t i = 0; i < section.count; ++i) {
+    const char* recordAt = binary ? cursor.position() : cursor.tokenStart();
+    const std::uint64_t tag = readRecordTag(cursor, binary, "an element tag");
     // Tag 0 is gmsh's placeholder for an element it did not save (Save View writes one for each
     // point of a model without physical points): dropped without a word, as gmsh itself reads it.
-    if (tag != 0 && (tag < state.minElementTag || tag > state.maxElementTag) && dropped++ == 0)
+    if (tag != 0 && (tag < mapping.minElementTag || tag > mapping.maxElementTag) && dropped++ == 0)
       firstDropped = tag, firstDroppedAt = recordAt;
-    raw.tags.push_back(tag);
+    tags.push_back(tag);
     for (std::uint64_t c = 0; c < components; ++c) {
-      const char* valueAt = state.binary ? cursor.position() : cursor.tokenStart();
-      const double value =
-          state.binary ? cursor.readRaw<double>("a field value") : cursor.readDouble("a field value");
+      const char* valueAt = binary ? cursor.position() : cursor.tokenStart();
+      const double value = binary ? cursor.readRaw<double>("a field value") : cursor.readDouble("a field value");
       if (!std::isfinite(value))
         cursor.failAt(valueAt, fmt::format("$ElementData '{}' has a non-finite value for element {}",
-                                           raw.field.name, tag));
-      raw.field.values.push_back(static_cast<float>(value));
+                                           field.name, tag));
+      values.push_back(static_cast<float>(value));
     }
   }
   if (dropped)
-    state.warnAt(firstDroppedAt,
-                 fmt::format("$ElementData '{}' gives values for {} element{} that $Elements does not hold "
-                             "(the first: element {}); they were dropped and the other {} kept",
-                             raw.field.name, dropped, dropped == 1 ? "" : "s",
-                             static_cast<std::int64_t>(firstDropped), header.count - dropped));
-  expectFieldSectionEnd(cursor, "$EndElementData", "after the element data values");
-  state.assembler.elementFields.push_back(std::move(raw));
+    warnings.push_back(formatInputWarning(
+        cursor.locate(firstDroppedAt),
+        fmt::format("$ElementData '{}' gives values for {} element{} that $Elements does not hold "
+                    "(the first: element {}); they were dropped and the other {} kept",
+                    field.name, dropped, dropped == 1 ? "" : "s", static_cast<std::int64_t>(firstDropped),
+                    section.count - dropped)));
+  field.values =
+      mapElementValues(std::move(tags), values, field.components, mapping.faceElement, mapping.elementAliases);
+}
+
+}  // namespace
+
+void readMshNodeData(MshReadState& state, const char* sectionStart) {
+  if (!state.nodesRead)
+    state.cursor.failAt(sectionStart, "$NodeData comes before $Nodes; its values need the nodes");
+  skipRecords(state, sectionOf(readHeader(state, "$NodeData"), false), sectionStart, "$NodeData",
+              "$EndNodeData");
+}
+
+void readMshElementData(MshReadState& state, const char* sectionStart) {
+  if (!state.elementsRead)
+    state.cursor.failAt(sectionStart, "$ElementData comes before $Elements; its values need the elements");
+  skipRecords(state, sectionOf(readHeader(state, "$ElementData"), true), sectionStart, "$ElementData",
+              "$EndElementData");
+}
+
+MeshField readMshFieldRecords(MshCursor& cursor, const MshFieldSection& section, const MshFieldMapping& mapping,
+                              std::vector<std::string>& warnings) {
+  MeshField field = section.field;
+  if (field.perElement)
+    readElementRecords(cursor, section, mapping, field, warnings);
+  else
+    readNodeRecords(cursor, section, mapping, field, warnings);
+  // A text section with more records than its count: what follows the last one is not its end.
+  if (!section.binary && (cursor.skipWhitespace(), cursor.offset() < section.recordsEnd))
+    cursor.fail(fmt::format("expected {} after the {} values the section's count gives, found more values",
+                            field.perElement ? "$EndElementData" : "$EndNodeData", section.count));
+  return field;
 }
 
 }  // namespace lancer

@@ -308,38 +308,6 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
   volumeFaces_ = {};
 }
 
-namespace {
-
-// Keeps the values of the nodes that became mesh vertices, in the same order as the positions.
-// The centres lancer adds to 8-node quads (derived nodes, after the file's `tagged` nodes) get the
-// serendipity combination of their quad's values, like their positions.
-void remapNodeField(MeshField& field, const std::vector<std::uint8_t>& usedNode, std::uint32_t usedCount,
-                    std::size_t tagged, const std::vector<std::array<std::uint32_t, 8>>& derivedSources) {
-  const auto components = static_cast<std::size_t>(field.components);
-  field.values.resize(tagged * components);
-  for (const auto& source : derivedSources) {
-    for (std::size_t c = 0; c < components; ++c) {
-      float value = 0;
-      for (int i = 0; i < 4; ++i)
-        value += -0.25f * field.values[source[i] * components + c] +
-                 0.5f * field.values[source[4 + i] * components + c];
-      field.values.push_back(value);
-    }
-  }
-  const std::size_t covered = field.values.size() / components;
-  std::vector<float> values;
-  values.reserve(std::size_t{usedCount} * components);
-  for (std::size_t i = 0; i < usedNode.size(); ++i) {
-    if (!usedNode[i]) continue;
-    for (std::size_t c = 0; c < components; ++c)
-      values.push_back(i < covered ? field.values[i * components + c]
-                                   : std::numeric_limits<float>::quiet_NaN());
-  }
-  field.values = std::move(values);
-}
-
-}  // namespace
-
 Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> namedGroups) {
   for (int type = 1; type <= kMaxMshElementType; ++type) {
     const std::uint64_t count = countByType_[static_cast<std::size_t>(type)];
@@ -461,37 +429,33 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   mesh.source = std::move(source);
   mesh.fields = std::move(nodeFields);
   for (MeshField& field : mesh.fields)
-    remapNodeField(field, usedNode, usedCount, nodes.taggedCount(), derivedSources_);
+    remapNodeValues(field.values, field.components, usedNode, usedCount, nodes.taggedCount(), derivedSources_);
+  std::sort(elementAliases_.begin(), elementAliases_.end());
   mapElementFields(mesh);
+  if (keepFieldMapping_) {
+    // The reader's field sections are read after this, into the mesh's order: what it takes.
+    auto mapping = std::make_shared<MshFieldMapping>();
+    mapping->nodeCount = nodes.size();
+    mapping->nodes = std::move(nodes);
+    mapping->nodes.releaseCoordinates();
+    mapping->usedNode = std::move(usedNode);
+    mapping->usedCount = usedCount;
+    mapping->derivedSources = std::move(derivedSources_);
+    mapping->faceElement = std::move(faceElement_);
+    mapping->elementAliases = std::move(elementAliases_);
+    fieldMapping_ = std::move(mapping);
+  }
+  faceElement_ = {};
   return mesh;
 }
 
 void MshMeshAssembler::mapElementFields(Mesh& mesh) {
-  std::sort(elementAliases_.begin(), elementAliases_.end());
   for (ElementField& raw : elementFields) {
-    for (std::uint64_t& tag : raw.tags) {
-      const auto alias =
-          std::lower_bound(elementAliases_.begin(), elementAliases_.end(), std::pair{tag, std::uint64_t{0}});
-      if (alias != elementAliases_.end() && alias->first == tag) tag = alias->second;
-    }
-    // Sorted (tag, record) pairs: one binary search per face.
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> byTag(raw.tags.size());
-    for (std::size_t r = 0; r < raw.tags.size(); ++r) byTag[r] = {raw.tags[r], static_cast<std::uint32_t>(r)};
-    std::sort(byTag.begin(), byTag.end());
-    const auto components = static_cast<std::size_t>(raw.field.components);
-    std::vector<float> values(faceElement_.size() * components, std::numeric_limits<float>::quiet_NaN());
-    for (std::size_t f = 0; f < faceElement_.size(); ++f) {
-      const auto found =
-          std::lower_bound(byTag.begin(), byTag.end(), std::pair{faceElement_[f], std::uint32_t{0}});
-      if (found == byTag.end() || found->first != faceElement_[f]) continue;
-      std::copy_n(raw.field.values.begin() + static_cast<std::ptrdiff_t>(found->second * components),
-                  components, values.begin() + static_cast<std::ptrdiff_t>(f * components));
-    }
-    raw.field.values = std::move(values);
+    raw.field.values = mapElementValues(std::move(raw.tags), raw.field.values, raw.field.components,
+                                        faceElement_, elementAliases_);
     mesh.fields.push_back(std::move(raw.field));
   }
   elementFields.clear();
-  faceElement_ = {};
 }
 
 }  // namespace lancer

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <set>
 #include <span>
 #include <utility>
@@ -12,6 +13,7 @@
 
 #include "lancer/mesh/mesh.hpp"
 #include "lancer/mesh/msh/element_types.hpp"
+#include "lancer/mesh/msh/field_mapping.hpp"
 #include "lancer/mesh/msh/node_table.hpp"
 #include "lancer/mesh/msh/volume_skin.hpp"
 
@@ -73,6 +75,10 @@ class MshMeshAssembler {
 
   // partitions: number of mesh partitions the file declares (0 when not partitioned).
   Mesh finish(MeshSourceInfo source, std::vector<PhysicalGroup> namedGroups);
+  // Asked before finish(): it then hands its node lookup and face elements to takeFieldMapping(),
+  // for the reader's field sections, instead of freeing them.
+  void keepFieldMapping() { keepFieldMapping_ = true; }
+  std::shared_ptr<MshFieldMapping> takeFieldMapping() { return std::move(fieldMapping_); }
 
  private:
   void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint8_t edgeMask) {
@@ -144,6 +150,8 @@ class MshMeshAssembler {
   std::set<std::pair<int, std::int32_t>> physicalsSeen_;  // (dimension, physical tag)
   std::array<std::uint64_t, kMaxMshElementType + 1> countByType_{};
   int threads_ = 0;
+  bool keepFieldMapping_ = false;
+  std::shared_ptr<MshFieldMapping> fieldMapping_;
   std::span<const Vec3d> adoptedPoints_;  // adoptSurfaceMesh's points; else nodes.coords()
   int dimension_ = -1;
   std::int32_t physical_ = 0;

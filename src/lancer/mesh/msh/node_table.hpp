@@ -43,6 +43,9 @@ class MshNodeTable {
     return findSparse(tag);
   }
 
+  // Frees the coordinates once the mesh has its positions; find() and taggedCount() still work.
+  void releaseCoordinates() { coords_ = {}; }
+
   // A node made by lancer (the centre of an 8-node quad); it has no tag.
   std::uint32_t addDerived(const Vec3d& position) {
     coords_.push_back(position);

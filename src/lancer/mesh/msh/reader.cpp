@@ -9,14 +9,19 @@
 #include <algorithm>
 #include <bit>
 #include <cerrno>
+#include <charconv>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
 #include "lancer/mesh/msh/fields.hpp"
 #include "lancer/mesh/msh/foreign_formats.hpp"
 #include "lancer/mesh/msh/sections.hpp"
+#include "lancer/mesh/msh/stored_steps.hpp"
+#include "lancer/mesh/field_steps.hpp"
 #include "lancer/util/input_error.hpp"
 #include "lancer/util/stopwatch.hpp"
 
@@ -47,6 +52,7 @@ class MappedFile {
       throw InputError(SourceLocation{path}, "is not a regular file; lancer memory-maps .msh files");
     }
     size_ = static_cast<std::size_t>(info.st_size);
+    identity_ = FileIdentity{size_, info.st_mtim.tv_sec, info.st_mtim.tv_nsec};
     if (size_ > 0) {
       // No MAP_POPULATE: mapping every page up front measured slower (bench/msh_load_bench.cpp) than
       // letting the sequential parse fault pages in, with the kernel's fault-around.
@@ -67,10 +73,12 @@ class MappedFile {
   MappedFile& operator=(const MappedFile&) = delete;
 
   std::span<const char> bytes() const { return {data_, size_}; }
+  const FileIdentity& identity() const { return identity_; }
 
  private:
   const char* data_ = nullptr;
   std::size_t size_ = 0;
+  FileIdentity identity_;
 };
 
 void readMeshFormat(MshReadState& state) {
@@ -219,18 +227,24 @@ void readFieldSection(MshReadState& state, std::string_view name, const char* st
   }
 }
 
+// Hands back the whole pages of the file mapping within [from, to) to the kernel (see below).
+void releasePages(const char* fromAddress, const char* toAddress) {
+  const auto page = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
+  const auto from = (reinterpret_cast<std::uintptr_t>(fromAddress) + page - 1) / page * page;
+  const auto to = reinterpret_cast<std::uintptr_t>(toAddress) / page * page;
+  if (to > from) ::madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+}
+
 // False when it stopped at a $ElementData because faces did not remember their elements.
 // Hands back the whole pages of the file mapping between state.releaseFrom and the cursor (the
 // steps just parsed into floats): MADV_DONTNEED on a private read-only file mapping drops them, and
 // any later read of them faults them in from the file again.
 void releaseReadPages(MshReadState& state) {
   if (!state.releaseFrom) return;
+  releasePages(state.releaseFrom, state.cursor.position());
   const auto page = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
-  const auto from = (reinterpret_cast<std::uintptr_t>(state.releaseFrom) + page - 1) / page * page;
-  const auto to = reinterpret_cast<std::uintptr_t>(state.cursor.position()) / page * page;
-  if (to <= from) return;
-  ::madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
-  state.releaseFrom = reinterpret_cast<const char*>(to);
+  state.releaseFrom =
+      reinterpret_cast<const char*>(reinterpret_cast<std::uintptr_t>(state.cursor.position()) / page * page);
 }
 
 bool readSections(MshReadState& state) {
@@ -319,8 +333,70 @@ void addDeclaredGroups(MshReadState& state, Mesh& mesh) {
   mesh.extraPhysicalGroups = std::move(state.extraGroups);
 }
 
-Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64_t fileBytes, int threads,
-               bool mapped = false) {
+// Where the bytes come from: a file (its steps can be left in it) or memory the caller owns.
+struct ByteSource {
+  std::uint64_t fileBytes = 0;
+  bool mapped = false;          // a file mapping: its pages can be handed back
+  std::optional<FileIdentity> file;  // set when stored steps can be read again from `name`
+  std::uint64_t residentFieldBytes = UINT64_MAX;
+};
+
+// Reads the field sections the pass noted, in file order (node data first, as gmsh lists views),
+// into mesh.fields after the assembler's own. A section whose records do not parse is skipped with
+// a warning, like one whose header does not. When the steps together would take more than
+// residentFieldBytes, every step is stored: read here once (checked, its ranges kept) and read
+// again when a picture needs it.
+void readFieldSections(MshReadState& state, Mesh& mesh, std::span<const char> bytes, const std::string& name,
+                       const ByteSource& source) {
+  std::vector<MshFieldSection>& sections = state.fieldSections;
+  if (sections.empty()) return;
+  std::shared_ptr<MshFieldMapping> mapping = state.assembler.takeFieldMapping();
+  mapping->minElementTag = state.minElementTag;
+  mapping->maxElementTag = state.maxElementTag;
+  std::stable_partition(sections.begin(), sections.end(),
+                        [](const MshFieldSection& section) { return !section.field.perElement; });
+  const auto items = [&](const MshFieldSection& section) {
+    return section.field.perElement ? mesh.faces.size() : mesh.positions.size();
+  };
+  std::uint64_t total = 0;
+  for (const MshFieldSection& section : sections)
+    total += items(section) * static_cast<std::uint64_t>(section.field.components) * sizeof(float);
+  std::shared_ptr<const StoredFieldSteps> stored;
+  if (source.file && total > source.residentFieldBytes)
+    stored = std::make_shared<const StoredFieldSteps>(name, *source.file, mapping, sections);
+  MshCursor cursor(bytes, name);
+  cursor.setBinaryLocations(state.binary);
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    const MshFieldSection& section = sections[i];
+    const char* records = bytes.data() + section.recordsBegin;
+    cursor.seek(records);
+    std::optional<MeshField> field;
+    try {
+      field = readMshFieldRecords(cursor, section, *mapping, mesh.source.warnings);
+    } catch (const InputError& error) {
+      const std::string message =
+          fmt::format("{} \"{}\" skipped: {}", section.field.perElement ? "$ElementData" : "$NodeData",
+                      section.field.name, error.message());
+      mesh.source.warnings.push_back(formatInputWarning(error.location(), message));
+      mesh.source.skippedFields.emplace_back(section.field.name, mesh.source.warnings.back());
+    }
+    if (source.mapped) releasePages(records, bytes.data() + section.recordsEnd);
+    if (!field) continue;
+    if (stored) {
+      auto values = std::make_shared<StoredFieldValues>();
+      values->file = stored;
+      values->section = i;
+      values->items = items(section);
+      values->ranges = componentRanges(field->values, field->components);
+      field->values = {};
+      field->stored = std::move(values);
+    }
+    mesh.fields.push_back(std::move(*field));
+  }
+}
+
+Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteSource& byteSource,
+               int threads) {
   // Faces remember their element (8 bytes each) only when a $ElementData needs it. gmsh writes it
   // after $Elements, so the first read does not track, and meeting one reads the file again with
   // tracking: twice the load time for those files only, and no cost (not even a scan) for others.
@@ -328,8 +404,8 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64
     MshCursor cursor(bytes, name);
     if (bytes.empty()) cursor.failFile("the file is empty");
     if (!looksLikeMsh(bytes)) {
-      const std::string foreign =
-          foreignFileMessage(bytes.first(std::min<std::size_t>(bytes.size(), 1 << 20)), fileBytes, name);
+      const std::string foreign = foreignFileMessage(bytes.first(std::min<std::size_t>(bytes.size(), 1 << 20)),
+                                                     byteSource.fileBytes, name);
       if (!foreign.empty()) cursor.failFile(foreign);
     }
     MshMeshAssembler assembler;
@@ -337,11 +413,13 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64
     if (track) assembler.trackElements();
     MeshSourceInfo source;
     source.path = name;
-    source.fileBytes = fileBytes;
+    source.fileBytes = byteSource.fileBytes;
     MshReadState state(cursor, assembler, source);
-    if (mapped) state.releaseFrom = bytes.data();
+    if (byteSource.mapped) state.releaseFrom = bytes.data();
     if (readSections(state)) {
+      if (!state.fieldSections.empty()) assembler.keepFieldMapping();
       Mesh mesh = assembler.finish(std::move(source), std::move(state.namedGroups));
+      readFieldSections(state, mesh, bytes, name, byteSource);
       addDeclaredGroups(state, mesh);
       return mesh;
     }
@@ -353,15 +431,34 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, std::uint64
 
 Mesh readMshFromMemory(std::span<const char> bytes, const std::string& nameForErrors, int threads) {
   const Stopwatch stopwatch;
-  Mesh mesh = readBytes(bytes, nameForErrors, bytes.size(), threads);
+  Mesh mesh = readBytes(bytes, nameForErrors, ByteSource{bytes.size(), false, std::nullopt, UINT64_MAX}, threads);
   mesh.source.loadSeconds = stopwatch.seconds();
   return mesh;
 }
 
+std::uint64_t defaultResidentFieldBytes() {
+  const char* text = std::getenv("LANCER_STEP_MEMORY_MB");
+  if (!text) return kDefaultResidentFieldBytes;
+  std::uint64_t megabytes = 0;
+  const char* end = text + std::strlen(text);
+  const auto [next, error] = std::from_chars(text, end, megabytes);
+  if (error != std::errc() || next != end || *text == '\0' || megabytes > (UINT64_MAX >> 20))
+    throw InputError(SourceLocation{"LANCER_STEP_MEMORY_MB"},
+                     fmt::format("'{}' is not a number of megabytes; set it to how much memory result steps "
+                                 "may take before lancer reads them from their file when needed (e.g. 256)",
+                                 text));
+  return megabytes << 20;
+}
+
 Mesh readMsh(const std::string& path, int threads) {
+  return readMsh(path, threads, defaultResidentFieldBytes());
+}
+
+Mesh readMsh(const std::string& path, int threads, std::uint64_t residentFieldBytes) {
   const Stopwatch stopwatch;
   const MappedFile file(path);
-  Mesh mesh = readBytes(file.bytes(), path, file.bytes().size(), threads, /*mapped=*/true);
+  ByteSource source{file.bytes().size(), true, file.identity(), residentFieldBytes};
+  Mesh mesh = readBytes(file.bytes(), path, source, threads);
   mesh.source.loadSeconds = stopwatch.seconds();
   return mesh;
 }

@@ -11,6 +11,7 @@
 
 #include "lancer/mesh/mesh.hpp"
 #include "lancer/mesh/msh/cursor.hpp"
+#include "lancer/mesh/msh/field_mapping.hpp"
 #include "lancer/mesh/msh/mesh_assembler.hpp"
 
 namespace lancer {
@@ -45,6 +46,8 @@ struct MshReadState {
   // step ($NodeData, $ElementData), so that a file of many steps is never resident all at once (a
   // later read of those bytes faults them in again from the file). Null for memory the caller owns.
   const char* releaseFrom = nullptr;
+  // The $NodeData and $ElementData sections met, in file order: read once the mesh is assembled.
+  std::vector<MshFieldSection> fieldSections;
   // Element tags of the file are within [minElementTag, maxElementTag] (for $ElementData checks).
   std::uint64_t minElementTag = UINT64_MAX;
   std::uint64_t maxElementTag = 0;

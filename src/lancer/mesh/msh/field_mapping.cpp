@@ -1,0 +1,57 @@
+#include "lancer/mesh/msh/field_mapping.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace lancer {
+
+// Keeps the values of the nodes that became mesh vertices, in the same order as the positions.
+// The centres lancer adds to 8-node quads (derived nodes, after the file's `tagged` nodes) get the
+// serendipity combination of their quad's values, like their positions.
+void remapNodeValues(std::vector<float>& values, int componentCount, const std::vector<std::uint8_t>& usedNode,
+                     std::uint32_t usedCount, std::size_t tagged,
+                     const std::vector<std::array<std::uint32_t, 8>>& derivedSources) {
+  const auto components = static_cast<std::size_t>(componentCount);
+  values.resize(tagged * components);
+  for (const auto& source : derivedSources) {
+    for (std::size_t c = 0; c < components; ++c) {
+      float value = 0;
+      for (int i = 0; i < 4; ++i)
+        value += -0.25f * values[source[i] * components + c] + 0.5f * values[source[4 + i] * components + c];
+      values.push_back(value);
+    }
+  }
+  const std::size_t covered = values.size() / components;
+  std::vector<float> kept;
+  kept.reserve(std::size_t{usedCount} * components);
+  for (std::size_t i = 0; i < usedNode.size(); ++i) {
+    if (!usedNode[i]) continue;
+    for (std::size_t c = 0; c < components; ++c)
+      kept.push_back(i < covered ? values[i * components + c] : std::numeric_limits<float>::quiet_NaN());
+  }
+  values = std::move(kept);
+}
+
+std::vector<float> mapElementValues(std::vector<std::uint64_t> tags, const std::vector<float>& values,
+                                    int componentCount, const std::vector<std::uint64_t>& faceElement,
+                                    const std::vector<std::pair<std::uint64_t, std::uint64_t>>& aliases) {
+  for (std::uint64_t& tag : tags) {
+    const auto alias = std::lower_bound(aliases.begin(), aliases.end(), std::pair{tag, std::uint64_t{0}});
+    if (alias != aliases.end() && alias->first == tag) tag = alias->second;
+  }
+  // Sorted (tag, record) pairs: one binary search per face.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> byTag(tags.size());
+  for (std::size_t r = 0; r < tags.size(); ++r) byTag[r] = {tags[r], static_cast<std::uint32_t>(r)};
+  std::sort(byTag.begin(), byTag.end());
+  const auto components = static_cast<std::size_t>(componentCount);
+  std::vector<float> perFace(faceElement.size() * components, std::numeric_limits<float>::quiet_NaN());
+  for (std::size_t f = 0; f < faceElement.size(); ++f) {
+    const auto found = std::lower_bound(byTag.begin(), byTag.end(), std::pair{faceElement[f], std::uint32_t{0}});
+    if (found == byTag.end() || found->first != faceElement[f]) continue;
+    std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(found->second * components), components,
+                perFace.begin() + static_cast<std::ptrdiff_t>(f * components));
+  }
+  return perFace;
+}
+
+}  // namespace lancer

@@ -1,0 +1,52 @@
+// Internal to the .msh reader: where a post-processing section's records are in the file, and what
+// it takes to put them in mesh order once the mesh is assembled (the assembler fills it in finish()).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "lancer/mesh/mesh.hpp"
+#include "lancer/mesh/msh/node_table.hpp"
+
+namespace lancer {
+
+// One $NodeData or $ElementData section: its header as a MeshField without values, and where its
+// records are in the file.
+struct MshFieldSection {
+  MeshField field;
+  std::uint64_t count = 0;          // records
+  std::uint64_t recordsBegin = 0;   // byte offset of the first record
+  std::uint64_t recordsEnd = 0;     // byte offset just past the last record
+  std::uint64_t sectionBegin = 0;   // byte offset of the section's name, for messages
+  bool binary = false;
+};
+
+// What it takes to put a section's records in mesh order once the mesh is assembled: the node
+// lookup, the nodes the mesh kept and the quad centres lancer added (node data); the element each
+// face came from (element data, only when the file has some).
+struct MshFieldMapping {
+  MshNodeTable nodes;  // tags and lookup; its coordinates are released
+  std::size_t nodeCount = 0;  // node-table entries: tagged nodes then derived centres
+  std::vector<std::uint8_t> usedNode;  // per node-table entry: whether it became a mesh vertex
+  std::uint32_t usedCount = 0;
+  std::vector<std::array<std::uint32_t, 8>> derivedSources;  // corners and mids of each centre
+  std::vector<std::uint64_t> faceElement;  // per mesh face, its element's tag (aliases resolved)
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> elementAliases;  // sorted (copy, kept)
+  std::uint64_t minElementTag = UINT64_MAX;
+  std::uint64_t maxElementTag = 0;
+};
+
+// The values of an 8-node quad's centre from those of its corners and mids (serendipity), and the
+// node-table values of the nodes the mesh kept, in mesh order (the assembler's own fields too).
+void remapNodeValues(std::vector<float>& values, int components, const std::vector<std::uint8_t>& usedNode,
+                     std::uint32_t usedCount, std::size_t tagged,
+                     const std::vector<std::array<std::uint32_t, 8>>& derivedSources);
+// Per face, its element's values (NaN where the records have none); tags are resolved through the
+// sorted aliases first.
+std::vector<float> mapElementValues(std::vector<std::uint64_t> tags, const std::vector<float>& values,
+                                    int components, const std::vector<std::uint64_t>& faceElement,
+                                    const std::vector<std::pair<std::uint64_t, std::uint64_t>>& aliases);
+
+}  // namespace lancer
