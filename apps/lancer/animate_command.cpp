@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <optional>
+#include <type_traits>
 
 #include "command_distribution.hpp"
 #include "commands.hpp"
@@ -101,17 +102,19 @@ int runAnimate(const AnimateCommandOptions& options) {
     animation = steps->animation();
     // The frames' scenes are the steps' own: the scene and accelerator prepareScene built go (its
     // legends stay), so that one scene and one accelerator are held while the frames render.
+    // Swapped with empty ones: `v = {}` would clear the vectors and keep their memory.
+    const auto release = [](auto& vector) { std::remove_reference_t<decltype(vector)>().swap(vector); };
     prepared.scene.geometry = SceneGeometry{};
-    prepared.scene.appearance.faceMaterial = {};
-    prepared.scene.appearance.faceOuterMaterial = {};
-    prepared.scene.appearance.faceShading = {};
+    release(prepared.scene.appearance.faceMaterial);
+    release(prepared.scene.appearance.faceOuterMaterial);
+    release(prepared.scene.appearance.faceShading);
     prepared.scene.edges.reset();
     prepared.scene.isolines.reset();
     if (prepared.scene.fieldColors) {
-      prepared.scene.fieldColors->vertexFieldT = {};
-      prepared.scene.fieldColors->faceFieldT = {};
-      prepared.scene.fieldColors->faceColorMap = {};
-      prepared.scene.fieldColors->faceBands = {};
+      release(prepared.scene.fieldColors->vertexFieldT);
+      release(prepared.scene.fieldColors->faceFieldT);
+      release(prepared.scene.fieldColors->faceColorMap);
+      release(prepared.scene.fieldColors->faceBands);
     }
     prepared.accelerator = Accelerator::build({}, {}, parseAccelKind(options.overrides.accel));
   }

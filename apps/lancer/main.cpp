@@ -1,5 +1,7 @@
 // lancer: command-line entry point. Subcommands live in their own files; this one parses the
 // command line, runs the chosen subcommand and turns exceptions into one-line messages and exit codes.
+#include <malloc.h>
+
 #include <csignal>
 #include <cstdio>
 #include <exception>
@@ -40,6 +42,12 @@ int main(int argc, char** argv) {
   // A file-size limit (`ulimit -f`) would otherwise kill lancer with SIGXFSZ mid-write, leaving the
   // temporary file behind; ignored, the write fails with EFBIG and the writer reports it cleanly.
   std::signal(SIGXFSZ, SIG_IGN);
+  // Buffers of a megabyte and more (a mesh's arrays, a frame's scene and tree) are mapped and unmapped
+  // on their own. glibc's default raises that threshold to the size of the largest buffer freed, after
+  // which such buffers come from the heap, whose freed middle is never handed back: an animation over
+  // warped steps, building a scene per frame, grew by a hundred megabytes of freed memory that way
+  // (bench/RESULTS.md, "Animation over 50 warped steps").
+  mallopt(M_MMAP_THRESHOLD, 1 << 20);
   CLI::App app{
       "lancer: a fast ray tracer for gmsh surface meshes.\n"
       "Exit codes: 0 success, 2 bad input (message names the file and line), 1 internal error."};

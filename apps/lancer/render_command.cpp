@@ -321,8 +321,6 @@ int runRender(const RenderCommandOptions& options) {
     throw InputError(SourceLocation{"--progressive"},
                      "--progressive writes one image from one process; "
                      "leave it out of --shard and MPI runs");
-  if (shard && !options.legend.empty())
-    throw InputError(SourceLocation{"--legend"}, "--legend is written by a render without --shard");
   if (!options.legend.empty()) {
     imageFormatFromPath(options.legend);
     if (!prepared.scene.fieldColors)
@@ -360,12 +358,13 @@ int runRender(const RenderCommandOptions& options) {
   }
   if (progress) std::fputc('\n', stderr);
   if (!written) return talks ? interruptedExit(output) : kExitInterrupted;  // rank 0 alone says so
-  if (!talks || shard) return kExitOk;
-  if (!options.legend.empty()) {
+  // The legends are the same in every task of a job array (the scene's ranges): the first writes them.
+  if (!options.legend.empty() && (shard ? shard->shard.index == 0 : talks)) {
     // The bar holds the map's display values: written as they are, like the picture's field colours.
     writeImage(options.legend, legendSheet(prepared.scene.fieldColors->legends, kLegendBarLength,
                                            kLegendTextHeight, settings.srgb));
   }
+  if (!talks || shard) return kExitOk;
   if (!options.overrides.quiet) {
     const double total = stopwatch.seconds();
     std::fprintf(stderr,

@@ -45,9 +45,6 @@ TEST(AssembleCliBadInput, EachMisuseIsNamed) {
                 folder);
   expectRefused("render " + scene + " -o " + quoted(folder.file("r.png")) + " --shard 4/4",
                 "--shard: error: '4/4' is not a shard: use I/N with 0 <= I < N (e.g. 3/16), or auto", folder);
-  expectRefused("render " + scene + " -o " + quoted(folder.file("r.png")) + " --shard 0/2 --legend " +
-                    quoted(folder.file("l.png")),
-                "--legend: error: --legend is written by a render without --shard", folder);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 
 #include "lancer/image/image_io.hpp"
 #include "support/files.hpp"
+#include "support/scoped_env.hpp"
 
 namespace lancer {
 namespace {
@@ -26,25 +27,7 @@ Image ramp() {
   return image;
 }
 
-// Sets an environment variable for one scope.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::string& value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    ::setenv(name, value.c_str(), 1);
-  }
-  ~ScopedEnv() {
-    if (old_) {
-      ::setenv(name_, old_->c_str(), 1);
-    } else {
-      ::unsetenv(name_);
-    }
-  }
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
+using test::ScopedEnv;
 
 TEST(Psnr, IsInfiniteForEqualImagesAndMatchesTheFormula) {
   EXPECT_TRUE(std::isinf(test::psnr8(ramp(), ramp())));

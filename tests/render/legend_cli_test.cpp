@@ -1,5 +1,7 @@
 // `lancer render --legend FILE`: writes the colour bar of the first field-coloured mesh beside the
-// picture, and refuses (exit 2, nothing written) when no mesh is coloured.
+// picture (with --shard, the first task writes it), and refuses (exit 2, nothing written) when no mesh is
+// coloured.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -39,6 +41,24 @@ TEST(LegendCli, WritesTheColourBarOfTheColouredMesh) {
   ASSERT_EQ(written.size(), exact.size());
   for (std::size_t i = 0; i < written.size(); ++i)
     ASSERT_LE(std::abs(int(written[i]) - int(exact[i])), 1) << i;
+}
+
+// A job array's tasks share the scene's ranges, so its legends: the first task writes them (the
+// same bytes as a render in one piece), the others leave the file to it.
+TEST(LegendCli, TheFirstTaskOfAJobArrayWritesTheLegend) {
+  const test::ScratchFolder folder;
+  ASSERT_EQ(renderWithLegend("field_square.toml", folder).exitCode, 0);
+  for (const int task : {1, 0}) {
+    const std::string legend = folder.file(fmt::format("legend_{}.png", task));
+    const test::CommandResult result = test::runCli(
+        "render " + quoted(test::dataFile("render/field_square.toml")) + " -q --linear -o " +
+        quoted(folder.file("part.png")) + fmt::format(" --shard {}/2", task) + " --legend " + quoted(legend));
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    if (task == 0)
+      test::expectSameFile(legend, folder.file("legend.png"));
+    else
+      EXPECT_FALSE(std::filesystem::exists(legend));
+  }
 }
 
 TEST(LegendCli, NeedsAColouredMesh) {

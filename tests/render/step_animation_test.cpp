@@ -7,9 +7,11 @@
 
 #include <cmath>
 
+#include "lancer/mesh/msh/stored_steps.hpp"
 #include "lancer/render/step_animation.hpp"
 #include "lancer/scene/result_keys.hpp"
 #include "support/files.hpp"
+#include "support/scoped_env.hpp"
 #include "support/test_scenes.hpp"
 
 namespace lancer {
@@ -122,6 +124,31 @@ TEST(StepAnimation, PinnedColoursAndNoViewsAreNotSteps) {
   AnimationSettings animation;
   animation.overSteps = true;
   EXPECT_THROW(planStepFrames(description, meshes, animation), InputError);
+}
+
+// A result too large to keep in memory leaves its steps in the file (LANCER_STEP_MEMORY_MB = 0
+// forces it here): the frames are the same pixels, and each step is read back at most twice (to
+// frame the camera over the warped frames, then for its frame), not once per use or per frame.
+TEST(StepAnimation, StepsLeftInTheFileMakeTheSameFrames) {
+  SceneDescription description = sideView(1.0);
+  ColorBy color;
+  color.field = "temperature";
+  description.meshes[0].colorBy = color;
+  AnimationSettings animation;
+  animation.overSteps = true;
+  animation.framesGiven = true;
+  animation.frames = 7;  // blends between the steps too
+  const std::vector<Mesh> kept = readSceneMeshes(description);
+  StepScenes fromMemory(description, kept, animation, AccelKind::Bvh, 0);
+  const test::ScopedEnv storeAll("LANCER_STEP_MEMORY_MB", "0");
+  const std::vector<Mesh> stored = readSceneMeshes(description);
+  ASSERT_TRUE(stored[0].fields.front().isStored());
+  ASSERT_FALSE(kept[0].fields.front().isStored());
+  StepScenes fromFile(description, stored, animation, AccelKind::Bvh, 0);
+  for (int k = 0; k < 7; ++k)
+    EXPECT_EQ(fromFile.render(k, RenderOptions{}), fromMemory.render(k, RenderOptions{})) << "frame " << k;
+  // Four steps of displacement and four of temperature.
+  EXPECT_LE(stored[0].fields.front().stored->file->fileReads(), 2u * 8u);
 }
 
 }  // namespace

@@ -72,6 +72,9 @@ bool Accelerator::update(std::span<const Vec3> positions, std::span<const MeshFa
       return true;
     }
   }
+  // The old tree goes before the new one is built: two trees of a large mesh at once would raise the
+  // peak memory by a whole tree (an animation's warped frames rebuild when a refit no longer pays).
+  impl_ = NaiveAccel({}, {});
   *this = build(positions, faces, kind_, options);
   return false;
 }

@@ -74,7 +74,8 @@ float componentScalar(const float* v, int components, const FieldComponent& comp
 std::pair<double, double> componentRange(const MeshField& field, const FieldComponent& component) {
   if (field.stored) {
     const auto components = static_cast<std::size_t>(field.components);
-    const std::size_t slot = component.kind == FieldComponent::Kind::Index      ? static_cast<std::size_t>(component.index)
+    const std::size_t slot = component.kind == FieldComponent::Kind::Index
+                                 ? static_cast<std::size_t>(component.index)
                              : component.kind == FieldComponent::Kind::VonMises ? components + 1
                                                                                 : components;
     const std::vector<std::pair<float, float>>& ranges = field.stored->ranges;
@@ -95,8 +96,8 @@ std::pair<double, double> componentRange(const MeshField& field, const FieldComp
 
 std::vector<std::pair<float, float>> componentRanges(const std::vector<float>& values, int components) {
   const float none = std::numeric_limits<float>::infinity();
-  std::vector<std::pair<float, float>> ranges(static_cast<std::size_t>(components) + (components == 9 ? 2 : 1),
-                                              {none, -none});
+  std::vector<std::pair<float, float>> ranges(
+      static_cast<std::size_t>(components) + (components == 9 ? 2 : 1), {none, -none});
   const auto include = [](std::pair<float, float>& range, float value) {
     if (std::isnan(value)) return;
     range.first = std::min(range.first, value);
@@ -107,7 +108,8 @@ std::vector<std::pair<float, float>> componentRanges(const std::vector<float>& v
     const float* v = values.data() + i;
     for (std::size_t c = 0; c < n; ++c) include(ranges[c], v[c]);
     include(ranges[n], componentScalar(v, components, FieldComponent{}));
-    if (components == 9) include(ranges[n + 1], componentScalar(v, components, {FieldComponent::Kind::VonMises, 0}));
+    if (components == 9)
+      include(ranges[n + 1], componentScalar(v, components, {FieldComponent::Kind::VonMises, 0}));
   }
   return ranges;
 }
@@ -187,10 +189,11 @@ std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, cons
   if (t1 == t) return loadedField(*steps[next]);
   if (steps[next - 1]->itemCount() != steps[next]->itemCount() ||
       steps[next - 1]->components != steps[next]->components) {
-    problem = fmt::format("steps {} and {} have different sizes ({} and {} values); they cannot be blended",
-                          steps[next - 1]->step, steps[next]->step,
-                          steps[next - 1]->itemCount() * static_cast<std::size_t>(steps[next - 1]->components),
-                          steps[next]->itemCount() * static_cast<std::size_t>(steps[next]->components));
+    problem =
+        fmt::format("steps {} and {} have different sizes ({} and {} values); they cannot be blended",
+                    steps[next - 1]->step, steps[next]->step,
+                    steps[next - 1]->itemCount() * static_cast<std::size_t>(steps[next - 1]->components),
+                    steps[next]->itemCount() * static_cast<std::size_t>(steps[next]->components));
     return std::nullopt;
   }
   // Read back when stored (the two steps of a blend are the two a stored file keeps).

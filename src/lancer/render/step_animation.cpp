@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "lancer/image/legend.hpp"
@@ -14,6 +15,19 @@
 
 namespace lancer {
 namespace {
+
+// Two independent 64-bit digests of the faces' corners: frames whose faces have the same digests
+// have the same faces (a chance of 2^-128 otherwise), without holding a copy of the previous
+// frame's faces (16 bytes a face) while the next is built.
+std::pair<std::uint64_t, std::uint64_t> facesDigest(const std::vector<MeshFace>& faces) {
+  std::uint64_t a = 0x9E3779B97F4A7C15ull ^ faces.size(), b = 0xC2B2AE3D27D4EB4Full + faces.size();
+  for (const MeshFace& face : faces)
+    for (const std::uint32_t v : face.vertex) {
+      a = (a ^ v) * 0x100000001B3ull;                                            // FNV-1a's prime
+      b = std::rotl(b + v * 0xD6E8FEB86659FD93ull, 29) * 0x9FB21C651E98DF25ull;  // a multiply-rotate mix
+    }
+  return {a, b};
+}
 
 bool anyWarp(const SceneDescription& description) {
   return std::any_of(description.meshes.begin(), description.meshes.end(),
@@ -85,9 +99,8 @@ void StepScenes::buildAt(double time) {
   description_.when = StepSelection{std::nullopt, time, "the animation over steps"};
   const bool first = !scene_.has_value();
   // The previous frame's scene goes before the next one is built (two scenes of a 1M-face mesh at
-  // once would raise the peak by one scene); its faces stay, to tell whether the next has the same.
-  std::vector<MeshFace> previousFaces;
-  if (scene_) previousFaces = std::move(scene_->geometry.faces);
+  // once would raise the peak by one scene); the digest of its faces stays, to tell whether the
+  // next has the same.
   scene_.reset();
   builtTime_.reset();
   Scene next = buildSceneAt(description_, meshes_, threads_);
@@ -102,12 +115,9 @@ void StepScenes::buildAt(double time) {
   // mesh with the same faces (none collapsed, none turned) moved its vertices only: the accelerator
   // is refitted where it can be (the BVH), else built again.
   const bool warped = anyWarp(description_);
-  const bool sameFaces = !first && previousFaces.size() == geometry.faces.size() &&
-                         std::equal(geometry.faces.begin(), geometry.faces.end(), previousFaces.begin(),
-                                    [](const MeshFace& a, const MeshFace& b) {
-                                      return std::equal(a.vertex, a.vertex + 4, b.vertex);
-                                    });
-  previousFaces = {};
+  const std::pair<std::uint64_t, std::uint64_t> digest = facesDigest(geometry.faces);
+  const bool sameFaces = !first && digest == facesDigest_;
+  facesDigest_ = digest;
   scene_.emplace(std::move(next));
   const SceneGeometry& built = scene_->geometry;  // `geometry` was moved with `next`
   if (first || warped) {

@@ -7,8 +7,10 @@
 // value in every frame; the picture does not jump as the part deforms).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lancer/accel/accelerator.hpp"
@@ -73,6 +75,7 @@ class StepScenes {
   std::optional<Scene> scene_;
   std::optional<Accelerator> accelerator_;
   std::optional<double> builtTime_;
+  std::pair<std::uint64_t, std::uint64_t> facesDigest_{};  // of the faces of the scene built last
   double rebuildSeconds_ = 0;
   double accelSeconds_ = 0;
   int rebuilds_ = 0;

@@ -121,7 +121,8 @@ Mesh readStepFiles(const std::string& pattern, const std::vector<std::string>& f
   for (const MeshField& field : mesh.fields)
     stepBytes += field.itemCount() * static_cast<std::uint64_t>(field.components) * sizeof(float);
   const bool store = stepBytes > 0 && files.size() > budget / stepBytes;
-  if (store && !mesh.fields.empty() && !mesh.fields.front().isStored()) mesh = readMsh(files.front(), threads, 0);
+  if (store && !mesh.fields.empty() && !mesh.fields.front().isStored())
+    mesh = readMsh(files.front(), threads, 0);
   for (MeshField& field : mesh.fields) field.step = 0;
   for (std::size_t k = 1; k < files.size(); ++k) {
     Mesh next = readMsh(files[k], threads, store ? 0 : UINT64_MAX);

@@ -8,8 +8,8 @@ namespace lancer {
 // Keeps the values of the nodes that became mesh vertices, in the same order as the positions.
 // The centres lancer adds to 8-node quads (derived nodes, after the file's `tagged` nodes) get the
 // serendipity combination of their quad's values, like their positions.
-void remapNodeValues(std::vector<float>& values, int componentCount, const std::vector<std::uint8_t>& usedNode,
-                     std::uint32_t usedCount, std::size_t tagged,
+void remapNodeValues(std::vector<float>& values, int componentCount,
+                     const std::vector<std::uint8_t>& usedNode, std::uint32_t usedCount, std::size_t tagged,
                      const std::vector<std::array<std::uint32_t, 8>>& derivedSources) {
   const auto components = static_cast<std::size_t>(componentCount);
   values.resize(tagged * components);
@@ -46,7 +46,8 @@ std::vector<float> mapElementValues(std::vector<std::uint64_t> tags, const std::
   const auto components = static_cast<std::size_t>(componentCount);
   std::vector<float> perFace(faceElement.size() * components, std::numeric_limits<float>::quiet_NaN());
   for (std::size_t f = 0; f < faceElement.size(); ++f) {
-    const auto found = std::lower_bound(byTag.begin(), byTag.end(), std::pair{faceElement[f], std::uint32_t{0}});
+    const auto found =
+        std::lower_bound(byTag.begin(), byTag.end(), std::pair{faceElement[f], std::uint32_t{0}});
     if (found == byTag.end() || found->first != faceElement[f]) continue;
     std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(found->second * components), components,
                 perFace.begin() + static_cast<std::ptrdiff_t>(f * components));

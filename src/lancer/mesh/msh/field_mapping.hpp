@@ -16,10 +16,10 @@ namespace lancer {
 // records are in the file.
 struct MshFieldSection {
   MeshField field;
-  std::uint64_t count = 0;          // records
-  std::uint64_t recordsBegin = 0;   // byte offset of the first record
-  std::uint64_t recordsEnd = 0;     // byte offset just past the last record
-  std::uint64_t sectionBegin = 0;   // byte offset of the section's name, for messages
+  std::uint64_t count = 0;         // records
+  std::uint64_t recordsBegin = 0;  // byte offset of the first record
+  std::uint64_t recordsEnd = 0;    // byte offset just past the last record
+  std::uint64_t sectionBegin = 0;  // byte offset of the section's name, for messages
   bool binary = false;
 };
 
@@ -27,8 +27,8 @@ struct MshFieldSection {
 // lookup, the nodes the mesh kept and the quad centres lancer added (node data); the element each
 // face came from (element data, only when the file has some).
 struct MshFieldMapping {
-  MshNodeTable nodes;  // tags and lookup; its coordinates are released
-  std::size_t nodeCount = 0;  // node-table entries: tagged nodes then derived centres
+  MshNodeTable nodes;                  // tags and lookup; its coordinates are released
+  std::size_t nodeCount = 0;           // node-table entries: tagged nodes then derived centres
   std::vector<std::uint8_t> usedNode;  // per node-table entry: whether it became a mesh vertex
   std::uint32_t usedCount = 0;
   std::vector<std::array<std::uint32_t, 8>> derivedSources;  // corners and mids of each centre

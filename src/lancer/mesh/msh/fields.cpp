@@ -109,8 +109,9 @@ void skipRecords(MshReadState& state, MshFieldSection section, const char* secti
     cursor.seek(static_cast<const char*>(end));
   }
   section.recordsEnd = cursor.offset();
-  expectFieldSectionEnd(cursor, endMarker,
-                        section.field.perElement ? "after the element data values" : "after the node data values");
+  expectFieldSectionEnd(
+      cursor, endMarker,
+      section.field.perElement ? "after the element data values" : "after the node data values");
   state.fieldSections.push_back(std::move(section));
 }
 
@@ -144,7 +145,8 @@ void readNodeRecords(MshCursor& cursor, const MshFieldSection& section, const Ms
     float* out = index == kNoVertex ? nullptr : field.values.data() + index * components;
     for (std::uint64_t c = 0; c < components; ++c) {
       const char* valueAt = binary ? cursor.position() : cursor.tokenStart();
-      const double value = binary ? cursor.readRaw<double>("a field value") : cursor.readDouble("a field value");
+      const double value =
+          binary ? cursor.readRaw<double>("a field value") : cursor.readDouble("a field value");
       if (!std::isfinite(value))
         cursor.failAt(valueAt,
                       fmt::format("$NodeData '{}' has a non-finite value for node {}", field.name, tag));
@@ -185,10 +187,11 @@ void readElementRecords(MshCursor& cursor, const MshFieldSection& section, const
     tags.push_back(tag);
     for (std::uint64_t c = 0; c < components; ++c) {
       const char* valueAt = binary ? cursor.position() : cursor.tokenStart();
-      const double value = binary ? cursor.readRaw<double>("a field value") : cursor.readDouble("a field value");
+      const double value =
+          binary ? cursor.readRaw<double>("a field value") : cursor.readDouble("a field value");
       if (!std::isfinite(value))
-        cursor.failAt(valueAt, fmt::format("$ElementData '{}' has a non-finite value for element {}",
-                                           field.name, tag));
+        cursor.failAt(
+            valueAt, fmt::format("$ElementData '{}' has a non-finite value for element {}", field.name, tag));
       values.push_back(static_cast<float>(value));
     }
   }
@@ -199,8 +202,8 @@ void readElementRecords(MshCursor& cursor, const MshFieldSection& section, const
                     "(the first: element {}); they were dropped and the other {} kept",
                     field.name, dropped, dropped == 1 ? "" : "s", static_cast<std::int64_t>(firstDropped),
                     section.count - dropped)));
-  field.values =
-      mapElementValues(std::move(tags), values, field.components, mapping.faceElement, mapping.elementAliases);
+  field.values = mapElementValues(std::move(tags), values, field.components, mapping.faceElement,
+                                  mapping.elementAliases);
 }
 
 }  // namespace
@@ -219,8 +222,8 @@ void readMshElementData(MshReadState& state, const char* sectionStart) {
               "$EndElementData");
 }
 
-MeshField readMshFieldRecords(MshCursor& cursor, const MshFieldSection& section, const MshFieldMapping& mapping,
-                              std::vector<std::string>& warnings) {
+MeshField readMshFieldRecords(MshCursor& cursor, const MshFieldSection& section,
+                              const MshFieldMapping& mapping, std::vector<std::string>& warnings) {
   MeshField field = section.field;
   if (field.perElement)
     readElementRecords(cursor, section, mapping, field, warnings);

@@ -25,7 +25,7 @@ void readMshElementData(MshReadState& state, const char* sectionStart);
 // node values per mesh vertex (NaN for a node the file gives none), element values per face.
 // Values for nodes or elements the file does not have are dropped with one warning in `warnings`.
 // Throws InputError at a bad record.
-MeshField readMshFieldRecords(MshCursor& cursor, const MshFieldSection& section, const MshFieldMapping& mapping,
-                              std::vector<std::string>& warnings);
+MeshField readMshFieldRecords(MshCursor& cursor, const MshFieldSection& section,
+                              const MshFieldMapping& mapping, std::vector<std::string>& warnings);
 
 }  // namespace lancer

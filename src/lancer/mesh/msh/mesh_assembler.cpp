@@ -305,7 +305,7 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
     ++source.skinFaces;
     addVolumeFace(face);
   }
-  volumeFaces_ = {};
+  volumeFaces_ = std::vector<MshVolumeFace>();  // frees it (`= {}` keeps the capacity)
 }
 
 Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> namedGroups) {
@@ -429,7 +429,8 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   mesh.source = std::move(source);
   mesh.fields = std::move(nodeFields);
   for (MeshField& field : mesh.fields)
-    remapNodeValues(field.values, field.components, usedNode, usedCount, nodes.taggedCount(), derivedSources_);
+    remapNodeValues(field.values, field.components, usedNode, usedCount, nodes.taggedCount(),
+                    derivedSources_);
   std::sort(elementAliases_.begin(), elementAliases_.end());
   mapElementFields(mesh);
   if (keepFieldMapping_) {
@@ -445,7 +446,7 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
     mapping->elementAliases = std::move(elementAliases_);
     fieldMapping_ = std::move(mapping);
   }
-  faceElement_ = {};
+  faceElement_ = std::vector<std::uint64_t>();
   return mesh;
 }
 

@@ -44,7 +44,7 @@ class MshNodeTable {
   }
 
   // Frees the coordinates once the mesh has its positions; find() and taggedCount() still work.
-  void releaseCoordinates() { coords_ = {}; }
+  void releaseCoordinates() { coords_ = std::vector<Vec3d>(); }  // `= {}` would keep the capacity
 
   // A node made by lancer (the centre of an 8-node quad); it has no tag.
   std::uint32_t addDerived(const Vec3d& position) {

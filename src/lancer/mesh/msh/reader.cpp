@@ -17,11 +17,11 @@
 #include <set>
 #include <stdexcept>
 
+#include "lancer/mesh/field_steps.hpp"
 #include "lancer/mesh/msh/fields.hpp"
 #include "lancer/mesh/msh/foreign_formats.hpp"
 #include "lancer/mesh/msh/sections.hpp"
 #include "lancer/mesh/msh/stored_steps.hpp"
-#include "lancer/mesh/field_steps.hpp"
 #include "lancer/util/input_error.hpp"
 #include "lancer/util/stopwatch.hpp"
 
@@ -336,7 +336,7 @@ void addDeclaredGroups(MshReadState& state, Mesh& mesh) {
 // Where the bytes come from: a file (its steps can be left in it) or memory the caller owns.
 struct ByteSource {
   std::uint64_t fileBytes = 0;
-  bool mapped = false;          // a file mapping: its pages can be handed back
+  bool mapped = false;               // a file mapping: its pages can be handed back
   std::optional<FileIdentity> file;  // set when stored steps can be read again from `name`
   std::uint64_t residentFieldBytes = UINT64_MAX;
 };
@@ -388,7 +388,7 @@ void readFieldSections(MshReadState& state, Mesh& mesh, std::span<const char> by
       values->section = i;
       values->items = items(section);
       values->ranges = componentRanges(field->values, field->components);
-      field->values = {};
+      field->values = std::vector<float>();  // frees it (`= {}` keeps the capacity)
       field->stored = std::move(values);
     }
     mesh.fields.push_back(std::move(*field));
@@ -404,8 +404,8 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteS
     MshCursor cursor(bytes, name);
     if (bytes.empty()) cursor.failFile("the file is empty");
     if (!looksLikeMsh(bytes)) {
-      const std::string foreign = foreignFileMessage(bytes.first(std::min<std::size_t>(bytes.size(), 1 << 20)),
-                                                     byteSource.fileBytes, name);
+      const std::string foreign = foreignFileMessage(
+          bytes.first(std::min<std::size_t>(bytes.size(), 1 << 20)), byteSource.fileBytes, name);
       if (!foreign.empty()) cursor.failFile(foreign);
     }
     MshMeshAssembler assembler;
@@ -431,7 +431,8 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteS
 
 Mesh readMshFromMemory(std::span<const char> bytes, const std::string& nameForErrors, int threads) {
   const Stopwatch stopwatch;
-  Mesh mesh = readBytes(bytes, nameForErrors, ByteSource{bytes.size(), false, std::nullopt, UINT64_MAX}, threads);
+  Mesh mesh =
+      readBytes(bytes, nameForErrors, ByteSource{bytes.size(), false, std::nullopt, UINT64_MAX}, threads);
   mesh.source.loadSeconds = stopwatch.seconds();
   return mesh;
 }

@@ -63,7 +63,7 @@ std::shared_ptr<const std::vector<float>> StoredFieldSteps::load(std::size_t ind
     done += static_cast<std::size_t>(got);
   }
   MshCursor cursor(bytes, path_);
-  cursor.setBinaryLocations(true);  // offsets in the records, should the bytes no longer parse
+  cursor.setBinaryLocations(true);     // offsets in the records, should the bytes no longer parse
   MshFieldSection inBuffer = section;  // the records' offsets in `bytes`
   inBuffer.recordsBegin = 0;
   inBuffer.recordsEnd = bytes.size();
