@@ -89,6 +89,24 @@ TEST(Isolines, CountSpacesLinesEvenlyInsideTheRange) {
   EXPECT_EQ(evenIsoValues(0, 10, 5), (std::vector<double>{1, 3, 5, 7, 9}));
 }
 
+// color = "map": each line in its value's colour, from the mesh's map over its colour range (here
+// magma over [0, 3]), the surface coloured as before between the lines.
+TEST(Isolines, MapColouredLinesTakeTheirValuesColour) {
+  const SceneDescription description = squareScene(R"(color_by = { field = "temperature", map = "magma", range = [0, 3] }
+isolines = { field = "temperature", values = [1.0, 2.0], color = "map", width = 3 })");
+  const Image image = test::renderScene(description);
+  for (const double value : {1.0, 2.0}) {
+    // On the line at x = 0.5 - 2 (y - y0) (about the middle of the picture): fully covered there.
+    const int j = static_cast<int>((1 - (value - 0.5) / 2) * kSide);
+    const double y = 1 - (j + 0.5) / kSide;
+    const int i = static_cast<int>(std::lround((value - 2 * y) * kSide - 0.5));
+    const Vec3 expected = colorMapLookup(ColorMapKind::Magma, static_cast<float>(value / 3));
+    EXPECT_LT(length(image.at(i, j).rgb() - expected), 1e-3f) << "value " << value;
+  }
+  // Between the lines the surface shows the map at the point's value: x + 2 y = 0.15 at (4, 91).
+  EXPECT_LT(length(image.at(4, kSide - 5).rgb() - colorMapLookup(ColorMapKind::Magma, 0.05f)), 0.02f);
+}
+
 TEST(Bands, SplitTheSurfaceIntoTheAskedNumberOfColours) {
   const SceneDescription description =
       squareScene(R"(color_by = { field = "temperature", bands = 5, range = [0, 3] })");
@@ -129,6 +147,8 @@ TEST(IsolinesBadInput, UnknownFieldCountsAndKeys) {
   test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { field = \"T\", count = 100000 }\n",
                                  "mesh[0].isolines.count");
   test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { count = 3 }\n", "field");
+  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { field = \"T\", color = \"red\" }\n",
+                                 "mesh[0].isolines.color must be [r, g, b] or \"map\"");
   test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { field = \"T\", values = [] }\n",
                                  "must be an array of 1 to 1000 numbers");
   test::expectSceneErrorContains(

@@ -63,7 +63,7 @@ Accelerator Accelerator::build(std::span<const Vec3> positions, std::span<const 
 }
 
 bool Accelerator::update(std::span<const Vec3> positions, std::span<const MeshFace> faces,
-                         const KdBuildOptions& options) {
+                         const KdBuildOptions& options, const std::function<void()>& beforeBuild) {
   if (Bvh* bvh = std::get_if<Bvh>(&impl_)) {
     const Stopwatch stopwatch;
     if (bvh->refit(positions, faces, options.threads) && !bvh->rebuildPays()) {
@@ -75,6 +75,7 @@ bool Accelerator::update(std::span<const Vec3> positions, std::span<const MeshFa
   // The old tree goes before the new one is built: two trees of a large mesh at once would raise the
   // peak memory by a whole tree (an animation's warped frames rebuild when a refit no longer pays).
   impl_ = NaiveAccel({}, {});
+  if (beforeBuild) beforeBuild();
   *this = build(positions, faces, kind_, options);
   return false;
 }

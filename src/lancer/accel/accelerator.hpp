@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <span>
 #include <string_view>
 #include <variant>
@@ -60,9 +61,10 @@ class Accelerator : public TreeQueries<Accelerator> {
 
   // A new time step of the same mesh (same faces, moved vertices; animation): the BVH is refitted
   // (Bvh::refit) unless that cannot stay exact or its SAH cost grew past Bvh::kRebuildAboveGrowth,
-  // every other kind is built again. Returns whether it refitted.
-  bool update(std::span<const Vec3> positions, std::span<const MeshFace> faces,
-              const KdBuildOptions& options = {});
+  // every other kind is built again, after the old tree is freed and `beforeBuild` called (to free
+  // more before the build's peak). Returns whether it refitted.
+  bool update(std::span<const Vec3> positions, std::span<const MeshFace> faces, const KdBuildOptions& options = {},
+              const std::function<void()>& beforeBuild = {});
 
   AccelKind kind() const { return kind_; }
   AccelStats stats() const { return stats_; }

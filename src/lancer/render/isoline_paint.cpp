@@ -60,10 +60,13 @@ float isolineCoverage(const Scene& scene, const Ray& ray, const SurfacePoint& su
   // The nearest iso values below and above the point's value.
   const auto above = std::lower_bound(style.values.begin(), style.values.end(), value);
   float nearest = std::numeric_limits<float>::infinity();
+  auto line = above;
   if (above != style.values.end()) nearest = *above - value;
-  if (above != style.values.begin()) nearest = std::min(nearest, value - *(above - 1));
+  if (above != style.values.begin() && value - *(above - 1) < nearest) nearest = value - *(above - 1), line = above - 1;
   const float coverage = lineCoverage(nearest / perPixel, style.widthPixels);
-  if (coverage > 0.0f) color = style.color;
+  if (coverage > 0.0f)
+    color = style.valueColors.empty() ? style.color
+                                      : style.valueColors[static_cast<std::size_t>(line - style.values.begin())];
   return coverage;
 }
 

@@ -9,6 +9,7 @@
 #include "lancer/image/legend.hpp"
 #include "lancer/image/text.hpp"
 #include "lancer/mesh/field_steps.hpp"
+#include "lancer/mesh/msh/stored_steps.hpp"
 #include "lancer/scene/result_keys.hpp"
 #include "lancer/scene/warp.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -124,10 +125,18 @@ void StepScenes::buildAt(double time) {
     const Stopwatch build;
     KdBuildOptions options;
     options.threads = threads_;
+    // A build is the frame's peak of memory: the steps a stored file keeps go before it (the next
+    // frame reads its steps again, which only the first frame and the rare rebuilds pay).
+    const auto forgetKeptSteps = [this] {
+      for (const Mesh& mesh : meshes_)
+        for (const MeshField& field : mesh.fields)
+          if (field.isStored()) field.stored->file->forgetKept();
+    };
     if (sameFaces && accelerator_) {
-      if (accelerator_->update(built.positions, built.faces, options)) ++refits_;
+      if (accelerator_->update(built.positions, built.faces, options, forgetKeptSteps)) ++refits_;
     } else {
       accelerator_.reset();  // the old one goes first: one accelerator at a time
+      forgetKeptSteps();
       accelerator_.emplace(Accelerator::build(built.positions, built.faces, accel_, options));
     }
     if (!first) accelSeconds_ += build.seconds();

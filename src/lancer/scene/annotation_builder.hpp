@@ -27,11 +27,14 @@ void appendLegendAndBands(FieldColors& fields, const ColorBy& spec, const FieldC
 // faceBands in step with the faces, when some mesh has bands.
 void finishBands(FieldColors& fields, std::size_t faceCount);
 
-// Records a mesh's isolines (resolveIsolines's, drawn as `spec` says): its vertices start at
-// vertexBase and faces at faceBase in the scene.
+// The colours of isolines at `values` for color = "map": each value's in `map` over [low, high].
+std::vector<Vec3> isolineValueColors(const std::vector<float>& values, ColorMapKind map, double low,
+                                     double high);
+// Records a mesh's isolines (resolveIsolines's, drawn as `spec` says, in valueColors when given):
+// its vertices start at vertexBase and faces at faceBase in the scene.
 void appendIsolines(std::optional<IsolineOverlay>& overlay, const IsolineSpec& spec,
                     ResolvedIsolines resolved, std::uint32_t vertexBase, std::size_t faceBase,
-                    std::size_t faceEnd, std::size_t vertexEnd);
+                    std::size_t faceEnd, std::size_t vertexEnd, std::vector<Vec3> valueColors = {});
 void finishIsolines(Scene& scene, std::optional<IsolineOverlay> overlay);
 
 // Whether some mesh asks for arrows.

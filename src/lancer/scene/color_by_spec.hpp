@@ -27,6 +27,9 @@ struct ColorBy {
   std::string units;                               // the legend's, after the title
   int bands = 0;                                   // > 0: that many discrete colour bands
   std::optional<LegendPlacement> legend;           // legends in the picture; default: none
+  // False for gmsh's iso-values view (View.IntervalsType = 1, --gmsh-view): the range and legend
+  // hold, the surface keeps its material, and the isolines take the map's colours.
+  bool paintsSurface = true;
 };
 
 // `isolines = { field = "T", count = 10 }` (or `values = [...]`) on a [[mesh]]: the curves where a
@@ -41,6 +44,9 @@ struct IsolineSpec {
   // mesh's colour range to its high end, both included (one value, the middle, when count is 1).
   bool colorRangeEnds = false;
   Vec3 color{0, 0, 0};
+  // color = "map": each line in the colour of its value in the mesh's colour map (its color_by of
+  // the same field and component, else the default map over the lines' values).
+  bool colorFromMap = false;
   float widthPixels = 1.5f;
   SourceLocation where;  // the isolines value
 };

@@ -146,8 +146,12 @@ void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
   if (!color.legend) color.legend = colour->showScale ? LegendPlacement::Bottom : LegendPlacement::None;
   const int nbIso = std::clamp(colour->nbIso, 1, 1000);
   if (colour->intervalsType == 3 && color.bands == 0) color.bands = nbIso;  // discrete: filled bands
-  if (colour->intervalsType == 1 && !instance.isolines) {  // iso-values: lines at gmsh's values
+  if (colour->intervalsType == 1 && !instance.isolines) {
+    // Iso-values: lines at gmsh's values in the map's colours, on the surface's own material (gmsh
+    // leaves the surface unfilled; a ray-traced part keeps its shape and shadows).
+    color.paintsSurface = false;
     IsolineSpec lines;
+    lines.colorFromMap = true;
     lines.field = color.field;
     lines.step = color.step;
     lines.component = color.component;

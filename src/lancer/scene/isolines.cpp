@@ -41,8 +41,15 @@ std::optional<IsolineSpec> readIsolines(const std::string& file, const TomlTable
     if (reader.find("count"))
       reader.fail(*values, fmt::format("{} gives both count and values: keep one", reader.label()));
   }
-  if (auto color = reader.vector("color", Triple::Rgb, NumberRange::between(0, 1)))
-    spec.color = toFloat(*color);
+  if (const toml::node* color = reader.find("color"); color && color->is_string()) {
+    if (color->value<std::string>() != "map")
+      reader.fail(*color, fmt::format("{} must be [r, g, b] or \"map\" (each line in its value's colour), "
+                                      "found {}",
+                                      reader.qualified("color"), describeValue(*color)));
+    spec.colorFromMap = true;
+  } else if (auto rgb = reader.vector("color", Triple::Rgb, NumberRange::between(0, 1))) {
+    spec.color = toFloat(*rgb);
+  }
   if (auto width = reader.number("width", NumberRange::between(0.1, 100))) spec.widthPixels = float(*width);
   return spec;
 }

@@ -85,6 +85,7 @@ struct FieldColors {
 struct IsolineStyle {
   std::vector<float> values;  // sorted
   Vec3 color{0, 0, 0};
+  std::vector<Vec3> valueColors;  // one per value (color = "map"); empty: `color` for every line
   float widthPixels = 1.5f;
 };
 struct IsolineOverlay {

@@ -442,7 +442,8 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
                      instance.shading.value_or(description.render.shading));
     appendEdges(overlay, instance, mesh, placed.edgeMasks);
     if (coloring) {
-      appendFieldColoring(geometry, fields, *coloring, vertexBase, faceBase);
+      if (entries[i].colorBy->paintsSurface) appendFieldColoring(geometry, fields, *coloring, vertexBase, faceBase);
+      if (!fields) fields.emplace();
       appendLegendAndBands(*fields, *entries[i].colorBy, *coloring, faceBase, geometry.faces.size());
     }
     if (instance.isolines) {
@@ -451,10 +452,17 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
       std::optional<std::pair<double, double>> colorRange;  // gmsh's iso-values span the colours' range
       if (coloring && colorBy && colorBy->field == spec.field && colorBy->component == spec.component)
         colorRange = std::pair{coloring->low, coloring->high};
-      appendIsolines(
-          isolines, spec,
-          resolveIsolines(spec, entries[i].fields ? *entries[i].fields : mesh, description.when, colorRange),
-          vertexBase, faceBase, geometry.faces.size(), geometry.positions.size());
+      ResolvedIsolines resolved =
+          resolveIsolines(spec, entries[i].fields ? *entries[i].fields : mesh, description.when, colorRange);
+      std::vector<Vec3> valueColors;  // color = "map": over the colours' range, else over the lines'
+      if (spec.colorFromMap && !resolved.values.empty()) {
+        const auto [low, high] =
+            colorRange.value_or(std::pair<double, double>{resolved.values.front(), resolved.values.back()});
+        valueColors =
+            isolineValueColors(resolved.values, colorBy ? colorBy->map : ColorMapKind::Viridis, low, high);
+      }
+      appendIsolines(isolines, spec, std::move(resolved), vertexBase, faceBase, geometry.faces.size(),
+                     geometry.positions.size(), std::move(valueColors));
     }
     if (!instance.clips.empty() && !mesh.faces.empty())
       appendMeshClips(scene.clipping, geometry, instance.clips, faceBase);

@@ -15,9 +15,6 @@
 namespace lancer {
 namespace {
 
-// Steps kept after reading: a blend of two.
-constexpr std::size_t kKeptSteps = 2;
-
 class OpenFile {
  public:
   explicit OpenFile(const std::string& path) : fd_(::open(path.c_str(), O_RDONLY | O_CLOEXEC)) {}
@@ -71,9 +68,22 @@ std::shared_ptr<const std::vector<float>> StoredFieldSteps::load(std::size_t ind
   MeshField field = readMshFieldRecords(cursor, inBuffer, *mapping_, warnings);
   auto values = std::make_shared<const std::vector<float>>(std::move(field.values));
   ++fileReads_;
-  if (recent_.size() == kKeptSteps) recent_.erase(recent_.begin());
+  // Two steps of every view: a blend of two steps, of each view a picture uses (colour and warp).
+  if (recent_.size() >= 2 * views_) recent_.erase(recent_.begin());
   recent_.emplace_back(index, values);
   return values;
+}
+
+void StoredFieldSteps::forgetKept() const {
+  const std::lock_guard lock(mutex_);
+  recent_.clear();
+}
+
+std::size_t StoredFieldSteps::countViews(const std::vector<MshFieldSection>& sections) {
+  std::vector<std::string> names;
+  for (const MshFieldSection& section : sections)
+    if (std::find(names.begin(), names.end(), section.field.name) == names.end()) names.push_back(section.field.name);
+  return std::max<std::size_t>(names.size(), 1);
 }
 
 std::size_t StoredFieldSteps::fileReads() const {
