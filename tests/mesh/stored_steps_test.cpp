@@ -56,9 +56,17 @@ TEST_P(StoredStepsFixture, ReadBackAsTheReaderWouldHaveKeptThem) {
     std::vector<FieldComponent> components{FieldComponent{}};
     for (int c = 0; c < a.components; ++c) components.push_back({FieldComponent::Kind::Index, c});
     if (a.components == 9) components.push_back({FieldComponent::Kind::VonMises, 0});
-    for (const FieldComponent& component : components)
+    // The ranges the reader kept are those of the values themselves.
+    MeshField unranged = a;
+    unranged.ranges.clear();
+    EXPECT_FALSE(a.ranges.empty()) << what;
+    for (const FieldComponent& component : components) {
       EXPECT_EQ(componentRange(a, component), componentRange(b, component))
           << what << ", " << describeComponent(component);
+      EXPECT_EQ(componentRange(unranged, component), componentRange(a, component))
+          << what << ", " << describeComponent(component);
+    }
+    EXPECT_EQ(unranged.range(), a.range()) << what;
     const MeshField loaded = loadedField(b);
     EXPECT_FALSE(loaded.isStored());
     expectSameValues(loaded.values, a.values, what);
@@ -96,7 +104,7 @@ TEST(StoredSteps, TheLastTwoStepsOfEachViewAreKept) {
   EXPECT_EQ(file.fileReads(), 2 * views + 1);
   loadedField(mesh.fields[1]);
   EXPECT_EQ(file.fileReads(), 2 * views + 1);  // still kept
-  loadedField(mesh.fields[0]);  // the oldest, pushed out
+  loadedField(mesh.fields[0]);                 // the oldest, pushed out
   EXPECT_EQ(file.fileReads(), 2 * views + 2);
   file.forgetKept();
   loadedField(mesh.fields[1]);

@@ -72,13 +72,13 @@ float componentScalar(const float* v, int components, const FieldComponent& comp
 }
 
 std::pair<double, double> componentRange(const MeshField& field, const FieldComponent& component) {
-  if (field.stored) {
+  if (!field.ranges.empty()) {
     const auto components = static_cast<std::size_t>(field.components);
     const std::size_t slot = component.kind == FieldComponent::Kind::Index
                                  ? static_cast<std::size_t>(component.index)
                              : component.kind == FieldComponent::Kind::VonMises ? components + 1
                                                                                 : components;
-    const std::vector<std::pair<float, float>>& ranges = field.stored->ranges;
+    const std::vector<std::pair<float, float>>& ranges = field.ranges;
     if (slot < ranges.size() && ranges[slot].first <= ranges[slot].second)
       return {ranges[slot].first, ranges[slot].second};
     return {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};

@@ -36,7 +36,7 @@ std::string componentProblem(const FieldComponent& component, int components);
 float componentScalar(const float* values, int components, const FieldComponent& component);
 
 // The least and greatest `component` scalar of a step's items, NaN ignored; empty (low > high) when
-// there is none. A stored step's come from what the reader saw (StoredFieldValues::ranges).
+// there is none. The reader's fields answer from what it saw (MeshField::ranges).
 std::pair<double, double> componentRange(const MeshField& field, const FieldComponent& component);
 
 // The ranges a stored step keeps: each component's, the magnitude's, von Mises' for a tensor.

@@ -17,8 +17,8 @@ float MeshField::scalar(std::size_t item) const {
 }
 
 std::pair<float, float> MeshField::range() const {
-  if (stored) {  // the magnitude's (a scalar's own), kept by the reader
-    const std::pair<float, float> kept = stored->ranges.at(static_cast<std::size_t>(components));
+  if (!ranges.empty()) {  // the magnitude's (a scalar's own), kept by the reader
+    const std::pair<float, float> kept = ranges.at(static_cast<std::size_t>(components));
     return kept.first <= kept.second ? kept : std::pair{0.0f, 0.0f};
   }
   float low = std::numeric_limits<float>::infinity(), high = -low;
@@ -39,6 +39,7 @@ MeshField loadedField(const MeshField& field) {
   copy.components = field.components;
   copy.step = field.step;
   copy.time = field.time;
+  copy.ranges = field.ranges;
   copy.values = *field.stored->file->load(field.stored->section);
   return copy;
 }

@@ -24,9 +24,6 @@ struct StoredFieldValues {
   std::shared_ptr<const StoredFieldSteps> file;
   std::size_t section = 0;  // which of the file's field sections
   std::size_t items = 0;    // vertices or faces
-  // The least and greatest of each component, then of the magnitude, then of von Mises (a tensor;
-  // else empty), NaN ignored; low > high when there is none. componentRange() reads them.
-  std::vector<std::pair<float, float>> ranges;
 };
 
 struct MeshField {
@@ -40,6 +37,11 @@ struct MeshField {
   // step is stored.
   std::vector<float> values;
   std::shared_ptr<const StoredFieldValues> stored = nullptr;  // set while the values wait in the file
+  // What the .msh reader saw of the values (componentRanges): the least and greatest of each
+  // component, then of the magnitude, then of von Mises (a tensor), NaN ignored, low > high when
+  // there is none. componentRange() and range() read them instead of every value (an animation asks
+  // for the range over every step in every frame); empty for fields made otherwise.
+  std::vector<std::pair<float, float>> ranges{};
 
   bool isStored() const { return stored != nullptr; }
   std::size_t itemCount() const {

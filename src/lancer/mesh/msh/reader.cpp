@@ -382,12 +382,12 @@ void readFieldSections(MshReadState& state, Mesh& mesh, std::span<const char> by
     }
     if (source.mapped) releasePages(records, bytes.data() + section.recordsEnd);
     if (!field) continue;
+    field->ranges = componentRanges(field->values, field->components);
     if (stored) {
       auto values = std::make_shared<StoredFieldValues>();
       values->file = stored;
       values->section = i;
       values->items = items(section);
-      values->ranges = componentRanges(field->values, field->components);
       field->values = std::vector<float>();  // frees it (`= {}` keeps the capacity)
       field->stored = std::move(values);
     }
