@@ -55,10 +55,10 @@ elif [[ $mode == memory ]]; then
   anim=$(peak "$build/lancer" animate "$work/plate_${steps}steps.msh" --over steps "${common[@]}" -o "$work/frame_%02d.png")
   nodes=$(( (n + 1) * (n + 1) ))
   # The issue's budget: what the still needs, plus the mesh the frames are built from (the Mesh's
-  # arrays: 25 bytes a face, 12 a node, and 9 a node of lookup for reading stored steps back) plus
-  # two steps (4 bytes per node and component).
+  # arrays: 25 bytes a face, 12 a node, and 1 a node of lookup for reading stored steps back: the
+  # plate's node tags are 1..N) plus two steps (4 bytes per node and component).
   awk -v n="$n" -v s="$steps" -v st="$still" -v an="$anim" -v nodes="$nodes" 'BEGIN {
-    step = nodes * 3 * 4 / 1024; faces = 2 * n * n; mesh = (faces * 25 + nodes * 21) / 1024
+    step = nodes * 3 * 4 / 1024; faces = 2 * n * n; mesh = (faces * 25 + nodes * 13) / 1024
     budget = st + mesh + 2 * step
     printf "plate %d triangles, %d nodes, %d steps (%.0f MB each as floats, %.0f MB all): still (1 step) %.0f MB peak RSS; animation %.0f MB; budget (still + mesh %.0f MB + 2 steps) %.0f MB: %s\n",
       faces, nodes, s, step / 1024, s * step / 1024, st / 1024, an / 1024, mesh / 1024, budget / 1024,

@@ -438,7 +438,7 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
     auto mapping = std::make_shared<MshFieldMapping>();
     mapping->nodeCount = nodes.size();
     mapping->nodes = std::move(nodes);
-    mapping->nodes.releaseCoordinates();
+    mapping->nodes.keepLookupOnly();
     mapping->usedNode = std::move(usedNode);
     mapping->usedCount = usedCount;
     mapping->derivedSources = std::move(derivedSources_);

@@ -17,6 +17,7 @@ std::optional<std::uint64_t> MshNodeTable::buildLookup() {
   contiguous_ = false;
   denseIndex_.clear();
   sparseIndex_.clear();
+  lookupCount_ = tags_.size();
   if (tags_.empty()) return std::nullopt;
   const auto [minIt, maxIt] = std::minmax_element(tags_.begin(), tags_.end());
   minTag_ = *minIt;

@@ -24,7 +24,7 @@ class MshNodeTable {
   std::vector<Vec3d>& coords() { return coords_; }
   const std::vector<Vec3d>& coords() const { return coords_; }
   std::size_t size() const { return coords_.size(); }
-  std::size_t taggedCount() const { return tags_.size(); }
+  std::size_t taggedCount() const { return lookupOnly_ ? lookupCount_ : tags_.size(); }
 
   // Builds the tag lookup once all nodes are read; returns a tag that occurs twice, if any.
   std::optional<std::uint64_t> buildLookup();
@@ -34,7 +34,7 @@ class MshNodeTable {
     // gmsh numbers nodes 1..N in file order unless told otherwise: then the index is the tag.
     if (contiguous_) {
       const std::uint64_t slot = tag - minTag_;
-      return slot < tags_.size() ? static_cast<std::uint32_t>(slot) : kNoVertex;
+      return slot < lookupCount_ ? static_cast<std::uint32_t>(slot) : kNoVertex;
     }
     if (dense_) {
       const std::uint64_t slot = tag - minTag_;  // wraps for tag < minTag_, then fails the test
@@ -43,8 +43,13 @@ class MshNodeTable {
     return findSparse(tag);
   }
 
-  // Frees the coordinates once the mesh has its positions; find() and taggedCount() still work.
-  void releaseCoordinates() { coords_ = std::vector<Vec3d>(); }  // `= {}` would keep the capacity
+  // Frees the coordinates, and the tags where the lookup does not need them (gmsh's 1..N), once the
+  // mesh has its positions: find() and taggedCount() still work. (`= {}` would keep the capacity.)
+  void keepLookupOnly() {
+    coords_ = std::vector<Vec3d>();
+    lookupOnly_ = true;
+    if (contiguous_) tags_ = std::vector<std::uint64_t>();
+  }
 
   // A node made by lancer (the centre of an 8-node quad); it has no tag.
   std::uint32_t addDerived(const Vec3d& position) {
@@ -58,6 +63,8 @@ class MshNodeTable {
   std::vector<std::uint64_t> tags_;
   std::vector<Vec3d> coords_;
   bool contiguous_ = false;  // tags_[i] == minTag_ + i
+  std::size_t lookupCount_ = 0;  // tags_.size() when the lookup was built
+  bool lookupOnly_ = false;
   bool dense_ = true;
   std::uint64_t minTag_ = 0;
   std::vector<std::uint32_t> denseIndex_;                             // tag - minTag_ -> index
