@@ -7,7 +7,6 @@
 
 #include <cmath>
 
-#include "lancer/mesh/face_shells.hpp"
 #include "lancer/mesh/msh/stored_steps.hpp"
 #include "lancer/render/step_animation.hpp"
 #include "lancer/scene/result_keys.hpp"
@@ -125,30 +124,6 @@ TEST(StepAnimation, PinnedColoursAndNoViewsAreNotSteps) {
   AnimationSettings animation;
   animation.overSteps = true;
   EXPECT_THROW(planStepFrames(description, meshes, animation), InputError);
-}
-
-// A frame's scene built with the shells the previous frame found (SceneBuildCache) is the scene
-// built from nothing: the same faces, turned the same way, the same solids and normals.
-TEST(StepAnimation, ScenesBuiltWithTheKeptShellsAreTheSame) {
-  SceneDescription description = sideView(2.0);
-  const std::vector<Mesh> meshes = readSceneMeshes(description);
-  SceneBuildCache cache;
-  for (const double t : {0.5, 1.0, 1.5}) {
-    description.when = StepSelection{std::nullopt, t, "test"};
-    const Scene cached = buildSceneAt(description, meshes, 1, nullptr, &cache);
-    ASSERT_EQ(cache.meshes.size(), 1u);
-    ASSERT_TRUE(cache.meshes[0].shells);
-    const Scene fresh = buildSceneAt(description, meshes, 1);
-    ASSERT_EQ(cached.geometry.faces.size(), fresh.geometry.faces.size());
-    for (std::size_t f = 0; f < fresh.geometry.faces.size(); ++f)
-      ASSERT_TRUE(std::equal(cached.geometry.faces[f].vertex, cached.geometry.faces[f].vertex + 4,
-                             fresh.geometry.faces[f].vertex))
-          << "t " << t << ", face " << f;
-    EXPECT_EQ(cached.geometry.faceBoundsSolid, fresh.geometry.faceBoundsSolid) << t;
-    EXPECT_EQ(cached.geometry.cornerNormals.normals.size(), fresh.geometry.cornerNormals.normals.size()) << t;
-  }
-  // The cantilever is one closed shell: nothing needs its edges again, so they are not kept.
-  EXPECT_TRUE(cache.meshes[0].shells->edges.empty());
 }
 
 // A result too large to keep in memory leaves its steps in the file (LANCER_STEP_MEMORY_MB = 0

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <map>
-#include <optional>
 
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/face_shells.hpp"
@@ -69,14 +68,12 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
                                                  std::vector<MeshFace>& faces,
                                                  std::vector<std::uint8_t>& edgeMasks,
                                                  std::span<const std::int32_t> facePhysicalTag,
-                                                 std::span<const FaceSide> faceSide, int threads,
-                                                 const FaceShells* knownShells) {
+                                                 std::span<const FaceSide> faceSide, int threads) {
   ShellOrientationReport report;
   const std::size_t faceCount = faces.size();
   report.faceBoundsSolid.assign(faceCount, 0);
   if (faceCount == 0) return report;
-  std::optional<FaceShells> found;
-  const FaceShells& shells = knownShells ? *knownShells : found.emplace(findFaceShells(faces, threads));
+  const FaceShells shells = findFaceShells(faces, threads);
   report.shells = shells.shellCount();
 
   // flip[f]: whether face f must be reversed to agree with its shell's first face (findFaceShells

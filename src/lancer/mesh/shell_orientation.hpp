@@ -12,8 +12,6 @@
 
 namespace lancer {
 
-struct FaceShells;  // mesh/face_shells.hpp
-
 struct ShellOrientationReport {
   std::uint64_t shells = 0;
   std::uint64_t closedShells = 0;
@@ -53,12 +51,10 @@ struct ShellOrientationReport {
 // (a ball inside a block) faces out of the volume it encloses and is never a cavity wall; a volume's
 // faces in a shell that is not a closed 2-manifold (where an interface meets the skin, three faces
 // share each edge of the rim) keep their elements' winding, out of their volume, and bound solids.
-// `knownShells`, when given, is findFaceShells(faces) (an animation's frames share their faces').
 ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions,
                                                  std::vector<MeshFace>& faces,
                                                  std::vector<std::uint8_t>& edgeMasks,
                                                  std::span<const std::int32_t> facePhysicalTag,
-                                                 std::span<const FaceSide> faceSide = {}, int threads = 0,
-                                                 const FaceShells* knownShells = nullptr);
+                                                 std::span<const FaceSide> faceSide = {}, int threads = 0);
 
 }  // namespace lancer

@@ -3,11 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "lancer/image/legend.hpp"
 #include "lancer/image/text.hpp"
-#include "lancer/mesh/faces_digest.hpp"
 #include "lancer/mesh/field_steps.hpp"
 #include "lancer/mesh/msh/stored_steps.hpp"
 #include "lancer/scene/result_keys.hpp"
@@ -16,6 +16,19 @@
 
 namespace lancer {
 namespace {
+
+// Two independent 64-bit digests of the faces' corners: frames whose faces have the same digests
+// have the same faces (a chance of 2^-128 otherwise), without holding a copy of the previous
+// frame's faces (16 bytes a face) while the next is built.
+std::pair<std::uint64_t, std::uint64_t> facesDigest(const std::vector<MeshFace>& faces) {
+  std::uint64_t a = 0x9E3779B97F4A7C15ull ^ faces.size(), b = 0xC2B2AE3D27D4EB4Full + faces.size();
+  for (const MeshFace& face : faces)
+    for (const std::uint32_t v : face.vertex) {
+      a = (a ^ v) * 0x100000001B3ull;                                            // FNV-1a's prime
+      b = std::rotl(b + v * 0xD6E8FEB86659FD93ull, 29) * 0x9FB21C651E98DF25ull;  // a multiply-rotate mix
+    }
+  return {a, b};
+}
 
 bool anyWarp(const SceneDescription& description) {
   return std::any_of(description.meshes.begin(), description.meshes.end(),
@@ -91,7 +104,7 @@ void StepScenes::buildAt(double time) {
   // next has the same.
   scene_.reset();
   builtTime_.reset();
-  Scene next = buildSceneAt(description_, meshes_, threads_, nullptr, &buildCache_);
+  Scene next = buildSceneAt(description_, meshes_, threads_);
   // Every frame is framed alike: the camera and the orbit see the bounds of the whole animation.
   SceneGeometry& geometry = next.geometry;
   geometry.bounds = Aabb{};
@@ -112,11 +125,9 @@ void StepScenes::buildAt(double time) {
     const Stopwatch build;
     KdBuildOptions options;
     options.threads = threads_;
-    // A build is the frame's peak of memory: the steps a stored file keeps and the shells kept for
-    // the next frame go before it (the next frame reads its steps and finds its shells again, which
-    // only the first frame and the rare rebuilds pay).
+    // A build is the frame's peak of memory: the steps a stored file keeps go before it (the next
+    // frame reads its steps again, which only the first frame and the rare rebuilds pay).
     const auto forgetKeptSteps = [this] {
-      buildCache_ = SceneBuildCache{};  // the shells too: found again by the next frame
       for (const Mesh& mesh : meshes_)
         for (const MeshField& field : mesh.fields)
           if (field.isStored()) field.stored->file->forgetKept();

@@ -76,7 +76,6 @@ class StepScenes {
   std::optional<Accelerator> accelerator_;
   std::optional<double> builtTime_;
   std::pair<std::uint64_t, std::uint64_t> facesDigest_{};  // of the faces of the scene built last
-  SceneBuildCache buildCache_;  // what the next frame's scene reuses (the meshes' shells)
   double rebuildSeconds_ = 0;
   double accelSeconds_ = 0;
   int rebuilds_ = 0;

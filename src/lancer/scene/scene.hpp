@@ -5,10 +5,8 @@
 
 #include <array>
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "lancer/image/legend.hpp"
@@ -164,23 +162,10 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, 
 // The meshes of the description as buildScene reads them (a `file` pattern: one step per file).
 std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threads = 0,
                                   StageTimes* times = nullptr);
-// What a scene built again at another time of the same meshes reuses (an animation over warped
-// steps): each mesh's shells (faces joined by their edges), which depend on the faces alone, kept
-// with a digest of the faces they were found on. Their sorted edges are kept only when a shell
-// needs them again (regions of a surface that meets three or more faces on an edge).
-struct FaceShells;  // mesh/face_shells.hpp
-struct SceneBuildCache {
-  struct MeshShells {
-    std::pair<std::uint64_t, std::uint64_t> facesDigest{};
-    std::shared_ptr<const FaceShells> shells;
-  };
-  std::vector<MeshShells> meshes;  // by the scene's mesh entry
-};
-
 // The scene at description.when from meshes read once and kept (they hold every step of their views):
 // each call copies their geometry, warps it and colours it for that step. An animation over steps
-// calls it per frame, with a cache it keeps between frames.
+// calls it per frame.
 Scene buildSceneAt(const SceneDescription& description, const std::vector<Mesh>& meshes, int threads = 0,
-                   StageTimes* times = nullptr, SceneBuildCache* cache = nullptr);
+                   StageTimes* times = nullptr);
 
 }  // namespace lancer

@@ -12,8 +12,6 @@
 
 #include "lancer/image/environment_map.hpp"
 #include "lancer/mesh/face_geometry.hpp"
-#include "lancer/mesh/face_shells.hpp"
-#include "lancer/mesh/faces_digest.hpp"
 #include "lancer/mesh/feature_edges.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
 #include "lancer/scene/annotation_builder.hpp"
@@ -89,25 +87,8 @@ struct PlacedMesh {
   std::vector<Vec3> faceNormals;  // unit, per face (computeCornerNormals made them on the way)
 };
 
-// The shells of `faces`: the cached ones when they were found on the same faces, else found now
-// (and cached, without their edges unless a shell needs them again).
-const FaceShells* cachedShells(SceneBuildCache::MeshShells* cache, std::span<const MeshFace> faces,
-                               int threads) {
-  if (!cache) return nullptr;
-  const std::pair<std::uint64_t, std::uint64_t> digest = facesDigest(faces);
-  if (cache->shells && cache->facesDigest == digest) return cache->shells.get();
-  FaceShells shells = findFaceShells(faces, threads);
-  bool regions = false;  // findShellRegions walks the edges of such shells
-  for (std::size_t s = 0; s < shells.shellCount(); ++s) regions |= shells.branched[s] && !shells.bordered[s];
-  if (!regions) shells.edges = std::vector<FaceEdge>();
-  cache->shells = std::make_shared<const FaceShells>(std::move(shells));
-  cache->facesDigest = digest;
-  return cache->shells.get();
-}
-
 PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTransform& transform,
-                     const Vec3d& origin, int threads, StageTimes& times,
-                     SceneBuildCache::MeshShells* shellCache = nullptr) {
+                     const Vec3d& origin, int threads, StageTimes& times) {
   const Stopwatch orient;
   PlacedMesh placed;
   placed.positions.resize(mesh.positions.size());
@@ -126,8 +107,7 @@ PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTra
   // Refraction and caps tell entering from leaving by the side a ray hits, so solids must face out
   // of their material (cavity walls into the cavity).
   placed.orientation = orientClosedShellsOutward(placed.positions, mesh.faces, placed.edgeMasks,
-                                                 mesh.facePhysicalTag, mesh.volumeSides.side, threads,
-                                                 cachedShells(shellCache, mesh.faces, threads));
+                                                 mesh.facePhysicalTag, mesh.volumeSides.side, threads);
   for (const std::uint32_t f : placed.orientation.reversedInterfaces) {
     std::swap(mesh.facePhysicalTag[f], mesh.volumeSides.outerPhysicalTag[f]);
     std::swap(mesh.faceEntityTag[f], mesh.volumeSides.outerEntityTag[f]);
@@ -422,8 +402,7 @@ namespace {
 
 Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry> entries,
                     std::vector<Material> materials, std::vector<std::string> warnings, int threads,
-                    StageTimes& times, SceneBuildCache* cache = nullptr) {
-  if (cache) cache->meshes.resize(entries.size());
+                    StageTimes& times) {
   const Stopwatch whole;
   const double secondsBefore = times.totalSeconds();
   Scene scene;
@@ -453,8 +432,7 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
     Mesh& mesh = entries[i].mesh;
     scene.warnings.insert(scene.warnings.end(), mesh.source.warnings.begin(), mesh.source.warnings.end());
     const auto groupMaterials = resolveGroupMaterials(instance, mesh);
-    PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin, threads, times,
-                                  cache ? &cache->meshes[i] : nullptr);
+    PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin, threads, times);
     const std::optional<FieldColoring>& coloring = entries[i].coloring;
 
     const auto vertexBase = static_cast<std::uint32_t>(geometry.positions.size());
@@ -464,8 +442,7 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
                      instance.shading.value_or(description.render.shading));
     appendEdges(overlay, instance, mesh, placed.edgeMasks);
     if (coloring) {
-      if (entries[i].colorBy->paintsSurface)
-        appendFieldColoring(geometry, fields, *coloring, vertexBase, faceBase);
+      if (entries[i].colorBy->paintsSurface) appendFieldColoring(geometry, fields, *coloring, vertexBase, faceBase);
       if (!fields) fields.emplace();
       appendLegendAndBands(*fields, *entries[i].colorBy, *coloring, faceBase, geometry.faces.size());
     }
@@ -547,7 +524,7 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, 
 }
 
 Scene buildSceneAt(const SceneDescription& description, const std::vector<Mesh>& meshes, int threads,
-                   StageTimes* timesOrNull, SceneBuildCache* cache) {
+                   StageTimes* timesOrNull) {
   StageTimes unused;
   StageTimes& times = timesOrNull ? *timesOrNull : unused;
   // Arrows of the step the scene names: meshes of their own, holding their one field (the meshes as
@@ -569,7 +546,7 @@ Scene buildSceneAt(const SceneDescription& description, const std::vector<Mesh>&
   std::vector<SceneEntry> entries =
       sceneEntries(withArrows, std::move(geometry), fields, materials, warnings);
   return assembleScene(withArrows, std::move(entries), std::move(materials), std::move(warnings), threads,
-                       times, cache);
+                       times);
 }
 
 }  // namespace lancer
