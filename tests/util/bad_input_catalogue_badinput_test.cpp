@@ -332,6 +332,13 @@ std::vector<Case> catalogue() {
        },
        "$LANCER render -q scene.toml -o out.png", nullptr},
 
+      sceneCase("scene_isolines_color", "isolines colour neither a colour nor \"map\"",
+                "`isolines = { field = \"T\", color = \"red\" }`",
+                "[[mesh]]\nfile = \"part.msh\"\nisolines = { field = \"T\", color = \"red\" }\n"),
+      {"env_step_memory", "result-step budget not a number", "`LANCER_STEP_MEMORY_MB=lots`",
+       [](const Scratch& s) { s.copy(dataFile("results/cantilever.msh"), "beam.msh"); },
+       "LANCER_STEP_MEMORY_MB=lots $LANCER render -q beam.msh -o out.png", nullptr},
+
       // --- command line, continued ---
       {"cli_unknown_subcommand", "unknown subcommand", "`lancer view part.msh`", nullptr,
        "$LANCER view part.msh", nullptr},
