@@ -33,13 +33,8 @@ std::pair<float, float> MeshField::range() const {
 
 MeshField loadedField(const MeshField& field) {
   if (!field.stored) return field;
-  MeshField copy;
-  copy.name = field.name;
-  copy.perElement = field.perElement;
-  copy.components = field.components;
-  copy.step = field.step;
-  copy.time = field.time;
-  copy.ranges = field.ranges;
+  MeshField copy = field;  // no values to copy: they are in the file
+  copy.stored.reset();
   copy.values = *field.stored->file->load(field.stored->section);
   return copy;
 }

@@ -126,6 +126,16 @@ MshFieldSection sectionOf(FieldHeader header, bool perElement) {
   return section;
 }
 
+// One value of a record: finite, else an error at it naming the section, the view and the record.
+float readFieldValue(MshCursor& cursor, bool binary, const char* section, const std::string& view,
+                     const char* item, std::uint64_t tag) {
+  const char* valueAt = binary ? cursor.position() : cursor.tokenStart();
+  const double value = binary ? cursor.readRaw<double>("a field value") : cursor.readDouble("a field value");
+  if (!std::isfinite(value))
+    cursor.failAt(valueAt, fmt::format("{} '{}' has a non-finite value for {} {}", section, view, item, tag));
+  return static_cast<float>(value);
+}
+
 // The records' values in mesh-vertex order.
 void readNodeRecords(MshCursor& cursor, const MshFieldSection& section, const MshFieldMapping& mapping,
                      MeshField& field, std::vector<std::string>& warnings) {
@@ -144,13 +154,8 @@ void readNodeRecords(MshCursor& cursor, const MshFieldSection& section, const Ms
     if (index == kNoVertex && dropped++ == 0) firstDropped = tag, firstDroppedAt = recordAt;
     float* out = index == kNoVertex ? nullptr : field.values.data() + index * components;
     for (std::uint64_t c = 0; c < components; ++c) {
-      const char* valueAt = binary ? cursor.position() : cursor.tokenStart();
-      const double value =
-          binary ? cursor.readRaw<double>("a field value") : cursor.readDouble("a field value");
-      if (!std::isfinite(value))
-        cursor.failAt(valueAt,
-                      fmt::format("$NodeData '{}' has a non-finite value for node {}", field.name, tag));
-      if (out) out[c] = static_cast<float>(value);
+      const float value = readFieldValue(cursor, binary, "$NodeData", field.name, "node", tag);
+      if (out) out[c] = value;
     }
   }
   if (dropped)
@@ -185,15 +190,8 @@ void readElementRecords(MshCursor& cursor, const MshFieldSection& section, const
     if (tag != 0 && (tag < mapping.minElementTag || tag > mapping.maxElementTag) && dropped++ == 0)
       firstDropped = tag, firstDroppedAt = recordAt;
     tags.push_back(tag);
-    for (std::uint64_t c = 0; c < components; ++c) {
-      const char* valueAt = binary ? cursor.position() : cursor.tokenStart();
-      const double value =
-          binary ? cursor.readRaw<double>("a field value") : cursor.readDouble("a field value");
-      if (!std::isfinite(value))
-        cursor.failAt(
-            valueAt, fmt::format("$ElementData '{}' has a non-finite value for element {}", field.name, tag));
-      values.push_back(static_cast<float>(value));
-    }
+    for (std::uint64_t c = 0; c < components; ++c)
+      values.push_back(readFieldValue(cursor, binary, "$ElementData", field.name, "element", tag));
   }
   if (dropped)
     warnings.push_back(formatInputWarning(
