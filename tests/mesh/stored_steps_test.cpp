@@ -138,6 +138,19 @@ TEST(StoredSteps, AFileChangedOrGoneSinceItWasReadIsAClearError) {
   }
 }
 
+// A script may read a relative path and change its folder before the frames read the steps back.
+TEST(StoredSteps, ReadBackAfterTheWorkingFolderChanged) {
+  const test::ScratchFolder folder;
+  folder.copy(test::dataFile("results/cantilever.msh"), "beam.msh");
+  const std::filesystem::path previous = std::filesystem::current_path();
+  std::filesystem::current_path(folder.path());
+  const Mesh mesh = readMsh("beam.msh", 1, 0);
+  std::filesystem::current_path(previous);
+  ASSERT_TRUE(mesh.fields.front().isStored());
+  EXPECT_EQ(loadedField(mesh.fields.front()).values.size(),
+            mesh.fields.front().itemCount() * static_cast<std::size_t>(mesh.fields.front().components));
+}
+
 TEST(StoredSteps, TheBudgetComesFromTheEnvironment) {
   const std::string path = test::dataFile("results/cantilever.msh");
   EXPECT_EQ(defaultResidentFieldBytes(), kDefaultResidentFieldBytes);

@@ -17,8 +17,9 @@
 namespace lancer {
 namespace {
 
-// Two independent 64-bit digests of the faces' corners: frames whose faces have the same digests
-// have the same faces (a chance of 2^-128 otherwise), without holding a copy of the previous
+// Two 64-bit digests of the faces' corners by unrelated mixes (FNV-1a and a multiply-rotate): frames
+// whose faces differ would have to collide in both to be taken for the same, which faces that drop
+// or turn a few of their own do not do by accident. It spares holding a copy of the previous
 // frame's faces (16 bytes a face) while the next is built.
 std::pair<std::uint64_t, std::uint64_t> facesDigest(const std::vector<MeshFace>& faces) {
   std::uint64_t a = 0x9E3779B97F4A7C15ull ^ faces.size(), b = 0xC2B2AE3D27D4EB4Full + faces.size();

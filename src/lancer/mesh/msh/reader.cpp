@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -363,7 +364,9 @@ void readFieldSections(MshReadState& state, Mesh& mesh, std::span<const char> by
     total += items(section) * static_cast<std::uint64_t>(section.field.components) * sizeof(float);
   std::shared_ptr<const StoredFieldSteps> stored;
   if (source.file && total > source.residentFieldBytes)
-    stored = std::make_shared<const StoredFieldSteps>(name, *source.file, mapping, sections);
+    // The absolute path: a Python script may change its folder between reading and rendering.
+    stored = std::make_shared<const StoredFieldSteps>(std::filesystem::absolute(name).string(), *source.file,
+                                                      mapping, sections);
   MshCursor cursor(bytes, name);
   cursor.setBinaryLocations(state.binary);
   for (std::size_t i = 0; i < sections.size(); ++i) {
