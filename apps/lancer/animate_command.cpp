@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <optional>
-#include <type_traits>
 
 #include "command_distribution.hpp"
 #include "commands.hpp"
@@ -96,27 +95,19 @@ int runAnimate(const AnimateCommandOptions& options) {
   if (!options.orbit.empty())
     animation.orbitLight = parseOrbit(options.orbit, prepared.scene.appearance.lights.size());
   std::optional<StepScenes> steps;
+  if (!animation.overSteps && !prepared.meshes.empty()) {  // kept for steps, which are not asked after all
+    KdBuildOptions build;
+    build.threads = options.overrides.threads;
+    prepared.accelerator =
+        Accelerator::build(prepared.scene.geometry.positions, prepared.scene.geometry.faces,
+                           parseAccelKind(options.overrides.accel), build);
+  }
   if (animation.overSteps) {
     steps.emplace(prepared.description, prepared.meshes, animation, parseAccelKind(options.overrides.accel),
                   options.overrides.threads);
     animation = steps->animation();
-    // The frames' scenes are the steps' own: the scene and accelerator prepareScene built go (its
-    // legends stay), so that one scene and one accelerator are held while the frames render.
-    // Swapped with empty ones: `v = {}` would clear the vectors and keep their memory.
-    const auto release = [](auto& vector) { std::remove_reference_t<decltype(vector)>().swap(vector); };
-    prepared.scene.geometry = SceneGeometry{};
-    release(prepared.scene.appearance.faceMaterial);
-    release(prepared.scene.appearance.faceOuterMaterial);
-    release(prepared.scene.appearance.faceShading);
-    prepared.scene.edges.reset();
-    prepared.scene.isolines.reset();
-    if (prepared.scene.fieldColors) {
-      release(prepared.scene.fieldColors->vertexFieldT);
-      release(prepared.scene.fieldColors->faceFieldT);
-      release(prepared.scene.fieldColors->faceColorMap);
-      release(prepared.scene.fieldColors->faceBands);
-    }
-    prepared.accelerator = Accelerator::build({}, {}, parseAccelKind(options.overrides.accel));
+    // The frames' scenes are the steps' own: prepareScene's scene goes (its legends stay).
+    releaseSceneForSteps(prepared);
   }
 
   // render.output names `lancer render`'s still image: an animation never writes over it unasked.
@@ -211,7 +202,7 @@ int runAnimate(const AnimateCommandOptions& options) {
                  "(%.3f s/frame%s)\n",
                  output.c_str(), frames.size(), settings.width, settings.height,
                  steps ? steps->faceCount() : prepared.scene.geometry.faces.size(), prepared.loadSeconds,
-                 prepared.buildSeconds, seconds,
+                 steps ? steps->firstBuildSeconds() : prepared.buildSeconds, seconds,
                  frames.empty() ? 0.0 : seconds / static_cast<double>(frames.size()), speed.c_str());
   }
   if (steps && !options.overrides.quiet && steps->rebuilds() > 0)

@@ -35,24 +35,23 @@ void animate(const py::object& target, const std::string& output, const RenderAr
   if (palette && *palette != "global" && *palette != "per-frame")
     throw py::value_error(fmt::format("palette='{}': use 'global' or 'per-frame'", *palette));
   const PythonScene source = sceneOf(target);
-  PreparedRender prepared = prepareRender(source, renderOverridesFromArguments(arguments), arguments.threads);
+  // Over steps, the meshes as read (every step) build each frame's scene (render/step_animation.hpp).
+  const bool overSteps =
+      over ? *over == "steps" : source.description.animation && source.description.animation->overSteps;
+  PreparedRender prepared =
+      prepareRender(source, renderOverridesFromArguments(arguments), arguments.threads, overSteps);
   const RenderSettings& settings = prepared.description.render;
   AnimationSettings animation = prepared.description.animation.value_or(AnimationSettings{});
   if (frames) animation.frames = *frames, animation.framesGiven = true;
   if (fps) animation.fps = *fps;
   if (orbit) animation.orbitLight = parseOrbit(*orbit, sceneLightCount(prepared.scene));
-  if (over) animation.overSteps = *over == "steps";
-  // Over steps: the meshes as read (every step) build each frame's scene (render/step_animation.hpp).
-  std::vector<Mesh> meshes;
+  animation.overSteps = overSteps;
   std::optional<StepScenes> steps;
   if (animation.overSteps) {
     py::gil_scoped_release release;
-    if (source.quickLookMesh)
-      meshes.push_back(*source.quickLookMesh);
-    else
-      meshes = readSceneMeshes(prepared.description, arguments.threads);
-    steps.emplace(prepared.description, meshes, animation, kDefaultAccel, arguments.threads);
+    steps.emplace(prepared.description, prepared.meshes, animation, kDefaultAccel, arguments.threads);
     animation = steps->animation();
+    releaseSceneForSteps(prepared);  // one scene and one accelerator at a time: the frame's
   }
 
   AnimationOutputOptions outputOptions;

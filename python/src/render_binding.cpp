@@ -139,7 +139,8 @@ void InterruptibleRender::finish() {
   }
 }
 
-PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides, int threads) {
+PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides, int threads,
+                             bool keepMeshes) {
   PreparedRender prepared = [&] {
     const py::gil_scoped_release release;
     RenderRequest request;
@@ -147,6 +148,7 @@ PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides
     if (scene.quickLookMesh) request.quickLookMesh = *scene.quickLookMesh;
     request.overrides = overrides;
     request.threads = threads;
+    request.keepMeshes = keepMeshes;
     return lancer::prepareRender(std::move(request));
   }();
   for (const std::string& warning : sceneWarnings(prepared.scene))

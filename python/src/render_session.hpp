@@ -38,7 +38,9 @@ PythonScene sceneOf(const py::object& target);
 
 // The library's prepareRender (render/render_preparation.hpp) of the scene with the overrides, run
 // without the GIL on `threads` threads (0: every core); the meshes' warnings become Python UserWarnings.
-PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides, int threads);
+// keepMeshes: for an animation over steps (RenderRequest::keepMeshes: the meshes kept, no accelerator).
+PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides, int threads,
+                             bool keepMeshes = false);
 
 // The two places that read Scene's fields, kept here so that a change to Scene's layout touches one file.
 inline const std::vector<std::string>& sceneWarnings(const Scene& scene) { return scene.warnings; }

@@ -1,5 +1,7 @@
 #include "lancer/render/render_preparation.hpp"
 
+#include <type_traits>
+
 #include <fmt/format.h>
 
 #include <utility>
@@ -68,13 +70,33 @@ PreparedRender prepareRender(RenderRequest request) {
   const double loadSeconds = secondsBefore + load.seconds();
 
   const Stopwatch build;
-  Accelerator accelerator = buildAccelerator(scene, request.accel, request.threads);
+  Accelerator accelerator = request.keepMeshes ? Accelerator::build({}, {}, request.accel)
+                                               : buildAccelerator(scene, request.accel, request.threads);
   const double buildSeconds = build.seconds();
   stages.add("accel build", buildSeconds);
 
   Camera camera = makeCamera(description.camera, scene, description.render);
   return PreparedRender{std::move(description), std::move(scene), std::move(accelerator), camera,
                         std::move(stages),      loadSeconds,      buildSeconds,           std::move(kept)};
+}
+
+void releaseSceneForSteps(PreparedRender& prepared) {
+  // Swapped with empty ones: `v = {}` would clear the vectors and keep their memory.
+  const auto release = [](auto& vector) { std::remove_reference_t<decltype(vector)>().swap(vector); };
+  Scene& scene = prepared.scene;
+  scene.geometry = SceneGeometry{};
+  release(scene.appearance.faceMaterial);
+  release(scene.appearance.faceOuterMaterial);
+  release(scene.appearance.faceShading);
+  scene.edges.reset();
+  scene.isolines.reset();
+  if (scene.fieldColors) {
+    release(scene.fieldColors->vertexFieldT);
+    release(scene.fieldColors->faceFieldT);
+    release(scene.fieldColors->faceColorMap);
+    release(scene.fieldColors->faceBands);
+  }
+  prepared.accelerator = Accelerator::build({}, {}, prepared.accelerator.kind());
 }
 
 }  // namespace lancer

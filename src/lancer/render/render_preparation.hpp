@@ -35,7 +35,8 @@ struct RenderRequest {
   // views' names); may change the description.
   std::function<void(SceneDescription&, const std::vector<Mesh>&)> withMeshes;
   // Keep the meshes as read (every step of their views) in PreparedRender::meshes: an animation
-  // over steps builds each frame's scene from them (render/step_animation.hpp).
+  // over steps builds each frame's scene and accelerator from them (render/step_animation.hpp), so
+  // no accelerator is built here (PreparedRender::accelerator is empty).
   bool keepMeshes = false;
   // Stages the caller already spent on this render (the CLI's read of a bare mesh), continued here
   // and counted as load time.
@@ -64,6 +65,11 @@ struct PreparedRender {
 // InputError for bad settings, an image over the memory budget (at description.path), or a mesh that
 // cannot be read. Prints nothing.
 PreparedRender prepareRender(RenderRequest request);
+
+// Frees the scene's geometry, per-face arrays and accelerator, keeping the description, camera,
+// lights and legends: an animation over steps renders each frame from its own scene
+// (StepScenes), so that one scene and one accelerator are held while the frames render.
+void releaseSceneForSteps(PreparedRender& prepared);
 
 // The bytes an image of the settings' size needs while it renders and is written: whole, the float
 // image and its 8-bit copy; in bands, the bands renderBands keeps on `threads` workers, plus the

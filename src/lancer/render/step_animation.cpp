@@ -140,7 +140,7 @@ void StepScenes::buildAt(double time) {
       forgetKeptSteps();
       accelerator_.emplace(Accelerator::build(built.positions, built.faces, accel_, options));
     }
-    if (!first) accelSeconds_ += build.seconds();
+    (first ? firstBuildSeconds_ : accelSeconds_) += build.seconds();
   }
   if (first) {
     warnings_ = scene_->warnings;

@@ -54,6 +54,7 @@ class StepScenes {
   // Seconds spent building scenes and accelerators for frames after the first, and how many.
   double rebuildSeconds() const { return rebuildSeconds_; }
   double accelSeconds() const { return accelSeconds_; }
+  double firstBuildSeconds() const { return firstBuildSeconds_; }  // the first frame's accelerator
   int rebuilds() const { return rebuilds_; }
   int refits() const { return refits_; }  // of the rebuilds, those whose accelerator was refitted
   // What the first frame's build warned about (collapsed faces, the readers' warnings).
@@ -78,6 +79,7 @@ class StepScenes {
   std::pair<std::uint64_t, std::uint64_t> facesDigest_{};  // of the faces of the scene built last
   double rebuildSeconds_ = 0;
   double accelSeconds_ = 0;
+  double firstBuildSeconds_ = 0;
   int rebuilds_ = 0;
   int refits_ = 0;
   std::vector<std::string> warnings_;
