@@ -122,6 +122,17 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
                  field.components == 1 ? "" : "s", field.step, field.time,
                  field.components == 1 ? "values" : "magnitudes", low, high);
     }
+    // A large result's steps stay in the file (docs/results.md): said, with what they would take.
+    std::uint64_t bytes = 0;
+    for (const MeshField& field : mesh.fields)
+      bytes += field.itemCount() * static_cast<std::uint64_t>(field.components) * sizeof(float);
+    if (mesh.fields.front().isStored())
+      fmt::print(
+          "  the steps ({} as floats) stay in the file and are read when a picture needs them "
+          "(LANCER_STEP_MEMORY_MB: {} MB)\n",
+          bytes < (1 << 20) ? fmt::format("{:.0f} KB", static_cast<double>(bytes) / 1024)
+                            : fmt::format("{:.1f} MB", static_cast<double>(bytes) / (1 << 20)),
+          defaultResidentFieldBytes() >> 20);
   }
   if (mesh.faceCount()) {
     const Aabbd& box = stats.worldBounds;

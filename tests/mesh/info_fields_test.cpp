@@ -42,5 +42,20 @@ TEST(InfoFields, NoFieldsGivesAnEmptyJsonList) {
   EXPECT_EQ(runCli("info " + kNoFields).output.find("fields:"), std::string::npos);
 }
 
+// A result whose steps stay in the file says so (forced here with a budget of 0 MB); one read into
+// memory does not.
+TEST(InfoFields, SaysWhenTheStepsStayInTheFile) {
+  const std::string beam = quoted(test::dataFile("results/cantilever.msh"));
+  const CommandResult stored = runCli("info " + beam, "env LANCER_STEP_MEMORY_MB=0");
+  ASSERT_EQ(stored.exitCode, 0) << stored.output;
+  EXPECT_NE(stored.output.find(
+                "stay in the file and are read when a picture needs them (LANCER_STEP_MEMORY_MB: 0 MB)"),
+            std::string::npos)
+      << stored.output;
+  const CommandResult kept = runCli("info " + beam);
+  ASSERT_EQ(kept.exitCode, 0) << kept.output;
+  EXPECT_EQ(kept.output.find("stay in the file"), std::string::npos) << kept.output;
+}
+
 }  // namespace
 }  // namespace lancer
