@@ -92,7 +92,8 @@ TEST(Isolines, CountSpacesLinesEvenlyInsideTheRange) {
 // color = "map": each line in its value's colour, from the mesh's map over its colour range (here
 // magma over [0, 3]), the surface coloured as before between the lines.
 TEST(Isolines, MapColouredLinesTakeTheirValuesColour) {
-  const SceneDescription description = squareScene(R"(color_by = { field = "temperature", map = "magma", range = [0, 3] }
+  const SceneDescription description =
+      squareScene(R"(color_by = { field = "temperature", map = "magma", range = [0, 3] }
 isolines = { field = "temperature", values = [1.0, 2.0], color = "map", width = 3 })");
   const Image image = test::renderScene(description);
   for (const double value : {1.0, 2.0}) {
@@ -147,8 +148,9 @@ TEST(IsolinesBadInput, UnknownFieldCountsAndKeys) {
   test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { field = \"T\", count = 100000 }\n",
                                  "mesh[0].isolines.count");
   test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { count = 3 }\n", "field");
-  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { field = \"T\", color = \"red\" }\n",
-                                 "mesh[0].isolines.color must be [r, g, b] or \"map\"");
+  test::expectSceneErrorContains(
+      "[[mesh]]\nfile = \"a.msh\"\nisolines = { field = \"T\", color = \"red\" }\n",
+      "mesh[0].isolines.color must be [r, g, b] or \"map\"");
   test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\nisolines = { field = \"T\", values = [] }\n",
                                  "must be an array of 1 to 1000 numbers");
   test::expectSceneErrorContains(

@@ -63,8 +63,8 @@ class Accelerator : public TreeQueries<Accelerator> {
   // (Bvh::refit) unless that cannot stay exact or its SAH cost grew past Bvh::kRebuildAboveGrowth,
   // every other kind is built again, after the old tree is freed and `beforeBuild` called (to free
   // more before the build's peak). Returns whether it refitted.
-  bool update(std::span<const Vec3> positions, std::span<const MeshFace> faces, const KdBuildOptions& options = {},
-              const std::function<void()>& beforeBuild = {});
+  bool update(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+              const KdBuildOptions& options = {}, const std::function<void()>& beforeBuild = {});
 
   AccelKind kind() const { return kind_; }
   AccelStats stats() const { return stats_; }

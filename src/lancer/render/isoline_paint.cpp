@@ -62,11 +62,13 @@ float isolineCoverage(const Scene& scene, const Ray& ray, const SurfacePoint& su
   float nearest = std::numeric_limits<float>::infinity();
   auto line = above;
   if (above != style.values.end()) nearest = *above - value;
-  if (above != style.values.begin() && value - *(above - 1) < nearest) nearest = value - *(above - 1), line = above - 1;
+  if (above != style.values.begin() && value - *(above - 1) < nearest)
+    nearest = value - *(above - 1), line = above - 1;
   const float coverage = lineCoverage(nearest / perPixel, style.widthPixels);
   if (coverage > 0.0f)
-    color = style.valueColors.empty() ? style.color
-                                      : style.valueColors[static_cast<std::size_t>(line - style.values.begin())];
+    color = style.valueColors.empty()
+                ? style.color
+                : style.valueColors[static_cast<std::size_t>(line - style.values.begin())];
   return coverage;
 }
 

@@ -66,8 +66,8 @@ std::vector<Vec3> isolineValueColors(const std::vector<float>& values, ColorMapK
   // A constant range shows the middle of the map, as the surface colours do.
   const double scale = high > low ? 1.0 / (high - low) : 0.0;
   for (const float v : values)
-    colors.push_back(colorMapLookup(
-        map, scale == 0 ? 0.5f : static_cast<float>(std::clamp((v - low) * scale, 0.0, 1.0))));
+    colors.push_back(
+        colorMapLookup(map, scale == 0 ? 0.5f : static_cast<float>(std::clamp((v - low) * scale, 0.0, 1.0))));
   return colors;
 }
 
@@ -75,7 +75,8 @@ void appendIsolines(std::optional<IsolineOverlay>& overlay, const IsolineSpec& s
                     ResolvedIsolines resolved, std::uint32_t vertexBase, std::size_t faceBase,
                     std::size_t faceEnd, std::size_t vertexEnd, std::vector<Vec3> valueColors) {
   if (!overlay) overlay.emplace();
-  overlay->styles.push_back({std::move(resolved.values), spec.color, std::move(valueColors), spec.widthPixels});
+  overlay->styles.push_back(
+      {std::move(resolved.values), spec.color, std::move(valueColors), spec.widthPixels});
   overlay->faceStyle.resize(faceBase, 0);
   overlay->faceStyle.resize(faceEnd, static_cast<std::uint16_t>(overlay->styles.size() - 1));
   // The mesh's vertices are the scene's from vertexBase on, in order.

@@ -442,7 +442,8 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
                      instance.shading.value_or(description.render.shading));
     appendEdges(overlay, instance, mesh, placed.edgeMasks);
     if (coloring) {
-      if (entries[i].colorBy->paintsSurface) appendFieldColoring(geometry, fields, *coloring, vertexBase, faceBase);
+      if (entries[i].colorBy->paintsSurface)
+        appendFieldColoring(geometry, fields, *coloring, vertexBase, faceBase);
       if (!fields) fields.emplace();
       appendLegendAndBands(*fields, *entries[i].colorBy, *coloring, faceBase, geometry.faces.size());
     }

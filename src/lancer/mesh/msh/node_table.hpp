@@ -62,7 +62,7 @@ class MshNodeTable {
 
   std::vector<std::uint64_t> tags_;
   std::vector<Vec3d> coords_;
-  bool contiguous_ = false;  // tags_[i] == minTag_ + i
+  bool contiguous_ = false;      // tags_[i] == minTag_ + i
   std::size_t lookupCount_ = 0;  // tags_.size() when the lookup was built
   bool lookupOnly_ = false;
   bool dense_ = true;

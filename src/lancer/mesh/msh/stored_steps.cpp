@@ -82,7 +82,8 @@ void StoredFieldSteps::forgetKept() const {
 std::size_t StoredFieldSteps::countViews(const std::vector<MshFieldSection>& sections) {
   std::vector<std::string> names;
   for (const MshFieldSection& section : sections)
-    if (std::find(names.begin(), names.end(), section.field.name) == names.end()) names.push_back(section.field.name);
+    if (std::find(names.begin(), names.end(), section.field.name) == names.end())
+      names.push_back(section.field.name);
   return std::max<std::size_t>(names.size(), 1);
 }
 
