@@ -153,8 +153,11 @@ void StepScenes::buildAt(double time) {
 
 Image StepScenes::render(int frame, const RenderOptions& options, RenderStats* stats) {
   const double time = frames_.times[static_cast<std::size_t>(frame)];
+  const int rebuildsBefore = rebuilds_;
   if (!builtTime_ || *builtTime_ != time) buildAt(time);
+  const Stopwatch rendering;
   Image image = renderAnimationFrame(*scene_, *accelerator_, description_, animation_, frame, options, stats);
+  if (rebuilds_ > rebuildsBefore) rebuiltRenderSeconds_ += rendering.seconds();
   if (!animation_.label.empty()) {
     const std::string text =
         formatStepLabel(animation_.label, time, frames_.steps[static_cast<std::size_t>(frame)],

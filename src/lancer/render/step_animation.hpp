@@ -56,6 +56,12 @@ class StepScenes {
   double accelSeconds() const { return accelSeconds_; }
   double firstBuildSeconds() const { return firstBuildSeconds_; }  // the first frame's accelerator
   int rebuilds() const { return rebuilds_; }
+  // The share of the rebuilt frames' own time (their rebuild and their render) the rebuilds took:
+  // the "at most 20% of a frame's time".
+  double rebuildShare() const {
+    const double total = rebuildSeconds_ + rebuiltRenderSeconds_;
+    return total > 0 ? rebuildSeconds_ / total : 0.0;
+  }
   int refits() const { return refits_; }  // of the rebuilds, those whose accelerator was refitted
   // What the first frame's build warned about (collapsed faces, the readers' warnings).
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -80,6 +86,7 @@ class StepScenes {
   double rebuildSeconds_ = 0;
   double accelSeconds_ = 0;
   double firstBuildSeconds_ = 0;
+  double rebuiltRenderSeconds_ = 0;  // the render of the frames that rebuilt their scene
   int rebuilds_ = 0;
   int refits_ = 0;
   std::vector<std::string> warnings_;
