@@ -18,6 +18,7 @@
 #include "lancer/render/step_animation.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/result_keys.hpp"
+#include "lancer/util/check.hpp"
 #include "lancer/util/stopwatch.hpp"
 #include "scene_setup.hpp"
 
@@ -95,13 +96,9 @@ int runAnimate(const AnimateCommandOptions& options) {
   if (!options.orbit.empty())
     animation.orbitLight = parseOrbit(options.orbit, prepared.scene.appearance.lights.size());
   std::optional<StepScenes> steps;
-  if (!animation.overSteps && !prepared.meshes.empty()) {  // kept for steps, which are not asked after all
-    KdBuildOptions build;
-    build.threads = options.overrides.threads;
-    prepared.accelerator =
-        Accelerator::build(prepared.scene.geometry.positions, prepared.scene.geometry.faces,
-                           parseAccelKind(options.overrides.accel), build);
-  }
+  // The meshes were kept (and no accelerator built) exactly when the frames go over steps: both read
+  // --over and the scene's [animation] over.
+  LANCER_DCHECK(prepared.meshes.empty(), ==, !animation.overSteps);
   if (animation.overSteps) {
     steps.emplace(prepared.description, prepared.meshes, animation, parseAccelKind(options.overrides.accel),
                   options.overrides.threads);

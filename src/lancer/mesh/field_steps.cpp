@@ -196,19 +196,19 @@ std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, cons
                     steps[next]->itemCount() * static_cast<std::size_t>(steps[next]->components));
     return std::nullopt;
   }
-  // Read back when stored (the two steps of a blend are the two a stored file keeps).
-  const MeshField a = loadedField(*steps[next - 1]);
-  const MeshField b = loadedField(*steps[next]);
+  // Read back when stored (the two steps of a blend are the two a stored file keeps), else not copied.
+  std::shared_ptr<const std::vector<float>> keepA, keepB;
+  const std::vector<float>& a = fieldValues(*steps[next - 1], keepA);
+  const std::vector<float>& b = fieldValues(*steps[next], keepB);
   const auto w = static_cast<float>((t - t0) / (t1 - t0));
   MeshField blend;
-  blend.name = a.name;
-  blend.perElement = a.perElement;
-  blend.components = a.components;
+  blend.name = steps[next - 1]->name;
+  blend.perElement = steps[next - 1]->perElement;
+  blend.components = steps[next - 1]->components;
   blend.step = -1;
   blend.time = t;
-  blend.values.resize(a.values.size());
-  for (std::size_t i = 0; i < a.values.size(); ++i)
-    blend.values[i] = a.values[i] + w * (b.values[i] - a.values[i]);
+  blend.values.resize(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) blend.values[i] = a[i] + w * (b[i] - a[i]);
   return blend;
 }
 

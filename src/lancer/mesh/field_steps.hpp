@@ -3,6 +3,7 @@
 // and the scalar a colour map shows of a vector or a tensor (its magnitude, a component, von Mises).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -38,6 +39,11 @@ float componentScalar(const float* values, int components, const FieldComponent&
 // The least and greatest `component` scalar of a step's items, NaN ignored; empty (low > high) when
 // there is none. The reader's fields answer from what it saw (MeshField::ranges).
 std::pair<double, double> componentRange(const MeshField& field, const FieldComponent& component);
+
+// The field's values without a copy: its own, or, when it is stored (mesh_field.hpp), those read
+// back from its file, which `keep` holds for as long as they are used. Throws as loadedField does.
+const std::vector<float>& fieldValues(const MeshField& field,
+                                      std::shared_ptr<const std::vector<float>>& keep);
 
 // The ranges a stored step keeps: each component's, the magnitude's, von Mises' for a tensor.
 std::vector<std::pair<float, float>> componentRanges(const std::vector<float>& values, int components);

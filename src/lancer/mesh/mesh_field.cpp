@@ -1,9 +1,8 @@
 #include "lancer/mesh/mesh_field.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 
+#include "lancer/mesh/field_steps.hpp"
 #include "lancer/mesh/msh/stored_steps.hpp"
 
 namespace lancer {
@@ -17,25 +16,23 @@ float MeshField::scalar(std::size_t item) const {
 }
 
 std::pair<float, float> MeshField::range() const {
-  if (!ranges.empty()) {  // the magnitude's (a scalar's own), kept by the reader
-    const std::pair<float, float> kept = ranges.at(static_cast<std::size_t>(components));
-    return kept.first <= kept.second ? kept : std::pair{0.0f, 0.0f};
-  }
-  float low = std::numeric_limits<float>::infinity(), high = -low;
-  for (std::size_t i = 0; i < itemCount(); ++i) {
-    const float value = scalar(i);
-    if (std::isnan(value)) continue;
-    low = std::min(low, value);
-    high = std::max(high, value);
-  }
-  return low <= high ? std::pair{low, high} : std::pair{0.0f, 0.0f};
+  const auto [low, high] = componentRange(*this, FieldComponent{});  // the magnitude (a scalar's own)
+  return low <= high ? std::pair{static_cast<float>(low), static_cast<float>(high)} : std::pair{0.0f, 0.0f};
+}
+
+const std::vector<float>& fieldValues(const MeshField& field,
+                                      std::shared_ptr<const std::vector<float>>& keep) {
+  if (!field.stored) return field.values;
+  keep = field.stored->file->load(field.stored->section);
+  return *keep;
 }
 
 MeshField loadedField(const MeshField& field) {
   if (!field.stored) return field;
   MeshField copy = field;  // no values to copy: they are in the file
   copy.stored.reset();
-  copy.values = *field.stored->file->load(field.stored->section);
+  std::shared_ptr<const std::vector<float>> keep;
+  copy.values = fieldValues(field, keep);
   return copy;
 }
 

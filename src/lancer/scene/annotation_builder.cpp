@@ -5,6 +5,7 @@
 
 #include "lancer/image/color_map.hpp"
 #include "lancer/scene/arrows.hpp"
+#include "lancer/scene/color_by.hpp"
 #include "lancer/scene/isolines.hpp"
 
 namespace lancer {
@@ -63,11 +64,8 @@ std::vector<Vec3> isolineValueColors(const std::vector<float>& values, ColorMapK
                                      double high) {
   std::vector<Vec3> colors;
   colors.reserve(values.size());
-  // A constant range shows the middle of the map, as the surface colours do.
-  const double scale = high > low ? 1.0 / (high - low) : 0.0;
-  for (const float v : values)
-    colors.push_back(
-        colorMapLookup(map, scale == 0 ? 0.5f : static_cast<float>(std::clamp((v - low) * scale, 0.0, 1.0))));
+  const MapPosition position(low, high);  // as the surface colours are placed on the map
+  for (const float v : values) colors.push_back(colorMapLookup(map, position(v)));
   return colors;
 }
 

@@ -176,17 +176,12 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
   const auto [low, high] = range;
   coloring.low = low;
   coloring.high = high;
-  // A constant field (low == high) shows the middle of the map.
-  const double scale = high > low ? 1.0 / (high - low) : 0.0;
+  const MapPosition position(low, high);
   coloring.t.resize(found->itemCount());
   const auto components = static_cast<std::size_t>(found->components);
-  for (std::size_t i = 0; i < coloring.t.size(); ++i) {
-    const double value =
-        componentScalar(found->values.data() + i * components, found->components, spec.component);
-    coloring.t[i] = std::isnan(value) ? NAN
-                    : scale == 0      ? 0.5f
-                                      : static_cast<float>(std::clamp((value - low) * scale, 0.0, 1.0));
-  }
+  for (std::size_t i = 0; i < coloring.t.size(); ++i)
+    coloring.t[i] =
+        position(componentScalar(found->values.data() + i * components, found->components, spec.component));
   return coloring;
 }
 

@@ -5,6 +5,8 @@
 // the tracer maps to colours (per vertex, interpolated per pixel, or per face).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <utility>
@@ -18,6 +20,21 @@ namespace lancer {
 
 // The mesh table's `color_by`, if present (file: the scene file's path, for messages).
 std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReader& mesh);
+
+// Where a value lies on a colour map spanning [low, high]: (value - low) / (high - low) clamped to
+// [0, 1], the middle of the map when the range is one value (a constant field), NaN for NaN.
+class MapPosition {
+ public:
+  MapPosition(double low, double high) : low_(low), scale_(high > low ? 1.0 / (high - low) : 0.0) {}
+  float operator()(double value) const {
+    return std::isnan(value) ? NAN
+           : scale_ == 0     ? 0.5f
+                             : static_cast<float>(std::clamp((value - low_) * scale_, 0.0, 1.0));
+  }
+
+ private:
+  double low_, scale_;
+};
 
 // A field mapped for display: t = (scalar - low) / (high - low), clamped to [0, 1]; vector fields
 // show spec.component (their magnitude by default). NaN where the file gives no value (drawn as the map's low
