@@ -205,9 +205,10 @@ int runAnimate(const AnimateCommandOptions& options) {
   if (steps && !options.overrides.quiet && steps->rebuilds() > 0)
     std::fprintf(stderr,
                  "over steps: %d frames rebuilt their scene in %.3f s (%.3f s/frame, %.0f%% of those frames' "
-                 "time, rebuild and render), of which the accelerator %.3f s (%d refitted, %d built)\n",
+                 "time, rebuild and render; %d updated in place), of which the accelerator %.3f s (%d "
+                 "refitted, %d built)\n",
                  steps->rebuilds(), steps->rebuildSeconds(), steps->rebuildSeconds() / steps->rebuilds(),
-                 100 * steps->rebuildShare(), steps->accelSeconds(), steps->refits(),
+                 100 * steps->rebuildShare(), steps->updatesInPlace(), steps->accelSeconds(), steps->refits(),
                  steps->rebuilds() - steps->refits());
   if (options.overrides.timings && talks)
     std::fprintf(stderr, "%s\n", formatStageTimes(prepared.stages).c_str());

@@ -68,7 +68,8 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
                                                  std::vector<MeshFace>& faces,
                                                  std::vector<std::uint8_t>& edgeMasks,
                                                  std::span<const std::int32_t> facePhysicalTag,
-                                                 std::span<const FaceSide> faceSide, int threads) {
+                                                 std::span<const FaceSide> faceSide, int threads,
+                                                 OrientedShells* oriented) {
   ShellOrientationReport report;
   const std::size_t faceCount = faces.size();
   report.faceBoundsSolid.assign(faceCount, 0);
@@ -148,6 +149,21 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
     if (!faceSide.empty() && faceSide[f] == FaceSide::kInterface)
       report.reversedInterfaces.push_back(static_cast<std::uint32_t>(f));
   }
+  if (oriented) {
+    *oriented = OrientedShells{};
+    oriented->cavity = cavity;
+    oriented->kept = !(faceSide.empty() && std::find(shells.branched.begin(), shells.branched.end(), 1) !=
+                                               shells.branched.end());
+    // Shells whose faces interleave finely would cost more to keep than to find again.
+    const std::size_t maxRuns = faceCount / 8 + 64;
+    for (std::size_t f = 0; f < faceCount && oriented->kept; ++f) {
+      const std::uint32_t shell = solidShell[shells.shellOfFace[f]] ? shells.shellOfFace[f] : OrientedShells::kNotSolid;
+      if (oriented->runs.empty() || oriented->runs.back().shell != shell)
+        oriented->runs.push_back({static_cast<std::uint32_t>(f), shell});
+      oriented->kept = oriented->runs.size() <= maxRuns;
+    }
+    if (!oriented->kept) oriented->runs.clear();
+  }
   for (std::size_t s = 0; s < shells.shellCount(); ++s) {
     if (!shells.closed[s]) continue;
     ++report.closedShells;
@@ -155,6 +171,42 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
     if (cavity[s]) ++report.cavityShells;
   }
   return report;
+}
+
+bool shellsKeepOrientation(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                           const OrientedShells& oriented, int threads) {
+  if (!oriented.kept) return false;
+  const std::vector<OrientedShells::Run>& runs = oriented.runs;
+  // Chunks of faces sum the volumes of the runs they meet (one or a few each), then each shell adds
+  // up its runs'.
+  struct RunSum {
+    std::uint32_t shell;
+    double volume6;
+  };
+  const ChunkPlan plan(faces.size(), 65536);
+  std::vector<std::vector<RunSum>> chunkSums(plan.chunks);
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    auto r = static_cast<std::size_t>(
+        std::upper_bound(runs.begin(), runs.end(), begin,
+                         [](std::size_t f, const OrientedShells::Run& run) { return f < run.firstFace; }) -
+        runs.begin());
+    r = r == 0 ? 0 : r - 1;
+    for (std::size_t f = begin; f < end; ++f) {
+      while (r + 1 < runs.size() && runs[r + 1].firstFace <= f) ++r;
+      const std::uint32_t shell = runs[r].shell;
+      if (shell == OrientedShells::kNotSolid) continue;
+      std::vector<RunSum>& sums = chunkSums[chunk];
+      if (sums.empty() || sums.back().shell != shell) sums.push_back({shell, 0.0});
+      sums.back().volume6 += sixfoldConeVolume(positions, faces[f]);
+    }
+  });
+  std::vector<double> volume6(oriented.cavity.size(), 0.0);
+  std::vector<std::uint8_t> solid(oriented.cavity.size(), 0);
+  for (const std::vector<RunSum>& sums : chunkSums)
+    for (const RunSum& sum : sums) volume6[sum.shell] += sum.volume6, solid[sum.shell] = 1;
+  for (std::size_t s = 0; s < volume6.size(); ++s)
+    if (solid[s] && !(oriented.cavity[s] ? volume6[s] < 0.0 : volume6[s] > 0.0)) return false;
+  return true;
 }
 
 }  // namespace lancer

@@ -37,6 +37,23 @@ struct ShellOrientationReport {
   std::vector<std::pair<std::uint32_t, std::int32_t>> faceRegionTags;
 };
 
+// The closed shells orientClosedShellsOutward turned out of their solids, kept by an animation to
+// tell whether a later step's positions would turn them otherwise (shellsKeepOrientation).
+struct OrientedShells {
+  static constexpr std::uint32_t kNotSolid = 0xFFFFFFFFu;
+  // The faces from firstFace up to the next run's belong to `shell` (kNotSolid: to no closed,
+  // oriented shell), in face order.
+  struct Run {
+    std::uint32_t firstFace;
+    std::uint32_t shell;
+  };
+  std::vector<Run> runs;
+  std::vector<std::uint8_t> cavity;  // per shell: a cavity wall, facing into the cavity (negative volume)
+  // False when the orientation also depends on where faces lie in other ways: regions of a
+  // non-manifold surface, or shells interleaved in too many runs to keep.
+  bool kept = true;
+};
+
 // For each shell (faces joined through shared edges, see findFaceShells): when every edge is shared
 // by exactly two faces, the orientation of one face is propagated across shared edges to the whole
 // shell, and the shell is flipped as a whole so that it faces out of the material: its signed volume
@@ -55,6 +72,14 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
                                                  std::vector<MeshFace>& faces,
                                                  std::vector<std::uint8_t>& edgeMasks,
                                                  std::span<const std::int32_t> facePhysicalTag,
-                                                 std::span<const FaceSide> faceSide = {}, int threads = 0);
+                                                 std::span<const FaceSide> faceSide = {}, int threads = 0,
+                                                 OrientedShells* oriented = nullptr);
+
+// Whether `faces` (as orientClosedShellsOutward left them, with `oriented` from it) still face out of
+// their solids at new `positions`: every closed shell's signed volume has the sign it was turned to
+// (a shell the positions turned inside out, or flattened, has not). The nesting of shells is taken
+// as it was. Same result for any thread count.
+bool shellsKeepOrientation(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                           const OrientedShells& oriented, int threads = 0);
 
 }  // namespace lancer

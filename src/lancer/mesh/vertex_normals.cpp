@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <utility>
 
-#include "lancer/math/fast_acos.hpp"
+#include "lancer/mesh/corner_angles.hpp"
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/prefetch_corners.hpp"
 #include "lancer/mesh/vertex_corners.hpp"
@@ -18,73 +19,88 @@ namespace lancer {
 
 namespace {
 
-// The interior angles of a face at its corners: the weights of the face in its vertices' normals.
-// Each edge is normalised once and shared by the two corners at its ends (the edge into a corner is
-// the reverse of the one out of the previous corner, and negation is exact, so the angles are the
-// same bits as from each corner's own two edges).
-std::array<float, 4> cornerAngles(std::span<const Vec3> positions, const MeshFace& face) {
-  const int n = face.cornerCount();
-  Vec3 out[4];  // out[c]: unit edge from corner c to corner c + 1
-  for (int c = 0; c < n; ++c)
-    out[c] = normalize(positions[face.vertex[(c + 1) % n]] - positions[face.vertex[c]]);
-  std::array<float, 4> angle{0, 0, 0, 0};
-  for (int c = 0; c < n; ++c)
-    angle[c] = fastAcos(std::clamp(dot(out[c], -out[(c + n - 1) % n]), -1.0f, 1.0f));
-  return angle;
-}
-
 // Items per chunk of the parallel loops: big enough that a chunk outweighs handing it out.
 constexpr std::size_t kGrain = 16384;
+// Faces whose corner angles are computed together when asked one by one, in order.
+constexpr std::size_t kAngleBlock = 32;
 
-}  // namespace
+// The two tests of the smoothing: the crease itself, and half of it with a margin.
+struct SmoothingAngles {
+  float cosCrease;
+  // Half the crease angle less 1 mrad: two normals within it of a third are within the crease
+  // angle of each other with a margin (2 mrad) thousands of times the error of a float dot product.
+  // (Not for tiny crease angles, nor from 180 degrees on, where the cosine stops falling: there
+  // every vertex takes the pairwise test.)
+  float cosHalfCreaseWithMargin;
+  explicit SmoothingAngles(float creaseAngleDegrees)
+      : cosCrease(std::cos(creaseAngleDegrees * std::numbers::pi_v<float> / 180.0f)) {
+    constexpr float kMarginRadians = 1e-3f;
+    const float halfCrease = creaseAngleDegrees * std::numbers::pi_v<float> / 360.0f - kMarginRadians;
+    cosHalfCreaseWithMargin = halfCrease <= 0.0f || creaseAngleDegrees >= 180.0f ? 2.0f : std::cos(halfCrease);
+  }
+};
 
-CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<const MeshFace> faces,
-                                   std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
-                                   int threads, std::vector<Vec3>* unitFaceNormals) {
-  const std::size_t faceCount = faces.size();
-  const std::size_t vertexCount = positions.size();
-  // Per face, in face order (sequential reads, shared out by chunks of faces): its unit normal and
-  // the weights of its corners.
-  std::vector<Vec3> unitFaceNormal = vectorOnHugePages<Vec3>(faceCount);
-  std::vector<std::array<float, 4>> cornerWeight = vectorOnHugePages<std::array<float, 4>>(faceCount);
-  parallelFor(faceCount, threads, kGrain, [&](std::size_t f) {
-    prefetchCorners(positions.data(), faces, f + kPrefetchFacesAhead);
-    unitFaceNormal[f] = faceNormal(positions, faces[f]);
-    cornerWeight[f] = cornerAngles(positions, faces[f]);
-  });
+// Each vertex's weighted sum of its faces' normals, added in face order (the order of a walk over
+// the vertex's faces, so the same bits), and whether all its faces are of the first one's group
+// and within half the crease angle of its normal: then every pair of them is within the crease
+// angle and the vertex is smooth, its sum its one normal (the common case).
+struct VertexSum {
+  Vec3 sum{0, 0, 0};
+  Vec3 firstNormal{0, 0, 0};
+  std::int32_t firstTag = 0;
+  std::uint8_t faces = 0;       // 0, 1, or 2 for more
+  std::uint8_t withinHalf = 1;  // every face so far in the first one's group and half crease
+};
 
-  const float cosCrease = std::cos(creaseAngleDegrees * std::numbers::pi_v<float> / 180.0f);
-  // Half the crease angle less 1 mrad: two normals within it of a third are within the crease angle
-  // of each other with a margin (2 mrad) thousands of times the error of a float dot product. (Not
-  // for tiny crease angles, nor from 180 degrees on, where the cosine stops falling: there every
-  // vertex takes the pairwise test.)
-  constexpr float kMarginRadians = 1e-3f;
-  const float halfCrease = creaseAngleDegrees * std::numbers::pi_v<float> / 360.0f - kMarginRadians;
-  const float cosHalfCreaseWithMargin =
-      halfCrease <= 0.0f || creaseAngleDegrees >= 180.0f ? 2.0f : std::cos(halfCrease);
+// A vertex whose faces must be compared pair by pair, and one whose faces' normals cancel out:
+// both walk their faces.
+bool mustWalk(const VertexSum& at) { return at.faces == 2 && !at.withinHalf; }
+bool cancels(const VertexSum& at) {
+  const Vec3 normal = normalize(at.sum);
+  return !(dot(normal, normal) > 0.5f);
+}
 
-  // Scatter-add in face order: each vertex's weighted sum of its faces' normals, added in face
-  // order (the order of a walk over the vertex's faces, so the same bits), and whether all its
-  // faces are of the first one's group and within half the crease angle of its normal: then every
-  // pair of them is within the crease angle and the vertex is smooth, its sum its one normal (the
-  // common case). Shared out by vertex ranges (vertex_ranges.hpp): the faces are read in order,
-  // only the vertex records are written out of order, and no one walks a vertex's faces.
-  struct VertexSum {
-    Vec3 sum{0, 0, 0};
-    Vec3 firstNormal{0, 0, 0};
-    std::int32_t firstTag = 0;
-    std::uint8_t faces = 0;       // 0, 1, or 2 for more
-    std::uint8_t withinHalf = 1;  // every face so far in the first one's group and half crease
-  };
+// What the smoothing reads per face: unit normals, and the corners' weights, kept per face or
+// (cornerWeight null) computed again from the positions where needed (the same bits).
+struct FaceTerms {
+  const Vec3* unitFaceNormal;
+  const std::array<float, 4>* cornerWeight;
+  std::span<const std::int32_t> facePhysicalTag;
+  SmoothingAngles angles;
+  std::span<const Vec3> positions;
+  std::span<const MeshFace> faces;
+  float weight(std::uint32_t face, int corner) const {
+    if (cornerWeight) return cornerWeight[face][corner];
+    std::array<float, 4> angles;
+    cornerAnglesOf(positions, faces.subspan(face, 1), &angles);
+    return angles[corner];
+  }
+};
+
+// The sums of the mesh's vertices (faces index them from vertexBase on). Shared out by vertex
+// ranges (vertex_ranges.hpp): the faces are read in order, only the vertex records are written out
+// of order, and no one walks a vertex's faces. termsForRange(firstVertex, endVertex) makes what
+// gives that range face f's unit normal and corner weights, asked in face order.
+template <typename TermsForRange>
+std::vector<VertexSum> sumVertexNormals(std::span<const MeshFace> faces, std::uint32_t vertexBase,
+                                        std::size_t vertexCount, std::span<const std::int32_t> facePhysicalTag,
+                                        const SmoothingAngles& angles, int threads, TermsForRange&& termsForRange) {
   std::vector<VertexSum> vertexSum = vectorOnHugePages<VertexSum>(vertexCount);
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
-    for (std::size_t f = 0; f < faceCount; ++f) {
-      prefetchCorners(vertexSum.data(), faces, f + kPrefetchFacesAhead);
+    auto faceTerms = termsForRange(firstVertex, endVertex);
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      if (f + kPrefetchFacesAhead < faces.size())  // prefetchCorners, the faces' vertices less vertexBase
+        for (int c = 0; c < 3; ++c)
+          __builtin_prefetch(vertexSum.data() + (faces[f + kPrefetchFacesAhead].vertex[c] - vertexBase));
       const MeshFace& face = faces[f];
-      const Vec3 normal = unitFaceNormal[f];
+      bool touches = false;
+      for (int c = 0; c < face.cornerCount(); ++c)
+        touches = touches || (face.vertex[c] - vertexBase >= firstVertex && face.vertex[c] - vertexBase < endVertex);
+      if (!touches) continue;
+      const auto [normal, weight] = faceTerms(f);
       const std::int32_t tag = facePhysicalTag[f];
       for (int c = 0; c < face.cornerCount(); ++c) {
-        const std::uint32_t v = face.vertex[c];
+        const std::uint32_t v = face.vertex[c] - vertexBase;
         if (v < firstVertex || v >= endVertex) continue;
         VertexSum& at = vertexSum[v];
         if (at.faces == 0) {
@@ -93,21 +109,105 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
           at.faces = 1;
         } else {
           at.faces = 2;
-          at.withinHalf &= static_cast<std::uint8_t>(tag == at.firstTag &&
-                                                     dot(at.firstNormal, normal) >= cosHalfCreaseWithMargin);
+          at.withinHalf &=
+              static_cast<std::uint8_t>(tag == at.firstTag && dot(at.firstNormal, normal) >= angles.cosHalfCreaseWithMargin);
         }
-        at.sum += normal * cornerWeight[f][c];
+        at.sum += normal * weight[c];
       }
     }
   });
+  return vertexSum;
+}
+
+// Appends the normals of a vertex with faces to `normals`: one, its sum, when the vertex is smooth
+// (returns true: every corner takes it), else one per set of corners smoothed together, each corner
+// of `row` (its corners, face << 2 | corner; needed when it must walk or its faces cancel) told its
+// normal's index by setCorner(code, index) (returns false).
+template <typename SetCorner>
+bool appendVertexNormals(const VertexSum& at, std::span<const std::uint32_t> row, const FaceTerms& terms,
+                         std::vector<Vec3>& normals, SetCorner&& setCorner) {
+  auto faceOf = [&](std::uint32_t slot) { return row[slot] >> 2; };
+  auto weightOf = [&](std::uint32_t slot) { return terms.weight(row[slot] >> 2, static_cast<int>(row[slot] & 3u)); };
+  const std::span<const std::int32_t> tags = terms.facePhysicalTag;
+  const Vec3* unitFaceNormal = terms.unitFaceNormal;
+  const float cosCrease = terms.angles.cosCrease;
+  const bool walk = mustWalk(at);
+  const auto end = static_cast<std::uint32_t>(row.size());
+  auto everyPairSmooth = [&] {
+    for (std::uint32_t a = 0; a < end; ++a) {
+      const std::uint32_t f = faceOf(a);
+      for (std::uint32_t b = a + 1; b < end; ++b) {
+        const std::uint32_t g = faceOf(b);
+        // dot is symmetric to the bit, so this one test decides the pair for both corners.
+        if (g != f && (tags[g] != tags[f] || dot(unitFaceNormal[f], unitFaceNormal[g]) < cosCrease)) return false;
+      }
+    }
+    return true;
+  };
+  // Smooth vertex: every corner gets the same sum, in the same order, as the loop below would give
+  // it: one normal instead of one per corner.
+  if (!walk || everyPairSmooth()) {
+    const Vec3 normal = normalize(at.sum);
+    if (dot(normal, normal) > 0.5f) {
+      normals.push_back(normal);
+      return true;
+    }
+  }
+  // Cancelling neighbours (a sum of zero) come here too, and walk the faces after all.
+  const std::size_t firstNormal = normals.size();
+  for (std::uint32_t slot = 0; slot < end; ++slot) {
+    const std::uint32_t f = faceOf(slot);
+    const Vec3 nf = unitFaceNormal[f];
+    Vec3 sum{0, 0, 0};
+    for (std::uint32_t other = 0; other < end; ++other) {
+      const std::uint32_t g = faceOf(other);
+      if (g != f && (tags[g] != tags[f] || dot(nf, unitFaceNormal[g]) < cosCrease)) continue;
+      sum += unitFaceNormal[g] * weightOf(other);
+    }
+    Vec3 normal = normalize(sum);
+    if (!(dot(normal, normal) > 0.5f)) normal = nf;  // cancelling neighbours: keep the face's own
+    // Corners with the same smoothing set produce bit-identical sums: share one normal.
+    auto index = static_cast<std::uint32_t>(normals.size());
+    for (std::size_t k = firstNormal; k < normals.size(); ++k) {
+      if (normals[k] == normal) {
+        index = static_cast<std::uint32_t>(k);
+        break;
+      }
+    }
+    if (index == normals.size()) normals.push_back(normal);
+    setCorner(row[slot], index);
+  }
+  return false;
+}
+
+}  // namespace
+
+CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                                   std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
+                                   int threads, std::vector<Vec3>* unitFaceNormals, CornerNormalWalks* walked) {
+  const std::size_t faceCount = faces.size();
+  const std::size_t vertexCount = positions.size();
+  // Per face, in face order (sequential reads, shared out by chunks of faces): its unit normal and
+  // the weights of its corners.
+  std::vector<Vec3> unitFaceNormal = vectorOnHugePages<Vec3>(faceCount);
+  std::vector<std::array<float, 4>> cornerWeight = vectorOnHugePages<std::array<float, 4>>(faceCount);
+  parallelChunks(ChunkPlan(faceCount, kGrain), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    cornerAnglesOf(positions, faces.subspan(begin, end - begin), cornerWeight.data() + begin);
+    for (std::size_t f = begin; f < end; ++f) {
+      prefetchCorners(positions.data(), faces, f + kPrefetchFacesAhead);
+      unitFaceNormal[f] = faceNormal(positions, faces[f]);
+    }
+  });
+  const FaceTerms terms{unitFaceNormal.data(), cornerWeight.data(), facePhysicalTag,
+                        SmoothingAngles(creaseAngleDegrees), positions, faces};
+  const std::vector<VertexSum> vertexSum = sumVertexNormals(
+      faces, 0, vertexCount, facePhysicalTag, terms.angles, threads,
+      [&](std::size_t, std::size_t) {
+        return [&](std::size_t f) { return std::pair{unitFaceNormal[f], cornerWeight[f]}; };
+      });
 
   // The other vertices walk their faces (face order): the pairwise test, and where it fails, one
   // sum per corner over the faces smoothed with its own; so do vertices whose faces cancel out.
-  auto mustWalk = [&](const VertexSum& at) { return at.faces == 2 && !at.withinHalf; };
-  auto cancels = [](const VertexSum& at) {
-    const Vec3 normal = normalize(at.sum);
-    return !(dot(normal, normal) > 0.5f);
-  };
   std::vector<std::uint8_t> walks(vertexCount, 0);
   parallelFor(vertexCount, threads, kGrain, [&](std::size_t v) {
     const VertexSum& at = vertexSum[v];
@@ -117,7 +217,11 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
   if (std::find(walks.begin(), walks.end(), 1) != walks.end())
     vertexCorners = findVertexCorners(faces, vertexCount, threads, walks);  // rows of those only
   const std::vector<std::uint32_t>& rowStart = vertexCorners.rowStart;
-  const std::vector<std::uint32_t>& incidentCorner = vertexCorners.corner;  // face << 2 | corner
+  auto rowOf = [&](std::size_t v) {
+    return rowStart.empty() ? std::span<const std::uint32_t>{}
+                            : std::span<const std::uint32_t>(vertexCorners.corner)
+                                  .subspan(rowStart[v], rowStart[v + 1] - rowStart[v]);
+  };
 
   CornerNormals result;
   result.faceCorner = vectorOnHugePages<std::array<std::uint32_t, 4>>(faceCount, {0, 0, 0, 0});
@@ -132,65 +236,11 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
     std::vector<Vec3>& normals = chunkNormals[chunk];
     normals.reserve(endVertex - firstVertex);
     for (auto v = static_cast<std::uint32_t>(firstVertex); v < endVertex; ++v) {
-      const VertexSum& at = vertexSum[v];
-      if (at.faces == 0) continue;
-      const bool walk = mustWalk(at);
-      const std::uint32_t first = walk ? rowStart[v] : 0, end = walk ? rowStart[v + 1] : 0;
-      auto faceOf = [&](std::uint32_t slot) { return incidentCorner[slot] >> 2; };
-      auto weightOf = [&](std::uint32_t slot) {
-        const std::uint32_t code = incidentCorner[slot];
-        return cornerWeight[code >> 2][code & 3u];
-      };
-      auto everyPairSmooth = [&] {
-        for (std::uint32_t a = first; a < end; ++a) {
-          const std::uint32_t f = faceOf(a);
-          for (std::uint32_t b = a + 1; b < end; ++b) {
-            const std::uint32_t g = faceOf(b);
-            // dot is symmetric to the bit, so this one test decides the pair for both corners.
-            if (g != f && (facePhysicalTag[g] != facePhysicalTag[f] ||
-                           dot(unitFaceNormal[f], unitFaceNormal[g]) < cosCrease))
-              return false;
-          }
-        }
-        return true;
-      };
-      // Smooth vertex: every corner gets the same sum, in the same order, as the loop below would
-      // give it: one normal instead of one per corner.
-      if (!walk || everyPairSmooth()) {
-        const Vec3 normal = normalize(at.sum);
-        if (dot(normal, normal) > 0.5f) {
-          vertexNormal[v] = static_cast<std::uint32_t>(normals.size());
-          normals.push_back(normal);
-          continue;
-        }
-      }
-      // Cancelling neighbours (a sum of zero) come here too, and walk the faces after all.
-      const std::uint32_t walkFirst = rowStart[v], walkEnd = rowStart[v + 1];
-      const std::size_t firstNormal = normals.size();
-      for (std::uint32_t slot = walkFirst; slot < walkEnd; ++slot) {
-        const std::uint32_t f = faceOf(slot);
-        const Vec3 nf = unitFaceNormal[f];
-        Vec3 sum{0, 0, 0};
-        for (std::uint32_t other = walkFirst; other < walkEnd; ++other) {
-          const std::uint32_t g = faceOf(other);
-          if (g != f && (facePhysicalTag[g] != facePhysicalTag[f] || dot(nf, unitFaceNormal[g]) < cosCrease))
-            continue;
-          sum += unitFaceNormal[g] * weightOf(other);
-        }
-        Vec3 normal = normalize(sum);
-        if (!(dot(normal, normal) > 0.5f)) normal = nf;  // cancelling neighbours: keep the face's own
-        // Corners with the same smoothing set produce bit-identical sums: share one normal.
-        auto index = static_cast<std::uint32_t>(normals.size());
-        for (std::size_t k = firstNormal; k < normals.size(); ++k) {
-          if (normals[k] == normal) {
-            index = static_cast<std::uint32_t>(k);
-            break;
-          }
-        }
-        if (index == normals.size()) normals.push_back(normal);
-        const std::uint32_t code = incidentCorner[slot];
-        result.faceCorner[code >> 2][code & 3u] = index;
-      }
+      if (vertexSum[v].faces == 0) continue;
+      const bool one = appendVertexNormals(
+          vertexSum[v], walks[v] ? rowOf(v) : std::span<const std::uint32_t>{}, terms, normals,
+          [&](std::uint32_t code, std::uint32_t index) { result.faceCorner[code >> 2][code & 3u] = index; });
+      if (one) vertexNormal[v] = static_cast<std::uint32_t>(normals.size() - 1);
     }
   });
   // Concatenate, and turn each chunk's local indices into indices into the whole list.
@@ -207,10 +257,7 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
         continue;
       }
       if (chunkBase[chunk] == 0 || vertexSum[v].faces == 0) continue;
-      for (std::uint32_t slot = rowStart[v]; slot < rowStart[v + 1]; ++slot) {
-        const std::uint32_t code = incidentCorner[slot];
-        result.faceCorner[code >> 2][code & 3u] += chunkBase[chunk];
-      }
+      for (const std::uint32_t code : rowOf(v)) result.faceCorner[code >> 2][code & 3u] += chunkBase[chunk];
     }
   });
   // The corners of smooth vertices, in face order.
@@ -222,8 +269,124 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
       if (index != kPerCorner) result.faceCorner[f][c] = index;
     }
   });
+  if (walked) {  // the walked vertices' rows, packed
+    *walked = CornerNormalWalks{};
+    walked->rowStart.push_back(0);
+    for (std::size_t v = 0; v < vertexCount; ++v) {
+      if (!walks[v]) continue;
+      const std::span<const std::uint32_t> row = rowOf(v);
+      walked->vertex.push_back(static_cast<std::uint32_t>(v));
+      walked->corner.insert(walked->corner.end(), row.begin(), row.end());
+      walked->rowStart.push_back(static_cast<std::uint32_t>(walked->corner.size()));
+    }
+  }
   if (unitFaceNormals) *unitFaceNormals = std::move(unitFaceNormal);
   return result;
+}
+
+bool updateCornerNormals(std::span<const Vec3> positions, const CornerNormalsSpan& mesh,
+                         std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
+                         const CornerNormalWalks& walks, int threads, std::span<Vec3> normals,
+                         std::span<const std::array<std::uint32_t, 4>> faceCorner,
+                         std::span<Vec3> unitFaceNormals) {
+  const std::span<const MeshFace> faces = mesh.faces;
+  const std::size_t faceCount = faces.size();
+  const std::size_t vertexCount = mesh.vertexCount;
+  // One pass: each vertex range sums the faces that touch it, computing their normals and weights
+  // (again, for a face across two ranges); the range of a face's first vertex writes its normal.
+  std::atomic<bool> ok{true};
+  const FaceTerms terms{unitFaceNormals.data(), nullptr, facePhysicalTag, SmoothingAngles(creaseAngleDegrees),
+                        positions, faces};
+  const std::vector<VertexSum> vertexSum = sumVertexNormals(
+      faces, mesh.vertexBase, vertexCount, facePhysicalTag, terms.angles, threads,
+      [&](std::size_t firstVertex, std::size_t endVertex) {
+        // The angles of the block of faces around the one asked, computed together.
+        std::array<std::array<float, 4>, kAngleBlock> blockAngles;
+        std::size_t blockFirst = faceCount;
+        return [&, firstVertex, endVertex, blockAngles, blockFirst](std::size_t f) mutable {
+          const MeshFace& face = faces[f];
+          const Vec3 normal = faceNormal(positions, face);
+          const std::uint32_t owner = face.vertex[0] - mesh.vertexBase;
+          if (owner >= firstVertex && owner < endVertex) {
+            unitFaceNormals[f] = normal;
+            if (isDegenerateFace(positions.data(), face)) ok = false;
+          }
+          if (f < blockFirst || f >= blockFirst + kAngleBlock) {
+            blockFirst = f;
+            cornerAnglesOf(positions, faces.subspan(f, std::min(kAngleBlock, faceCount - f)), blockAngles.data());
+          }
+          return std::pair{normal, blockAngles[f - blockFirst]};
+        };
+      });
+  if (!ok) return false;
+  // The normals lie in vertex order (computeCornerNormals's chunks, concatenated): none for a
+  // vertex without faces, one for a smooth vertex, and for a walked one as many as its corners'
+  // indices span. Each chunk of vertices counts its own first, then writes from its offset.
+  auto rowOf = [&](std::size_t k) {
+    return std::span<const std::uint32_t>(walks.corner).subspan(walks.rowStart[k], walks.rowStart[k + 1] - walks.rowStart[k]);
+  };
+  auto firstWalked = [&](std::size_t vertex) {
+    return static_cast<std::size_t>(std::lower_bound(walks.vertex.begin(), walks.vertex.end(), vertex) -
+                                    walks.vertex.begin());
+  };
+  // The span of indices a walked vertex's corners hold (local to the mesh's normals).
+  auto heldIndices = [&](std::span<const std::uint32_t> row) {
+    std::uint32_t low = 0xFFFFFFFFu, high = 0;
+    for (const std::uint32_t code : row) {
+      const std::uint32_t index = faceCorner[code >> 2][code & 3u] - mesh.normalBase;
+      low = std::min(low, index);
+      high = std::max(high, index);
+    }
+    return std::pair{low, high};
+  };
+  const ChunkPlan plan(vertexCount, kGrain);
+  std::vector<std::uint32_t> chunkBase(plan.chunks + 1, 0);
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t firstVertex, std::size_t endVertex) {
+    std::uint32_t count = 0;
+    std::size_t k = firstWalked(firstVertex);
+    for (std::size_t v = firstVertex; v < endVertex; ++v) {
+      const VertexSum& at = vertexSum[v];
+      if (k < walks.vertex.size() && walks.vertex[k] == v) {
+        const auto [low, high] = heldIndices(rowOf(k++));
+        count += high - low + 1;
+      } else if (at.faces != 0) {
+        if (mustWalk(at) || cancels(at)) ok = false;  // its smoothing changed: a crease appeared
+        ++count;
+      }
+    }
+    chunkBase[chunk + 1] = count;
+  });
+  if (!ok) return false;
+  for (std::size_t k = 0; k < plan.chunks; ++k) chunkBase[k + 1] += chunkBase[k];
+  if (chunkBase[plan.chunks] != normals.size()) return false;
+
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t firstVertex, std::size_t endVertex) {
+    std::uint32_t next = chunkBase[chunk];
+    std::size_t k = firstWalked(firstVertex);
+    std::vector<Vec3> own;  // a walked vertex's normals
+    for (std::size_t v = firstVertex; v < endVertex; ++v) {
+      const VertexSum& at = vertexSum[v];
+      if (k < walks.vertex.size() && walks.vertex[k] == v) {
+        const std::span<const std::uint32_t> row = rowOf(k++);
+        const auto [low, high] = heldIndices(row);
+        own.clear();
+        bool same = low == next;
+        const bool one = appendVertexNormals(at, row, terms, own, [&](std::uint32_t code, std::uint32_t index) {
+          same = same && faceCorner[code >> 2][code & 3u] - mesh.normalBase == next + index;
+        });
+        if (!same || own.size() != high - low + 1 || (one && high != low)) {
+          ok = false;
+          return;
+        }
+        std::copy(own.begin(), own.end(), normals.begin() + next);
+        next += static_cast<std::uint32_t>(own.size());
+      } else if (at.faces != 0) {
+        normals[next++] = normalize(at.sum);
+      }
+    }
+  });
+
+  return ok;
 }
 
 }  // namespace lancer

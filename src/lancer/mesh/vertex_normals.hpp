@@ -16,12 +16,44 @@ struct CornerNormals {
   std::vector<std::array<std::uint32_t, 4>> faceCorner;  // per face, per corner: index into normals
 };
 
+// The vertices whose faces computeCornerNormals walked one by one (a crease, a group border, faces
+// whose normals cancel), with the corners on each: what updateCornerNormals needs to walk them
+// again at new positions without finding every vertex's faces.
+struct CornerNormalWalks {
+  std::vector<std::uint32_t> vertex;    // increasing
+  std::vector<std::uint32_t> rowStart;  // vertex.size() + 1 offsets into corner
+  std::vector<std::uint32_t> corner;    // per walked vertex, its corners: face << 2 | corner, face order
+};
+
 // Two faces sharing a vertex are smoothed together when the angle between their normals is at most
 // creaseAngleDegrees and they have the same physical tag (Thurmer & Wuthrich 1998 angle weights).
 // On `threads` threads (0: every core); the result is the same for any number. The unit face
-// normals it works from (faceNormal of face_geometry.hpp) go to `unitFaceNormals` when given.
+// normals it works from (faceNormal of face_geometry.hpp) go to `unitFaceNormals` when given, the
+// walked vertices to `walks`.
 CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                                    std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
-                                   int threads = 0, std::vector<Vec3>* unitFaceNormals = nullptr);
+                                   int threads = 0, std::vector<Vec3>* unitFaceNormals = nullptr,
+                                   CornerNormalWalks* walks = nullptr);
+
+// Where a mesh's faces, vertices and normals lie in arrays shared with other meshes (a scene's):
+// its faces index vertices from vertexBase on, its corners normals from normalBase on.
+struct CornerNormalsSpan {
+  std::span<const MeshFace> faces;
+  std::uint32_t vertexBase = 0;
+  std::size_t vertexCount = 0;
+  std::uint32_t normalBase = 0;
+};
+
+// The normals computeCornerNormals gave `mesh.faces` (with `walks`), again for the vertices at new
+// `positions`, written over `normals` (the normals' values; their indices in faceCorner stay) and
+// `unitFaceNormals` (per face of the mesh): the same bits computeCornerNormals would give, as long
+// as every vertex is smoothed as before. False, with the arrays partly written, when some vertex's
+// smoothing changed (a new crease, faces that now cancel) or a face has no normal (degenerate):
+// compute them again then.
+bool updateCornerNormals(std::span<const Vec3> positions, const CornerNormalsSpan& mesh,
+                         std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
+                         const CornerNormalWalks& walks, int threads, std::span<Vec3> normals,
+                         std::span<const std::array<std::uint32_t, 4>> faceCorner,
+                         std::span<Vec3> unitFaceNormals);
 
 }  // namespace lancer

@@ -10,7 +10,9 @@
 #include "lancer/image/text.hpp"
 #include "lancer/mesh/field_steps.hpp"
 #include "lancer/mesh/msh/stored_steps.hpp"
+#include "lancer/scene/annotation_builder.hpp"
 #include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/scene_update.hpp"
 #include "lancer/scene/warp.hpp"
 #include "lancer/util/stopwatch.hpp"
 
@@ -100,12 +102,42 @@ void StepScenes::buildAt(double time) {
   const Stopwatch stopwatch;
   description_.when = StepSelection{std::nullopt, time, "the animation over steps"};
   const bool first = !scene_.has_value();
+  const bool warped = anyWarp(description_);
+  KdBuildOptions options;
+  options.threads = threads_;
+  // A build is the frame's peak of memory: the steps a stored file keeps go before it (the next
+  // frame reads its steps again, which only the first frame and the rare rebuilds pay).
+  const auto forgetKeptSteps = [this] {
+    for (const Mesh& mesh : meshes_)
+      for (const MeshField& field : mesh.fields)
+        if (field.isStored()) field.stored->file->forgetKept();
+  };
+  // A warped step with the same faces: its vertices, normals and colours are written over the
+  // previous frame's scene and the tree is refitted (nothing as large as the scene is allocated).
+  if (!first && warped && layout_ && accelerator_) {
+    builtTime_.reset();
+    if (updateSceneAt(*scene_, *layout_, description_, meshes_, threads_)) {
+      const Stopwatch refit;
+      const SceneGeometry& geometry = scene_->geometry;
+      if (accelerator_->update(geometry.positions, geometry.faces, options, forgetKeptSteps)) ++refits_;
+      accelSeconds_ += refit.seconds();
+      rebuildSeconds_ += stopwatch.seconds();
+      ++rebuilds_;
+      ++updatesInPlace_;
+      builtTime_ = time;
+      return;
+    }
+  }
   // The previous frame's scene goes before the next one is built (two scenes of a 1M-face mesh at
   // once would raise the peak by one scene); the digest of its faces stays, to tell whether the
   // next has the same.
   scene_.reset();
+  layout_.reset();
   builtTime_.reset();
-  Scene next = buildSceneAt(description_, meshes_, threads_);
+  SceneLayout layout;
+  const bool keepLayout = warped && !hasArrows(description_);  // arrows are built per step
+  Scene next = buildSceneAt(description_, meshes_, threads_, nullptr, keepLayout ? &layout : nullptr);
+  if (keepLayout) layout_ = std::move(layout);
   // Every frame is framed alike: the camera and the orbit see the bounds of the whole animation.
   SceneGeometry& geometry = next.geometry;
   geometry.bounds = Aabb{};
@@ -116,7 +148,6 @@ void StepScenes::buildAt(double time) {
   // Colours alone change when nothing is warped: the geometry, so the accelerator, stays. A warped
   // mesh with the same faces (none collapsed, none turned) moved its vertices only: the accelerator
   // is refitted where it can be (the BVH), else built again.
-  const bool warped = anyWarp(description_);
   const std::pair<std::uint64_t, std::uint64_t> digest = facesDigest(geometry.faces);
   const bool sameFaces = !first && digest == facesDigest_;
   facesDigest_ = digest;
@@ -124,15 +155,6 @@ void StepScenes::buildAt(double time) {
   const SceneGeometry& built = scene_->geometry;  // `geometry` was moved with `next`
   if (first || warped) {
     const Stopwatch build;
-    KdBuildOptions options;
-    options.threads = threads_;
-    // A build is the frame's peak of memory: the steps a stored file keeps go before it (the next
-    // frame reads its steps again, which only the first frame and the rare rebuilds pay).
-    const auto forgetKeptSteps = [this] {
-      for (const Mesh& mesh : meshes_)
-        for (const MeshField& field : mesh.fields)
-          if (field.isStored()) field.stored->file->forgetKept();
-    };
     if (sameFaces && accelerator_) {
       if (accelerator_->update(built.positions, built.faces, options, forgetKeptSteps)) ++refits_;
     } else {

@@ -15,6 +15,7 @@
 
 #include "lancer/accel/accelerator.hpp"
 #include "lancer/render/animation.hpp"
+#include "lancer/scene/scene_layout.hpp"
 
 namespace lancer {
 
@@ -63,6 +64,8 @@ class StepScenes {
     return total > 0 ? rebuildSeconds_ / total : 0.0;
   }
   int refits() const { return refits_; }  // of the rebuilds, those whose accelerator was refitted
+  // Of the rebuilds, those that wrote the step over the previous frame's scene (updateSceneAt).
+  int updatesInPlace() const { return updatesInPlace_; }
   // What the first frame's build warned about (collapsed faces, the readers' warnings).
   const std::vector<std::string>& warnings() const { return warnings_; }
   std::size_t faceCount() const { return scene_ ? scene_->geometry.faces.size() : 0; }
@@ -80,6 +83,7 @@ class StepScenes {
   StepFrames frames_;
   Aabbd framing_;  // world bounds of every frame's geometry
   std::optional<Scene> scene_;
+  std::optional<SceneLayout> layout_;  // of the scene built last, when a mesh is warped
   std::optional<Accelerator> accelerator_;
   std::optional<double> builtTime_;
   std::pair<std::uint64_t, std::uint64_t> facesDigest_{};  // of the faces of the scene built last
@@ -89,6 +93,7 @@ class StepScenes {
   double rebuiltRenderSeconds_ = 0;  // the render of the frames that rebuilt their scene
   int rebuilds_ = 0;
   int refits_ = 0;
+  int updatesInPlace_ = 0;
   std::vector<std::string> warnings_;
 };
 

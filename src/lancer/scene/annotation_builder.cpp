@@ -40,6 +40,39 @@ std::vector<std::optional<ColorBy>> sharedColorRanges(const SceneDescription& de
   return specs;
 }
 
+namespace {
+
+// Records a coloured mesh whose vertices run from vertexBase to vertexEnd and faces from faceBase to
+// faceEnd: its faces get the map, its vertices the field's t (the mesh's vertices are the
+// scene's from vertexBase on, in order). Earlier meshes' entries are filled with "not coloured"
+// first.
+void appendFieldColoring(std::optional<FieldColors>& fields, const FieldColoring& coloring,
+                         std::uint32_t vertexBase, std::size_t vertexEnd, std::size_t faceBase,
+                         std::size_t faceEnd) {
+  if (!fields) fields.emplace();
+  const int perFace = coloring.perFace ? FieldColors::kPerFace : 0;
+  fields->faceColorMap.resize(faceBase, 0);
+  fields->faceColorMap.resize(faceEnd,
+                              static_cast<std::uint8_t>((1 + static_cast<int>(coloring.map)) | perFace));
+  // The mesh's faces and vertices are the scene's from the bases on, in order.
+  std::vector<float>& t = coloring.perFace ? fields->faceFieldT : fields->vertexFieldT;
+  t.resize(coloring.perFace ? faceBase : vertexBase, std::nanf(""));
+  t.insert(t.end(), coloring.t.begin(), coloring.t.end());
+  t.resize(coloring.perFace ? faceEnd : vertexEnd, std::nanf(""));
+}
+
+// Meshes after the last coloured one are not coloured.
+void finishFieldColors(Scene& scene, std::optional<FieldColors> fields) {
+  if (!fields) return;
+  const SceneGeometry& geometry = scene.geometry;
+  fields->faceColorMap.resize(geometry.faces.size(), 0);
+  if (!fields->vertexFieldT.empty()) fields->vertexFieldT.resize(geometry.positions.size(), std::nanf(""));
+  if (!fields->faceFieldT.empty()) fields->faceFieldT.resize(geometry.faces.size(), std::nanf(""));
+  scene.fieldColors = std::move(fields);
+}
+
+}  // namespace
+
 void appendLegendAndBands(FieldColors& fields, const ColorBy& spec, const FieldColoring& coloring,
                           std::size_t faceBase, std::size_t faceEnd) {
   const std::string title = spec.title.value_or(spec.field);
@@ -89,6 +122,40 @@ void finishIsolines(Scene& scene, std::optional<IsolineOverlay> overlay) {
   overlay->faceStyle.resize(scene.geometry.faces.size(), 0);
   overlay->vertexValue.resize(scene.geometry.positions.size(), std::nanf(""));
   scene.isolines = std::move(overlay);
+}
+
+void annotateScene(Scene& scene, const StepSelection& when, const std::vector<EntryAnnotation>& entries) {
+  scene.fieldColors.reset();
+  scene.isolines.reset();
+  std::optional<FieldColors> fields;
+  std::optional<IsolineOverlay> isolines;
+  for (const EntryAnnotation& entry : entries) {
+    if (entry.coloring) {
+      if (entry.colorBy->paintsSurface)
+        appendFieldColoring(fields, *entry.coloring, entry.vertexBase, entry.vertexEnd, entry.faceBase,
+                            entry.faceEnd);
+      if (!fields) fields.emplace();
+      appendLegendAndBands(*fields, *entry.colorBy, *entry.coloring, entry.faceBase, entry.faceEnd);
+    }
+    if (!entry.instance->isolines) continue;
+    const IsolineSpec& spec = *entry.instance->isolines;
+    std::optional<std::pair<double, double>> colorRange;  // gmsh's iso-values span the colours' range
+    if (entry.coloring && entry.colorBy->field == spec.field && entry.colorBy->component == spec.component)
+      colorRange = std::pair{entry.coloring->low, entry.coloring->high};
+    ResolvedIsolines resolved = resolveIsolines(spec, *entry.fields, when, colorRange);
+    std::vector<Vec3> valueColors;  // color = "map": over the colours' range, else over the lines'
+    if (spec.colorFromMap && !resolved.values.empty()) {
+      const auto [low, high] =
+          colorRange.value_or(std::pair<double, double>{resolved.values.front(), resolved.values.back()});
+      valueColors = isolineValueColors(resolved.values, entry.colorBy ? entry.colorBy->map : ColorMapKind::Viridis,
+                                       low, high);
+    }
+    appendIsolines(isolines, spec, std::move(resolved), entry.vertexBase, entry.faceBase, entry.faceEnd,
+                   entry.vertexEnd, std::move(valueColors));
+  }
+  if (fields) finishBands(*fields, scene.geometry.faces.size());
+  finishFieldColors(scene, std::move(fields));
+  finishIsolines(scene, std::move(isolines));
 }
 
 bool hasArrows(const SceneDescription& description) {

@@ -37,6 +37,20 @@ void appendIsolines(std::optional<IsolineOverlay>& overlay, const IsolineSpec& s
                     std::size_t faceEnd, std::size_t vertexEnd, std::vector<Vec3> valueColors = {});
 void finishIsolines(Scene& scene, std::optional<IsolineOverlay> overlay);
 
+// A mesh's part in the scene's annotations: what it is coloured by and where its vertices and faces
+// lie in the scene.
+struct EntryAnnotation {
+  const MeshInstance* instance = nullptr;
+  const FieldColoring* coloring = nullptr;  // null: not coloured
+  const ColorBy* colorBy = nullptr;         // what `coloring` was resolved from
+  const Mesh* fields = nullptr;             // the mesh's views (isolines)
+  std::uint32_t vertexBase = 0;
+  std::size_t vertexEnd = 0, faceBase = 0, faceEnd = 0;
+};
+// The scene's field colours, legends, bands and isolines, the meshes' in order (`when`: the step
+// shown). Replaces those the scene had.
+void annotateScene(Scene& scene, const StepSelection& when, const std::vector<EntryAnnotation>& entries);
+
 // Whether some mesh asks for arrows.
 bool hasArrows(const SceneDescription& description);
 // Turns each mesh's `arrows` into a mesh instance of its own (after the others): the arrows built

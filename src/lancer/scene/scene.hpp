@@ -20,6 +20,8 @@
 
 namespace lancer {
 
+struct SceneLayout;
+
 // A light in scene space. Every light has a `position` the Whitted model lights with (a point light's
 // own, an area light's centre, a point far towards the sun); the path tracer samples its shape.
 struct SceneLight {
@@ -152,6 +154,9 @@ struct Scene {
   std::vector<std::string> warnings;
 };
 
+// The floor's plane in the scene: at its height, else touching the lowest vertex along its normal.
+ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const SceneGeometry& geometry);
+
 // Reads every mesh of the description (errors point at the [[mesh]] entry or into the mesh file).
 // The preparation runs on `threads` threads (0: every core), with the same result for any number.
 // `times`, when given, gets the stages' wall seconds (read, orient, normals, scene).
@@ -165,7 +170,9 @@ std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threa
 // The scene at description.when from meshes read once and kept (they hold every step of their views):
 // each call copies their geometry, warps it and colours it for that step. An animation over steps
 // calls it per frame.
+// `layout`, when given, gets where each mesh lies in the scene (scene_update.hpp writes a later
+// warped step over the scene with it).
 Scene buildSceneAt(const SceneDescription& description, const std::vector<Mesh>& meshes, int threads = 0,
-                   StageTimes* times = nullptr);
+                   StageTimes* times = nullptr, SceneLayout* layout = nullptr);
 
 }  // namespace lancer

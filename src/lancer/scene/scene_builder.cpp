@@ -19,6 +19,7 @@
 #include "lancer/scene/instance_transform.hpp"
 #include "lancer/scene/scene.hpp"
 #include "lancer/scene/scene_entries.hpp"
+#include "lancer/scene/scene_layout.hpp"
 #include "lancer/scene/warp.hpp"
 #include "lancer/util/check.hpp"
 #include "lancer/util/huge_pages.hpp"
@@ -88,7 +89,7 @@ struct PlacedMesh {
 };
 
 PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTransform& transform,
-                     const Vec3d& origin, int threads, StageTimes& times) {
+                     const Vec3d& origin, int threads, StageTimes& times, SceneEntryLayout* layout) {
   const Stopwatch orient;
   PlacedMesh placed;
   placed.positions.resize(mesh.positions.size());
@@ -107,7 +108,8 @@ PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTra
   // Refraction and caps tell entering from leaving by the side a ray hits, so solids must face out
   // of their material (cavity walls into the cavity).
   placed.orientation = orientClosedShellsOutward(placed.positions, mesh.faces, placed.edgeMasks,
-                                                 mesh.facePhysicalTag, mesh.volumeSides.side, threads);
+                                                 mesh.facePhysicalTag, mesh.volumeSides.side, threads,
+                                                 layout ? &layout->shells : nullptr);
   for (const std::uint32_t f : placed.orientation.reversedInterfaces) {
     std::swap(mesh.facePhysicalTag[f], mesh.volumeSides.outerPhysicalTag[f]);
     std::swap(mesh.faceEntityTag[f], mesh.volumeSides.outerEntityTag[f]);
@@ -115,7 +117,8 @@ PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTra
   times.add("orient", orient.seconds());  // shells, orientation, nesting, interfaces
   const Stopwatch normals;
   placed.normals = computeCornerNormals(placed.positions, mesh.faces, mesh.facePhysicalTag,
-                                        instance.smoothAngleDegrees, threads, &placed.faceNormals);
+                                        instance.smoothAngleDegrees, threads, &placed.faceNormals,
+                                        layout ? &layout->walks : nullptr);
   times.add("normals", normals.seconds());
   return placed;
 }
@@ -229,24 +232,6 @@ void appendEdges(EdgeOverlay& overlay, const MeshInstance& instance, Mesh& mesh,
   overlay.faceEdgeStyle.resize(overlay.faceEdgeStyle.size() + mesh.faces.size(), edgeStyle);
 }
 
-// Records a coloured mesh whose vertices start at vertexBase and faces at faceBase and run to the
-// scene's last ones: its faces get the map, its vertices the field's t (the mesh's vertices are the
-// scene's from vertexBase on, in order). Earlier meshes' entries are filled with "not coloured"
-// first.
-void appendFieldColoring(const SceneGeometry& geometry, std::optional<FieldColors>& fields,
-                         const FieldColoring& coloring, std::uint32_t vertexBase, std::size_t faceBase) {
-  if (!fields) fields.emplace();
-  const int perFace = coloring.perFace ? FieldColors::kPerFace : 0;
-  fields->faceColorMap.resize(faceBase, 0);
-  fields->faceColorMap.resize(geometry.faces.size(),
-                              static_cast<std::uint8_t>((1 + static_cast<int>(coloring.map)) | perFace));
-  // The mesh's faces and vertices are the scene's from the bases on, in order.
-  std::vector<float>& t = coloring.perFace ? fields->faceFieldT : fields->vertexFieldT;
-  t.resize(coloring.perFace ? faceBase : vertexBase, std::nanf(""));
-  t.insert(t.end(), coloring.t.begin(), coloring.t.end());
-  t.resize(coloring.perFace ? geometry.faces.size() : geometry.positions.size(), std::nanf(""));
-}
-
 // The planes of a mesh whose faces start at faceBase and run to the scene's last face.
 void appendMeshClips(SceneClipping& clipping, const SceneGeometry& geometry,
                      const std::vector<ClipSettings>& clips, std::size_t faceBase) {
@@ -261,16 +246,6 @@ void appendMeshClips(SceneClipping& clipping, const SceneGeometry& geometry,
   }
   range.planeEnd = static_cast<std::uint32_t>(sets.planes.size());
   sets.ranges.push_back(range);
-}
-
-// Meshes after the last coloured one are not coloured.
-void finishFieldColors(Scene& scene, std::optional<FieldColors> fields) {
-  if (!fields) return;
-  const SceneGeometry& geometry = scene.geometry;
-  fields->faceColorMap.resize(geometry.faces.size(), 0);
-  if (!fields->vertexFieldT.empty()) fields->vertexFieldT.resize(geometry.positions.size(), std::nanf(""));
-  if (!fields->faceFieldT.empty()) fields->faceFieldT.resize(geometry.faces.size(), std::nanf(""));
-  scene.fieldColors = std::move(fields);
 }
 
 // Kept when some mesh draws its edges, with the corners where drawn edges end, so that faces
@@ -295,19 +270,6 @@ void finishEdgeOverlay(Scene& scene, EdgeOverlay overlay) {
   LANCER_DCHECK(overlay.faceEdgeMask.size(), ==, faces.size());
   LANCER_DCHECK(overlay.faceEdgeStyle.size(), ==, faces.size());
   scene.edges = std::move(overlay);
-}
-
-ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const SceneGeometry& geometry) {
-  ShadowCatcher catcher;
-  catcher.normal = toFloat(floor.normal);
-  if (floor.height) {
-    catcher.offset = static_cast<float>(*floor.height - dot(geometry.origin, floor.normal));
-  } else {  // touch the lowest vertex along the normal, so the part stands on it
-    float lowest = std::numeric_limits<float>::infinity();
-    for (const Vec3& p : geometry.positions) lowest = std::min(lowest, dot(p, catcher.normal));
-    catcher.offset = std::isfinite(lowest) ? lowest : 0.0f;
-  }
-  return catcher;
 }
 
 constexpr float kPi = 3.14159265358979f;
@@ -394,6 +356,19 @@ SceneEnvironment sceneEnvironment(const EnvironmentSettings& settings, const Vec
 
 }  // namespace
 
+ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const SceneGeometry& geometry) {
+  ShadowCatcher catcher;
+  catcher.normal = toFloat(floor.normal);
+  if (floor.height) {
+    catcher.offset = static_cast<float>(*floor.height - dot(geometry.origin, floor.normal));
+  } else {  // touch the lowest vertex along the normal, so the part stands on it
+    float lowest = std::numeric_limits<float>::infinity();
+    for (const Vec3& p : geometry.positions) lowest = std::min(lowest, dot(p, catcher.normal));
+    catcher.offset = std::isfinite(lowest) ? lowest : 0.0f;
+  }
+  return catcher;
+}
+
 Scene buildScene(const SceneDescription& description, int threads, StageTimes* times) {
   return buildScene(description, readSceneMeshes(description, threads, times), threads, times);
 }
@@ -402,7 +377,7 @@ namespace {
 
 Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry> entries,
                     std::vector<Material> materials, std::vector<std::string> warnings, int threads,
-                    StageTimes& times) {
+                    StageTimes& times, SceneLayout* layout = nullptr) {
   const Stopwatch whole;
   const double secondsBefore = times.totalSeconds();
   Scene scene;
@@ -425,54 +400,44 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
 
   // Gathered mesh by mesh, kept at the end when some mesh uses them.
   EdgeOverlay overlay;
-  std::optional<FieldColors> fields;
-  std::optional<IsolineOverlay> isolines;
+  std::vector<EntryAnnotation> annotations;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const MeshInstance& instance = entries[i].instance;
     Mesh& mesh = entries[i].mesh;
     scene.warnings.insert(scene.warnings.end(), mesh.source.warnings.begin(), mesh.source.warnings.end());
     const auto groupMaterials = resolveGroupMaterials(instance, mesh);
-    PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin, threads, times);
-    const std::optional<FieldColoring>& coloring = entries[i].coloring;
+    SceneEntryLayout* entryLayout = layout ? &layout->entries.emplace_back() : nullptr;
+    PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin, threads, times, entryLayout);
 
     const auto vertexBase = static_cast<std::uint32_t>(geometry.positions.size());
     const std::size_t faceBase = geometry.faces.size();
+    if (entryLayout) {
+      entryLayout->meshIndex = entries[i].meshIndex;
+      entryLayout->undeformedCopy = entries[i].undeformedCopy;
+      entryLayout->vertexBase = vertexBase;
+      entryLayout->vertexCount = static_cast<std::uint32_t>(placed.positions.size());
+      entryLayout->faceBase = static_cast<std::uint32_t>(faceBase);
+      entryLayout->faceCount = static_cast<std::uint32_t>(mesh.faces.size());
+      entryLayout->normalBase = static_cast<std::uint32_t>(geometry.cornerNormals.normals.size());
+      entryLayout->collapsedFaces = entries[i].collapsedFaces;
+      entryLayout->reversedInterfaces = placed.orientation.reversedInterfaces;
+      entryLayout->featureEdges = instance.edges && instance.edges->featuresOnly;
+    }
     appendGeometry(geometry, mesh.faces, placed, threads);
     appendAppearance(appearance, faceBase, instance, mesh, placed.orientation, groupMaterials,
                      instance.shading.value_or(description.render.shading));
     appendEdges(overlay, instance, mesh, placed.edgeMasks);
-    if (coloring) {
-      if (entries[i].colorBy->paintsSurface)
-        appendFieldColoring(geometry, fields, *coloring, vertexBase, faceBase);
-      if (!fields) fields.emplace();
-      appendLegendAndBands(*fields, *entries[i].colorBy, *coloring, faceBase, geometry.faces.size());
-    }
-    if (instance.isolines) {
-      const IsolineSpec& spec = *instance.isolines;
-      const std::optional<ColorBy>& colorBy = entries[i].colorBy;
-      std::optional<std::pair<double, double>> colorRange;  // gmsh's iso-values span the colours' range
-      if (coloring && colorBy && colorBy->field == spec.field && colorBy->component == spec.component)
-        colorRange = std::pair{coloring->low, coloring->high};
-      ResolvedIsolines resolved =
-          resolveIsolines(spec, entries[i].fields ? *entries[i].fields : mesh, description.when, colorRange);
-      std::vector<Vec3> valueColors;  // color = "map": over the colours' range, else over the lines'
-      if (spec.colorFromMap && !resolved.values.empty()) {
-        const auto [low, high] =
-            colorRange.value_or(std::pair<double, double>{resolved.values.front(), resolved.values.back()});
-        valueColors =
-            isolineValueColors(resolved.values, colorBy ? colorBy->map : ColorMapKind::Viridis, low, high);
-      }
-      appendIsolines(isolines, spec, std::move(resolved), vertexBase, faceBase, geometry.faces.size(),
-                     geometry.positions.size(), std::move(valueColors));
-    }
+    const std::optional<FieldColoring>& coloring = entries[i].coloring;
+    annotations.push_back({&instance, coloring ? &*coloring : nullptr,
+                           entries[i].colorBy ? &*entries[i].colorBy : nullptr,
+                           entries[i].fields ? entries[i].fields : &mesh, vertexBase, geometry.positions.size(),
+                           faceBase, geometry.faces.size()});
     if (!instance.clips.empty() && !mesh.faces.empty())
       appendMeshClips(scene.clipping, geometry, instance.clips, faceBase);
   }
   if (!appearance.faceOuterMaterial.empty())
     appearance.faceOuterMaterial.resize(geometry.faces.size(), SceneAppearance::kNoMaterial);
-  if (fields) finishBands(*fields, geometry.faces.size());
-  finishFieldColors(scene, std::move(fields));
-  finishIsolines(scene, std::move(isolines));
+  annotateScene(scene, description.when, annotations);
   finishEdgeOverlay(scene, std::move(overlay));
 
   // Every per-face array in step with the faces (the tracer indexes them all by face).
@@ -525,7 +490,7 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, 
 }
 
 Scene buildSceneAt(const SceneDescription& description, const std::vector<Mesh>& meshes, int threads,
-                   StageTimes* timesOrNull) {
+                   StageTimes* timesOrNull, SceneLayout* layout) {
   StageTimes unused;
   StageTimes& times = timesOrNull ? *timesOrNull : unused;
   // Arrows of the step the scene names: meshes of their own, holding their one field (the meshes as
@@ -546,8 +511,9 @@ Scene buildSceneAt(const SceneDescription& description, const std::vector<Mesh>&
   std::vector<std::string> warnings;
   std::vector<SceneEntry> entries =
       sceneEntries(withArrows, std::move(geometry), fields, materials, warnings);
+  if (layout) *layout = SceneLayout{};
   return assembleScene(withArrows, std::move(entries), std::move(materials), std::move(warnings), threads,
-                       times);
+                       times, layout);
 }
 
 }  // namespace lancer

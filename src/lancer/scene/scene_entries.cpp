@@ -59,24 +59,21 @@ Mesh geometryOf(const Mesh& mesh) {
   return copy;
 }
 
-// The meshes at description.when: colours resolved, warps applied (undeformed copies added after
-// their mesh). `fields[i]` holds mesh i's views; null: mesh i itself (read for this scene alone).
-std::vector<SceneEntry> sceneEntries(const SceneDescription& description, std::vector<Mesh> meshes,
-                                     const std::vector<const Mesh*>& fields, std::vector<Material>& materials,
-                                     std::vector<std::string>& warnings) {
-  // Colours first: meshes colouring by one field and map without a range of their own share the
-  // union of their ranges, so that a colour (and one legend) means one value on all of them.
-  std::vector<std::optional<ColorBy>> specs(meshes.size());
-  std::vector<std::optional<FieldColoring>> colorings(meshes.size());
-  for (std::size_t i = 0; i < meshes.size(); ++i) {
+SceneColorings resolveSceneColorings(const SceneDescription& description,
+                                     const std::vector<const Mesh*>& sources) {
+  SceneColorings result;
+  std::vector<std::optional<ColorBy>>& specs = result.specs;
+  std::vector<std::optional<FieldColoring>>& colorings = result.colorings;
+  specs.resize(sources.size());
+  colorings.resize(sources.size());
+  for (std::size_t i = 0; i < sources.size(); ++i) {
     specs[i] = description.meshes[i].colorBy;
-    if (specs[i])
-      colorings[i] = resolveColorBy(*specs[i], fields[i] ? *fields[i] : meshes[i], description.when);
+    if (specs[i]) colorings[i] = resolveColorBy(*specs[i], *sources[i], description.when);
   }
-  for (std::size_t i = 0; i < meshes.size(); ++i) {
+  for (std::size_t i = 0; i < sources.size(); ++i) {
     if (!specs[i] || specs[i]->range || specs[i]->perStepRange) continue;
     std::pair<double, double> range{colorings[i]->low, colorings[i]->high};
-    for (std::size_t j = 0; j < meshes.size(); ++j)
+    for (std::size_t j = 0; j < sources.size(); ++j)
       if (specs[j] && !specs[j]->range && !specs[j]->perStepRange && specs[j]->field == specs[i]->field &&
           specs[j]->map == specs[i]->map) {
         range.first = std::min(range.first, colorings[j]->low);
@@ -85,21 +82,34 @@ std::vector<SceneEntry> sceneEntries(const SceneDescription& description, std::v
     if (range.first != colorings[i]->low || range.second != colorings[i]->high) {
       ColorBy shared = *specs[i];
       shared.range = range;
-      colorings[i] = resolveColorBy(shared, fields[i] ? *fields[i] : meshes[i], description.when);
+      colorings[i] = resolveColorBy(shared, *sources[i], description.when);
     }
   }
+  return result;
+}
+
+// The meshes at description.when: colours resolved, warps applied (undeformed copies added after
+// their mesh). `fields[i]` holds mesh i's views; null: mesh i itself (read for this scene alone).
+std::vector<SceneEntry> sceneEntries(const SceneDescription& description, std::vector<Mesh> meshes,
+                                     const std::vector<const Mesh*>& fields, std::vector<Material>& materials,
+                                     std::vector<std::string>& warnings) {
+  std::vector<const Mesh*> sources(meshes.size());
+  for (std::size_t i = 0; i < meshes.size(); ++i) sources[i] = fields[i] ? fields[i] : &meshes[i];
+  SceneColorings resolved = resolveSceneColorings(description, sources);
   std::vector<SceneEntry> entries;
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const MeshInstance& instance = description.meshes[i];
-    SceneEntry entry{instance, std::move(meshes[i]), std::move(colorings[i]), specs[i], fields[i]};
+    SceneEntry entry{instance, std::move(meshes[i]), std::move(resolved.colorings[i]), resolved.specs[i],
+                     fields[i], i};
     const Mesh& source = fields[i] ? *fields[i] : entry.mesh;
     std::optional<SceneEntry> undeformed;
     if (instance.warp) {
       if (instance.undeformed != UndeformedStyle::None)
         undeformed = SceneEntry{undeformedInstance(instance, materials), geometryOf(entry.mesh), std::nullopt,
-                                std::nullopt, nullptr};
+                                std::nullopt, nullptr, i, true};
       std::vector<float>* perFace = entry.coloring && entry.coloring->perFace ? &entry.coloring->t : nullptr;
       const WarpReport report = warpMesh(entry.mesh, source, *instance.warp, description.when, perFace);
+      entry.collapsedFaces = report.collapsedFaces;
       if (report.collapsedFaces)
         warnings.push_back(formatInputWarning(
             instance.warp->where,

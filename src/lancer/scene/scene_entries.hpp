@@ -2,6 +2,8 @@
 // step shown (meshes colouring by one field share one range), its warp, and undeformed copies.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,7 +22,19 @@ struct SceneEntry {
   std::optional<FieldColoring> coloring;
   std::optional<ColorBy> colorBy;  // what `coloring` was resolved from, its range shared (legends)
   const Mesh* fields = nullptr;    // the mesh's views when `mesh` is a copy without them
+  std::size_t meshIndex = 0;       // of its mesh in the description
+  bool undeformedCopy = false;
+  std::uint64_t collapsedFaces = 0;  // dropped by the warp
 };
+
+// Each mesh's colours at description.when, from sources[i]'s views for description.meshes[i]:
+// meshes colouring by one field and map without a range of their own share the union of their
+// ranges, so that a colour (and one legend) means one value on all of them.
+struct SceneColorings {
+  std::vector<std::optional<ColorBy>> specs;
+  std::vector<std::optional<FieldColoring>> colorings;
+};
+SceneColorings resolveSceneColorings(const SceneDescription& description, const std::vector<const Mesh*>& sources);
 
 // Everything of a mesh but its fields: what a step's scene is built from (the fields stay with the
 // mesh as read, which holds every step).

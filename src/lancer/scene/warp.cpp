@@ -42,8 +42,8 @@ void removeMeshFaces(Mesh& mesh, const std::vector<std::uint8_t>& removed,
   if (values) perFaceValues->resize(kept);
 }
 
-WarpReport warpMesh(Mesh& mesh, const Mesh& fields, const WarpSettings& warp, const StepSelection& when,
-                    std::vector<float>* perFaceValues) {
+MeshField warpDisplacement(const Mesh& fields, const WarpSettings& warp, const StepSelection& when,
+                           std::size_t vertexCount) {
   const std::string& file = fields.source.path;
   const std::vector<const MeshField*> steps = viewSteps(fields, warp.field);
   if (steps.empty())
@@ -67,20 +67,25 @@ WarpReport warpMesh(Mesh& mesh, const Mesh& fields, const WarpSettings& warp, co
                                  "of 3 (a displacement); colour by this view instead",
                                  warp.field, file, first.components, first.components == 1 ? "" : "s"));
   std::string problem;
-  const std::optional<MeshField> step = viewAt(steps, when, problem);
+  std::optional<MeshField> step = viewAt(steps, when, problem);
   if (!step)
     throw InputError(warp.where, fmt::format("warp field \"{}\" {} in {}{}", warp.field, problem, file,
                                              when.where.empty() ? "" : fmt::format(" ({})", when.where)));
-  if (step->values.size() != mesh.positions.size() * 3)
-    throw InputError(
-        warp.where,
-        fmt::format("warp field \"{}\" step {} in {} has values for {} nodes, the mesh "
-                    "has {}: the view belongs to another mesh",
-                    warp.field, step->step, file, step->values.size() / 3, mesh.positions.size()));
+  if (step->values.size() != vertexCount * 3)
+    throw InputError(warp.where, fmt::format("warp field \"{}\" step {} in {} has values for {} nodes, the mesh "
+                                             "has {}: the view belongs to another mesh",
+                                             warp.field, step->step, file, step->values.size() / 3, vertexCount));
+  return std::move(*step);
+}
+
+WarpReport warpMesh(Mesh& mesh, const Mesh& fields, const WarpSettings& warp, const StepSelection& when,
+                    std::vector<float>* perFaceValues) {
+  const std::string& file = fields.source.path;
+  const MeshField step = warpDisplacement(fields, warp, when, mesh.positions.size());
   std::uint64_t missing = 0;
   const auto factor = static_cast<float>(warp.factor);
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    const float* d = step->values.data() + 3 * v;
+    const float* d = step.values.data() + 3 * v;
     if (std::isnan(d[0]) || std::isnan(d[1]) || std::isnan(d[2])) {
       ++missing;
       continue;
@@ -92,7 +97,7 @@ WarpReport warpMesh(Mesh& mesh, const Mesh& fields, const WarpSettings& warp, co
         warp.where,
         fmt::format("warp field \"{}\" step {} in {} gives no vector for {} of the mesh's {} nodes; "
                     "a warp needs one for every node (save the view on all nodes in gmsh)",
-                    warp.field, step->step, file, missing, mesh.positions.size()));
+                    warp.field, step.step, file, missing, mesh.positions.size()));
   WarpReport report;
   std::vector<std::uint8_t> collapsed(mesh.faces.size(), 0);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {

@@ -17,6 +17,11 @@ struct WarpReport {
   std::uint64_t collapsedFaces = 0;  // dropped: degenerate once deformed
 };
 
+// The view warp.field of `fields` at `when`, checked as warpMesh says, for a mesh of vertexCount
+// vertices.
+MeshField warpDisplacement(const Mesh& fields, const WarpSettings& warp, const StepSelection& when,
+                           std::size_t vertexCount);
+
 // Moves `mesh`'s vertices by warp.factor times the view warp.field of `fields` (the mesh as read,
 // which holds every step) at `when`, then drops the faces that collapsed; `perFaceValues`, when
 // given, holds values per face (an element field's colours) and loses the same entries. Throws

@@ -27,52 +27,51 @@ bool validFace(const MeshFace& face, std::size_t vertexCount) {
   return true;
 }
 
-// Rewrites `triangles` (a quad's halves neighbours, (0,1,2) first) from `positions`; false when a face
-// is out of range or, with `noSlivers`, a triangle is now a sliver.
-bool regather(std::vector<PackedTriangle>& triangles, std::span<const Vec3> positions,
-              std::span<const MeshFace> faces, bool noSlivers, int threads) {
-  // Which half each triangle is, read before any is rewritten.
-  std::vector<std::uint8_t> half(triangles.size());
-  for (std::size_t i = 1; i < triangles.size(); ++i) half[i] = triangles[i - 1].face == triangles[i].face;
-  std::atomic<bool> ok{true};
-  parallelFor(triangles.size(), threads, 1 << 14, [&](std::size_t i) {
+// Rewrites triangles[first, first + count) (a quad's halves neighbours, (0,1,2) first: a triangle
+// of the same face as the one before it is the second half) from `positions`, extending `box` by
+// them; false when a face is out of range or, with `noSlivers`, a triangle is now a sliver.
+bool regather(PackedTriangle* triangles, std::size_t count, std::span<const Vec3> positions,
+              std::span<const MeshFace> faces, bool noSlivers, Aabb& box) {
+  std::uint32_t previous = 0xFFFFFFFFu;
+  for (std::size_t i = 0; i < count; ++i) {
     const std::uint32_t id = triangles[i].face;
-    if (id >= faces.size() || !validFace(faces[id], positions.size()) || (half[i] && !faces[id].isQuad())) {
-      ok = false;
-      return;
-    }
-    const PackedTriangle tri = triangleOf(positions, faces[id], id, half[i]);
-    if (noSlivers && isSliverTriangle(tri.v0, tri.v1, tri.v2)) ok = false;
+    const bool half = id == previous;
+    previous = id;
+    if (id >= faces.size() || !validFace(faces[id], positions.size()) || (half && !faces[id].isQuad()))
+      return false;
+    const PackedTriangle tri = triangleOf(positions, faces[id], id, half);
+    if (noSlivers && isSliverTriangle(tri.v0, tri.v1, tri.v2)) return false;
     triangles[i] = tri;
-  });
-  return ok;
+    box.extend(tri.v0);
+    box.extend(tri.v1);
+    box.extend(tri.v2);
+  }
+  return true;
 }
 
 }  // namespace
 
 bool Bvh::refit(std::span<const Vec3> positions, std::span<const MeshFace> faces, int threads) {
-  if (!regather(triangles_, positions, faces, true, threads) ||
-      !regather(slivers_, positions, faces, false, threads))
-    return false;
-  // Leaf boxes first, node by node on every thread; then the inner children, backwards.
+  // Leaf by leaf on every thread: the triangles gathered again and the leaf's box from them while
+  // they are at hand; then the inner children, backwards.
+  std::atomic<bool> ok{true};
   parallelFor(nodes_.size(), threads, 256, [&](std::size_t n) {
     BvhNode& node = nodes_[n];
     for (int k = 0; k < BvhNode::kWidth; ++k) {
       const std::uint32_t child = node.child[k];
       if (child == BvhNode::kEmpty || !BvhNode::isLeaf(child)) continue;
       Aabb box;
-      const PackedTriangle* tri = triangles_.data() + BvhNode::leafFirst(child);
-      for (std::uint32_t i = 0; i < BvhNode::leafCount(child); ++i) {
-        box.extend(tri[i].v0);
-        box.extend(tri[i].v1);
-        box.extend(tri[i].v2);
-      }
+      if (!regather(triangles_.data() + BvhNode::leafFirst(child), BvhNode::leafCount(child), positions, faces,
+                    true, box))
+        ok = false;
       for (int a = 0; a < 3; ++a) {
         node.lower[a][k] = box.lower[a] + 0.0f;
         node.upper[a][k] = box.upper[a] + 0.0f;
       }
     }
   });
+  Aabb sliverBox;
+  if (!ok || !regather(slivers_.data(), slivers_.size(), positions, faces, false, sliverBox)) return false;
   for (std::size_t n = nodes_.size(); n-- > 0;) {
     BvhNode& node = nodes_[n];
     for (int k = 0; k < BvhNode::kWidth; ++k) {
@@ -90,12 +89,14 @@ bool Bvh::refit(std::span<const Vec3> positions, std::span<const MeshFace> faces
       }
     }
   }
-  Aabb box;
-  for (const PackedTriangle& tri : triangles_) {
-    box.extend(tri.v0);
-    box.extend(tri.v1);
-    box.extend(tri.v2);
-  }
+  // The root's children hold the boxes of every leaf's triangles; the slivers lie outside the tree.
+  Aabb box = sliverBox;
+  if (!nodes_.empty())
+    for (int k = 0; k < BvhNode::kWidth; ++k)
+      if (nodes_[0].child[k] != BvhNode::kEmpty) {
+        box.extend(Vec3{nodes_[0].lower[0][k], nodes_[0].lower[1][k], nodes_[0].lower[2][k]});
+        box.extend(Vec3{nodes_[0].upper[0][k], nodes_[0].upper[1][k], nodes_[0].upper[2][k]});
+      }
   setBounds(box);
   stats_.sahCost = sahCost();
   return true;

@@ -1,0 +1,120 @@
+#include "lancer/scene/scene_update.hpp"
+
+#include <atomic>
+#include <span>
+
+#include "lancer/scene/annotation_builder.hpp"
+#include "lancer/scene/instance_transform.hpp"
+#include "lancer/scene/scene_entries.hpp"
+#include "lancer/scene/warp.hpp"
+#include "lancer/util/parallel_for.hpp"
+#include "lancer/util/stopwatch.hpp"
+
+namespace lancer {
+namespace {
+
+// Moves the mesh's vertices in the scene to where its warp puts them at description.when, as the
+// build places them (warped in the mesh's float frame, then transformed in double about the
+// scene's origin). False when a vertex has no displacement or leaves the floats.
+bool warpInPlace(SceneGeometry& geometry, const SceneEntryLayout& entry, const MeshInstance& instance,
+                 const Mesh& mesh, const StepSelection& when, int threads) {
+  if (entry.vertexCount != mesh.positions.size()) return false;
+  const MeshField step = warpDisplacement(mesh, *instance.warp, when, mesh.positions.size());
+  const InstanceTransform transform(instance);
+  const auto factor = static_cast<float>(instance.warp->factor);
+  std::atomic<bool> finite{true};
+  parallelChunks(ChunkPlan(mesh.positions.size(), 16384), threads,
+                 [&](std::size_t, std::size_t begin, std::size_t end) {
+                   bool ok = true;
+                   for (std::size_t v = begin; v < end; ++v) {
+                     const float* d = step.values.data() + 3 * v;
+                     const Vec3 moved = mesh.positions[v] + factor * Vec3{d[0], d[1], d[2]};
+                     const Vec3 placed = toFloat(transform.apply(mesh.origin + toDouble(moved)) - geometry.origin);
+                     ok = ok && isFinite(moved) && isFinite(placed);
+                     geometry.positions[entry.vertexBase + v] = placed;
+                   }
+                   if (!ok) finite = false;
+                 });
+  return finite;
+}
+
+// The mesh's normals at its new positions; false when its faces would be oriented or smoothed
+// otherwise.
+bool normalsInPlace(SceneGeometry& geometry, const SceneEntryLayout& entry, std::size_t normalEnd,
+                    const MeshInstance& instance, const Mesh& mesh, int threads) {
+  const std::span<const MeshFace> faces = std::span<const MeshFace>(geometry.faces).subspan(entry.faceBase, entry.faceCount);
+  if (mesh.facePhysicalTag.size() != entry.faceCount) return false;
+  if (!shellsKeepOrientation(geometry.positions, faces, entry.shells, threads)) return false;
+  // The orientation gave reversed interfaces their outer volume's tag (the smoothing compares tags).
+  std::span<const std::int32_t> tags = mesh.facePhysicalTag;
+  std::vector<std::int32_t> swapped;
+  if (!entry.reversedInterfaces.empty()) {
+    swapped = mesh.facePhysicalTag;
+    for (const std::uint32_t f : entry.reversedInterfaces) swapped[f] = mesh.volumeSides.outerPhysicalTag[f];
+    tags = swapped;
+  }
+  CornerNormals& normals = geometry.cornerNormals;
+  return updateCornerNormals(
+      geometry.positions, CornerNormalsSpan{faces, entry.vertexBase, entry.vertexCount, entry.normalBase}, tags,
+      instance.smoothAngleDegrees, entry.walks, threads,
+      std::span<Vec3>(normals.normals).subspan(entry.normalBase, normalEnd - entry.normalBase),
+      std::span<const std::array<std::uint32_t, 4>>(normals.faceCorner).subspan(entry.faceBase, entry.faceCount),
+      std::span<Vec3>(geometry.faceNormals).subspan(entry.faceBase, entry.faceCount));
+}
+
+}  // namespace
+
+bool updateSceneAt(Scene& scene, const SceneLayout& layout, const SceneDescription& description,
+                   const std::vector<Mesh>& meshes, int threads, StageTimes* timesOrNull) {
+  StageTimes unused;
+  StageTimes& times = timesOrNull ? *timesOrNull : unused;
+  if (layout.entries.empty() || hasArrows(description) || meshes.size() != description.meshes.size())
+    return false;
+  auto warped = [&](const SceneEntryLayout& entry) {
+    return !entry.undeformedCopy && description.meshes[entry.meshIndex].warp.has_value();
+  };
+  for (const SceneEntryLayout& entry : layout.entries) {
+    if (entry.meshIndex >= meshes.size()) return false;
+    if (warped(entry) && (entry.collapsedFaces || entry.featureEdges || !entry.shells.kept)) return false;
+  }
+  SceneGeometry& geometry = scene.geometry;
+  const Stopwatch warpClock;
+  for (const SceneEntryLayout& entry : layout.entries)
+    if (warped(entry) && !warpInPlace(geometry, entry, description.meshes[entry.meshIndex],
+                                      meshes[entry.meshIndex], description.when, threads))
+      return false;
+  times.add("warp", warpClock.seconds());
+
+  const Stopwatch normalsClock;
+  for (std::size_t k = 0; k < layout.entries.size(); ++k) {
+    const SceneEntryLayout& entry = layout.entries[k];
+    const std::size_t normalEnd =
+        k + 1 < layout.entries.size() ? layout.entries[k + 1].normalBase : geometry.cornerNormals.normals.size();
+    if (warped(entry) && !normalsInPlace(geometry, entry, normalEnd, description.meshes[entry.meshIndex],
+                                         meshes[entry.meshIndex], threads))
+      return false;
+  }
+  times.add("normals", normalsClock.seconds());
+
+  // The colours, legends and isolines of every mesh at the new step (undeformed copies have none).
+  const Stopwatch annotateClock;
+  std::vector<const Mesh*> sources;
+  for (const Mesh& mesh : meshes) sources.push_back(&mesh);
+  const SceneColorings colorings = resolveSceneColorings(description, sources);
+  std::vector<EntryAnnotation> annotations;
+  for (const SceneEntryLayout& entry : layout.entries) {
+    if (entry.undeformedCopy) continue;
+    const std::size_t i = entry.meshIndex;
+    const std::optional<FieldColoring>& coloring = colorings.colorings[i];
+    annotations.push_back({&description.meshes[i], coloring ? &*coloring : nullptr,
+                           colorings.specs[i] ? &*colorings.specs[i] : nullptr, &meshes[i], entry.vertexBase,
+                           std::size_t{entry.vertexBase} + entry.vertexCount, entry.faceBase,
+                           std::size_t{entry.faceBase} + entry.faceCount});
+  }
+  annotateScene(scene, description.when, annotations);
+  if (description.floor) scene.shadowCatcher = shadowCatcherOf(*description.floor, geometry);
+  times.add("annotate", annotateClock.seconds());
+  return true;
+}
+
+}  // namespace lancer
