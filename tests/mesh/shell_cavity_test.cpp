@@ -116,3 +116,45 @@ TEST(ShellCavity, ShellsSideBySideAreNoCavities) {
 
 }  // namespace
 }  // namespace lancer
+
+namespace lancer {
+namespace {
+
+// An animation keeps the orientation of its first frame while the shells keep facing out of their
+// solids: the hollow sphere's shells (one a cavity wall) still do when it is squashed and moved,
+// not when the mesh is mirrored (each shell's volume changes sign) or when the cavity alone is
+// turned inside out; a non-manifold surface (regions, not shells) is not kept.
+TEST(ShellCavity, KeptOrientationHoldsUnderADeformationThatTurnsNoShellInsideOut) {
+  Mesh mesh = readMsh(std::string(kDataDir) + "hollow_sphere.msh");
+  OrientedShells oriented;
+  orientClosedShellsOutward(mesh.positions, mesh.faces, mesh.faceEdgeMask, mesh.facePhysicalTag, {}, 2,
+                            &oriented);
+  ASSERT_TRUE(oriented.kept);
+  EXPECT_EQ(std::count(oriented.cavity.begin(), oriented.cavity.end(), 1), 1);
+  for (const int threads : {1, 2}) {
+    EXPECT_TRUE(shellsKeepOrientation(mesh.positions, mesh.faces, oriented, threads));
+    std::vector<Vec3> squashed = mesh.positions;
+    for (Vec3& p : squashed) p = Vec3{2.0f * p.x + 5.0f, 0.3f * p.y, p.z + 0.1f * p.x * p.x};
+    EXPECT_TRUE(shellsKeepOrientation(squashed, mesh.faces, oriented, threads));
+    std::vector<Vec3> mirrored = mesh.positions;
+    for (Vec3& p : mirrored) p.x = -p.x;
+    EXPECT_FALSE(shellsKeepOrientation(mirrored, mesh.faces, oriented, threads));
+    // The inner shell (radius 0.5) pushed out through the outer radius, inside out.
+    std::vector<Vec3> everted = mesh.positions;
+    for (Vec3& p : everted)
+      if (length(p) < 0.75f) p = p * (-1.0f);
+    EXPECT_FALSE(shellsKeepOrientation(everted, mesh.faces, oriented, threads));
+  }
+  // Three squares meeting on one edge: regions of a non-manifold surface, oriented by where they lie.
+  std::vector<Vec3> positions = {{0, 0, 0},  {0, 0, 1},  {1, 0, 0}, {1, 0, 1},
+                                 {-1, 0, 0}, {-1, 0, 1}, {0, 1, 0}, {0, 1, 1}};
+  std::vector<MeshFace> faces = {{{0, 2, 3, 1}}, {{0, 1, 5, 4}}, {{0, 6, 7, 1}}};
+  std::vector<std::uint8_t> masks;
+  OrientedShells fan;
+  orientClosedShellsOutward(positions, faces, masks, std::vector<std::int32_t>(3, 1), {}, 1, &fan);
+  EXPECT_FALSE(fan.kept);
+  EXPECT_FALSE(shellsKeepOrientation(positions, faces, fan));
+}
+
+}  // namespace
+}  // namespace lancer

@@ -88,6 +88,24 @@ TEST(ShellOrientation, GmshHexCubeSkinOfQuads) {
   EXPECT_NEAR(shell.signedVolume, 1.0, 1e-6);
 }
 
+// One solid: its faces are one run, kept for an animation; a stretch keeps it facing out, a mirror
+// turns it inside out.
+TEST(ShellOrientation, KeptAsOneRunForASingleSolid) {
+  Mesh mesh = readMsh(test::mshFixture("cube_hex8_v41_ascii.msh"));
+  flipEvery(mesh, 4, 2);
+  OrientedShells oriented;
+  orientClosedShellsOutward(mesh.positions, mesh.faces, mesh.faceEdgeMask, mesh.facePhysicalTag, {}, 1,
+                            &oriented);
+  ASSERT_TRUE(oriented.kept);
+  ASSERT_EQ(oriented.runs.size(), 1u);
+  EXPECT_TRUE(oriented.faceShell.empty());
+  std::vector<Vec3> stretched = mesh.positions;
+  for (Vec3& p : stretched) p = Vec3{3 * p.x, p.y + p.x, p.z};
+  EXPECT_TRUE(shellsKeepOrientation(stretched, mesh.faces, oriented));
+  for (Vec3& p : stretched) p.z = -p.z;
+  EXPECT_FALSE(shellsKeepOrientation(stretched, mesh.faces, oriented));
+}
+
 TEST(ShellOrientation, OpenSurfaceKeepsTheFilesWinding) {
   Mesh mesh = readMsh(test::mshFixture("square_tri3_v41_ascii.msh"));
   flipEvery(mesh, 2, 0);

@@ -62,6 +62,42 @@ void orientShellRegions(std::span<const Vec3> positions, std::vector<MeshFace>& 
   }
 }
 
+// What shellsKeepOrientation needs of the shells just oriented.
+void keepOrientedShells(const FaceShells& shells, const std::vector<std::uint8_t>& solidShell,
+                        const std::vector<std::uint8_t>& cavity, bool regionsPossible,
+                        OrientedShells& oriented) {
+  oriented = OrientedShells{};
+  oriented.kept = !(regionsPossible &&
+                    std::find(shells.branched.begin(), shells.branched.end(), 1) != shells.branched.end());
+  if (!oriented.kept) return;
+  std::vector<std::uint32_t> number(shells.shellCount(), OrientedShells::kNotSolid);
+  for (std::size_t s = 0; s < shells.shellCount(); ++s) {
+    if (!solidShell[s]) continue;
+    number[s] = static_cast<std::uint32_t>(oriented.cavity.size());
+    oriented.cavity.push_back(cavity[s]);
+  }
+  const std::size_t faceCount = shells.shellOfFace.size();
+  // Runs while they stay few (a shell's faces mostly follow each other), else face by face.
+  const std::size_t maxRuns = faceCount / 16 + 64;
+  for (std::size_t f = 0; f < faceCount && oriented.runs.size() <= maxRuns; ++f) {
+    const std::uint32_t shell = number[shells.shellOfFace[f]];
+    if (oriented.runs.empty() || oriented.runs.back().shell != shell)
+      oriented.runs.push_back({static_cast<std::uint32_t>(f), shell});
+  }
+  if (oriented.runs.size() <= maxRuns) return;
+  std::vector<OrientedShells::Run>().swap(oriented.runs);
+  if (oriented.cavity.size() >= OrientedShells::kNotSolidFace) {
+    oriented.kept = false;
+    return;
+  }
+  oriented.faceShell.resize(faceCount);
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    const std::uint32_t shell = number[shells.shellOfFace[f]];
+    oriented.faceShell[f] = shell == OrientedShells::kNotSolid ? OrientedShells::kNotSolidFace
+                                                               : static_cast<std::uint16_t>(shell);
+  }
+}
+
 }  // namespace
 
 ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions,
@@ -149,21 +185,7 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
     if (!faceSide.empty() && faceSide[f] == FaceSide::kInterface)
       report.reversedInterfaces.push_back(static_cast<std::uint32_t>(f));
   }
-  if (oriented) {
-    *oriented = OrientedShells{};
-    oriented->cavity = cavity;
-    oriented->kept = !(faceSide.empty() && std::find(shells.branched.begin(), shells.branched.end(), 1) !=
-                                               shells.branched.end());
-    // Shells whose faces interleave finely would cost more to keep than to find again.
-    const std::size_t maxRuns = faceCount / 8 + 64;
-    for (std::size_t f = 0; f < faceCount && oriented->kept; ++f) {
-      const std::uint32_t shell = solidShell[shells.shellOfFace[f]] ? shells.shellOfFace[f] : OrientedShells::kNotSolid;
-      if (oriented->runs.empty() || oriented->runs.back().shell != shell)
-        oriented->runs.push_back({static_cast<std::uint32_t>(f), shell});
-      oriented->kept = oriented->runs.size() <= maxRuns;
-    }
-    if (!oriented->kept) oriented->runs.clear();
-  }
+  if (oriented) keepOrientedShells(shells, solidShell, cavity, faceSide.empty(), *oriented);
   for (std::size_t s = 0; s < shells.shellCount(); ++s) {
     if (!shells.closed[s]) continue;
     ++report.closedShells;
@@ -177,8 +199,10 @@ bool shellsKeepOrientation(std::span<const Vec3> positions, std::span<const Mesh
                            const OrientedShells& oriented, int threads) {
   if (!oriented.kept) return false;
   const std::vector<OrientedShells::Run>& runs = oriented.runs;
-  // Chunks of faces sum the volumes of the runs they meet (one or a few each), then each shell adds
-  // up its runs'.
+  const bool byFace = !oriented.faceShell.empty();
+  if (byFace && oriented.faceShell.size() != faces.size()) return false;
+  // Chunks of faces sum the volumes of the shells they meet, in runs of one shell, then each shell
+  // adds up its runs'.
   struct RunSum {
     std::uint32_t shell;
     double volume6;
@@ -186,16 +210,24 @@ bool shellsKeepOrientation(std::span<const Vec3> positions, std::span<const Mesh
   const ChunkPlan plan(faces.size(), 65536);
   std::vector<std::vector<RunSum>> chunkSums(plan.chunks);
   parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
-    auto r = static_cast<std::size_t>(
-        std::upper_bound(runs.begin(), runs.end(), begin,
-                         [](std::size_t f, const OrientedShells::Run& run) { return f < run.firstFace; }) -
-        runs.begin());
-    r = r == 0 ? 0 : r - 1;
+    std::size_t r = 0;
+    if (!byFace) {
+      r = static_cast<std::size_t>(
+          std::upper_bound(runs.begin(), runs.end(), begin,
+                           [](std::size_t f, const OrientedShells::Run& run) { return f < run.firstFace; }) -
+          runs.begin());
+      r = r == 0 ? 0 : r - 1;
+    }
+    std::vector<RunSum>& sums = chunkSums[chunk];
     for (std::size_t f = begin; f < end; ++f) {
-      while (r + 1 < runs.size() && runs[r + 1].firstFace <= f) ++r;
-      const std::uint32_t shell = runs[r].shell;
+      std::uint32_t shell = OrientedShells::kNotSolid;
+      if (byFace) {
+        if (oriented.faceShell[f] != OrientedShells::kNotSolidFace) shell = oriented.faceShell[f];
+      } else if (!runs.empty()) {
+        while (r + 1 < runs.size() && runs[r + 1].firstFace <= f) ++r;
+        shell = runs[r].shell;
+      }
       if (shell == OrientedShells::kNotSolid) continue;
-      std::vector<RunSum>& sums = chunkSums[chunk];
       if (sums.empty() || sums.back().shell != shell) sums.push_back({shell, 0.0});
       sums.back().volume6 += sixfoldConeVolume(positions, faces[f]);
     }

@@ -38,7 +38,10 @@ struct ShellOrientationReport {
 };
 
 // The closed shells orientClosedShellsOutward turned out of their solids, kept by an animation to
-// tell whether a later step's positions would turn them otherwise (shellsKeepOrientation).
+// tell whether a later step's positions would turn them otherwise (shellsKeepOrientation). The
+// solid shells are numbered 0, 1, ...; which face belongs to which is kept as runs of faces when
+// the shells' faces follow each other (a part of one solid: one run), else face by face (the skin of
+// a volume mesh with a cavity interleaves its shells).
 struct OrientedShells {
   static constexpr std::uint32_t kNotSolid = 0xFFFFFFFFu;
   // The faces from firstFace up to the next run's belong to `shell` (kNotSolid: to no closed,
@@ -48,9 +51,11 @@ struct OrientedShells {
     std::uint32_t shell;
   };
   std::vector<Run> runs;
-  std::vector<std::uint8_t> cavity;  // per shell: a cavity wall, facing into the cavity (negative volume)
-  // False when the orientation also depends on where faces lie in other ways: regions of a
-  // non-manifold surface, or shells interleaved in too many runs to keep.
+  static constexpr std::uint16_t kNotSolidFace = 0xFFFF;
+  std::vector<std::uint16_t> faceShell;  // when not in runs: per face, its shell (kNotSolidFace: none)
+  std::vector<std::uint8_t> cavity;      // per shell: a cavity wall, facing into the cavity (negative volume)
+  // False when the orientation also depends on where faces lie in other ways (regions of a
+  // non-manifold surface), or there are too many shells to keep.
   bool kept = true;
 };
 
