@@ -210,8 +210,11 @@ int runAnimate(const AnimateCommandOptions& options) {
                  steps->rebuilds(), steps->rebuildSeconds(), steps->rebuildSeconds() / steps->rebuilds(),
                  100 * steps->rebuildShare(), steps->updatesInPlace(), steps->accelSeconds(), steps->refits(),
                  steps->rebuilds() - steps->refits());
-  if (options.overrides.timings && talks)
+  if (options.overrides.timings && talks) {
     std::fprintf(stderr, "%s\n", formatStageTimes(prepared.stages).c_str());
+    if (steps && steps->rebuilds() > 0)
+      std::fprintf(stderr, "rebuilds' %s\n", formatStageTimes(steps->rebuildStages()).c_str());
+  }
   return kExitOk;
 }
 

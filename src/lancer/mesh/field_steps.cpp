@@ -163,13 +163,19 @@ std::string describeViews(const Mesh& mesh) {
   return text;
 }
 
-std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, const StepSelection& when,
-                                std::string& problem) {
+std::optional<ViewValues> viewValuesAt(const std::vector<const MeshField*>& steps, const StepSelection& when,
+                                       std::string& problem) {
   if (steps.empty()) return std::nullopt;
+  ViewValues view;
+  auto one = [&](const MeshField& field) {
+    view.field = &field;
+    view.a = &fieldValues(field, view.keepA);
+    return std::optional<ViewValues>(std::move(view));
+  };
   if (when.step || !when.time) {
     const int wanted = when.step.value_or(steps.front()->step);
     for (const MeshField* field : steps)
-      if (field->step == wanted) return loadedField(*field);
+      if (field->step == wanted) return one(*field);
     std::vector<int> indices;
     indices.reserve(steps.size());
     for (const MeshField* field : steps) indices.push_back(field->step);
@@ -183,10 +189,10 @@ std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, cons
   const double t = *when.time;
   std::size_t next = 0;
   while (next < steps.size() && stepTime(steps, next) < t) ++next;
-  if (next == 0) return loadedField(*steps.front());
-  if (next == steps.size()) return loadedField(*steps.back());
+  if (next == 0) return one(*steps.front());
+  if (next == steps.size()) return one(*steps.back());
   const double t0 = stepTime(steps, next - 1), t1 = stepTime(steps, next);
-  if (t1 == t) return loadedField(*steps[next]);
+  if (t1 == t) return one(*steps[next]);
   if (steps[next - 1]->itemCount() != steps[next]->itemCount() ||
       steps[next - 1]->components != steps[next]->components) {
     problem =
@@ -197,18 +203,33 @@ std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, cons
     return std::nullopt;
   }
   // Read back when stored (the two steps of a blend are the two a stored file keeps), else not copied.
-  std::shared_ptr<const std::vector<float>> keepA, keepB;
-  const std::vector<float>& a = fieldValues(*steps[next - 1], keepA);
-  const std::vector<float>& b = fieldValues(*steps[next], keepB);
-  const auto w = static_cast<float>((t - t0) / (t1 - t0));
+  view.field = steps[next - 1];
+  view.a = &fieldValues(*steps[next - 1], view.keepA);
+  view.b = &fieldValues(*steps[next], view.keepB);
+  view.weight = static_cast<float>((t - t0) / (t1 - t0));
+  return view;
+}
+
+std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, const StepSelection& when,
+                                std::string& problem) {
+  const std::optional<ViewValues> view = viewValuesAt(steps, when, problem);
+  if (!view) return std::nullopt;
+  if (!view->b) {  // the step itself, with its ranges
+    MeshField field = *view->field;
+    if (field.stored) {
+      field.stored.reset();
+      field.values = *view->a;
+    }
+    return field;
+  }
   MeshField blend;
-  blend.name = steps[next - 1]->name;
-  blend.perElement = steps[next - 1]->perElement;
-  blend.components = steps[next - 1]->components;
+  blend.name = view->field->name;
+  blend.perElement = view->field->perElement;
+  blend.components = view->field->components;
   blend.step = -1;
-  blend.time = t;
-  blend.values.resize(a.size());
-  for (std::size_t i = 0; i < a.size(); ++i) blend.values[i] = a[i] + w * (b[i] - a[i]);
+  blend.time = *when.time;
+  blend.values.resize(view->size());
+  for (std::size_t i = 0; i < blend.values.size(); ++i) blend.values[i] = (*view)[i];
   return blend;
 }
 

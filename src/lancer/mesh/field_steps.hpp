@@ -67,6 +67,22 @@ struct StepSelection {
   std::string where;           // "--step", or the scene file's key, for messages
 };
 
+// A view's values at one moment without a copy: one step's values, or two steps' and the weight of
+// the second, blended item by item as viewAt blends them (to the bit).
+struct ViewValues {
+  const MeshField* field = nullptr;  // the step shown, or the earlier of the two (name, components)
+  const std::vector<float>* a = nullptr;
+  const std::vector<float>* b = nullptr;  // the later step of a blend; null for one step
+  float weight = 0;
+  std::shared_ptr<const std::vector<float>> keepA, keepB;  // the values of stored steps, read back
+  std::size_t size() const { return a->size(); }
+  float operator[](std::size_t i) const { return b ? (*a)[i] + weight * ((*b)[i] - (*a)[i]) : (*a)[i]; }
+};
+
+// What viewAt gives, as ViewValues: null and `problem` set when the step does not exist.
+std::optional<ViewValues> viewValuesAt(const std::vector<const MeshField*>& steps, const StepSelection& when,
+                                       std::string& problem);
+
 // The view's values at `when` (the first step when neither is set). Null and `problem` set when the
 // step does not exist. The result's step is the step's index, or -1 for a blend of two steps.
 std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, const StepSelection& when,

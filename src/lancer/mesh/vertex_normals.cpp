@@ -36,7 +36,8 @@ struct SmoothingAngles {
       : cosCrease(std::cos(creaseAngleDegrees * std::numbers::pi_v<float> / 180.0f)) {
     constexpr float kMarginRadians = 1e-3f;
     const float halfCrease = creaseAngleDegrees * std::numbers::pi_v<float> / 360.0f - kMarginRadians;
-    cosHalfCreaseWithMargin = halfCrease <= 0.0f || creaseAngleDegrees >= 180.0f ? 2.0f : std::cos(halfCrease);
+    cosHalfCreaseWithMargin =
+        halfCrease <= 0.0f || creaseAngleDegrees >= 180.0f ? 2.0f : std::cos(halfCrease);
   }
 };
 
@@ -71,9 +72,9 @@ struct FaceTerms {
   std::span<const MeshFace> faces;
   float weight(std::uint32_t face, int corner) const {
     if (cornerWeight) return cornerWeight[face][corner];
-    std::array<float, 4> angles;
-    cornerAnglesOf(positions, faces.subspan(face, 1), &angles);
-    return angles[corner];
+    std::array<float, 4> faceAngles;
+    cornerAnglesOf(positions, faces.subspan(face, 1), &faceAngles);
+    return faceAngles[corner];
   }
 };
 
@@ -82,10 +83,14 @@ struct FaceTerms {
 // of order, and no one walks a vertex's faces. termsForRange(firstVertex, endVertex) makes what
 // gives that range face f's unit normal and corner weights, asked in face order.
 template <typename TermsForRange>
-std::vector<VertexSum> sumVertexNormals(std::span<const MeshFace> faces, std::uint32_t vertexBase,
-                                        std::size_t vertexCount, std::span<const std::int32_t> facePhysicalTag,
-                                        const SmoothingAngles& angles, int threads, TermsForRange&& termsForRange) {
-  std::vector<VertexSum> vertexSum = vectorOnHugePages<VertexSum>(vertexCount);
+void sumVertexNormals(std::span<const MeshFace> faces, std::uint32_t vertexBase, std::size_t vertexCount,
+                      std::span<const std::int32_t> facePhysicalTag, const SmoothingAngles& angles,
+                      int threads, TermsForRange&& termsForRange, std::vector<VertexSum>& vertexSum) {
+  if (vertexSum.capacity() < vertexCount) {
+    vertexSum = vectorOnHugePages<VertexSum>(vertexCount);
+  } else {
+    vertexSum.assign(vertexCount, VertexSum{});
+  }
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
     auto faceTerms = termsForRange(firstVertex, endVertex);
     for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -95,7 +100,8 @@ std::vector<VertexSum> sumVertexNormals(std::span<const MeshFace> faces, std::ui
       const MeshFace& face = faces[f];
       bool touches = false;
       for (int c = 0; c < face.cornerCount(); ++c)
-        touches = touches || (face.vertex[c] - vertexBase >= firstVertex && face.vertex[c] - vertexBase < endVertex);
+        touches = touches ||
+                  (face.vertex[c] - vertexBase >= firstVertex && face.vertex[c] - vertexBase < endVertex);
       if (!touches) continue;
       const auto [normal, weight] = faceTerms(f);
       const std::int32_t tag = facePhysicalTag[f];
@@ -109,14 +115,13 @@ std::vector<VertexSum> sumVertexNormals(std::span<const MeshFace> faces, std::ui
           at.faces = 1;
         } else {
           at.faces = 2;
-          at.withinHalf &=
-              static_cast<std::uint8_t>(tag == at.firstTag && dot(at.firstNormal, normal) >= angles.cosHalfCreaseWithMargin);
+          at.withinHalf &= static_cast<std::uint8_t>(
+              tag == at.firstTag && dot(at.firstNormal, normal) >= angles.cosHalfCreaseWithMargin);
         }
         at.sum += normal * weight[c];
       }
     }
   });
-  return vertexSum;
 }
 
 // Appends the normals of a vertex with faces to `normals`: one, its sum, when the vertex is smooth
@@ -127,7 +132,9 @@ template <typename SetCorner>
 bool appendVertexNormals(const VertexSum& at, std::span<const std::uint32_t> row, const FaceTerms& terms,
                          std::vector<Vec3>& normals, SetCorner&& setCorner) {
   auto faceOf = [&](std::uint32_t slot) { return row[slot] >> 2; };
-  auto weightOf = [&](std::uint32_t slot) { return terms.weight(row[slot] >> 2, static_cast<int>(row[slot] & 3u)); };
+  auto weightOf = [&](std::uint32_t slot) {
+    return terms.weight(row[slot] >> 2, static_cast<int>(row[slot] & 3u));
+  };
   const std::span<const std::int32_t> tags = terms.facePhysicalTag;
   const Vec3* unitFaceNormal = terms.unitFaceNormal;
   const float cosCrease = terms.angles.cosCrease;
@@ -139,7 +146,8 @@ bool appendVertexNormals(const VertexSum& at, std::span<const std::uint32_t> row
       for (std::uint32_t b = a + 1; b < end; ++b) {
         const std::uint32_t g = faceOf(b);
         // dot is symmetric to the bit, so this one test decides the pair for both corners.
-        if (g != f && (tags[g] != tags[f] || dot(unitFaceNormal[f], unitFaceNormal[g]) < cosCrease)) return false;
+        if (g != f && (tags[g] != tags[f] || dot(unitFaceNormal[f], unitFaceNormal[g]) < cosCrease))
+          return false;
       }
     }
     return true;
@@ -182,9 +190,19 @@ bool appendVertexNormals(const VertexSum& at, std::span<const std::uint32_t> row
 
 }  // namespace
 
+struct CornerNormalsScratch::Sums {
+  std::vector<VertexSum> vertexSum;
+};
+CornerNormalsScratch::CornerNormalsScratch() : sums(std::make_unique<Sums>()) {}
+CornerNormalsScratch::~CornerNormalsScratch() = default;
+CornerNormalsScratch::CornerNormalsScratch(CornerNormalsScratch&&) noexcept = default;
+CornerNormalsScratch& CornerNormalsScratch::operator=(CornerNormalsScratch&&) noexcept = default;
+void CornerNormalsScratch::release() { std::vector<VertexSum>().swap(sums->vertexSum); }
+
 CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                                    std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
-                                   int threads, std::vector<Vec3>* unitFaceNormals, CornerNormalWalks* walked) {
+                                   int threads, std::vector<Vec3>* unitFaceNormals,
+                                   CornerNormalWalks* walked) {
   const std::size_t faceCount = faces.size();
   const std::size_t vertexCount = positions.size();
   // Per face, in face order (sequential reads, shared out by chunks of faces): its unit normal and
@@ -198,13 +216,19 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
       unitFaceNormal[f] = faceNormal(positions, faces[f]);
     }
   });
-  const FaceTerms terms{unitFaceNormal.data(), cornerWeight.data(), facePhysicalTag,
-                        SmoothingAngles(creaseAngleDegrees), positions, faces};
-  const std::vector<VertexSum> vertexSum = sumVertexNormals(
+  const FaceTerms terms{unitFaceNormal.data(),
+                        cornerWeight.data(),
+                        facePhysicalTag,
+                        SmoothingAngles(creaseAngleDegrees),
+                        positions,
+                        faces};
+  std::vector<VertexSum> vertexSum;
+  sumVertexNormals(
       faces, 0, vertexCount, facePhysicalTag, terms.angles, threads,
       [&](std::size_t, std::size_t) {
         return [&](std::size_t f) { return std::pair{unitFaceNormal[f], cornerWeight[f]}; };
-      });
+      },
+      vertexSum);
 
   // The other vertices walk their faces (face order): the pairwise test, and where it fails, one
   // sum per corner over the faces smoothed with its own; so do vertices whose faces cancel out.
@@ -288,20 +312,26 @@ bool updateCornerNormals(std::span<const Vec3> positions, const CornerNormalsSpa
                          std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
                          const CornerNormalWalks& walks, int threads, std::span<Vec3> normals,
                          std::span<const std::array<std::uint32_t, 4>> faceCorner,
-                         std::span<Vec3> unitFaceNormals) {
+                         std::span<Vec3> unitFaceNormals, CornerNormalsScratch* scratch) {
   const std::span<const MeshFace> faces = mesh.faces;
   const std::size_t faceCount = faces.size();
   const std::size_t vertexCount = mesh.vertexCount;
   // One pass: each vertex range sums the faces that touch it, computing their normals and weights
   // (again, for a face across two ranges); the range of a face's first vertex writes its normal.
   std::atomic<bool> ok{true};
-  const FaceTerms terms{unitFaceNormals.data(), nullptr, facePhysicalTag, SmoothingAngles(creaseAngleDegrees),
-                        positions, faces};
-  const std::vector<VertexSum> vertexSum = sumVertexNormals(
+  const FaceTerms terms{unitFaceNormals.data(),
+                        nullptr,
+                        facePhysicalTag,
+                        SmoothingAngles(creaseAngleDegrees),
+                        positions,
+                        faces};
+  std::vector<VertexSum> ownSums;
+  std::vector<VertexSum>& vertexSum = scratch ? scratch->sums->vertexSum : ownSums;
+  sumVertexNormals(
       faces, mesh.vertexBase, vertexCount, facePhysicalTag, terms.angles, threads,
       [&](std::size_t firstVertex, std::size_t endVertex) {
         // The angles of the block of faces around the one asked, computed together.
-        std::array<std::array<float, 4>, kAngleBlock> blockAngles;
+        std::array<std::array<float, 4>, kAngleBlock> blockAngles{};
         std::size_t blockFirst = faceCount;
         return [&, firstVertex, endVertex, blockAngles, blockFirst](std::size_t f) mutable {
           const MeshFace& face = faces[f];
@@ -313,17 +343,20 @@ bool updateCornerNormals(std::span<const Vec3> positions, const CornerNormalsSpa
           }
           if (f < blockFirst || f >= blockFirst + kAngleBlock) {
             blockFirst = f;
-            cornerAnglesOf(positions, faces.subspan(f, std::min(kAngleBlock, faceCount - f)), blockAngles.data());
+            cornerAnglesOf(positions, faces.subspan(f, std::min(kAngleBlock, faceCount - f)),
+                           blockAngles.data());
           }
           return std::pair{normal, blockAngles[f - blockFirst]};
         };
-      });
+      },
+      vertexSum);
   if (!ok) return false;
   // The normals lie in vertex order (computeCornerNormals's chunks, concatenated): none for a
   // vertex without faces, one for a smooth vertex, and for a walked one as many as its corners'
   // indices span. Each chunk of vertices counts its own first, then writes from its offset.
   auto rowOf = [&](std::size_t k) {
-    return std::span<const std::uint32_t>(walks.corner).subspan(walks.rowStart[k], walks.rowStart[k + 1] - walks.rowStart[k]);
+    return std::span<const std::uint32_t>(walks.corner)
+        .subspan(walks.rowStart[k], walks.rowStart[k + 1] - walks.rowStart[k]);
   };
   auto firstWalked = [&](std::size_t vertex) {
     return static_cast<std::size_t>(std::lower_bound(walks.vertex.begin(), walks.vertex.end(), vertex) -
@@ -371,9 +404,10 @@ bool updateCornerNormals(std::span<const Vec3> positions, const CornerNormalsSpa
         const auto [low, high] = heldIndices(row);
         own.clear();
         bool same = low == next;
-        const bool one = appendVertexNormals(at, row, terms, own, [&](std::uint32_t code, std::uint32_t index) {
-          same = same && faceCorner[code >> 2][code & 3u] - mesh.normalBase == next + index;
-        });
+        const bool one =
+            appendVertexNormals(at, row, terms, own, [&](std::uint32_t code, std::uint32_t index) {
+              same = same && faceCorner[code >> 2][code & 3u] - mesh.normalBase == next + index;
+            });
         if (!same || own.size() != high - low + 1 || (one && high != low)) {
           ok = false;
           return;

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -44,16 +45,29 @@ struct CornerNormalsSpan {
   std::uint32_t normalBase = 0;
 };
 
+// Working memory updateCornerNormals can keep from one call to the next (an animation's frames): its
+// per-vertex sums, whose pages would otherwise be faulted in and zeroed by the kernel every frame.
+class CornerNormalsScratch {
+ public:
+  CornerNormalsScratch();
+  ~CornerNormalsScratch();
+  CornerNormalsScratch(CornerNormalsScratch&&) noexcept;
+  CornerNormalsScratch& operator=(CornerNormalsScratch&&) noexcept;
+  void release();  // gives the memory back (before something larger is built)
+  struct Sums;
+  std::unique_ptr<Sums> sums;
+};
+
 // The normals computeCornerNormals gave `mesh.faces` (with `walks`), again for the vertices at new
 // `positions`, written over `normals` (the normals' values; their indices in faceCorner stay) and
 // `unitFaceNormals` (per face of the mesh): the same bits computeCornerNormals would give, as long
 // as every vertex is smoothed as before. False, with the arrays partly written, when some vertex's
 // smoothing changed (a new crease, faces that now cancel) or a face has no normal (degenerate):
-// compute them again then.
+// compute them again then. `scratch`, when given, holds the working memory between calls.
 bool updateCornerNormals(std::span<const Vec3> positions, const CornerNormalsSpan& mesh,
                          std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
                          const CornerNormalWalks& walks, int threads, std::span<Vec3> normals,
                          std::span<const std::array<std::uint32_t, 4>> faceCorner,
-                         std::span<Vec3> unitFaceNormals);
+                         std::span<Vec3> unitFaceNormals, CornerNormalsScratch* scratch = nullptr);
 
 }  // namespace lancer

@@ -116,11 +116,13 @@ void StepScenes::buildAt(double time) {
   // previous frame's scene and the tree is refitted (nothing as large as the scene is allocated).
   if (!first && warped && layout_ && accelerator_) {
     builtTime_.reset();
-    if (updateSceneAt(*scene_, *layout_, description_, meshes_, threads_)) {
+    if (updateSceneAt(*scene_, *layout_, description_, meshes_, threads_, &rebuildStages_,
+                      &normalsScratch_)) {
       const Stopwatch refit;
       const SceneGeometry& geometry = scene_->geometry;
       if (accelerator_->update(geometry.positions, geometry.faces, options, forgetKeptSteps)) ++refits_;
       accelSeconds_ += refit.seconds();
+      rebuildStages_.add("accelerator", refit.seconds());
       rebuildSeconds_ += stopwatch.seconds();
       ++rebuilds_;
       ++updatesInPlace_;
@@ -133,10 +135,13 @@ void StepScenes::buildAt(double time) {
   // next has the same.
   scene_.reset();
   layout_.reset();
+  normalsScratch_.release();
   builtTime_.reset();
   SceneLayout layout;
   const bool keepLayout = warped && !hasArrows(description_);  // arrows are built per step
-  Scene next = buildSceneAt(description_, meshes_, threads_, nullptr, keepLayout ? &layout : nullptr);
+  StageTimes unused;
+  Scene next = buildSceneAt(description_, meshes_, threads_, first ? &unused : &rebuildStages_,
+                            keepLayout ? &layout : nullptr);
   if (keepLayout) layout_ = std::move(layout);
   // Every frame is framed alike: the camera and the orbit see the bounds of the whole animation.
   SceneGeometry& geometry = next.geometry;
@@ -163,6 +168,7 @@ void StepScenes::buildAt(double time) {
       accelerator_.emplace(Accelerator::build(built.positions, built.faces, accel_, options));
     }
     (first ? firstBuildSeconds_ : accelSeconds_) += build.seconds();
+    if (!first) rebuildStages_.add("accelerator", build.seconds());
   }
   if (first) {
     warnings_ = scene_->warnings;

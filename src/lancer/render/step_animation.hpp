@@ -16,6 +16,7 @@
 #include "lancer/accel/accelerator.hpp"
 #include "lancer/render/animation.hpp"
 #include "lancer/scene/scene_layout.hpp"
+#include "lancer/util/stage_times.hpp"
 
 namespace lancer {
 
@@ -63,6 +64,9 @@ class StepScenes {
     const double total = rebuildSeconds_ + rebuiltRenderSeconds_;
     return total > 0 ? rebuildSeconds_ / total : 0.0;
   }
+  // Where the rebuilds' time went, stage by stage (in place: warp, normals, annotate; built:
+  // buildSceneAt's stages; both: accelerator).
+  const StageTimes& rebuildStages() const { return rebuildStages_; }
   int refits() const { return refits_; }  // of the rebuilds, those whose accelerator was refitted
   // Of the rebuilds, those that wrote the step over the previous frame's scene (updateSceneAt).
   int updatesInPlace() const { return updatesInPlace_; }
@@ -83,7 +87,8 @@ class StepScenes {
   StepFrames frames_;
   Aabbd framing_;  // world bounds of every frame's geometry
   std::optional<Scene> scene_;
-  std::optional<SceneLayout> layout_;  // of the scene built last, when a mesh is warped
+  std::optional<SceneLayout> layout_;    // of the scene built last, when a mesh is warped
+  CornerNormalsScratch normalsScratch_;  // kept from one update in place to the next
   std::optional<Accelerator> accelerator_;
   std::optional<double> builtTime_;
   std::pair<std::uint64_t, std::uint64_t> facesDigest_{};  // of the faces of the scene built last
@@ -94,6 +99,7 @@ class StepScenes {
   int rebuilds_ = 0;
   int refits_ = 0;
   int updatesInPlace_ = 0;
+  StageTimes rebuildStages_;
   std::vector<std::string> warnings_;
 };
 

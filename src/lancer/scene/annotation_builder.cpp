@@ -125,12 +125,29 @@ void finishIsolines(Scene& scene, std::optional<IsolineOverlay> overlay) {
 }
 
 void annotateScene(Scene& scene, const StepSelection& when, const std::vector<EntryAnnotation>& entries) {
+  // The arrays the scene had are emptied and filled again: an animation annotates every frame, and
+  // fresh arrays of a million faces would each fault their pages in again.
+  FieldColors oldFields = scene.fieldColors ? std::move(*scene.fieldColors) : FieldColors{};
+  IsolineOverlay oldIsolines = scene.isolines ? std::move(*scene.isolines) : IsolineOverlay{};
   scene.fieldColors.reset();
   scene.isolines.reset();
   std::optional<FieldColors> fields;
   std::optional<IsolineOverlay> isolines;
+  auto startFields = [&] {
+    if (fields) return;
+    fields.emplace();
+    fields->faceColorMap = std::move(oldFields.faceColorMap);
+    fields->vertexFieldT = std::move(oldFields.vertexFieldT);
+    fields->faceFieldT = std::move(oldFields.faceFieldT);
+    fields->faceBands = std::move(oldFields.faceBands);
+    fields->faceColorMap.clear();
+    fields->vertexFieldT.clear();
+    fields->faceFieldT.clear();
+    fields->faceBands.clear();
+  };
   for (const EntryAnnotation& entry : entries) {
     if (entry.coloring) {
+      startFields();
       if (entry.colorBy->paintsSurface)
         appendFieldColoring(fields, *entry.coloring, entry.vertexBase, entry.vertexEnd, entry.faceBase,
                             entry.faceEnd);
@@ -143,12 +160,19 @@ void annotateScene(Scene& scene, const StepSelection& when, const std::vector<En
     if (entry.coloring && entry.colorBy->field == spec.field && entry.colorBy->component == spec.component)
       colorRange = std::pair{entry.coloring->low, entry.coloring->high};
     ResolvedIsolines resolved = resolveIsolines(spec, *entry.fields, when, colorRange);
+    if (!isolines) {
+      isolines.emplace();
+      isolines->faceStyle = std::move(oldIsolines.faceStyle);
+      isolines->vertexValue = std::move(oldIsolines.vertexValue);
+      isolines->faceStyle.clear();
+      isolines->vertexValue.clear();
+    }
     std::vector<Vec3> valueColors;  // color = "map": over the colours' range, else over the lines'
     if (spec.colorFromMap && !resolved.values.empty()) {
       const auto [low, high] =
           colorRange.value_or(std::pair<double, double>{resolved.values.front(), resolved.values.back()});
-      valueColors = isolineValueColors(resolved.values, entry.colorBy ? entry.colorBy->map : ColorMapKind::Viridis,
-                                       low, high);
+      valueColors = isolineValueColors(resolved.values,
+                                       entry.colorBy ? entry.colorBy->map : ColorMapKind::Viridis, low, high);
     }
     appendIsolines(isolines, spec, std::move(resolved), entry.vertexBase, entry.faceBase, entry.faceEnd,
                    entry.vertexEnd, std::move(valueColors));

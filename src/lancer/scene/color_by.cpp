@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
@@ -149,7 +148,7 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
   StepSelection when = scene;
   if (spec.step) when = StepSelection{spec.step, std::nullopt, "color_by.step"};
   std::string problem;
-  const std::optional<MeshField> found = viewAt(steps, when, problem);
+  const std::optional<ViewValues> found = viewValuesAt(steps, when, problem);  // not copied
   if (!found) {
     const bool fromScene = !spec.step && !scene.where.empty();
     const std::string message =
@@ -159,12 +158,13 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
   }
   FieldColoring coloring;
   coloring.map = spec.map;
-  coloring.perFace = found->perElement;
+  coloring.perFace = found->field->perElement;
   std::pair<double, double> range;
   if (spec.range) {
     range = *spec.range;
-  } else if (spec.perStepRange) {
-    range = componentRange(*found, spec.component);
+  } else if (spec.perStepRange) {  // a blend's own range needs its values
+    range = found->b ? componentRange(*viewAt(steps, when, problem), spec.component)
+                     : componentRange(*found->field, spec.component);
   } else {  // every step's: a colour means the same value whichever step is shown
     range = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
     for (const MeshField* step : steps) {
@@ -177,11 +177,19 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
   coloring.low = low;
   coloring.high = high;
   const MapPosition position(low, high);
-  coloring.t.resize(found->itemCount());
-  const auto components = static_cast<std::size_t>(found->components);
-  for (std::size_t i = 0; i < coloring.t.size(); ++i)
-    coloring.t[i] =
-        position(componentScalar(found->values.data() + i * components, found->components, spec.component));
+  const int components = found->field->components;
+  coloring.t.resize(found->size() / static_cast<std::size_t>(components));
+  std::vector<float> blended(static_cast<std::size_t>(components));  // one item of a blend
+  for (std::size_t i = 0; i < coloring.t.size(); ++i) {
+    const std::size_t first = i * static_cast<std::size_t>(components);
+    const float* item = found->a->data() + first;
+    if (found->b) {
+      for (int c = 0; c < components; ++c)
+        blended[static_cast<std::size_t>(c)] = (*found)[first + static_cast<std::size_t>(c)];
+      item = blended.data();
+    }
+    coloring.t[i] = position(componentScalar(item, components, spec.component));
+  }
   return coloring;
 }
 

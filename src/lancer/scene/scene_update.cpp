@@ -19,30 +19,32 @@ namespace {
 bool warpInPlace(SceneGeometry& geometry, const SceneEntryLayout& entry, const MeshInstance& instance,
                  const Mesh& mesh, const StepSelection& when, int threads) {
   if (entry.vertexCount != mesh.positions.size()) return false;
-  const MeshField step = warpDisplacement(mesh, *instance.warp, when, mesh.positions.size());
+  const ViewValues step = warpDisplacement(mesh, *instance.warp, when, mesh.positions.size());
   const InstanceTransform transform(instance);
   const auto factor = static_cast<float>(instance.warp->factor);
   std::atomic<bool> finite{true};
-  parallelChunks(ChunkPlan(mesh.positions.size(), 16384), threads,
-                 [&](std::size_t, std::size_t begin, std::size_t end) {
-                   bool ok = true;
-                   for (std::size_t v = begin; v < end; ++v) {
-                     const float* d = step.values.data() + 3 * v;
-                     const Vec3 moved = mesh.positions[v] + factor * Vec3{d[0], d[1], d[2]};
-                     const Vec3 placed = toFloat(transform.apply(mesh.origin + toDouble(moved)) - geometry.origin);
-                     ok = ok && isFinite(moved) && isFinite(placed);
-                     geometry.positions[entry.vertexBase + v] = placed;
-                   }
-                   if (!ok) finite = false;
-                 });
+  parallelChunks(
+      ChunkPlan(mesh.positions.size(), 16384), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+        bool ok = true;
+        for (std::size_t v = begin; v < end; ++v) {
+          const Vec3 d{step[3 * v], step[3 * v + 1], step[3 * v + 2]};
+          const Vec3 moved = mesh.positions[v] + factor * d;
+          const Vec3 placed = toFloat(transform.apply(mesh.origin + toDouble(moved)) - geometry.origin);
+          ok = ok && isFinite(moved) && isFinite(placed);
+          geometry.positions[entry.vertexBase + v] = placed;
+        }
+        if (!ok) finite = false;
+      });
   return finite;
 }
 
 // The mesh's normals at its new positions; false when its faces would be oriented or smoothed
 // otherwise.
 bool normalsInPlace(SceneGeometry& geometry, const SceneEntryLayout& entry, std::size_t normalEnd,
-                    const MeshInstance& instance, const Mesh& mesh, int threads) {
-  const std::span<const MeshFace> faces = std::span<const MeshFace>(geometry.faces).subspan(entry.faceBase, entry.faceCount);
+                    const MeshInstance& instance, const Mesh& mesh, int threads,
+                    CornerNormalsScratch* scratch) {
+  const std::span<const MeshFace> faces =
+      std::span<const MeshFace>(geometry.faces).subspan(entry.faceBase, entry.faceCount);
   if (mesh.facePhysicalTag.size() != entry.faceCount) return false;
   if (!shellsKeepOrientation(geometry.positions, faces, entry.shells, threads)) return false;
   // The orientation gave reversed interfaces their outer volume's tag (the smoothing compares tags).
@@ -55,17 +57,19 @@ bool normalsInPlace(SceneGeometry& geometry, const SceneEntryLayout& entry, std:
   }
   CornerNormals& normals = geometry.cornerNormals;
   return updateCornerNormals(
-      geometry.positions, CornerNormalsSpan{faces, entry.vertexBase, entry.vertexCount, entry.normalBase}, tags,
-      instance.smoothAngleDegrees, entry.walks, threads,
+      geometry.positions, CornerNormalsSpan{faces, entry.vertexBase, entry.vertexCount, entry.normalBase},
+      tags, instance.smoothAngleDegrees, entry.walks, threads,
       std::span<Vec3>(normals.normals).subspan(entry.normalBase, normalEnd - entry.normalBase),
-      std::span<const std::array<std::uint32_t, 4>>(normals.faceCorner).subspan(entry.faceBase, entry.faceCount),
-      std::span<Vec3>(geometry.faceNormals).subspan(entry.faceBase, entry.faceCount));
+      std::span<const std::array<std::uint32_t, 4>>(normals.faceCorner)
+          .subspan(entry.faceBase, entry.faceCount),
+      std::span<Vec3>(geometry.faceNormals).subspan(entry.faceBase, entry.faceCount), scratch);
 }
 
 }  // namespace
 
 bool updateSceneAt(Scene& scene, const SceneLayout& layout, const SceneDescription& description,
-                   const std::vector<Mesh>& meshes, int threads, StageTimes* timesOrNull) {
+                   const std::vector<Mesh>& meshes, int threads, StageTimes* timesOrNull,
+                   CornerNormalsScratch* scratch) {
   StageTimes unused;
   StageTimes& times = timesOrNull ? *timesOrNull : unused;
   if (layout.entries.empty() || hasArrows(description) || meshes.size() != description.meshes.size())
@@ -88,10 +92,10 @@ bool updateSceneAt(Scene& scene, const SceneLayout& layout, const SceneDescripti
   const Stopwatch normalsClock;
   for (std::size_t k = 0; k < layout.entries.size(); ++k) {
     const SceneEntryLayout& entry = layout.entries[k];
-    const std::size_t normalEnd =
-        k + 1 < layout.entries.size() ? layout.entries[k + 1].normalBase : geometry.cornerNormals.normals.size();
+    const std::size_t normalEnd = k + 1 < layout.entries.size() ? layout.entries[k + 1].normalBase
+                                                                : geometry.cornerNormals.normals.size();
     if (warped(entry) && !normalsInPlace(geometry, entry, normalEnd, description.meshes[entry.meshIndex],
-                                         meshes[entry.meshIndex], threads))
+                                         meshes[entry.meshIndex], threads, scratch))
       return false;
   }
   times.add("normals", normalsClock.seconds());

@@ -20,7 +20,9 @@ namespace lancer {
 // inside out; a new crease; feature edges on a warped mesh): the scene is then partly written and
 // must be built again, which also reports the problem. The colours' InputErrors are buildSceneAt's.
 // `times` gets the stages' wall seconds (warp, normals, annotate).
+// `scratch`, when given, keeps the normals' working memory for the next call.
 bool updateSceneAt(Scene& scene, const SceneLayout& layout, const SceneDescription& description,
-                   const std::vector<Mesh>& meshes, int threads = 0, StageTimes* times = nullptr);
+                   const std::vector<Mesh>& meshes, int threads = 0, StageTimes* times = nullptr,
+                   CornerNormalsScratch* scratch = nullptr);
 
 }  // namespace lancer

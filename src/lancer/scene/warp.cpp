@@ -42,8 +42,8 @@ void removeMeshFaces(Mesh& mesh, const std::vector<std::uint8_t>& removed,
   if (values) perFaceValues->resize(kept);
 }
 
-MeshField warpDisplacement(const Mesh& fields, const WarpSettings& warp, const StepSelection& when,
-                           std::size_t vertexCount) {
+ViewValues warpDisplacement(const Mesh& fields, const WarpSettings& warp, const StepSelection& when,
+                            std::size_t vertexCount) {
   const std::string& file = fields.source.path;
   const std::vector<const MeshField*> steps = viewSteps(fields, warp.field);
   if (steps.empty())
@@ -67,37 +67,38 @@ MeshField warpDisplacement(const Mesh& fields, const WarpSettings& warp, const S
                                  "of 3 (a displacement); colour by this view instead",
                                  warp.field, file, first.components, first.components == 1 ? "" : "s"));
   std::string problem;
-  std::optional<MeshField> step = viewAt(steps, when, problem);
+  std::optional<ViewValues> step = viewValuesAt(steps, when, problem);
   if (!step)
     throw InputError(warp.where, fmt::format("warp field \"{}\" {} in {}{}", warp.field, problem, file,
                                              when.where.empty() ? "" : fmt::format(" ({})", when.where)));
-  if (step->values.size() != vertexCount * 3)
-    throw InputError(warp.where, fmt::format("warp field \"{}\" step {} in {} has values for {} nodes, the mesh "
-                                             "has {}: the view belongs to another mesh",
-                                             warp.field, step->step, file, step->values.size() / 3, vertexCount));
+  if (step->size() != vertexCount * 3)
+    throw InputError(warp.where,
+                     fmt::format("warp field \"{}\" step {} in {} has values for {} nodes, the mesh "
+                                 "has {}: the view belongs to another mesh",
+                                 warp.field, step->field->step, file, step->size() / 3, vertexCount));
   return std::move(*step);
 }
 
 WarpReport warpMesh(Mesh& mesh, const Mesh& fields, const WarpSettings& warp, const StepSelection& when,
                     std::vector<float>* perFaceValues) {
   const std::string& file = fields.source.path;
-  const MeshField step = warpDisplacement(fields, warp, when, mesh.positions.size());
+  const ViewValues step = warpDisplacement(fields, warp, when, mesh.positions.size());
   std::uint64_t missing = 0;
   const auto factor = static_cast<float>(warp.factor);
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    const float* d = step.values.data() + 3 * v;
-    if (std::isnan(d[0]) || std::isnan(d[1]) || std::isnan(d[2])) {
+    const Vec3 d{step[3 * v], step[3 * v + 1], step[3 * v + 2]};
+    if (std::isnan(d.x) || std::isnan(d.y) || std::isnan(d.z)) {
       ++missing;
       continue;
     }
-    mesh.positions[v] += factor * Vec3{d[0], d[1], d[2]};
+    mesh.positions[v] += factor * d;
   }
   if (missing)
     throw InputError(
         warp.where,
         fmt::format("warp field \"{}\" step {} in {} gives no vector for {} of the mesh's {} nodes; "
                     "a warp needs one for every node (save the view on all nodes in gmsh)",
-                    warp.field, step.step, file, missing, mesh.positions.size()));
+                    warp.field, step.field->step, file, missing, mesh.positions.size()));
   WarpReport report;
   std::vector<std::uint8_t> collapsed(mesh.faces.size(), 0);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
@@ -115,21 +116,21 @@ Aabbd warpedWorldBounds(const SceneDescription& description, const std::vector<M
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const Mesh& mesh = meshes[i];
     const InstanceTransform transform(description.meshes[i]);
-    std::optional<MeshField> displacement;
+    std::optional<ViewValues> displacement;
     float factor = 0;
     if (const std::optional<WarpSettings>& warp = description.meshes[i].warp) {
       std::string problem;
       const std::vector<const MeshField*> steps = viewSteps(mesh, warp->field);
       if (!steps.empty() && steps.front()->components == 3 && !steps.front()->perElement)
-        displacement = viewAt(steps, description.when, problem);
-      if (displacement && displacement->values.size() != 3 * mesh.positions.size()) displacement.reset();
+        displacement = viewValuesAt(steps, description.when, problem);
+      if (displacement && displacement->size() != 3 * mesh.positions.size()) displacement.reset();
       factor = static_cast<float>(warp->factor);
     }
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
       Vec3 p = mesh.positions[v];
       if (displacement) {
-        const float* d = displacement->values.data() + 3 * v;
-        const Vec3 moved = p + factor * Vec3{d[0], d[1], d[2]};
+        const ViewValues& d = *displacement;
+        const Vec3 moved = p + factor * Vec3{d[3 * v], d[3 * v + 1], d[3 * v + 2]};
         if (isFinite(moved)) p = moved;
       }
       box.extend(transform.apply(mesh.origin + toDouble(p)));

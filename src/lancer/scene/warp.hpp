@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lancer/math/aabb.hpp"
+#include "lancer/mesh/field_steps.hpp"
 #include "lancer/mesh/mesh.hpp"
 #include "lancer/scene/scene_description.hpp"
 
@@ -18,9 +19,9 @@ struct WarpReport {
 };
 
 // The view warp.field of `fields` at `when`, checked as warpMesh says, for a mesh of vertexCount
-// vertices.
-MeshField warpDisplacement(const Mesh& fields, const WarpSettings& warp, const StepSelection& when,
-                           std::size_t vertexCount);
+// vertices (not copied).
+ViewValues warpDisplacement(const Mesh& fields, const WarpSettings& warp, const StepSelection& when,
+                            std::size_t vertexCount);
 
 // Moves `mesh`'s vertices by warp.factor times the view warp.field of `fields` (the mesh as read,
 // which holds every step) at `when`, then drops the faces that collapsed; `perFaceValues`, when

@@ -21,6 +21,8 @@ void remapNodeValues(std::vector<float>& values, int componentCount,
       values.push_back(value);
     }
   }
+  // Every node used and every value there (the common case): nothing to move.
+  if (usedCount == usedNode.size() && values.size() == usedNode.size() * components) return;
   const std::size_t covered = values.size() / components;
   std::vector<float> kept;
   kept.reserve(std::size_t{usedCount} * components);

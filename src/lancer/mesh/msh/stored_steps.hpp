@@ -53,7 +53,7 @@ class StoredFieldSteps {
   std::vector<MshFieldSection> sections_;
   std::size_t views_;  // distinct view names
   mutable std::mutex mutex_;
-  mutable std::vector<std::pair<std::size_t, std::shared_ptr<const std::vector<float>>>> recent_;
+  mutable std::vector<std::pair<std::size_t, std::shared_ptr<std::vector<float>>>> recent_;
   mutable std::size_t fileReads_ = 0;
 };
 
