@@ -35,11 +35,14 @@ def mesh_sections(n):
     return nodes + elements, coords
 
 
-def node_data(coords, step):
+def node_data(coords, step, steps):
     count = coords.shape[0]
     t = float(step)
+    # The plate bends the same way whatever the number of steps: the last step is always the same
+    # shape (0.16 of the plate at the bench's warp factor of 20), the steps in between share it out.
+    s = t / max(steps - 1, 1)
     d = np.zeros((count, 3))
-    d[:, 2] = 0.002 * t * np.sin(3 * coords[:, 0] + 0.1 * t)
+    d[:, 2] = 0.008 * s * np.sin(3 * coords[:, 0] + 0.4 * s)
     record = np.zeros(count, dtype=[("tag", np.int32), ("v", np.float64, 3)])
     record["tag"] = np.arange(1, count + 1)
     record["v"] = d
@@ -53,11 +56,11 @@ def main():
     with open(prefix + "_mesh.msh", "wb") as f:
         f.write(header() + sections)
     with open(prefix + "_1step.msh", "wb") as f:
-        f.write(header() + sections + node_data(coords, 0))
+        f.write(header() + sections + node_data(coords, 0, 1))
     with open(prefix + f"_{steps}steps.msh", "wb") as f:
         f.write(header() + sections)
         for k in range(steps):
-            f.write(node_data(coords, k))
+            f.write(node_data(coords, k, steps))
 
 
 if __name__ == "__main__":

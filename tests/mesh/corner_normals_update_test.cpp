@@ -84,8 +84,8 @@ Placed place(const Grid& g, const std::vector<Vec3>& positions, const CornerNorm
   return placed;
 }
 
-bool update(Placed& placed, const Grid& g, const std::vector<Vec3>& positions, const CornerNormalWalks& walks,
-            float crease, int threads) {
+NormalsUpdate update(Placed& placed, const Grid& g, const std::vector<Vec3>& positions,
+                     const CornerNormalWalks& walks, float crease, int threads) {
   std::copy(positions.begin(), positions.end(), placed.positions.begin() + Placed::kVertexBase);
   return updateCornerNormals(
       placed.positions,
@@ -104,7 +104,8 @@ TEST(CornerNormalsUpdate, ADeformedStepGetsTheBitsOfAFullComputation) {
     // The group border's vertices are walked (their corners take one normal per side).
     ASSERT_GE(walks.vertex.size(), static_cast<std::size_t>(g.n));
     Placed placed = place(g, first, before);
-    ASSERT_TRUE(update(placed, g, next, walks, 30.0f, threads)) << threads << " threads";
+    ASSERT_EQ(update(placed, g, next, walks, 30.0f, threads), NormalsUpdate::Updated)
+        << threads << " threads";
     std::vector<Vec3> faceNormals;
     const CornerNormals expected = computeCornerNormals(next, g.faces, g.tags, 30.0f, threads, &faceNormals);
     std::vector<Vec3> updated(placed.normals.normals.begin() + Placed::kNormalBase,
@@ -128,28 +129,30 @@ TEST(CornerNormalsUpdate, ACubeWhoseEveryCornerIsACreaseFollowsAStretch) {
   EXPECT_EQ(walks.vertex.size(), 8u);
   for (Vec3& p : positions) p = Vec3{1.5f * p.x + 0.25f * p.y, p.y, 0.8f * p.z};  // a shear: still 24 normals
   std::vector<Vec3> faceNormals(6);
-  ASSERT_TRUE(updateCornerNormals(positions, CornerNormalsSpan{faces, 0, 8, 0}, tags, 60.0f, walks, 1,
-                                  normals.normals, normals.faceCorner, faceNormals));
+  ASSERT_EQ(updateCornerNormals(positions, CornerNormalsSpan{faces, 0, 8, 0}, tags, 60.0f, walks, 1,
+                                normals.normals, normals.faceCorner, faceNormals),
+            NormalsUpdate::Updated);
   std::vector<Vec3> expectedFaceNormals;
   const CornerNormals expected = computeCornerNormals(positions, faces, tags, 60.0f, 1, &expectedFaceNormals);
   EXPECT_TRUE(sameBits(normals.normals, expected.normals));
   EXPECT_TRUE(sameBits(faceNormals, expectedFaceNormals));
 }
 
-TEST(CornerNormalsUpdate, ANewCreaseOrACollapsedFaceSaysNo) {
+TEST(CornerNormalsUpdate, ANewCreaseOrACollapsedFaceSaysWhy) {
   const Grid g = grid(60);
   const std::vector<Vec3> first = deformed(g, 0.01f);
   CornerNormalWalks walks;
   const CornerNormals before = computeCornerNormals(first, g.faces, g.tags, 30.0f, 2, nullptr, &walks);
   Placed folded = place(g, first, before);
-  EXPECT_FALSE(update(folded, g, deformed(g, 0.01f, 0.3f), walks, 30.0f, 2));  // a crease inside group 1
+  EXPECT_EQ(update(folded, g, deformed(g, 0.01f, 0.3f), walks, 30.0f, 2),  // a crease inside group 1
+            NormalsUpdate::SmoothingChanged);
   std::vector<Vec3> collapsed = first;
   collapsed[g.faces[100].vertex[1]] = collapsed[g.faces[100].vertex[0]];  // a quad loses an edge...
   collapsed[g.faces[100].vertex[2]] = collapsed[g.faces[100].vertex[0]];  // ...and its area
   Placed flat = place(g, first, before);
-  EXPECT_FALSE(update(flat, g, collapsed, walks, 30.0f, 2));
+  EXPECT_EQ(update(flat, g, collapsed, walks, 30.0f, 2), NormalsUpdate::FaceDegenerate);
   Placed same = place(g, first, before);
-  EXPECT_TRUE(update(same, g, first, walks, 30.0f, 2));
+  EXPECT_EQ(update(same, g, first, walks, 30.0f, 2), NormalsUpdate::Updated);
 }
 
 }  // namespace

@@ -119,6 +119,30 @@ TEST(SceneUpdate, AWarpedStepWrittenInPlaceIsTheStepsFullBuild) {
   }
 }
 
+// A beam smoothed only below 2 degrees: as it bends, the faces along it turn past that from one
+// another and its vertices split into creases, so its normals are computed afresh and spliced in
+// (the ghost's and the copy's normals move along).
+TEST(SceneUpdate, AMeshWhoseCreasesChangeGetsItsNormalsAfresh) {
+  SceneDescription description = twoBeams();
+  description.meshes[0].smoothAngleDegrees = 2;
+  description.meshes[0].warp->factor = 3;
+  const std::vector<Mesh> meshes = readSceneMeshes(description);
+  SceneLayout layout;
+  Scene scene = buildSceneAt(at(description, 0.0), meshes, 2, nullptr, &layout);
+  const std::size_t flatNormals = scene.geometry.cornerNormals.normals.size();
+  StageTimes times;
+  ASSERT_TRUE(updateSceneAt(scene, layout, at(description, 1.5), meshes, 2, &times));
+  const Scene built = buildSceneAt(at(description, 1.5), meshes, 2);
+  EXPECT_NE(built.geometry.cornerNormals.normals.size(), flatNormals);  // the bent beam has more creases
+  expectSameScene(scene, built);
+  bool afresh = false;
+  for (const StageTimes::Stage& stage : times.stages) afresh = afresh || stage.name == "normals again";
+  EXPECT_TRUE(afresh);
+  // And back: the layout followed the splice, so the next step updates from it.
+  ASSERT_TRUE(updateSceneAt(scene, layout, at(description, 0.5), meshes, 2));
+  expectSameScene(scene, buildSceneAt(at(description, 0.5), meshes, 2));
+}
+
 TEST(SceneUpdate, WhatChangesItsFacesOrIsBuiltPerStepIsLeftToAFullBuild) {
   SceneDescription description = twoBeams();
   const std::vector<Mesh> meshes = readSceneMeshes(description);

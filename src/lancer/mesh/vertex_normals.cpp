@@ -7,8 +7,8 @@
 #include <numbers>
 #include <utility>
 
-#include "lancer/mesh/corner_angles.hpp"
 #include "lancer/mesh/face_geometry.hpp"
+#include "lancer/mesh/face_terms.hpp"
 #include "lancer/mesh/prefetch_corners.hpp"
 #include "lancer/mesh/vertex_corners.hpp"
 #include "lancer/mesh/vertex_ranges.hpp"
@@ -53,6 +53,15 @@ struct VertexSum {
   std::uint8_t withinHalf = 1;  // every face so far in the first one's group and half crease
 };
 
+// What updateCornerNormals sums per vertex (VertexSum's part for a vertex known to have been smooth):
+// the weighted sum, how many faces, and the least cosine between a face's normal and the normal the
+// vertex had.
+struct SmoothVertexSum {
+  Vec3 sum{0, 0, 0};
+  float leastCosine = 1;
+  std::uint32_t faces = 0;
+};
+
 // A vertex whose faces must be compared pair by pair, and one whose faces' normals cancel out:
 // both walk their faces.
 bool mustWalk(const VertexSum& at) { return at.faces == 2 && !at.withinHalf; }
@@ -72,8 +81,9 @@ struct FaceTerms {
   std::span<const MeshFace> faces;
   float weight(std::uint32_t face, int corner) const {
     if (cornerWeight) return cornerWeight[face][corner];
+    Vec3 normal;
     std::array<float, 4> faceAngles;
-    cornerAnglesOf(positions, faces.subspan(face, 1), &faceAngles);
+    faceTermsOf(positions, faces.subspan(face, 1), &normal, &faceAngles);
     return faceAngles[corner];
   }
 };
@@ -191,13 +201,13 @@ bool appendVertexNormals(const VertexSum& at, std::span<const std::uint32_t> row
 }  // namespace
 
 struct CornerNormalsScratch::Sums {
-  std::vector<VertexSum> vertexSum;
+  std::vector<SmoothVertexSum> vertexSum;
 };
 CornerNormalsScratch::CornerNormalsScratch() : sums(std::make_unique<Sums>()) {}
 CornerNormalsScratch::~CornerNormalsScratch() = default;
 CornerNormalsScratch::CornerNormalsScratch(CornerNormalsScratch&&) noexcept = default;
 CornerNormalsScratch& CornerNormalsScratch::operator=(CornerNormalsScratch&&) noexcept = default;
-void CornerNormalsScratch::release() { std::vector<VertexSum>().swap(sums->vertexSum); }
+void CornerNormalsScratch::release() { std::vector<SmoothVertexSum>().swap(sums->vertexSum); }
 
 CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                                    std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
@@ -210,11 +220,8 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
   std::vector<Vec3> unitFaceNormal = vectorOnHugePages<Vec3>(faceCount);
   std::vector<std::array<float, 4>> cornerWeight = vectorOnHugePages<std::array<float, 4>>(faceCount);
   parallelChunks(ChunkPlan(faceCount, kGrain), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
-    cornerAnglesOf(positions, faces.subspan(begin, end - begin), cornerWeight.data() + begin);
-    for (std::size_t f = begin; f < end; ++f) {
-      prefetchCorners(positions.data(), faces, f + kPrefetchFacesAhead);
-      unitFaceNormal[f] = faceNormal(positions, faces[f]);
-    }
+    faceTermsOf(positions, faces.subspan(begin, end - begin), unitFaceNormal.data() + begin,
+                cornerWeight.data() + begin);
   });
   const FaceTerms terms{unitFaceNormal.data(),
                         cornerWeight.data(),
@@ -308,16 +315,20 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
   return result;
 }
 
-bool updateCornerNormals(std::span<const Vec3> positions, const CornerNormalsSpan& mesh,
-                         std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
-                         const CornerNormalWalks& walks, int threads, std::span<Vec3> normals,
-                         std::span<const std::array<std::uint32_t, 4>> faceCorner,
-                         std::span<Vec3> unitFaceNormals, CornerNormalsScratch* scratch) {
+NormalsUpdate updateCornerNormals(std::span<const Vec3> positions, const CornerNormalsSpan& mesh,
+                                  std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
+                                  const CornerNormalWalks& walks, int threads, std::span<Vec3> normals,
+                                  std::span<const std::array<std::uint32_t, 4>> faceCorner,
+                                  std::span<Vec3> unitFaceNormals, CornerNormalsScratch* scratch) {
   const std::span<const MeshFace> faces = mesh.faces;
   const std::size_t faceCount = faces.size();
   const std::size_t vertexCount = mesh.vertexCount;
   // One pass: each vertex range sums the faces that touch it, computing their normals and weights
   // (again, for a face across two ranges); the range of a face's first vertex writes its normal.
+  // A vertex computeCornerNormals found smooth stays so while its faces stay within half the crease
+  // angle of the one normal it had (then every two are within the crease angle, and the pairwise
+  // test would pass), so its faces need not be compared with its first face's: what is summed is
+  // the sum, in face order as there, and the least cosine to that normal.
   std::atomic<bool> ok{true};
   const FaceTerms terms{unitFaceNormals.data(),
                         nullptr,
@@ -325,32 +336,77 @@ bool updateCornerNormals(std::span<const Vec3> positions, const CornerNormalsSpa
                         SmoothingAngles(creaseAngleDegrees),
                         positions,
                         faces};
-  std::vector<VertexSum> ownSums;
-  std::vector<VertexSum>& vertexSum = scratch ? scratch->sums->vertexSum : ownSums;
-  sumVertexNormals(
-      faces, mesh.vertexBase, vertexCount, facePhysicalTag, terms.angles, threads,
-      [&](std::size_t firstVertex, std::size_t endVertex) {
-        // The angles of the block of faces around the one asked, computed together.
-        std::array<std::array<float, 4>, kAngleBlock> blockAngles{};
-        std::size_t blockFirst = faceCount;
-        return [&, firstVertex, endVertex, blockAngles, blockFirst](std::size_t f) mutable {
-          const MeshFace& face = faces[f];
-          const Vec3 normal = faceNormal(positions, face);
-          const std::uint32_t owner = face.vertex[0] - mesh.vertexBase;
-          if (owner >= firstVertex && owner < endVertex) {
-            unitFaceNormals[f] = normal;
-            if (isDegenerateFace(positions.data(), face)) ok = false;
-          }
-          if (f < blockFirst || f >= blockFirst + kAngleBlock) {
-            blockFirst = f;
-            cornerAnglesOf(positions, faces.subspan(f, std::min(kAngleBlock, faceCount - f)),
-                           blockAngles.data());
-          }
-          return std::pair{normal, blockAngles[f - blockFirst]};
-        };
-      },
-      vertexSum);
-  if (!ok) return false;
+  std::vector<SmoothVertexSum> ownSums;
+  std::vector<SmoothVertexSum>& vertexSum = scratch ? scratch->sums->vertexSum : ownSums;
+  if (vertexSum.capacity() < vertexCount) {
+    vertexSum = vectorOnHugePages<SmoothVertexSum>(vertexCount);
+  } else {
+    vertexSum.assign(vertexCount, SmoothVertexSum{});
+  }
+  const std::uint32_t vertexBase = mesh.vertexBase;
+  forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
+    // The terms of the block of faces from the one asked, computed together.
+    std::array<std::array<float, 4>, kAngleBlock> blockAngles{};
+    std::array<Vec3, kAngleBlock> blockNormals{};
+    std::size_t blockFirst = faceCount;
+    for (std::size_t f = 0; f < faceCount; ++f) {
+      if (f + kPrefetchFacesAhead < faceCount)  // prefetchCorners, the faces' vertices less vertexBase
+        for (int c = 0; c < 3; ++c)
+          __builtin_prefetch(vertexSum.data() + (faces[f + kPrefetchFacesAhead].vertex[c] - vertexBase));
+      const MeshFace& face = faces[f];
+      bool touches = false;
+      for (int c = 0; c < face.cornerCount(); ++c)
+        touches = touches ||
+                  (face.vertex[c] - vertexBase >= firstVertex && face.vertex[c] - vertexBase < endVertex);
+      if (!touches) continue;
+      if (f < blockFirst || f >= blockFirst + kAngleBlock) {
+        blockFirst = f;
+        // A degenerate face has no normal: the step's scene is built again, without it.
+        if (!faceTermsOf(positions, faces.subspan(f, std::min(kAngleBlock, faceCount - f)),
+                         blockNormals.data(), blockAngles.data()))
+          ok = false;
+      }
+      const Vec3 normal = blockNormals[f - blockFirst];
+      const std::array<float, 4>& weight = blockAngles[f - blockFirst];
+      const std::uint32_t owner = face.vertex[0] - vertexBase;
+      if (owner >= firstVertex && owner < endVertex) unitFaceNormals[f] = normal;
+      for (int c = 0; c < face.cornerCount(); ++c) {
+        const std::uint32_t v = face.vertex[c] - vertexBase;
+        if (v < firstVertex || v >= endVertex) continue;
+        SmoothVertexSum& at = vertexSum[v];
+        at.leastCosine = std::min(at.leastCosine, dot(normals[faceCorner[f][c] - mesh.normalBase], normal));
+        ++at.faces;
+        at.sum += normal * weight[c];
+      }
+    }
+  });
+  if (!ok) return NormalsUpdate::FaceDegenerate;
+  // A walked vertex's sum as computeCornerNormals's pass makes it, from its corners (face order).
+  auto walkedSum = [&](std::span<const std::uint32_t> row) {
+    VertexSum at;
+    for (const std::uint32_t code : row) {
+      const std::uint32_t f = code >> 2;
+      const Vec3 normal = unitFaceNormals[f];
+      const std::int32_t tag = facePhysicalTag[f];
+      if (at.faces == 0) {
+        at.firstNormal = normal;
+        at.firstTag = tag;
+        at.faces = 1;
+      } else {
+        at.faces = 2;
+        at.withinHalf &= static_cast<std::uint8_t>(
+            tag == at.firstTag && dot(at.firstNormal, normal) >= terms.angles.cosHalfCreaseWithMargin);
+      }
+      at.sum += normal * terms.weight(f, static_cast<int>(code & 3u));
+    }
+    return at;
+  };
+  // Still smooth: one face, or every face within half the crease angle (less the margin), and a sum
+  // that does not cancel.
+  auto stillSmooth = [&](const SmoothVertexSum& at) {
+    const Vec3 n = normalize(at.sum);
+    return (at.faces == 1 || at.leastCosine >= terms.angles.cosHalfCreaseWithMargin) && dot(n, n) > 0.5f;
+  };
   // The normals lie in vertex order (computeCornerNormals's chunks, concatenated): none for a
   // vertex without faces, one for a smooth vertex, and for a walked one as many as its corners'
   // indices span. Each chunk of vertices counts its own first, then writes from its offset.
@@ -378,34 +434,34 @@ bool updateCornerNormals(std::span<const Vec3> positions, const CornerNormalsSpa
     std::uint32_t count = 0;
     std::size_t k = firstWalked(firstVertex);
     for (std::size_t v = firstVertex; v < endVertex; ++v) {
-      const VertexSum& at = vertexSum[v];
+      const SmoothVertexSum& at = vertexSum[v];
       if (k < walks.vertex.size() && walks.vertex[k] == v) {
         const auto [low, high] = heldIndices(rowOf(k++));
         count += high - low + 1;
       } else if (at.faces != 0) {
-        if (mustWalk(at) || cancels(at)) ok = false;  // its smoothing changed: a crease appeared
+        if (!stillSmooth(at)) ok = false;  // its smoothing may have changed: a crease appeared
         ++count;
       }
     }
     chunkBase[chunk + 1] = count;
   });
-  if (!ok) return false;
+  if (!ok) return NormalsUpdate::SmoothingChanged;
   for (std::size_t k = 0; k < plan.chunks; ++k) chunkBase[k + 1] += chunkBase[k];
-  if (chunkBase[plan.chunks] != normals.size()) return false;
+  if (chunkBase[plan.chunks] != normals.size()) return NormalsUpdate::SmoothingChanged;
 
   parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t firstVertex, std::size_t endVertex) {
     std::uint32_t next = chunkBase[chunk];
     std::size_t k = firstWalked(firstVertex);
     std::vector<Vec3> own;  // a walked vertex's normals
     for (std::size_t v = firstVertex; v < endVertex; ++v) {
-      const VertexSum& at = vertexSum[v];
+      const SmoothVertexSum& at = vertexSum[v];
       if (k < walks.vertex.size() && walks.vertex[k] == v) {
         const std::span<const std::uint32_t> row = rowOf(k++);
         const auto [low, high] = heldIndices(row);
         own.clear();
         bool same = low == next;
-        const bool one =
-            appendVertexNormals(at, row, terms, own, [&](std::uint32_t code, std::uint32_t index) {
+        const bool one = appendVertexNormals(
+            walkedSum(row), row, terms, own, [&](std::uint32_t code, std::uint32_t index) {
               same = same && faceCorner[code >> 2][code & 3u] - mesh.normalBase == next + index;
             });
         if (!same || own.size() != high - low + 1 || (one && high != low)) {
@@ -420,7 +476,7 @@ bool updateCornerNormals(std::span<const Vec3> positions, const CornerNormalsSpa
     }
   });
 
-  return ok;
+  return ok ? NormalsUpdate::Updated : NormalsUpdate::SmoothingChanged;
 }
 
 }  // namespace lancer

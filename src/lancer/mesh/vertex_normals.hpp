@@ -58,16 +58,22 @@ class CornerNormalsScratch {
   std::unique_ptr<Sums> sums;
 };
 
+enum class NormalsUpdate {
+  Updated,
+  SmoothingChanged,  // some vertex may be smoothed otherwise: computeCornerNormals again
+  FaceDegenerate,    // a face has no normal: it must be dropped (scene_update.hpp builds again)
+};
+
 // The normals computeCornerNormals gave `mesh.faces` (with `walks`), again for the vertices at new
 // `positions`, written over `normals` (the normals' values; their indices in faceCorner stay) and
 // `unitFaceNormals` (per face of the mesh): the same bits computeCornerNormals would give, as long
-// as every vertex is smoothed as before. False, with the arrays partly written, when some vertex's
-// smoothing changed (a new crease, faces that now cancel) or a face has no normal (degenerate):
-// compute them again then. `scratch`, when given, holds the working memory between calls.
-bool updateCornerNormals(std::span<const Vec3> positions, const CornerNormalsSpan& mesh,
-                         std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
-                         const CornerNormalWalks& walks, int threads, std::span<Vec3> normals,
-                         std::span<const std::array<std::uint32_t, 4>> faceCorner,
-                         std::span<Vec3> unitFaceNormals, CornerNormalsScratch* scratch = nullptr);
+// as every vertex is smoothed as before. Otherwise, with the arrays partly written, says why: a
+// vertex whose smoothing may have changed (a new crease, faces that now cancel), or a face without
+// a normal. `scratch`, when given, holds the working memory between calls.
+NormalsUpdate updateCornerNormals(std::span<const Vec3> positions, const CornerNormalsSpan& mesh,
+                                  std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
+                                  const CornerNormalWalks& walks, int threads, std::span<Vec3> normals,
+                                  std::span<const std::array<std::uint32_t, 4>> faceCorner,
+                                  std::span<Vec3> unitFaceNormals, CornerNormalsScratch* scratch = nullptr);
 
 }  // namespace lancer

@@ -107,18 +107,18 @@ PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTra
   }
   // Refraction and caps tell entering from leaving by the side a ray hits, so solids must face out
   // of their material (cavity walls into the cavity).
-  placed.orientation = orientClosedShellsOutward(placed.positions, mesh.faces, placed.edgeMasks,
-                                                 mesh.facePhysicalTag, mesh.volumeSides.side, threads,
-                                                 layout ? &layout->shells : nullptr);
+  placed.orientation =
+      orientClosedShellsOutward(placed.positions, mesh.faces, placed.edgeMasks, mesh.facePhysicalTag,
+                                mesh.volumeSides.side, threads, layout ? &layout->shells : nullptr);
   for (const std::uint32_t f : placed.orientation.reversedInterfaces) {
     std::swap(mesh.facePhysicalTag[f], mesh.volumeSides.outerPhysicalTag[f]);
     std::swap(mesh.faceEntityTag[f], mesh.volumeSides.outerEntityTag[f]);
   }
   times.add("orient", orient.seconds());  // shells, orientation, nesting, interfaces
   const Stopwatch normals;
-  placed.normals = computeCornerNormals(placed.positions, mesh.faces, mesh.facePhysicalTag,
-                                        instance.smoothAngleDegrees, threads, &placed.faceNormals,
-                                        layout ? &layout->walks : nullptr);
+  placed.normals =
+      computeCornerNormals(placed.positions, mesh.faces, mesh.facePhysicalTag, instance.smoothAngleDegrees,
+                           threads, &placed.faceNormals, layout ? &layout->walks : nullptr);
   times.add("normals", normals.seconds());
   return placed;
 }
@@ -160,7 +160,7 @@ void appendGeometry(SceneGeometry& geometry, const std::vector<MeshFace>& faces,
       corners[c] += normalBase;
     }
     geometry.faces[faceBase + f] = face;
-    geometry.faceNormals[faceBase + f] = placed.faceNormals[f];  // = faceNormal(geometry.positions, face)
+    geometry.faceNormals[faceBase + f] = placed.faceNormals[f];  // faceNormal(geometry.positions, face)
     geometry.cornerNormals.faceCorner[faceBase + f] = corners;
   });
 }
@@ -407,7 +407,8 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
     scene.warnings.insert(scene.warnings.end(), mesh.source.warnings.begin(), mesh.source.warnings.end());
     const auto groupMaterials = resolveGroupMaterials(instance, mesh);
     SceneEntryLayout* entryLayout = layout ? &layout->entries.emplace_back() : nullptr;
-    PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin, threads, times, entryLayout);
+    PlacedMesh placed =
+        placeMesh(instance, mesh, transforms[i], geometry.origin, threads, times, entryLayout);
 
     const auto vertexBase = static_cast<std::uint32_t>(geometry.positions.size());
     const std::size_t faceBase = geometry.faces.size();
@@ -430,8 +431,8 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
     const std::optional<FieldColoring>& coloring = entries[i].coloring;
     annotations.push_back({&instance, coloring ? &*coloring : nullptr,
                            entries[i].colorBy ? &*entries[i].colorBy : nullptr,
-                           entries[i].fields ? entries[i].fields : &mesh, vertexBase, geometry.positions.size(),
-                           faceBase, geometry.faces.size()});
+                           entries[i].fields ? entries[i].fields : &mesh, vertexBase,
+                           geometry.positions.size(), faceBase, geometry.faces.size()});
     if (!instance.clips.empty() && !mesh.faces.empty())
       appendMeshClips(scene.clipping, geometry, instance.clips, faceBase);
   }

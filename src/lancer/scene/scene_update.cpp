@@ -1,5 +1,6 @@
 #include "lancer/scene/scene_update.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <span>
 
@@ -38,11 +39,56 @@ bool warpInPlace(SceneGeometry& geometry, const SceneEntryLayout& entry, const M
   return finite;
 }
 
-// The mesh's normals at its new positions; false when its faces would be oriented or smoothed
-// otherwise.
-bool normalsInPlace(SceneGeometry& geometry, const SceneEntryLayout& entry, std::size_t normalEnd,
+// The mesh's normals computed afresh (a vertex's smoothing may have changed: a crease formed or
+// went), spliced into the scene's: the normals of the meshes after it move along, and the layout
+// with them.
+void recomputeNormals(SceneGeometry& geometry, SceneLayout& layout, std::size_t k, std::size_t normalEnd,
+                      std::span<const std::int32_t> tags, float creaseAngleDegrees, int threads) {
+  SceneEntryLayout& entry = layout.entries[k];
+  const auto faces = std::span<const MeshFace>(geometry.faces).subspan(entry.faceBase, entry.faceCount);
+  std::vector<MeshFace> shifted;  // numbered from the mesh's first vertex, as computeCornerNormals wants
+  if (entry.vertexBase != 0) {
+    shifted.assign(faces.begin(), faces.end());
+    for (MeshFace& face : shifted)
+      for (int c = 0; c < face.cornerCount(); ++c) face.vertex[c] -= entry.vertexBase;
+  }
+  std::vector<Vec3> faceNormals;
+  CornerNormalWalks walks;
+  CornerNormals fresh = computeCornerNormals(
+      std::span<const Vec3>(geometry.positions).subspan(entry.vertexBase, entry.vertexCount),
+      entry.vertexBase != 0 ? std::span<const MeshFace>(shifted) : faces, tags, creaseAngleDegrees, threads,
+      &faceNormals, &walks);
+  std::copy(faceNormals.begin(), faceNormals.end(), geometry.faceNormals.begin() + entry.faceBase);
+  CornerNormals& normals = geometry.cornerNormals;
+  const std::size_t held = normalEnd - entry.normalBase;
+  if (fresh.normals.size() == held) {
+    std::copy(fresh.normals.begin(), fresh.normals.end(), normals.normals.begin() + entry.normalBase);
+  } else {
+    normals.normals.erase(normals.normals.begin() + entry.normalBase, normals.normals.begin() + normalEnd);
+    normals.normals.insert(normals.normals.begin() + entry.normalBase, fresh.normals.begin(),
+                           fresh.normals.end());
+  }
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    std::array<std::uint32_t, 4> corners = fresh.faceCorner[f];
+    for (int c = 0; c < faces[f].cornerCount(); ++c) corners[c] += entry.normalBase;
+    normals.faceCorner[entry.faceBase + f] = corners;
+  }
+  const auto shift = static_cast<std::uint32_t>(fresh.normals.size() - held);  // modulo 2^32: may go down
+  for (std::size_t later = k + 1; later < layout.entries.size(); ++later) {
+    SceneEntryLayout& next = layout.entries[later];
+    next.normalBase += shift;
+    for (std::size_t f = next.faceBase; f < std::size_t{next.faceBase} + next.faceCount; ++f)
+      for (int c = 0; c < geometry.faces[f].cornerCount(); ++c) normals.faceCorner[f][c] += shift;
+  }
+  entry.walks = std::move(walks);
+}
+
+// The mesh's normals at its new positions; false when its faces would be oriented otherwise or one
+// collapsed.
+bool normalsInPlace(SceneGeometry& geometry, SceneLayout& layout, std::size_t k, std::size_t normalEnd,
                     const MeshInstance& instance, const Mesh& mesh, int threads,
-                    CornerNormalsScratch* scratch) {
+                    CornerNormalsScratch* scratch, StageTimes& times) {
+  const SceneEntryLayout& entry = layout.entries[k];
   const std::span<const MeshFace> faces =
       std::span<const MeshFace>(geometry.faces).subspan(entry.faceBase, entry.faceCount);
   if (mesh.facePhysicalTag.size() != entry.faceCount) return false;
@@ -56,18 +102,26 @@ bool normalsInPlace(SceneGeometry& geometry, const SceneEntryLayout& entry, std:
     tags = swapped;
   }
   CornerNormals& normals = geometry.cornerNormals;
-  return updateCornerNormals(
+  const NormalsUpdate update = updateCornerNormals(
       geometry.positions, CornerNormalsSpan{faces, entry.vertexBase, entry.vertexCount, entry.normalBase},
       tags, instance.smoothAngleDegrees, entry.walks, threads,
       std::span<Vec3>(normals.normals).subspan(entry.normalBase, normalEnd - entry.normalBase),
       std::span<const std::array<std::uint32_t, 4>>(normals.faceCorner)
           .subspan(entry.faceBase, entry.faceCount),
       std::span<Vec3>(geometry.faceNormals).subspan(entry.faceBase, entry.faceCount), scratch);
+  if (update == NormalsUpdate::FaceDegenerate) return false;
+  if (update == NormalsUpdate::SmoothingChanged) {
+    const Stopwatch again;
+    if (scratch) scratch->release();  // the full computation's memory instead
+    recomputeNormals(geometry, layout, k, normalEnd, tags, instance.smoothAngleDegrees, threads);
+    times.add("normals again", again.seconds());
+  }
+  return true;
 }
 
 }  // namespace
 
-bool updateSceneAt(Scene& scene, const SceneLayout& layout, const SceneDescription& description,
+bool updateSceneAt(Scene& scene, SceneLayout& layout, const SceneDescription& description,
                    const std::vector<Mesh>& meshes, int threads, StageTimes* timesOrNull,
                    CornerNormalsScratch* scratch) {
   StageTimes unused;
@@ -94,8 +148,8 @@ bool updateSceneAt(Scene& scene, const SceneLayout& layout, const SceneDescripti
     const SceneEntryLayout& entry = layout.entries[k];
     const std::size_t normalEnd = k + 1 < layout.entries.size() ? layout.entries[k + 1].normalBase
                                                                 : geometry.cornerNormals.normals.size();
-    if (warped(entry) && !normalsInPlace(geometry, entry, normalEnd, description.meshes[entry.meshIndex],
-                                         meshes[entry.meshIndex], threads, scratch))
+    if (warped(entry) && !normalsInPlace(geometry, layout, k, normalEnd, description.meshes[entry.meshIndex],
+                                         meshes[entry.meshIndex], threads, scratch, times))
       return false;
   }
   times.add("normals", normalsClock.seconds());

@@ -1,9 +1,10 @@
-#include "lancer/mesh/corner_angles.hpp"
+#include "lancer/mesh/face_terms.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "lancer/math/fast_acos.hpp"
+#include "lancer/mesh/face_geometry.hpp"
 
 #if defined(__AVX2__) && defined(__FMA__)
 #include <immintrin.h>
@@ -24,7 +25,8 @@ Lanes3 minus(const Lanes3& a, const Lanes3& b) {
 }
 
 __m256 dot(const Lanes3& a, const Lanes3& b) {
-  return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(a.x, b.x), _mm256_mul_ps(a.y, b.y)), _mm256_mul_ps(a.z, b.z));
+  return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(a.x, b.x), _mm256_mul_ps(a.y, b.y)),
+                       _mm256_mul_ps(a.z, b.z));
 }
 
 // As normalize (vec3.hpp): a zero vector stays zero.
@@ -42,8 +44,8 @@ __m256 fastAcos8(__m256 x) {
   x = _mm256_max_ps(_mm256_min_ps(x, _mm256_set1_ps(1.0f)), _mm256_set1_ps(-1.0f));
   const __m256 a = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), x);
   const __m256 wide = _mm256_cmp_ps(a, _mm256_set1_ps(0.5f), _CMP_GT_OQ);
-  const __m256 z = _mm256_blendv_ps(_mm256_mul_ps(a, a),
-                                    _mm256_mul_ps(_mm256_set1_ps(0.5f), _mm256_sub_ps(_mm256_set1_ps(1.0f), a)), wide);
+  const __m256 z = _mm256_blendv_ps(
+      _mm256_mul_ps(a, a), _mm256_mul_ps(_mm256_set1_ps(0.5f), _mm256_sub_ps(_mm256_set1_ps(1.0f), a)), wide);
   const __m256 s = _mm256_blendv_ps(a, _mm256_sqrt_ps(z), wide);
   __m256 p = _mm256_fmadd_ps(_mm256_set1_ps(4.2163199048e-2f), z, _mm256_set1_ps(2.4181311049e-2f));
   p = _mm256_fmadd_ps(p, z, _mm256_set1_ps(4.5470025998e-2f));
@@ -56,9 +58,21 @@ __m256 fastAcos8(__m256 x) {
   return _mm256_blendv_ps(acosA, _mm256_sub_ps(_mm256_set1_ps(3.14159265358979f), acosA), negative);
 }
 
-// Up to eight faces (count >= 1); the lanes past count repeat the last face.
-void cornerAnglesOfBlock(const Vec3* positions, const MeshFace* faces, std::size_t count,
-                         std::array<float, 4>* angles) {
+Lanes3 crossOf(const Lanes3& a, const Lanes3& b) {
+  return {_mm256_sub_ps(_mm256_mul_ps(a.y, b.z), _mm256_mul_ps(a.z, b.y)),
+          _mm256_sub_ps(_mm256_mul_ps(a.z, b.x), _mm256_mul_ps(a.x, b.z)),
+          _mm256_sub_ps(_mm256_mul_ps(a.x, b.y), _mm256_mul_ps(a.y, b.x))};
+}
+
+Lanes3 select(const Lanes3& ifZero, const Lanes3& ifSet, __m256 mask) {
+  return {_mm256_blendv_ps(ifZero.x, ifSet.x, mask), _mm256_blendv_ps(ifZero.y, ifSet.y, mask),
+          _mm256_blendv_ps(ifZero.z, ifSet.z, mask)};
+}
+
+// Up to eight faces (count >= 1); the lanes past count repeat the last face. False when a face may
+// be degenerate: its normal's length is not clearly above float rounding.
+bool faceTermsOfBlock(const Vec3* positions, const MeshFace* faces, std::size_t count, Vec3* normals,
+                      std::array<float, 4>* angles) {
   // Corner k of each lane; a triangle's fourth corner is its first, so that the edge into it closes
   // the triangle (its own angle is dropped).
   alignas(32) float corner[4][3][8];
@@ -78,11 +92,24 @@ void cornerAnglesOfBlock(const Vec3* positions, const MeshFace* faces, std::size
   for (int k = 0; k < 4; ++k)
     q[k] = {_mm256_load_ps(corner[k][0]), _mm256_load_ps(corner[k][1]), _mm256_load_ps(corner[k][2])};
   const __m256 isQuad = _mm256_load_ps(quad);
+  // The face's normal: a triangle's (b - a) x (c - a), a quad's diagonals (c - a) x (d - b).
+  const Lanes3 twiceArea = crossOf(select(minus(q[1], q[0]), minus(q[2], q[0]), isQuad),
+                                   select(minus(q[2], q[0]), minus(q[3], q[1]), isQuad));
+  const Lanes3 normal = normalized(twiceArea);
+  // Degenerate (isDegenerateFace: twice the area below 1e-12 of the longest edge squared) only when
+  // twice the area is below 1e-5 of the edges' squares: float rounding is 1e-7 of them.
+  const Lanes3 edge[4] = {minus(q[1], q[0]), minus(q[2], q[1]), minus(q[3], q[2]), minus(q[0], q[3])};
+  __m256 longest = _mm256_max_ps(_mm256_max_ps(dot(edge[0], edge[0]), dot(edge[1], edge[1])),
+                                 _mm256_max_ps(dot(edge[2], edge[2]), dot(edge[3], edge[3])));
+  const __m256 areaSquared = dot(twiceArea, twiceArea);
+  const __m256 clear = _mm256_cmp_ps(
+      areaSquared, _mm256_mul_ps(_mm256_set1_ps(1e-10f), _mm256_mul_ps(longest, longest)), _CMP_GT_OQ);
+  const int clearLanes = _mm256_movemask_ps(clear);
   // out[k]: the unit edge from corner k to the next (a triangle's third: to its first).
-  const Lanes3 out[4] = {normalized(minus(q[1], q[0])), normalized(minus(q[2], q[1])),
-                         normalized(minus(q[3], q[2])), normalized(minus(q[0], q[3]))};
+  const Lanes3 out[4] = {normalized(edge[0]), normalized(edge[1]), normalized(edge[2]), normalized(edge[3])};
   // The angle at corner k between its edge out and the reverse of the edge in: acos(-dot(out, in)).
-  const Lanes3 intoFirst{_mm256_blendv_ps(out[2].x, out[3].x, isQuad), _mm256_blendv_ps(out[2].y, out[3].y, isQuad),
+  const Lanes3 intoFirst{_mm256_blendv_ps(out[2].x, out[3].x, isQuad),
+                         _mm256_blendv_ps(out[2].y, out[3].y, isQuad),
                          _mm256_blendv_ps(out[2].z, out[3].z, isQuad)};
   const __m256 sign = _mm256_set1_ps(-0.0f);
   alignas(32) float angle[4][8];
@@ -90,8 +117,18 @@ void cornerAnglesOfBlock(const Vec3* positions, const MeshFace* faces, std::size
   _mm256_store_ps(angle[1], fastAcos8(_mm256_xor_ps(sign, dot(out[1], out[0]))));
   _mm256_store_ps(angle[2], fastAcos8(_mm256_xor_ps(sign, dot(out[2], out[1]))));
   _mm256_store_ps(angle[3], _mm256_and_ps(isQuad, fastAcos8(_mm256_xor_ps(sign, dot(out[3], out[2])))));
-  for (std::size_t lane = 0; lane < count; ++lane)
+  alignas(32) float n[3][8];
+  _mm256_store_ps(n[0], normal.x);
+  _mm256_store_ps(n[1], normal.y);
+  _mm256_store_ps(n[2], normal.z);
+  for (std::size_t lane = 0; lane < count; ++lane) {
     angles[lane] = {angle[0][lane], angle[1][lane], angle[2][lane], angle[3][lane]};
+    normals[lane] = {n[0][lane], n[1][lane], n[2][lane]};
+  }
+  bool clearOfDegenerate = true;
+  for (std::size_t lane = 0; lane < count; ++lane)
+    if (!(clearLanes & (1 << lane)) && isDegenerateFace(positions, faces[lane])) clearOfDegenerate = false;
+  return clearOfDegenerate;
 }
 
 #else
@@ -102,9 +139,11 @@ void cornerAnglesOfBlock(const Vec3* positions, const MeshFace* faces, std::size
 std::array<float, 4> cornerAnglesOfFace(const Vec3* positions, const MeshFace& face) {
   const int n = face.cornerCount();
   Vec3 out[4];  // out[c]: unit edge from corner c to corner c + 1
-  for (int c = 0; c < n; ++c) out[c] = normalize(positions[face.vertex[(c + 1) % n]] - positions[face.vertex[c]]);
+  for (int c = 0; c < n; ++c)
+    out[c] = normalize(positions[face.vertex[(c + 1) % n]] - positions[face.vertex[c]]);
   std::array<float, 4> angle{0, 0, 0, 0};
-  for (int c = 0; c < n; ++c) angle[c] = fastAcos(std::clamp(dot(out[c], -out[(c + n - 1) % n]), -1.0f, 1.0f));
+  for (int c = 0; c < n; ++c)
+    angle[c] = fastAcos(std::clamp(dot(out[c], -out[(c + n - 1) % n]), -1.0f, 1.0f));
   return angle;
 }
 
@@ -112,15 +151,22 @@ std::array<float, 4> cornerAnglesOfFace(const Vec3* positions, const MeshFace& f
 
 }  // namespace
 
-void cornerAnglesOf(std::span<const Vec3> positions, std::span<const MeshFace> faces,
-                    std::array<float, 4>* angles) {
+bool faceTermsOf(std::span<const Vec3> positions, std::span<const MeshFace> faces, Vec3* normals,
+                 std::array<float, 4>* angles) {
+  bool clear = true;
 #if defined(__AVX2__) && defined(__FMA__)
   for (std::size_t first = 0; first < faces.size(); first += 8)
-    cornerAnglesOfBlock(positions.data(), faces.data() + first, std::min<std::size_t>(8, faces.size() - first),
-                        angles + first);
+    clear &=
+        faceTermsOfBlock(positions.data(), faces.data() + first,
+                         std::min<std::size_t>(8, faces.size() - first), normals + first, angles + first);
 #else
-  for (std::size_t f = 0; f < faces.size(); ++f) angles[f] = cornerAnglesOfFace(positions.data(), faces[f]);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    normals[f] = faceNormal(positions, faces[f]);
+    angles[f] = cornerAnglesOfFace(positions.data(), faces[f]);
+    clear = clear && !isDegenerateFace(positions.data(), faces[f]);
+  }
 #endif
+  return clear;
 }
 
 }  // namespace lancer

@@ -1,0 +1,20 @@
+// What a face contributes to its vertices' smooth normals (vertex_normals.hpp): its unit normal
+// (faceNormal's formula) and the interior angles at its corners, its weights. With AVX2, eight
+// faces at a time: an animation of a deformed mesh computes its normals again every frame, and
+// these terms (edge lengths, arc cosines, square roots) are most of that work. A face's terms never
+// depend on the faces computed with it, so a face alone gets the same bits as in a block.
+#pragma once
+
+#include <array>
+#include <span>
+
+#include "lancer/mesh/mesh.hpp"
+
+namespace lancer {
+
+// normals[i] and angles[i] (radians; a triangle's fourth is 0) for faces[i]. Returns false when
+// some face may be degenerate (isDegenerateFace, face_geometry.hpp, says which).
+bool faceTermsOf(std::span<const Vec3> positions, std::span<const MeshFace> faces, Vec3* normals,
+                 std::array<float, 4>* angles);
+
+}  // namespace lancer
