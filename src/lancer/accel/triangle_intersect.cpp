@@ -21,7 +21,7 @@ bool isSliverTriangle(const Vec3& a, const Vec3& b, const Vec3& c) {
   // Most triangles are far from slivers, which float arithmetic settles: its rounding (a few 1e-7 of
   // |e1| |e2| in the cross product's length) is a thousandth of the margin of twice the sine.
   const Vec3 f1 = b - a, f2 = c - a, fn = cross(f1, f2);
-  constexpr float kClearly = 4.0f * float(kSliverSine * kSliverSine);
+  constexpr auto kClearly = static_cast<float>(4.0 * kSliverSine * kSliverSine);
   if (dot(fn, fn) > kClearly * dot(f1, f1) * dot(f2, f2)) return false;
   const Vec3d e1 = toDouble(b) - toDouble(a);
   const Vec3d e2 = toDouble(c) - toDouble(a);

@@ -70,7 +70,7 @@ Lanes3 select(const Lanes3& ifZero, const Lanes3& ifSet, __m256 mask) {
 }
 
 // Up to eight faces (count >= 1); the lanes past count repeat the last face. False when a face may
-// be degenerate: its normal's length is not clearly above float rounding.
+// be degenerate: twice its area is not clearly above float rounding.
 bool faceTermsOfBlock(const Vec3* positions, const MeshFace* faces, std::size_t count, Vec3* normals,
                       std::array<float, 4>* angles) {
   // Corner k of each lane; a triangle's fourth corner is its first, so that the edge into it closes
@@ -96,8 +96,9 @@ bool faceTermsOfBlock(const Vec3* positions, const MeshFace* faces, std::size_t 
   const Lanes3 twiceArea = crossOf(select(minus(q[1], q[0]), minus(q[2], q[0]), isQuad),
                                    select(minus(q[2], q[0]), minus(q[3], q[1]), isQuad));
   const Lanes3 normal = normalized(twiceArea);
-  // Degenerate (isDegenerateFace: twice the area below 1e-12 of the longest edge squared) only when
-  // twice the area is below 1e-5 of the edges' squares: float rounding is 1e-7 of them.
+  // Clearly not degenerate: twice the area above 1e-5 of the longest edge squared, where float
+  // rounding is 1e-7 of it and isDegenerateFace's line 1e-12. A face under it may be kept by a
+  // build (which tests the mesh's own frame, in double) or not: the caller builds again.
   const Lanes3 edge[4] = {minus(q[1], q[0]), minus(q[2], q[1]), minus(q[3], q[2]), minus(q[0], q[3])};
   __m256 longest = _mm256_max_ps(_mm256_max_ps(dot(edge[0], edge[0]), dot(edge[1], edge[1])),
                                  _mm256_max_ps(dot(edge[2], edge[2]), dot(edge[3], edge[3])));
@@ -116,7 +117,8 @@ bool faceTermsOfBlock(const Vec3* positions, const MeshFace* faces, std::size_t 
   _mm256_store_ps(angle[0], fastAcos8(_mm256_xor_ps(sign, dot(out[0], intoFirst))));
   _mm256_store_ps(angle[1], fastAcos8(_mm256_xor_ps(sign, dot(out[1], out[0]))));
   _mm256_store_ps(angle[2], fastAcos8(_mm256_xor_ps(sign, dot(out[2], out[1]))));
-  _mm256_store_ps(angle[3], _mm256_and_ps(isQuad, fastAcos8(_mm256_xor_ps(sign, dot(out[3], out[2])))));
+  _mm256_store_ps(angle[3], _mm256_blendv_ps(_mm256_setzero_ps(),
+                                             fastAcos8(_mm256_xor_ps(sign, dot(out[3], out[2]))), isQuad));
   alignas(32) float n[3][8];
   _mm256_store_ps(n[0], normal.x);
   _mm256_store_ps(n[1], normal.y);
@@ -125,13 +127,23 @@ bool faceTermsOfBlock(const Vec3* positions, const MeshFace* faces, std::size_t 
     angles[lane] = {angle[0][lane], angle[1][lane], angle[2][lane], angle[3][lane]};
     normals[lane] = {n[0][lane], n[1][lane], n[2][lane]};
   }
-  bool clearOfDegenerate = true;
-  for (std::size_t lane = 0; lane < count; ++lane)
-    if (!(clearLanes & (1 << lane)) && isDegenerateFace(positions, faces[lane])) clearOfDegenerate = false;
-  return clearOfDegenerate;
+  const int used = (1 << count) - 1;
+  return (clearLanes & used) == used;
 }
 
 #else
+
+// The vector path's test: twice the area above 1e-5 of the longest edge squared.
+bool clearlyNotDegenerate(const Vec3* p, const MeshFace& face) {
+  const Vec3& a = p[face.vertex[0]];
+  const Vec3& b = p[face.vertex[1]];
+  const Vec3& c = p[face.vertex[2]];
+  const Vec3& d = face.isQuad() ? p[face.vertex[3]] : a;
+  const Vec3 twiceArea = face.isQuad() ? cross(c - a, d - b) : cross(b - a, c - a);
+  const float longest = std::max(std::max(dot(b - a, b - a), dot(c - b, c - b)),
+                                 std::max(dot(d - c, d - c), dot(a - d, a - d)));
+  return dot(twiceArea, twiceArea) > 1e-10f * longest * longest;
+}
 
 // Each edge is normalised once and shared by the two corners at its ends (the edge into a corner
 // is the reverse of the one out of the previous corner, and negation is exact, so the angles are
@@ -163,7 +175,7 @@ bool faceTermsOf(std::span<const Vec3> positions, std::span<const MeshFace> face
   for (std::size_t f = 0; f < faces.size(); ++f) {
     normals[f] = faceNormal(positions, faces[f]);
     angles[f] = cornerAnglesOfFace(positions.data(), faces[f]);
-    clear = clear && !isDegenerateFace(positions.data(), faces[f]);
+    clear = clear && clearlyNotDegenerate(positions.data(), faces[f]);
   }
 #endif
   return clear;

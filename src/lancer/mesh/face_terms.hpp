@@ -13,7 +13,8 @@
 namespace lancer {
 
 // normals[i] and angles[i] (radians; a triangle's fourth is 0) for faces[i]. Returns false when
-// some face may be degenerate (isDegenerateFace, face_geometry.hpp, says which).
+// some face is not clearly far from degenerate (twice its area under 1e-5 of its longest edge
+// squared; isDegenerateFace, face_geometry.hpp, draws the line at 1e-12).
 bool faceTermsOf(std::span<const Vec3> positions, std::span<const MeshFace> faces, Vec3* normals,
                  std::array<float, 4>* angles);
 

@@ -207,7 +207,9 @@ CornerNormalsScratch::CornerNormalsScratch() : sums(std::make_unique<Sums>()) {}
 CornerNormalsScratch::~CornerNormalsScratch() = default;
 CornerNormalsScratch::CornerNormalsScratch(CornerNormalsScratch&&) noexcept = default;
 CornerNormalsScratch& CornerNormalsScratch::operator=(CornerNormalsScratch&&) noexcept = default;
-void CornerNormalsScratch::release() { std::vector<SmoothVertexSum>().swap(sums->vertexSum); }
+void CornerNormalsScratch::release() {
+  if (sums) std::vector<SmoothVertexSum>().swap(sums->vertexSum);
+}
 
 CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                                    std::span<const std::int32_t> facePhysicalTag, float creaseAngleDegrees,
@@ -337,6 +339,7 @@ NormalsUpdate updateCornerNormals(std::span<const Vec3> positions, const CornerN
                         positions,
                         faces};
   std::vector<SmoothVertexSum> ownSums;
+  if (scratch && !scratch->sums) scratch->sums = std::make_unique<CornerNormalsScratch::Sums>();
   std::vector<SmoothVertexSum>& vertexSum = scratch ? scratch->sums->vertexSum : ownSums;
   if (vertexSum.capacity() < vertexCount) {
     vertexSum = vectorOnHugePages<SmoothVertexSum>(vertexCount);
@@ -460,11 +463,10 @@ NormalsUpdate updateCornerNormals(std::span<const Vec3> positions, const CornerN
         const auto [low, high] = heldIndices(row);
         own.clear();
         bool same = low == next;
-        const bool one = appendVertexNormals(
-            walkedSum(row), row, terms, own, [&](std::uint32_t code, std::uint32_t index) {
-              same = same && faceCorner[code >> 2][code & 3u] - mesh.normalBase == next + index;
-            });
-        if (!same || own.size() != high - low + 1 || (one && high != low)) {
+        appendVertexNormals(walkedSum(row), row, terms, own, [&](std::uint32_t code, std::uint32_t index) {
+          same = same && faceCorner[code >> 2][code & 3u] - mesh.normalBase == next + index;
+        });
+        if (!same || own.size() != high - low + 1) {  // (one normal: own.size() is 1)
           ok = false;
           return;
         }

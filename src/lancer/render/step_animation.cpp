@@ -116,8 +116,15 @@ void StepScenes::buildAt(double time) {
   // previous frame's scene and the tree is refitted (nothing as large as the scene is allocated).
   if (!first && warped && layout_ && accelerator_) {
     builtTime_.reset();
-    if (updateSceneAt(*scene_, *layout_, description_, meshes_, threads_, &rebuildStages_,
-                      &normalsScratch_)) {
+    bool updated = false;
+    try {
+      updated = updateSceneAt(*scene_, *layout_, description_, meshes_, threads_, &rebuildStages_,
+                              &normalsScratch_);
+    } catch (...) {
+      layout_.reset();  // the scene is half written: whatever comes next builds it again
+      throw;
+    }
+    if (updated) {
       const Stopwatch refit;
       const SceneGeometry& geometry = scene_->geometry;
       if (accelerator_->update(geometry.positions, geometry.faces, options, forgetKeptSteps)) ++refits_;
@@ -150,6 +157,9 @@ void StepScenes::buildAt(double time) {
     geometry.bounds.extend(geometry.toSceneSpace(framing_.lower));
     geometry.bounds.extend(geometry.toSceneSpace(framing_.upper));
   }
+  // So are the lights placed against the bounds (a sun's point, an area light's aim), the same in
+  // the frames written over this one.
+  next.appearance.lights = sceneLights(description_, geometry);
   // Colours alone change when nothing is warped: the geometry, so the accelerator, stays. A warped
   // mesh with the same faces (none collapsed, none turned) moved its vertices only: the accelerator
   // is refitted where it can be (the BVH), else built again.

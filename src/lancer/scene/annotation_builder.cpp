@@ -46,16 +46,14 @@ namespace {
 // faceEnd: its faces get the map, its vertices the field's t (the mesh's vertices are the
 // scene's from vertexBase on, in order). Earlier meshes' entries are filled with "not coloured"
 // first.
-void appendFieldColoring(std::optional<FieldColors>& fields, const FieldColoring& coloring,
-                         std::uint32_t vertexBase, std::size_t vertexEnd, std::size_t faceBase,
-                         std::size_t faceEnd) {
-  if (!fields) fields.emplace();
+void appendFieldColoring(FieldColors& fields, const FieldColoring& coloring, std::uint32_t vertexBase,
+                         std::size_t vertexEnd, std::size_t faceBase, std::size_t faceEnd) {
   const int perFace = coloring.perFace ? FieldColors::kPerFace : 0;
-  fields->faceColorMap.resize(faceBase, 0);
-  fields->faceColorMap.resize(faceEnd,
-                              static_cast<std::uint8_t>((1 + static_cast<int>(coloring.map)) | perFace));
+  fields.faceColorMap.resize(faceBase, 0);
+  fields.faceColorMap.resize(faceEnd,
+                             static_cast<std::uint8_t>((1 + static_cast<int>(coloring.map)) | perFace));
   // The mesh's faces and vertices are the scene's from the bases on, in order.
-  std::vector<float>& t = coloring.perFace ? fields->faceFieldT : fields->vertexFieldT;
+  std::vector<float>& t = coloring.perFace ? fields.faceFieldT : fields.vertexFieldT;
   t.resize(coloring.perFace ? faceBase : vertexBase, std::nanf(""));
   t.insert(t.end(), coloring.t.begin(), coloring.t.end());
   t.resize(coloring.perFace ? faceEnd : vertexEnd, std::nanf(""));
@@ -149,7 +147,7 @@ void annotateScene(Scene& scene, const StepSelection& when, const std::vector<En
     if (entry.coloring) {
       startFields();
       if (entry.colorBy->paintsSurface)
-        appendFieldColoring(fields, *entry.coloring, entry.vertexBase, entry.vertexEnd, entry.faceBase,
+        appendFieldColoring(*fields, *entry.coloring, entry.vertexBase, entry.vertexEnd, entry.faceBase,
                             entry.faceEnd);
       if (!fields) fields.emplace();
       appendLegendAndBands(*fields, *entry.colorBy, *entry.coloring, entry.faceBase, entry.faceEnd);

@@ -154,6 +154,10 @@ struct Scene {
   std::vector<std::string> warnings;
 };
 
+// The description's lights in scene space: a sun's point and an undirected area light's aim are
+// placed against geometry.bounds (an animation over steps gives it the whole animation's).
+std::vector<SceneLight> sceneLights(const SceneDescription& description, const SceneGeometry& geometry);
+
 // The floor's plane in the scene: at its height, else touching the lowest vertex along its normal.
 ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const SceneGeometry& geometry);
 

@@ -369,6 +369,13 @@ ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const SceneGeometry& g
   return catcher;
 }
 
+std::vector<SceneLight> sceneLights(const SceneDescription& description, const SceneGeometry& geometry) {
+  std::vector<SceneLight> lights;
+  lights.reserve(description.lights.size());
+  for (const PointLight& light : description.lights) lights.push_back(sceneLight(light, geometry));
+  return lights;
+}
+
 Scene buildScene(const SceneDescription& description, int threads, StageTimes* times) {
   return buildScene(description, readSceneMeshes(description, threads, times), threads, times);
 }
@@ -455,7 +462,7 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
     scene.clipping.planes.push_back({geometry.toSceneSpace(clip.point), toFloat(clip.normal)});
     scene.clipping.caps.push_back(clip.cap ? 1 : 0);
   }
-  for (const PointLight& light : description.lights) appearance.lights.push_back(sceneLight(light, geometry));
+  appearance.lights = sceneLights(description, geometry);
   if (description.environment)
     scene.environment = sceneEnvironment(*description.environment, toFloat(description.camera.up));
   if (description.render.integrator == IntegratorKind::Path && description.ambientSet)

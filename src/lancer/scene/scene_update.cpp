@@ -1,8 +1,11 @@
 #include "lancer/scene/scene_update.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
+#include <optional>
 #include <span>
+#include <vector>
 
 #include "lancer/scene/annotation_builder.hpp"
 #include "lancer/scene/instance_transform.hpp"
@@ -157,9 +160,11 @@ bool updateSceneAt(Scene& scene, SceneLayout& layout, const SceneDescription& de
   // The colours, legends and isolines of every mesh at the new step (undeformed copies have none).
   const Stopwatch annotateClock;
   std::vector<const Mesh*> sources;
+  sources.reserve(meshes.size());
   for (const Mesh& mesh : meshes) sources.push_back(&mesh);
   const SceneColorings colorings = resolveSceneColorings(description, sources);
   std::vector<EntryAnnotation> annotations;
+  annotations.reserve(layout.entries.size());
   for (const SceneEntryLayout& entry : layout.entries) {
     if (entry.undeformedCopy) continue;
     const std::size_t i = entry.meshIndex;

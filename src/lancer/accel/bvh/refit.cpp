@@ -61,8 +61,8 @@ bool Bvh::refit(std::span<const Vec3> positions, std::span<const MeshFace> faces
       const std::uint32_t child = node.child[k];
       if (child == BvhNode::kEmpty || !BvhNode::isLeaf(child)) continue;
       Aabb box;
-      if (!regather(triangles_.data() + BvhNode::leafFirst(child), BvhNode::leafCount(child), positions, faces,
-                    true, box))
+      if (!regather(triangles_.data() + BvhNode::leafFirst(child), BvhNode::leafCount(child), positions,
+                    faces, true, box))
         ok = false;
       for (int a = 0; a < 3; ++a) {
         node.lower[a][k] = box.lower[a] + 0.0f;
@@ -89,8 +89,9 @@ bool Bvh::refit(std::span<const Vec3> positions, std::span<const MeshFace> faces
       }
     }
   }
-  // The root's children hold the boxes of every leaf's triangles; the slivers lie outside the tree.
-  Aabb box = sliverBox;
+  // The root's children hold the boxes of every leaf's triangles (the build's bounds: the slivers,
+  // tested for every ray, are not in them).
+  Aabb box;
   if (!nodes_.empty())
     for (int k = 0; k < BvhNode::kWidth; ++k)
       if (nodes_[0].child[k] != BvhNode::kEmpty) {

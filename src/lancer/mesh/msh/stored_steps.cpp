@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -105,7 +106,11 @@ std::shared_ptr<const std::vector<float>> StoredFieldSteps::load(std::size_t ind
   // warp). The oldest goes first, its memory reused when no one holds it any more.
   std::vector<float> reused;
   if (recent_.size() >= 2 * views_) {
-    if (recent_.front().second.use_count() == 1) reused = std::move(*recent_.front().second);
+    if (recent_.front().second.use_count() == 1) {
+      // No one else holds it: their last release happened before (use_count reads relaxed).
+      std::atomic_thread_fence(std::memory_order_acquire);
+      reused = std::move(*recent_.front().second);
+    }
     recent_.erase(recent_.begin());
   }
   if (!section.binary || section.field.perElement ||
