@@ -51,6 +51,20 @@ struct VertexSum {
   std::int32_t firstTag = 0;
   std::uint8_t faces = 0;       // 0, 1, or 2 for more
   std::uint8_t withinHalf = 1;  // every face so far in the first one's group and half crease
+
+  // The next face (in face order) at this vertex, of unit normal `normal`, weighing `weight` here.
+  void add(const Vec3& normal, std::int32_t tag, float weight, float cosHalfCreaseWithMargin) {
+    if (faces == 0) {
+      firstNormal = normal;
+      firstTag = tag;
+      faces = 1;
+    } else {
+      faces = 2;
+      withinHalf &=
+          static_cast<std::uint8_t>(tag == firstTag && dot(firstNormal, normal) >= cosHalfCreaseWithMargin);
+    }
+    sum += normal * weight;
+  }
 };
 
 // What updateCornerNormals sums per vertex (VertexSum's part for a vertex known to have been smooth):
@@ -88,49 +102,42 @@ struct FaceTerms {
   }
 };
 
-// The sums of the mesh's vertices (faces index them from vertexBase on). Shared out by vertex
-// ranges (vertex_ranges.hpp): the faces are read in order, only the vertex records are written out
-// of order, and no one walks a vertex's faces. termsForRange(firstVertex, endVertex) makes what
-// gives that range face f's unit normal and corner weights, asked in face order.
-template <typename TermsForRange>
-void sumVertexNormals(std::span<const MeshFace> faces, std::uint32_t vertexBase, std::size_t vertexCount,
-                      std::span<const std::int32_t> facePhysicalTag, const SmoothingAngles& angles,
-                      int threads, TermsForRange&& termsForRange, std::vector<VertexSum>& vertexSum) {
-  if (vertexSum.capacity() < vertexCount) {
-    vertexSum = vectorOnHugePages<VertexSum>(vertexCount);
-  } else {
-    vertexSum.assign(vertexCount, VertexSum{});
+// visit(f) for each face, in order, with a corner among the vertices [firstVertex, endVertex) (the
+// faces' vertex numbers less vertexBase), asking for the records `perVertex` holds of the faces a
+// few ahead (prefetchCorners, with the base).
+template <typename T, typename Visit>
+void forFacesTouching(std::span<const MeshFace> faces, std::uint32_t vertexBase, std::size_t firstVertex,
+                      std::size_t endVertex, const T* perVertex, Visit&& visit) {
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (f + kPrefetchFacesAhead < faces.size())
+      for (int c = 0; c < 3; ++c)
+        __builtin_prefetch(perVertex + (faces[f + kPrefetchFacesAhead].vertex[c] - vertexBase));
+    const MeshFace& face = faces[f];
+    bool touches = false;
+    for (int c = 0; c < face.cornerCount(); ++c)
+      touches =
+          touches || (face.vertex[c] - vertexBase >= firstVertex && face.vertex[c] - vertexBase < endVertex);
+    if (touches) visit(f);
   }
+}
+
+// The sums of the mesh's vertices. Shared out by vertex ranges (vertex_ranges.hpp): the faces are
+// read in order, only the vertex records are written out of order, and no one walks a vertex's
+// faces.
+void sumVertexNormals(std::span<const MeshFace> faces, std::size_t vertexCount, const FaceTerms& terms,
+                      int threads, std::vector<VertexSum>& vertexSum) {
+  vertexSum = vectorOnHugePages<VertexSum>(vertexCount);
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
-    auto faceTerms = termsForRange(firstVertex, endVertex);
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      if (f + kPrefetchFacesAhead < faces.size())  // prefetchCorners, the faces' vertices less vertexBase
-        for (int c = 0; c < 3; ++c)
-          __builtin_prefetch(vertexSum.data() + (faces[f + kPrefetchFacesAhead].vertex[c] - vertexBase));
+    forFacesTouching(faces, 0, firstVertex, endVertex, vertexSum.data(), [&](std::size_t f) {
       const MeshFace& face = faces[f];
-      bool touches = false;
-      for (int c = 0; c < face.cornerCount(); ++c)
-        touches = touches ||
-                  (face.vertex[c] - vertexBase >= firstVertex && face.vertex[c] - vertexBase < endVertex);
-      if (!touches) continue;
-      const auto [normal, weight] = faceTerms(f);
-      const std::int32_t tag = facePhysicalTag[f];
+      const Vec3 normal = terms.unitFaceNormal[f];
+      const std::int32_t tag = terms.facePhysicalTag[f];
       for (int c = 0; c < face.cornerCount(); ++c) {
-        const std::uint32_t v = face.vertex[c] - vertexBase;
+        const std::uint32_t v = face.vertex[c];
         if (v < firstVertex || v >= endVertex) continue;
-        VertexSum& at = vertexSum[v];
-        if (at.faces == 0) {
-          at.firstNormal = normal;
-          at.firstTag = tag;
-          at.faces = 1;
-        } else {
-          at.faces = 2;
-          at.withinHalf &= static_cast<std::uint8_t>(
-              tag == at.firstTag && dot(at.firstNormal, normal) >= angles.cosHalfCreaseWithMargin);
-        }
-        at.sum += normal * weight[c];
+        vertexSum[v].add(normal, tag, terms.cornerWeight[f][c], terms.angles.cosHalfCreaseWithMargin);
       }
-    }
+    });
   });
 }
 
@@ -232,12 +239,7 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
                         positions,
                         faces};
   std::vector<VertexSum> vertexSum;
-  sumVertexNormals(
-      faces, 0, vertexCount, facePhysicalTag, terms.angles, threads,
-      [&](std::size_t, std::size_t) {
-        return [&](std::size_t f) { return std::pair{unitFaceNormal[f], cornerWeight[f]}; };
-      },
-      vertexSum);
+  sumVertexNormals(faces, vertexCount, terms, threads, vertexSum);
 
   // The other vertices walk their faces (face order): the pairwise test, and where it fails, one
   // sum per corner over the faces smoothed with its own; so do vertices whose faces cancel out.
@@ -352,16 +354,8 @@ NormalsUpdate updateCornerNormals(std::span<const Vec3> positions, const CornerN
     std::array<std::array<float, 4>, kAngleBlock> blockAngles{};
     std::array<Vec3, kAngleBlock> blockNormals{};
     std::size_t blockFirst = faceCount;
-    for (std::size_t f = 0; f < faceCount; ++f) {
-      if (f + kPrefetchFacesAhead < faceCount)  // prefetchCorners, the faces' vertices less vertexBase
-        for (int c = 0; c < 3; ++c)
-          __builtin_prefetch(vertexSum.data() + (faces[f + kPrefetchFacesAhead].vertex[c] - vertexBase));
+    forFacesTouching(faces, vertexBase, firstVertex, endVertex, vertexSum.data(), [&](std::size_t f) {
       const MeshFace& face = faces[f];
-      bool touches = false;
-      for (int c = 0; c < face.cornerCount(); ++c)
-        touches = touches ||
-                  (face.vertex[c] - vertexBase >= firstVertex && face.vertex[c] - vertexBase < endVertex);
-      if (!touches) continue;
       if (f < blockFirst || f >= blockFirst + kAngleBlock) {
         blockFirst = f;
         // A degenerate face has no normal: the step's scene is built again, without it.
@@ -381,7 +375,7 @@ NormalsUpdate updateCornerNormals(std::span<const Vec3> positions, const CornerN
         ++at.faces;
         at.sum += normal * weight[c];
       }
-    }
+    });
   });
   if (!ok) return NormalsUpdate::FaceDegenerate;
   // A walked vertex's sum as computeCornerNormals's pass makes it, from its corners (face order).
@@ -389,18 +383,8 @@ NormalsUpdate updateCornerNormals(std::span<const Vec3> positions, const CornerN
     VertexSum at;
     for (const std::uint32_t code : row) {
       const std::uint32_t f = code >> 2;
-      const Vec3 normal = unitFaceNormals[f];
-      const std::int32_t tag = facePhysicalTag[f];
-      if (at.faces == 0) {
-        at.firstNormal = normal;
-        at.firstTag = tag;
-        at.faces = 1;
-      } else {
-        at.faces = 2;
-        at.withinHalf &= static_cast<std::uint8_t>(
-            tag == at.firstTag && dot(at.firstNormal, normal) >= terms.angles.cosHalfCreaseWithMargin);
-      }
-      at.sum += normal * terms.weight(f, static_cast<int>(code & 3u));
+      at.add(unitFaceNormals[f], facePhysicalTag[f], terms.weight(f, static_cast<int>(code & 3u)),
+             terms.angles.cosHalfCreaseWithMargin);
     }
     return at;
   };
