@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "lancer/image/color_map.hpp"
 #include "lancer/scene/arrows.hpp"
@@ -125,23 +126,30 @@ void finishIsolines(Scene& scene, std::optional<IsolineOverlay> overlay) {
 void annotateScene(Scene& scene, const StepSelection& when, const std::vector<EntryAnnotation>& entries) {
   // The arrays the scene had are emptied and filled again: an animation annotates every frame, and
   // fresh arrays of a million faces would each fault their pages in again.
-  FieldColors oldFields = scene.fieldColors ? std::move(*scene.fieldColors) : FieldColors{};
-  IsolineOverlay oldIsolines = scene.isolines ? std::move(*scene.isolines) : IsolineOverlay{};
+  FieldColors spareFields;  // the old arrays, emptied, for the first coloured mesh
+  IsolineOverlay spareIsolines;
+  if (scene.fieldColors) {
+    spareFields.faceColorMap = std::move(scene.fieldColors->faceColorMap);
+    spareFields.vertexFieldT = std::move(scene.fieldColors->vertexFieldT);
+    spareFields.faceFieldT = std::move(scene.fieldColors->faceFieldT);
+    spareFields.faceBands = std::move(scene.fieldColors->faceBands);
+    spareFields.faceColorMap.clear();
+    spareFields.vertexFieldT.clear();
+    spareFields.faceFieldT.clear();
+    spareFields.faceBands.clear();
+  }
+  if (scene.isolines) {
+    spareIsolines.faceStyle = std::move(scene.isolines->faceStyle);
+    spareIsolines.vertexValue = std::move(scene.isolines->vertexValue);
+    spareIsolines.faceStyle.clear();
+    spareIsolines.vertexValue.clear();
+  }
   scene.fieldColors.reset();
   scene.isolines.reset();
   std::optional<FieldColors> fields;
   std::optional<IsolineOverlay> isolines;
   auto startFields = [&] {
-    if (fields) return;
-    fields.emplace();
-    fields->faceColorMap = std::move(oldFields.faceColorMap);
-    fields->vertexFieldT = std::move(oldFields.vertexFieldT);
-    fields->faceFieldT = std::move(oldFields.faceFieldT);
-    fields->faceBands = std::move(oldFields.faceBands);
-    fields->faceColorMap.clear();
-    fields->vertexFieldT.clear();
-    fields->faceFieldT.clear();
-    fields->faceBands.clear();
+    if (!fields) fields.emplace(std::exchange(spareFields, FieldColors{}));
   };
   for (const EntryAnnotation& entry : entries) {
     if (entry.coloring) {
@@ -158,13 +166,7 @@ void annotateScene(Scene& scene, const StepSelection& when, const std::vector<En
     if (entry.coloring && entry.colorBy->field == spec.field && entry.colorBy->component == spec.component)
       colorRange = std::pair{entry.coloring->low, entry.coloring->high};
     ResolvedIsolines resolved = resolveIsolines(spec, *entry.fields, when, colorRange);
-    if (!isolines) {
-      isolines.emplace();
-      isolines->faceStyle = std::move(oldIsolines.faceStyle);
-      isolines->vertexValue = std::move(oldIsolines.vertexValue);
-      isolines->faceStyle.clear();
-      isolines->vertexValue.clear();
-    }
+    if (!isolines) isolines.emplace(std::exchange(spareIsolines, IsolineOverlay{}));
     std::vector<Vec3> valueColors;  // color = "map": over the colours' range, else over the lines'
     if (spec.colorFromMap && !resolved.values.empty()) {
       const auto [low, high] =
