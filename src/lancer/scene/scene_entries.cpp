@@ -99,14 +99,19 @@ std::vector<SceneEntry> sceneEntries(const SceneDescription& description, std::v
   std::vector<SceneEntry> entries;
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const MeshInstance& instance = description.meshes[i];
-    SceneEntry entry{instance, std::move(meshes[i]), std::move(resolved.colorings[i]), resolved.specs[i],
-                     fields[i], i};
+    SceneEntry entry{
+        instance, std::move(meshes[i]), std::move(resolved.colorings[i]), resolved.specs[i], fields[i], i};
     const Mesh& source = fields[i] ? *fields[i] : entry.mesh;
     std::optional<SceneEntry> undeformed;
     if (instance.warp) {
       if (instance.undeformed != UndeformedStyle::None)
-        undeformed = SceneEntry{undeformedInstance(instance, materials), geometryOf(entry.mesh), std::nullopt,
-                                std::nullopt, nullptr, i, true};
+        undeformed = SceneEntry{undeformedInstance(instance, materials),
+                                geometryOf(entry.mesh),
+                                std::nullopt,
+                                std::nullopt,
+                                nullptr,
+                                i,
+                                true};
       std::vector<float>* perFace = entry.coloring && entry.coloring->perFace ? &entry.coloring->t : nullptr;
       const WarpReport report = warpMesh(entry.mesh, source, *instance.warp, description.when, perFace);
       entry.collapsedFaces = report.collapsedFaces;

@@ -34,7 +34,8 @@ struct SceneColorings {
   std::vector<std::optional<ColorBy>> specs;
   std::vector<std::optional<FieldColoring>> colorings;
 };
-SceneColorings resolveSceneColorings(const SceneDescription& description, const std::vector<const Mesh*>& sources);
+SceneColorings resolveSceneColorings(const SceneDescription& description,
+                                     const std::vector<const Mesh*>& sources);
 
 // Everything of a mesh but its fields: what a step's scene is built from (the fields stay with the
 // mesh as read, which holds every step).
