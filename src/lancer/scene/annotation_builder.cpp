@@ -126,23 +126,22 @@ void finishIsolines(Scene& scene, std::optional<IsolineOverlay> overlay) {
 void annotateScene(Scene& scene, const StepSelection& when, const std::vector<EntryAnnotation>& entries) {
   // The arrays the scene had are emptied and filled again: an animation annotates every frame, and
   // fresh arrays of a million faces would each fault their pages in again.
+  auto emptied = [](auto& array) {  // its memory, without its values
+    auto kept = std::move(array);
+    kept.clear();
+    return kept;
+  };
   FieldColors spareFields;  // the old arrays, emptied, for the first coloured mesh
   IsolineOverlay spareIsolines;
-  if (scene.fieldColors) {
-    spareFields.faceColorMap = std::move(scene.fieldColors->faceColorMap);
-    spareFields.vertexFieldT = std::move(scene.fieldColors->vertexFieldT);
-    spareFields.faceFieldT = std::move(scene.fieldColors->faceFieldT);
-    spareFields.faceBands = std::move(scene.fieldColors->faceBands);
-    spareFields.faceColorMap.clear();
-    spareFields.vertexFieldT.clear();
-    spareFields.faceFieldT.clear();
-    spareFields.faceBands.clear();
+  if (FieldColors* old = scene.fieldColors ? &*scene.fieldColors : nullptr) {
+    spareFields.faceColorMap = emptied(old->faceColorMap);
+    spareFields.vertexFieldT = emptied(old->vertexFieldT);
+    spareFields.faceFieldT = emptied(old->faceFieldT);
+    spareFields.faceBands = emptied(old->faceBands);
   }
-  if (scene.isolines) {
-    spareIsolines.faceStyle = std::move(scene.isolines->faceStyle);
-    spareIsolines.vertexValue = std::move(scene.isolines->vertexValue);
-    spareIsolines.faceStyle.clear();
-    spareIsolines.vertexValue.clear();
+  if (IsolineOverlay* old = scene.isolines ? &*scene.isolines : nullptr) {
+    spareIsolines.faceStyle = emptied(old->faceStyle);
+    spareIsolines.vertexValue = emptied(old->vertexValue);
   }
   scene.fieldColors.reset();
   scene.isolines.reset();
@@ -157,7 +156,6 @@ void annotateScene(Scene& scene, const StepSelection& when, const std::vector<En
       if (entry.colorBy->paintsSurface)
         appendFieldColoring(*fields, *entry.coloring, entry.vertexBase, entry.vertexEnd, entry.faceBase,
                             entry.faceEnd);
-      if (!fields) fields.emplace();
       appendLegendAndBands(*fields, *entry.colorBy, *entry.coloring, entry.faceBase, entry.faceEnd);
     }
     if (!entry.instance->isolines) continue;
