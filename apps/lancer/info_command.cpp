@@ -118,7 +118,7 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
     for (const MeshField& field : mesh.fields) {
       const auto [low, high] = field.range();
       fmt::print("  {:<24} {} data, {} component{}, step {} (time {:g}), {} {:.6g} .. {:.6g}\n",
-                 fmt::format("\"{}\"", field.name), field.perElement ? "element" : "node", field.components,
+                 fmt::format("\"{}\"", field.name), fieldAtName(field.at), field.components,
                  field.components == 1 ? "" : "s", field.step, field.time,
                  field.components == 1 ? "values" : "magnitudes", low, high);
     }
@@ -219,7 +219,7 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
     out += fmt::format(
         "{}\n    {{\"name\": {}, \"location\": \"{}\", \"components\": {}, \"step\": {}, \"time\": {:.17g}, "
         "\"min\": {:.9g}, \"max\": {:.9g}}}",
-        i ? "," : "", jsonString(field.name), field.perElement ? "element" : "node", field.components,
+        i ? "," : "", jsonString(field.name), fieldAtName(field.at), field.components,
         field.step, field.time, low, high);
   }
   out += mesh.fields.empty() ? "],\n" : "\n  ],\n";

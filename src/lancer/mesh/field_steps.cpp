@@ -224,7 +224,7 @@ std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, cons
   }
   MeshField blend;
   blend.name = view->field->name;
-  blend.perElement = view->field->perElement;
+  blend.at = view->field->at;
   blend.components = view->field->components;
   blend.step = -1;
   blend.time = *when.time;
@@ -242,6 +242,57 @@ std::vector<double> stepTimes(const Mesh& mesh, const std::vector<std::string>& 
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
   return times;
+}
+
+namespace {
+
+// value(i) is the i-th of a corner view's values (kCornerSlots * components per face).
+template <typename Value>
+std::vector<float> meansAtVertices(const Mesh& mesh, int componentCount, const Value& value) {
+  const auto components = static_cast<std::size_t>(componentCount);
+  std::vector<double> sum(mesh.positions.size() * components, 0.0);
+  std::vector<std::uint32_t> count(mesh.positions.size(), 0);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const MeshFace& face = mesh.faces[f];
+    for (int c = 0; c < face.cornerCount(); ++c) {
+      const std::size_t first = (f * kCornerSlots + static_cast<std::size_t>(cornerSlot(face, c))) * components;
+      if (std::isnan(value(first))) continue;
+      const std::uint32_t v = face.vertex[c];
+      ++count[v];
+      for (std::size_t k = 0; k < components; ++k) sum[v * components + k] += value(first + k);
+    }
+  }
+  std::vector<float> means(sum.size(), std::numeric_limits<float>::quiet_NaN());
+  for (std::size_t v = 0; v < count.size(); ++v)
+    if (count[v])
+      for (std::size_t k = 0; k < components; ++k)
+        means[v * components + k] = static_cast<float>(sum[v * components + k] / count[v]);
+  return means;
+}
+
+}  // namespace
+
+ViewValues vertexMeans(const Mesh& mesh, const ViewValues& view) {
+  if (view.field->at != FieldAt::kCorner || view.size() != mesh.faces.size() * kCornerSlots *
+                                                                  static_cast<std::size_t>(view.field->components))
+    return view;
+  ViewValues means;
+  means.field = view.field;
+  means.keepA = std::make_shared<const std::vector<float>>(
+      meansAtVertices(mesh, view.field->components, [&](std::size_t i) { return view[i]; }));
+  means.a = means.keepA.get();
+  return means;
+}
+
+MeshField vertexMeans(const Mesh& mesh, const MeshField& field) {
+  if (field.at != FieldAt::kCorner || field.isStored() ||
+      field.values.size() != mesh.faces.size() * kCornerSlots * static_cast<std::size_t>(field.components))
+    return field;
+  MeshField means = field;
+  means.at = FieldAt::kNode;
+  means.values = meansAtVertices(mesh, field.components, [&](std::size_t i) { return field.values[i]; });
+  means.ranges.clear();
+  return means;
 }
 
 }  // namespace lancer

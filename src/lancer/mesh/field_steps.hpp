@@ -88,6 +88,12 @@ std::optional<ViewValues> viewValuesAt(const std::vector<const MeshField*>& step
 std::optional<MeshField> viewAt(const std::vector<const MeshField*>& steps, const StepSelection& when,
                                 std::string& problem);
 
+// An element-node view (FieldAt::kCorner) as one value per vertex of `mesh`: the mean of the values
+// its faces give each vertex, NaN where none does. What moves nodes (a warp) and stands at them
+// (arrows); the faces keep their own values for colours and isolines. Other views come back as given.
+ViewValues vertexMeans(const Mesh& mesh, const ViewValues& view);
+MeshField vertexMeans(const Mesh& mesh, const MeshField& field);
+
 // The times of every step of the named views of a mesh, sorted and without repeats: the frames of an
 // animation over steps.
 std::vector<double> stepTimes(const Mesh& mesh, const std::vector<std::string>& names);

@@ -26,6 +26,14 @@ struct MeshFace {
   int cornerCount() const { return isQuad() ? 4 : 3; }
 };
 
+// Where corner c's value is among a face's kCornerSlots element-node values (mesh_field.hpp): the
+// rank of its vertex among the face's vertices, which no change of winding alters.
+inline int cornerSlot(const MeshFace& face, int c) {
+  int rank = 0;
+  for (int k = 0; k < face.cornerCount(); ++k) rank += face.vertex[k] < face.vertex[c];
+  return rank;
+}
+
 // Bit i of a face's edge mask: the edge from corner i to corner (i+1) % n is an edge of the
 // original gmsh element (not one made by splitting a second-order element), so it is drawn by
 // element-edge rendering.

@@ -1,6 +1,6 @@
-// A post-processing field that a .msh file carries beside its mesh ($NodeData or $ElementData: one
-// time step of one gmsh view), mapped onto the mesh lancer renders so that surfaces can be coloured
-// by it. Values are float: a colour map needs no more, and a field costs 4 bytes per vertex and
+// A post-processing field that a .msh file carries beside its mesh ($NodeData, $ElementData or
+// $ElementNodeData: one time step of one gmsh view), mapped onto the mesh lancer renders so that
+// surfaces can be coloured by it. Values are float: a colour map needs no more, and a field costs 4 bytes per vertex and
 // component instead of 8.
 //
 // A file whose steps would take much memory (fifty steps of a million-face result) leaves them in
@@ -23,18 +23,38 @@ class StoredFieldSteps;  // mesh/msh/stored_steps.hpp: reads stored steps back f
 struct StoredFieldValues {
   std::shared_ptr<const StoredFieldSteps> file;
   std::size_t section = 0;  // which of the file's field sections
-  std::size_t items = 0;    // vertices or faces
+  std::size_t items = 0;    // vertices, faces or face corner slots
 };
 
+// Where a field's values sit on the mesh.
+enum class FieldAt : std::uint8_t {
+  kNode,     // $NodeData: one value per mesh vertex, continuous across faces
+  kElement,  // $ElementData: one value per face, constant over it
+  // $ElementNodeData: one value per face corner (kCornerSlots per face, the last NaN for a triangle),
+  // each element's own, so a field that jumps between elements (a flux density, a stress) keeps its
+  // jumps, as gmsh draws it.
+  kCorner,
+};
+inline constexpr std::size_t kCornerSlots = 4;
+
+// The .msh section that holds such values, for messages.
+inline const char* mshSectionName(FieldAt at) {
+  return at == FieldAt::kNode ? "$NodeData" : at == FieldAt::kElement ? "$ElementData" : "$ElementNodeData";
+}
+// "node", "element" or "element-node", for `lancer info` and messages.
+inline const char* fieldAtName(FieldAt at) {
+  return at == FieldAt::kNode ? "node" : at == FieldAt::kElement ? "element" : "element-node";
+}
+
 struct MeshField {
-  std::string name;         // the view's name (first string tag)
-  bool perElement = false;  // $ElementData: one value per face; $NodeData: one per mesh vertex
+  std::string name;             // the view's name (first string tag)
+  FieldAt at = FieldAt::kNode;  // which items the values are given for
   int components = 1;       // 1 scalar, 3 vector, 9 tensor
   int step = 0;             // time step index (first integer tag)
   double time = 0;          // time value (first real tag)
-  // components values per mesh vertex (node data) or per face (element data), in mesh order; NaN
-  // where the file gives no value (e.g. the centre lancer adds to an 8-node quad). Empty while the
-  // step is stored.
+  // components values per mesh vertex (node data), per face (element data) or per face corner
+  // (element-node data, kCornerSlots per face), in mesh order; NaN where the file gives no value
+  // (e.g. the centre lancer adds to an 8-node quad). Empty while the step is stored.
   std::vector<float> values;
   std::shared_ptr<const StoredFieldValues> stored = nullptr;  // set while the values wait in the file
   // What the .msh reader saw of the values (componentRanges): the least and greatest of each

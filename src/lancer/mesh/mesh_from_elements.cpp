@@ -56,7 +56,7 @@ Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBloc
   for (const ElementFieldInput& input : elementFields) {
     MshMeshAssembler::ElementField raw;
     raw.field.name = input.name;
-    raw.field.perElement = true;
+    raw.field.at = FieldAt::kElement;
     raw.field.components = input.components;
     raw.field.step = input.step;
     raw.field.time = input.time;

@@ -16,6 +16,10 @@ bool fieldColorAt(const Scene& scene, const SurfacePoint& surface, bool lineariz
   float t = 0;
   if (map & FieldColors::kPerFace) {
     t = fields.faceFieldT[surface.face];  // element data: constant over the face
+  } else if (map & FieldColors::kPerCorner) {
+    const float* corner = fields.cornerFieldT.data() + std::size_t{surface.face} * kCornerSlots;
+    const int corners = scene.geometry.faces[surface.face].cornerCount();
+    for (int c = 0; c < corners; ++c) t += surface.cornerWeight[c] * corner[c];
   } else {
     const MeshFace& face = scene.geometry.faces[surface.face];
     for (int c = 0; c < face.cornerCount(); ++c)
@@ -27,7 +31,7 @@ bool fieldColorAt(const Scene& scene, const SurfacePoint& surface, bool lineariz
     const auto bands = static_cast<float>(fields.faceBands[surface.face]);
     t = (std::min(std::floor(t * bands), bands - 1.0f) + 0.5f) / bands;
   }
-  color = colorMapLookup(static_cast<ColorMapKind>((map & ~FieldColors::kPerFace) - 1), t);
+  color = colorMapLookup(static_cast<ColorMapKind>((map & FieldColors::kMapBits) - 1), t);
   if (linearize) color = {linearFromSrgb(color.x), linearFromSrgb(color.y), linearFromSrgb(color.z)};
   return true;
 }

@@ -37,12 +37,17 @@ float isolineCoverage(const Scene& scene, const Ray& ray, const SurfacePoint& su
   const IsolineStyle& style = overlay.styles[styleIndex];
   const MeshFace& face = scene.geometry.faces[surface.face];
   const int corners = face.cornerCount();
+  // Element-node data: the face's own values, else the values at its vertices.
+  const float* cornerValue = overlay.cornerValue.empty()
+                                 ? nullptr
+                                 : overlay.cornerValue.data() + std::size_t{surface.face} * kCornerSlots;
+  if (cornerValue && std::isnan(cornerValue[0])) cornerValue = nullptr;
   Vec3 p[4];
   float f[4];
   float value = 0;
   for (int c = 0; c < corners; ++c) {
     p[c] = scene.geometry.positions[face.vertex[c]];
-    f[c] = overlay.vertexValue[face.vertex[c]];
+    f[c] = cornerValue ? cornerValue[c] : overlay.vertexValue[face.vertex[c]];
     value += surface.cornerWeight[c] * f[c];
   }
   if (std::isnan(value) || style.values.empty()) return 0.0f;

@@ -93,6 +93,7 @@ void releaseSceneForSteps(PreparedRender& prepared) {
   if (scene.fieldColors) {
     release(scene.fieldColors->vertexFieldT);
     release(scene.fieldColors->faceFieldT);
+    release(scene.fieldColors->cornerFieldT);
     release(scene.fieldColors->faceColorMap);
     release(scene.fieldColors->faceBands);
   }

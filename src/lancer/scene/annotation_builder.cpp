@@ -43,21 +43,44 @@ std::vector<std::optional<ColorBy>> sharedColorRanges(const SceneDescription& de
 
 namespace {
 
+// Values per face corner slot (MeshField's kCorner order) appended to `out` in the corner order of
+// the scene's faces [faceBase, faceEnd), which the orientation of shells may have turned.
+void appendInCornerOrder(std::vector<float>& out, const std::vector<float>& slots,
+                         const std::vector<MeshFace>& sceneFaces, std::size_t faceBase, std::size_t faceEnd) {
+  out.resize(faceBase * kCornerSlots, std::nanf(""));
+  if (slots.size() != (faceEnd - faceBase) * kCornerSlots) {  // not this mesh's faces: none
+    out.resize(faceEnd * kCornerSlots, std::nanf(""));
+    return;
+  }
+  for (std::size_t f = faceBase; f < faceEnd; ++f) {
+    const MeshFace& face = sceneFaces[f];
+    const float* slot = slots.data() + (f - faceBase) * kCornerSlots;
+    for (int c = 0; c < static_cast<int>(kCornerSlots); ++c)
+      out.push_back(c < face.cornerCount() ? slot[cornerSlot(face, c)] : std::nanf(""));
+  }
+}
+
 // Records a coloured mesh whose vertices run from vertexBase to vertexEnd and faces from faceBase to
-// faceEnd: its faces get the map, its vertices the field's t (the mesh's vertices are the
-// scene's from vertexBase on, in order). Earlier meshes' entries are filled with "not coloured"
-// first.
+// faceEnd: its faces get the map, its vertices (or faces, or face corners) the field's t (the
+// mesh's vertices and faces are the scene's from the bases on, in order). Earlier meshes' entries
+// are filled with "not coloured" first.
 void appendFieldColoring(FieldColors& fields, const FieldColoring& coloring, std::uint32_t vertexBase,
-                         std::size_t vertexEnd, std::size_t faceBase, std::size_t faceEnd) {
-  const int perFace = coloring.perFace ? FieldColors::kPerFace : 0;
+                         std::size_t vertexEnd, std::size_t faceBase, std::size_t faceEnd,
+                         const std::vector<MeshFace>& sceneFaces) {
+  const int kind = coloring.at == FieldAt::kElement  ? FieldColors::kPerFace
+                   : coloring.at == FieldAt::kCorner ? FieldColors::kPerCorner
+                                                     : 0;
   fields.faceColorMap.resize(faceBase, 0);
-  fields.faceColorMap.resize(faceEnd,
-                             static_cast<std::uint8_t>((1 + static_cast<int>(coloring.map)) | perFace));
-  // The mesh's faces and vertices are the scene's from the bases on, in order.
-  std::vector<float>& t = coloring.perFace ? fields.faceFieldT : fields.vertexFieldT;
-  t.resize(coloring.perFace ? faceBase : vertexBase, std::nanf(""));
+  fields.faceColorMap.resize(faceEnd, static_cast<std::uint8_t>((1 + static_cast<int>(coloring.map)) | kind));
+  if (coloring.at == FieldAt::kCorner) {
+    appendInCornerOrder(fields.cornerFieldT, coloring.t, sceneFaces, faceBase, faceEnd);
+    return;
+  }
+  const bool perFace = coloring.at == FieldAt::kElement;
+  std::vector<float>& t = perFace ? fields.faceFieldT : fields.vertexFieldT;
+  t.resize(perFace ? faceBase : vertexBase, std::nanf(""));
   t.insert(t.end(), coloring.t.begin(), coloring.t.end());
-  t.resize(coloring.perFace ? faceEnd : vertexEnd, std::nanf(""));
+  t.resize(perFace ? faceEnd : vertexEnd, std::nanf(""));
 }
 
 // Meshes after the last coloured one are not coloured.
@@ -67,6 +90,8 @@ void finishFieldColors(Scene& scene, std::optional<FieldColors> fields) {
   fields->faceColorMap.resize(geometry.faces.size(), 0);
   if (!fields->vertexFieldT.empty()) fields->vertexFieldT.resize(geometry.positions.size(), std::nanf(""));
   if (!fields->faceFieldT.empty()) fields->faceFieldT.resize(geometry.faces.size(), std::nanf(""));
+  if (!fields->cornerFieldT.empty())
+    fields->cornerFieldT.resize(geometry.faces.size() * kCornerSlots, std::nanf(""));
   scene.fieldColors = std::move(fields);
 }
 
@@ -103,12 +128,17 @@ std::vector<Vec3> isolineValueColors(const std::vector<float>& values, ColorMapK
 
 void appendIsolines(std::optional<IsolineOverlay>& overlay, const IsolineSpec& spec,
                     ResolvedIsolines resolved, std::uint32_t vertexBase, std::size_t faceBase,
-                    std::size_t faceEnd, std::size_t vertexEnd, std::vector<Vec3> valueColors) {
+                    std::size_t faceEnd, std::size_t vertexEnd, const std::vector<MeshFace>& sceneFaces,
+                    std::vector<Vec3> valueColors) {
   if (!overlay) overlay.emplace();
   overlay->styles.push_back(
       {std::move(resolved.values), spec.color, std::move(valueColors), spec.widthPixels});
   overlay->faceStyle.resize(faceBase, 0);
   overlay->faceStyle.resize(faceEnd, static_cast<std::uint16_t>(overlay->styles.size() - 1));
+  if (resolved.at == FieldAt::kCorner) {
+    appendInCornerOrder(overlay->cornerValue, resolved.vertexValue, sceneFaces, faceBase, faceEnd);
+    return;
+  }
   // The mesh's vertices are the scene's from vertexBase on, in order.
   overlay->vertexValue.resize(vertexBase, std::nanf(""));
   overlay->vertexValue.insert(overlay->vertexValue.end(), resolved.vertexValue.begin(),
@@ -120,6 +150,8 @@ void finishIsolines(Scene& scene, std::optional<IsolineOverlay> overlay) {
   if (!overlay) return;
   overlay->faceStyle.resize(scene.geometry.faces.size(), 0);
   overlay->vertexValue.resize(scene.geometry.positions.size(), std::nanf(""));
+  if (!overlay->cornerValue.empty())
+    overlay->cornerValue.resize(scene.geometry.faces.size() * kCornerSlots, std::nanf(""));
   scene.isolines = std::move(overlay);
 }
 
@@ -137,11 +169,13 @@ void annotateScene(Scene& scene, const StepSelection& when, const std::vector<En
     spareFields.faceColorMap = emptied(old->faceColorMap);
     spareFields.vertexFieldT = emptied(old->vertexFieldT);
     spareFields.faceFieldT = emptied(old->faceFieldT);
+    spareFields.cornerFieldT = emptied(old->cornerFieldT);
     spareFields.faceBands = emptied(old->faceBands);
   }
   if (IsolineOverlay* old = scene.isolines ? &*scene.isolines : nullptr) {
     spareIsolines.faceStyle = emptied(old->faceStyle);
     spareIsolines.vertexValue = emptied(old->vertexValue);
+    spareIsolines.cornerValue = emptied(old->cornerValue);
   }
   scene.fieldColors.reset();
   scene.isolines.reset();
@@ -155,7 +189,7 @@ void annotateScene(Scene& scene, const StepSelection& when, const std::vector<En
       startFields();
       if (entry.colorBy->paintsSurface)
         appendFieldColoring(*fields, *entry.coloring, entry.vertexBase, entry.vertexEnd, entry.faceBase,
-                            entry.faceEnd);
+                            entry.faceEnd, scene.geometry.faces);
       appendLegendAndBands(*fields, *entry.colorBy, *entry.coloring, entry.faceBase, entry.faceEnd);
     }
     if (!entry.instance->isolines) continue;
@@ -173,7 +207,7 @@ void annotateScene(Scene& scene, const StepSelection& when, const std::vector<En
                                        entry.colorBy ? entry.colorBy->map : ColorMapKind::Viridis, low, high);
     }
     appendIsolines(isolines, spec, std::move(resolved), entry.vertexBase, entry.faceBase, entry.faceEnd,
-                   entry.vertexEnd, std::move(valueColors));
+                   entry.vertexEnd, scene.geometry.faces, std::move(valueColors));
   }
   if (fields) finishBands(*fields, scene.geometry.faces.size());
   finishFieldColors(scene, std::move(fields));

@@ -31,10 +31,11 @@ void finishBands(FieldColors& fields, std::size_t faceCount);
 std::vector<Vec3> isolineValueColors(const std::vector<float>& values, ColorMapKind map, double low,
                                      double high);
 // Records a mesh's isolines (resolveIsolines's, drawn as `spec` says, in valueColors when given):
-// its vertices start at vertexBase and faces at faceBase in the scene.
+// its vertices start at vertexBase and faces at faceBase in the scene, whose faces are sceneFaces.
 void appendIsolines(std::optional<IsolineOverlay>& overlay, const IsolineSpec& spec,
                     ResolvedIsolines resolved, std::uint32_t vertexBase, std::size_t faceBase,
-                    std::size_t faceEnd, std::size_t vertexEnd, std::vector<Vec3> valueColors = {});
+                    std::size_t faceEnd, std::size_t vertexEnd, const std::vector<MeshFace>& sceneFaces,
+                    std::vector<Vec3> valueColors = {});
 void finishIsolines(Scene& scene, std::optional<IsolineOverlay> overlay);
 
 // A mesh's part in the scene's annotations: what it is coloured by and where its vertices and faces

@@ -158,7 +158,7 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
   }
   FieldColoring coloring;
   coloring.map = spec.map;
-  coloring.perFace = found->field->perElement;
+  coloring.at = found->field->at;
   std::pair<double, double> range;
   if (spec.range) {
     range = *spec.range;

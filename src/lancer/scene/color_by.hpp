@@ -41,7 +41,7 @@ class MapPosition {
 // end).
 struct FieldColoring {
   ColorMapKind map = ColorMapKind::Viridis;
-  bool perFace = false;  // element data: t per face; node data: t per mesh vertex
+  FieldAt at = FieldAt::kNode;  // t per mesh vertex, per face or per face corner slot (MeshField's)
   double low = 0;
   double high = 1;
   std::vector<float> t;

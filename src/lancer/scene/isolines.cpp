@@ -73,7 +73,7 @@ std::vector<double> gmshIsoValues(double low, double high, int count) {
 ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh, const StepSelection& when,
                                  std::optional<std::pair<double, double>> colorRange) {
   const MeshField field = meshFieldAt("isolines", spec.field, spec.step, mesh, when, spec.where);
-  if (field.perElement)
+  if (field.at == FieldAt::kElement)
     throw InputError(
         spec.where, fmt::format("isolines field \"{}\" is element data ($ElementData: one value per element, "
                                 "constant over each face), so it has no curves to draw; show its steps as "
@@ -83,6 +83,7 @@ ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh, cons
     throw InputError(spec.where,
                      fmt::format("isolines field \"{}\" in {}: {}", spec.field, mesh.source.path, problem));
   ResolvedIsolines resolved;
+  resolved.at = field.at;
   resolved.vertexValue.resize(field.itemCount());
   const auto components = static_cast<std::size_t>(field.components);
   for (std::size_t i = 0; i < resolved.vertexValue.size(); ++i)

@@ -18,14 +18,17 @@ namespace lancer {
 std::optional<IsolineSpec> readIsolines(const std::string& file, const TomlTableReader& mesh);
 
 struct ResolvedIsolines {
-  std::vector<float> vertexValue;  // per mesh vertex; NaN where the file gives none
+  // Per mesh vertex (node data) or per face corner slot (element-node data, each element's own
+  // values: lines break where the field jumps); NaN where the file gives none.
+  FieldAt at = FieldAt::kNode;
+  std::vector<float> vertexValue;
   std::vector<float> values;       // sorted, distinct
 };
 
 // The lines at the step spec pins, else at the scene's `when`. Without `values`, `count` values
 // spread over the range of that step (when pinned) or of every step (as the colours), or with
 // spec.colorRangeEnds over `colorRange` (the mesh's colour range, when it is coloured by the field).
-// Node data only: element data (constant over each face) has no curves, an InputError at spec.where
+// Node and element-node data only: element data (constant over each face) has no curves, an InputError at spec.where
 // that suggests bands; an unknown field, step or component as color_by says it.
 ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh, const StepSelection& when = {},
                                  std::optional<std::pair<double, double>> colorRange = std::nullopt);

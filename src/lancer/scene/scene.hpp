@@ -66,14 +66,18 @@ struct EdgeOverlay {
 };
 
 // Field colouring (color_by, field_shading.hpp): per face 0 (not coloured) or 1 + the ColorMapKind,
-// plus kPerFace for element data; the normalised field value t in [0, 1] (NaN: none) per vertex
-// (node data: interpolated per pixel, then mapped) or per face (element data); each of the two is
-// empty when no mesh is coloured by that kind of data.
+// plus kPerFace for element data or kPerCorner for element-node data; the normalised field value t in
+// [0, 1] (NaN: none) per vertex (node data: interpolated per pixel, then mapped), per face (element
+// data) or per face corner (element-node data, kCornerSlots per face in the face's corner order:
+// interpolated over the face alone); each of the three is empty when no mesh is coloured by that kind.
 struct FieldColors {
   static constexpr std::uint8_t kPerFace = 0x80;
+  static constexpr std::uint8_t kPerCorner = 0x40;
+  static constexpr std::uint8_t kMapBits = 0x3F;  // 1 + the ColorMapKind
   std::vector<std::uint8_t> faceColorMap;
   std::vector<float> vertexFieldT;
   std::vector<float> faceFieldT;
+  std::vector<float> cornerFieldT;
   // Per face: the number of discrete colour bands (0: continuous); empty when no mesh has bands.
   std::vector<std::uint16_t> faceBands;
   // One per field (and map) the meshes are coloured by: meshes colouring by one field share its
@@ -83,7 +87,9 @@ struct FieldColors {
 };
 
 // Isolines (isolines = {...}, render/isoline_paint.hpp): per face 0 (none) or an index into styles;
-// the field value per scene vertex (NaN: none).
+// the field value per scene vertex (NaN: none), and per face corner (kCornerSlots per face, in its
+// corner order) for faces of element-node data, whose values are each element's own; cornerValue is
+// empty when no mesh draws isolines of element-node data.
 struct IsolineStyle {
   std::vector<float> values;  // sorted
   Vec3 color{0, 0, 0};
@@ -93,6 +99,7 @@ struct IsolineStyle {
 struct IsolineOverlay {
   std::vector<std::uint16_t> faceStyle;
   std::vector<float> vertexValue;
+  std::vector<float> cornerValue;
   std::vector<IsolineStyle> styles{IsolineStyle{}};
 };
 

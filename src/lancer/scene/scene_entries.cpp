@@ -112,7 +112,8 @@ std::vector<SceneEntry> sceneEntries(const SceneDescription& description, std::v
                                 nullptr,
                                 i,
                                 true};
-      std::vector<float>* perFace = entry.coloring && entry.coloring->perFace ? &entry.coloring->t : nullptr;
+      std::vector<float>* perFace =
+          entry.coloring && entry.coloring->at != FieldAt::kNode ? &entry.coloring->t : nullptr;
       const WarpReport report = warpMesh(entry.mesh, source, *instance.warp, description.when, perFace);
       entry.collapsedFaces = report.collapsedFaces;
       if (report.collapsedFaces)

@@ -14,7 +14,10 @@ namespace lancer {
 void removeMeshFaces(Mesh& mesh, const std::vector<std::uint8_t>& removed,
                      std::vector<float>* perFaceValues) {
   const bool sides = !mesh.volumeSides.empty();
-  const bool values = perFaceValues != nullptr && perFaceValues->size() == mesh.faces.size();
+  // One value per face (element data) or kCornerSlots (element-node data).
+  std::size_t stride = 0;
+  if (perFaceValues && !mesh.faces.empty() && perFaceValues->size() % mesh.faces.size() == 0)
+    stride = perFaceValues->size() / mesh.faces.size();
   std::size_t kept = 0;
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     if (removed[f]) continue;
@@ -27,7 +30,9 @@ void removeMeshFaces(Mesh& mesh, const std::vector<std::uint8_t>& removed,
       mesh.volumeSides.outerPhysicalTag[kept] = mesh.volumeSides.outerPhysicalTag[f];
       mesh.volumeSides.outerEntityTag[kept] = mesh.volumeSides.outerEntityTag[f];
     }
-    if (values) (*perFaceValues)[kept] = (*perFaceValues)[f];
+    if (stride)
+      std::copy_n(perFaceValues->begin() + static_cast<std::ptrdiff_t>(f * stride), stride,
+                  perFaceValues->begin() + static_cast<std::ptrdiff_t>(kept * stride));
     ++kept;
   }
   mesh.faces.resize(kept);
@@ -39,7 +44,7 @@ void removeMeshFaces(Mesh& mesh, const std::vector<std::uint8_t>& removed,
     mesh.volumeSides.outerPhysicalTag.resize(kept);
     mesh.volumeSides.outerEntityTag.resize(kept);
   }
-  if (values) perFaceValues->resize(kept);
+  if (stride) perFaceValues->resize(kept * stride);
 }
 
 ViewValues warpDisplacement(const Mesh& fields, const WarpSettings& warp, const StepSelection& when,
@@ -55,10 +60,10 @@ ViewValues warpDisplacement(const Mesh& fields, const WarpSettings& warp, const 
                          : fmt::format("warp field \"{}\" is not in {}{}; it has {}", warp.field, file,
                                        didYouMean(warp.field, viewNames(fields)), describeViews(fields)));
   const MeshField& first = *steps.front();
-  if (first.perElement)
+  if (first.at == FieldAt::kElement)
     throw InputError(warp.where,
                      fmt::format("warp field \"{}\" in {} is element data ($ElementData), one value "
-                                 "per element: a warp moves nodes, give a $NodeData view of 3 "
+                                 "per element: a warp moves nodes, give a node or element-node view of 3 "
                                  "components (colour by this one instead)",
                                  warp.field, file));
   if (first.components != 3)
@@ -71,6 +76,9 @@ ViewValues warpDisplacement(const Mesh& fields, const WarpSettings& warp, const 
   if (!step)
     throw InputError(warp.where, fmt::format("warp field \"{}\" {} in {}{}", warp.field, problem, file,
                                              when.where.empty() ? "" : fmt::format(" ({})", when.where)));
+  // Element-node data moves each node by the mean of what its elements give it (a displacement is
+  // continuous: they agree up to the solver's rounding).
+  if (first.at == FieldAt::kCorner) step = vertexMeans(fields, *step);
   if (step->size() != vertexCount * 3)
     throw InputError(warp.where,
                      fmt::format("warp field \"{}\" step {} in {} has values for {} nodes, the mesh "
@@ -121,8 +129,9 @@ Aabbd warpedWorldBounds(const SceneDescription& description, const std::vector<M
     if (const std::optional<WarpSettings>& warp = description.meshes[i].warp) {
       std::string problem;
       const std::vector<const MeshField*> steps = viewSteps(mesh, warp->field);
-      if (!steps.empty() && steps.front()->components == 3 && !steps.front()->perElement)
+      if (!steps.empty() && steps.front()->components == 3 && steps.front()->at != FieldAt::kElement)
         displacement = viewValuesAt(steps, description.when, problem);
+      if (displacement) displacement = vertexMeans(mesh, *displacement);
       if (displacement && displacement->size() != 3 * mesh.positions.size()) displacement.reset();
       factor = static_cast<float>(warp->factor);
     }

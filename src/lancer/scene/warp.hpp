@@ -25,9 +25,10 @@ ViewValues warpDisplacement(const Mesh& fields, const WarpSettings& warp, const 
 
 // Moves `mesh`'s vertices by warp.factor times the view warp.field of `fields` (the mesh as read,
 // which holds every step) at `when`, then drops the faces that collapsed; `perFaceValues`, when
-// given, holds values per face (an element field's colours) and loses the same entries. Throws
-// InputError at warp.where naming the file, view and step for a view that is missing, not a node
-// vector of 3 components, without the step, or without a value for some vertex.
+// given, holds values per face or per face corner slot (an element or element-node field's colours)
+// and loses the same entries. Throws InputError at warp.where naming the file, view and step for a
+// view that is missing, not a vector of 3 components at nodes or element nodes, without the step, or
+// without a value for some vertex.
 WarpReport warpMesh(Mesh& mesh, const Mesh& fields, const WarpSettings& warp, const StepSelection& when,
                     std::vector<float>* perFaceValues = nullptr);
 

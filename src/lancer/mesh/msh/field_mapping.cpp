@@ -1,6 +1,7 @@
 #include "lancer/mesh/msh/field_mapping.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace lancer {
@@ -55,6 +56,49 @@ std::vector<float> mapElementValues(std::vector<std::uint64_t> tags, const std::
                 perFace.begin() + static_cast<std::ptrdiff_t>(f * components));
   }
   return perFace;
+}
+
+std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componentCount,
+                                        const std::vector<std::uint64_t>& faceElement,
+                                        const std::vector<MshCornerNodes>& faceCornerNode,
+                                        const std::vector<std::pair<std::uint64_t, std::uint64_t>>& aliases) {
+  for (std::uint64_t& tag : records.tags) {
+    const auto alias = std::lower_bound(aliases.begin(), aliases.end(), std::pair{tag, std::uint64_t{0}});
+    if (alias != aliases.end() && alias->first == tag) tag = alias->second;
+  }
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> byTag(records.tags.size());
+  for (std::size_t r = 0; r < records.tags.size(); ++r) byTag[r] = {records.tags[r], static_cast<std::uint32_t>(r)};
+  std::sort(byTag.begin(), byTag.end());
+  const auto components = static_cast<std::size_t>(componentCount);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<float> perCorner(faceElement.size() * kCornerSlots * components, nan);
+  for (std::size_t f = 0; f < faceElement.size(); ++f) {
+    const auto found =
+        std::lower_bound(byTag.begin(), byTag.end(), std::pair{faceElement[f], std::uint32_t{0}});
+    if (found == byTag.end() || found->first != faceElement[f]) continue;
+    const std::uint32_t record = found->second;
+    float* out = perCorner.data() + f * kCornerSlots * components;
+    const MshCornerNodes& nodes = faceCornerNode[f];
+    int added = -1;
+    for (std::size_t s = 0; s < kCornerSlots; ++s) {
+      if (nodes[s] == kAddedCentre) added = static_cast<int>(s);
+      // No node (a triangle's fourth slot), or the record stops short of this node: NaN.
+      if (nodes[s] >= records.nodeCount[record]) continue;
+      std::copy_n(records.values.begin() + static_cast<std::ptrdiff_t>(records.firstValue[record] +
+                                                                        nodes[s] * components),
+                  components, out + s * components);
+    }
+    if (added < 0) continue;
+    // The centre lancer added to an 8-node quad (a corner of each of its four quads): the mean of
+    // the other three corners of its quad, the element giving no value there.
+    for (std::size_t c = 0; c < components; ++c) {
+      float sum = 0;
+      for (std::size_t s = 0; s < kCornerSlots; ++s)
+        if (static_cast<int>(s) != added) sum += out[s * components + c];
+      out[static_cast<std::size_t>(added) * components + c] = sum / 3.0f;
+    }
+  }
+  return perCorner;
 }
 
 }  // namespace lancer

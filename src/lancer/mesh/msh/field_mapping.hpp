@@ -12,7 +12,14 @@
 
 namespace lancer {
 
-// One $NodeData or $ElementData section: its header as a MeshField without values, and where its
+// Where a face's corners are among its element's nodes: the order of the element's values in a
+// $ElementNodeData record. kAddedCentre for a corner that is not one of the element's nodes (the
+// centre lancer adds to an 8-node quad), kNoElementNode for a triangle's fourth.
+inline constexpr std::uint16_t kNoElementNode = 0xFFFF;
+inline constexpr std::uint16_t kAddedCentre = 0xFFFE;
+using MshCornerNodes = std::array<std::uint16_t, 4>;
+
+// One $NodeData, $ElementData or $ElementNodeData section: its header as a MeshField without values, and where its
 // records are in the file.
 struct MshFieldSection {
   MeshField field;
@@ -33,6 +40,7 @@ struct MshFieldMapping {
   std::uint32_t usedCount = 0;
   std::vector<std::array<std::uint32_t, 8>> derivedSources;  // corners and mids of each centre
   std::vector<std::uint64_t> faceElement;  // per mesh face, its element's tag (aliases resolved)
+  std::vector<MshCornerNodes> faceCornerNode;  // per mesh face, where its corners are in its element
   std::vector<std::pair<std::uint64_t, std::uint64_t>> elementAliases;  // sorted (copy, kept)
   std::uint64_t minElementTag = UINT64_MAX;
   std::uint64_t maxElementTag = 0;
@@ -45,6 +53,21 @@ void remapNodeValues(std::vector<float>& values, int components, const std::vect
                      const std::vector<std::array<std::uint32_t, 8>>& derivedSources);
 // Per face, its element's values (NaN where the records have none); tags are resolved through the
 // sorted aliases first.
+// The records of a $ElementNodeData section: per record its element's tag, where its values start
+// in `values` and how many nodes they are given for (each with `components` values).
+struct ElementNodeRecords {
+  std::vector<std::uint64_t> tags;
+  std::vector<std::uint64_t> firstValue;
+  std::vector<std::uint32_t> nodeCount;
+  std::vector<float> values;
+};
+// Per face corner (kCornerSlots per face), the value its element's record gives for that node; NaN
+// where no record or no value is given. A corner that is not an element node (an added centre) gets
+// the mean of the face's other corners.
+std::vector<float> mapElementNodeValues(ElementNodeRecords records, int components,
+                                        const std::vector<std::uint64_t>& faceElement,
+                                        const std::vector<MshCornerNodes>& faceCornerNode,
+                                        const std::vector<std::pair<std::uint64_t, std::uint64_t>>& aliases);
 std::vector<float> mapElementValues(std::vector<std::uint64_t> tags, const std::vector<float>& values,
                                     int components, const std::vector<std::uint64_t>& faceElement,
                                     const std::vector<std::pair<std::uint64_t, std::uint64_t>>& aliases);

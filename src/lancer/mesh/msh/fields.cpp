@@ -6,6 +6,8 @@
 #include <cstring>
 #include <limits>
 
+#include "lancer/mesh/msh/element_types.hpp"
+
 namespace lancer {
 namespace {
 
@@ -74,6 +76,18 @@ FieldHeader readHeader(MshReadState& state, const char* section) {
   return header;
 }
 
+// An element-node record's count of nodes: 1 to the most nodes an element type has.
+std::uint64_t readElementNodeCount(MshCursor& cursor, bool binary) {
+  const char* at = binary ? cursor.position() : cursor.tokenStart();
+  const std::int64_t count = binary ? cursor.readRaw<std::int32_t>("the element's number of nodes")
+                                    : cursor.readInt64("the element's number of nodes");
+  if (count < 1 || count > kMaxMshElementNodes)
+    cursor.failAt(at, fmt::format("an element with {} nodes in $ElementNodeData: expected 1 to {} (the "
+                                  "number of nodes of the element, then its values)",
+                                  count, kMaxMshElementNodes));
+  return static_cast<std::uint64_t>(count);
+}
+
 // gmsh ends a post-processing section at the first token that starts with $End (its own tutorial
 // file view5.msh closes an $ElementData with $EndElememtData, and gmsh reads it), so lancer does too.
 void expectFieldSectionEnd(MshCursor& cursor, std::string_view expected, const char* context) {
@@ -92,14 +106,24 @@ void skipRecords(MshReadState& state, MshFieldSection section, const char* secti
                  std::string_view endMarker) {
   MshCursor& cursor = state.cursor;
   const auto components = static_cast<std::uint64_t>(section.field.components);
-  const std::uint64_t recordBytes =
-      state.binary ? 4 + 8 * components : (1 + components) * kMinTextNumberBytes;
+  const bool perCorner = section.field.at == FieldAt::kCorner;
+  // An element-node record holds a node count and at least one node's values.
+  const std::uint64_t recordBytes = state.binary ? 4 + (perCorner ? 4 : 0) + 8 * components
+                                                 : (1 + (perCorner ? 1 : 0) + components) * kMinTextNumberBytes;
   if (state.binary) cursor.skipLine();
   cursor.requireBytes(section.count, recordBytes, what);
   section.binary = state.binary;
   section.sectionBegin = cursor.offset() - static_cast<std::uint64_t>(cursor.position() - sectionStart);
   section.recordsBegin = cursor.offset();
-  if (state.binary) {
+  if (state.binary && perCorner) {
+    // Records differ in size by their node count: walked, each count checked against the bytes left.
+    for (std::uint64_t i = 0; i < section.count; ++i) {
+      cursor.readRaw<std::int32_t>("an element tag");
+      const std::uint64_t nodes = readElementNodeCount(cursor, true);
+      cursor.requireBytes(nodes, 8 * components, what);
+      cursor.advance(nodes * 8 * components);
+    }
+  } else if (state.binary) {
     cursor.advance(section.count * recordBytes);
   } else {
     const void* end = ::memmem(cursor.position(), cursor.remaining(), "$End", 4);
@@ -109,16 +133,15 @@ void skipRecords(MshReadState& state, MshFieldSection section, const char* secti
     cursor.seek(static_cast<const char*>(end));
   }
   section.recordsEnd = cursor.offset();
-  expectFieldSectionEnd(
-      cursor, endMarker,
-      section.field.perElement ? "after the element data values" : "after the node data values");
+  expectFieldSectionEnd(cursor, endMarker,
+                        fmt::format("after the {} data values", fieldAtName(section.field.at)).c_str());
   state.fieldSections.push_back(std::move(section));
 }
 
-MshFieldSection sectionOf(FieldHeader header, bool perElement) {
+MshFieldSection sectionOf(FieldHeader header, FieldAt at) {
   MshFieldSection section;
   section.field.name = std::move(header.name);
-  section.field.perElement = perElement;
+  section.field.at = at;
   section.field.step = header.step;
   section.field.time = header.time;
   section.field.components = header.components;
@@ -204,33 +227,85 @@ void readElementRecords(MshCursor& cursor, const MshFieldSection& section, const
                                   mapping.elementAliases);
 }
 
+// The records' values per face corner, from the record of the element each face came from.
+void readElementNodeRecords(MshCursor& cursor, const MshFieldSection& section, const MshFieldMapping& mapping,
+                            MeshField& field, std::vector<std::string>& warnings) {
+  const bool binary = section.binary;
+  const auto components = static_cast<std::uint64_t>(field.components);
+  ElementNodeRecords records;
+  records.tags.reserve(section.count);
+  records.firstValue.reserve(section.count);
+  records.nodeCount.reserve(section.count);
+  records.values.reserve(section.count * components * 3);  // checked against the bytes: 3 nodes at least
+  std::uint64_t dropped = 0, firstDropped = 0;
+  const char* firstDroppedAt = nullptr;
+  for (std::uint64_t i = 0; i < section.count; ++i) {
+    const char* recordAt = binary ? cursor.position() : cursor.tokenStart();
+    const std::uint64_t tag = readRecordTag(cursor, binary, "an element tag");
+    if (tag != 0 && (tag < mapping.minElementTag || tag > mapping.maxElementTag) && dropped++ == 0)
+      firstDropped = tag, firstDroppedAt = recordAt;
+    const std::uint64_t nodes = readElementNodeCount(cursor, binary);
+    cursor.requireBytes(nodes, binary ? 8 * components : components * kMinTextNumberBytes,
+                        "the element's node values");
+    records.tags.push_back(tag);
+    records.firstValue.push_back(records.values.size());
+    records.nodeCount.push_back(static_cast<std::uint32_t>(nodes));
+    for (std::uint64_t v = 0; v < nodes * components; ++v)
+      records.values.push_back(readFieldValue(cursor, binary, "$ElementNodeData", field.name, "element", tag));
+  }
+  if (dropped)
+    warnings.push_back(formatInputWarning(
+        cursor.locate(firstDroppedAt),
+        fmt::format("$ElementNodeData '{}' gives values for {} element{} that $Elements does not hold "
+                    "(the first: element {}); they were dropped and the other {} kept",
+                    field.name, dropped, dropped == 1 ? "" : "s", static_cast<std::int64_t>(firstDropped),
+                    section.count - dropped)));
+  field.values = mapElementNodeValues(std::move(records), field.components, mapping.faceElement,
+                                      mapping.faceCornerNode, mapping.elementAliases);
+}
+
 }  // namespace
 
 void readMshNodeData(MshReadState& state, const char* sectionStart) {
   if (!state.nodesRead)
     state.cursor.failAt(sectionStart, "$NodeData comes before $Nodes; its values need the nodes");
-  skipRecords(state, sectionOf(readHeader(state, "$NodeData"), false), sectionStart, "$NodeData",
+  skipRecords(state, sectionOf(readHeader(state, "$NodeData"), FieldAt::kNode), sectionStart, "$NodeData",
               "$EndNodeData");
 }
 
 void readMshElementData(MshReadState& state, const char* sectionStart) {
   if (!state.elementsRead)
     state.cursor.failAt(sectionStart, "$ElementData comes before $Elements; its values need the elements");
-  skipRecords(state, sectionOf(readHeader(state, "$ElementData"), true), sectionStart, "$ElementData",
-              "$EndElementData");
+  skipRecords(state, sectionOf(readHeader(state, "$ElementData"), FieldAt::kElement), sectionStart,
+              "$ElementData", "$EndElementData");
+}
+
+void readMshElementNodeData(MshReadState& state, const char* sectionStart) {
+  if (!state.elementsRead)
+    state.cursor.failAt(sectionStart,
+                        "$ElementNodeData comes before $Elements; its values need the elements");
+  skipRecords(state, sectionOf(readHeader(state, "$ElementNodeData"), FieldAt::kCorner), sectionStart,
+              "$ElementNodeData", "$EndElementNodeData");
 }
 
 MeshField readMshFieldRecords(MshCursor& cursor, const MshFieldSection& section,
                               const MshFieldMapping& mapping, std::vector<std::string>& warnings) {
   MeshField field = section.field;
-  if (field.perElement)
-    readElementRecords(cursor, section, mapping, field, warnings);
-  else
-    readNodeRecords(cursor, section, mapping, field, warnings);
+  switch (field.at) {
+    case FieldAt::kNode:
+      readNodeRecords(cursor, section, mapping, field, warnings);
+      break;
+    case FieldAt::kElement:
+      readElementRecords(cursor, section, mapping, field, warnings);
+      break;
+    case FieldAt::kCorner:
+      readElementNodeRecords(cursor, section, mapping, field, warnings);
+      break;
+  }
   // A text section with more records than its count: what follows the last one is not its end.
   if (!section.binary && (cursor.skipWhitespace(), cursor.offset() < section.recordsEnd))
-    cursor.fail(fmt::format("expected {} after the {} values the section's count gives, found more values",
-                            field.perElement ? "$EndElementData" : "$EndNodeData", section.count));
+    cursor.fail(fmt::format("expected $End{} after the {} records the section's count gives, found more values",
+                            std::string_view(mshSectionName(field.at)).substr(1), section.count));
   return field;
 }
 

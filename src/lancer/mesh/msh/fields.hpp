@@ -1,4 +1,4 @@
-// Internal to the .msh reader: $NodeData and $ElementData, gmsh's post-processing data, read into
+// Internal to the .msh reader: $NodeData, $ElementData and $ElementNodeData, gmsh's post-processing data, read into
 // MeshField steps. The layout is the same in MSH 2.2 and 4.1: a text header of string tags (the
 // view's name first), real tags (the time first) and integer tags (time step, components, count),
 // then `count` records of a tag and `components` values (binary: a 4-byte int and doubles).
@@ -20,6 +20,8 @@ namespace lancer {
 // records to the end marker, noting the section in state.fieldSections.
 void readMshNodeData(MshReadState& state, const char* sectionStart);
 void readMshElementData(MshReadState& state, const char* sectionStart);
+// $ElementNodeData: records of an element tag, its number of nodes and that many nodes' values.
+void readMshElementNodeData(MshReadState& state, const char* sectionStart);
 
 // Parses a section's records from `cursor` (placed at them) into the section's field in mesh order:
 // node values per mesh vertex (NaN for a node the file gives none), element values per face.

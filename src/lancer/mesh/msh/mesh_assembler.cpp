@@ -125,10 +125,55 @@ void MshMeshAssembler::addOtherElement(int type, const std::uint32_t* n) {
   }
 }
 
+namespace {
+
+// The i-th node of a volume face in the order corner[0..3], mid[0..3], centre.
+std::uint32_t volumeFaceNode(const MshVolumeFace& face, int i) {
+  return i < 4 ? face.corner[i] : i < 8 ? face.mid[i - 4] : face.centre;
+}
+
+// Where `node` is among an element's `count` nodes; kAddedCentre when it is not one of them.
+std::uint16_t elementNodePosition(const std::uint32_t* nodes, int count, std::uint32_t node) {
+  for (int i = 0; i < count && i < kAddedCentre; ++i)
+    if (nodes[i] == node) return static_cast<std::uint16_t>(i);
+  return kAddedCentre;
+}
+
+}  // namespace
+
+void MshMeshAssembler::recordCornerNodes() {
+  const MeshFace& face = faces_.back();
+  MshCornerNodes order{kNoElementNode, kNoElementNode, kNoElementNode, kNoElementNode};
+  for (int c = 0; c < face.cornerCount(); ++c) {
+    order[static_cast<std::size_t>(c)] = kAddedCentre;
+    if (volumeFace_) {
+      for (int i = 0; i < 9; ++i)
+        if (volumeFaceNode(*volumeFace_, i) == face.vertex[c]) {
+          order[static_cast<std::size_t>(c)] = (*volumeFaceNodeOrder_)[static_cast<std::size_t>(i)];
+          break;
+        }
+    } else if (elementNodes_) {
+      order[static_cast<std::size_t>(c)] = elementNodePosition(elementNodes_, elementNodeCount_, face.vertex[c]);
+    }
+  }
+  faceCornerNode_.push_back(order);
+}
+
 void MshMeshAssembler::addVolumeElement(int type, const std::uint32_t* n) {
+  const std::size_t first = volumeFaces_.size();
   appendVolumeElementFaces(type, n, group_, volumeFaces_);
   if (volumeGroups_.empty() || volumeGroups_.back() != group_) volumeGroups_.push_back(group_);
-  if (trackElements_) volumeFaceElement_.resize(volumeFaces_.size(), element_);
+  if (!trackElements_) return;
+  volumeFaceElement_.resize(volumeFaces_.size(), element_);
+  for (std::size_t f = first; f < volumeFaces_.size(); ++f) {
+    std::array<std::uint16_t, 9> order{};
+    for (int i = 0; i < 9; ++i) {
+      const std::uint32_t node = volumeFaceNode(volumeFaces_[f], i);
+      order[static_cast<std::size_t>(i)] =
+          node == kNoVertex ? kAddedCentre : elementNodePosition(n, elementNodeCount_, node);
+    }
+    volumeFaceNodes_.push_back(order);
+  }
 }
 
 // Order 3 and up: the element's flat faces through its nodes (high_order.hpp).
@@ -172,8 +217,11 @@ void MshMeshAssembler::alignWinding(const SurfaceElementFaces& element, const Ms
   int at = 0;
   while (at < corners && element.corner[at] != volumeFace.corner[0]) ++at;
   if (element.corner[(at + 1) % corners] == volumeFace.corner[1]) return;
-  for (std::uint32_t f = element.firstFace; f < element.firstFace + element.faceCount; ++f)
+  for (std::uint32_t f = element.firstFace; f < element.firstFace + element.faceCount; ++f) {
     reverseWinding(faces_[f], faceEdgeMask_[f]);
+    if (trackElements_)  // in step with the corners, as reverseWinding turns them
+      std::reverse(faceCornerNode_[f].begin() + 1, faceCornerNode_[f].begin() + faces_[f].cornerCount());
+  }
 }
 
 void MshMeshAssembler::moveFace(std::size_t to, std::size_t from) {
@@ -181,7 +229,10 @@ void MshMeshAssembler::moveFace(std::size_t to, std::size_t from) {
   facePhysical_[to] = facePhysical_[from];
   faceEntity_[to] = faceEntity_[from];
   faceEdgeMask_[to] = faceEdgeMask_[from];
-  if (trackElements_) faceElement_[to] = faceElement_[from];
+  if (trackElements_) {
+    faceElement_[to] = faceElement_[from];
+    faceCornerNode_[to] = faceCornerNode_[from];
+  }
   if (trackSides_) {
     sides_.side[to] = sides_.side[from];
     sides_.outerPhysicalTag[to] = sides_.outerPhysicalTag[from];
@@ -194,7 +245,10 @@ void MshMeshAssembler::truncateFaces(std::size_t count) {
   facePhysical_.resize(count);
   faceEntity_.resize(count);
   faceEdgeMask_.resize(count);
-  if (trackElements_) faceElement_.resize(count);
+  if (trackElements_) {
+    faceElement_.resize(count);
+    faceCornerNode_.resize(count);
+  }
   if (trackSides_) {
     sides_.side.resize(count);
     sides_.outerPhysicalTag.resize(count);
@@ -290,7 +344,11 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
   for (std::size_t b = 0; b < boundary.size(); ++b) {
     if (!addBoundaryFace[b]) continue;
     const MshVolumeFace& face = volumeFaces_[boundary[b].face];
-    if (trackElements_) element_ = volumeFaceElement_[boundary[b].face];
+    if (trackElements_) {
+      element_ = volumeFaceElement_[boundary[b].face];
+      volumeFace_ = &face;
+      volumeFaceNodeOrder_ = &volumeFaceNodes_[boundary[b].face];
+    }
     physical_ = groups_[face.group].first;
     entity_ = groups_[face.group].second;
     side_ = boundary[b].outer != kNoVertex ? FaceSide::kInterface : FaceSide::kSkin;
@@ -305,7 +363,9 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
     ++source.skinFaces;
     addVolumeFace(face);
   }
+  volumeFace_ = nullptr;
   volumeFaces_ = std::vector<MshVolumeFace>();  // frees it (`= {}` keeps the capacity)
+  volumeFaceNodes_ = std::vector<std::array<std::uint16_t, 9>>();
 }
 
 Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> namedGroups) {
@@ -443,10 +503,21 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
     mapping->usedCount = usedCount;
     mapping->derivedSources = std::move(derivedSources_);
     mapping->faceElement = std::move(faceElement_);
+    // Corner order becomes slot order (cornerSlot, mesh.hpp): the orientation of shells turns faces
+    // after this, and a slot follows its vertex wherever the winding puts it.
+    mapping->faceCornerNode.resize(faceCornerNode_.size());
+    parallelFor(faceCornerNode_.size(), threads_, kFaceGrain, [&](std::size_t f) {
+      const MeshFace& face = mesh.faces[f];
+      MshCornerNodes& slots = mapping->faceCornerNode[f];
+      slots.fill(kNoElementNode);
+      for (int c = 0; c < face.cornerCount(); ++c)
+        slots[static_cast<std::size_t>(cornerSlot(face, c))] = faceCornerNode_[f][static_cast<std::size_t>(c)];
+    });
     mapping->elementAliases = std::move(elementAliases_);
     fieldMapping_ = std::move(mapping);
   }
   faceElement_ = std::vector<std::uint64_t>();
+  faceCornerNode_ = std::vector<MshCornerNodes>();
   return mesh;
 }
 

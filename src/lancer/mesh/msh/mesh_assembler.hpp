@@ -31,8 +31,9 @@ class MshMeshAssembler {
     std::vector<std::uint64_t> tags;
   };
   std::vector<ElementField> elementFields;
-  // Set before the elements are read when the file has $ElementData (reader.cpp reads such a
-  // file again): faces then remember their element's tag (8 bytes per face, only for such files).
+  // Set before the elements are read when the file has $ElementData or $ElementNodeData (reader.cpp
+  // reads such a file again): faces then remember their element's tag and where each of their
+  // corners is among the element's nodes (16 bytes per face, only for such files).
   void trackElements() { trackElements_ = true; }
   bool tracksElements() const { return trackElements_; }
   // An MSH 2 copy of an element (one per further physical group) that was skipped: $ElementData
@@ -53,6 +54,10 @@ class MshMeshAssembler {
   void addElement(int type, const std::uint32_t* nodeIndex, std::uint64_t tag = 0) {
     ++countByType_[static_cast<std::size_t>(type)];
     element_ = tag;
+    if (trackElements_) {
+      elementNodes_ = nodeIndex;
+      elementNodeCount_ = mshElementType(type).nodeCount;
+    }
     switch (type) {
       case 2:
         addTriangle(nodeIndex[0], nodeIndex[1], nodeIndex[2], 0b111);
@@ -91,7 +96,10 @@ class MshMeshAssembler {
   }
   // The per-face arrays of the face just pushed.
   void recordFace(std::uint8_t edgeMask) {
-    if (trackElements_) faceElement_.push_back(element_);
+    if (trackElements_) {
+      faceElement_.push_back(element_);
+      recordCornerNodes();
+    }
     facePhysical_.push_back(physical_);
     faceEntity_.push_back(entity_);
     faceEdgeMask_.push_back(edgeMask);
@@ -101,6 +109,8 @@ class MshMeshAssembler {
       sides_.outerEntityTag.push_back(outerEntity_);
     }
   }
+  // Where the corners of the face just pushed are among its element's nodes (faceCornerNode_).
+  void recordCornerNodes();
   void addOtherElement(int type, const std::uint32_t* nodeIndex);
   void addVolumeElement(int type, const std::uint32_t* nodeIndex);
   void addHighOrderSurface(int type, const std::uint32_t* nodeIndex);
@@ -139,6 +149,16 @@ class MshMeshAssembler {
   std::vector<std::uint64_t> faceElement_;                               // per face, when tracking
   std::vector<std::pair<std::uint64_t, std::uint64_t>> elementAliases_;  // (copy, kept), when tracking
   std::vector<std::uint64_t> volumeFaceElement_;                         // per volume face, when tracking
+  // When tracking: per face, the position of each corner among its element's nodes (the order of
+  // $ElementNodeData values; kNoElementNode for a centre lancer adds), and per volume face the
+  // positions of its corner, mid and centre nodes (MshVolumeFace's order). While faces are added,
+  // the nodes of the element at hand: elementNodes_ for a surface element, else volumeFaceNodes_.
+  std::vector<MshCornerNodes> faceCornerNode_;
+  std::vector<std::array<std::uint16_t, 9>> volumeFaceNodes_;
+  const std::uint32_t* elementNodes_ = nullptr;
+  int elementNodeCount_ = 0;
+  const MshVolumeFace* volumeFace_ = nullptr;
+  const std::array<std::uint16_t, 9>* volumeFaceNodeOrder_ = nullptr;
   std::vector<SurfaceElementFaces> secondOrderSurfaces_;  // split surface elements, for the skin
   FaceVolumeSides sides_;  // filled from the volume boundary on, and only when it has interfaces
   bool trackSides_ = false;

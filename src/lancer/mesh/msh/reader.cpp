@@ -236,7 +236,8 @@ void releasePages(const char* fromAddress, const char* toAddress) {
   if (to > from) ::madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
 }
 
-// False when it stopped at a $ElementData because faces did not remember their elements.
+// False when it stopped at a $ElementData or $ElementNodeData because faces did not remember their
+// elements.
 // Hands back the whole pages of the file mapping between state.releaseFrom and the cursor (the
 // steps just parsed into floats): MADV_DONTNEED on a private read-only file mapping drops them, and
 // any later read of them faults them in from the file again.
@@ -288,13 +289,13 @@ bool readSections(MshReadState& state) {
     } else if (name == "$NodeData") {
       readFieldSection(state, name, start, readMshNodeData);
       releaseReadPages(state);
-    } else if (name == "$ElementData") {
+    } else if (name == "$ElementData" || name == "$ElementNodeData") {
       if (state.elementsRead && !state.assembler.tracksElements()) return false;
-      readFieldSection(state, name, start, readMshElementData);
+      readFieldSection(state, name, start, name == "$ElementData" ? readMshElementData : readMshElementNodeData);
       releaseReadPages(state);
     } else {
       // Every other section is skipped to its end marker: $Comments, $Periodic, $GhostElements,
-      // $Parametrizations, $ElementNodeData, $InterpolationScheme and any unknown one.
+      // $Parametrizations, $InterpolationScheme and any unknown one.
       skipSection(cursor, name, start);
     }
     if (meshSection)
@@ -354,10 +355,19 @@ void readFieldSections(MshReadState& state, Mesh& mesh, std::span<const char> by
   std::shared_ptr<MshFieldMapping> mapping = state.assembler.takeFieldMapping();
   mapping->minElementTag = state.minElementTag;
   mapping->maxElementTag = state.maxElementTag;
+  // Node data first, then element and element-node data, each in file order.
   std::stable_partition(sections.begin(), sections.end(),
-                        [](const MshFieldSection& section) { return !section.field.perElement; });
+                        [](const MshFieldSection& section) { return section.field.at == FieldAt::kNode; });
   const auto items = [&](const MshFieldSection& section) {
-    return section.field.perElement ? mesh.faces.size() : mesh.positions.size();
+    switch (section.field.at) {
+      case FieldAt::kNode:
+        return mesh.positions.size();
+      case FieldAt::kElement:
+        return mesh.faces.size();
+      case FieldAt::kCorner:
+        break;
+    }
+    return mesh.faces.size() * kCornerSlots;
   };
   std::uint64_t total = 0;
   for (const MshFieldSection& section : sections)
@@ -378,8 +388,8 @@ void readFieldSections(MshReadState& state, Mesh& mesh, std::span<const char> by
       field = readMshFieldRecords(cursor, section, *mapping, mesh.source.warnings);
     } catch (const InputError& error) {
       const std::string message =
-          fmt::format("{} \"{}\" skipped: {}", section.field.perElement ? "$ElementData" : "$NodeData",
-                      section.field.name, error.message());
+          fmt::format("{} \"{}\" skipped: {}", mshSectionName(section.field.at), section.field.name,
+                      error.message());
       mesh.source.warnings.push_back(formatInputWarning(error.location(), message));
       mesh.source.skippedFields.emplace_back(section.field.name, mesh.source.warnings.back());
     }
@@ -400,9 +410,10 @@ void readFieldSections(MshReadState& state, Mesh& mesh, std::span<const char> by
 
 Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteSource& byteSource,
                int threads) {
-  // Faces remember their element (8 bytes each) only when a $ElementData needs it. gmsh writes it
-  // after $Elements, so the first read does not track, and meeting one reads the file again with
-  // tracking: twice the load time for those files only, and no cost (not even a scan) for others.
+  // Faces remember their element (16 bytes each) only when a $ElementData or $ElementNodeData needs
+  // it. gmsh writes them after $Elements, so the first read does not track, and meeting one reads the
+  // file again with tracking: twice the load time for those files only, and no cost (not even a
+  // scan) for others.
   for (const bool track : {false, true}) {
     MshCursor cursor(bytes, name);
     if (bytes.empty()) cursor.failFile("the file is empty");
@@ -427,7 +438,7 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteS
       return mesh;
     }
   }
-  throw std::logic_error("readBytes: the tracking read stopped at $ElementData");
+  throw std::logic_error("readBytes: the tracking read stopped at element data");
 }
 
 }  // namespace

@@ -113,7 +113,7 @@ std::shared_ptr<const std::vector<float>> StoredFieldSteps::load(std::size_t ind
     }
     recent_.erase(recent_.begin());
   }
-  if (!section.binary || section.field.perElement ||
+  if (!section.binary || section.field.at != FieldAt::kNode ||
       !readBinaryNodeRecords(file.fd(), path_, section, *mapping_, reused)) {
     std::vector<char> bytes(section.recordsEnd - section.recordsBegin);
     readAt(file.fd(), path_, bytes.data(), bytes.size(), section.recordsBegin);
