@@ -219,8 +219,8 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
     out += fmt::format(
         "{}\n    {{\"name\": {}, \"location\": \"{}\", \"components\": {}, \"step\": {}, \"time\": {:.17g}, "
         "\"min\": {:.9g}, \"max\": {:.9g}}}",
-        i ? "," : "", jsonString(field.name), fieldAtName(field.at), field.components,
-        field.step, field.time, low, high);
+        i ? "," : "", jsonString(field.name), fieldAtName(field.at), field.components, field.step, field.time,
+        low, high);
   }
   out += mesh.fields.empty() ? "],\n" : "\n  ],\n";
   if (mesh.faceCount()) {

@@ -85,7 +85,7 @@ TEST(MshAppendedViews, AnyEndMarkerGmshAcceptsEndsAFieldSection) {
   EXPECT_TRUE(mesh.source.warnings.empty());
   const MeshField* temperature = fieldNamed(mesh, "temperature");
   ASSERT_NE(temperature, nullptr);
-  EXPECT_TRUE(temperature->perElement);
+  EXPECT_EQ(temperature->at, FieldAt::kElement);
   for (std::size_t f = 0; f < mesh.faceCount(); ++f) EXPECT_FALSE(std::isnan(temperature->scalar(f))) << f;
 }
 

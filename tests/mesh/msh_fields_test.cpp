@@ -20,10 +20,11 @@ std::string fieldFixture(const std::string& name) {
 // every item i (a vertex for node data, a face for element data).
 template <typename PointOf>
 void expectXPlus2YField(const Mesh& mesh, bool perElement, std::size_t items, PointOf pointOf) {
+  const FieldAt at = perElement ? FieldAt::kElement : FieldAt::kNode;
   ASSERT_EQ(mesh.fields.size(), 1u);
   const MeshField& field = mesh.fields[0];
   EXPECT_EQ(field.name, "temperature");
-  EXPECT_EQ(field.perElement, perElement);
+  EXPECT_EQ(field.at, at);
   EXPECT_EQ(field.components, 1);
   EXPECT_EQ(field.step, 0);
   ASSERT_EQ(field.itemCount(), items);
@@ -69,7 +70,7 @@ TEST(ElementDataTest, SkinAndSplitFacesGetTheirTetrahedronsValue) {
   const Mesh mesh = readMsh(fieldFixture("element_tet10_v41_bin.msh"));
   ASSERT_EQ(mesh.fields.size(), 1u);
   const MeshField& field = mesh.fields[0];
-  ASSERT_TRUE(field.perElement);
+  ASSERT_EQ(field.at, FieldAt::kElement);
   ASSERT_EQ(field.itemCount(), mesh.faceCount());
   ASSERT_EQ(mesh.source.skinFaces * 4, mesh.faceCount());
   for (std::size_t f = 0; f < mesh.faceCount(); ++f) {

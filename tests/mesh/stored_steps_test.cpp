@@ -50,7 +50,7 @@ TEST_P(StoredStepsFixture, ReadBackAsTheReaderWouldHaveKeptThem) {
     EXPECT_EQ(a.step, b.step);
     EXPECT_EQ(a.time, b.time);
     EXPECT_EQ(a.components, b.components);
-    EXPECT_EQ(a.perElement, b.perElement);
+    EXPECT_EQ(a.at, b.at);
     EXPECT_EQ(a.itemCount(), b.itemCount()) << what;
     EXPECT_EQ(a.range(), b.range()) << what;
     std::vector<FieldComponent> components{FieldComponent{}};

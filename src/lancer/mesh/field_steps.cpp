@@ -255,7 +255,8 @@ std::vector<float> meansAtVertices(const Mesh& mesh, int componentCount, const V
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     const MeshFace& face = mesh.faces[f];
     for (int c = 0; c < face.cornerCount(); ++c) {
-      const std::size_t first = (f * kCornerSlots + static_cast<std::size_t>(cornerSlot(face, c))) * components;
+      const std::size_t first =
+          (f * kCornerSlots + static_cast<std::size_t>(cornerSlot(face, c))) * components;
       if (std::isnan(value(first))) continue;
       const std::uint32_t v = face.vertex[c];
       ++count[v];
@@ -273,8 +274,8 @@ std::vector<float> meansAtVertices(const Mesh& mesh, int componentCount, const V
 }  // namespace
 
 ViewValues vertexMeans(const Mesh& mesh, const ViewValues& view) {
-  if (view.field->at != FieldAt::kCorner || view.size() != mesh.faces.size() * kCornerSlots *
-                                                                  static_cast<std::size_t>(view.field->components))
+  if (view.field->at != FieldAt::kCorner ||
+      view.size() != mesh.faces.size() * kCornerSlots * static_cast<std::size_t>(view.field->components))
     return view;
   ViewValues means;
   means.field = view.field;

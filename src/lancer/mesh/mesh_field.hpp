@@ -1,7 +1,7 @@
 // A post-processing field that a .msh file carries beside its mesh ($NodeData, $ElementData or
 // $ElementNodeData: one time step of one gmsh view), mapped onto the mesh lancer renders so that
-// surfaces can be coloured by it. Values are float: a colour map needs no more, and a field costs 4 bytes per vertex and
-// component instead of 8.
+// surfaces can be coloured by it. Values are float: a colour map needs no more, and a field costs 4 bytes per
+// vertex and component instead of 8.
 //
 // A file whose steps would take much memory (fifty steps of a million-face result) leaves them in
 // the file: such a step is *stored* (its `values` empty) and read back when a picture needs it
@@ -49,9 +49,9 @@ inline const char* fieldAtName(FieldAt at) {
 struct MeshField {
   std::string name;             // the view's name (first string tag)
   FieldAt at = FieldAt::kNode;  // which items the values are given for
-  int components = 1;       // 1 scalar, 3 vector, 9 tensor
-  int step = 0;             // time step index (first integer tag)
-  double time = 0;          // time value (first real tag)
+  int components = 1;           // 1 scalar, 3 vector, 9 tensor
+  int step = 0;                 // time step index (first integer tag)
+  double time = 0;              // time value (first real tag)
   // components values per mesh vertex (node data), per face (element data) or per face corner
   // (element-node data, kCornerSlots per face), in mesh order; NaN where the file gives no value
   // (e.g. the centre lancer adds to an 8-node quad). Empty while the step is stored.

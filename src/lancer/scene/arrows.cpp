@@ -152,10 +152,10 @@ Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh, const StepSelection& whe
       vertexMeans(mesh, meshFieldAt("arrows", spec.field, spec.step, mesh, when, spec.where));
   if (field.at == FieldAt::kElement || field.components != 3)
     throw InputError(
-        spec.where, fmt::format("arrows field \"{}\" must be node or element-node data of 3 components "
-                                "(a vector per node), but it is {} data of {} component{}",
-                                spec.field, fieldAtName(field.at), field.components,
-                                field.components == 1 ? "" : "s"));
+        spec.where,
+        fmt::format("arrows field \"{}\" must be node or element-node data of 3 components "
+                    "(a vector per node), but it is {} data of {} component{}",
+                    spec.field, fieldAtName(field.at), field.components, field.components == 1 ? "" : "s"));
   const ArrowPlacement placement = placeArrows(mesh, field, spec.maxCount);
   // The longest arrow of the step shown, or of every step when they follow the scene's: an arrow's
   // length means the same magnitude in every frame of an animation.
@@ -166,14 +166,16 @@ Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh, const StepSelection& whe
     // A step left in its file (mesh_field.hpp) is not read back for this, nor an element-node step
     // averaged: its largest magnitude over every node, which the reader kept, stands in for the
     // largest at the arrows' nodes.
-    if (step->isStored() || step->at == FieldAt::kCorner) largest = std::max(largest, componentRange(*step, FieldComponent{}).second);
+    if (step->isStored() || step->at == FieldAt::kCorner)
+      largest = std::max(largest, componentRange(*step, FieldComponent{}).second);
     if (step->values.size() == field.values.size())
       for (const std::uint32_t v : placement.vertices)
         largest = std::max(largest, length(vectorAt(*step, v)));
   }
   const double scale = spec.scale ? *spec.scale : (largest > 0 ? 0.9 * placement.cellSize / largest : 0);
   std::optional<MeshField> displacement;
-  if (warp) displacement = vertexMeans(mesh, meshFieldAt("warp", warp->field, std::nullopt, mesh, when, warp->where));
+  if (warp)
+    displacement = vertexMeans(mesh, meshFieldAt("warp", warp->field, std::nullopt, mesh, when, warp->where));
   Mesh out;
   out.origin = mesh.origin;
   out.source.path = mesh.source.path;

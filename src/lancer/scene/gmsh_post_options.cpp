@@ -115,7 +115,8 @@ void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
   for (const GmshPostView& view : views) {
     if (!view.visible) continue;
     const std::vector<const MeshField*> steps = viewSteps(mesh, nameOf(view));
-    const bool vector = !steps.empty() && steps.front()->components == 3 && steps.front()->at != FieldAt::kElement;
+    const bool vector =
+        !steps.empty() && steps.front()->components == 3 && steps.front()->at != FieldAt::kElement;
     if (view.vectorType == 5 && vector && !displacement)
       displacement = &view;
     else if (!colour)

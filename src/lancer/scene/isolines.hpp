@@ -22,14 +22,14 @@ struct ResolvedIsolines {
   // values: lines break where the field jumps); NaN where the file gives none.
   FieldAt at = FieldAt::kNode;
   std::vector<float> vertexValue;
-  std::vector<float> values;       // sorted, distinct
+  std::vector<float> values;  // sorted, distinct
 };
 
 // The lines at the step spec pins, else at the scene's `when`. Without `values`, `count` values
 // spread over the range of that step (when pinned) or of every step (as the colours), or with
 // spec.colorRangeEnds over `colorRange` (the mesh's colour range, when it is coloured by the field).
-// Node and element-node data only: element data (constant over each face) has no curves, an InputError at spec.where
-// that suggests bands; an unknown field, step or component as color_by says it.
+// Node and element-node data only: element data (constant over each face) has no curves, an InputError at
+// spec.where that suggests bands; an unknown field, step or component as color_by says it.
 ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh, const StepSelection& when = {},
                                  std::optional<std::pair<double, double>> colorRange = std::nullopt);
 

@@ -67,7 +67,8 @@ std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componen
     if (alias != aliases.end() && alias->first == tag) tag = alias->second;
   }
   std::vector<std::pair<std::uint64_t, std::uint32_t>> byTag(records.tags.size());
-  for (std::size_t r = 0; r < records.tags.size(); ++r) byTag[r] = {records.tags[r], static_cast<std::uint32_t>(r)};
+  for (std::size_t r = 0; r < records.tags.size(); ++r)
+    byTag[r] = {records.tags[r], static_cast<std::uint32_t>(r)};
   std::sort(byTag.begin(), byTag.end());
   const auto components = static_cast<std::size_t>(componentCount);
   const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -84,8 +85,8 @@ std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componen
       if (nodes[s] == kAddedCentre) added = static_cast<int>(s);
       // No node (a triangle's fourth slot), or the record stops short of this node: NaN.
       if (nodes[s] >= records.nodeCount[record]) continue;
-      std::copy_n(records.values.begin() + static_cast<std::ptrdiff_t>(records.firstValue[record] +
-                                                                        nodes[s] * components),
+      std::copy_n(records.values.begin() +
+                      static_cast<std::ptrdiff_t>(records.firstValue[record] + nodes[s] * components),
                   components, out + s * components);
     }
     if (added < 0) continue;

@@ -19,8 +19,8 @@ inline constexpr std::uint16_t kNoElementNode = 0xFFFF;
 inline constexpr std::uint16_t kAddedCentre = 0xFFFE;
 using MshCornerNodes = std::array<std::uint16_t, 4>;
 
-// One $NodeData, $ElementData or $ElementNodeData section: its header as a MeshField without values, and where its
-// records are in the file.
+// One $NodeData, $ElementData or $ElementNodeData section: its header as a MeshField without values, and
+// where its records are in the file.
 struct MshFieldSection {
   MeshField field;
   std::uint64_t count = 0;         // records
@@ -39,7 +39,7 @@ struct MshFieldMapping {
   std::vector<std::uint8_t> usedNode;  // per node-table entry: whether it became a mesh vertex
   std::uint32_t usedCount = 0;
   std::vector<std::array<std::uint32_t, 8>> derivedSources;  // corners and mids of each centre
-  std::vector<std::uint64_t> faceElement;  // per mesh face, its element's tag (aliases resolved)
+  std::vector<std::uint64_t> faceElement;      // per mesh face, its element's tag (aliases resolved)
   std::vector<MshCornerNodes> faceCornerNode;  // per mesh face, where its corners are in its element
   std::vector<std::pair<std::uint64_t, std::uint64_t>> elementAliases;  // sorted (copy, kept)
   std::uint64_t minElementTag = UINT64_MAX;

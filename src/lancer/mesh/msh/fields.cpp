@@ -108,8 +108,9 @@ void skipRecords(MshReadState& state, MshFieldSection section, const char* secti
   const auto components = static_cast<std::uint64_t>(section.field.components);
   const bool perCorner = section.field.at == FieldAt::kCorner;
   // An element-node record holds a node count and at least one node's values.
-  const std::uint64_t recordBytes = state.binary ? 4 + (perCorner ? 4 : 0) + 8 * components
-                                                 : (1 + (perCorner ? 1 : 0) + components) * kMinTextNumberBytes;
+  const std::uint64_t recordBytes = state.binary
+                                        ? 4 + (perCorner ? 4 : 0) + 8 * components
+                                        : (1 + (perCorner ? 1 : 0) + components) * kMinTextNumberBytes;
   if (state.binary) cursor.skipLine();
   cursor.requireBytes(section.count, recordBytes, what);
   section.binary = state.binary;
@@ -251,7 +252,8 @@ void readElementNodeRecords(MshCursor& cursor, const MshFieldSection& section, c
     records.firstValue.push_back(records.values.size());
     records.nodeCount.push_back(static_cast<std::uint32_t>(nodes));
     for (std::uint64_t v = 0; v < nodes * components; ++v)
-      records.values.push_back(readFieldValue(cursor, binary, "$ElementNodeData", field.name, "element", tag));
+      records.values.push_back(
+          readFieldValue(cursor, binary, "$ElementNodeData", field.name, "element", tag));
   }
   if (dropped)
     warnings.push_back(formatInputWarning(
@@ -304,8 +306,9 @@ MeshField readMshFieldRecords(MshCursor& cursor, const MshFieldSection& section,
   }
   // A text section with more records than its count: what follows the last one is not its end.
   if (!section.binary && (cursor.skipWhitespace(), cursor.offset() < section.recordsEnd))
-    cursor.fail(fmt::format("expected $End{} after the {} records the section's count gives, found more values",
-                            std::string_view(mshSectionName(field.at)).substr(1), section.count));
+    cursor.fail(
+        fmt::format("expected $End{} after the {} records the section's count gives, found more values",
+                    std::string_view(mshSectionName(field.at)).substr(1), section.count));
   return field;
 }
 

@@ -1,5 +1,5 @@
-// Internal to the .msh reader: $NodeData, $ElementData and $ElementNodeData, gmsh's post-processing data, read into
-// MeshField steps. The layout is the same in MSH 2.2 and 4.1: a text header of string tags (the
+// Internal to the .msh reader: $NodeData, $ElementData and $ElementNodeData, gmsh's post-processing data,
+// read into MeshField steps. The layout is the same in MSH 2.2 and 4.1: a text header of string tags (the
 // view's name first), real tags (the time first) and integer tags (time step, components, count),
 // then `count` records of a tag and `components` values (binary: a 4-byte int and doubles).
 //

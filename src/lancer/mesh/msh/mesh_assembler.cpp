@@ -153,7 +153,8 @@ void MshMeshAssembler::recordCornerNodes() {
           break;
         }
     } else if (elementNodes_) {
-      order[static_cast<std::size_t>(c)] = elementNodePosition(elementNodes_, elementNodeCount_, face.vertex[c]);
+      order[static_cast<std::size_t>(c)] =
+          elementNodePosition(elementNodes_, elementNodeCount_, face.vertex[c]);
     }
   }
   faceCornerNode_.push_back(order);
@@ -511,7 +512,8 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
       MshCornerNodes& slots = mapping->faceCornerNode[f];
       slots.fill(kNoElementNode);
       for (int c = 0; c < face.cornerCount(); ++c)
-        slots[static_cast<std::size_t>(cornerSlot(face, c))] = faceCornerNode_[f][static_cast<std::size_t>(c)];
+        slots[static_cast<std::size_t>(cornerSlot(face, c))] =
+            faceCornerNode_[f][static_cast<std::size_t>(c)];
     });
     mapping->elementAliases = std::move(elementAliases_);
     fieldMapping_ = std::move(mapping);

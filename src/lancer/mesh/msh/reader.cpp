@@ -291,7 +291,8 @@ bool readSections(MshReadState& state) {
       releaseReadPages(state);
     } else if (name == "$ElementData" || name == "$ElementNodeData") {
       if (state.elementsRead && !state.assembler.tracksElements()) return false;
-      readFieldSection(state, name, start, name == "$ElementData" ? readMshElementData : readMshElementNodeData);
+      readFieldSection(state, name, start,
+                       name == "$ElementData" ? readMshElementData : readMshElementNodeData);
       releaseReadPages(state);
     } else {
       // Every other section is skipped to its end marker: $Comments, $Periodic, $GhostElements,
@@ -387,9 +388,8 @@ void readFieldSections(MshReadState& state, Mesh& mesh, std::span<const char> by
     try {
       field = readMshFieldRecords(cursor, section, *mapping, mesh.source.warnings);
     } catch (const InputError& error) {
-      const std::string message =
-          fmt::format("{} \"{}\" skipped: {}", mshSectionName(section.field.at), section.field.name,
-                      error.message());
+      const std::string message = fmt::format("{} \"{}\" skipped: {}", mshSectionName(section.field.at),
+                                              section.field.name, error.message());
       mesh.source.warnings.push_back(formatInputWarning(error.location(), message));
       mesh.source.skippedFields.emplace_back(section.field.name, mesh.source.warnings.back());
     }
