@@ -9,6 +9,8 @@ tet_v{22,41}_{ascii,bin}.msh: a unit cube of tetrahedra (lancer draws their skin
   "jump"  $ElementNodeData, each element's tag % 5 at all its nodes (a field that jumps between
           elements, as B or a stress does), and "jumpe", the same as $ElementData;
   "u"     $ElementNodeData of a linear displacement (0.1 x, 0.2 y, 0) for warps and arrows.
+fuzz/corpus/msh_reader/fields_element_node_{v22_ascii,v41_bin}.msh: the cube in a few tetrahedra
+  with "g" only, seeds for the .msh fuzzer (under 8 KB).
 quad9_v41_bin.msh: the unit square of second-order (9-node) quadrangles and 6-node triangles,
   "f" ($NodeData) and "g" ($ElementNodeData, all nine or six nodes) of x + 2y.
 """
@@ -17,7 +19,9 @@ import sys
 
 import gmsh
 
-OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "data", "element_node")
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+OUT = os.path.join(ROOT, "tests", "data", "element_node")
+FUZZ = os.path.join(ROOT, "fuzz", "corpus", "msh_reader")
 
 
 def f_of(x, y, z):
@@ -97,6 +101,24 @@ def tet_cube():
         gmsh.view.remove(v)
 
 
+def tiny_cube():
+    gmsh.model.add("tiny")
+    gmsh.model.occ.addBox(0, 0, 0, 1, 1, 1)
+    gmsh.model.occ.synchronize()
+    gmsh.model.addPhysicalGroup(3, [1], 1)
+    gmsh.option.setNumber("Mesh.MeshSizeMin", 2)
+    gmsh.option.setNumber("Mesh.MeshSizeMax", 2)
+    gmsh.model.mesh.generate(3)
+    xyz = node_coordinates()
+    elements = list(element_blocks(3))
+    g = gmsh.view.add("g")
+    gmsh.view.addModelData(g, 0, "tiny", "ElementNodeData", [t for t, _ in elements],
+                           [[f_of(*xyz[n]) for n in nodes] for _, nodes in elements])
+    write(os.path.join(FUZZ, "fields_element_node_v22_ascii.msh"), [g], 2.2, 0)
+    write(os.path.join(FUZZ, "fields_element_node_v41_bin.msh"), [g], 4.1, 1)
+    gmsh.view.remove(g)
+
+
 def quad9_square():
     gmsh.model.add("square")
     gmsh.model.occ.addRectangle(0, 0, 0, 1, 1)
@@ -116,6 +138,7 @@ def main():
     os.makedirs(OUT, exist_ok=True)
     gmsh.initialize(["gmsh", "-v", "0"])
     tet_cube()
+    tiny_cube()
     quad9_square()
     gmsh.finalize()
 

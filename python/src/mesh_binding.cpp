@@ -312,18 +312,35 @@ py::array_t<std::int32_t> tagsOf(const std::vector<std::int32_t>& tags) {
   return py::array_t<std::int32_t>(static_cast<py::ssize_t>(tags.size()), tags.data());
 }
 
-// One field's values: (points, C) for node data, (faces, C) for element data; NaN where none.
+// One field's values: (points, C) for node data, (faces, C) for element data, (faces, 4, C) for
+// element-node data (in the order of each face's corners, as `faces` lists them); NaN where none.
 py::array_t<float> fieldOf(const Mesh& mesh, const std::string& name, const std::optional<int>& step) {
   std::string names;
-  for (const MeshField& field : mesh.fields) {
-    if (field.name == name && step && field.step != *step) continue;
-    if (field.name == name) {
+  for (const MeshField& stepField : mesh.fields) {
+    if (stepField.name == name && step && stepField.step != *step) continue;
+    if (stepField.name == name) {
+      const MeshField field = loadedField(stepField);  // a step left in its file is read back
       const auto components = static_cast<py::ssize_t>(field.components);
-      py::array_t<float> values({static_cast<py::ssize_t>(field.itemCount()), components});
-      std::copy(field.values.begin(), field.values.end(), values.mutable_data());
+      if (field.at != FieldAt::kCorner) {
+        py::array_t<float> values({static_cast<py::ssize_t>(field.itemCount()), components});
+        std::copy(field.values.begin(), field.values.end(), values.mutable_data());
+        return values;
+      }
+      const auto slots = static_cast<py::ssize_t>(kCornerSlots);
+      py::array_t<float> values({static_cast<py::ssize_t>(mesh.faces.size()), slots, components});
+      float* out = values.mutable_data();
+      std::fill_n(out, values.size(), std::numeric_limits<float>::quiet_NaN());
+      const auto perCorner = static_cast<std::size_t>(components);
+      for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+        for (int c = 0; c < mesh.faces[f].cornerCount(); ++c)
+          std::copy_n(field.values.begin() +
+                          static_cast<std::ptrdiff_t>(
+                              (f * kCornerSlots + static_cast<std::size_t>(cornerSlot(mesh.faces[f], c))) *
+                              perCorner),
+                      perCorner, out + (f * kCornerSlots + static_cast<std::size_t>(c)) * perCorner);
       return values;
     }
-    names += fmt::format("{}'{}'", names.empty() ? "" : ", ", field.name);
+    names += fmt::format("{}'{}'", names.empty() ? "" : ", ", stepField.name);
   }
   if (step && !viewSteps(mesh, name).empty())
     throw py::key_error(
@@ -362,7 +379,8 @@ void bindMesh(py::module_& module) {
       .def_property_readonly("group_names", &groupNamesOf, "{tag: name} of the named physical groups")
       .def_property_readonly(
           "fields", [](const Mesh& mesh) { return viewNames(mesh); },
-          "names of the fields (gmsh views: node and element data) color_by and warp can use, once each")
+          "names of the fields (gmsh views: node, element and element-node data) color_by and warp can use, "
+          "once each")
       .def(
           "steps",
           [](const Mesh& mesh, const std::string& name) {
@@ -375,7 +393,8 @@ void bindMesh(py::module_& module) {
           py::arg("name"), "the (step, time) of each step of a field, in time order")
       .def("field", &fieldOf, py::arg("name"), py::arg("step") = py::none(),
            "values of one of `fields` at a step (default: its first in the file): (len(points), C) float32 "
-           "for node data, (len(faces), C) for element data, NaN where the data gives none")
+           "for node data, (len(faces), C) for element data, (len(faces), 4, C) for element-node data (each "
+           "face's corners in the order of `faces`), NaN where the data gives none")
       .def_property_readonly("name", [](const Mesh& mesh) { return mesh.source.path; })
       .def_property_readonly("warnings", [](const Mesh& mesh) { return mesh.source.warnings; })
       .def_property_readonly("load_seconds", [](const Mesh& mesh) { return mesh.source.loadSeconds; })

@@ -132,3 +132,14 @@ def test_quick_look_result_keywords_bad_input():
         lancer.Scene.quick_look(mesh, legend="right")
     with pytest.raises(ValueError, match=r"holds its own 'map', 'range' and 'component'"):
         lancer.Scene.quick_look(mesh, color_by={"field": "stress"}, color_map="magma")
+
+
+def test_element_node_data_per_face_corner():
+    # gmsh-made (scripts/make_element_node_fixtures.py): "g" holds "f" = x + 2y + 3z at every element's nodes.
+    mesh = lancer.read_msh(str(data("tests", "data", "element_node", "tet_v41_bin.msh")))
+    g, f = mesh.field("g"), mesh.field("f")
+    faces = np.asarray(mesh.faces)
+    assert g.shape == (len(faces), 4, 1)
+    assert np.allclose(g[:, :3, 0], f[faces[:, :3], 0], atol=1e-5)
+    assert np.isnan(g[:, 3, 0]).all()  # triangles have no fourth corner
+    assert mesh.field("g", step=1).shape == g.shape
