@@ -124,6 +124,8 @@ int runAnimate(const AnimateCommandOptions& options) {
   std::optional<AnimationWriter> out;
   out.emplace(output, settings.width, settings.height, format, /*checkOnly=*/!talks);
   if (!quiet && !out->frameRateNote().empty()) std::fprintf(stderr, "%s\n", out->frameRateNote().c_str());
+  if (!quiet && steps && !steps->frames().note.empty())
+    std::fprintf(stderr, "%s\n", steps->frames().note.c_str());
   const std::vector<int> frames =
       framesToRender(options, *out, format, settings.width, settings.height, quiet);
 

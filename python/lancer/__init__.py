@@ -72,13 +72,15 @@ def render(scene, width=None, height=None, samples=None, shading=None, srgb=None
 def animate(scene, output, frames=None, fps=None, orbit=None, width=None, height=None, samples=None,
             shading=None, srgb=None, transparent_background=None, edges=None, threads=0, progress=False,
             loop=None, dither=None, palette=None, sampler=None, max_depth=None, encoding=None, tonemap=None,
-            exposure=None, denoise=None, over=None, integrator=None, noise=None, look=None):
+            exposure=None, denoise=None, over=None, integrator=None, noise=None, look=None, label=None):
     """Writes an orbit of the camera (orbit="camera") or of light K (orbit="light:K") as `lancer
     animate` does: an animated .gif, an animated .png, or numbered frames ("frame_%04d.png").
     over="steps": one frame per time step of the views the scene colours or warps by, in time order
-    (frames=N: N frames evenly spaced in time, the steps between blended).
+    (frames=N: N frames evenly spaced in time, the steps between blended; one frame per step when the
+    times repeat or decrease). label="t = {time:.3g} s" writes each frame's time (the time the file
+    gives its step) and {step} into a corner, as --label does.
     None keeps the scene's value (its [animation] table, else 36 frames at 12 fps, the camera)."""
     arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
                            progress, sampler, max_depth, encoding, tonemap, exposure, denoise, integrator,
                            noise, look)
-    _lancer._animate(scene, str(output), arguments, frames, fps, orbit, loop, dither, palette, over)
+    _lancer._animate(scene, str(output), arguments, frames, fps, orbit, loop, dither, palette, over, label)

@@ -11,6 +11,7 @@
 #include "lancer/render/animation.hpp"
 #include "lancer/render/step_animation.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/result_keys.hpp"
 #include "render_session.hpp"
 
 namespace lancer::python {
@@ -20,7 +21,7 @@ void animate(const py::object& target, const std::string& output, const RenderAr
              const std::optional<int>& frames, const std::optional<double>& fps,
              const std::optional<std::string>& orbit, const std::optional<int>& loop,
              const std::optional<std::string>& dither, const std::optional<std::string>& palette,
-             const std::optional<std::string>& over) {
+             const std::optional<std::string>& over, const std::optional<std::string>& label) {
   if (over && *over != "orbit" && *over != "steps")
     throw py::value_error(fmt::format("over='{}': use 'orbit' or 'steps'", *over));
   if (frames && (*frames < 1 || *frames > kMaxFrames))
@@ -46,6 +47,13 @@ void animate(const py::object& target, const std::string& output, const RenderAr
   if (fps) animation.fps = *fps;
   if (orbit) animation.orbitLight = parseOrbit(*orbit, sceneLightCount(prepared.scene));
   animation.overSteps = overSteps;
+  if (label) {
+    formatStepLabel(*label, 0.0, 0, SourceLocation{"label"});  // unknown names: said now
+    if (!overSteps)
+      throw InputError(SourceLocation{"label"},
+                       "a label shows the time and step of an animation over steps: add over=\"steps\"");
+    animation.label = *label;
+  }
   std::optional<StepScenes> steps;
   if (animation.overSteps) {
     py::gil_scoped_release release;
@@ -98,7 +106,7 @@ void animate(const py::object& target, const std::string& output, const RenderAr
 void bindAnimate(py::module_& module) {
   module.def("_animate", &animate, py::arg("target"), py::arg("output"), py::arg("arguments"),
              py::arg("frames"), py::arg("fps"), py::arg("orbit"), py::arg("loop"), py::arg("dither"),
-             py::arg("palette"), py::arg("over"));
+             py::arg("palette"), py::arg("over"), py::arg("label"));
 }
 
 }  // namespace lancer::python

@@ -114,9 +114,8 @@ std::vector<std::pair<float, float>> componentRanges(const std::vector<float>& v
   return ranges;
 }
 
-namespace {
+namespace {}  // namespace
 
-// Whether the steps, in step-index order, have strictly increasing times.
 bool timedByTags(std::vector<const MeshField*> steps) {
   std::sort(steps.begin(), steps.end(),
             [](const MeshField* a, const MeshField* b) { return a->step < b->step; });
@@ -124,8 +123,6 @@ bool timedByTags(std::vector<const MeshField*> steps) {
     if (!(steps[i]->time > steps[i - 1]->time)) return false;
   return true;
 }
-
-}  // namespace
 
 std::vector<const MeshField*> viewSteps(const Mesh& mesh, std::string_view name) {
   std::vector<const MeshField*> steps;

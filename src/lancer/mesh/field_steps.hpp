@@ -53,6 +53,10 @@ std::vector<std::pair<float, float>> componentRanges(const std::vector<float>& v
 // writer gives none) is timed by its step index instead: stepTime() says which.
 std::vector<const MeshField*> viewSteps(const Mesh& mesh, std::string_view name);
 double stepTime(const std::vector<const MeshField*>& steps, std::size_t i);
+// Whether the steps' times increase with their step index, so that a time between two steps means
+// something (GetDP's Newmark scheme writes t = 0 twice, its eigenmodes store their unsorted
+// frequencies: their steps are ordered and blended by index, and keep their times for labels).
+bool timedByTags(std::vector<const MeshField*> steps);
 
 // The distinct names of the views a mesh carries, in file order.
 std::vector<std::string> viewNames(const Mesh& mesh);

@@ -43,6 +43,10 @@ bool anyWarp(const SceneDescription& description) {
 StepFrames planStepFrames(const SceneDescription& description, const std::vector<Mesh>& meshes,
                           const AnimationSettings& animation) {
   std::vector<double> times;
+  // Each step's place on the timeline and the time its file gives it (the same for a view whose
+  // times increase with its steps); the first view that does not says so in the note.
+  std::vector<std::pair<double, double>> storedTimes;
+  std::string untimed;
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const MeshInstance& instance = description.meshes[i];
     std::vector<std::string> views;
@@ -52,6 +56,12 @@ StepFrames planStepFrames(const SceneDescription& description, const std::vector
     if (instance.arrows && !instance.arrows->step) views.push_back(instance.arrows->field);
     const std::vector<double> own = stepTimes(meshes[i], views);
     times.insert(times.end(), own.begin(), own.end());
+    for (const std::string& view : views) {
+      const std::vector<const MeshField*> steps = viewSteps(meshes[i], view);
+      if (untimed.empty() && steps.size() > 1 && !timedByTags(steps)) untimed = view;
+      for (std::size_t k = 0; k < steps.size(); ++k)
+        storedTimes.emplace_back(stepTime(steps, k), steps[k]->time);
+    }
   }
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
@@ -62,8 +72,14 @@ StepFrames planStepFrames(const SceneDescription& description, const std::vector
         "by a view of its file; add color_by = { field = \"...\" } or warp = { field = \"...\" } to a "
         "[[mesh]]");
   StepFrames frames;
-  if (!animation.framesGiven) {
+  if (!animation.framesGiven || !untimed.empty()) {
     frames.times = times;
+    if (animation.framesGiven && animation.frames != static_cast<int>(times.size()))
+      frames.note = fmt::format(
+          "lancer: the times of view \"{}\" do not increase with its steps (repeated or unsorted, as "
+          "a Newmark scheme's t = 0 or eigenmodes' frequencies are): {} frames, one per step, instead of "
+          "{} spread over its times",
+          untimed, times.size(), animation.frames);
   } else {
     const int count = animation.frames;
     for (int k = 0; k < count; ++k)
@@ -71,9 +87,19 @@ StepFrames planStepFrames(const SceneDescription& description, const std::vector
                                         : times.front() + (times.back() - times.front()) * k / (count - 1));
     frames.times.back() = times.back();  // exactly the last step, not a rounding before it
   }
+  std::stable_sort(storedTimes.begin(), storedTimes.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   for (const double t : frames.times) {
     const auto after = std::upper_bound(times.begin(), times.end(), t);
     frames.steps.push_back(static_cast<int>(std::max<std::ptrdiff_t>(after - times.begin() - 1, 0)));
+    // Timed views: the frame's own time, between steps too; else the time of the step it shows.
+    double label = t;
+    if (!untimed.empty()) {
+      const auto at = std::lower_bound(storedTimes.begin(), storedTimes.end(), t,
+                                       [](const auto& entry, double value) { return entry.first < value; });
+      if (at != storedTimes.end() && at->first == t) label = at->second;
+    }
+    frames.labelTimes.push_back(label);
   }
   return frames;
 }
@@ -198,8 +224,8 @@ Image StepScenes::render(int frame, const RenderOptions& options, RenderStats* s
   if (rebuilds_ > rebuildsBefore) rebuiltRenderSeconds_ += rendering.seconds();
   if (!animation_.label.empty()) {
     const std::string text =
-        formatStepLabel(animation_.label, time, frames_.steps[static_cast<std::size_t>(frame)],
-                        SourceLocation{description_.path});
+        formatStepLabel(animation_.label, frames_.labelTimes[static_cast<std::size_t>(frame)],
+                        frames_.steps[static_cast<std::size_t>(frame)], SourceLocation{description_.path});
     drawFrameLabel(image, text, animation_.labelPosition);
   }
   // The frame's own legends: with range = "step" each frame's colour range is its step's, so a

@@ -20,10 +20,15 @@
 
 namespace lancer {
 
-// The frames' times and, for the label, the step each shows (the step at or before its time).
+// The frames' times and, for the label, the step each shows (the step at or before its time) and the
+// time the file gives it. A view whose times do not increase with its steps (repeated or unsorted)
+// is ordered by step index: its frames' `times` are step indices, one frame per step, and labels
+// show each step's own time.
 struct StepFrames {
   std::vector<double> times;
-  std::vector<int> steps;  // 0-based position in the steps' time order
+  std::vector<int> steps;          // 0-based position in the steps' time order
+  std::vector<double> labelTimes;  // the time `{time}` shows in each frame's label
+  std::string note;                // for the user when frames were not spread as asked; else empty
 };
 
 // The times of the steps of every view the scene uses (colours, isolines and arrows not pinned to a
