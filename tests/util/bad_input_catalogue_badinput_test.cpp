@@ -81,6 +81,16 @@ std::function<void(const Scratch&)> withScene(const std::string& text) {
   };
 }
 
+// withScene, and a flat 8x4 Radiance map sky.hdr of grey pixels.
+std::function<void(const Scratch&)> withMap(const std::string& text) {
+  return [text](const Scratch& s) {
+    withScene(text)(s);
+    std::string map = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 8\n";
+    for (int i = 0; i < 32; ++i) map += "\x80\x80\x80\x81";
+    s.write("sky.hdr", map);
+  };
+}
+
 Case sceneCase(std::string id, std::string what, std::string input, const std::string& text) {
   return {std::move(id),
           std::move(what),
@@ -367,6 +377,15 @@ std::vector<Case> catalogue() {
        "$LANCER render -q scene.toml --aovs albedo -o out.png", nullptr},
       {"out_encoding_key", "unknown encoding in the scene", "`encoding = \"gamma\"`",
        withScene(scene("encoding = \"gamma\"\n")), "$LANCER render -q scene.toml -o out.png", nullptr},
+      // --- values beyond a float ---
+      {"scene_rotation_beyond_float", "environment rotation beyond a float, path tracer",
+       "`rotation = 1e41`, a map",
+       withMap(scene("integrator = \"path\"\n", "[environment]\nmap = \"sky.hdr\"\nrotation = 1e41\n")),
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+      sceneCase("scene_disk_radius_underflow", "a disk light so small its area rounds to 0, path tracer",
+                "`radius = 1e-30`",
+                "[render]\nwidth = 16\nheight = 12\nintegrator = \"path\"\n[[light]]\ntype = \"disk\"\n"
+                "position = [2, 2, 2]\nradius = 1e-30\n[[mesh]]\nfile = \"part.msh\"\n"),
   };
   return cases;
 }

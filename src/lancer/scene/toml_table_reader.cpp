@@ -169,6 +169,11 @@ double TomlTableReader::checkedNumber(const toml::node& node, const std::string&
   if (!isNumber(node)) fail(node, fmt::format("{} must be a number, found {}", name, describeValue(node)));
   const double value = numberValue(node);
   if (!std::isfinite(value)) fail(node, fmt::format("{} must be a finite number, found {}", name, value));
+  // The renderer holds scene values as floats: a larger magnitude would become infinite there.
+  constexpr double kLargestFloat = std::numeric_limits<float>::max();
+  if (std::abs(value) > kLargestFloat)
+    fail(node, fmt::format("{} must be between -{:.7g} and {:.7g} (the range of a float), found {}", name,
+                           kLargestFloat, kLargestFloat, value));
   if (!range.contains(value))
     fail(node, fmt::format("{} must be {}, found {}", name, range.describe(), value));
   return value;
