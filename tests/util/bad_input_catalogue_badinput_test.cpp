@@ -20,6 +20,7 @@
 
 #include "support/cli.hpp"
 #include "support/files.hpp"
+#include "support/test_images.hpp"
 
 namespace lancer {
 namespace {
@@ -386,6 +387,23 @@ std::vector<Case> catalogue() {
                 "`radius = 1e-30`",
                 "[render]\nwidth = 16\nheight = 12\nintegrator = \"path\"\n[[light]]\ntype = \"disk\"\n"
                 "position = [2, 2, 2]\nradius = 1e-30\n[[mesh]]\nfile = \"part.msh\"\n"),
+      // --- sizes checked against the file before memory is taken ---
+      {"map_hdr_size_beyond_file", "a 57-byte .hdr map claiming 23170x11585 pixels",
+       "`map = \"sky.hdr\"`, its size line `-Y 11585 +X 23170`",
+       [](const Scratch& s) {
+         withScene(scene("integrator = \"path\"\n", "[environment]\nmap = \"sky.hdr\"\n"))(s);
+         s.write("sky.hdr", std::string("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 11585 +X 23170\n\x02\x02") +
+                                "\x5a" + "\x82");
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+      {"map_exr_size_beyond_file", "an .exr map whose 32768x16384 header is followed by its chunk table only",
+       "`map = \"sky.exr\"`, 8.6 KB",
+       [](const Scratch& s) {
+         withScene(scene("integrator = \"path\"\n", "[environment]\nmap = \"sky.exr\"\n"))(s);
+         s.write("sky.exr", test::exrFile(
+                                32768, 16384, 3, 1024, [](int, std::uint64_t start) { return start; }, ""));
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
   };
   return cases;
 }

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "lancer/util/input_error.hpp"
+#include "lancer/util/memory_budget.hpp"
 
 namespace lancer {
 namespace {
@@ -76,6 +78,21 @@ HdrImage decodeRadianceHdr(const std::string& bytes, const std::string& path) {
     return fail(fmt::format("size {} x {} is out of range", image.width, image.height));
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
   const std::size_t size = bytes.size();
+  // Size first, memory second: every scanline takes some bytes of the file (a run-length one at least
+  // its 4-byte start and a 2-byte run per 127 pixels of each of its 4 channels, a flat one 4 bytes a
+  // pixel), so a size the file cannot hold is refused before the pixels are allocated.
+  const std::uint64_t pixelCount = static_cast<std::uint64_t>(image.width) * image.height;
+  const std::uint64_t scanlineBytes =
+      image.width >= 8 && image.width < 32768
+          ? 4 + 4 * 2 * ((static_cast<std::uint64_t>(image.width) + 126) / 127)
+          : 4 * static_cast<std::uint64_t>(image.width);
+  if (scanlineBytes * image.height > size - at)
+    throw InputError(SourceLocation{path, 0, 0, static_cast<std::int64_t>(at)},
+                     fmt::format("'{}' is truncated or its size is corrupt: {} x {} pixels take at least {} "
+                                 "bytes of scanlines, but only {} bytes follow the size line",
+                                 path, image.width, image.height, scanlineBytes * image.height, size - at));
+  requireMemory(pixelCount * sizeof(Vec3), SourceLocation{path},
+                fmt::format("the {} x {} map in '{}'", image.width, image.height, path));
   image.pixels.resize(static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height));
   std::vector<unsigned char> scan(static_cast<std::size_t>(image.width) * 4);
   for (int y = 0; y < image.height; ++y) {
