@@ -404,6 +404,20 @@ std::vector<Case> catalogue() {
                                 32768, 16384, 3, 1024, [](int, std::uint64_t start) { return start; }, ""));
        },
        "$LANCER render -q scene.toml -o out.png", nullptr},
+      // --- text drawn into the picture, bounded when it is read ---
+      {"cli_label_huge_width", "a label whose format asks for a width of 1.5 billion",
+       "`--label \"{time:1500000000}\"`",
+       [](const Scratch& s) { s.copy(dataFile("results/cantilever.msh"), "beam.msh"); },
+       "$LANCER animate -q --over steps --label '{time:1500000000}' beam.msh -o out.gif", nullptr},
+      {"scene_legend_title_too_long", "a legend title of 24,000 characters",
+       "`color_by = { field = \"displacement\", title = \"TT...\" }`",
+       [](const Scratch& s) {
+         s.copy(dataFile("results/cantilever.msh"), "beam.msh");
+         s.write("scene.toml",
+                 "[[mesh]]\nfile = \"beam.msh\"\ncolor_by = { field = \"displacement\", title = \"" +
+                     std::string(24000, 'T') + "\" }\n");
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
   };
   return cases;
 }
