@@ -8,6 +8,7 @@
 #include "command_distribution.hpp"
 #include "commands.hpp"
 #include "lancer/cluster/tile_parts.hpp"
+#include "lancer/image/atomic_file.hpp"
 #include "lancer/image/exr_io.hpp"
 #include "lancer/image/image_io.hpp"
 #include "lancer/image/image_row_writer.hpp"
@@ -321,12 +322,27 @@ int runRender(const RenderCommandOptions& options) {
     throw InputError(SourceLocation{"--progressive"},
                      "--progressive writes one image from one process; "
                      "leave it out of --shard and MPI runs");
+  // The legends are the same in every task of a job array (the scene's ranges): the first writes them.
+  const bool writesLegend = !options.legend.empty() && options.pixel.empty() &&
+                            (shard ? shard->shard.index == 0 : distribution->delivers());
+  std::optional<Image> legend;
   if (!options.legend.empty()) {
     imageFormatFromPath(options.legend);
     if (!prepared.scene.fieldColors)
       throw InputError(
           SourceLocation{options.input},
           "--legend needs a mesh coloured by a field (color_by = { field = \"...\" } in a [[mesh]])");
+    if (!output.empty() && sameOutputPath(options.legend, output))
+      throw InputError(SourceLocation{"--legend"},
+                       fmt::format("'{}' is also the picture's output: give the legend a name of its own",
+                                   options.legend));
+  }
+  if (writesLegend) {
+    // Before the render, so that a failed command changes no file: the legend's folder, and its text
+    // (the font). The bar holds the map's display values: written as they are, like the picture's.
+    requireWritable(options.legend);
+    legend =
+        legendSheet(prepared.scene.fieldColors->legends, kLegendBarLength, kLegendTextHeight, settings.srgb);
   }
 
   const Renderer renderer = prepared.renderer();
@@ -358,12 +374,7 @@ int runRender(const RenderCommandOptions& options) {
   }
   if (progress) std::fputc('\n', stderr);
   if (!written) return talks ? interruptedExit(output) : kExitInterrupted;  // rank 0 alone says so
-  // The legends are the same in every task of a job array (the scene's ranges): the first writes them.
-  if (!options.legend.empty() && (shard ? shard->shard.index == 0 : talks)) {
-    // The bar holds the map's display values: written as they are, like the picture's field colours.
-    writeImage(options.legend, legendSheet(prepared.scene.fieldColors->legends, kLegendBarLength,
-                                           kLegendTextHeight, settings.srgb));
-  }
+  if (legend) writeImage(options.legend, *legend);
   if (!talks || shard) return kExitOk;
   if (!options.overrides.quiet) {
     const double total = stopwatch.seconds();

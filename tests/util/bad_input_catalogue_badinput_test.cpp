@@ -92,6 +92,17 @@ std::function<void(const Scratch&)> withMap(const std::string& text) {
   };
 }
 
+// A scene whose mesh is coloured by a field (for --legend), and an existing out.png.
+std::function<void(const Scratch&)> withFieldScene() {
+  return [](const Scratch& s) {
+    s.copy(dataFile("fields/node_xy_v22_ascii.msh"), "field.msh");
+    s.write("scene.toml",
+            "[render]\nwidth = 16\nheight = 12\n[[mesh]]\nfile = \"field.msh\"\n"
+            "color_by = { field = \"temperature\" }\n");
+    s.write("out.png", "old image");
+  };
+}
+
 Case sceneCase(std::string id, std::string what, std::string input, const std::string& text) {
   return {std::move(id),
           std::move(what),
@@ -418,6 +429,17 @@ std::vector<Case> catalogue() {
                      std::string(24000, 'T') + "\" }\n");
        },
        "$LANCER render -q scene.toml -o out.png", nullptr},
+      // --- every output checked before the render ---
+      {"out_legend_missing_folder", "--legend in a folder that does not exist (checked before the render)",
+       "`--legend nofolder/leg.png`, existing `out.png`", withFieldScene(),
+       "$LANCER render -q scene.toml -o out.png --legend nofolder/leg.png", oldOutputKept("out.png")},
+      {"out_legend_bad_font", "a font that cannot be loaded, for --legend (checked before the render)",
+       "`LANCER_FONT=missing.ttf`, existing `out.png`", withFieldScene(),
+       "LANCER_FONT=missing.ttf $LANCER render -q scene.toml -o out.png --legend leg.png",
+       oldOutputKept("out.png")},
+      {"out_legend_same_path", "--legend the same file as the picture", "`--legend ./out.png -o out.png`",
+       withFieldScene(), "$LANCER render -q scene.toml -o out.png --legend ./out.png",
+       oldOutputKept("out.png")},
   };
   return cases;
 }
