@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 
@@ -36,10 +37,10 @@ struct RenderCommandOptions {
   std::string input;
   std::string output;
   std::string pixel;
-  std::string legend;      // --legend: the legends of the field-coloured meshes
-  std::string shard;       // --shard I/N or auto: a job-array task's part of the image
-  std::string aovs;        // --aovs albedo,normal,depth: layers of an EXR output
-  double progressive = 0;  // --progressive SECONDS: rewrite the image at least this often as it converges
+  std::string legend;                 // --legend: the legends of the field-coloured meshes
+  std::string shard;                  // --shard I/N or auto: a job-array task's part of the image
+  std::string aovs;                   // --aovs albedo,normal,depth: layers of an EXR output
+  std::optional<double> progressive;  // --progressive SECONDS: rewrite the image at least this often
   SceneOverrides overrides;
 };
 
@@ -290,6 +291,11 @@ bool renderDistributed(const PreparedRender& prepared, const Renderer& renderer,
 
 int runRender(const RenderCommandOptions& options) {
   const Stopwatch stopwatch;
+  if (options.progressive && !(std::isfinite(*options.progressive) && *options.progressive > 0))
+    throw InputError(SourceLocation{"--progressive"},
+                     fmt::format("{} is not a number of seconds > 0 (how often the image is rewritten as it "
+                                 "converges, e.g. 2)",
+                                 *options.progressive));
   const std::unique_ptr<WorkDistribution> distribution = commandDistribution(!options.shard.empty());
   std::optional<ScheduledShard> shard;
   if (!options.shard.empty()) shard = resolveShard(options.shard, processEnvironment());
@@ -314,11 +320,11 @@ int runRender(const RenderCommandOptions& options) {
   if (distribution->ranks() > 1 && (settings.denoise || !options.aovs.empty()))
     throw InputError(SourceLocation{options.input},
                      "--denoise and --aovs need the whole image in one process: run without mpirun");
-  if (options.progressive > 0 && settings.integrator == IntegratorKind::Whitted)
+  if (options.progressive && settings.integrator == IntegratorKind::Whitted)
     throw InputError(SourceLocation{"--progressive"},
                      "--progressive refines the samples of integrator = \"path\" or \"ao\"; this render uses "
                      "the Whitted model (add --integrator path)");
-  if (options.progressive > 0 && (shard || distribution->ranks() > 1))
+  if (options.progressive && (shard || distribution->ranks() > 1))
     throw InputError(SourceLocation{"--progressive"},
                      "--progressive writes one image from one process; "
                      "leave it out of --shard and MPI runs");
@@ -360,9 +366,9 @@ int runRender(const RenderCommandOptions& options) {
       written = renderPart(prepared, renderer, output, *shard, renderOptions, options.overrides.quiet, stats);
     else if (distribution->ranks() > 1)
       written = renderDistributed(prepared, renderer, output, *distribution, renderOptions, stats);
-    else if (options.progressive > 0)
+    else if (options.progressive)
       written =
-          renderProgressive(prepared, renderer, output, options.progressive, aovs, renderOptions, stats);
+          renderProgressive(prepared, renderer, output, *options.progressive, aovs, renderOptions, stats);
     else
       written = renderToFile(prepared, renderer, output, aovs, renderOptions, stats);
   } catch (const NonFiniteRenderError& e) {
@@ -409,12 +415,10 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
       "--aovs", options->aovs,
       "Layers of an .exr output beside the radiance: albedo, normal, depth (comma-separated)");
   command->add_option("--pixel", options->pixel, "Trace only pixel x,y and print its value (debugging)");
-  command
-      ->add_option(
-          "--progressive", options->progressive,
-          "path, ao: render 1, 2, 4, ... samples per pixel up to the scene's, rewriting the image at "
-          "least every SECONDS as it converges")
-      ->check(CLI::PositiveNumber);
+  command->add_option(
+      "--progressive", options->progressive,
+      "path, ao: render 1, 2, 4, ... samples per pixel up to the scene's, rewriting the image at "
+      "least every SECONDS as it converges");
   command->callback([options, &runner] {
     takeInputFromGmshView(options->input, options->overrides);
     runner = [options] { return runRender(*options); };

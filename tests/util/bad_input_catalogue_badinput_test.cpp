@@ -440,6 +440,9 @@ std::vector<Case> catalogue() {
       {"out_legend_same_path", "--legend the same file as the picture", "`--legend ./out.png -o out.png`",
        withFieldScene(), "$LANCER render -q scene.toml -o out.png --legend ./out.png",
        oldOutputKept("out.png")},
+      {"cli_progressive_nan", "--progressive that is no number of seconds", "`--progressive nan`",
+       withScene(scene("integrator = \"path\"\n")),
+       "$LANCER render -q scene.toml --progressive nan -o out.png", nullptr},
   };
   return cases;
 }
