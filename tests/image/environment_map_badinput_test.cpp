@@ -1,6 +1,7 @@
 // Environment maps whose header claims more pixels than the file holds or the memory budget allows:
-// refused before the pixels are allocated, with the size and the bytes found. The lying EXR files are
-// made byte by byte (test::exrFile): a header, then a chunk table.
+// refused before the pixels are allocated, with the size and the bytes found. A grey (Y) EXR is read
+// as grey; other images and folders are named as what they are, their bytes never echoed raw. The lying EXR
+// files are made byte by byte (test::exrFile): a header, then a chunk table.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -113,6 +114,57 @@ TEST_F(EnvironmentMapExr, OverTheMemoryBudgetIsRefusedAndAWholeMapIsRead) {
   const HdrImage map = readEnvironmentMap(path);
   ASSERT_EQ(map.pixels.size(), 64u * 32u);
   EXPECT_EQ(map.pixels[100], (Vec3{0.5f, 0.25f, 1}));
+}
+
+// An uncompressed single-channel EXR of 8 x 4 half-float `value`s in the channel `channel`.
+std::string singleChannelExr(const std::string& channel, std::uint16_t value) {
+  std::string rows;
+  for (int y = 0; y < 4; ++y) {
+    test::appendLittleEndian(rows, static_cast<std::uint64_t>(y), 4);
+    test::appendLittleEndian(rows, 16, 4);
+    for (int x = 0; x < 8; ++x) test::appendLittleEndian(rows, value, 2);
+  }
+  return test::exrFile(8, 4, 0, 4,
+                       [](int i, std::uint64_t start) { return start + 24 * static_cast<std::uint64_t>(i); },
+                       rows, {channel});
+}
+
+TEST_F(EnvironmentMapExr, LuminanceAloneIsReadAsGrey) {
+  test::ScratchFolder folder;
+  folder.write("grey.exr", singleChannelExr("Y", 0x3800));  // 0.5: a grey sky, not a black one
+  const HdrImage map = readEnvironmentMap(folder.file("grey.exr"));
+  ASSERT_EQ(map.pixels.size(), 32u);
+  for (const Vec3& pixel : map.pixels) EXPECT_EQ(pixel, (Vec3{0.5f, 0.5f, 0.5f}));
+}
+
+TEST_F(EnvironmentMapExr, NoColourChannelIsRefused) {
+  const std::string message = exrErrorOf(singleChannelExr("Z", 0x3800));
+  EXPECT_NE(message.find("has no R, G, B or Y channel (its channels: Z)"), std::string::npos) << message;
+}
+
+TEST(EnvironmentMapKind, OtherImagesAreNamedAndTheirBytesNotEchoed) {
+  test::ScratchFolder folder;
+  folder.write("sky.hdr", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
+  EXPECT_EQ(test::messageOf([&] { readEnvironmentMap(folder.file("sky.hdr")); }),
+            folder.file("sky.hdr") + ": error: '" + folder.file("sky.hdr") +
+                "' is a PNG image, not a Radiance .hdr or OpenEXR map (an environment map is an "
+                "equirectangular image of radiance, e.g. 2048 x 1024)");
+  folder.write("sky.jpg", "\xff\xd8\xff\xe0 JFIF");
+  EXPECT_NE(test::messageOf([&] { readEnvironmentMap(folder.file("sky.jpg")); }).find("is a JPEG image"),
+            std::string::npos);
+  folder.write("odd.hdr", "\x01\x02\xfe\\sky\n");
+  EXPECT_EQ(test::messageOf([&] { readEnvironmentMap(folder.file("odd.hdr")); }),
+            folder.file("odd.hdr") + ": error: '" + folder.file("odd.hdr") +
+                "' is not a Radiance .hdr image: the first line is \"\\x01\\x02\\xfe\\x5csky\", expected "
+                "#?RADIANCE");
+}
+
+TEST(EnvironmentMapKind, AFolderIsSaidToBeAFolder) {
+  test::ScratchFolder folder;
+  folder.write("maps.hdr/readme.txt", "");
+  EXPECT_EQ(
+      test::messageOf([&] { readEnvironmentMap(folder.file("maps.hdr")); }),
+      folder.file("maps.hdr") + ": error: '" + folder.file("maps.hdr") + "' is a folder, not a map file");
 }
 
 }  // namespace

@@ -86,13 +86,13 @@ void exrAttribute(std::string& bytes, const std::string& name, const std::string
 
 // OpenEXR file layout: magic, version 2, the required attributes, an empty name, the offset table.
 std::string exrFile(int width, int height, int compression, int chunks,
-                    const std::function<std::uint64_t(int, std::uint64_t)>& offsetOf,
-                    const std::string& tail) {
+                    const std::function<std::uint64_t(int, std::uint64_t)>& offsetOf, const std::string& tail,
+                    const std::vector<std::string>& channelNames) {
   std::string bytes = "\x76\x2f\x31\x01";
   appendLittleEndian(bytes, 2, 4);
   std::string channels;
-  for (const char* name : {"B", "G", "R"}) {
-    channels += std::string(name) + '\0';
+  for (const std::string& name : channelNames) {
+    channels += name + '\0';
     appendLittleEndian(channels, 1, 4);  // HALF
     appendLittleEndian(channels, 0, 4);  // pLinear and reserved
     appendLittleEndian(channels, 1, 4);  // xSampling

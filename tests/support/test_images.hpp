@@ -37,12 +37,13 @@ std::vector<std::uint8_t> pngRgb8(const std::string& path);
 // `value`'s low `size` bytes, least significant first, appended to `bytes`.
 void appendLittleEndian(std::string& bytes, std::uint64_t value, int size);
 
-// The bytes of a single-part scan-line OpenEXR file of half B, G, R over width x height, compressed
-// with `compression` (OpenEXR's numbers: 0 none, 3 ZIP, 4 PIZ): its header, a table of `chunks` offsets
-// given by offsetOf(i, the byte after the table), then `tail`. OpenEXR's writer makes only whole files;
-// a reader's test needs ones that lie.
+// The bytes of a single-part scan-line OpenEXR file of half-float `channels` (in the file's order,
+// alphabetical) over width x height, compressed with `compression` (OpenEXR's numbers: 0 none, 3 ZIP,
+// 4 PIZ): its header, a table of `chunks` offsets given by offsetOf(i, the byte after the table), then
+// `tail`. OpenEXR's writer makes only whole files; a reader's test needs ones that lie, or channels
+// lancer's writer does not write.
 std::string exrFile(int width, int height, int compression, int chunks,
-                    const std::function<std::uint64_t(int, std::uint64_t)>& offsetOf,
-                    const std::string& tail);
+                    const std::function<std::uint64_t(int, std::uint64_t)>& offsetOf, const std::string& tail,
+                    const std::vector<std::string>& channels = {"B", "G", "R"});
 
 }  // namespace lancer::test

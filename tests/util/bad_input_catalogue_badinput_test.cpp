@@ -443,6 +443,26 @@ std::vector<Case> catalogue() {
       {"cli_progressive_nan", "--progressive that is no number of seconds", "`--progressive nan`",
        withScene(scene("integrator = \"path\"\n")),
        "$LANCER render -q scene.toml --progressive nan -o out.png", nullptr},
+      // --- files that are not what was asked for ---
+      {"map_is_png", "a PNG image given as an environment map", "`map = \"sky.png\"` (a PNG)",
+       [](const Scratch& s) {
+         withScene(scene("integrator = \"path\"\n", "[environment]\nmap = \"sky.png\"\n"))(s);
+         s.write("sky.png", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+      {"map_is_folder", "a folder given as an environment map", "`map = \"maps\"` (a folder)",
+       [](const Scratch& s) {
+         withScene(scene("integrator = \"path\"\n", "[environment]\nmap = \"maps\"\n"))(s);
+         s.write("maps/readme.txt", "");
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+      {"font_is_folder", "a folder given as the font", "`LANCER_FONT=fonts` (a folder), `--legend leg.png`",
+       [](const Scratch& s) {
+         withFieldScene()(s);
+         s.write("fonts/readme.txt", "");
+       },
+       "LANCER_FONT=fonts $LANCER render -q scene.toml -o out.png --legend leg.png",
+       oldOutputKept("out.png")},
   };
   return cases;
 }

@@ -177,6 +177,24 @@ void checkPixelsFitTheFile(const std::string& path, const Imf::Header& header, i
                     path, width, height, across * down, needed, fileBytes));
 }
 
+// True for a grey image, luminance Y alone (as OpenEXR's RgbaOutputFile writes WRITE_Y): read as
+// R = G = B = Y. Throws InputError for an image with neither R, G, B nor Y, and for luminance with
+// chroma (RY, BY), which lancer does not convert.
+bool greyOnly(const std::string& path, const Imf::ChannelList& channels) {
+  if (channels.findChannel("R") || channels.findChannel("G") || channels.findChannel("B")) return false;
+  if (channels.findChannel("RY") || channels.findChannel("BY"))
+    throw InputError(SourceLocation{path},
+                     fmt::format("'{}' holds luminance and chroma (Y, RY, BY); lancer reads "
+                                 "R, G, B or Y alone: save it as RGB",
+                                 path));
+  if (channels.findChannel("Y")) return true;
+  std::string names;
+  for (auto channel = channels.begin(); channel != channels.end(); ++channel)
+    names += (names.empty() ? "" : ", ") + std::string(channel.name());
+  throw InputError(SourceLocation{path}, fmt::format("'{}' has no R, G, B or Y channel (its channels: {})",
+                                                     path, names.empty() ? "none" : names));
+}
+
 }  // namespace
 
 Image readExr(const std::string& path, ExrLayers* layers) {
@@ -210,11 +228,13 @@ Image readExr(const std::string& path, ExrLayers* layers) {
     Imf::FrameBuffer frame;
     char* base =
         reinterpret_cast<char*>(image.pixels().data()) - origin * static_cast<std::ptrdiff_t>(kRgbaStride);
-    const char* names[4] = {"R", "G", "B", "A"};
-    for (int c = 0; c < 4; ++c)
-      frame.insert(names[c], floatSlice(base + c * sizeof(float), kRgbaStride, kRgbaStride * width,
-                                        c == 3 ? 1.0 : 0.0));
     const Imf::ChannelList& channels = in.header().channels();
+    const bool grey = greyOnly(path, channels);
+    const char* names[4] = {grey ? "Y" : "R", "G", "B", "A"};
+    for (int c = 0; c < 4; ++c)
+      if (!grey || c == 0 || c == 3)
+        frame.insert(names[c], floatSlice(base + c * sizeof(float), kRgbaStride, kRgbaStride * width,
+                                          c == 3 ? 1.0 : 0.0));
     const auto readVec3 = [&](std::vector<Vec3>& layer, const char* const(&names3)[3]) {
       if (channels.findChannel(names3[0]) == nullptr) return;
       layer.assign(pixels, Vec3{0, 0, 0});
@@ -235,6 +255,8 @@ Image readExr(const std::string& path, ExrLayers* layers) {
     }
     in.setFrameBuffer(frame);
     in.readPixels(window.min.y, window.max.y);
+    if (grey)
+      for (Rgba& pixel : image.pixels()) pixel.g = pixel.b = pixel.r;
     return image;
   } catch (const InputError&) {
     throw;

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -24,6 +25,19 @@ Vec3 fromRgbe(const unsigned char* rgbe) {
 }
 
 constexpr long long kMaxPixels = 1LL << 28;
+
+// Bytes of a file quoted in a message: printable ASCII as it is, anything else as \xNN, so that a
+// message about a binary file stays one line of valid text.
+std::string printable(std::string_view bytes) {
+  std::string text;
+  for (const char c : bytes) {
+    if (c >= 0x20 && c < 0x7f && c != '\\')
+      text += c;
+    else
+      text += fmt::format("\\x{:02x}", static_cast<unsigned char>(c));
+  }
+  return text;
+}
 
 }  // namespace
 
@@ -53,12 +67,12 @@ HdrImage decodeRadianceHdr(const std::string& bytes, const std::string& path) {
   std::string text;
   if (!line(text) || !(text.starts_with("#?RADIANCE") || text.starts_with("#?RGBE")))
     return fail(fmt::format("the first line is \"{}\", expected #?RADIANCE",
-                            bytes.substr(0, std::min<std::size_t>(bytes.find('\n'), 40))));
+                            printable(bytes.substr(0, std::min<std::size_t>(bytes.find('\n'), 40)))));
   for (;;) {
     if (!line(text)) return fail("the header does not end (no empty line before the size)");
     if (text.empty()) break;
     if (text.starts_with("FORMAT=") && text != "FORMAT=32-bit_rle_rgbe")
-      return fail(fmt::format("{} (only 32-bit_rle_rgbe is read)", text));
+      return fail(fmt::format("{} (only 32-bit_rle_rgbe is read)", printable(text.substr(0, 60))));
   }
   if (!line(text)) return fail("no size line after the header");
   HdrImage image;
@@ -72,7 +86,8 @@ HdrImage decodeRadianceHdr(const std::string& bytes, const std::string& path) {
   fields >> yAxis >> height >> xAxis >> width;
   if (yAxis != "-Y" || xAxis != "+X" || !number(height, image.height) || !number(width, image.width) ||
       (fields >> extra))
-    return fail(fmt::format("the size line is \"{}\", expected \"-Y height +X width\"", text));
+    return fail(fmt::format("the size line is \"{}\", expected \"-Y height +X width\"",
+                            printable(text.substr(0, 60))));
   if (image.width <= 0 || image.height <= 0 ||
       static_cast<long long>(image.width) * image.height > kMaxPixels)
     return fail(fmt::format("size {} x {} is out of range", image.width, image.height));
