@@ -463,6 +463,13 @@ std::vector<Case> catalogue() {
        },
        "LANCER_FONT=fonts $LANCER render -q scene.toml -o out.png --legend leg.png",
        oldOutputKept("out.png")},
+      {"opt_time_step_beyond_int", "a gmsh option beyond an int",
+       "`View[0].TimeStep = 4294967296;` in `view.opt`",
+       [](const Scratch& s) {
+         s.copy(dataFile("results/cantilever.msh"), "beam.msh");
+         s.write("view.opt", "View[0].TimeStep = 4294967296;\n");
+       },
+       "$LANCER render -q beam.msh --gmsh-view view.opt -o out.png", nullptr},
   };
   return cases;
 }
