@@ -2,12 +2,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 
 #include "command_distribution.hpp"
 #include "commands.hpp"
 #include "lancer/cluster/tile_parts.hpp"
+#include "lancer/image/atomic_file.hpp"
 #include "lancer/image/exr_io.hpp"
 #include "lancer/image/image_io.hpp"
 #include "lancer/image/image_row_writer.hpp"
@@ -35,10 +37,10 @@ struct RenderCommandOptions {
   std::string input;
   std::string output;
   std::string pixel;
-  std::string legend;      // --legend: the legends of the field-coloured meshes
-  std::string shard;       // --shard I/N or auto: a job-array task's part of the image
-  std::string aovs;        // --aovs albedo,normal,depth: layers of an EXR output
-  double progressive = 0;  // --progressive SECONDS: rewrite the image at least this often as it converges
+  std::string legend;                 // --legend: the legends of the field-coloured meshes
+  std::string shard;                  // --shard I/N or auto: a job-array task's part of the image
+  std::string aovs;                   // --aovs albedo,normal,depth: layers of an EXR output
+  std::optional<double> progressive;  // --progressive SECONDS: rewrite the image at least this often
   SceneOverrides overrides;
 };
 
@@ -289,6 +291,11 @@ bool renderDistributed(const PreparedRender& prepared, const Renderer& renderer,
 
 int runRender(const RenderCommandOptions& options) {
   const Stopwatch stopwatch;
+  if (options.progressive && !(std::isfinite(*options.progressive) && *options.progressive > 0))
+    throw InputError(SourceLocation{"--progressive"},
+                     fmt::format("{} is not a number of seconds > 0 (how often the image is rewritten as it "
+                                 "converges, e.g. 2)",
+                                 *options.progressive));
   const std::unique_ptr<WorkDistribution> distribution = commandDistribution(!options.shard.empty());
   std::optional<ScheduledShard> shard;
   if (!options.shard.empty()) shard = resolveShard(options.shard, processEnvironment());
@@ -313,20 +320,35 @@ int runRender(const RenderCommandOptions& options) {
   if (distribution->ranks() > 1 && (settings.denoise || !options.aovs.empty()))
     throw InputError(SourceLocation{options.input},
                      "--denoise and --aovs need the whole image in one process: run without mpirun");
-  if (options.progressive > 0 && settings.integrator == IntegratorKind::Whitted)
+  if (options.progressive && settings.integrator == IntegratorKind::Whitted)
     throw InputError(SourceLocation{"--progressive"},
                      "--progressive refines the samples of integrator = \"path\" or \"ao\"; this render uses "
                      "the Whitted model (add --integrator path)");
-  if (options.progressive > 0 && (shard || distribution->ranks() > 1))
+  if (options.progressive && (shard || distribution->ranks() > 1))
     throw InputError(SourceLocation{"--progressive"},
                      "--progressive writes one image from one process; "
                      "leave it out of --shard and MPI runs");
+  // The legends are the same in every task of a job array (the scene's ranges): the first writes them.
+  const bool writesLegend = !options.legend.empty() && options.pixel.empty() &&
+                            (shard ? shard->shard.index == 0 : distribution->delivers());
+  std::optional<Image> legend;
   if (!options.legend.empty()) {
     imageFormatFromPath(options.legend);
     if (!prepared.scene.fieldColors)
       throw InputError(
           SourceLocation{options.input},
           "--legend needs a mesh coloured by a field (color_by = { field = \"...\" } in a [[mesh]])");
+    if (!output.empty() && sameOutputPath(options.legend, output))
+      throw InputError(SourceLocation{"--legend"},
+                       fmt::format("'{}' is also the picture's output: give the legend a name of its own",
+                                   options.legend));
+  }
+  if (writesLegend) {
+    // Before the render, so that a failed command changes no file: the legend's folder, and its text
+    // (the font). The bar holds the map's display values: written as they are, like the picture's.
+    requireWritable(options.legend);
+    legend =
+        legendSheet(prepared.scene.fieldColors->legends, kLegendBarLength, kLegendTextHeight, settings.srgb);
   }
 
   const Renderer renderer = prepared.renderer();
@@ -344,9 +366,9 @@ int runRender(const RenderCommandOptions& options) {
       written = renderPart(prepared, renderer, output, *shard, renderOptions, options.overrides.quiet, stats);
     else if (distribution->ranks() > 1)
       written = renderDistributed(prepared, renderer, output, *distribution, renderOptions, stats);
-    else if (options.progressive > 0)
+    else if (options.progressive)
       written =
-          renderProgressive(prepared, renderer, output, options.progressive, aovs, renderOptions, stats);
+          renderProgressive(prepared, renderer, output, *options.progressive, aovs, renderOptions, stats);
     else
       written = renderToFile(prepared, renderer, output, aovs, renderOptions, stats);
   } catch (const NonFiniteRenderError& e) {
@@ -358,12 +380,7 @@ int runRender(const RenderCommandOptions& options) {
   }
   if (progress) std::fputc('\n', stderr);
   if (!written) return talks ? interruptedExit(output) : kExitInterrupted;  // rank 0 alone says so
-  // The legends are the same in every task of a job array (the scene's ranges): the first writes them.
-  if (!options.legend.empty() && (shard ? shard->shard.index == 0 : talks)) {
-    // The bar holds the map's display values: written as they are, like the picture's field colours.
-    writeImage(options.legend, legendSheet(prepared.scene.fieldColors->legends, kLegendBarLength,
-                                           kLegendTextHeight, settings.srgb));
-  }
+  if (legend) writeImage(options.legend, *legend);
   if (!talks || shard) return kExitOk;
   if (!options.overrides.quiet) {
     const double total = stopwatch.seconds();
@@ -398,12 +415,10 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
       "--aovs", options->aovs,
       "Layers of an .exr output beside the radiance: albedo, normal, depth (comma-separated)");
   command->add_option("--pixel", options->pixel, "Trace only pixel x,y and print its value (debugging)");
-  command
-      ->add_option(
-          "--progressive", options->progressive,
-          "path, ao: render 1, 2, 4, ... samples per pixel up to the scene's, rewriting the image at "
-          "least every SECONDS as it converges")
-      ->check(CLI::PositiveNumber);
+  command->add_option(
+      "--progressive", options->progressive,
+      "path, ao: render 1, 2, 4, ... samples per pixel up to the scene's, rewriting the image at "
+      "least every SECONDS as it converges");
   command->callback([options, &runner] {
     takeInputFromGmshView(options->input, options->overrides);
     runner = [options] { return runRender(*options); };

@@ -186,6 +186,25 @@ TEST_P(FileSizeLimit, FailedWriteKeepsTheOldFileAndLeavesNoTemporary) {
   test::expectOnlyFile(folder, "out" + GetParam(), kOldContent);
 }
 
+TEST(AtomicFile, RequireWritableSaysWhatTheWriterWouldAndLeavesNothing) {
+  ScratchFolder folder;
+  EXPECT_EQ(test::messageOf([&] { requireWritable(folder.file("missing/out.png")); }),
+            folder.file("missing/out.png") + ": error: cannot write here: the folder '" +
+                folder.file("missing") + "' does not exist");
+  requireWritable(folder.file("out.png"));
+  EXPECT_TRUE(folder.entries().empty());
+}
+
+TEST(AtomicFile, SameOutputPathSeesThroughDotsAndLinks) {
+  ScratchFolder folder;
+  folder.write("sub/a.png", "a");
+  ASSERT_EQ(::symlink(folder.file("sub").c_str(), folder.file("link").c_str()), 0);
+  EXPECT_TRUE(sameOutputPath(folder.file("sub/a.png"), folder.file("link/../sub/./a.png")));
+  EXPECT_TRUE(sameOutputPath(folder.file("sub/a.png"), folder.file("link/a.png")));
+  EXPECT_TRUE(sameOutputPath(folder.file("sub/new.png"), folder.file("link/new.png")));  // not written yet
+  EXPECT_FALSE(sameOutputPath(folder.file("sub/a.png"), folder.file("sub/b.png")));
+}
+
 TEST_P(FileSizeLimit, FailedFirstWriteLeavesNothing) {
   ScratchFolder folder;
   const std::string path = folder.file("out" + GetParam());

@@ -146,6 +146,8 @@ TEST(Text, MissingFontSaysWhatToInstall) {
   EXPECT_THROW(Font("/nonexistent/lancer/DejaVuSans.ttf"), InputError);
   EXPECT_EQ(test::messageOf([] { Font font("/nonexistent/lancer/DejaVuSans.ttf"); }),
             "/nonexistent/lancer/DejaVuSans.ttf: error: the font file does not exist");
+  EXPECT_EQ(test::messageOf([] { Font font(LANCER_TEST_DATA_DIR); }),
+            std::string(LANCER_TEST_DATA_DIR) + ": error: this is a folder, not a font file");
   const std::string notAFont = std::string(LANCER_TEST_DATA_DIR) + "/render/field_square.toml";
   EXPECT_NE(test::messageOf([&] { Font font(notAFont); }).find("cannot read this file as a font"),
             std::string::npos);

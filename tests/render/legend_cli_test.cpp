@@ -1,12 +1,14 @@
 // `lancer render --legend FILE`: writes the colour bar of the first field-coloured mesh beside the
 // picture (with --shard, the first task writes it), and refuses (exit 2, nothing written) when no mesh is
-// coloured.
+// coloured, when the legend cannot be written or drawn (its folder, the font: found before the render,
+// the picture untouched) and when it is the picture's own path.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "lancer/image/image_io.hpp"
 #include "lancer/image/legend.hpp"
@@ -69,6 +71,42 @@ TEST(LegendCli, NeedsAColouredMesh) {
       << result.output;
   EXPECT_FALSE(std::filesystem::exists(folder.file("a.png")));
   EXPECT_FALSE(std::filesystem::exists(folder.file("legend.png")));
+}
+
+// The picture a.png already holds "old image"; the command must fail with `message` and leave it.
+void expectRefusedBeforeTheRender(const test::ScratchFolder& folder, const std::string& arguments,
+                                  const std::string& message, const std::string& prefix = "") {
+  folder.write("a.png", "old image");
+  const test::CommandResult result =
+      test::runCli("render " + quoted(test::dataFile("render/field_square.toml")) + " -q -o " +
+                       quoted(folder.file("a.png")) + " " + arguments,
+                   prefix);
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_NE(result.output.find(message), std::string::npos) << result.output;
+  EXPECT_EQ(folder.read("a.png"), "old image") << "the picture was replaced by a command that failed";
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{"a.png"});
+}
+
+TEST(LegendCli, AFolderThatDoesNotExistIsFoundBeforeTheRender) {
+  const test::ScratchFolder folder;
+  expectRefusedBeforeTheRender(
+      folder, "--legend " + quoted(folder.file("nofolder/leg.png")),
+      "leg.png: error: cannot write here: the folder '" + folder.file("nofolder") + "' does not exist");
+}
+
+TEST(LegendCli, AFontThatCannotBeLoadedIsFoundBeforeTheRender) {
+  const test::ScratchFolder folder;
+  expectRefusedBeforeTheRender(folder, "--legend " + quoted(folder.file("leg.png")),
+                               "/nonexistent/font.ttf: error: the font file does not exist",
+                               "LANCER_FONT=/nonexistent/font.ttf");
+}
+
+TEST(LegendCli, TheLegendCannotBeThePicture) {
+  const test::ScratchFolder folder;
+  expectRefusedBeforeTheRender(
+      folder, "--legend " + quoted(folder.path().string() + "/./a.png"),
+      "--legend: error: '" + folder.path().string() +
+          "/./a.png' is also the picture's output: give the legend a name of its own");
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
-// The lighting options on the command line: --integrator, --noise, --look and --progressive, each
-// bad value with its message (ours: exit code 2; CLI11 names the choices of a closed list),
-// and a progressive render that ends with the image a plain render gives.
+// The lighting options on the command line: --integrator, --noise, --look and --progressive (a finite
+// number of seconds > 0), each bad value with its message (ours: exit code 2; CLI11 names the choices of a
+// closed list), and a progressive render that ends with the image a plain render gives.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -44,6 +44,18 @@ TEST(LightingCli, ProgressiveNeedsASamplingIntegrator) {
       test::runCli("render " + test::quoted(kMesh) + " -o /tmp/x.png --progressive 1 2>&1");
   EXPECT_EQ(result.exitCode, 2) << result.output;
   EXPECT_TRUE(test::contains(result.output, "--integrator path")) << result.output;
+}
+
+TEST(LightingCli, ProgressiveIsAPositiveFiniteNumberOfSeconds) {
+  for (const char* seconds : {"nan", "inf", "-1", "0"}) {
+    const test::CommandResult result = test::runCli(
+        "render " + test::quoted(kMesh) + " -o /tmp/x.png --integrator path --progressive " + seconds);
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_TRUE(test::contains(result.output, std::string("--progressive: error: ") + seconds +
+                                                  " is not a number of seconds > 0 (how often the image is "
+                                                  "rewritten as it converges, e.g. 2)"))
+        << result.output;
+  }
 }
 
 TEST(LightingCli, ProgressiveEndsWithThePlainImage) {

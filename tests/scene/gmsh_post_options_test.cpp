@@ -156,5 +156,26 @@ TEST(GmshPostOptions, OptionsOfViewsTheFileDoesNotHave) {
       << test::messageOf([&] { readGmshPostViews(folder.file("c.opt")); });
 }
 
+TEST(GmshPostOptions, IntegersOutsideAnIntAreRefusedNotWrapped) {
+  // TimeStep = 2^32 showed step 0.
+  const test::ScratchFolder folder;
+  folder.write("big.opt", "View[0].Name = \"stress\";\nView[0].TimeStep = 4294967296;\n");
+  EXPECT_EQ(
+      test::messageOf([&] { readGmshPostViews(folder.file("big.opt")); }),
+      folder.file("big.opt") +
+          ":2:20: error: View[0].TimeStep = 4294967296 is out of range: gmsh keeps it as an integer from "
+          "-2147483648 to 2147483647");
+  folder.write("low.opt", "View[0].NbIso = -1e10;\n");
+  EXPECT_NE(test::messageOf([&] {
+              readGmshPostViews(folder.file("low.opt"));
+            }).find("View[0].NbIso = -1e10 is out"),
+            std::string::npos);
+  folder.write("fine.opt", "View[0].CustomMax = 1e300;\nView[0].TimeStep = 2147483647;\n");
+  const std::vector<GmshPostView> views = readGmshPostViews(folder.file("fine.opt"));
+  ASSERT_EQ(views.size(), 1u);
+  EXPECT_EQ(views[0].customMax, 1e300);
+  EXPECT_EQ(views[0].timeStep, 2147483647);
+}
+
 }  // namespace
 }  // namespace lancer

@@ -3,6 +3,7 @@
 // another light type, and environment maps that are missing, unreadable or not 2:1.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -54,6 +55,60 @@ TEST(LightingKeys, EnvironmentKindsAreExclusive) {
   test::expectSceneErrorContains("[environment]\ncolor = [1, 1, 1]\nmap = \"sky.hdr\"\n", "give one of");
 }
 
+TEST(LightingKeys, ValuesBeyondAFloatAreRefusedNamingTheKey) {
+  test::expectSceneErrorContains("[environment]\nrotation = 1e41\n",
+                                 "scene.toml:2:12: error: environment.rotation must be between -3.402823e+38 "
+                                 "and 3.402823e+38 (the range of a float), found 1e+41");
+  test::expectSceneErrorContains("[[light]]\nposition = [0, 0, 0]\nintensity = [1e39, 1, 1]\n",
+                                 "light[0].intensity[0] must be between -3.402823e+38");
+  test::expectSceneErrorContains("[environment]\nstrength = 1e39\n", "environment.strength must be between");
+  test::expectSceneErrorContains("[material.m]\nemission = [0, 0, -1e300]\n", "material.m.emission[2]");
+  test::expectSceneErrorContains("[[light]]\ntype = \"disk\"\nposition = [0, 0, 0]\nradius = 1e39\n",
+                                 "light[0].radius must be between");
+}
+
+// buildScene's message for the scene `text` (no meshes).
+std::string buildErrorOf(const std::string& text) {
+  SceneDescription d = parseScene(text, "scene.toml");
+  return test::messageOf([&] { buildScene(d, std::vector<Mesh>{}); });
+}
+
+TEST(LightingKeys, LightsWhoseRadianceOverflowsAreRefused) {
+  std::string message = buildErrorOf("[[light]]\ntype = \"disk\"\nposition = [0, 0, 0]\nradius = 1e-30\n");
+  EXPECT_NE(
+      message.find("scene.toml:1:1: error: the disk light of radius 1e-30 and intensity [1, 1, 1] has a "
+                   "radiance (pi intensity / area, area 0) too large for a float: give it a larger size "
+                   "or a smaller intensity"),
+      std::string::npos)
+      << message;
+  message = buildErrorOf("[[light]]\ntype = \"sun\"\ndirection = [0, 1, 0]\nangle = 1e-30\n");
+  EXPECT_NE(message.find("the sun light of angle 1e-30"), std::string::npos) << message;
+  message = buildErrorOf(
+      "[[light]]\ntype = \"rect\"\nposition = [0, 0, 0]\nwidth = 0.1\nheight = 0.1\nintensity = [3e38, 1, "
+      "1]\n");
+  EXPECT_NE(message.find("the rect light of width 0.1 and height 0.1"), std::string::npos) << message;
+  EXPECT_EQ(buildErrorOf("[[light]]\ntype = \"disk\"\nposition = [0, 0, 0]\nradius = 1e-6\n"),
+            "(no InputError)");
+}
+
+TEST(LightingKeys, EnvironmentStrengthTimesItsColourMustFitAFloat) {
+  const std::string message = buildErrorOf("[environment]\ncolor = [1, 3e38, 1]\nstrength = 10\n");
+  EXPECT_NE(message.find("scene.toml:1:1: error: environment.strength 10 times the environment's brightest "
+                         "value 3e+38 is too large for a float: lower the strength"),
+            std::string::npos)
+      << message;
+}
+
+TEST(LightingKeys, EnvironmentRotationIsReducedToOneTurnBeforeBecomingAFloat) {
+  for (const char* rotation : {"1e20", "-3.4e38", "720"}) {
+    SceneDescription d =
+        parseScene(std::string("[environment]\nrotation = ") + rotation + "\n", "scene.toml");
+    const Scene scene = buildScene(d, std::vector<Mesh>{});
+    ASSERT_TRUE(scene.environment);
+    EXPECT_LE(std::abs(scene.environment->rotationRadians), 2 * 3.1415927f) << rotation;
+  }
+}
+
 // buildScene's message for a description whose environment map is `file`.
 std::string mapErrorOf(const std::string& file) {
   SceneDescription d = parseScene("[environment]\nmap = \"" + file + "\"\n", "scene.toml");
@@ -68,9 +123,9 @@ TEST(LightingKeys, MissingMapNamesTheFileAndTheLine) {
 
 TEST(LightingKeys, UnreadableMapSaysWhatWasRead) {
   const std::filesystem::path file = std::filesystem::temp_directory_path() / "lancer_not_a_map.hdr";
-  std::ofstream(file) << "P3\n2 2\n255\n";
+  std::ofstream(file) << "sky 2 2\n255\n";
   const std::string message = mapErrorOf(file.string());
-  EXPECT_NE(message.find("P3"), std::string::npos) << message;
+  EXPECT_NE(message.find("the first line is \"sky 2 2\""), std::string::npos) << message;
   EXPECT_NE(message.find("#?RADIANCE"), std::string::npos) << message;
   std::filesystem::remove(file);
 }
@@ -112,10 +167,10 @@ TEST(LightingKeys, MissingExrMapNamesTheFileAndTheLine) {
 
 TEST(LightingKeys, ExrMapThatIsNotAnExrSaysWhatWasRead) {
   const std::filesystem::path file = std::filesystem::temp_directory_path() / "lancer_not_a_map.exr";
-  std::ofstream(file) << "P3\n2 2\n255\n";
+  std::ofstream(file) << "Q3\n2 2\n255\n";
   const std::string message = mapErrorOf(file.string());
   EXPECT_NE(message.find("is not an OpenEXR image"), std::string::npos) << message;
-  EXPECT_NE(message.find("50 33 0a 32"), std::string::npos) << message;  // "P3\n2"
+  EXPECT_NE(message.find("51 33 0a 32"), std::string::npos) << message;  // "Q3\n2"
   EXPECT_NE(message.find("76 2f 31 01"), std::string::npos) << message;
   std::ofstream(file, std::ios::trunc) << "v/";
   EXPECT_NE(mapErrorOf(file.string()).find("2 bytes long"), std::string::npos);

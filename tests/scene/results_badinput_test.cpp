@@ -100,6 +100,32 @@ TEST(ResultsBadInput, LabelWithAnUnknownName) {
             "t = 0.123 s, step 4");
 }
 
+TEST(ResultsBadInput, LabelWidthsAndLengthsAreBoundedBeforeFormatting) {
+  // "{time:1500000000}" formatted a string of 1.5 GB.
+  EXPECT_EQ(test::messageOf([] { formatStepLabel("{time:1500000000}", 0.5, 1, SourceLocation{"--label"}); }),
+            "--label: error: the label \"{time:1500000000}\" asks for a width or precision of 1500000000; at "
+            "most 64 are allowed");
+  EXPECT_NE(test::messageOf([] {
+              formatStepLabel("t = {time:.99999999999999999999g}", 0, 1, {});
+            }).find("a width or precision of 99999999999999999999;"),
+            std::string::npos);
+  EXPECT_NE(test::messageOf([] {
+              formatStepLabel("{time:{step}}", 0, 1, {});
+            }).find("takes a width or precision from another field"),
+            std::string::npos);
+  EXPECT_EQ(test::messageOf([] { formatStepLabel(std::string(201, 'x'), 0, 1, SourceLocation{"--label"}); }),
+            "--label: error: the label is 201 characters long; at most 200 are drawn");
+  EXPECT_EQ(formatStepLabel("{{time:1500000000}} {time:>12.3e}", 0.5, 1, {}),
+            "{time:1500000000}    5.000e-01");
+  EXPECT_EQ(formatStepLabel(std::string(100, 'x') + "\u00e9", 0, 1, {}).size(), 102u);  // 101 characters
+  test::expectSceneErrorContains(
+      "[animation]\nover = \"steps\"\nlabel = \"" + std::string(300, 'x') + "\"\n",
+      "scene.toml:3:9: error: animation.label is 300 characters long; at most 200 are drawn");
+  test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\ncolor_by = { field = \"s\", title = \"" +
+                                     std::string(24000, 'T') + "\" }\n",
+                                 "mesh[0].color_by.title is 24000 characters long; at most 200 are drawn");
+}
+
 TEST(ResultsBadInput, SceneKeys) {
   test::expectSceneErrorContains(
       "[[mesh]]\nfile = \"a.msh\"\nwarp = \"displacement\"\n",

@@ -69,4 +69,53 @@ int differingPixels(const Image& a, const Image& b) {
   return count;
 }
 
+void appendLittleEndian(std::string& bytes, std::uint64_t value, int size) {
+  for (int i = 0; i < size; ++i) bytes += static_cast<char>((value >> (8 * i)) & 0xff);
+}
+
+namespace {
+
+void exrAttribute(std::string& bytes, const std::string& name, const std::string& type,
+                  const std::string& value) {
+  bytes += name + '\0' + type + '\0';
+  appendLittleEndian(bytes, value.size(), 4);
+  bytes += value;
+}
+
+}  // namespace
+
+// OpenEXR file layout: magic, version 2, the required attributes, an empty name, the offset table.
+std::string exrFile(int width, int height, int compression, int chunks,
+                    const std::function<std::uint64_t(int, std::uint64_t)>& offsetOf, const std::string& tail,
+                    const std::vector<std::string>& channelNames) {
+  std::string bytes = "\x76\x2f\x31\x01";
+  appendLittleEndian(bytes, 2, 4);
+  std::string channels;
+  for (const std::string& name : channelNames) {
+    channels += name + '\0';
+    appendLittleEndian(channels, 1, 4);  // HALF
+    appendLittleEndian(channels, 0, 4);  // pLinear and reserved
+    appendLittleEndian(channels, 1, 4);  // xSampling
+    appendLittleEndian(channels, 1, 4);  // ySampling
+  }
+  channels += '\0';
+  std::string box, one, zeros;
+  for (int value : {0, 0, width - 1, height - 1})
+    appendLittleEndian(box, static_cast<std::uint32_t>(value), 4);
+  appendLittleEndian(one, 0x3f800000, 4);  // 1.0f
+  appendLittleEndian(zeros, 0, 8);
+  exrAttribute(bytes, "channels", "chlist", channels);
+  exrAttribute(bytes, "compression", "compression", std::string(1, static_cast<char>(compression)));
+  exrAttribute(bytes, "dataWindow", "box2i", box);
+  exrAttribute(bytes, "displayWindow", "box2i", box);
+  exrAttribute(bytes, "lineOrder", "lineOrder", std::string(1, '\0'));
+  exrAttribute(bytes, "pixelAspectRatio", "float", one);
+  exrAttribute(bytes, "screenWindowCenter", "v2f", zeros);
+  exrAttribute(bytes, "screenWindowWidth", "float", one);
+  bytes += '\0';
+  const std::uint64_t chunksStart = bytes.size() + 8 * static_cast<std::uint64_t>(chunks);
+  for (int i = 0; i < chunks; ++i) appendLittleEndian(bytes, offsetOf(i, chunksStart), 8);
+  return bytes + tail;
+}
+
 }  // namespace lancer::test

@@ -20,6 +20,7 @@
 
 #include "support/cli.hpp"
 #include "support/files.hpp"
+#include "support/test_images.hpp"
 
 namespace lancer {
 namespace {
@@ -78,6 +79,27 @@ std::function<void(const Scratch&)> withScene(const std::string& text) {
   return [text](const Scratch& s) {
     s.copy(dataFile("msh/square_tri3_v41_ascii.msh"), "part.msh");
     s.write("scene.toml", text);
+  };
+}
+
+// withScene, and a flat 8x4 Radiance map sky.hdr of grey pixels.
+std::function<void(const Scratch&)> withMap(const std::string& text) {
+  return [text](const Scratch& s) {
+    withScene(text)(s);
+    std::string map = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 8\n";
+    for (int i = 0; i < 32; ++i) map += "\x80\x80\x80\x81";
+    s.write("sky.hdr", map);
+  };
+}
+
+// A scene whose mesh is coloured by a field (for --legend), and an existing out.png.
+std::function<void(const Scratch&)> withFieldScene() {
+  return [](const Scratch& s) {
+    s.copy(dataFile("fields/node_xy_v22_ascii.msh"), "field.msh");
+    s.write("scene.toml",
+            "[render]\nwidth = 16\nheight = 12\n[[mesh]]\nfile = \"field.msh\"\n"
+            "color_by = { field = \"temperature\" }\n");
+    s.write("out.png", "old image");
   };
 }
 
@@ -367,6 +389,87 @@ std::vector<Case> catalogue() {
        "$LANCER render -q scene.toml --aovs albedo -o out.png", nullptr},
       {"out_encoding_key", "unknown encoding in the scene", "`encoding = \"gamma\"`",
        withScene(scene("encoding = \"gamma\"\n")), "$LANCER render -q scene.toml -o out.png", nullptr},
+      // --- values beyond a float ---
+      {"scene_rotation_beyond_float", "environment rotation beyond a float, path tracer",
+       "`rotation = 1e41`, a map",
+       withMap(scene("integrator = \"path\"\n", "[environment]\nmap = \"sky.hdr\"\nrotation = 1e41\n")),
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+      sceneCase("scene_disk_radius_underflow", "a disk light so small its area rounds to 0, path tracer",
+                "`radius = 1e-30`",
+                "[render]\nwidth = 16\nheight = 12\nintegrator = \"path\"\n[[light]]\ntype = \"disk\"\n"
+                "position = [2, 2, 2]\nradius = 1e-30\n[[mesh]]\nfile = \"part.msh\"\n"),
+      // --- sizes checked against the file before memory is taken ---
+      {"map_hdr_size_beyond_file", "a 57-byte .hdr map claiming 23170x11585 pixels",
+       "`map = \"sky.hdr\"`, its size line `-Y 11585 +X 23170`",
+       [](const Scratch& s) {
+         withScene(scene("integrator = \"path\"\n", "[environment]\nmap = \"sky.hdr\"\n"))(s);
+         s.write("sky.hdr", std::string("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 11585 +X 23170\n\x02\x02") +
+                                "\x5a" + "\x82");
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+      {"map_exr_size_beyond_file", "an .exr map whose 32768x16384 header is followed by its chunk table only",
+       "`map = \"sky.exr\"`, 8.6 KB",
+       [](const Scratch& s) {
+         withScene(scene("integrator = \"path\"\n", "[environment]\nmap = \"sky.exr\"\n"))(s);
+         s.write("sky.exr", test::exrFile(
+                                32768, 16384, 3, 1024, [](int, std::uint64_t start) { return start; }, ""));
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+      // --- text drawn into the picture, bounded when it is read ---
+      {"cli_label_huge_width", "a label whose format asks for a width of 1.5 billion",
+       "`--label \"{time:1500000000}\"`",
+       [](const Scratch& s) { s.copy(dataFile("results/cantilever.msh"), "beam.msh"); },
+       "$LANCER animate -q --over steps --label '{time:1500000000}' beam.msh -o out.gif", nullptr},
+      {"scene_legend_title_too_long", "a legend title of 24,000 characters",
+       "`color_by = { field = \"displacement\", title = \"TT...\" }`",
+       [](const Scratch& s) {
+         s.copy(dataFile("results/cantilever.msh"), "beam.msh");
+         s.write("scene.toml",
+                 "[[mesh]]\nfile = \"beam.msh\"\ncolor_by = { field = \"displacement\", title = \"" +
+                     std::string(24000, 'T') + "\" }\n");
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+      // --- every output checked before the render ---
+      {"out_legend_missing_folder", "--legend in a folder that does not exist (checked before the render)",
+       "`--legend nofolder/leg.png`, existing `out.png`", withFieldScene(),
+       "$LANCER render -q scene.toml -o out.png --legend nofolder/leg.png", oldOutputKept("out.png")},
+      {"out_legend_bad_font", "a font that cannot be loaded, for --legend (checked before the render)",
+       "`LANCER_FONT=missing.ttf`, existing `out.png`", withFieldScene(),
+       "LANCER_FONT=missing.ttf $LANCER render -q scene.toml -o out.png --legend leg.png",
+       oldOutputKept("out.png")},
+      {"out_legend_same_path", "--legend the same file as the picture", "`--legend ./out.png -o out.png`",
+       withFieldScene(), "$LANCER render -q scene.toml -o out.png --legend ./out.png",
+       oldOutputKept("out.png")},
+      {"cli_progressive_nan", "--progressive that is no number of seconds", "`--progressive nan`",
+       withScene(scene("integrator = \"path\"\n")),
+       "$LANCER render -q scene.toml --progressive nan -o out.png", nullptr},
+      // --- files that are not what was asked for ---
+      {"map_is_png", "a PNG image given as an environment map", "`map = \"sky.png\"` (a PNG)",
+       [](const Scratch& s) {
+         withScene(scene("integrator = \"path\"\n", "[environment]\nmap = \"sky.png\"\n"))(s);
+         s.write("sky.png", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+      {"map_is_folder", "a folder given as an environment map", "`map = \"maps\"` (a folder)",
+       [](const Scratch& s) {
+         withScene(scene("integrator = \"path\"\n", "[environment]\nmap = \"maps\"\n"))(s);
+         s.write("maps/readme.txt", "");
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+      {"font_is_folder", "a folder given as the font", "`LANCER_FONT=fonts` (a folder), `--legend leg.png`",
+       [](const Scratch& s) {
+         withFieldScene()(s);
+         s.write("fonts/readme.txt", "");
+       },
+       "LANCER_FONT=fonts $LANCER render -q scene.toml -o out.png --legend leg.png",
+       oldOutputKept("out.png")},
+      {"opt_time_step_beyond_int", "a gmsh option beyond an int",
+       "`View[0].TimeStep = 4294967296;` in `view.opt`",
+       [](const Scratch& s) {
+         s.copy(dataFile("results/cantilever.msh"), "beam.msh");
+         s.write("view.opt", "View[0].TimeStep = 4294967296;\n");
+       },
+       "$LANCER render -q beam.msh --gmsh-view view.opt -o out.png", nullptr},
   };
   return cases;
 }

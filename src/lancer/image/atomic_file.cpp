@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <vector>
@@ -153,6 +154,19 @@ AtomicFileWriter::AtomicFileWriter(std::string targetPath) : targetPath_(std::mo
 }
 
 AtomicFileWriter::~AtomicFileWriter() { discard(); }
+
+void requireWritable(const std::string& path) {
+  AtomicFileWriter probe(path);  // its temporary file is removed when it goes
+}
+
+bool sameOutputPath(const std::string& a, const std::string& b) {
+  std::error_code errorA, errorB;
+  const std::filesystem::path first = std::filesystem::weakly_canonical(a, errorA);
+  const std::filesystem::path second = std::filesystem::weakly_canonical(b, errorB);
+  if (!errorA && !errorB) return first == second;
+  return std::filesystem::absolute(a, errorA).lexically_normal() ==
+         std::filesystem::absolute(b, errorB).lexically_normal();
+}
 
 bool AtomicFileWriter::write(const void* data, std::size_t size) noexcept {
   if (errorNumber_ != 0 || stream_ == nullptr) return false;

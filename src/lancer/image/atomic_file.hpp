@@ -62,6 +62,13 @@ class AtomicFileWriter {
 //   void onInterrupt(int s) { lancer::removePendingTemporaryFiles(); signal(s, SIG_DFL); raise(s); }
 void removePendingTemporaryFiles() noexcept;
 
+// Throws the InputError an AtomicFileWriter for `path` would (its folder missing or read-only, a folder
+// in its place), changing nothing: for an output written after a long render, checked before it.
+void requireWritable(const std::string& path);
+
+// True when `a` and `b` name one file (after resolving `.`, `..` and symbolic links), written or not.
+bool sameOutputPath(const std::string& a, const std::string& b);
+
 // The common case: the whole file is in memory.
 void writeFileAtomically(const std::string& path, std::span<const std::uint8_t> bytes);
 

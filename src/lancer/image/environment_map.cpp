@@ -4,10 +4,13 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <string_view>
 
 #include "lancer/image/exr_io.hpp"
 #include "lancer/util/input_error.hpp"
@@ -44,19 +47,42 @@ HdrImage fromExr(const std::string& path) {
   return map;
 }
 
+// What a file that is no map is, from its first bytes (each format's signature): "" when unknown.
+std::string_view otherFormatOf(std::string_view head) {
+  const auto starts = [&](std::string_view magic) { return head.starts_with(magic); };
+  if (starts("\x89PNG\r\n\x1a\n")) return "a PNG image";
+  if (starts("\xff\xd8\xff")) return "a JPEG image";
+  if (starts("GIF87a") || starts("GIF89a")) return "a GIF image";
+  if (starts("II*\0") || starts("MM\0*")) return "a TIFF image";
+  if (starts("BM")) return "a BMP image";
+  if (head.size() >= 3 && head[0] == 'P' && head[1] >= '1' && head[1] <= '6' && std::isspace(head[2]))
+    return "a PPM/PGM image";
+  if (starts("$MeshFormat")) return "a gmsh mesh";
+  return "";
+}
+
 }  // namespace
 
 HdrImage readEnvironmentMap(const std::string& path) {
-  unsigned char head[4] = {0, 0, 0, 0};
+  if (std::filesystem::is_directory(path))
+    throw InputError(SourceLocation{path}, fmt::format("'{}' is a folder, not a map file", path));
+  char bytes[16] = {};
   std::streamsize read = 0;
   {
     std::ifstream in(path, std::ios::binary);
     if (!in)
       throw InputError(SourceLocation{path}, fmt::format("cannot open '{}': {}", path, std::strerror(errno)));
-    in.read(reinterpret_cast<char*>(head), 4);
+    in.read(bytes, sizeof bytes);
     read = in.gcount();
   }
-  if (read == 4 && std::equal(head, head + 4, kExrMagic)) return fromExr(path);
+  const std::string_view start(bytes, static_cast<std::size_t>(read));
+  if (const std::string_view other = otherFormatOf(start); !other.empty())
+    throw InputError(SourceLocation{path},
+                     fmt::format("'{}' is {}, not a Radiance .hdr or OpenEXR map (an environment map is an "
+                                 "equirectangular image of radiance, e.g. 2048 x 1024)",
+                                 path, other));
+  const auto* head = reinterpret_cast<const unsigned char*>(bytes);
+  if (read >= 4 && std::equal(head, head + 4, kExrMagic)) return fromExr(path);
   if (endsWithExr(path) && read < 4)
     throw InputError(SourceLocation{path},
                      fmt::format("'{}' is not an OpenEXR image: it is {} bytes long", path, read));

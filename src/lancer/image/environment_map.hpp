@@ -9,8 +9,9 @@
 namespace lancer {
 
 // The map's linear RGB radiance, row 0 at the top. Throws InputError naming the file and what was
-// read: missing or unreadable, neither format, an EXR with a non-finite value (negative values, a
-// filter's ringing, are read as 0). The 2:1 shape is the caller's check.
+// read: missing, a folder or unreadable, neither format (an image of another format named as such),
+// an EXR with a non-finite value (negative values, a filter's ringing, are read as 0), a size the file
+// or the memory budget cannot hold. The 2:1 shape is the caller's check.
 HdrImage readEnvironmentMap(const std::string& path);
 
 }  // namespace lancer

@@ -12,10 +12,16 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <limits>
+#include <system_error>
 
 #include "lancer/image/atomic_file.hpp"
+#include "lancer/image/exr_chunk_table.hpp"
+#include "lancer/util/memory_budget.hpp"
 #endif
 
 namespace lancer {
@@ -96,6 +102,101 @@ void writeExr(const std::string& path, const Image& image, const ExrLayers& laye
   file.commit();
 }
 
+namespace {
+
+// Scan lines per chunk of each compression (OpenEXR file layout, "Scan Line Based Compression").
+std::uint64_t linesPerChunk(Imf::Compression compression) {
+  switch (compression) {
+    case Imf::ZIP_COMPRESSION:
+    case Imf::PXR24_COMPRESSION:
+      return 16;
+    case Imf::PIZ_COMPRESSION:
+    case Imf::B44_COMPRESSION:
+    case Imf::B44A_COMPRESSION:
+    case Imf::DWAA_COMPRESSION:
+      return 32;
+    case Imf::DWAB_COMPRESSION:
+      return 256;
+    default:
+      return 1;
+  }
+}
+
+// Decoded bytes per stored byte at most: deflate's 1032:1 (ZIP, and PXR24 after its 4-to-3-byte
+// floats), RLE's 128 bytes from 2; 0 where no simple bound holds (PIZ, B44, DWA).
+std::uint64_t largestRatio(Imf::Compression compression) {
+  switch (compression) {
+    case Imf::NO_COMPRESSION:
+      return 1;
+    case Imf::RLE_COMPRESSION:
+      return 64;
+    case Imf::ZIPS_COMPRESSION:
+    case Imf::ZIP_COMPRESSION:
+      return 1032;
+    case Imf::PXR24_COMPRESSION:
+      return 1376;
+    default:
+      return 0;
+  }
+}
+
+// Bytes of one decoded row of the channels sampled at every pixel (subsampled ones, fewer, left out).
+std::uint64_t bytesPerRow(const Imf::Header& header, std::uint64_t width) {
+  std::uint64_t bytes = 0;
+  for (auto channel = header.channels().begin(); channel != header.channels().end(); ++channel)
+    if (channel.channel().xSampling == 1 && channel.channel().ySampling == 1)
+      bytes += channel.channel().type == Imf::HALF ? 2 : 4;
+  return bytes * width;
+}
+
+// Size first: a tiled file needs at least an 8-byte offset and a 20-byte chunk header for each tile of
+// its full-resolution level; a scan-line file's chunk table is checked whole (exr_chunk_table.hpp).
+void checkPixelsFitTheFile(const std::string& path, const Imf::Header& header, int width, int height) {
+  std::error_code error;
+  const std::uint64_t fileBytes = std::filesystem::file_size(path, error);
+  if (error) return;  // OpenEXR opened it: it will say what is wrong
+  if (!header.hasTileDescription()) {
+    const Imath::Box2i window = header.dataWindow();
+    checkExrScanLineChunks(
+        path, fileBytes,
+        {window.min.y, height, static_cast<std::int64_t>(linesPerChunk(header.compression())),
+         bytesPerRow(header, static_cast<std::uint64_t>(width)), largestRatio(header.compression())});
+    return;
+  }
+  const Imf::TileDescription& tiles = header.tileDescription();
+  const std::uint64_t across =
+      (static_cast<std::uint64_t>(width) + std::max(tiles.xSize, 1u) - 1) / std::max(tiles.xSize, 1u);
+  const std::uint64_t down =
+      (static_cast<std::uint64_t>(height) + std::max(tiles.ySize, 1u) - 1) / std::max(tiles.ySize, 1u);
+  const std::uint64_t needed = across * down * (8 + 20);
+  if (needed > fileBytes)
+    throw InputError(
+        SourceLocation{path},
+        fmt::format("'{}' is truncated or corrupt: its header says {}x{} pixels in {} tiles, which "
+                    "take at least {} bytes, but the file has {}",
+                    path, width, height, across * down, needed, fileBytes));
+}
+
+// True for a grey image, luminance Y alone (as OpenEXR's RgbaOutputFile writes WRITE_Y): read as
+// R = G = B = Y. Throws InputError for an image with neither R, G, B nor Y, and for luminance with
+// chroma (RY, BY), which lancer does not convert.
+bool greyOnly(const std::string& path, const Imf::ChannelList& channels) {
+  if (channels.findChannel("R") || channels.findChannel("G") || channels.findChannel("B")) return false;
+  if (channels.findChannel("RY") || channels.findChannel("BY"))
+    throw InputError(SourceLocation{path},
+                     fmt::format("'{}' holds luminance and chroma (Y, RY, BY); lancer reads "
+                                 "R, G, B or Y alone: save it as RGB",
+                                 path));
+  if (channels.findChannel("Y")) return true;
+  std::string names;
+  for (auto channel = channels.begin(); channel != channels.end(); ++channel)
+    names += (names.empty() ? "" : ", ") + std::string(channel.name());
+  throw InputError(SourceLocation{path}, fmt::format("'{}' has no R, G, B or Y channel (its channels: {})",
+                                                     path, names.empty() ? "none" : names));
+}
+
+}  // namespace
+
 Image readExr(const std::string& path, ExrLayers* layers) {
   try {
     Imf::InputFile in(path.c_str(), 1);
@@ -103,19 +204,37 @@ Image readExr(const std::string& path, ExrLayers* layers) {
     const int width = window.max.x - window.min.x + 1, height = window.max.y - window.min.y + 1;
     if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
       throw InputError(SourceLocation{path}, fmt::format("unsupported EXR size {}x{}", width, height));
-    Image image(width, height);
     const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    // Size first, memory second: the pixels the header claims must fit in the file, then in the budget.
+    checkPixelsFitTheFile(path, in.header(), width, height);
+    if (!in.isComplete())
+      throw InputError(SourceLocation{path},
+                       fmt::format("'{}' is incomplete: its table of chunks points past its end or at "
+                                   "nothing (a truncated or corrupt file)",
+                                   path));
+    std::uint64_t bytesPerPixel = sizeof(Rgba);
+    if (layers != nullptr) {
+      const Imf::ChannelList& channels = in.header().channels();
+      if (channels.findChannel("albedo.R") != nullptr) bytesPerPixel += sizeof(Vec3);
+      if (channels.findChannel("normal.X") != nullptr) bytesPerPixel += sizeof(Vec3);
+      if (channels.findChannel("Z") != nullptr) bytesPerPixel += sizeof(float);
+    }
+    requireMemory(saturatingProduct(pixels, bytesPerPixel), SourceLocation{path},
+                  fmt::format("the {}x{} EXR image '{}'", width, height, path));
+    Image image(width, height);
     // Slices are addressed from the data window's origin (OpenEXR's convention).
     const std::ptrdiff_t origin =
         static_cast<std::ptrdiff_t>(window.min.x) + static_cast<std::ptrdiff_t>(window.min.y) * width;
     Imf::FrameBuffer frame;
     char* base =
         reinterpret_cast<char*>(image.pixels().data()) - origin * static_cast<std::ptrdiff_t>(kRgbaStride);
-    const char* names[4] = {"R", "G", "B", "A"};
-    for (int c = 0; c < 4; ++c)
-      frame.insert(names[c], floatSlice(base + c * sizeof(float), kRgbaStride, kRgbaStride * width,
-                                        c == 3 ? 1.0 : 0.0));
     const Imf::ChannelList& channels = in.header().channels();
+    const bool grey = greyOnly(path, channels);
+    const char* names[4] = {grey ? "Y" : "R", "G", "B", "A"};
+    for (int c = 0; c < 4; ++c)
+      if (!grey || c == 0 || c == 3)
+        frame.insert(names[c], floatSlice(base + c * sizeof(float), kRgbaStride, kRgbaStride * width,
+                                          c == 3 ? 1.0 : 0.0));
     const auto readVec3 = [&](std::vector<Vec3>& layer, const char* const(&names3)[3]) {
       if (channels.findChannel(names3[0]) == nullptr) return;
       layer.assign(pixels, Vec3{0, 0, 0});
@@ -136,6 +255,8 @@ Image readExr(const std::string& path, ExrLayers* layers) {
     }
     in.setFrameBuffer(frame);
     in.readPixels(window.min.y, window.max.y);
+    if (grey)
+      for (Rgba& pixel : image.pixels()) pixel.g = pixel.b = pixel.r;
     return image;
   } catch (const InputError&) {
     throw;

@@ -26,8 +26,10 @@ struct ExrLayers {
 // Throws InputError naming the file on I/O failure or a build without OpenEXR.
 void writeExr(const std::string& path, const Image& image, const ExrLayers& layers = {});
 
-// Reads R, G, B (and A, else 1) of any scan-line or tiled EXR, and the layers above when present.
-// Throws InputError naming the file for unreadable or non-EXR files.
+// Reads R, G, B (and A, else 1) of any scan-line or tiled EXR, or luminance Y alone as grey, and the
+// layers above when present. Throws InputError naming the file for unreadable or non-EXR files, files
+// without R, G, B or Y, and sizes the file's chunks or the memory budget (--max-memory) cannot hold,
+// before the pixels are allocated.
 Image readExr(const std::string& path, ExrLayers* layers = nullptr);
 
 }  // namespace lancer

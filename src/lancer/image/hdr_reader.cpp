@@ -3,13 +3,16 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include <fmt/format.h>
 
 #include "lancer/util/input_error.hpp"
+#include "lancer/util/memory_budget.hpp"
 
 namespace lancer {
 namespace {
@@ -22,6 +25,19 @@ Vec3 fromRgbe(const unsigned char* rgbe) {
 }
 
 constexpr long long kMaxPixels = 1LL << 28;
+
+// Bytes of a file quoted in a message: printable ASCII as it is, anything else as \xNN, so that a
+// message about a binary file stays one line of valid text.
+std::string printable(std::string_view bytes) {
+  std::string text;
+  for (const char c : bytes) {
+    if (c >= 0x20 && c < 0x7f && c != '\\')
+      text += c;
+    else
+      text += fmt::format("\\x{:02x}", static_cast<unsigned char>(c));
+  }
+  return text;
+}
 
 }  // namespace
 
@@ -51,12 +67,12 @@ HdrImage decodeRadianceHdr(const std::string& bytes, const std::string& path) {
   std::string text;
   if (!line(text) || !(text.starts_with("#?RADIANCE") || text.starts_with("#?RGBE")))
     return fail(fmt::format("the first line is \"{}\", expected #?RADIANCE",
-                            bytes.substr(0, std::min<std::size_t>(bytes.find('\n'), 40))));
+                            printable(bytes.substr(0, std::min<std::size_t>(bytes.find('\n'), 40)))));
   for (;;) {
     if (!line(text)) return fail("the header does not end (no empty line before the size)");
     if (text.empty()) break;
     if (text.starts_with("FORMAT=") && text != "FORMAT=32-bit_rle_rgbe")
-      return fail(fmt::format("{} (only 32-bit_rle_rgbe is read)", text));
+      return fail(fmt::format("{} (only 32-bit_rle_rgbe is read)", printable(text.substr(0, 60))));
   }
   if (!line(text)) return fail("no size line after the header");
   HdrImage image;
@@ -70,12 +86,28 @@ HdrImage decodeRadianceHdr(const std::string& bytes, const std::string& path) {
   fields >> yAxis >> height >> xAxis >> width;
   if (yAxis != "-Y" || xAxis != "+X" || !number(height, image.height) || !number(width, image.width) ||
       (fields >> extra))
-    return fail(fmt::format("the size line is \"{}\", expected \"-Y height +X width\"", text));
+    return fail(fmt::format("the size line is \"{}\", expected \"-Y height +X width\"",
+                            printable(text.substr(0, 60))));
   if (image.width <= 0 || image.height <= 0 ||
       static_cast<long long>(image.width) * image.height > kMaxPixels)
     return fail(fmt::format("size {} x {} is out of range", image.width, image.height));
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
   const std::size_t size = bytes.size();
+  // Size first, memory second: every scanline takes some bytes of the file (a run-length one at least
+  // its 4-byte start and a 2-byte run per 127 pixels of each of its 4 channels, a flat one 4 bytes a
+  // pixel), so a size the file cannot hold is refused before the pixels are allocated.
+  const std::uint64_t pixelCount = static_cast<std::uint64_t>(image.width) * image.height;
+  const std::uint64_t scanlineBytes =
+      image.width >= 8 && image.width < 32768
+          ? 4 + 4 * 2 * ((static_cast<std::uint64_t>(image.width) + 126) / 127)
+          : 4 * static_cast<std::uint64_t>(image.width);
+  if (scanlineBytes * image.height > size - at)
+    throw InputError(SourceLocation{path, 0, 0, static_cast<std::int64_t>(at)},
+                     fmt::format("'{}' is truncated or its size is corrupt: {} x {} pixels take at least {} "
+                                 "bytes of scanlines, but only {} bytes follow the size line",
+                                 path, image.width, image.height, scanlineBytes * image.height, size - at));
+  requireMemory(pixelCount * sizeof(Vec3), SourceLocation{path},
+                fmt::format("the {} x {} map in '{}'", image.width, image.height, path));
   image.pixels.resize(static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height));
   std::vector<unsigned char> scan(static_cast<std::size_t>(image.width) * 4);
   for (int y = 0; y < image.height; ++y) {

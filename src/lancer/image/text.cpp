@@ -193,6 +193,8 @@ Font::Font(const std::string& path) : impl_(std::make_unique<Impl>()) {
   impl_->path = path;
   if (FT_Init_FreeType(&impl_->library) != 0)
     throw InputError(SourceLocation{path}, "FreeType could not start, so no text can be drawn");
+  if (std::filesystem::is_directory(path))
+    throw InputError(SourceLocation{path}, "this is a folder, not a font file");
   if (!std::filesystem::is_regular_file(path))
     throw InputError(SourceLocation{path}, "the font file does not exist");
   if (FT_New_Face(impl_->library, path.c_str(), 0, &impl_->face) != 0)

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "lancer/mesh/field_steps.hpp"
+#include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/suggest.hpp"
 
 namespace lancer {
@@ -14,8 +15,8 @@ namespace {
 
 // The legend and band keys: title, units, bands, legend.
 void readLegendKeys(const TomlTableReader& reader, ColorBy& spec) {
-  if (auto title = reader.string("title")) spec.title = *title;
-  if (auto units = reader.string("units")) spec.units = *units;
+  if (auto title = reader.text("title", kMaxDrawnText)) spec.title = *title;
+  if (auto units = reader.text("units", kMaxDrawnText)) spec.units = *units;
   if (auto bands = reader.integer("bands", 1, 256)) spec.bands = static_cast<int>(*bands);
   constexpr std::array<std::string_view, 3> kPlacements = {"none", "right", "bottom"};
   if (auto legend = reader.choice("legend", kPlacements)) spec.legend = static_cast<LegendPlacement>(*legend);

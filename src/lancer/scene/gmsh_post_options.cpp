@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 
 #include "lancer/mesh/field_steps.hpp"
@@ -54,7 +55,16 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path) {
       throw InputError(
           SourceLocation{path, lineNumber, static_cast<std::int64_t>(equals + 2)},
           fmt::format("View[{}].{} should be a number, not '{}'", index, name, value.substr(first)));
-    const int whole = static_cast<int>(std::lround(number));
+    // Every key but these three is an integer; a value no int holds is refused, not wrapped.
+    const bool real = name == "DisplacementFactor" || name == "CustomMin" || name == "CustomMax";
+    const double rounded = std::round(number);
+    if (!real && (rounded < std::numeric_limits<int>::min() || rounded > std::numeric_limits<int>::max()))
+      throw InputError(
+          SourceLocation{path, lineNumber, static_cast<std::int64_t>(equals + first + 2)},
+          fmt::format("View[{}].{} = {} is out of range: gmsh keeps it as an integer from {} to {}", index,
+                      name, value.substr(first), std::numeric_limits<int>::min(),
+                      std::numeric_limits<int>::max()));
+    const int whole = real ? 0 : static_cast<int>(rounded);
     switch (known - kNumbers.begin()) {
       case 0:
         view.timeStep = whole;

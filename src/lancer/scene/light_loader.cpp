@@ -87,6 +87,7 @@ EnvironmentSettings readEnvironment(const std::string& path, const std::filesyst
                                     const toml::table& table) {
   const TomlTableReader reader(table, "environment", path, SceneTable::Environment);
   EnvironmentSettings environment;
+  environment.where = reader.location(table);
   const NumberRange radiance = NumberRange::atLeast(0);
   const bool gradient = reader.find("zenith") || reader.find("horizon") || reader.find("ground");
   const toml::node* map = reader.find("map");

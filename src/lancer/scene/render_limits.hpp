@@ -3,6 +3,8 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string_view>
 
@@ -20,6 +22,11 @@ inline constexpr int kMaxFrames = 10000;
 inline constexpr int kMaxThreads = 1024;
 // render.exposure and --exposure, in stops: 2^20 is a million times brighter or darker.
 inline constexpr double kMaxExposureStops = 20;
+// Text drawn into a picture (an animation's label, a legend's title and units), in characters: a
+// line this long already spans a 1920-pixel picture several times.
+inline constexpr std::size_t kMaxDrawnText = 200;
+// The width or precision a label's format may ask for ({time:12.6g}).
+inline constexpr std::uint64_t kMaxLabelFormatNumber = 64;
 
 // In the order of the enums they name (checked below).
 inline constexpr std::array<std::string_view, 3> kShadingNames = {"flat", "gouraud", "phong"};

@@ -2,10 +2,12 @@
 // precision, recentres everything on one origin, orients closed shells outward, resolves group
 // materials, computes normals.
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <span>
 #include <utility>
 
 #include <fmt/format.h>
@@ -17,6 +19,7 @@
 #include "lancer/scene/annotation_builder.hpp"
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/instance_transform.hpp"
+#include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/scene.hpp"
 #include "lancer/scene/scene_entries.hpp"
 #include "lancer/scene/scene_layout.hpp"
@@ -323,6 +326,38 @@ SceneLight sceneLight(const PointLight& light, const SceneGeometry& geometry) {
   return out;
 }
 
+// Each value the scene file gives fits a float, but an area or a sun's disc so small that it rounds
+// to nothing (a radius of 1e-30), or an intensity near the largest float spread over a small area,
+// gives a radiance no float holds: refused here, where the light is made, not as a broken pixel.
+void checkRadianceIsFinite(const PointLight& light, const SceneLight& made) {
+  if (std::isfinite(made.radiance.x) && std::isfinite(made.radiance.y) && std::isfinite(made.radiance.z))
+    return;
+  const std::string_view type = kLightTypeNames[static_cast<std::size_t>(light.type)];
+  const bool sun = light.type == LightType::Sun;
+  const std::string size = sun ? fmt::format("angle {}", light.angleDegrees)
+                           : light.type == LightType::Rect
+                               ? fmt::format("width {} and height {}", light.width, light.height)
+                               : fmt::format("radius {}", light.radius);
+  const std::string formula = sun ? "pi intensity / the solid angle of its disc"
+                                  : fmt::format("pi intensity / area, area {}", made.area);
+  throw InputError(light.where,
+                   fmt::format("the {} light of {} and intensity [{}, {}, {}] has a radiance ({}) "
+                               "too large for a float: give it a larger {} or a smaller intensity",
+                               type, size, light.intensity.x, light.intensity.y, light.intensity.z, formula,
+                               sun ? "angle" : "size"));
+}
+
+// The radiance strength x colour must stay a float, as the light's does.
+void checkEnvironmentStrength(const EnvironmentSettings& settings, std::span<const Vec3> colors) {
+  float brightest = 0;
+  for (const Vec3& c : colors) brightest = std::max({brightest, c.x, c.y, c.z});
+  if (std::isfinite(brightest * settings.strength)) return;
+  throw InputError(settings.where,
+                   fmt::format("environment.strength {} times the environment's brightest value {} is too "
+                               "large for a float: lower the strength",
+                               settings.strength, brightest));
+}
+
 SceneEnvironment sceneEnvironment(const EnvironmentSettings& settings, const Vec3& up) {
   SceneEnvironment environment;
   environment.kind = settings.kind;
@@ -332,10 +367,18 @@ SceneEnvironment sceneEnvironment(const EnvironmentSettings& settings, const Vec
   environment.ground = settings.ground;
   environment.up = normalize(up);
   environment.front = across(environment.up);
-  environment.rotationRadians = static_cast<float>(settings.rotationDegrees * 3.14159265358979323846 / 180.0);
+  // Reduced in double first: a float of a large angle has lost the turn it stands for.
+  environment.rotationRadians =
+      static_cast<float>(std::fmod(settings.rotationDegrees, 360.0) * 3.14159265358979323846 / 180.0);
   environment.strength = settings.strength;
   environment.visible = settings.visible;
-  if (settings.kind != EnvironmentSettings::Kind::Map) return environment;
+  if (settings.kind != EnvironmentSettings::Kind::Map) {
+    const std::array sky{settings.zenith, settings.horizon, settings.ground};
+    checkEnvironmentStrength(settings, settings.kind == EnvironmentSettings::Kind::Uniform
+                                           ? std::span<const Vec3>(&settings.color, 1)
+                                           : std::span<const Vec3>(sky));
+    return environment;
+  }
   HdrImage image;
   try {
     image = readEnvironmentMap(settings.map);
@@ -348,6 +391,7 @@ SceneEnvironment sceneEnvironment(const EnvironmentSettings& settings, const Vec
         fmt::format("environment.map: '{}' is {} x {} pixels; an equirectangular map is twice as "
                     "wide as it is high (e.g. 2048 x 1024)",
                     settings.map, image.width, image.height));
+  checkEnvironmentStrength(settings, image.pixels);
   environment.mapWidth = image.width;
   environment.mapHeight = image.height;
   environment.map = std::move(image.pixels);
@@ -372,7 +416,10 @@ ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const SceneGeometry& g
 std::vector<SceneLight> sceneLights(const SceneDescription& description, const SceneGeometry& geometry) {
   std::vector<SceneLight> lights;
   lights.reserve(description.lights.size());
-  for (const PointLight& light : description.lights) lights.push_back(sceneLight(light, geometry));
+  for (const PointLight& light : description.lights) {
+    lights.push_back(sceneLight(light, geometry));
+    checkRadianceIsFinite(light, lights.back());
+  }
   return lights;
 }
 

@@ -99,7 +99,7 @@ struct EnvironmentSettings {
   double rotationDegrees = 0;  // about the up axis
   float strength = 1;          // multiplies the map
   bool visible = false;        // camera rays that miss show the environment (else the background)
-  SourceLocation where{};      // of the map key, for errors reading the file
+  SourceLocation where{};      // of the map key (else the table), for errors reading the file
 };
 
 struct Material {

@@ -1,5 +1,6 @@
 #include "lancer/scene/toml_table_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -40,6 +41,11 @@ std::string joined(std::span<const std::string_view> words) {
 }
 
 }  // namespace
+
+std::size_t characterCount(std::string_view text) {
+  return static_cast<std::size_t>(std::count_if(
+      text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xc0) != 0x80; }));
+}
 
 bool NumberRange::contains(double value) const {
   if (nonZero && value == 0) return false;
@@ -169,6 +175,11 @@ double TomlTableReader::checkedNumber(const toml::node& node, const std::string&
   if (!isNumber(node)) fail(node, fmt::format("{} must be a number, found {}", name, describeValue(node)));
   const double value = numberValue(node);
   if (!std::isfinite(value)) fail(node, fmt::format("{} must be a finite number, found {}", name, value));
+  // The renderer holds scene values as floats: a larger magnitude would become infinite there.
+  constexpr double kLargestFloat = std::numeric_limits<float>::max();
+  if (std::abs(value) > kLargestFloat)
+    fail(node, fmt::format("{} must be between -{:.7g} and {:.7g} (the range of a float), found {}", name,
+                           kLargestFloat, kLargestFloat, value));
   if (!range.contains(value))
     fail(node, fmt::format("{} must be {}, found {}", name, range.describe(), value));
   return value;
@@ -201,6 +212,14 @@ std::optional<std::string> TomlTableReader::nonEmptyString(std::string_view key)
   std::optional<std::string> text = string(key);
   if (text && text->empty()) fail(*find(key), fmt::format("{} must not be empty", qualified(key)));
   return text;
+}
+
+std::optional<std::string> TomlTableReader::text(std::string_view key, std::size_t maxCharacters) const {
+  std::optional<std::string> value = string(key);
+  if (value && characterCount(*value) > maxCharacters)
+    fail(*find(key), fmt::format("{} is {} characters long; at most {} are drawn", qualified(key),
+                                 characterCount(*value), maxCharacters));
+  return value;
 }
 
 std::optional<int> TomlTableReader::choice(std::string_view key,

@@ -17,6 +17,9 @@
 
 namespace lancer {
 
+// Characters (UTF-8 code points) in `text`.
+std::size_t characterCount(std::string_view text);
+
 // The allowed values of a number, and how a message says so.
 struct NumberRange {
   double min = -std::numeric_limits<double>::infinity();
@@ -68,6 +71,8 @@ class TomlTableReader {
   std::optional<bool> boolean(std::string_view key) const;
   std::optional<std::string> string(std::string_view key) const;
   std::optional<std::string> nonEmptyString(std::string_view key) const;
+  // A string drawn into the picture: at most `maxCharacters` characters (UTF-8 code points).
+  std::optional<std::string> text(std::string_view key, std::size_t maxCharacters) const;
   // The index in `choices` of a string value; otherwise lists the choices (and the closest one).
   std::optional<int> choice(std::string_view key, std::span<const std::string_view> choices) const;
   std::optional<Vec3d> vector(std::string_view key, Triple meaning, NumberRange range = {}) const;
