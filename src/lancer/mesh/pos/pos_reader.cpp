@@ -33,7 +33,7 @@ class PosParser {
 
   PosFile parse() {
     refuseOtherFormats(scan_.bytes(), scan_.file());
-    while (scan_.peek() != '\0') {
+    for (scan_.skipSpace(); !scan_.atEnd(); scan_.skipSpace()) {
       const char* at = scan_.position();
       if (scan_.name() != "View") {
         scan_.failAt(
@@ -86,7 +86,7 @@ class PosParser {
           scan_.failExpected("';'", fmt::format("after the closing '}}' of view \"{}\"", view.name));
         break;
       }
-      if (c == '\0')
+      if (c == '\0' && scan_.atEnd())
         scan_.failAt(viewAt,
                      fmt::format("the file ends inside view \"{}\": expected its closing '}};' (the file "
                                  "looks truncated)",

@@ -47,7 +47,8 @@ class PosScanner {
       }
     }
   }
-  // The next character after whitespace and comments, or '\0' at the end of the file.
+  // The next character after whitespace and comments (control characters count as whitespace, as
+  // in the .msh reader), or '\0' at the end of the file.
   char peek() {
     skipSpace();
     return pos_ < end_ ? *pos_ : '\0';
@@ -57,10 +58,6 @@ class PosScanner {
     if (peek() != c) return false;
     ++pos_;
     return true;
-  }
-  // Consumes `c` or throws "expected <c> <context>, found ...".
-  void expect(char c, std::string_view context) {
-    if (!accept(c)) failExpected(fmt_char(c), context);
   }
   // A name ([A-Za-z_][A-Za-z0-9_]*) after whitespace; empty when none comes next.
   std::string_view name();
@@ -99,7 +96,6 @@ class PosScanner {
   std::string describeNext();
 
  private:
-  static std::string fmt_char(char c) { return std::string("'") + c + "'"; }
   bool skipComment();
   // What readDecimalFast leaves: long mantissas, large exponents, a leading '+', and what is no number.
   double otherNumber(std::string_view context);
