@@ -1,14 +1,10 @@
 #include "lancer/mesh/msh_reader.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
 #include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <bit>
-#include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <cstdlib>
@@ -24,63 +20,13 @@
 #include "lancer/mesh/msh/sections.hpp"
 #include "lancer/mesh/msh/stored_steps.hpp"
 #include "lancer/util/input_error.hpp"
+#include "lancer/util/mapped_file.hpp"
 #include "lancer/util/stopwatch.hpp"
 
 namespace lancer {
 namespace {
 
 static_assert(std::endian::native == std::endian::little, "binary .msh reading assumes a little-endian host");
-
-// A read-only private mapping of a whole file, unmapped on destruction.
-class MappedFile {
- public:
-  explicit MappedFile(const std::string& path) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0)
-      throw InputError(SourceLocation{path}, fmt::format("cannot open the file: {}", std::strerror(errno)));
-    struct stat info {};
-    if (::fstat(fd, &info) != 0) {
-      const int error = errno;
-      ::close(fd);
-      throw InputError(SourceLocation{path}, fmt::format("cannot read the file: {}", std::strerror(error)));
-    }
-    if (S_ISDIR(info.st_mode)) {
-      ::close(fd);
-      throw InputError(SourceLocation{path}, "is a directory, not a .msh file");
-    }
-    if (!S_ISREG(info.st_mode)) {
-      ::close(fd);
-      throw InputError(SourceLocation{path}, "is not a regular file; lancer memory-maps .msh files");
-    }
-    size_ = static_cast<std::size_t>(info.st_size);
-    identity_ = FileIdentity{size_, info.st_mtim.tv_sec, info.st_mtim.tv_nsec};
-    if (size_ > 0) {
-      // No MAP_POPULATE: mapping every page up front measured slower (bench/msh_load_bench.cpp) than
-      // letting the sequential parse fault pages in, with the kernel's fault-around.
-      void* data = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd, 0);
-      if (data == MAP_FAILED) {
-        const int error = errno;
-        ::close(fd);
-        throw InputError(SourceLocation{path}, fmt::format("cannot map the file: {}", std::strerror(error)));
-      }
-      data_ = static_cast<const char*>(data);
-    }
-    ::close(fd);
-  }
-  ~MappedFile() {
-    if (data_) ::munmap(const_cast<char*>(data_), size_);
-  }
-  MappedFile(const MappedFile&) = delete;
-  MappedFile& operator=(const MappedFile&) = delete;
-
-  std::span<const char> bytes() const { return {data_, size_}; }
-  const FileIdentity& identity() const { return identity_; }
-
- private:
-  const char* data_ = nullptr;
-  std::size_t size_ = 0;
-  FileIdentity identity_;
-};
 
 void readMeshFormat(MshReadState& state) {
   MshCursor& cursor = state.cursor;
@@ -471,8 +417,9 @@ Mesh readMsh(const std::string& path, int threads) {
 
 Mesh readMsh(const std::string& path, int threads, std::uint64_t residentFieldBytes) {
   const Stopwatch stopwatch;
-  const MappedFile file(path);
-  ByteSource source{file.bytes().size(), true, file.identity(), residentFieldBytes};
+  const MappedFile file(path, ".msh file");
+  const FileIdentity identity{file.bytes().size(), file.modifiedSeconds(), file.modifiedNanoseconds()};
+  ByteSource source{file.bytes().size(), true, identity, residentFieldBytes};
   Mesh mesh = readBytes(file.bytes(), path, source, threads);
   mesh.source.loadSeconds = stopwatch.seconds();
   return mesh;

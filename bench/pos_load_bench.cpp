@@ -1,0 +1,77 @@
+// Reading one scalar step on a 1M-triangle plate as a list-based .pos view (one ST per triangle)
+// against the same values as $NodeData in an ASCII .msh, and the mesh alone; the files are made by
+// bench/make_pos_bench_data.py (bench/data/, or LANCER_BENCH_DATA). Wall time: readMsh assembles
+// the mesh on every core (threads = 0) or on one; the .pos reader is one pass on one thread.
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "lancer/mesh/msh_reader.hpp"
+#include "lancer/mesh/pos/pos_reader.hpp"
+
+namespace {
+
+std::string benchFile(const char* name) {
+  const char* dir = std::getenv("LANCER_BENCH_DATA");
+  const std::filesystem::path folder =
+      dir ? std::filesystem::path(dir) : std::filesystem::path(__FILE__).parent_path() / "data";
+  return (folder / name).string();
+}
+
+bool present(benchmark::State& state, const std::string& path) {
+  if (std::filesystem::exists(path)) return true;
+  state.SkipWithError(("missing " + path + ": run bench/make_pos_bench_data.py").c_str());
+  return false;
+}
+
+void fileRate(benchmark::State& state, const std::string& path) {
+  state.counters["file_MB_per_s"] =
+      benchmark::Counter(static_cast<double>(std::filesystem::file_size(path)) * 1e-6,
+                         benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void loadPos(benchmark::State& state) {
+  const std::string path = benchFile("plate.pos");
+  if (!present(state, path)) return;
+  std::size_t elements = 0;
+  for (auto _ : state) {
+    const lancer::PosFile file = lancer::readPosFile(path);
+    elements = file.views.front().elementCount();
+    benchmark::DoNotOptimize(file.views.front().blocks.front().values.data());
+  }
+  state.counters["elements"] = static_cast<double>(elements);
+  fileRate(state, path);
+}
+
+void loadMsh(benchmark::State& state, const char* name, int threads) {
+  const std::string path = benchFile(name);
+  if (!present(state, path)) return;
+  std::size_t fields = 0;
+  for (auto _ : state) {
+    const lancer::Mesh mesh = lancer::readMsh(path, threads);
+    fields = mesh.fields.size();
+    benchmark::DoNotOptimize(mesh.faces.data());
+  }
+  state.counters["fields"] = static_cast<double>(fields);
+  fileRate(state, path);
+}
+
+BENCHMARK(loadPos)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);
+BENCHMARK_CAPTURE(loadMsh, nodedata, "plate_nodedata.msh", 0)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(3);
+BENCHMARK_CAPTURE(loadMsh, nodedata_1_thread, "plate_nodedata.msh", 1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(3);
+BENCHMARK_CAPTURE(loadMsh, mesh_alone, "plate_mesh.msh", 0)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(3);
+
+}  // namespace
+
+BENCHMARK_MAIN();
