@@ -63,7 +63,7 @@ TEST(FieldSteps, AStepPastTheLastSaysWhichStepsThereAre) {
 
 TEST(FieldSteps, ViewsTimedZeroAtEveryStepAreTimedByTheirStepIndex) {
   Mesh mesh;
-  for (int k : {2, 0, 1}) mesh.fields.push_back(MeshField{"t", false, 1, k, 0.0, {float(k)}});
+  for (int k : {2, 0, 1}) mesh.fields.push_back(MeshField{"t", FieldAt::kNode, 1, k, 0.0, {float(k)}});
   const auto steps = viewSteps(mesh, "t");
   ASSERT_EQ(steps.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k) {
