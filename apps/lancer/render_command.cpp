@@ -34,7 +34,8 @@ constexpr int kLegendBarLength = 300;
 constexpr float kLegendTextHeight = 14;
 
 struct RenderCommandOptions {
-  std::string input;
+  std::string input;                // the scene or mesh (takeMeshInput)
+  std::vector<std::string> inputs;  // as given: the input, then views
   std::string output;
   std::string pixel;
   std::string legend;                 // --legend: the legends of the field-coloured meshes
@@ -401,7 +402,7 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
   auto options = std::make_shared<RenderCommandOptions>();
   CLI::App* command = app.add_subcommand(
       "render", "Render a scene file (.toml), or a mesh (.msh) with an automatic camera, lights and colours");
-  addInputOption(*command, options->input);
+  addInputOption(*command, options->inputs);
   command->add_option("-o,--output", options->output,
                       fmt::format("Output image ({}); overrides render.output", kImageExtensions));
   command->add_option(
@@ -420,8 +421,11 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
       "path, ao: render 1, 2, 4, ... samples per pixel up to the scene's, rewriting the image at "
       "least every SECONDS as it converges");
   command->callback([options, &runner] {
-    takeInputFromGmshView(options->input, options->overrides);
-    runner = [options] { return runRender(*options); };
+    takeInputFromGmshView(options->inputs, options->overrides);
+    runner = [options] {
+      options->input = takeMeshInput(options->inputs, options->overrides.views);
+      return runRender(*options);
+    };
   });
 }
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -50,8 +51,8 @@ std::string lowerCaseExtension(const std::string& path) {
   return extension;
 }
 
-// A .msh by name, or a file that is no scene: a mesh by content, or a file that is neither (a .geo,
-// STL, STEP, ...), which the mesh reader names with the gmsh command that makes a mesh of it.
+// A .msh by name, or a file that is no scene: a mesh or a .pos view by content, or a file that is neither (a
+// .geo, STL, STEP, ...), which the mesh reader names with the gmsh command that makes a mesh of it.
 bool isMeshFile(const std::string& path) {
   const std::string extension = lowerCaseExtension(path);
   if (extension == ".msh") return true;
@@ -62,7 +63,7 @@ bool isMeshFile(const std::string& path) {
   head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
   std::error_code error;
   const std::uintmax_t size = std::filesystem::file_size(path, error);
-  return looksLikeMsh(head) || !foreignFileMessage(head, error ? 0 : size, path).empty();
+  return looksLikeMsh(head) || isViewFile(path) || !foreignFileMessage(head, error ? 0 : size, path).empty();
 }
 
 // The command line checks its choices against the same tables (CLI11 wants strings).
@@ -226,16 +227,49 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
                    "nesting), normals, scene, accel build");
 }
 
-CLI::Option* addInputOption(CLI::App& command, std::string& input) {
-  return command.add_option("input", input, "Scene file (.toml) or gmsh mesh (.msh); required");
+CLI::Option* addInputOption(CLI::App& command, std::vector<std::string>& inputs) {
+  return command.add_option(
+      "input", inputs,
+      "Scene file (.toml), or gmsh mesh (.msh) or list-based view (.pos), then .pos views "
+      "to put on that mesh; required");
 }
 
-void takeInputFromGmshView(std::string& input, SceneOverrides& overrides) {
-  if (input.empty() && overrides.gmshView && lowerCaseExtension(*overrides.gmshView) != ".opt") {
-    input = *overrides.gmshView;
+void takeInputFromGmshView(std::vector<std::string>& inputs, SceneOverrides& overrides) {
+  // `--gmsh-view magnet.msh az.pos`: the mesh went to --gmsh-view, the views to the inputs.
+  const auto tookTheMesh = [&] {
+    if (!overrides.gmshView || overrides.gmshView->empty() ||
+        lowerCaseExtension(*overrides.gmshView) == ".opt")
+      return false;
+    return inputs.empty() ||
+           (std::all_of(inputs.begin(), inputs.end(), isViewFile) && !isViewFile(*overrides.gmshView));
+  };
+  if (tookTheMesh()) {
+    inputs.insert(inputs.begin(), *overrides.gmshView);
     overrides.gmshView = "";
   }
-  if (input.empty()) throw CLI::RequiredError("input");
+  if (inputs.empty()) throw CLI::RequiredError("input");
+}
+
+std::string takeMeshInput(const std::vector<std::string>& inputs, std::vector<std::string>& views) {
+  std::vector<bool> view(inputs.size());
+  std::size_t mesh = inputs.size();
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    view[i] = inputs.size() > 1 && isViewFile(inputs[i]);
+    if (!view[i] && mesh == inputs.size()) mesh = i;
+  }
+  if (mesh == inputs.size()) mesh = 0;
+  views.clear();
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    if (i == mesh) continue;
+    if (!view[i])
+      throw InputError(
+          SourceLocation{inputs[i]},
+          fmt::format("one mesh or scene per command: {} gives the geometry, and the inputs after it "
+                      "are list-based .pos views to put on it, which this is not",
+                      inputs[mesh]));
+    views.push_back(inputs[i]);
+  }
+  return inputs[mesh];
 }
 
 PreparedRender prepareScene(const std::string& input, const SceneOverrides& overrides,
@@ -253,16 +287,24 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     const Stopwatch read;
     request.quickLookMesh = readStepFiles(input, matchStepFiles(input, SourceLocation{input}),
                                           overrides.threads, SourceLocation{input});
+    addViewFiles(*request.quickLookMesh, overrides.views);
     request.stages.add("read", read.seconds());
     description = quickLookScene(input, *request.quickLookMesh, up);
   } else if (isMeshFile(input)) {
     const Stopwatch read;
     request.quickLookMesh = readMsh(input, overrides.threads);
+    addViewFiles(*request.quickLookMesh, overrides.views);
     request.stages.add("read", read.seconds());
     if (const std::string reason = nothingToDrawReason(*request.quickLookMesh); !reason.empty())
       throw InputError(SourceLocation{input}, "nothing to draw: " + reason);
     description = quickLookScene(input, *request.quickLookMesh, up);
   } else {
+    if (!overrides.views.empty())
+      throw InputError(SourceLocation{overrides.views.front()},
+                       fmt::format("views on the command line go on a mesh given there (lancer render "
+                                   "part.msh {}); {} is a scene file: give them to its mesh with views = "
+                                   "[\"{}\"] in its [[mesh]]",
+                                   overrides.views.front(), input, overrides.views.front()));
     description = loadScene(input);
     if (up) applyUpAxis(description.camera, *up);
   }

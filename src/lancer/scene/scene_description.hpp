@@ -156,7 +156,10 @@ enum class UndeformedStyle { None, Edges, Ghost };
 struct MeshInstance {
   std::string file;      // resolved against the scene file's folder
   SourceLocation where;  // of the [[mesh]] table, for errors found when the mesh is loaded
-  int material = 0;      // index into SceneDescription::materials
+  // `views = ["az.pos"]`: list-based .pos views put on the mesh by their elements' coordinates
+  // (mesh/pos/pos_on_mesh.hpp), resolved against the scene file's folder.
+  std::vector<std::string> views;
+  int material = 0;  // index into SceneDescription::materials
   std::optional<ShadingMode> shading;
   float smoothAngleDegrees = 60;
   std::optional<ColorBy> colorBy;  // colour the surface by a field of the mesh file
