@@ -66,18 +66,33 @@ std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componen
     const auto alias = std::lower_bound(aliases.begin(), aliases.end(), std::pair{tag, std::uint64_t{0}});
     if (alias != aliases.end() && alias->first == tag) tag = alias->second;
   }
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> byTag(records.tags.size());
-  for (std::size_t r = 0; r < records.tags.size(); ++r)
-    byTag[r] = {records.tags[r], static_cast<std::uint32_t>(r)};
-  std::sort(byTag.begin(), byTag.end());
+  // Records of consecutive tags (gmsh numbers elements 1..N, and .pos views' elements are numbered
+  // so): a record is its tag's offset from the first. Otherwise a binary search of the sorted tags.
+  const std::vector<std::uint64_t>& tags = records.tags;
+  bool consecutive = true;
+  for (std::size_t r = 1; r < tags.size() && consecutive; ++r) consecutive = tags[r] == tags[0] + r;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> byTag;
+  if (!consecutive) {
+    byTag.resize(tags.size());
+    for (std::size_t r = 0; r < tags.size(); ++r) byTag[r] = {tags[r], static_cast<std::uint32_t>(r)};
+    std::sort(byTag.begin(), byTag.end());
+  }
+  const auto recordOf = [&](std::uint64_t tag) -> std::int64_t {
+    if (consecutive) {
+      return !tags.empty() && tag >= tags[0] && tag - tags[0] < tags.size()
+                 ? static_cast<std::int64_t>(tag - tags[0])
+                 : -1;
+    }
+    const auto found = std::lower_bound(byTag.begin(), byTag.end(), std::pair{tag, std::uint32_t{0}});
+    return found == byTag.end() || found->first != tag ? std::int64_t{-1} : std::int64_t{found->second};
+  };
   const auto components = static_cast<std::size_t>(componentCount);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   std::vector<float> perCorner(faceElement.size() * kCornerSlots * components, nan);
   for (std::size_t f = 0; f < faceElement.size(); ++f) {
-    const auto found =
-        std::lower_bound(byTag.begin(), byTag.end(), std::pair{faceElement[f], std::uint32_t{0}});
-    if (found == byTag.end() || found->first != faceElement[f]) continue;
-    const std::uint32_t record = found->second;
+    const std::int64_t found = recordOf(faceElement[f]);
+    if (found < 0) continue;
+    const auto record = static_cast<std::size_t>(found);
     float* out = perCorner.data() + f * kCornerSlots * components;
     const MshCornerNodes& nodes = faceCornerNode[f];
     int added = -1;

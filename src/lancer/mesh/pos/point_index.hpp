@@ -24,18 +24,30 @@ class PointIndex {
   // The number of `p`, given to it now when it is new (then points() grows by one).
   std::uint32_t insert(const Vec3T<T>& p) {
     const Vec3T<T> key = canonical(p);
-    std::size_t slot = hash(key) & mask_;
+    const std::size_t h = hash(key);
+    // A file lists each node with every element that uses it, and neighbours close together (in
+    // mesh order): most points were met a few elements before, and are found in the small table of
+    // recent points (in cache) without a miss in the large one.
+    Recent& recent = recent_[h & (kRecent - 1)];
+    if (recent.id != kNone && recent.point == key) return recent.id;
+    std::size_t slot = h & mask_;
+    std::uint32_t id;
     for (;; slot = (slot + 1) & mask_) {
-      const std::uint32_t id = slots_[slot];
-      if (id == kNone) break;
-      if (points_[id] == key) return id;
+      id = slots_[slot];
+      if (id == kNone || points_[id] == key) break;
     }
-    const auto id = static_cast<std::uint32_t>(points_.size());
-    points_.push_back(key);
-    slots_[slot] = id;
-    if (points_.size() * 2 > slots_.size()) rehash(slots_.size() * 2);
+    if (id == kNone) {
+      id = static_cast<std::uint32_t>(points_.size());
+      points_.push_back(key);
+      slots_[slot] = id;
+      if (points_.size() * 2 > slots_.size()) rehash(slots_.size() * 2);
+    }
+    recent = {key, id};
     return id;
   }
+  // Asks the cache for where insert(p) will look in the large table: called an element ahead, it
+  // hides the miss that a point met for the first time (or long ago) costs.
+  void prefetch(const Vec3T<T>& p) const { __builtin_prefetch(&slots_[hash(canonical(p)) & mask_]); }
   // The number of `p`, or kNone when it was never inserted.
   std::uint32_t find(const Vec3T<T>& p) const {
     const Vec3T<T> key = canonical(p);
@@ -76,9 +88,16 @@ class PointIndex {
     }
   }
 
+  struct Recent {
+    Vec3T<T> point;
+    std::uint32_t id = kNone;
+  };
+  static constexpr std::size_t kRecent = 16384;  // 512 KiB for doubles: in L2
+
   std::vector<std::uint32_t> slots_;
   std::size_t mask_ = 0;
   std::vector<Vec3T<T>> points_;
+  std::vector<Recent> recent_ = std::vector<Recent>(kRecent);
 };
 
 }  // namespace lancer

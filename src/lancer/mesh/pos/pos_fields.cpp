@@ -68,6 +68,14 @@ ElementNodeRecords stepRecords(const PosView& view, int step, const PosElementTa
 
 }  // namespace
 
+bool sameElements(const PosView& a, const PosView& b) {
+  if (a.blocks.size() != b.blocks.size()) return false;
+  for (std::size_t i = 0; i < a.blocks.size(); ++i)
+    if (a.blocks[i].kind.gmshType != b.blocks[i].kind.gmshType || a.blocks[i].coords != b.blocks[i].coords)
+      return false;
+  return true;
+}
+
 int drawnComponents(const PosView& view, const std::string& file) {
   int components = 0;
   const PosElementBlock* first = nullptr;

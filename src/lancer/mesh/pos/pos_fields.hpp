@@ -29,6 +29,10 @@ struct PosElementTags {
 // Whether the elements of a block become faces (surfaces and volumes; points and lines do not).
 inline bool drawnBlock(const PosElementBlock& block) { return block.kind.dimension >= 2; }
 
+// Whether two views list the same elements in the same order at the same coordinates (GetDP's
+// views of one Print region, gmsh's views of one mesh): the second can use what was made of the first.
+bool sameElements(const PosView& a, const PosView& b);
+
 // The components (1, 3 or 9) of the view's drawn blocks; 0 when it has none. Throws InputError at
 // the view when they mix (a scalar and a vector list in one view).
 int drawnComponents(const PosView& view, const std::string& file);

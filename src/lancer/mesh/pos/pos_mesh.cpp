@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 
 #include "lancer/mesh/msh/mesh_assembler.hpp"
 #include "lancer/mesh/pos/point_index.hpp"
@@ -12,9 +13,9 @@ namespace {
 
 constexpr int kMaxNodes = 27;  // a second-order hexahedron
 
-// The distinct elements of the views: an element is its type and its set of nodes, whatever their
-// order (gmsh writes a view's elements in the order of the mesh's, GetDP too, but nothing says two
-// views list one element's nodes alike). An open-addressing table on a hash of the sorted nodes.
+// The distinct elements of views that list different elements: an element is its type and its set
+// of nodes, whatever their order (nothing says two views list one element's nodes alike). An
+// open-addressing table on a hash of the sorted nodes.
 class ElementIndex {
  public:
   struct Found {
@@ -95,13 +96,24 @@ bool nodeOrder(const std::uint32_t* nodes, const std::uint32_t* kept, int count,
 }  // namespace
 
 Mesh meshFromPos(const PosFile& pos, MeshSourceInfo source, int threads) {
+  // A view whose elements are an earlier view's, in the same order at the same coordinates (the
+  // views of one GetDP Print region, of one gmsh mesh), takes that view's tags; elements are
+  // matched one by one (ElementIndex) only when some view lists other elements than the first.
+  std::vector<std::size_t> sameAs(pos.views.size(), pos.views.size());
+  bool matchElements = false;
   std::size_t elementCount = 0, nodeRefs = 0, faceEstimate = 0;
-  for (const PosView& view : pos.views)
-    for (const PosElementBlock& block : view.blocks) {
+  for (std::size_t v = 0; v < pos.views.size(); ++v) {
+    for (std::size_t earlier = 0; earlier < v && sameAs[v] == pos.views.size(); ++earlier)
+      if (sameAs[earlier] == pos.views.size() && sameElements(pos.views[earlier], pos.views[v]))
+        sameAs[v] = earlier;
+    if (sameAs[v] != pos.views.size()) continue;
+    matchElements = matchElements || v > 0;
+    for (const PosElementBlock& block : pos.views[v].blocks) {
       elementCount += block.elementCount();
       nodeRefs += block.elementCount() * static_cast<std::size_t>(block.kind.nodes);
       if (block.kind.dimension == 2) faceEstimate += block.elementCount();
     }
+  }
   MshMeshAssembler assembler;
   assembler.setThreads(threads);
   assembler.trackElements();
@@ -109,13 +121,19 @@ Mesh meshFromPos(const PosFile& pos, MeshSourceInfo source, int threads) {
   assembler.reserveFaces(faceEstimate);
   // A triangle mesh has about a sixth as many nodes as node references: the table grows if not.
   PointIndex<double> points(nodeRefs / 6);
-  ElementIndex elements(elementCount / pos.views.size());
+  std::optional<ElementIndex> elements;
+  if (matchElements) elements.emplace(elementCount);
+  std::uint32_t nextElement = 0;
   std::vector<PosElementTags> tags(pos.views.size());
   std::vector<int> components(pos.views.size());
   for (std::size_t v = 0; v < pos.views.size(); ++v) {
     const PosView& view = pos.views[v];
     components[v] = drawnComponents(view, pos.file);
     PosElementTags& viewTags = tags[v];
+    if (sameAs[v] != pos.views.size()) {
+      viewTags = tags[sameAs[v]];
+      continue;
+    }
     viewTags.tag.reserve(view.elementCount());
     for (const PosElementBlock& block : view.blocks) {
       const int type = block.kind.gmshType;
@@ -125,15 +143,21 @@ Mesh meshFromPos(const PosFile& pos, MeshSourceInfo source, int threads) {
       std::array<std::uint32_t, kMaxNodes> node;
       for (std::size_t e = 0; e < block.elementCount(); ++e) {
         const double* xyz = block.coords.data() + e * 3 * static_cast<std::size_t>(count);
+        if (e + 1 < block.elementCount())
+          for (int j = 0; j < count; ++j) {
+            const double* next = xyz + 3 * (count + j);
+            points.prefetch({next[0], next[1], next[2]});
+          }
         for (int j = 0; j < count; ++j)
           node[static_cast<std::size_t>(j)] = points.insert({xyz[3 * j], xyz[3 * j + 1], xyz[3 * j + 2]});
-        const ElementIndex::Found found = elements.insert(type, node.data(), count);
+        const ElementIndex::Found found =
+            elements ? elements->insert(type, node.data(), count) : ElementIndex::Found{nextElement++, true};
         const std::uint64_t tag = found.id + std::uint64_t{1};
         if (found.added) {
           drawn ? assembler.addElement(type, node.data(), tag) : assembler.countElement(type);
         } else if (drawn) {
           const auto start = static_cast<std::uint32_t>(viewTags.order.size());
-          if (nodeOrder(node.data(), elements.nodes(found.id), count, viewTags.order)) {
+          if (nodeOrder(node.data(), elements->nodes(found.id), count, viewTags.order)) {
             viewTags.orderAt.resize(view.elementCount(), PosElementTags::kSameOrder);
             viewTags.orderAt[viewTags.tag.size()] = start;
           }

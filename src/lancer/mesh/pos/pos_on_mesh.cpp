@@ -88,16 +88,6 @@ class ViewElementsByNode {
   std::vector<Holder> holders_;
 };
 
-// Whether two views list the same elements at the same coordinates (GetDP's views of one Print
-// region; the second view then uses the first one's match).
-bool sameElements(const PosView& a, const PosView& b) {
-  if (a.blocks.size() != b.blocks.size()) return false;
-  for (std::size_t i = 0; i < a.blocks.size(); ++i)
-    if (a.blocks[i].kind.gmshType != b.blocks[i].kind.gmshType || a.blocks[i].coords != b.blocks[i].coords)
-      return false;
-  return true;
-}
-
 std::string describeBox(const Aabbd& box) {
   return fmt::format("[{:.6g}, {:.6g}, {:.6g}] .. [{:.6g}, {:.6g}, {:.6g}]", box.lower.x, box.lower.y,
                      box.lower.z, box.upper.x, box.upper.y, box.upper.z);
