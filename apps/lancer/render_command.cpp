@@ -400,8 +400,9 @@ int runRender(const RenderCommandOptions& options) {
 
 void addRenderCommand(CLI::App& app, CommandRunner& runner) {
   auto options = std::make_shared<RenderCommandOptions>();
-  CLI::App* command = app.add_subcommand(
-      "render", "Render a scene file (.toml), or a mesh (.msh) with an automatic camera, lights and colours");
+  CLI::App* command = app.add_subcommand("render",
+                                         "Render a scene file (.toml), or a mesh (.msh, or .pos views) with "
+                                         "an automatic camera, lights and colours");
   addInputOption(*command, options->inputs);
   command->add_option("-o,--output", options->output,
                       fmt::format("Output image ({}); overrides render.output", kImageExtensions));

@@ -261,6 +261,9 @@ std::string takeMeshInput(const std::vector<std::string>& inputs, std::vector<st
   views.clear();
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     if (i == mesh) continue;
+    std::error_code error;
+    if (!view[i] && !std::filesystem::exists(inputs[i], error))
+      throw InputError(SourceLocation{inputs[i]}, "cannot open the view file: No such file or directory");
     if (!view[i])
       throw InputError(
           SourceLocation{inputs[i]},

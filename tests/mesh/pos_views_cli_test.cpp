@@ -150,6 +150,8 @@ TEST(PosViewsCli, BadInputsSayWhatIsWrong) {
   expectRefused(
       folder, "render -q magnet.msh old.pos -o x.png",
       {"old.pos:1:1: error: this is a view in gmsh's older post-processing format ($PostFormat, binary"});
+  expectRefused(folder, "render -q magnet.msh az.pos bz.pos -o x.png",
+                {"bz.pos: error: cannot open the view file: No such file or directory"});
   expectRefused(folder, "render -q magnet.msh v2/az.pos -o x.png",
                 {"v2/az.pos: error: one mesh or scene per command"});
 }
