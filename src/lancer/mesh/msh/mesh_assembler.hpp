@@ -31,6 +31,13 @@ class MshMeshAssembler {
     std::vector<std::uint64_t> tags;
   };
   std::vector<ElementField> elementFields;
+  // Element-node data steps (ElementNodeData): each element's records; finish() gives every face
+  // corner its element's value at that node.
+  struct ElementNodeField {
+    MeshField field;
+    ElementNodeRecords records;
+  };
+  std::vector<ElementNodeField> elementNodeFields;
   // Set before the elements are read when the file has $ElementData or $ElementNodeData (reader.cpp
   // reads such a file again): faces then remember their element's tag and where each of their
   // corners is among the element's nodes (16 bytes per face, only for such files).
@@ -136,7 +143,7 @@ class MshMeshAssembler {
   void removeFaces(const std::vector<std::uint8_t>& removed);
   void addVolumeFace(const MshVolumeFace& face);
   void appendVolumeBoundary(MeshSourceInfo& source);
-  void mapElementFields(Mesh& mesh);
+  void mapElementFields(Mesh& mesh, const std::vector<MshCornerNodes>& cornerSlots);
 
   std::vector<MeshFace> faces_;
   std::vector<std::int32_t> facePhysical_;
