@@ -171,7 +171,7 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
           "Accelerator: bvh (default: the wide BVH), kdtree-sah (the kd-tree), kdtree-sah-exact (its slower "
           "build, the quality reference), kdtree-median or naive (brute force)")
       ->check(CLI::IsMember(choices(kAccelNames)));
-  command.add_option("--threads", overrides.threads, "Worker threads (default 0: all cores)")
+  command.add_option("--threads", overrides.threads, "Worker threads (default 0: one per usable CPU)")
       ->check(CLI::Range(0, kMaxThreads));
   CLI::Option* srgb =
       command.add_flag("--srgb", overrides.srgb,

@@ -8,7 +8,7 @@
 No display is needed (no X, no GL). The C++ library does the work; this package is a thin layer.
 """
 
-from ._lancer import Camera, InputError, Mesh, Scene, read_msh, read_png
+from ._lancer import Camera, InputError, Mesh, Scene, __version__, read_msh, read_png
 from . import _lancer
 from ._image import Image
 from ._gmsh import camera_from_gmsh, from_gmsh
