@@ -66,7 +66,7 @@ TEST(ColorByTest, NodeFieldIsNormalisedOverItsRange) {
   ColorBy spec;
   spec.field = "temperature";
   const FieldColoring coloring = resolveColorBy(spec, mesh);
-  EXPECT_FALSE(coloring.perFace);
+  EXPECT_EQ(coloring.at, FieldAt::kNode);
   EXPECT_NEAR(coloring.low, 0.0, 1e-6);
   EXPECT_NEAR(coloring.high, 3.0, 1e-6);
   ASSERT_EQ(coloring.t.size(), mesh.positions.size());
