@@ -4,7 +4,9 @@
 #   2. the parallel renderer and image tile tests built with ThreadSanitizer (LANCER_TSAN);
 #   3. every libFuzzer target (LANCER_FUZZ, clang) for FUZZ_SECONDS (default 60) on its committed corpus,
 #      as many at a time as there are cores (each fuzzer is one process on one core);
-#   4. clang-tidy on src/ with the checks of .clang-tidy (must be clean);
+#   4. clang-tidy on src/ with the checks of .clang-tidy (must be clean): the sources changed since
+#      the last whole clean pass (.ci/tidy-baseline) and those that include a header that changed;
+#      `scripts/ci_hardening.sh tidy-baseline` records HEAD as such a pass (after TIDY_FULL=1 passed);
 #   5. clang-format on the sources: every .cpp and .hpp as .clang-format has it (FORMAT_STRICT=0 makes
 #      a difference a warning, for a local run).
 # Installs what is missing with apt-get, like scripts/setup.sh. Build folders: build-hardening-*.
@@ -13,6 +15,12 @@
 # Skip steps with SKIP="asan tsan fuzz tidy format" (any subset), e.g. for a quick local run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+if [ "${1:-}" = tidy-baseline ]; then
+  printf '%s\n%s\n' "$(git rev-parse HEAD)" "$(clang-tidy --version | grep -m1 -i version)" >.ci/tidy-baseline
+  echo "ci_hardening: .ci/tidy-baseline is now $(git rev-parse --short HEAD); commit it" >&2
+  exit 0
+fi
 
 FUZZ_SECONDS=${FUZZ_SECONDS:-60}
 FORMAT_STRICT=${FORMAT_STRICT:-1}
@@ -125,9 +133,39 @@ if ! skipped tidy; then
     CXX=clang++ cmake -S . -B build-hardening-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DLANCER_FUZZ=ON \
           -DLANCER_BUILD_TESTS=OFF -DLANCER_BUILD_BENCH=OFF -DLANCER_PYTHON=OFF >/dev/null
   fi
-  # clang's compile database, so that every flag is one clang-tidy understands.
+  # clang's compile database, so that every flag is one clang-tidy understands. Sources that did not
+  # change since the commit in .ci/tidy-baseline (a tree clang-tidy passed whole, with the clang-tidy
+  # version on its second line), and include no header that did, give the same verdict as then: the
+  # step checks the others, each whole. A full pass when the baseline is missing or not in this
+  # clone's history, when .clang-tidy or clang-tidy's version changed, when the fuzz build left no
+  # dependency records, or with TIDY_FULL=1 (then write HEAD into .ci/tidy-baseline once it passes:
+  # scripts/ci_hardening.sh tidy-baseline).
   mapfile -t sources < <(git ls-files 'src/*.cpp')
-  run-clang-tidy -quiet -j "$jobs" -p build-hardening-fuzz "${sources[@]/#/$PWD/}" >"build-hardening-fuzz/tidy.log" 2>&1 || true
+  baseline=$(sed -n 1p .ci/tidy-baseline 2>/dev/null || true)
+  tidyVersion=$(clang-tidy --version | grep -m1 -i version)
+  deps=$(ninja -C build-hardening-fuzz -t deps 2>/dev/null || true)
+  if [ "${TIDY_FULL:-0}" != 1 ] && [ -n "$baseline" ] && [ -n "$deps" ] &&
+     git cat-file -e "$baseline^{commit}" 2>/dev/null && git diff --quiet "$baseline" -- .clang-tidy &&
+     [ "$(sed -n 2p .ci/tidy-baseline)" == "$tidyVersion" ]; then
+    mapfile -t changed < <(git diff --name-only "$baseline" -- src)
+    # The dependency records: each object's source (its first dependency), then every header it
+    # read. A source is checked when it or one of its headers changed.
+    mapfile -t sources < <({ awk -v changed="${changed[*]}" '
+      BEGIN { n = split(changed, list, " "); for (i = 1; i <= n; ++i) want[list[i]] = 1 }
+      /^[^ ]/ { source = ""; next }
+      /^    / { path = $1; sub(/^(\.\.\/)+/, "", path); if (source == "") source = path
+                if ((path in want) && source ~ /^src\/.*\.cpp$/) hit[source] = 1 }
+      END { for (s in hit) print s }' <<<"$deps"; for file in "${changed[@]}"; do
+        if [[ $file == *.cpp && -f $file ]]; then echo "$file"; fi; done; } | sort -u)
+    echo "ci_hardening: clang-tidy on the ${#sources[@]} sources that changed since $baseline or include a header that did" >&2
+  else
+    echo "ci_hardening: clang-tidy on every source (${#sources[@]})" >&2
+  fi
+  if ((${#sources[@]})); then
+    run-clang-tidy -quiet -j "$jobs" -p build-hardening-fuzz "${sources[@]/#/$PWD/}" >"build-hardening-fuzz/tidy.log" 2>&1 || true
+  else
+    : >"build-hardening-fuzz/tidy.log"
+  fi
   if grep -E '(warning|error): ' build-hardening-fuzz/tidy.log >&2; then
     echo "ci_hardening: clang-tidy found problems (above)" >&2
     exit 1
