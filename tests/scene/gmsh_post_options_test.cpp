@@ -177,5 +177,42 @@ TEST(GmshPostOptions, IntegersOutsideAnIntAreRefusedNotWrapped) {
   EXPECT_EQ(views[0].timeStep, 2147483647);
 }
 
+// gmsh's way to show the stress on the deformed shape: the displacement view (VectorType 5) coloured
+// by another view named by its ExternalView, that view itself hidden; a vector view left at gmsh's
+// default VectorType (4, 3D arrows) is drawn as arrows; options lancer does not draw are named.
+TEST(GmshPostOptions, ExternalViewsArrowsAndWhatIsNotApplied) {
+  const test::ScratchFolder folder;
+  folder.write("external.opt",
+               "View[0].VectorType = 5;\nView[0].ExternalView = 1;\nView[0].Axes = 1; // Type of axes\n"
+               "View[0].Max = 1.5; // Maximum value in the view (read-only)\nView[1].Visible = 0;\n"
+               "View[2].Visible = 0;\n");
+  SceneDescription description = oneMesh();
+  const Mesh mesh = readMsh(description.meshes[0].file);
+  applyGmshPostViews(description, mesh, readGmshPostViews(folder.file("external.opt")),
+                     folder.file("external.opt"));
+  const MeshInstance& coloured = description.meshes[0];
+  ASSERT_TRUE(coloured.warp);
+  EXPECT_EQ(coloured.warp->field, "displacement");
+  ASSERT_TRUE(coloured.colorBy);
+  EXPECT_EQ(coloured.colorBy->field, "stress");
+  EXPECT_EQ(coloured.colorBy->component.kind, FieldComponent::Kind::VonMises);
+  EXPECT_FALSE(coloured.arrows);
+  ASSERT_EQ(description.notes.size(), 1u);
+  EXPECT_EQ(description.notes[0],
+            folder.file("external.opt") + ": warning: lancer does not draw these gmsh options: View[0].Axes");
+
+  folder.write("arrows.opt", "View[0].Visible = 1;\nView[1].Name = \"stress\";\nView[2].Visible = 0;\n");
+  SceneDescription withArrows = oneMesh();
+  applyGmshPostViews(withArrows, mesh, readGmshPostViews(folder.file("arrows.opt")),
+                     folder.file("arrows.opt"));
+  const MeshInstance& drawn = withArrows.meshes[0];
+  EXPECT_FALSE(drawn.warp);
+  ASSERT_TRUE(drawn.arrows);
+  EXPECT_EQ(drawn.arrows->field, "displacement");
+  ASSERT_TRUE(drawn.colorBy);
+  EXPECT_EQ(drawn.colorBy->field, "stress");
+  EXPECT_TRUE(withArrows.notes.empty());
+}
+
 }  // namespace
 }  // namespace lancer
