@@ -91,9 +91,9 @@ TEST(GmshPostOptions, IsoValuesAreIsolinesOfTheColouredFieldAtGmshsValues) {
   // surface in its own material (no face takes the field's colours), the legend kept.
   const std::vector<Vec3>& colors = applied.scene.isolines->styles[1].valueColors;
   ASSERT_EQ(colors.size(), 8u);
-  const ColorMapKind map = applied.description.meshes[0].colorBy->map;
+  const ColorMap& map = applied.description.meshes[0].colorBy->map;
   for (int k = 0; k < 8; ++k)
-    EXPECT_LT(length(colors[static_cast<std::size_t>(k)] - colorMapLookup(map, k / 7.0f)), 1e-5f) << k;
+    EXPECT_LT(length(colors[static_cast<std::size_t>(k)] - map(k / 7.0f)), 1e-5f) << k;
   for (const std::uint8_t faceMap : applied.scene.fieldColors->faceColorMap) ASSERT_EQ(faceMap, 0);
   ASSERT_EQ(applied.scene.fieldColors->legends.size(), 1u);
   EXPECT_EQ(applied.scene.fieldColors->legends[0].low, 1);
