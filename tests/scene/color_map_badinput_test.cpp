@@ -1,11 +1,15 @@
 // Bad colour maps and log scales: an unknown map (with the closest name and the maps there are), a
 // bad colour in a list, a list too short, a log scale over values <= 0 (naming the field and its least
-// value, and what to do), more maps than a scene can hold.
+// value, and what to do); through the scene file and --color-map. The CLI exits with 2 and writes
+// nothing.
 #include <gtest/gtest.h>
+
+#include <filesystem>
 
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/scene.hpp"
+#include "support/cli.hpp"
 #include "support/files.hpp"
 #include "support/input_errors.hpp"
 
@@ -126,6 +130,37 @@ TEST(ColorMapBadInput, TooManyMapsInOneScene) {
       "scene.toml:73:12: error: color_by map \"" + last +
           "\": a scene colours its meshes with at most 63 different colour maps (or log ranges); give some "
           "meshes the same map");
+}
+
+TEST(ColorMapBadInput, CliColorMapSaysWhatIsWrongAndWritesNothing) {
+  test::ScratchFolder folder;
+  const std::string mesh = test::quoted(test::dataFile("fields/node_xy_v41_ascii.msh"));
+  const std::string out = folder.file("out.png");
+  const auto run = [&](const std::string& options) {
+    return test::runCli("render -q " + mesh + " --width 16 --height 16 " + options + " -o " +
+                        test::quoted(out));
+  };
+  test::CommandResult result = run("--color-by temperature --color-map virdis");
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_NE(
+      result.output.find("--color-map: error: \"virdis\" is not a colour map (did you mean 'viridis'?): use "
+                         "viridis, "),
+      std::string::npos)
+      << result.output;
+  result = run("--color-by temperature --color-map '#000080,whte'");
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_NE(
+      result.output.find("--color-map: error: colour 2: \"whte\" is not a colour (did you mean 'white'?)"),
+      std::string::npos)
+      << result.output;
+  result = run("--color-map magma");
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_NE(
+      result.output.find("--color-map: error: no mesh is coloured by a field: give --color-by FIELD too (or "
+                         "color_by in the scene)"),
+      std::string::npos)
+      << result.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 }  // namespace
