@@ -1,13 +1,14 @@
 // Bad colour maps and log scales: an unknown map (with the closest name and the maps there are), a
 // bad colour in a list, a list too short, a log scale over values <= 0 (naming the field and its least
-// value, and what to do); through the scene file and --color-map. The CLI exits with 2 and writes
-// nothing.
+// value, and what to do), gmsh's ColormapNumber past its maps; through the scene file, --color-map
+// and a gmsh options file. The CLI exits with 2 and writes nothing.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/color_by.hpp"
+#include "lancer/scene/gmsh_post_options.hpp"
 #include "lancer/scene/scene.hpp"
 #include "support/cli.hpp"
 #include "support/files.hpp"
@@ -130,6 +131,14 @@ TEST(ColorMapBadInput, TooManyMapsInOneScene) {
       "scene.toml:73:12: error: color_by map \"" + last +
           "\": a scene colours its meshes with at most 63 different colour maps (or log ranges); give some "
           "meshes the same map");
+}
+
+TEST(ColorMapBadInput, GmshColormapNumberPastItsMaps) {
+  test::ScratchFolder folder;
+  folder.write("bad.opt", "View[0].Name = \"stress\";\nView[0].ColormapNumber = 30;\n");
+  EXPECT_EQ(
+      test::messageOf([&] { readGmshPostViews(folder.file("bad.opt")); }),
+      folder.file("bad.opt") + ":2:26: error: View[0].ColormapNumber = 30: gmsh's colour maps are 0 to 24");
 }
 
 TEST(ColorMapBadInput, CliColorMapSaysWhatIsWrongAndWritesNothing) {

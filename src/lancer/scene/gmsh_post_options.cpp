@@ -44,9 +44,9 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path) {
       view.name = value.substr(first + 1, last == std::string::npos ? std::string::npos : last - first - 1);
       continue;
     }
-    constexpr std::array<std::string_view, 10> kNumbers = {
-        "TimeStep",      "VectorType", "DisplacementFactor", "RangeType", "CustomMin", "CustomMax",
-        "IntervalsType", "NbIso",      "ShowScale",          "Visible"};
+    constexpr std::array<std::string_view, 12> kNumbers = {
+        "TimeStep",      "VectorType", "DisplacementFactor", "RangeType",      "CustomMin",    "CustomMax",
+        "IntervalsType", "NbIso",      "ShowScale",          "ColormapNumber", "ColormapSwap", "Visible"};
     const auto known = std::find(kNumbers.begin(), kNumbers.end(), name);
     if (known == kNumbers.end()) continue;  // colours, fonts, the rest: not lancer's
     char* numberEnd = nullptr;
@@ -92,6 +92,16 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path) {
         break;
       case 8:
         view.showScale = whole != 0;
+        break;
+      case 9:
+        if (!ColorMap::named(fmt::format("gmsh:{}", whole)))
+          throw InputError(
+              SourceLocation{path, lineNumber, static_cast<std::int64_t>(equals + first + 2)},
+              fmt::format("View[{}].ColormapNumber = {}: gmsh's colour maps are 0 to 24", index, whole));
+        view.colormapNumber = whole;
+        break;
+      case 10:
+        view.colormapSwap = whole != 0;
         break;
       default:
         view.visible = whole != 0;
@@ -149,6 +159,8 @@ void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
     const std::vector<const MeshField*> steps = viewSteps(mesh, color.field);
     if (!steps.empty() && steps.front()->components == 9)
       color.component.kind = FieldComponent::Kind::VonMises;
+    color.map =
+        *ColorMap::named(fmt::format("gmsh:{}{}", colour->colormapNumber, colour->colormapSwap ? "_r" : ""));
   }
   if (colour->rangeType == 2 && colour->customMin < colour->customMax)
     color.range = std::pair{colour->customMin, colour->customMax};

@@ -1,8 +1,9 @@
 // What gmsh's GUI saved about its post-processing views (View[i].* in part.msh.opt, "File > Save
 // Model Options"), where lancer means the same: the time step shown, the displacement of a vector
 // view drawn as a deformed shape (VectorType = 5, DisplacementFactor), the range (RangeType,
-// CustomMin, CustomMax), iso-values or bands (IntervalsType, NbIso), the colour scale (ShowScale)
-// and which views are shown (Visible). View i is the i-th view of the mesh file, in file order.
+// CustomMin, CustomMax), iso-values or bands (IntervalsType, NbIso), the colour scale (ShowScale),
+// the colour map (ColormapNumber, ColormapSwap) and which views are shown (Visible). View i is the
+// i-th view of the mesh file, in file order.
 #pragma once
 
 #include <optional>
@@ -26,6 +27,8 @@ struct GmshPostView {
   int intervalsType = 2;                // 1 iso-values, 2 continuous, 3 discrete bands, 4 numeric
   int nbIso = 10;
   bool showScale = true;
+  int colormapNumber = 2;     // View[i].ColormapNumber: gmsh's map 0 to 24 (2, its default: jet)
+  bool colormapSwap = false;  // View[i].ColormapSwap: the map reversed
   bool visible = true;
   std::int64_t line = 0;  // the first line that sets an option of this view, for messages
 };
@@ -39,9 +42,11 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path);
 // displacement's magnitude; a hidden view colours nothing), with the range and step gmsh showed;
 // IntervalsType 1 (iso-values) adds isolines of the coloured field at gmsh's NbIso values (both ends
 // of the range included), 3 (discrete) NbIso colour bands, 2 (continuous) and 4 the plain map;
-// ShowScale puts the legend along the bottom, as gmsh draws its scale, or leaves it out. A mesh's
-// own color_by, isolines, bands and legend win, as do explicit --step and --warp. Throws InputError at the
-// options file for a view index past the mesh's views or a step past the view's last.
+// ShowScale puts the legend along the bottom, as gmsh draws its scale, or leaves it out; the view's
+// colours are gmsh's map "gmsh:N" (ColormapNumber, reversed with ColormapSwap). A mesh's own color_by
+// (its map too), isolines, bands and legend win, as do explicit --step and --warp. Throws InputError at
+// the options file for a view index past the mesh's views, a step past the view's last or a
+// ColormapNumber gmsh does not have.
 void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
                         const std::vector<GmshPostView>& views, const std::string& path);
 
