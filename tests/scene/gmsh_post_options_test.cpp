@@ -60,6 +60,30 @@ TEST(GmshPostOptions, TheViewRendersAsSetUp) {
   EXPECT_EQ(mesh.colorBy->legend, LegendPlacement::Bottom);
 }
 
+TEST(GmshPostOptions, TheViewTakesGmshsColourMap) {
+  // gmsh's default map (ColormapNumber 2, its jet) unless the view names another; ColormapSwap
+  // reverses it. A mesh's own color_by keeps its map.
+  const std::string path = test::dataFile("results/colormap.opt");
+  const std::vector<GmshPostView> views = readGmshPostViews(path);
+  ASSERT_EQ(views.size(), 3u);
+  EXPECT_EQ(views[0].colormapNumber, 2);
+  EXPECT_EQ(views[1].colormapNumber, 7);
+  EXPECT_TRUE(views[1].colormapSwap);
+  SceneDescription description = oneMesh();
+  const Mesh mesh = readMsh(description.meshes[0].file);
+  applyGmshPostViews(description, mesh, views, path);
+  ASSERT_TRUE(description.meshes[0].colorBy);
+  EXPECT_EQ(description.meshes[0].colorBy->map.name(), "gmsh:7_r");
+  EXPECT_EQ(description.meshes[0].colorBy->map, *ColorMap::named("gmsh:7_r"));
+  SceneDescription own = oneMesh();
+  ColorBy colorBy;
+  colorBy.field = "stress";
+  colorBy.map = *ColorMap::named("RdBu");
+  own.meshes[0].colorBy = colorBy;
+  applyGmshPostViews(own, mesh, views, path);
+  EXPECT_EQ(own.meshes[0].colorBy->map.name(), "RdBu");
+}
+
 // The description and scene of cantilever.msh under the options file `name` of tests/data/results.
 struct AppliedView {
   SceneDescription description;
@@ -91,9 +115,10 @@ TEST(GmshPostOptions, IsoValuesAreIsolinesOfTheColouredFieldAtGmshsValues) {
   // surface in its own material (no face takes the field's colours), the legend kept.
   const std::vector<Vec3>& colors = applied.scene.isolines->styles[1].valueColors;
   ASSERT_EQ(colors.size(), 8u);
-  const ColorMapKind map = applied.description.meshes[0].colorBy->map;
+  const ColorMap& map = applied.description.meshes[0].colorBy->map;
+  EXPECT_EQ(map.name(), "gmsh:2");  // gmsh's default map, ColormapNumber = 2
   for (int k = 0; k < 8; ++k)
-    EXPECT_LT(length(colors[static_cast<std::size_t>(k)] - colorMapLookup(map, k / 7.0f)), 1e-5f) << k;
+    EXPECT_LT(length(colors[static_cast<std::size_t>(k)] - map(k / 7.0f)), 1e-5f) << k;
   for (const std::uint8_t faceMap : applied.scene.fieldColors->faceColorMap) ASSERT_EQ(faceMap, 0);
   ASSERT_EQ(applied.scene.fieldColors->legends.size(), 1u);
   EXPECT_EQ(applied.scene.fieldColors->legends[0].low, 1);

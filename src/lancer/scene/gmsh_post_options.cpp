@@ -45,9 +45,10 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path) {
       view.name = value.substr(first + 1, last == std::string::npos ? std::string::npos : last - first - 1);
       continue;
     }
-    constexpr std::array<std::string_view, 11> kNumbers = {
-        "TimeStep",      "VectorType", "DisplacementFactor", "RangeType", "CustomMin",   "CustomMax",
-        "IntervalsType", "NbIso",      "ShowScale",          "Visible",   "ExternalView"};
+    constexpr std::array<std::string_view, 13> kNumbers = {
+        "TimeStep",      "VectorType", "DisplacementFactor", "RangeType",      "CustomMin",    "CustomMax",
+        "IntervalsType", "NbIso",      "ShowScale",          "ColormapNumber", "ColormapSwap", "Visible",
+        "ExternalView"};
     const auto known = std::find(kNumbers.begin(), kNumbers.end(), name);
     if (known == kNumbers.end()) {  // colours, fonts, the rest: named, not drawn
       // What gmsh writes of every view and no one sets: the read-only values, the step count, and
@@ -102,6 +103,16 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path) {
         view.showScale = whole != 0;
         break;
       case 9:
+        if (!ColorMap::named(fmt::format("gmsh:{}", whole)))
+          throw InputError(
+              SourceLocation{path, lineNumber, static_cast<std::int64_t>(equals + first + 2)},
+              fmt::format("View[{}].ColormapNumber = {}: gmsh's colour maps are 0 to 24", index, whole));
+        view.colormapNumber = whole;
+        break;
+      case 10:
+        view.colormapSwap = whole != 0;
+        break;
+      case 11:
         view.visible = whole != 0;
         break;
       default:
@@ -191,6 +202,8 @@ void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
     const std::vector<const MeshField*> steps = viewSteps(mesh, color.field);
     if (!steps.empty() && steps.front()->components == 9)
       color.component.kind = FieldComponent::Kind::VonMises;
+    color.map =
+        *ColorMap::named(fmt::format("gmsh:{}{}", colour->colormapNumber, colour->colormapSwap ? "_r" : ""));
   }
   if (colour->rangeType == 2 && colour->customMin < colour->customMax)
     color.range = std::pair{colour->customMin, colour->customMax};
