@@ -23,6 +23,7 @@
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/render/renderer.hpp"
+#include "lancer/scene/color_by.hpp"
 #include "lancer/scene/gmsh_post_options.hpp"
 #include "lancer/scene/gmsh_view.hpp"
 #include "lancer/scene/looks.hpp"
@@ -97,7 +98,23 @@ void applyOutputOverrides(const SceneOverrides& overrides, RenderOverrides& appl
   if (overrides.denoise) applied.denoise = true;
 }
 
-// --step, --warp, --color-by and --undeformed on every mesh of the description.
+// --color-map on every coloured mesh; `required`: an error when none is coloured.
+void applyColorMap(SceneDescription& description, const std::string& text, bool required) {
+  if (text.empty()) return;
+  const SourceLocation where{"--color-map"};
+  const ColorMap map = colorMapFromText(text, where);
+  bool coloured = false;
+  for (MeshInstance& mesh : description.meshes)
+    if (mesh.colorBy) {
+      mesh.colorBy->map = map;
+      coloured = true;
+    }
+  if (!coloured && required)
+    throw InputError(where,
+                     "no mesh is coloured by a field: give --color-by FIELD too (or color_by in the scene)");
+}
+
+// --step, --warp, --color-by, --color-map and --undeformed on every mesh of the description.
 void applyResultOverrides(SceneDescription& description, const SceneOverrides& overrides) {
   if (overrides.step) description.when = StepSelection{overrides.step, std::nullopt, "--step"};
   if (!overrides.warp.empty()) {
@@ -141,6 +158,8 @@ void applyResultOverrides(SceneDescription& description, const SceneOverrides& o
       mesh.colorBy = color;
     }
   }
+  // With --gmsh-view the view may colour the mesh: the map is applied again once it has.
+  applyColorMap(description, overrides.colorMap, !overrides.gmshView);
   if (!overrides.undeformed.empty()) {
     const UndeformedStyle style = overrides.undeformed == "edges"   ? UndeformedStyle::Edges
                                   : overrides.undeformed == "ghost" ? UndeformedStyle::Ghost
@@ -172,7 +191,7 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
           "Accelerator: bvh (default: the wide BVH), kdtree-sah (the kd-tree), kdtree-sah-exact (its slower "
           "build, the quality reference), kdtree-median or naive (brute force)")
       ->check(CLI::IsMember(choices(kAccelNames)));
-  command.add_option("--threads", overrides.threads, "Worker threads (default 0: all cores)")
+  command.add_option("--threads", overrides.threads, "Worker threads (default 0: one per usable CPU)")
       ->check(CLI::Range(0, kMaxThreads));
   CLI::Option* srgb =
       command.add_flag("--srgb", overrides.srgb,
@@ -206,6 +225,10 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
       "Deformed shape: FIELD[:FACTOR], every node moved by FACTOR (default 1) times its vector");
   command.add_option("--color-by", overrides.colorBy,
                      "Colour by a field: FIELD[:COMPONENT], COMPONENT magnitude, x, y, z, 0-8 or von_mises");
+  command.add_option(
+      "--color-map", overrides.colorMap,
+      "The colours' map: a matplotlib name (viridis, turbo, RdBu, jet, ...; NAME_r reversed), gmsh:N "
+      "(gmsh's View.ColormapNumber) or colours \"#000080,white,#800000\"; see docs/fields.md");
   command
       .add_option("--undeformed", overrides.undeformed, "With --warp, the shape before it: edges or ghost")
       ->check(CLI::IsMember({"none", "edges", "ghost"}));
@@ -317,9 +340,10 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     if (path.empty() && !description.meshes.empty()) path = description.meshes.front().file + ".opt";
     description.camera.gmshView = readGmshView(path);
     // Its View[i] options (steps, warps, ranges) need the views' names: applied to the meshes read.
-    request.withMeshes = [views = readGmshPostViews(path), path](SceneDescription& scene,
-                                                                 const std::vector<Mesh>& meshes) {
+    request.withMeshes = [views = readGmshPostViews(path), path, colorMap = overrides.colorMap](
+                             SceneDescription& scene, const std::vector<Mesh>& meshes) {
       if (!meshes.empty()) applyGmshPostViews(scene, meshes.front(), views, path);
+      applyColorMap(scene, colorMap, true);
     };
     if (request.quickLookMesh) placeQuickLookLights(description, *request.quickLookMesh);  // from gmsh's side
   }

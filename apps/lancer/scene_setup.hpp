@@ -38,10 +38,11 @@ struct SceneOverrides {
   bool quiet = false;
   bool timings = false;  // --timings: the preparation's stages on stderr
   // Results (docs/results.md): --step K, --warp FIELD[:FACTOR], --color-by FIELD[:COMPONENT],
-  // --undeformed edges|ghost, applied to every mesh.
+  // --color-map NAME, --undeformed edges|ghost, applied to every mesh.
   std::optional<int> step;
   std::string warp;
   std::string colorBy;
+  std::string colorMap;
   std::string undeformed;
   std::string integrator;       // --integrator whitted|path|ao
   std::optional<double> noise;  // --noise: adaptive stop, in (0, 1)

@@ -1,9 +1,28 @@
 """lancer.from_gmsh: the current model of a live gmsh session (the `gmsh` Python module) as a
 lancer.Mesh, without writing a file. gmsh is imported only when this is called."""
 
+import contextlib
+
 import numpy as np
 
 from . import _lancer
+
+
+@contextlib.contextmanager
+def _errors_raise(gmsh):
+    """gmsh's API aborts the process on an error (General.AbortOnError = 2, its default in a script:
+    getModelData of a list-based view kills the interpreter); within this, errors raise exceptions,
+    and the user's setting comes back after."""
+    try:
+        saved = gmsh.option.getNumber("General.AbortOnError")
+    except Exception:  # a gmsh without the option: nothing to change
+        yield
+        return
+    gmsh.option.setNumber("General.AbortOnError", 0)
+    try:
+        yield
+    finally:
+        gmsh.option.setNumber("General.AbortOnError", saved)
 
 
 def _gmsh():
@@ -35,9 +54,10 @@ def _entities_to_take(gmsh, dims):
 
 def _view_fields(gmsh, tag_to_index, node_count):
     """Every step of every view holding model data (gmsh.view.getModelData): node data as values per
-    mesh node (NaN where the view gives none), element data as (element tags, values), each with its
-    step index and time."""
-    node_fields, element_fields = [], []
+    mesh node (NaN where the view gives none), element data as (element tags, values), element-node
+    data as (element tags, nodes per element, values), each with its step index and time; and the
+    names of the views without model data (list-based views, read from .pos files)."""
+    node_fields, element_fields, element_node_fields, list_views = [], [], [], []
     for view in gmsh.view.getTags():
         index = gmsh.view.getIndex(view)
         name = gmsh.option.getString(f"View[{index}].Name")
@@ -46,9 +66,17 @@ def _view_fields(gmsh, tag_to_index, node_count):
             try:
                 data_type, tags, data, time, components = gmsh.view.getModelData(view, step)
             except Exception:  # a list-based view (no model data), or a step without data
+                if step == 0 and name not in list_views:
+                    list_views.append(name)
                 continue
             components = int(components)
-            if data_type not in ("NodeData", "ElementData") or components <= 0 or len(tags) == 0:
+            if data_type not in ("NodeData", "ElementData", "ElementNodeData") or components <= 0 or len(tags) == 0:
+                continue
+            if data_type == "ElementNodeData":
+                counts = np.array([len(d) // components for d in data], dtype=np.int64)
+                values = np.concatenate([np.asarray(d, dtype=float)[:n * components] for d, n in zip(data, counts)])
+                element_node_fields.append((name, components, np.asarray(tags, dtype=np.int64), counts, values,
+                                            step, float(time)))
                 continue
             rows = np.array([np.asarray(d, dtype=float)[:components] for d in data]).reshape(len(tags), components)
             tags = np.asarray(tags, dtype=np.int64)
@@ -61,18 +89,24 @@ def _view_fields(gmsh, tag_to_index, node_count):
             slots[known] = tag_to_index[tags[known]]
             values[slots[slots >= 0]] = rows[slots >= 0]
             node_fields.append((name, components, values.reshape(-1), step, float(time)))
-    return node_fields, element_fields
+    return node_fields, element_fields, element_node_fields, list_views
 
 
 def from_gmsh(dim=2, name=None):
     """The mesh of gmsh's current model: dim=2 its surfaces, dim=3 also its volumes, whose skin and
     interfaces become faces as the .msh reader makes them. Physical groups and their names come
-    along, and every step of each view with node or element data (gmsh.view.addModelData)
-    becomes a field for color_by and warp, as the .msh reader makes one of $NodeData and $ElementData. Call it
-    after gmsh.model.mesh.generate(dim)."""
+    along, and every step of each view with node, element or element-node data
+    (gmsh.view.addModelData, a merged .msh result) becomes a field for color_by and warp, as the .msh
+    reader makes one of $NodeData, $ElementData and $ElementNodeData. List-based views (a merged .pos)
+    are named in a warning and left out. Call it after gmsh.model.mesh.generate(dim)."""
     if dim not in (2, 3):
         raise ValueError(f"dim={dim!r}: use 2 (surfaces) or 3 (surfaces and volumes)")
     gmsh = _gmsh()
+    with _errors_raise(gmsh):
+        return _from_gmsh(gmsh, dim, name)
+
+
+def _from_gmsh(gmsh, dim, name):
     node_tags, coords, _ = gmsh.model.mesh.getNodes()
     if len(node_tags) == 0:
         raise ValueError(f"the current gmsh model ('{gmsh.model.getCurrent()}') has no mesh nodes: call "
@@ -101,16 +135,22 @@ def from_gmsh(dim=2, name=None):
         group_name = gmsh.model.getPhysicalName(group_dim, tag)
         if group_name:
             group_names[(group_dim, tag)] = group_name
-    node_fields, element_fields = _view_fields(gmsh, tag_to_index, len(node_tags))
+    node_fields, element_fields, element_node_fields, list_views = _view_fields(gmsh, tag_to_index,
+                                                                                 len(node_tags))
+    if list_views:
+        import warnings
+        warnings.warn(f"lancer.from_gmsh: the list-based views {', '.join(repr(v) for v in list_views)} (merged "
+                      f".pos files) are left out: render the .pos files with lancer itself (lancer render "
+                      f"mesh.msh view.pos), or save them as model data in gmsh", stacklevel=3)
     return _lancer._mesh_from_elements(points, blocks, group_names, name or f"gmsh:{gmsh.model.getCurrent()}",
-                                       node_fields, element_fields)
+                                       node_fields, element_fields, element_node_fields)
 
 
 # The General.* options that make gmsh's view (lancer/scene/gmsh_view.hpp reads the same ones).
 _VIEW_OPTIONS = ["Trackball", "TrackballQuaternion0", "TrackballQuaternion1", "TrackballQuaternion2",
                  "TrackballQuaternion3", "RotationX", "RotationY", "RotationZ", "TranslationX", "TranslationY",
                  "TranslationZ", "ScaleX", "ScaleY", "ScaleZ", "Orthographic", "ClipFactor",
-                 "DisplayBorderFactor"]
+                 "DisplayBorderFactor", "MinX", "MinY", "MinZ", "MaxX", "MaxY", "MaxZ"]
 
 
 def camera_from_gmsh():
@@ -119,9 +159,10 @@ def camera_from_gmsh():
     gmsh. The model is framed by its bounding box when rendered, as gmsh frames it."""
     gmsh = _gmsh()
     options = {}
-    for name in _VIEW_OPTIONS:
-        try:
-            options[name] = gmsh.option.getNumber("General." + name)
-        except Exception:  # an option this gmsh does not have: lancer uses gmsh 4.8's default
-            pass
+    with _errors_raise(gmsh):
+        for name in _VIEW_OPTIONS:
+            try:
+                options[name] = gmsh.option.getNumber("General." + name)
+            except Exception:  # an option this gmsh does not have: lancer uses gmsh 4.8's default
+                pass
     return _lancer._camera_from_gmsh_options(options)

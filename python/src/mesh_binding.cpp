@@ -197,10 +197,13 @@ void rejectInfinite(const PointArray& values, int components, const std::string&
 // lancer.from_gmsh. blocks: [(type, dimension, physical, entity, nodes, tags)], nodes 0-based,
 // nodeCount per element, tags one per element (or None); group_names: {(dimension, tag): name};
 // node_fields: [(name, components, values (N * components,)[, step, time])]; element_fields: [(name,
-// components, tags (R,), values (R * components,)[, step, time])], tags naming the blocks' elements.
+// components, tags (R,), values (R * components,)[, step, time])], tags naming the blocks' elements;
+// element_node_fields: [(name, components, tags (R,), node_counts (R,), values (sum(node_counts) *
+// components,)[, step, time])], each record's values in its element's node order.
 std::shared_ptr<Mesh> meshFromElementBlocks(const py::array& pointsIn, const py::list& blockList,
                                             const py::dict& groupNames, const std::string& name,
-                                            const py::list& fieldList, const py::list& elementFieldList) {
+                                            const py::list& fieldList, const py::list& elementFieldList,
+                                            const py::list& elementNodeFieldList) {
   const PointArray points = checkedPoints(pointsIn, 0);
   const std::int64_t pointCount = points.shape(0);
   std::vector<std::vector<std::uint32_t>> indices;  // the converted arrays the blocks' spans point into
@@ -279,10 +282,43 @@ std::shared_ptr<Mesh> meshFromElementBlocks(const py::array& pointsIn, const py:
                              std::span<const double>(array.data(), static_cast<std::size_t>(array.size())),
                              step, time});
   }
+  std::vector<std::vector<std::uint32_t>> recordNodeCounts;
+  std::vector<ElementNodeFieldInput> elementNodeFields;
+  for (const py::handle item : elementNodeFieldList) {
+    const auto tuple = item.cast<py::tuple>();
+    const auto [fieldName, components, tagArray, countArray, values] =
+        tuple[py::slice(0, 5, 1)].cast<std::tuple<std::string, int, py::array, py::array, py::array>>();
+    const auto [step, time] = py::len(tuple) >= 7 ? tuple[py::slice(5, 7, 1)].cast<std::pair<int, double>>()
+                                                  : std::pair<int, double>{0, 0.0};
+    const std::vector<std::uint64_t>& tags =
+        recordTags.emplace_back(checkedElementTags(tagArray, "element-node field tags"));
+    const IndexArray counts = checkedIntegers(countArray, "element-node field node counts");
+    std::vector<std::uint32_t>& nodeCounts = recordNodeCounts.emplace_back();
+    std::size_t total = 0;
+    for (py::ssize_t i = 0; i < counts.size(); ++i) {
+      if (counts.data()[i] < 1 || counts.data()[i] > 1000)
+        valueError(fmt::format("element-node field '{}' gives {} nodes for an element: 1 to 1000", fieldName,
+                               counts.data()[i]));
+      nodeCounts.push_back(static_cast<std::uint32_t>(counts.data()[i]));
+      total += nodeCounts.back();
+    }
+    auto& array = fieldValues.emplace_back(PointArray::ensure(values));
+    if (components <= 0 || nodeCounts.size() != tags.size() ||
+        static_cast<std::size_t>(array.size()) != total * static_cast<std::size_t>(components))
+      valueError(
+          fmt::format("element-node field '{}' has {} values for {} elements of {} nodes in all and {} "
+                      "components",
+                      fieldName, array.size(), tags.size(), total, components));
+    rejectInfinite(array, components, fieldName, {});
+    elementNodeFields.push_back(
+        {fieldName, components, tags, nodeCounts,
+         std::span<const double>(array.data(), static_cast<std::size_t>(array.size())), step, time});
+  }
   const std::span<const Vec3d> xyz(reinterpret_cast<const Vec3d*>(points.data()),
                                    static_cast<std::size_t>(pointCount));
   py::gil_scoped_release release;
-  return std::make_shared<Mesh>(meshFromElements(xyz, blocks, std::move(named), name, fields, elementFields));
+  return std::make_shared<Mesh>(
+      meshFromElements(xyz, blocks, std::move(named), name, fields, elementFields, elementNodeFields));
 }
 
 py::array_t<double> pointsOf(const Mesh& mesh) {
@@ -417,7 +453,8 @@ void bindMesh(py::module_& module) {
       "views: list-based .pos files put on the mesh by their elements' coordinates, each step of each "
       "view an element-node field");
   module.def("_mesh_from_elements", &meshFromElementBlocks, py::arg("points"), py::arg("blocks"),
-             py::arg("group_names"), py::arg("name"), py::arg("node_fields"), py::arg("element_fields"));
+             py::arg("group_names"), py::arg("name"), py::arg("node_fields"), py::arg("element_fields"),
+             py::arg("element_node_fields") = py::list());
 }
 
 }  // namespace lancer::python

@@ -1,9 +1,14 @@
 """lancer.from_gmsh: a live gmsh model gives the mesh (and the image) its .msh file gives."""
 
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 
 import lancer
+
+from conftest import data
 
 import gmsh  # python3-gmsh: CMake checks it is there when the tests are built
 
@@ -160,7 +165,41 @@ def test_a_field_from_gmsh_colours_the_quick_look(session):
     assert np.any(ranged != coloured)
     with pytest.raises(lancer.InputError, match="height"):  # names the fields the mesh has
         lancer.render(lancer.Scene.quick_look(mesh, color_by="temperature"), width=16, height=12)
-    with pytest.raises(ValueError, match="color_map='rainbow'"):
-        lancer.Scene.quick_look(mesh, color_by="height", color_map="rainbow")
+    with pytest.raises(ValueError,
+                       match=r"color_map='rainbw': \"rainbw\" is not a colour map \(did you mean 'rainbow'"):
+        lancer.Scene.quick_look(mesh, color_by="height", color_map="rainbw")
     with pytest.raises(ValueError, match="color_range"):
         lancer.Scene.quick_look(mesh, color_by="height", color_range=(1.0, 1.0))
+
+
+def test_element_node_data_is_what_the_file_gives(session):
+    # gmsh opens the .msh with its views (scripts/make_element_node_fixtures.py): $ElementNodeData
+    # read through gmsh's API must be the reader's, corner for corner.
+    path = str(data("tests", "data", "element_node", "tet_v41_bin.msh"))
+    gmsh.open(path)
+    live, read = lancer.from_gmsh(dim=3), lancer.read_msh(path)
+    for name in ("g", "jump", "u"):
+        assert live.field(name).shape == read.field(name).shape
+        assert np.allclose(live.field(name), read.field(name), equal_nan=True)
+    assert live.steps("g") == [(0, 0.0), (1, 0.5)]
+
+
+def test_list_based_views_do_not_kill_the_interpreter(tmp_path):
+    # gmsh's API aborts the process on getModelData of a list-based view (a merged .pos) unless
+    # General.AbortOnError is 0: from_gmsh sets it around its calls, warns, and restores it.
+    script = tmp_path / "merge.py"
+    script.write_text(f"""
+import warnings
+import gmsh
+import lancer
+gmsh.initialize(["gmsh", "-v", "0"])
+gmsh.open({str(data("tests", "data", "pos", "magnet", "magnet.msh"))!r})
+gmsh.merge({str(data("tests", "data", "pos", "magnet", "az.pos"))!r})
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    mesh = lancer.from_gmsh()
+print(len(caught), "list-based views 'az'" in str(caught[0].message), gmsh.option.getNumber("General.AbortOnError"))
+""")
+    result = subprocess.run([sys.executable, str(script)], capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.split() == ["1", "True", "2.0"]

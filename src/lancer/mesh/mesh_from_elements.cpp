@@ -14,7 +14,8 @@ int elementNodeCount(int type) {
 Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBlock> blocks,
                       std::vector<PhysicalGroup> namedGroups, const std::string& name,
                       std::span<const NodeFieldInput> nodeFields,
-                      std::span<const ElementFieldInput> elementFields) {
+                      std::span<const ElementFieldInput> elementFields,
+                      std::span<const ElementNodeFieldInput> elementNodeFields) {
   const Stopwatch stopwatch;
   MshMeshAssembler assembler;
   // Tags 1..N, as gmsh numbers nodes: every node counts as one the caller gave (for node fields).
@@ -35,7 +36,7 @@ Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBloc
   }
   assembler.reserveFaces(faceEstimate);
   // Faces remember their element only when a field needs it (8 bytes a face), as in the reader.
-  if (!elementFields.empty()) assembler.trackElements();
+  if (!elementFields.empty() || !elementNodeFields.empty()) assembler.trackElements();
   for (const ElementBlock& block : blocks) {
     const auto nodeCount = static_cast<std::size_t>(elementNodeCount(block.type));
     if (nodeCount == 0) continue;  // the caller checked the types; an unknown one has no nodes to read
@@ -63,6 +64,23 @@ Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBloc
     raw.field.values.assign(input.values.begin(), input.values.end());
     raw.tags.assign(input.tags.begin(), input.tags.end());
     assembler.elementFields.push_back(std::move(raw));
+  }
+  for (const ElementNodeFieldInput& input : elementNodeFields) {
+    MshMeshAssembler::ElementNodeField raw;
+    raw.field.name = input.name;
+    raw.field.at = FieldAt::kCorner;
+    raw.field.components = input.components;
+    raw.field.step = input.step;
+    raw.field.time = input.time;
+    raw.records.tags.assign(input.tags.begin(), input.tags.end());
+    raw.records.nodeCount.assign(input.nodeCounts.begin(), input.nodeCounts.end());
+    std::uint64_t first = 0;
+    for (const std::uint32_t nodes : input.nodeCounts) {
+      raw.records.firstValue.push_back(first);
+      first += std::uint64_t{nodes} * static_cast<std::uint64_t>(input.components);
+    }
+    raw.records.values.assign(input.values.begin(), input.values.end());
+    assembler.elementNodeFields.push_back(std::move(raw));
   }
   MeshSourceInfo source;
   source.path = name;

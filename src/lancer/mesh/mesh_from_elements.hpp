@@ -45,12 +45,26 @@ struct ElementFieldInput {
   double time = 0;
 };
 
+// Values of one field at each element's nodes (a gmsh view's ElementNodeData step): per record, an
+// element tag, its number of nodes and that many nodes' `components` values in the element's node
+// order. Each face corner takes its element's value at that node (MeshField's FieldAt::kCorner).
+struct ElementNodeFieldInput {
+  std::string name;
+  int components = 1;
+  std::span<const std::uint64_t> tags;
+  std::span<const std::uint32_t> nodeCounts;  // one per tag
+  std::span<const double> values;             // sum(nodeCounts) * components, record after record
+  int step = 0;
+  double time = 0;
+};
+
 // The caller has checked the input (finite coordinates, indices below points.size(), known types
 // with whole elements): this trusts it. `name` is the mesh's name in messages.
 Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBlock> blocks,
                       std::vector<PhysicalGroup> namedGroups, const std::string& name,
                       std::span<const NodeFieldInput> nodeFields = {},
-                      std::span<const ElementFieldInput> elementFields = {});
+                      std::span<const ElementFieldInput> elementFields = {},
+                      std::span<const ElementNodeFieldInput> elementNodeFields = {});
 
 // Triangles and quads already made, with a physical and an entity tag per face (lancer.Mesh from
 // numpy arrays): the same mesh as the elements would give, without going element by element.

@@ -222,6 +222,9 @@ struct SceneDescription {
   // The quick look's key and fill are placed for the automatic camera: an animation turns them with
   // the camera, so every frame is lit the same way.
   bool lightsFollowCamera = false;
+  // For the user, with the meshes' warnings (Scene::warnings): what a front end read and does not
+  // apply, as "file:line: warning: ...".
+  std::vector<std::string> notes;
 };
 
 }  // namespace lancer

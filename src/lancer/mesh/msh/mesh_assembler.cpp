@@ -493,7 +493,18 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
     remapNodeValues(field.values, field.components, usedNode, usedCount, nodes.taggedCount(),
                     derivedSources_);
   std::sort(elementAliases_.begin(), elementAliases_.end());
-  mapElementFields(mesh);
+  // Corner order becomes slot order (cornerSlot, mesh.hpp): the orientation of shells turns faces
+  // after this, and a slot follows its vertex wherever the winding puts it.
+  std::vector<MshCornerNodes> cornerSlots(faceCornerNode_.size());
+  parallelFor(faceCornerNode_.size(), threads_, kFaceGrain, [&](std::size_t f) {
+    const MeshFace& face = mesh.faces[f];
+    MshCornerNodes& slots = cornerSlots[f];
+    slots.fill(kNoElementNode);
+    for (int c = 0; c < face.cornerCount(); ++c)
+      slots[static_cast<std::size_t>(cornerSlot(face, c))] = faceCornerNode_[f][static_cast<std::size_t>(c)];
+  });
+  faceCornerNode_ = std::vector<MshCornerNodes>();
+  mapElementFields(mesh, cornerSlots);
   if (keepFieldMapping_) {
     // The reader's field sections are read after this, into the mesh's order: what it takes.
     auto mapping = std::make_shared<MshFieldMapping>();
@@ -504,32 +515,27 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
     mapping->usedCount = usedCount;
     mapping->derivedSources = std::move(derivedSources_);
     mapping->faceElement = std::move(faceElement_);
-    // Corner order becomes slot order (cornerSlot, mesh.hpp): the orientation of shells turns faces
-    // after this, and a slot follows its vertex wherever the winding puts it.
-    mapping->faceCornerNode.resize(faceCornerNode_.size());
-    parallelFor(faceCornerNode_.size(), threads_, kFaceGrain, [&](std::size_t f) {
-      const MeshFace& face = mesh.faces[f];
-      MshCornerNodes& slots = mapping->faceCornerNode[f];
-      slots.fill(kNoElementNode);
-      for (int c = 0; c < face.cornerCount(); ++c)
-        slots[static_cast<std::size_t>(cornerSlot(face, c))] =
-            faceCornerNode_[f][static_cast<std::size_t>(c)];
-    });
+    mapping->faceCornerNode = std::move(cornerSlots);
     mapping->elementAliases = std::move(elementAliases_);
     fieldMapping_ = std::move(mapping);
   }
   faceElement_ = std::vector<std::uint64_t>();
-  faceCornerNode_ = std::vector<MshCornerNodes>();
   return mesh;
 }
 
-void MshMeshAssembler::mapElementFields(Mesh& mesh) {
+void MshMeshAssembler::mapElementFields(Mesh& mesh, const std::vector<MshCornerNodes>& cornerSlots) {
   for (ElementField& raw : elementFields) {
     raw.field.values = mapElementValues(std::move(raw.tags), raw.field.values, raw.field.components,
                                         faceElement_, elementAliases_);
     mesh.fields.push_back(std::move(raw.field));
   }
   elementFields.clear();
+  for (ElementNodeField& raw : elementNodeFields) {
+    raw.field.values = mapElementNodeValues(std::move(raw.records), raw.field.components, faceElement_,
+                                            cornerSlots, elementAliases_);
+    mesh.fields.push_back(std::move(raw.field));
+  }
+  elementNodeFields.clear();
 }
 
 }  // namespace lancer

@@ -31,6 +31,13 @@ class MshMeshAssembler {
     std::vector<std::uint64_t> tags;
   };
   std::vector<ElementField> elementFields;
+  // Element-node data steps (ElementNodeData): each element's records; finish() gives every face
+  // corner its element's value at that node.
+  struct ElementNodeField {
+    MeshField field;
+    ElementNodeRecords records;
+  };
+  std::vector<ElementNodeField> elementNodeFields;
   // Set before the elements are read when the file has $ElementData or $ElementNodeData (reader.cpp
   // reads such a file again): faces then remember their element's tag and where each of their
   // corners is among the element's nodes (16 bytes per face, only for such files).
@@ -56,7 +63,7 @@ class MshMeshAssembler {
     element_ = tag;
     if (trackElements_) {
       elementNodes_ = nodeIndex;
-      elementNodeCount_ = mshElementType(type).nodeCount;
+      if (type != elementType_) elementType_ = type, elementNodeCount_ = mshElementType(type).nodeCount;
     }
     switch (type) {
       case 2:
@@ -136,7 +143,7 @@ class MshMeshAssembler {
   void removeFaces(const std::vector<std::uint8_t>& removed);
   void addVolumeFace(const MshVolumeFace& face);
   void appendVolumeBoundary(MeshSourceInfo& source);
-  void mapElementFields(Mesh& mesh);
+  void mapElementFields(Mesh& mesh, const std::vector<MshCornerNodes>& cornerSlots);
 
   std::vector<MeshFace> faces_;
   std::vector<std::int32_t> facePhysical_;
@@ -156,6 +163,7 @@ class MshMeshAssembler {
   std::vector<MshCornerNodes> faceCornerNode_;
   std::vector<std::array<std::uint16_t, 9>> volumeFaceNodes_;
   const std::uint32_t* elementNodes_ = nullptr;
+  int elementType_ = 0;  // of elementNodeCount_
   int elementNodeCount_ = 0;
   const MshVolumeFace* volumeFace_ = nullptr;
   const std::array<std::uint16_t, 9>* volumeFaceNodeOrder_ = nullptr;

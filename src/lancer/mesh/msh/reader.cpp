@@ -369,6 +369,17 @@ bool isViewContent(std::span<const char> bytes, const std::string& name) {
   return extension == ".pos";
 }
 
+// Whether the file's last section is $ElementData or $ElementNodeData: its last "$End" marker, read
+// from the end (a constant cost, whatever the file's size).
+bool endsWithElementData(std::span<const char> bytes) {
+  const std::size_t tail = std::min<std::size_t>(bytes.size(), 64);
+  const std::string_view end(bytes.data() + bytes.size() - tail, tail);
+  const std::size_t marker = end.rfind("$End");
+  if (marker == std::string_view::npos) return false;
+  const std::string_view name = end.substr(marker);
+  return name.starts_with("$EndElementData") || name.starts_with("$EndElementNodeData");
+}
+
 Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteSource& byteSource,
                int threads) {
   if (isViewContent(bytes, name)) {
@@ -382,10 +393,12 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteS
     return mesh;
   }
   // Faces remember their element (16 bytes each) only when a $ElementData or $ElementNodeData needs
-  // it. gmsh writes them after $Elements, so the first read does not track, and meeting one reads the
-  // file again with tracking: twice the load time for those files only, and no cost (not even a
-  // scan) for others.
-  for (const bool track : {false, true}) {
+  // it. gmsh writes them after $Elements: a file whose last section is one (a solver's result, GetDP's
+  // -v2 output, views gmsh appended) tracks from the start; any other reads untracked, and meeting
+  // one reads the file again with tracking (twice the load time, for files whose element data
+  // comes before their last section only).
+  const bool trackFirst = endsWithElementData(bytes);
+  for (const bool track : {trackFirst, true}) {
     MshCursor cursor(bytes, name);
     if (bytes.empty()) cursor.failFile("the file is empty");
     if (!looksLikeMsh(bytes)) {
