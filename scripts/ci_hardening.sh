@@ -103,7 +103,7 @@ if ! skipped fuzz; then
       "$work/$target" "fuzz/corpus/$target" 2>"$work/$target.log"
   }
   # As many fuzzers at a time as cores: each still runs FUZZ_SECONDS on a core of its own.
-  targets=(msh_reader scene_loader image_writer)
+  targets=(msh_reader scene_loader image_writer pos_reader)
   for ((first = 0; first < ${#targets[@]}; first += jobs)); do
     batch=("${targets[@]:first:jobs}")
     pids=()
