@@ -8,6 +8,7 @@
 
 #include "lancer/mesh/msh_reader.hpp"
 #include "support/files.hpp"
+#include "support/input_errors.hpp"
 
 namespace lancer {
 namespace {
@@ -17,24 +18,11 @@ std::string fixture(const std::string& name) {
   return {bytes.begin(), bytes.end()};
 }
 
-std::string replaceOnce(std::string text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using test::replaceOnce;
 
 // The reader's first warning, or "" when it gave none; the mesh must load with its faces.
 std::string warningOf(const std::string& bytes, std::size_t* fields = nullptr) {
-  try {
-    const Mesh mesh = readMshFromMemory(bytes, "az.pos");
-    EXPECT_GT(mesh.faceCount(), 0u);
-    if (fields) *fields = mesh.fields.size();
-    return mesh.source.warnings.empty() ? "" : mesh.source.warnings.front();
-  } catch (const InputError& error) {
-    ADD_FAILURE() << "the mesh did not load: " << error.what();
-    return error.what();
-  }
+  return test::firstReaderWarning(bytes, "az.pos", fields);
 }
 
 const std::string kAz = "getdp/magnet_v2_az.pos";

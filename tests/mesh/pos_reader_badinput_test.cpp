@@ -21,12 +21,7 @@ std::string errorOf(const std::string& text, const std::string& name = "f.pos") 
   return test::messageOf([&] { readPosFromMemory(std::span<const char>(text.data(), text.size()), name); });
 }
 
-std::string replaceOnce(std::string text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using test::replaceOnce;
 
 // Adds a failure unless `message` starts with `where` ("f.pos:3:1") and ": error: ", then holds `part`.
 void expectError(const std::string& message, const std::string& where, const std::string& part) {

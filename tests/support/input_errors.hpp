@@ -18,4 +18,14 @@ std::string sceneErrorOf(std::string_view text, const std::string& fileName = "s
 void expectSceneErrorContains(std::string_view text, std::string_view part,
                               const std::string& fileName = "scene.toml");
 
+// `text` with its first `from` replaced by `to`; a gtest failure when `from` is not in it (the edit
+// of a fixture that no longer matches is a broken test, not a pass).
+std::string replaceOnce(std::string text, const std::string& from, const std::string& to);
+
+// The .msh reader's first warning for `bytes` read as the file `name` ("name:line:col: warning: ..."),
+// or "" when it gave none; a gtest failure unless the mesh loads with faces. fields: how many fields
+// it kept.
+std::string firstReaderWarning(const std::string& bytes, const std::string& name,
+                               std::size_t* fields = nullptr);
+
 }  // namespace lancer::test

@@ -193,6 +193,30 @@ void readNodeRecords(MshCursor& cursor, const MshFieldSection& section, const Ms
                   mapping.nodes.taggedCount(), mapping.derivedSources);
 }
 
+// Records of element data naming a tag outside the file's element tags: dropped, counted, and said
+// in one warning naming the first. Tag 0 is gmsh's placeholder for an element it did not save (Save
+// View writes one for each point of a model without physical points): dropped without a word, as
+// gmsh itself reads it.
+struct DroppedElements {
+  std::uint64_t count = 0, first = 0;
+  const char* firstAt = nullptr;
+
+  void check(std::uint64_t tag, const MshFieldMapping& mapping, const char* recordAt) {
+    if (tag != 0 && (tag < mapping.minElementTag || tag > mapping.maxElementTag) && count++ == 0)
+      first = tag, firstAt = recordAt;
+  }
+  void warn(MshCursor& cursor, const char* section, const std::string& view, std::uint64_t records,
+            std::vector<std::string>& warnings) const {
+    if (count == 0) return;
+    warnings.push_back(formatInputWarning(
+        cursor.locate(firstAt),
+        fmt::format("{} '{}' gives values for {} element{} that $Elements does not hold (the first: element "
+                    "{}); they were dropped and the other {} kept",
+                    section, view, count, count == 1 ? "" : "s", static_cast<std::int64_t>(first),
+                    records - count)));
+  }
+};
+
 // The records' values per face, from the element each face came from.
 void readElementRecords(MshCursor& cursor, const MshFieldSection& section, const MshFieldMapping& mapping,
                         MeshField& field, std::vector<std::string>& warnings) {
@@ -204,26 +228,16 @@ void readElementRecords(MshCursor& cursor, const MshFieldSection& section, const
   std::vector<std::uint64_t> tags;
   values.reserve(section.count * components);
   tags.reserve(section.count);
-  std::uint64_t dropped = 0, firstDropped = 0;
-  const char* firstDroppedAt = nullptr;
+  DroppedElements dropped;
   for (std::uint64_t i = 0; i < section.count; ++i) {
     const char* recordAt = binary ? cursor.position() : cursor.tokenStart();
     const std::uint64_t tag = readRecordTag(cursor, binary, "an element tag");
-    // Tag 0 is gmsh's placeholder for an element it did not save (Save View writes one for each
-    // point of a model without physical points): dropped without a word, as gmsh itself reads it.
-    if (tag != 0 && (tag < mapping.minElementTag || tag > mapping.maxElementTag) && dropped++ == 0)
-      firstDropped = tag, firstDroppedAt = recordAt;
+    dropped.check(tag, mapping, recordAt);
     tags.push_back(tag);
     for (std::uint64_t c = 0; c < components; ++c)
       values.push_back(readFieldValue(cursor, binary, "$ElementData", field.name, "element", tag));
   }
-  if (dropped)
-    warnings.push_back(formatInputWarning(
-        cursor.locate(firstDroppedAt),
-        fmt::format("$ElementData '{}' gives values for {} element{} that $Elements does not hold "
-                    "(the first: element {}); they were dropped and the other {} kept",
-                    field.name, dropped, dropped == 1 ? "" : "s", static_cast<std::int64_t>(firstDropped),
-                    section.count - dropped)));
+  dropped.warn(cursor, "$ElementData", field.name, section.count, warnings);
   field.values = mapElementValues(std::move(tags), values, field.components, mapping.faceElement,
                                   mapping.elementAliases);
 }
@@ -237,14 +251,13 @@ void readElementNodeRecords(MshCursor& cursor, const MshFieldSection& section, c
   records.tags.reserve(section.count);
   records.firstValue.reserve(section.count);
   records.nodeCount.reserve(section.count);
-  records.values.reserve(section.count * components * 3);  // checked against the bytes: 3 nodes at least
-  std::uint64_t dropped = 0, firstDropped = 0;
-  const char* firstDroppedAt = nullptr;
+  // A guess of three nodes a record (a triangle); the count was checked against the file's bytes.
+  records.values.reserve(section.count * components * 3);
+  DroppedElements dropped;
   for (std::uint64_t i = 0; i < section.count; ++i) {
     const char* recordAt = binary ? cursor.position() : cursor.tokenStart();
     const std::uint64_t tag = readRecordTag(cursor, binary, "an element tag");
-    if (tag != 0 && (tag < mapping.minElementTag || tag > mapping.maxElementTag) && dropped++ == 0)
-      firstDropped = tag, firstDroppedAt = recordAt;
+    dropped.check(tag, mapping, recordAt);
     const std::uint64_t nodes = readElementNodeCount(cursor, binary);
     cursor.requireBytes(nodes, binary ? 8 * components : components * kMinTextNumberBytes,
                         "the element's node values");
@@ -255,13 +268,7 @@ void readElementNodeRecords(MshCursor& cursor, const MshFieldSection& section, c
       records.values.push_back(
           readFieldValue(cursor, binary, "$ElementNodeData", field.name, "element", tag));
   }
-  if (dropped)
-    warnings.push_back(formatInputWarning(
-        cursor.locate(firstDroppedAt),
-        fmt::format("$ElementNodeData '{}' gives values for {} element{} that $Elements does not hold "
-                    "(the first: element {}); they were dropped and the other {} kept",
-                    field.name, dropped, dropped == 1 ? "" : "s", static_cast<std::int64_t>(firstDropped),
-                    section.count - dropped)));
+  dropped.warn(cursor, "$ElementNodeData", field.name, section.count, warnings);
   field.values = mapElementNodeValues(std::move(records), field.components, mapping.faceElement,
                                       mapping.faceCornerNode, mapping.elementAliases);
 }
