@@ -29,7 +29,7 @@ inline constexpr std::size_t kMaxDrawnText = 200;
 inline constexpr std::uint64_t kMaxLabelFormatNumber = 64;
 
 // In the order of the enums they name (checked below).
-inline constexpr std::array<std::string_view, 3> kShadingNames = {"flat", "gouraud", "phong"};
+inline constexpr std::array<std::string_view, 4> kShadingNames = {"flat", "gouraud", "phong", "unlit"};
 inline constexpr std::array<std::string_view, 2> kProjectionNames = {"perspective", "orthographic"};
 inline constexpr std::array<std::string_view, 3> kSamplerNames = {"regular", "stratified", "adaptive"};
 inline constexpr std::array<std::string_view, 3> kIntegratorNames = {"whitted", "path", "ao"};
@@ -37,7 +37,8 @@ inline constexpr std::array<std::string_view, 5> kLightTypeNames = {"point", "su
 static_assert(kIntegratorNames[static_cast<int>(IntegratorKind::AmbientOcclusion)] == "ao");
 static_assert(kLightTypeNames[static_cast<int>(LightType::Disk)] == "disk");
 static_assert(kShadingNames[static_cast<int>(ShadingMode::Gouraud)] == "gouraud" &&
-              kShadingNames[static_cast<int>(ShadingMode::Phong)] == "phong");
+              kShadingNames[static_cast<int>(ShadingMode::Phong)] == "phong" &&
+              kShadingNames[static_cast<int>(ShadingMode::Unlit)] == "unlit");
 static_assert(kProjectionNames[static_cast<int>(Projection::Orthographic)] == "orthographic");
 static_assert(kSamplerNames[static_cast<int>(SamplerKind::Stratified)] == "stratified" &&
               kSamplerNames[static_cast<int>(SamplerKind::Adaptive)] == "adaptive");

@@ -16,7 +16,9 @@
 namespace lancer {
 
 enum class Projection { Perspective, Orthographic };
-enum class ShadingMode { Flat, Gouraud, Phong };
+// flat, gouraud, phong: the lighting model (docs/rendering.md); unlit: the material's diffuse colour
+// or the field's colour as it is, no lights, no shadows (a colour map that reads as its legend).
+enum class ShadingMode { Flat, Gouraud, Phong, Unlit };
 enum class SamplerKind { Regular, Stratified, Adaptive };
 // How light is carried (docs/lighting.md): the brief's Whitted model, unidirectional path tracing,
 // or ambient occlusion.
