@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "lancer/scene/flat_scene.hpp"
 #include "lancer/util/memory_budget.hpp"
 #include "lancer/util/stopwatch.hpp"
 
@@ -59,6 +60,10 @@ PreparedRender prepareRender(RenderRequest request) {
   else
     meshes = readSceneMeshes(description, request.threads, &stages);
   if (request.withMeshes) request.withMeshes(description, meshes);
+  // A flat scene nobody chose a view for: straight on; a look then lights it from that view.
+  const FlatSceneChoices choices{request.overrides.look.has_value(), request.overrides.shading.has_value()};
+  if (applyFlatSceneDefaults(description, meshes, choices) && request.overrides.look)
+    applyLookOverride(description, request.overrides);
   Scene scene;
   std::vector<Mesh> kept;
   if (request.keepMeshes) {

@@ -30,12 +30,7 @@ void applyRenderOverrides(SceneDescription& description, const RenderOverrides& 
   if (overrides.edges)
     for (MeshInstance& mesh : description.meshes)
       if (!mesh.edges) mesh.edges = EdgeSettings{};
-  if (overrides.look) {
-    applyLook(description, *overrides.look);
-    if (overrides.samples) settings.samples = *overrides.samples;
-    if (overrides.noise) settings.noise = *overrides.noise;
-    if (overrides.integrator) settings.integrator = *overrides.integrator;
-  }
+  applyLookOverride(description, overrides);
   // The Whitted model's grids need a square count; path and AO take any.
   const int root = static_cast<int>(std::lround(std::sqrt(settings.samples)));
   if (settings.integrator == IntegratorKind::Whitted && settings.sampler != SamplerKind::Adaptive &&
@@ -48,6 +43,15 @@ void applyRenderOverrides(SceneDescription& description, const RenderOverrides& 
     settings.shading = *overrides.shading;
     for (MeshInstance& mesh : description.meshes) mesh.shading.reset();
   }
+}
+
+void applyLookOverride(SceneDescription& description, const RenderOverrides& overrides) {
+  if (!overrides.look) return;
+  RenderSettings& settings = description.render;
+  applyLook(description, *overrides.look);
+  if (overrides.samples) settings.samples = *overrides.samples;
+  if (overrides.noise) settings.noise = *overrides.noise;
+  if (overrides.integrator) settings.integrator = *overrides.integrator;
 }
 
 }  // namespace lancer

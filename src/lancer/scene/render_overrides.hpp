@@ -37,4 +37,9 @@ struct RenderOverrides {
 void applyRenderOverrides(SceneDescription& description, const RenderOverrides& overrides,
                           const Mesh* quickLookMesh = nullptr);
 
+// The look of `overrides` (if any) over the description, with the samples, noise and integrator the
+// caller gave winning over its defaults: applied again when the automatic camera turns after the
+// meshes are read (a flat scene seen straight on), since the look's lights follow the camera.
+void applyLookOverride(SceneDescription& description, const RenderOverrides& overrides);
+
 }  // namespace lancer
