@@ -17,9 +17,9 @@ namespace {
 void readLegendKeys(const TomlTableReader& reader, ColorBy& spec) {
   if (auto title = reader.text("title", kMaxDrawnText)) spec.title = *title;
   if (auto units = reader.text("units", kMaxDrawnText)) spec.units = *units;
-  if (auto bands = reader.integer("bands", 1, 256)) spec.bands = static_cast<int>(*bands);
-  constexpr std::array<std::string_view, 3> kPlacements = {"none", "right", "bottom"};
-  if (auto legend = reader.choice("legend", kPlacements)) spec.legend = static_cast<LegendPlacement>(*legend);
+  if (auto bands = reader.integer("bands", 1, kMaxBands)) spec.bands = static_cast<int>(*bands);
+  if (auto legend = reader.choice("legend", kLegendPlacementNames))
+    spec.legend = static_cast<LegendPlacement>(*legend);
 }
 
 }  // namespace
@@ -61,13 +61,20 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
     if (!array || array->size() != 2 || !number(0) || !number(1))
       reader.fail(*range, fmt::format("{} must be two finite numbers [min, max], found {}",
                                       reader.qualified("range"), describeValue(*range)));
-    if (!(*number(0) < *number(1)))
-      reader.fail(*range, fmt::format("{} must have min < max, found [{}, {}]", reader.qualified("range"),
-                                      *number(0), *number(1)));
+    if (const std::string problem = colorRangeProblem(reader.qualified("range"), *number(0), *number(1));
+        !problem.empty())
+      reader.fail(*range, problem);
     spec.range = std::pair{*number(0), *number(1)};
   }
   readLegendKeys(reader, spec);
   return spec;
+}
+
+std::string colorRangeProblem(std::string_view name, double low, double high) {
+  if (!std::isfinite(low) || !std::isfinite(high))
+    return fmt::format("{} must be two finite numbers, found {} and {}", name, low, high);
+  if (!(low < high)) return fmt::format("{} must have min < max, found [{}, {}]", name, low, high);
+  return {};
 }
 
 const MeshField& findMeshField(std::string_view key, const std::string& name, int step, const Mesh& mesh,

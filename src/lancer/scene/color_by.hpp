@@ -21,6 +21,11 @@ namespace lancer {
 // The mesh table's `color_by`, if present (file: the scene file's path, for messages).
 std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReader& mesh);
 
+// Why [low, high] cannot be a colour range (two finite numbers, low < high), in a message naming it
+// `name` ("mesh[0].color_by.range", "--range"); empty when it can. The scene file and the command
+// line both ask it.
+std::string colorRangeProblem(std::string_view name, double low, double high);
+
 // Where a value lies on a colour map spanning [low, high]: (value - low) / (high - low) clamped to
 // [0, 1], the middle of the map when the range is one value (a constant field), NaN for NaN.
 class MapPosition {
