@@ -70,6 +70,24 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
   return spec;
 }
 
+std::string fieldTitle(const std::string& name, const FieldComponent& component, int components) {
+  if (components == 1) return name;
+  switch (component.kind) {
+    case FieldComponent::Kind::Magnitude:
+      return "|" + name + "|";
+    case FieldComponent::Kind::VonMises:
+      return name + " (von Mises)";
+    case FieldComponent::Kind::Index:
+      break;
+  }
+  static constexpr const char* kAxes[] = {"x", "y", "z"};
+  static constexpr const char* kTensor[] = {"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"};
+  const int i = component.index;
+  if (components == 3 && i >= 0 && i < 3) return fmt::format("{} ({})", name, kAxes[i]);
+  if (components == 9 && i >= 0 && i < 9) return fmt::format("{} ({})", name, kTensor[i]);
+  return fmt::format("{} (component {})", name, i);
+}
+
 std::string colorRangeProblem(std::string_view name, double low, double high) {
   if (!std::isfinite(low) || !std::isfinite(high))
     return fmt::format("{} must be two finite numbers, found {} and {}", name, low, high);
@@ -167,6 +185,7 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
   FieldColoring coloring;
   coloring.map = spec.map;
   coloring.at = found->field->at;
+  coloring.components = found->field->components;
   std::pair<double, double> range;
   if (spec.range) {
     range = *spec.range;

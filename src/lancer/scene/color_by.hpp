@@ -26,6 +26,10 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
 // line both ask it.
 std::string colorRangeProblem(std::string_view name, double low, double high);
 
+// A legend's title for `component` of the field `name` of `components` values, as a reader of the
+// picture says it: "T" for a scalar, "|b|" for a magnitude, "sigma (von Mises)", "u (x)", "sigma (xy)".
+std::string fieldTitle(const std::string& name, const FieldComponent& component, int components);
+
 // Where a value lies on a colour map spanning [low, high]: (value - low) / (high - low) clamped to
 // [0, 1], the middle of the map when the range is one value (a constant field), NaN for NaN.
 class MapPosition {
@@ -47,6 +51,7 @@ class MapPosition {
 struct FieldColoring {
   ColorMapKind map = ColorMapKind::Viridis;
   FieldAt at = FieldAt::kNode;  // t per mesh vertex, per face or per face corner slot (MeshField's)
+  int components = 1;           // of the field's values: what its legend's title says of the component
   double low = 0;
   double high = 1;
   std::vector<float> t;
