@@ -4,6 +4,8 @@
 s = sin(6 x) cos(5 y), in the two forms gmsh writes it, both ASCII and both by gmsh's API:
     plate_nodedata.msh: MSH 4.1 ASCII, the mesh and the field as $NodeData (gmsh.view.addModelData);
     plate_mesh.msh:     the same mesh alone (what the $NodeData costs on top of it);
+    plate_elementnodedata.msh: the mesh and the field at every triangle's corners as
+                        $ElementNodeData (what GetDP's -v2 output holds), 3 values per triangle;
     plate.pos:          the field as a list-based view, one ST(...){...} per triangle with its corners'
                         coordinates and values (gmsh.view.addListData), as GetDP writes results.
 Usage: /usr/bin/python3 bench/make_pos_bench_data.py [OUT_FOLDER=bench/data] [N=707]"""
@@ -41,11 +43,19 @@ def main():
     gmsh.view.write(node_view, os.path.join(out, "plate_nodedata.msh"), append=True)
 
     # One ST per triangle: its corners' x, then y, then z (gmsh's list layout), then their values.
-    _, triangle_nodes = gmsh.model.mesh.getElementsByType(2)
+    triangle_tags, triangle_nodes = gmsh.model.mesh.getElementsByType(2)
     index = np.empty(int(tags.max()) + 1, dtype=np.int64)
     index[tags] = np.arange(len(tags))
     corners = index[np.asarray(triangle_nodes, dtype=np.int64)].reshape(-1, 3)
     data = np.concatenate([coords[corners, 0], coords[corners, 1], coords[corners, 2], values[corners]], axis=1)
+    element_view = gmsh.view.add("s")
+    gmsh.view.addModelData(element_view, 0, "plate", "ElementNodeData", triangle_tags, values[corners],
+                           numComponents=1)
+    gmsh.option.setNumber("PostProcessing.SaveMesh", 1)
+    gmsh.write(os.path.join(out, "plate_elementnodedata.msh"))
+    gmsh.option.setNumber("PostProcessing.SaveMesh", 0)
+    gmsh.view.write(element_view, os.path.join(out, "plate_elementnodedata.msh"), append=True)
+
     list_view = gmsh.view.add("s")
     gmsh.view.addListData(list_view, "ST", corners.shape[0], data.ravel())
     gmsh.view.write(list_view, os.path.join(out, "plate.pos"))

@@ -1,4 +1,5 @@
-// Reading one scalar step on a 1M-triangle plate as a list-based .pos view (one ST per triangle)
+// Reading one scalar step on a 1M-triangle plate as a list-based .pos view (one ST per triangle),
+// parsed alone and read as a mesh (readMsh: parse, nodes merged, faces assembled, values mapped),
 // against the same values as $NodeData in an ASCII .msh, and the mesh alone; the files are made by
 // bench/make_pos_bench_data.py (bench/data/, or LANCER_BENCH_DATA). Wall time: readMsh assembles
 // the mesh on every core (threads = 0) or on one; the .pos reader is one pass on one thread.
@@ -45,6 +46,21 @@ void loadPos(benchmark::State& state) {
   fileRate(state, path);
 }
 
+// The .pos through the one door (readMsh): parsed, then the mesh its elements carry built, the
+// view's step put on its faces as element-node values.
+void loadPosMesh(benchmark::State& state, int threads) {
+  const std::string path = benchFile("plate.pos");
+  if (!present(state, path)) return;
+  std::size_t faces = 0;
+  for (auto _ : state) {
+    const lancer::Mesh mesh = lancer::readMsh(path, threads);
+    faces = mesh.faces.size();
+    benchmark::DoNotOptimize(mesh.fields.front().values.data());
+  }
+  state.counters["faces"] = static_cast<double>(faces);
+  fileRate(state, path);
+}
+
 void loadMsh(benchmark::State& state, const char* name, int threads) {
   const std::string path = benchFile(name);
   if (!present(state, path)) return;
@@ -59,6 +75,8 @@ void loadMsh(benchmark::State& state, const char* name, int threads) {
 }
 
 BENCHMARK(loadPos)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);
+BENCHMARK_CAPTURE(loadPosMesh, mesh, 0)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);
+BENCHMARK_CAPTURE(loadPosMesh, mesh_1_thread, 1)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);
 BENCHMARK_CAPTURE(loadMsh, nodedata, "plate_nodedata.msh", 0)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()

@@ -46,7 +46,7 @@ for spec in "4.1 0 0 appended_view_v41_ascii" "4.1 1 0 appended_view_v41_bin" "2
 done
 
 # Files that are not meshes: STL (ASCII and binary), STEP, BREP and VTK made by gmsh from the
-# tests' geometry, and a .pos view.
+# tests' geometry; and a .pos view, which lancer reads (not taken for a foreign file).
 quiet gmsh "$geo/sphere.geo" -2 -format stl -o "$out/sphere.stl"
 quiet gmsh "$geo/sphere.geo" -2 -format stl -setnumber Mesh.Binary 1 -o "$out/sphere_binary.stl"
 quiet gmsh "$geo/cube_tet.geo" -0 -o "$out/box.step"

@@ -8,8 +8,8 @@ known in closed form at steps k = 0..3, time t_k = 0.5 k:
   "stress" (9 components per node): only sigma_xx = t (L - x) (y - H/2), the bending stress (its
       von Mises value is |sigma_xx|);
   "temperature" (1 component per element): 10 t + the element's tag mod 3.
-cantilever.msh holds all steps of all views (MSH 4.1, binary); cantilever.msh.opt, discrete.opt and
-hidden.opt are gmsh's options files for views set up in its GUI (VIEW_OPTIONS); steps/step_1.msh, step_2.msh,
+cantilever.msh holds all steps of all views (MSH 4.1, binary); cantilever.msh.opt, discrete.opt,
+hidden.opt and colormap.opt are gmsh's options files for views set up in its GUI (VIEW_OPTIONS); steps/step_1.msh, step_2.msh,
 step_10.msh hold one step each of "displacement" (t = 1, 2 and 10 times 0.1), for patterns and
 natural sort.
 Run: /usr/bin/python3 scripts/make_result_fixtures.py
@@ -77,7 +77,8 @@ def write(path, views):
 
 # The options files: cantilever.msh.opt (the displacement drawn as the deformed shape, x3, the
 # stress at step 2 on a custom range with iso-values, the temperature hidden), discrete.opt (the
-# stress in 5 filled bands without its scale) and hidden.opt (every view hidden).
+# stress in 5 filled bands without its scale), hidden.opt (every view hidden) and colormap.opt (the
+# stress in gmsh's colour map 7, "hot", swapped).
 VIEW_OPTIONS = {
     "cantilever.msh.opt": [("View[0].VectorType", 5), ("View[0].DisplacementFactor", 3), ("View[1].RangeType", 2),
                            ("View[1].CustomMin", 1), ("View[1].CustomMax", 4), ("View[1].TimeStep", 2),
@@ -86,6 +87,8 @@ VIEW_OPTIONS = {
     "discrete.opt": [("View[0].Visible", 0), ("View[1].IntervalsType", 3), ("View[1].NbIso", 5),
                      ("View[1].ShowScale", 0), ("View[2].Visible", 0)],
     "hidden.opt": [("View[0].Visible", 0), ("View[1].Visible", 0), ("View[2].Visible", 0)],
+    "colormap.opt": [("View[0].Visible", 0), ("View[1].ColormapNumber", 7), ("View[1].ColormapSwap", 1),
+                     ("View[2].Visible", 0)],
 }
 
 

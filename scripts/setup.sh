@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Installs the Debian packages lancer needs (only those missing), then configures and builds it
-# in build/ (Release, x86-64-v3), the Python module included (build/python/lancer, for Debian's
-# /usr/bin/python3: see python/CMakeLists.txt). Pass extra CMake options after the script name, e.g.
+# Installs the Debian packages lancer needs (only those missing), then configures build/ (Release,
+# x86-64-v3) and builds what a user runs: build/lancer and the Python module (build/python/lancer, for
+# Debian's /usr/bin/python3: see python/CMakeLists.txt), not the tests nor the benchmarks
+# (scripts/test.sh builds those). Pass extra CMake options after the script name, e.g.
 #   scripts/setup.sh -DLANCER_PORTABLE=ON        scripts/setup.sh -DLANCER_PYTHON=OFF
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -25,4 +26,4 @@ if ((${#missing[@]})); then
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build build -j"$(nproc)"
+cmake --build build -j"$(nproc)" --target programs

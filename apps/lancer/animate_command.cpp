@@ -26,7 +26,8 @@ namespace lancer::cli {
 namespace {
 
 struct AnimateCommandOptions {
-  std::string input;
+  std::string input;                // the scene or mesh (takeMeshInput)
+  std::vector<std::string> inputs;  // as given: the input, then views
   std::string output;
   std::optional<int> frames;
   std::optional<double> fps;
@@ -227,7 +228,7 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
   CLI::App* command = app.add_subcommand(
       "animate",
       "Render an orbit of the camera or of a light as an animated GIF, an animated PNG or numbered frames");
-  addInputOption(*command, options->input);
+  addInputOption(*command, options->inputs);
   addSceneViewOptions(*command, options->overrides);
   command
       ->add_option("-o,--output", options->output,
@@ -265,8 +266,11 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
                  "Keep numbered frames that are already complete images (resume a pre-empted job)")
       ->group(kClusterGroup);
   command->callback([options, &runner] {
-    takeInputFromGmshView(options->input, options->overrides);
-    runner = [options] { return runAnimate(*options); };
+    takeInputFromGmshView(options->inputs, options->overrides);
+    runner = [options] {
+      options->input = takeMeshInput(options->inputs, options->overrides.views);
+      return runAnimate(*options);
+    };
   });
 }
 

@@ -12,6 +12,7 @@
 #include "lancer/mesh/msh/element_types.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
+#include "scene_setup.hpp"
 
 namespace lancer::cli {
 namespace {
@@ -66,8 +67,11 @@ std::string shellDescription(const MeshShell& shell) {
 void printText(const Mesh& mesh, const MeshStats& stats) {
   const MeshSourceInfo& source = mesh.source;
   fmt::print("file:            {} ({} bytes)\n", source.path, source.fileBytes);
-  fmt::print("format:          MSH {} {}{}\n", source.formatVersion, source.binary ? "binary" : "ASCII",
-             source.partitionCount ? fmt::format(", {} partitions", source.partitionCount) : "");
+  if (source.format == "pos")
+    fmt::print("format:          list-based views (.pos, gmsh's parsed post-processing format)\n");
+  else
+    fmt::print("format:          MSH {} {}{}\n", source.formatVersion, source.binary ? "binary" : "ASCII",
+               source.partitionCount ? fmt::format(", {} partitions", source.partitionCount) : "");
   fmt::print("nodes:           {}\n", source.nodeCount);
   fmt::print("elements read:\n");
   for (const auto& [type, count] : source.elementsByType) {
@@ -166,9 +170,9 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
   const MeshSourceInfo& source = mesh.source;
   std::string out = "{\n";
   out += fmt::format("  \"file\": {},\n  \"bytes\": {},\n", jsonString(source.path), source.fileBytes);
-  out += fmt::format(
-      "  \"format\": \"msh\",\n  \"version\": \"{}\",\n  \"binary\": {},\n  \"partitions\": {},\n",
-      source.formatVersion, source.binary, source.partitionCount);
+  out +=
+      fmt::format("  \"format\": \"{}\",\n  \"version\": \"{}\",\n  \"binary\": {},\n  \"partitions\": {},\n",
+                  source.format, source.formatVersion, source.binary, source.partitionCount);
   out += fmt::format("  \"nodes\": {},\n", source.nodeCount);
   out += fmt::format("  \"elementsByType\": {},\n", jsonCounts(source.elementsByType));
   out += fmt::format("  \"unrenderableByType\": {},\n", jsonCounts(source.unrenderableByType));
@@ -251,13 +255,15 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
 
 void addInfoCommand(CLI::App& app, CommandRunner& runner) {
   struct Options {
-    std::string file;
+    std::vector<std::string> files;  // the mesh, then .pos views to put on it
     bool json = false;
     std::string accel;  // empty: no accelerator section
   };
   auto options = std::make_shared<Options>();
-  CLI::App* command = app.add_subcommand("info", "Describe a gmsh .msh file as lancer reads it");
-  command->add_option("FILE", options->file, "the .msh file")->required();
+  CLI::App* command =
+      app.add_subcommand("info", "Describe a gmsh .msh file (or .pos view) as lancer reads it");
+  command->add_option("FILE", options->files, "the .msh or .pos file, then .pos views to put on it")
+      ->required();
   command->add_flag("--json", options->json, "machine-readable output");
   command
       ->add_option("--accel", options->accel,
@@ -267,7 +273,10 @@ void addInfoCommand(CLI::App& app, CommandRunner& runner) {
       ->check(CLI::IsMember(std::vector<std::string>(kAccelNames.begin(), kAccelNames.end())));
   command->callback([&runner, options] {
     runner = [options] {
-      const Mesh mesh = readMsh(options->file);
+      std::vector<std::string> views;
+      const std::string file = takeMeshInput(options->files, views);
+      Mesh mesh = readMsh(file);
+      addViewFiles(mesh, views);
       const MeshStats stats = computeMeshStats(mesh);
       if (options->json) {
         printJson(mesh, stats,

@@ -37,7 +37,8 @@ constexpr int kLegendBarLength = 300;
 constexpr float kLegendTextHeight = 14;
 
 struct RenderCommandOptions {
-  std::string input;
+  std::string input;                // the scene or mesh (takeMeshInput)
+  std::vector<std::string> inputs;  // as given: the input, then views
   std::string output;
   std::string pixel;
   std::string legendFile;                          // --legend-file: the legends of the field-coloured meshes
@@ -406,9 +407,10 @@ int runRender(const RenderCommandOptions& options) {
 
 void addRenderCommand(CLI::App& app, CommandRunner& runner) {
   auto options = std::make_shared<RenderCommandOptions>();
-  CLI::App* command = app.add_subcommand(
-      "render", "Render a scene file (.toml), or a mesh (.msh) with an automatic camera, lights and colours");
-  addInputOption(*command, options->input);
+  CLI::App* command = app.add_subcommand("render",
+                                         "Render a scene file (.toml), or a mesh (.msh, or .pos views) with "
+                                         "an automatic camera, lights and colours");
+  addInputOption(*command, options->inputs);
   addSceneViewOptions(*command, options->overrides);
   command
       ->add_option("-o,--output", options->output,
@@ -446,8 +448,11 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
       options->legendFile = std::exchange(legend, std::string());
       options->legendFileOption = "--legend";
     }
-    takeInputFromGmshView(options->input, options->overrides);
-    runner = [options] { return runRender(*options); };
+    takeInputFromGmshView(options->inputs, options->overrides);
+    runner = [options] {
+      options->input = takeMeshInput(options->inputs, options->overrides.views);
+      return runRender(*options);
+    };
   });
 }
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -22,6 +23,7 @@
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/render/renderer.hpp"
+#include "lancer/scene/color_by.hpp"
 #include "lancer/scene/gmsh_post_options.hpp"
 #include "lancer/scene/gmsh_view.hpp"
 #include "lancer/scene/looks.hpp"
@@ -50,8 +52,8 @@ std::string lowerCaseExtension(const std::string& path) {
   return extension;
 }
 
-// A .msh by name, or a file that is no scene: a mesh by content, or a file that is neither (a .geo,
-// STL, STEP, ...), which the mesh reader names with the gmsh command that makes a mesh of it.
+// A .msh by name, or a file that is no scene: a mesh or a .pos view by content, or a file that is neither (a
+// .geo, STL, STEP, ...), which the mesh reader names with the gmsh command that makes a mesh of it.
 bool isMeshFile(const std::string& path) {
   const std::string extension = lowerCaseExtension(path);
   if (extension == ".msh") return true;
@@ -62,7 +64,7 @@ bool isMeshFile(const std::string& path) {
   head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
   std::error_code error;
   const std::uintmax_t size = std::filesystem::file_size(path, error);
-  return looksLikeMsh(head) || !foreignFileMessage(head, error ? 0 : size, path).empty();
+  return looksLikeMsh(head) || isViewFile(path) || !foreignFileMessage(head, error ? 0 : size, path).empty();
 }
 
 // The command line checks its choices against the same tables (CLI11 wants strings).
@@ -96,7 +98,23 @@ void applyOutputOverrides(const SceneOverrides& overrides, RenderOverrides& appl
   if (overrides.denoise) applied.denoise = true;
 }
 
-// --step, --warp, --color-by and --undeformed on every mesh of the description.
+// --color-map on every coloured mesh; `required`: an error when none is coloured.
+void applyColorMap(SceneDescription& description, const std::string& text, bool required) {
+  if (text.empty()) return;
+  const SourceLocation where{"--color-map"};
+  const ColorMap map = colorMapFromText(text, where);
+  bool coloured = false;
+  for (MeshInstance& mesh : description.meshes)
+    if (mesh.colorBy) {
+      mesh.colorBy->map = map;
+      coloured = true;
+    }
+  if (!coloured && required)
+    throw InputError(where,
+                     "no mesh is coloured by a field: give --color-by FIELD too (or color_by in the scene)");
+}
+
+// --step, --warp, --color-by, --color-map and --undeformed on every mesh of the description.
 void applyResultOverrides(SceneDescription& description, const SceneOverrides& overrides) {
   if (overrides.step) description.when = StepSelection{overrides.step, std::nullopt, "--step"};
   if (!overrides.warp.empty()) {
@@ -140,6 +158,8 @@ void applyResultOverrides(SceneDescription& description, const SceneOverrides& o
       mesh.colorBy = color;
     }
   }
+  // With --gmsh-view the view may colour the mesh: the map is applied again once it has.
+  applyColorMap(description, overrides.colorMap, !overrides.gmshView);
   if (!overrides.undeformed.empty()) {
     const UndeformedStyle style = overrides.undeformed == "edges"   ? UndeformedStyle::Edges
                                   : overrides.undeformed == "ghost" ? UndeformedStyle::Ghost
@@ -289,6 +309,12 @@ void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides) {
                   "Colour by a field: FIELD[:COMPONENT], COMPONENT magnitude, x, y, z, 0-8 or von_mises")
       ->group(kResultsGroup);
   command
+      .add_option(
+          "--color-map", overrides.colorMap,
+          "The colours' map: a matplotlib name (viridis, turbo, RdBu, jet, ...; NAME_r reversed), gmsh:N "
+          "(gmsh's View.ColormapNumber) or colours \"#000080,white,#800000\"; see docs/fields.md")
+      ->group(kResultsGroup);
+  command
       .add_option("--range", overrides.range,
                   "The colours' range MIN:MAX (values outside are clamped); default: over every step")
       ->group(kResultsGroup);
@@ -367,22 +393,58 @@ void addSceneOutputOptions(CLI::App& command, SceneOverrides& overrides) {
           "build, the quality reference), kdtree-median or naive (brute force)")
       ->check(CLI::IsMember(choices(kAccelNames)))
       ->group(kQualityGroup);
-  command.add_option("--threads", overrides.threads, "Worker threads (default 0: all cores)")
+  command.add_option("--threads", overrides.threads, "Worker threads (default 0: one per usable CPU)")
       ->check(CLI::Range(0, kMaxThreads))
       ->group(kQualityGroup);
 }
 
-CLI::Option* addInputOption(CLI::App& command, std::string& input) {
-  return command.add_option("input", input, "Scene file (.toml) or gmsh mesh (.msh); required")
+CLI::Option* addInputOption(CLI::App& command, std::vector<std::string>& inputs) {
+  return command
+      .add_option("input", inputs,
+                  "Scene file (.toml), or gmsh mesh (.msh) or list-based view (.pos), then .pos views "
+                  "to put on that mesh; required")
       ->group(kInputGroup);
 }
 
-void takeInputFromGmshView(std::string& input, SceneOverrides& overrides) {
-  if (input.empty() && overrides.gmshView && lowerCaseExtension(*overrides.gmshView) != ".opt") {
-    input = *overrides.gmshView;
+void takeInputFromGmshView(std::vector<std::string>& inputs, SceneOverrides& overrides) {
+  // `--gmsh-view magnet.msh az.pos`: the mesh went to --gmsh-view, the views to the inputs.
+  const auto tookTheMesh = [&] {
+    if (!overrides.gmshView || overrides.gmshView->empty() ||
+        lowerCaseExtension(*overrides.gmshView) == ".opt")
+      return false;
+    return inputs.empty() ||
+           (std::all_of(inputs.begin(), inputs.end(), isViewFile) && !isViewFile(*overrides.gmshView));
+  };
+  if (tookTheMesh()) {
+    inputs.insert(inputs.begin(), *overrides.gmshView);
     overrides.gmshView = "";
   }
-  if (input.empty()) throw CLI::RequiredError("input");
+  if (inputs.empty()) throw CLI::RequiredError("input");
+}
+
+std::string takeMeshInput(const std::vector<std::string>& inputs, std::vector<std::string>& views) {
+  std::vector<bool> view(inputs.size());
+  std::size_t mesh = inputs.size();
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    view[i] = inputs.size() > 1 && isViewFile(inputs[i]);
+    if (!view[i] && mesh == inputs.size()) mesh = i;
+  }
+  if (mesh == inputs.size()) mesh = 0;
+  views.clear();
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    if (i == mesh) continue;
+    std::error_code error;
+    if (!view[i] && !std::filesystem::exists(inputs[i], error))
+      throw InputError(SourceLocation{inputs[i]}, "cannot open the view file: No such file or directory");
+    if (!view[i])
+      throw InputError(
+          SourceLocation{inputs[i]},
+          fmt::format("one mesh or scene per command: {} gives the geometry, and the inputs after it "
+                      "are list-based .pos views to put on it, which this is not",
+                      inputs[mesh]));
+    views.push_back(inputs[i]);
+  }
+  return inputs[mesh];
 }
 
 PreparedRender prepareScene(const std::string& input, const SceneOverrides& overrides,
@@ -400,16 +462,24 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     const Stopwatch read;
     request.quickLookMesh = readStepFiles(input, matchStepFiles(input, SourceLocation{input}),
                                           overrides.threads, SourceLocation{input});
+    addViewFiles(*request.quickLookMesh, overrides.views);
     request.stages.add("read", read.seconds());
     description = quickLookScene(input, *request.quickLookMesh, up);
   } else if (isMeshFile(input)) {
     const Stopwatch read;
     request.quickLookMesh = readMsh(input, overrides.threads);
+    addViewFiles(*request.quickLookMesh, overrides.views);
     request.stages.add("read", read.seconds());
     if (const std::string reason = nothingToDrawReason(*request.quickLookMesh); !reason.empty())
       throw InputError(SourceLocation{input}, "nothing to draw: " + reason);
     description = quickLookScene(input, *request.quickLookMesh, up);
   } else {
+    if (!overrides.views.empty())
+      throw InputError(SourceLocation{overrides.views.front()},
+                       fmt::format("views on the command line go on a mesh given there (lancer render "
+                                   "part.msh {}); {} is a scene file: give them to its mesh with views = "
+                                   "[\"{}\"] in its [[mesh]]",
+                                   overrides.views.front(), input, overrides.views.front()));
     description = loadScene(input);
     if (up) applyUpAxis(description.camera, *up);
   }
@@ -419,9 +489,10 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     if (path.empty() && !description.meshes.empty()) path = description.meshes.front().file + ".opt";
     description.camera.gmshView = readGmshView(path);
     // Its View[i] options (steps, warps, ranges) need the views' names: applied to the meshes read.
-    request.withMeshes = [views = readGmshPostViews(path), path](SceneDescription& scene,
-                                                                 const std::vector<Mesh>& meshes) {
+    request.withMeshes = [views = readGmshPostViews(path), path, colorMap = overrides.colorMap](
+                             SceneDescription& scene, const std::vector<Mesh>& meshes) {
       if (!meshes.empty()) applyGmshPostViews(scene, meshes.front(), views, path);
+      applyColorMap(scene, colorMap, true);
     };
     if (request.quickLookMesh) placeQuickLookLights(description, *request.quickLookMesh);  // from gmsh's side
   }

@@ -38,10 +38,11 @@ struct SceneOverrides {
   bool quiet = false;
   bool timings = false;  // --timings: the preparation's stages on stderr
   // Results (docs/results.md): --step K, --warp FIELD[:FACTOR], --color-by FIELD[:COMPONENT],
-  // --undeformed edges|ghost, applied to every mesh.
+  // --color-map NAME, --undeformed edges|ghost, applied to every mesh.
   std::optional<int> step;
   std::string warp;
   std::string colorBy;
+  std::string colorMap;
   std::string undeformed;
   std::string integrator;       // --integrator whitted|path|ao
   std::optional<double> noise;  // --noise: adaptive stop, in (0, 1)
@@ -53,6 +54,8 @@ struct SceneOverrides {
   std::optional<int> bands;        // --bands N
   std::string arrows;              // --arrows FIELD
   std::vector<std::string> clips;  // --clip AXIS=VALUE or PX,PY,PZ,NX,NY,NZ, any number
+  // The inputs after the mesh: list-based .pos views put on it by their elements' coordinates.
+  std::vector<std::string> views;
 };
 
 // The option groups of `lancer render --help` and `lancer animate --help`.
@@ -70,14 +73,18 @@ inline constexpr const char* kClusterGroup = "Cluster";
 void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides);
 void addSceneOutputOptions(CLI::App& command, SceneOverrides& overrides);
 
-// The command's input, positional: `lancer render|animate INPUT`. Not required by CLI11, since
-// --gmsh-view's value is optional and CLI11 gives it the input when it comes first
+// The command's inputs, positional: `lancer render|animate INPUT [VIEW.pos ...]`. Not required by
+// CLI11, since --gmsh-view's value is optional and CLI11 gives it the input when it comes first
 // (`lancer render --gmsh-view part.msh -o x.png`); takeInputFromGmshView puts it back.
-CLI::Option* addInputOption(CLI::App& command, std::string& input);
+CLI::Option* addInputOption(CLI::App& command, std::vector<std::string>& inputs);
 // Called by the command's callback, once the line is parsed: with no input, the value of
 // --gmsh-view is the input unless it is an options file (FILE.opt), and --gmsh-view then reads the
 // default MESH.msh.opt. Throws CLI::RequiredError when there is still no input.
-void takeInputFromGmshView(std::string& input, SceneOverrides& overrides);
+void takeInputFromGmshView(std::vector<std::string>& inputs, SceneOverrides& overrides);
+// The input that gives the picture its geometry (a scene, a mesh, a pattern of step files): the
+// first that is not a view file, or the first when all are (`lancer render az.pos b.pos`). The
+// others go to `views`; one of them that is no view file (a second mesh) is an InputError.
+std::string takeMeshInput(const std::vector<std::string>& inputs, std::vector<std::string>& views);
 
 // "timings: read 0.052 s, orient 0.081 s, ..." (--timings).
 std::string formatStageTimes(const StageTimes& stages);
@@ -86,12 +93,11 @@ std::string formatStageTimes(const StageTimes& stages);
 using ImageBufferChoice = std::function<ImageBuffer(const RenderSettings&)>;
 
 // The command's input and options as a RenderRequest: a scene file (.toml), or the quick look of a
-// mesh (.msh, read here), with --up and --gmsh-view applied; then prepareRender
-// (render/render_preparation.hpp) checks the image's memory against the budget (--max-memory), builds
-// the scene, the accelerator and the camera. The meshes' warnings go to stderr unless --quiet.
-// Without a choice the image is held whole.
-// keepMeshes: the meshes as read (every step of their views) stay in PreparedRender::meshes, for an
-// animation over steps.
+// mesh (.msh or .pos, read here, with overrides.views put on it), with --up and --gmsh-view applied; then
+// prepareRender (render/render_preparation.hpp) checks the image's memory against the budget (--max-memory),
+// builds the scene, the accelerator and the camera. The meshes' warnings go to stderr unless --quiet. Without
+// a choice the image is held whole. keepMeshes: the meshes as read (every step of their views) stay in
+// PreparedRender::meshes, for an animation over steps.
 PreparedRender prepareScene(const std::string& input, const SceneOverrides& overrides,
                             const ImageBufferChoice& imageBuffer = {}, bool keepMeshes = false);
 

@@ -150,7 +150,7 @@ def _from_gmsh(gmsh, dim, name):
 _VIEW_OPTIONS = ["Trackball", "TrackballQuaternion0", "TrackballQuaternion1", "TrackballQuaternion2",
                  "TrackballQuaternion3", "RotationX", "RotationY", "RotationZ", "TranslationX", "TranslationY",
                  "TranslationZ", "ScaleX", "ScaleY", "ScaleZ", "Orthographic", "ClipFactor",
-                 "DisplayBorderFactor"]
+                 "DisplayBorderFactor", "MinX", "MinY", "MinZ", "MaxX", "MaxY", "MaxZ"]
 
 
 def camera_from_gmsh():

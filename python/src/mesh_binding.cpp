@@ -440,14 +440,18 @@ void bindMesh(py::module_& module) {
       });
   module.def(
       "read_msh",
-      [](const std::string& path, int threads) {
+      [](const std::string& path, int threads, const std::vector<std::string>& views) {
         requireThreads(threads);
         py::gil_scoped_release release;
-        return std::make_shared<Mesh>(readMsh(path, threads));
+        auto mesh = std::make_shared<Mesh>(readMsh(path, threads));
+        addViewFiles(*mesh, views);
+        return mesh;
       },
-      py::arg("path"), py::arg("threads") = 0,
-      "Reads a gmsh .msh file (MSH 2.2, 4.0, 4.1) as the lancer command does (threads: for the assembly "
-      "after the parse, 0: every core; the mesh is the same for any count)");
+      py::arg("path"), py::arg("threads") = 0, py::arg("views") = std::vector<std::string>{},
+      "Reads a gmsh .msh file (MSH 2.2, 4.0, 4.1) or a list-based .pos view as the lancer command does "
+      "(threads: for the assembly after the parse, 0: every core; the mesh is the same for any count); "
+      "views: list-based .pos files put on the mesh by their elements' coordinates, each step of each "
+      "view an element-node field");
   module.def("_mesh_from_elements", &meshFromElementBlocks, py::arg("points"), py::arg("blocks"),
              py::arg("group_names"), py::arg("name"), py::arg("node_fields"), py::arg("element_fields"),
              py::arg("element_node_fields") = py::list());

@@ -3,6 +3,7 @@
 
 PYBIND11_MODULE(_lancer, module) {
   module.doc() = "lancer's C++ core; use the lancer package, which wraps it";
+  module.attr("__version__") = LANCER_VERSION;  // project(VERSION), as `lancer --version` prints
   lancer::python::bindErrors(module);
   lancer::python::bindMesh(module);
   lancer::python::bindScene(module);

@@ -60,7 +60,7 @@ py::array toArray(const Image& image, const RenderSettings& settings, bool linea
 void requireThreads(int threads) {
   if (threads < 0 || threads > kMaxThreads)
     throw py::value_error(
-        fmt::format("threads={} is out of range: use 0 (all cores) to {}", threads, kMaxThreads));
+        fmt::format("threads={} is out of range: use 0 (one per usable CPU) to {}", threads, kMaxThreads));
 }
 
 RenderOverrides renderOverridesFromArguments(const RenderArguments& arguments) {

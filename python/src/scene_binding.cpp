@@ -1,15 +1,19 @@
 // lancer.Scene (a scene file as `lancer render` reads it, or the quick look of a mesh) and
 // lancer.Camera (the scene file's [camera] keys).
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include "bindings.hpp"
 
 #include "lancer/image/color_map.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
+#include "lancer/scene/color_by.hpp"
 #include "lancer/scene/gmsh_view.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
@@ -72,10 +76,54 @@ std::string describeCamera(const CameraSettings& camera) {
       camera.viewHeight ? fmt::format("{:g}", *camera.viewHeight) : "None");
 }
 
+// color_map=: a map's name, or a list of two or more colours, each a str ('#000080', 'white') or an
+// (r, g, b) of numbers 0 to 1, as a scene file's `map` takes them.
+ColorMap colorMapArgument(const py::object& map) {
+  if (py::isinstance<py::str>(map)) {
+    const std::string name = map.cast<std::string>();
+    if (std::optional<ColorMap> named = ColorMap::named(name)) return *named;
+    throw py::value_error(fmt::format("color_map='{}': {}", name, unknownColorMapMessage(name)));
+  }
+  if (!py::isinstance<py::list>(map) && !py::isinstance<py::tuple>(map))
+    throw py::type_error(
+        "color_map= takes a map's name ('viridis', 'RdBu_r', 'gmsh:2') or a list of colours, e.g. "
+        "['#000080', 'white', '#800000']");
+  std::vector<Vec3> colors;
+  std::string name = "[";
+  for (const py::handle item : map) {
+    const std::size_t i = colors.size();
+    if (py::isinstance<py::str>(item)) {
+      const std::string text = item.cast<std::string>();
+      const std::optional<Vec3> color = parseColor(text);
+      if (!color)
+        throw py::value_error(fmt::format("color_map=[...]: item {}: {}", i, unknownColorMessage(text)));
+      colors.push_back(*color);
+      name += fmt::format("{}'{}'", i == 0 ? "" : ", ", text);
+      continue;
+    }
+    std::array<double, 3> rgb{NAN, NAN, NAN};
+    try {
+      rgb = item.cast<std::array<double, 3>>();
+    } catch (const py::cast_error&) {
+    }
+    if (!std::all_of(rgb.begin(), rgb.end(), [](double c) { return c >= 0 && c <= 1; }))
+      throw py::value_error(
+          fmt::format("color_map=[...]: item {} is {}: give a colour as '#rrggbb', '#rgb', a CSS "
+                      "name or (r, g, b) with each 0 to 1",
+                      i, py::repr(item).cast<std::string>()));
+    colors.push_back(toFloat(Vec3d{rgb[0], rgb[1], rgb[2]}));
+    name += fmt::format("{}({:g}, {:g}, {:g})", i == 0 ? "" : ", ", rgb[0], rgb[1], rgb[2]);
+  }
+  if (colors.size() < 2 || colors.size() > kMaxListColors)
+    throw py::value_error(
+        fmt::format("color_map= lists {} colours: give 2 to {}", colors.size(), kMaxListColors));
+  return ColorMap::fromColors(std::move(colors), name + "]");
+}
+
 // color_by= of Scene.quick_look: the mesh coloured by one of its fields, as a scene file's
 // `color_by = {field, map, range, step}` does. The field's name is checked when the scene is built
 // (an InputError naming the fields the mesh has).
-ColorBy colorByArgument(const std::string& field, const std::string& map,
+ColorBy colorByArgument(const std::string& field, const py::object& map,
                         const std::optional<std::pair<double, double>>& range, const std::string& component) {
   ColorBy colorBy;
   colorBy.field = field;
@@ -85,9 +133,7 @@ ColorBy colorByArgument(const std::string& field, const std::string& map,
     throw py::value_error(
         fmt::format("component='{}': use 'magnitude', 'x', 'y', 'z', '0' to '8' or 'von_mises'", component));
   colorBy.component = *parsed;
-  const std::optional<ColorMapKind> kind = parseColorMap(map);
-  if (!kind) throw py::value_error(fmt::format("color_map='{}': use one of {}", map, colorMapNames()));
-  colorBy.map = *kind;
+  colorBy.map = colorMapArgument(map);
   if (range && !(std::isfinite(range->first) && std::isfinite(range->second) && range->first < range->second))
     throw py::value_error(fmt::format("color_range=({:g}, {:g}): give (low, high), finite, low < high",
                                       range->first, range->second));
@@ -127,6 +173,33 @@ PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh) {
 }
 
 void bindScene(py::module_& module) {
+  module.def(
+      "color_map",
+      [](const py::object& map, int n) {
+        if (n < 2 || n > 65536) throw py::value_error(fmt::format("n={}: give 2 to 65536 samples", n));
+        const ColorMap colors = colorMapArgument(map);
+        py::array_t<float> array({static_cast<py::ssize_t>(n), py::ssize_t{3}});
+        auto out = array.mutable_unchecked<2>();
+        for (int i = 0; i < n; ++i) {
+          const Vec3 c = colors(static_cast<float>(i) / static_cast<float>(n - 1));
+          out(i, 0) = c.x;
+          out(i, 1) = c.y;
+          out(i, 2) = c.z;
+        }
+        return array;
+      },
+      py::arg("map"), py::arg("n") = 256,
+      "The colours a map gives at n values evenly spaced from its low end to its high end, as an (n, 3) "
+      "float32 array of display values in [0, 1] (matplotlib's cmap(np.linspace(0, 1, n))[:, :3]); map as "
+      "Scene.quick_look's color_map");
+  module.def(
+      "color_maps",
+      [] {
+        const std::vector<std::string_view> names = colorMapNames();
+        return std::vector<std::string>(names.begin(), names.end());
+      },
+      "The names of the colour maps (each also with '_r', reversed): matplotlib's, then gmsh:0 to gmsh:24");
+
   py::class_<CameraSettings>(module, "Camera",
                              "Where the camera is and how it projects; None: framed automatically")
       .def(py::init(&makeCameraSettings), py::kw_only(), py::arg("position") = py::none(),
@@ -185,7 +258,7 @@ void bindScene(py::module_& module) {
       .def_static(
           "quick_look",
           [](std::shared_ptr<const Mesh> mesh, const std::optional<std::string>& up,
-             const py::object& colorBy, const std::string& colorMap,
+             const py::object& colorBy, const py::object& colorMap,
              const std::optional<std::pair<double, double>>& colorRange, const std::optional<int>& step,
              const py::object& warp, const std::string& component, const std::string& undeformed,
              const py::object& isolines, const py::object& arrows, const std::optional<std::string>& legend) {
@@ -204,7 +277,9 @@ void bindScene(py::module_& module) {
                 throw py::type_error(
                     "color_by= takes a field's name or a dict of the scene file's color_by keys, "
                     "e.g. {'field': 'stress', 'title': 'von Mises stress', 'units': 'MPa'}");
-              if (colorMap != "viridis" || colorRange || component != "magnitude")
+              const bool mapGiven =
+                  !py::isinstance<py::str>(colorMap) || colorMap.cast<std::string>() != "viridis";
+              if (mapGiven || colorRange || component != "magnitude")
                 throw py::value_error(
                     "color_by as a dict holds its own 'map', 'range' and 'component': put them "
                     "in it instead of color_map=, color_range=, component=");
@@ -230,7 +305,11 @@ void bindScene(py::module_& module) {
           py::arg("isolines") = py::none(), py::arg("arrows") = py::none(), py::arg("legend") = py::none(),
           "The scene `lancer render part.msh` makes of a bare mesh (up: 'x', 'y', 'z', '-x', ...; None: "
           "guessed); color_by names one of mesh.fields to colour it by, as a scene file's color_by "
-          "(color_map 'viridis', 'magma', 'coolwarm' or 'grey'; color_range (low, high), default the "
+          "(color_map a matplotlib map's name ('viridis', 'turbo', 'RdBu', 'jet', ...; lancer.color_maps() "
+          "lists "
+          "them), with '_r' reversed, 'gmsh:N' for gmsh's View.ColormapNumber N, or a list of colours such "
+          "as "
+          "['#000080', 'white', '#800000']; color_range (low, high), default the "
           "field's range over every step; component 'magnitude', 'x', 'y', 'z', '0'-'8' or 'von_mises'); "
           "warp 'displacement' or ('displacement', factor) draws the shape moved by that node vector "
           "(undeformed 'edges' or 'ghost' shows the shape before); step: the time step shown (default "

@@ -62,6 +62,47 @@ TEST(TickLabels, OneNotationWithTheDigitsTheStepNeeds) {
   EXPECT_EQ(tickLabels(niceTicks(2.5, 2.5)), (std::vector<std::string>{"2.5"}));
 }
 
+TEST(LogTicks, DecadesThinnedToAboutTheCountAsked) {
+  // Nine decades, about six ticks wanted: every second power of ten, 10^0 among them.
+  EXPECT_EQ(logTicks(1e-6, 1e3, 6).values, (std::vector<double>{1e-6, 1e-4, 1e-2, 1, 100}));
+  EXPECT_EQ(logTickLabels(logTicks(1e-6, 1e3, 6)),
+            (std::vector<std::string>{"10\u207b\u2076", "10\u207b\u2074", "10\u207b\u00b2", "10\u2070",
+                                      "10\u00b2"}));
+  EXPECT_EQ(logTicks(1, 100).values, (std::vector<double>{1, 10, 100}));
+  EXPECT_EQ(logTickLabels(logTicks(1, 100)), (std::vector<std::string>{"1", "10", "100"}));
+  EXPECT_EQ(logTickLabels(logTicks(1e-3, 1e5, 6)), (std::vector<std::string>{"0.01", "1", "100", "10000"}));
+}
+
+TEST(LogTicks, ShortRangesAddTwoAndFiveTimesAPowerOfTen) {
+  EXPECT_EQ(logTicks(3, 40).values, (std::vector<double>{5, 10, 20}));
+  EXPECT_EQ(logTicks(0.5, 30).values, (std::vector<double>{0.5, 1, 5, 10}));
+  EXPECT_EQ(logTickLabels(logTicks(2e5, 3e6)),
+            (std::vector<std::string>{"2\u00d710\u2075", "5\u00d710\u2075", "10\u2076", "2\u00d710\u2076"}));
+  // Within one 1-2-5 step: round linear ticks, labelled as a linear legend's.
+  EXPECT_EQ(logTicks(3, 4).values, niceTicks(3, 4).values);
+  EXPECT_EQ(logTickLabels(logTicks(3, 4)), tickLabels(niceTicks(3, 4)));
+}
+
+TEST(Legend, LogBarPlacesDecadeTicksByTheirLogarithm) {
+  // 1 .. 100 on a log scale: ticks 1, 10, 100 at the bottom, middle and top of the bar (a linear bar
+  // would put 10 at a tenth of its height).
+  LegendSpec spec{ColorMapKind::Viridis, 1, 100, "", "", 0};  // no title: only ticks are this grey
+  spec.scale = ColorScale::Log;
+  const Image image = legendImage(spec, false, 200, 14, false);
+  const int tickColumn = 8 + 17 + 2;  // right of the bar: padding 8, bar 17 pixels wide
+  std::vector<int> rows;
+  for (int y = 0; y < image.height(); ++y) {
+    const Rgba& p = image.at(tickColumn, y);
+    if (std::abs(p.r - 0.1f) < 1e-3f && std::abs(p.g - 0.1f) < 1e-3f) rows.push_back(y);
+  }
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_NEAR(rows[2] - rows[1], rows[1] - rows[0], 1);
+  EXPECT_NEAR(rows[2] - rows[0], 199, 1);
+  // The bar is the map along log(value): its middle row shows the map's middle.
+  const Vec3 middle = image.at(12, rows[1]).rgb();
+  EXPECT_LT(length(middle - colorMapLookup(ColorMapKind::Viridis, 0.5f)), 0.02f);
+}
+
 TEST(Legend, TitleWithUnits) {
   EXPECT_EQ(legendTitle({ColorMapKind::Viridis, 0, 1, "von Mises stress", "MPa", 0}),
             "von Mises stress (MPa)");

@@ -165,8 +165,9 @@ def test_a_field_from_gmsh_colours_the_quick_look(session):
     assert np.any(ranged != coloured)
     with pytest.raises(lancer.InputError, match="height"):  # names the fields the mesh has
         lancer.render(lancer.Scene.quick_look(mesh, color_by="temperature"), width=16, height=12)
-    with pytest.raises(ValueError, match="color_map='rainbow'"):
-        lancer.Scene.quick_look(mesh, color_by="height", color_map="rainbow")
+    with pytest.raises(ValueError,
+                       match=r"color_map='rainbw': \"rainbw\" is not a colour map \(did you mean 'rainbow'"):
+        lancer.Scene.quick_look(mesh, color_by="height", color_map="rainbw")
     with pytest.raises(ValueError, match="color_range"):
         lancer.Scene.quick_look(mesh, color_by="height", color_range=(1.0, 1.0))
 

@@ -7,6 +7,7 @@
 #include <set>
 #include <string>
 
+#include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/isolines.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "support/files.hpp"
@@ -87,6 +88,38 @@ TEST(Isolines, CountSpacesLinesEvenlyInsideTheRange) {
   // The field x + 2 y runs over [0, 3] on the square: one line in the middle of each third.
   EXPECT_EQ(scene.isolines->styles[1].values, (std::vector<float>{0.5f, 1.5f, 2.5f}));
   EXPECT_EQ(evenIsoValues(0, 10, 5), (std::vector<double>{1, 3, 5, 7, 9}));
+}
+
+TEST(Isolines, LogColoursSpaceLinesEvenlyInLog) {
+  // Coloured by the same field on a log scale over [0.03, 3]: `count` lines in the middle of equal
+  // log intervals (0.03 * 10^0.5, 0.03 * 10^1.5); gmsh's iso-values (colorRangeEnds) include the ends.
+  const SceneDescription description =
+      squareScene(R"(color_by = { field = "temperature", scale = "log", range = [0.03, 3] }
+isolines = { field = "temperature", count = 2, color = "map" })");
+  const Scene scene = buildScene(description);
+  ASSERT_TRUE(scene.isolines);
+  const std::vector<float>& values = scene.isolines->styles[1].values;
+  ASSERT_EQ(values.size(), 2u);
+  EXPECT_NEAR(values[0], 0.03 * std::sqrt(10.0), 1e-6);
+  EXPECT_NEAR(values[1], 0.3 * std::sqrt(10.0), 1e-6);
+  // Each line in the colour of its place on the log scale: a quarter and three quarters of the map.
+  const std::vector<Vec3>& colours = scene.isolines->styles[1].valueColors;
+  ASSERT_EQ(colours.size(), 2u);
+  EXPECT_LT(length(colours[0] - colorMapLookup(ColorMapKind::Viridis, 0.25f)), 1e-5f);
+  EXPECT_LT(length(colours[1] - colorMapLookup(ColorMapKind::Viridis, 0.75f)), 1e-5f);
+  const std::vector<double> gmsh = {0.03, 0.3, 3};  // gmsh's log getScaleValue, 3 values
+  IsolineSpec spec;
+  spec.field = "temperature";
+  spec.count = 3;
+  spec.colorRangeEnds = true;
+  const ResolvedIsolines resolved = resolveIsolines(
+      spec, readMsh(test::dataFile("fields/node_xy_v41_bin.msh")), {}, std::pair{0.03, 3.0}, ColorScale::Log);
+  ASSERT_EQ(resolved.values.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(resolved.values[k], gmsh[k], 1e-6) << k;
+  const std::vector<double> middles = logIsoValues(1, 100, 2);
+  ASSERT_EQ(middles.size(), 2u);
+  EXPECT_NEAR(middles[0], std::sqrt(10.0), 1e-9);
+  EXPECT_NEAR(middles[1], 10 * std::sqrt(10.0), 1e-9);
 }
 
 // color = "map": each line in its value's colour, from the mesh's map over its colour range (here

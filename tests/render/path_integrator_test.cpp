@@ -252,11 +252,12 @@ TEST(PathIntegrator, SameBytesForAnyThreadCountAndBandSplit) {
 TEST(PathIntegrator, NonFinitePixelsAreAnErrorNotAPicture) {
   SceneDescription d = sphereInEnvironment({0, 0, 0}, 1);
   d.environment.reset();
-  PointLight sun;
-  sun.type = LightType::Sun;
-  sun.direction = {0, 0, 1};
-  sun.intensity = {3e38f, 3e38f, 3e38f};
-  d.lights = {sun};
+  // A point light whose intensity is a float but whose light on the sphere is not (a sun as bright is
+  // refused when the scene is built: its radiance overflows).
+  PointLight light;
+  light.position = {0, 0, 3};
+  light.intensity = {3e38f, 3e38f, 3e38f};
+  d.lights = {light};
   try {
     renderSphere(d);
     FAIL() << "no error";

@@ -120,8 +120,9 @@ arrows = { field = "temperature" }
   const SceneDescription description = parseScene(scalar, test::dataFile("render/arrows.toml"));
   const std::string message = test::messageOf([&] { buildScene(description); });
   EXPECT_NE(
-      message.find("arrows.toml:4:10: error: arrows field \"temperature\" must be node data ($NodeData) of 3 "
-                   "components (a vector per node), but it is node data of 1 component"),
+      message.find(
+          "arrows.toml:4:10: error: arrows field \"temperature\" must be node or element-node data of 3 "
+          "components (a vector per node), but it is node data of 1 component"),
       std::string::npos)
       << message;
   test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\narrows = { field = \"v\", max_count = 0 }\n",

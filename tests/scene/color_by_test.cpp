@@ -66,7 +66,7 @@ TEST(ColorByTest, NodeFieldIsNormalisedOverItsRange) {
   ColorBy spec;
   spec.field = "temperature";
   const FieldColoring coloring = resolveColorBy(spec, mesh);
-  EXPECT_FALSE(coloring.perFace);
+  EXPECT_EQ(coloring.at, FieldAt::kNode);
   EXPECT_NEAR(coloring.low, 0.0, 1e-6);
   EXPECT_NEAR(coloring.high, 3.0, 1e-6);
   ASSERT_EQ(coloring.t.size(), mesh.positions.size());
@@ -85,6 +85,43 @@ TEST(ColorByTest, ExplicitRangeClamps) {
   for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
     const Vec3d p = mesh.worldPosition(v);
     EXPECT_NEAR(coloring.t[v], std::clamp(p.x + 2 * p.y - 1, 0.0, 1.0), 1e-5);
+  }
+}
+
+TEST(ColorByTest, MapsByNameReversedGmshsAndLists) {
+  EXPECT_EQ(parse(R"(color_by = { field = "t", map = "RdBu_r" })")->map, *ColorMap::named("RdBu_r"));
+  EXPECT_EQ(parse(R"(color_by = { field = "t", map = "grey" })")->map, ColorMapKind::Grey);
+  EXPECT_EQ(parse(R"(color_by = { field = "t", map = "gmsh:2" })")->map.name(), "gmsh:2");
+  const ColorMap list = parse(R"(color_by = { field = "t", map = ["#000080", "White", [0.5, 0, 0]] })")->map;
+  EXPECT_EQ(list.name(), R"(["#000080", "White", [0.5, 0, 0]])");
+  ASSERT_EQ(list.colors().size(), 3u);
+  EXPECT_EQ(list.colors()[0], (Vec3{0, 0, 128 / 255.0f}));
+  EXPECT_EQ(list.colors()[1], (Vec3{1, 1, 1}));
+  EXPECT_EQ(list.colors()[2], (Vec3{0.5f, 0, 0}));
+  EXPECT_EQ(parse(R"(color_by = { field = "t" })")->scale, ColorScale::Linear);
+  EXPECT_EQ(parse(R"(color_by = { field = "t", scale = "log", range = [1e-3, 3] })")->scale, ColorScale::Log);
+  // The CLI's spelling: a name, or colours separated by commas.
+  EXPECT_EQ(colorMapFromText("turbo", {"--color-map"}), *ColorMap::named("turbo"));
+  EXPECT_EQ(colorMapFromText("#000080, white,#800000", {"--color-map"}).colors().size(), 3u);
+}
+
+TEST(ColorByTest, LogScaleKeepsValuesForThePixelToPlace) {
+  // With a range whose low end is > 0, values below it (0 at the origin) are drawn at the low end:
+  // the values are kept as they are and placed on the map after interpolation (FieldMap).
+  const Mesh mesh = fieldMesh();
+  ColorBy spec;
+  spec.field = "temperature";
+  spec.scale = ColorScale::Log;
+  spec.range = std::pair{0.1, 3.0};
+  const FieldColoring coloring = resolveColorBy(spec, mesh);
+  EXPECT_EQ(coloring.scale, ColorScale::Log);
+  EXPECT_EQ(coloring.low, 0.1);
+  EXPECT_EQ(coloring.high, 3.0);
+  const MapPosition position(0.1, 3.0, ColorScale::Log);
+  for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3d p = mesh.worldPosition(v);
+    EXPECT_NEAR(coloring.t[v], p.x + 2 * p.y, 1e-5);
+    EXPECT_NEAR(position(coloring.t[v]), std::log(std::max(p.x + 2 * p.y, 0.1) / 0.1) / std::log(30.0), 1e-5);
   }
 }
 

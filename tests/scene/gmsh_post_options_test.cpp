@@ -60,6 +60,30 @@ TEST(GmshPostOptions, TheViewRendersAsSetUp) {
   EXPECT_EQ(mesh.colorBy->legend, LegendPlacement::Bottom);
 }
 
+TEST(GmshPostOptions, TheViewTakesGmshsColourMap) {
+  // gmsh's default map (ColormapNumber 2, its jet) unless the view names another; ColormapSwap
+  // reverses it. A mesh's own color_by keeps its map.
+  const std::string path = test::dataFile("results/colormap.opt");
+  const std::vector<GmshPostView> views = readGmshPostViews(path);
+  ASSERT_EQ(views.size(), 3u);
+  EXPECT_EQ(views[0].colormapNumber, 2);
+  EXPECT_EQ(views[1].colormapNumber, 7);
+  EXPECT_TRUE(views[1].colormapSwap);
+  SceneDescription description = oneMesh();
+  const Mesh mesh = readMsh(description.meshes[0].file);
+  applyGmshPostViews(description, mesh, views, path);
+  ASSERT_TRUE(description.meshes[0].colorBy);
+  EXPECT_EQ(description.meshes[0].colorBy->map.name(), "gmsh:7_r");
+  EXPECT_EQ(description.meshes[0].colorBy->map, *ColorMap::named("gmsh:7_r"));
+  SceneDescription own = oneMesh();
+  ColorBy colorBy;
+  colorBy.field = "stress";
+  colorBy.map = *ColorMap::named("RdBu");
+  own.meshes[0].colorBy = colorBy;
+  applyGmshPostViews(own, mesh, views, path);
+  EXPECT_EQ(own.meshes[0].colorBy->map.name(), "RdBu");
+}
+
 // The description and scene of cantilever.msh under the options file `name` of tests/data/results.
 struct AppliedView {
   SceneDescription description;
@@ -91,9 +115,10 @@ TEST(GmshPostOptions, IsoValuesAreIsolinesOfTheColouredFieldAtGmshsValues) {
   // surface in its own material (no face takes the field's colours), the legend kept.
   const std::vector<Vec3>& colors = applied.scene.isolines->styles[1].valueColors;
   ASSERT_EQ(colors.size(), 8u);
-  const ColorMapKind map = applied.description.meshes[0].colorBy->map;
+  const ColorMap& map = applied.description.meshes[0].colorBy->map;
+  EXPECT_EQ(map.name(), "gmsh:2");  // gmsh's default map, ColormapNumber = 2
   for (int k = 0; k < 8; ++k)
-    EXPECT_LT(length(colors[static_cast<std::size_t>(k)] - colorMapLookup(map, k / 7.0f)), 1e-5f) << k;
+    EXPECT_LT(length(colors[static_cast<std::size_t>(k)] - map(k / 7.0f)), 1e-5f) << k;
   for (const std::uint8_t faceMap : applied.scene.fieldColors->faceColorMap) ASSERT_EQ(faceMap, 0);
   ASSERT_EQ(applied.scene.fieldColors->legends.size(), 1u);
   EXPECT_EQ(applied.scene.fieldColors->legends[0].low, 1);
@@ -175,6 +200,43 @@ TEST(GmshPostOptions, IntegersOutsideAnIntAreRefusedNotWrapped) {
   ASSERT_EQ(views.size(), 1u);
   EXPECT_EQ(views[0].customMax, 1e300);
   EXPECT_EQ(views[0].timeStep, 2147483647);
+}
+
+// gmsh's way to show the stress on the deformed shape: the displacement view (VectorType 5) coloured
+// by another view named by its ExternalView, that view itself hidden; a vector view left at gmsh's
+// default VectorType (4, 3D arrows) is drawn as arrows; options lancer does not draw are named.
+TEST(GmshPostOptions, ExternalViewsArrowsAndWhatIsNotApplied) {
+  const test::ScratchFolder folder;
+  folder.write("external.opt",
+               "View[0].VectorType = 5;\nView[0].ExternalView = 1;\nView[0].Axes = 1; // Type of axes\n"
+               "View[0].Max = 1.5; // Maximum value in the view (read-only)\nView[1].Visible = 0;\n"
+               "View[2].Visible = 0;\n");
+  SceneDescription description = oneMesh();
+  const Mesh mesh = readMsh(description.meshes[0].file);
+  applyGmshPostViews(description, mesh, readGmshPostViews(folder.file("external.opt")),
+                     folder.file("external.opt"));
+  const MeshInstance& coloured = description.meshes[0];
+  ASSERT_TRUE(coloured.warp);
+  EXPECT_EQ(coloured.warp->field, "displacement");
+  ASSERT_TRUE(coloured.colorBy);
+  EXPECT_EQ(coloured.colorBy->field, "stress");
+  EXPECT_EQ(coloured.colorBy->component.kind, FieldComponent::Kind::VonMises);
+  EXPECT_FALSE(coloured.arrows);
+  ASSERT_EQ(description.notes.size(), 1u);
+  EXPECT_EQ(description.notes[0],
+            folder.file("external.opt") + ": warning: lancer does not draw these gmsh options: View[0].Axes");
+
+  folder.write("arrows.opt", "View[0].Visible = 1;\nView[1].Name = \"stress\";\nView[2].Visible = 0;\n");
+  SceneDescription withArrows = oneMesh();
+  applyGmshPostViews(withArrows, mesh, readGmshPostViews(folder.file("arrows.opt")),
+                     folder.file("arrows.opt"));
+  const MeshInstance& drawn = withArrows.meshes[0];
+  EXPECT_FALSE(drawn.warp);
+  ASSERT_TRUE(drawn.arrows);
+  EXPECT_EQ(drawn.arrows->field, "displacement");
+  ASSERT_TRUE(drawn.colorBy);
+  EXPECT_EQ(drawn.colorBy->field, "stress");
+  EXPECT_TRUE(withArrows.notes.empty());
 }
 
 }  // namespace

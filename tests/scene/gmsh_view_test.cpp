@@ -118,5 +118,23 @@ TEST(GmshViewBadInput, AMissingFileSaysHowGmshWritesOne) {
             "writes part.msh.opt");
 }
 
+// gmsh frames the model's bounding box as its options file records it (General.MinX .. MaxZ, a 0
+// left out): a view displaced by a warp is framed on the undeformed model, whatever the warp adds.
+TEST(GmshView, AViewFramesTheModelBoxItsOptionsRecord) {
+  const GmshView view = readGmshView(test::dataFile("results/cantilever.msh.opt"));
+  ASSERT_TRUE(view.modelBounds);
+  EXPECT_EQ(view.modelBounds->lower, (Vec3d{0, 0, 0}));
+  EXPECT_EQ(view.modelBounds->upper, (Vec3d{10, 1, 1}));
+  Aabbd warped = *view.modelBounds;
+  warped.extend(Vec3d{10, -4, 1});  // the tip bent down by the displacement
+  const GmshCamera onModel = gmshViewCamera(view, *view.modelBounds, 4.0 / 3.0);
+  const GmshCamera onWarped = gmshViewCamera(view, warped, 4.0 / 3.0);
+  EXPECT_EQ(onWarped.lookAt, onModel.lookAt);
+  EXPECT_EQ(onWarped.viewHeight, onModel.viewHeight);
+  GmshView unsaved = view;
+  unsaved.modelBounds.reset();  // no General.Min/Max: the scene's bounds
+  EXPECT_NE(gmshViewCamera(unsaved, warped, 4.0 / 3.0).lookAt, onModel.lookAt);
+}
+
 }  // namespace
 }  // namespace lancer

@@ -59,7 +59,7 @@ TEST(ResultsBadInput, StepPastTheLast) {
 
 TEST(ResultsBadInput, WarpFieldWithoutValuesForSomeNodes) {
   Mesh mesh = cantilever();
-  MeshField partial{"d", false, 3, 0, 0.0, std::vector<float>(3 * mesh.positions.size(), 0.0f)};
+  MeshField partial{"d", FieldAt::kNode, 3, 0, 0.0, std::vector<float>(3 * mesh.positions.size(), 0.0f)};
   for (int i = 0; i < 6; ++i) partial.values[static_cast<std::size_t>(i)] = NAN;
   mesh.fields.push_back(partial);
   const Mesh fields = mesh;

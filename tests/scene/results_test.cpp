@@ -52,7 +52,7 @@ TEST(Warp, CollapsedFacesAreDroppedAndCountedWithoutNaN) {
   // The half x > 5 squashed onto the plane x = 5: its faces along the beam collapse; the end cap
   // moves onto the plane and keeps its area.
   Mesh mesh = cantilever();
-  MeshField squash{"squash", false, 3, 0, 0.0, {}};
+  MeshField squash{"squash", FieldAt::kNode, 3, 0, 0.0, {}};
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     const double x = mesh.worldPosition(static_cast<std::uint32_t>(v)).x;
     squash.values.insert(squash.values.end(), {x > 5 ? static_cast<float>(5 - x) : 0.0f, 0, 0});

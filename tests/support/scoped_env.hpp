@@ -1,4 +1,5 @@
-// Sets an environment variable for one scope and puts back what it was (or unsets it).
+// Sets (or, with std::nullopt, unsets) an environment variable for one scope and puts back what it
+// was (or unsets it).
 #pragma once
 
 #include <cstdlib>
@@ -9,9 +10,13 @@ namespace lancer::test {
 
 class ScopedEnv {
  public:
-  ScopedEnv(const char* name, const std::string& value) : name_(name) {
+  ScopedEnv(const char* name, const std::optional<std::string>& value) : name_(name) {
     if (const char* old = std::getenv(name)) old_ = old;
-    ::setenv(name, value.c_str(), 1);
+    if (value) {
+      ::setenv(name, value->c_str(), 1);
+    } else {
+      ::unsetenv(name);
+    }
   }
   ~ScopedEnv() {
     if (old_) {

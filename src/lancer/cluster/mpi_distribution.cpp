@@ -12,12 +12,14 @@
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
+#include <cstring>
 #include <deque>
 #include <exception>
 #include <limits>
 #include <map>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 #include "lancer/util/thread_count.hpp"
 #endif
@@ -59,9 +61,27 @@ constexpr auto kPollPause = std::chrono::microseconds(500);
 
 struct MpiState {
   bool initialised = false;
-  int rank = 0, size = 1, nodeRanks = 1;
+  int rank = 0, size = 1;
+  int ranksSharingCpus = 1;  // the ranks of this node whose affinity masks meet this one's, this one included
 };
 MpiState gMpi;
+
+// How many ranks of this node may run on the CPUs this rank may run on: all of them when they are not
+// bound (`mpirun --bind-to none`, one SLURM cpuset), none but this one when each is bound to its own
+// cores, the ranks of a socket under --bind-to socket. A mask that cannot be read counts as every CPU.
+int countRanksSharingCpus(MPI_Comm node, int nodeRanks) {
+  cpu_set_t mine;
+  CPU_ZERO(&mine);
+  if (sched_getaffinity(0, sizeof mine, &mine) != 0) std::memset(&mine, 0xff, sizeof mine);
+  std::vector<cpu_set_t> masks(static_cast<std::size_t>(nodeRanks));
+  MPI_Allgather(&mine, sizeof mine, MPI_BYTE, masks.data(), sizeof mine, MPI_BYTE, node);
+  int sharing = 0;
+  for (cpu_set_t& other : masks) {
+    CPU_AND(&other, &other, &mine);
+    if (CPU_COUNT(&other) > 0) ++sharing;
+  }
+  return std::max(1, sharing);
+}
 
 void initialiseMpi() {
   if (gMpi.initialised) return;
@@ -76,7 +96,9 @@ void initialiseMpi() {
   MPI_Comm node = MPI_COMM_NULL;
   MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
   if (node != MPI_COMM_NULL) {
-    MPI_Comm_size(node, &gMpi.nodeRanks);
+    int nodeRanks = 1;
+    MPI_Comm_size(node, &nodeRanks);
+    gMpi.ranksSharingCpus = countRanksSharingCpus(node, nodeRanks);
     MPI_Comm_free(&node);
   }
   gMpi.initialised = true;
@@ -114,8 +136,12 @@ class MpiDistribution final : public WorkDistribution {
  public:
   int rank() const override { return gMpi.rank; }
   int ranks() const override { return gMpi.size; }
+  // OMP_NUM_THREADS and SLURM_CPUS_PER_TASK are per rank already; the CPUs of an affinity mask are
+  // shared with the other ranks of the node that may run on them.
   int defaultThreads() const override {
-    return std::max(1, resolveThreadCount(0) / std::max(1, gMpi.nodeRanks));
+    const DefaultThreadCount threads = defaultThreadCount();
+    if (threads.source != ThreadCountSource::kAffinity) return threads.count;
+    return std::max(1, threads.count / gMpi.ranksSharingCpus);
   }
   bool run(const DistributedWork& work) override { return gMpi.rank == 0 ? coordinate(work) : follow(work); }
 

@@ -1,8 +1,10 @@
 #include "lancer/image/frame_sequence.hpp"
 
 #include <fmt/format.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -62,12 +64,42 @@ bool completeFrameExists(const std::string& path, int width, int height) {
   return false;
 }
 
+namespace {
+
+// Removes `.lancer-PID-*` files of `folder` whose PID names no running process: frames staged by a
+// run that was killed (SIGKILL leaves no chance to remove them). A PID now reused by another
+// process keeps its files, which is safe; a file that cannot be removed is left.
+void removeStaleStagedFrames(const std::filesystem::path& folder) {
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder.empty() ? "." : folder, error)) {
+    const std::string name = entry.path().filename().string();
+    constexpr std::string_view kPrefix = ".lancer-";
+    if (!name.starts_with(kPrefix)) continue;
+    const std::size_t dash = name.find('-', kPrefix.size());
+    if (dash == std::string::npos || dash == kPrefix.size()) continue;
+    long pid = 0;
+    const std::string digits = name.substr(kPrefix.size(), dash - kPrefix.size());
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+    pid = std::stol(digits);
+    if (pid <= 0 || pid == ::getpid()) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to tell
+    std::filesystem::remove(entry.path(), error);
+  }
+}
+
+}  // namespace
+
 StagedFrames::~StagedFrames() {
   for (const auto& [hidden, target] : staged_) std::remove(hidden.c_str());
 }
 
 void StagedFrames::write(const std::string& target, const Image& image, const ImageWriteOptions& options) {
   const std::filesystem::path path(target);
+  const std::string folder = path.parent_path().string();
+  if (std::find(cleanedFolders_.begin(), cleanedFolders_.end(), folder) == cleanedFolders_.end()) {
+    removeStaleStagedFrames(path.parent_path());
+    cleanedFolders_.push_back(folder);
+  }
   // The hidden name keeps the extension, which selects the format.
   const std::string hidden =
       (path.parent_path() / fmt::format(".lancer-{}-{}", ::getpid(), path.filename().string())).string();

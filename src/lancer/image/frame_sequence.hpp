@@ -37,12 +37,15 @@ class StagedFrames {
   StagedFrames(const StagedFrames&) = delete;
   StagedFrames& operator=(const StagedFrames&) = delete;
 
+  // Writes the frame under a hidden name beside its target (.lancer-PID-NAME). The first write into a
+  // folder removes the hidden frames a killed run left there (a PID no process has any more).
   void write(const std::string& target, const Image& image, const ImageWriteOptions& options);
   // Renames every staged frame over its target; throws InputError if a rename fails.
   void publish();
 
  private:
   std::vector<std::pair<std::string, std::string>> staged_;  // (hidden file, target)
+  std::vector<std::string> cleanedFolders_;
 };
 
 }  // namespace lancer

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "lancer/image/pixel_encoding.hpp"
@@ -74,14 +75,13 @@ Vec3 barColour(const LegendSpec& spec, float t, bool linearize) {
     t = (std::min(std::floor(t * static_cast<float>(spec.bands)), static_cast<float>(spec.bands - 1)) +
          0.5f) /
         static_cast<float>(spec.bands);
-  Vec3 c = colorMapLookup(spec.map, t);
+  Vec3 c = spec.map(t);
   if (linearize) c = {linearFromSrgb(c.x), linearFromSrgb(c.y), linearFromSrgb(c.z)};
   return c;
 }
 
-// Where a tick's value falls along the bar, 0 at low and 1 at high.
-float tickFraction(const LegendSpec& spec, double value) {
-  return spec.high > spec.low ? static_cast<float>((value - spec.low) / (spec.high - spec.low)) : 0.5f;
+bool onLogScale(const LegendSpec& spec) {
+  return spec.scale == ColorScale::Log && spec.low > 0 && spec.high > spec.low && std::isfinite(spec.high);
 }
 
 Image legendPanel(const LegendSpec& spec, bool horizontal, int barLength, float textHeight, bool linearize,
@@ -89,8 +89,12 @@ Image legendPanel(const LegendSpec& spec, bool horizontal, int barLength, float 
   barLength = std::max(barLength, 16);
   const std::string title = legendTitle(spec);
   const Layout l = layoutFor(textHeight, !title.empty());
-  const NiceTicks ticks = niceTicks(spec.low, spec.high, horizontal ? 4 : 6);
-  const std::vector<std::string> labels = tickLabels(ticks);
+  const int tickCount = horizontal ? 4 : 6;
+  const bool log = onLogScale(spec);
+  const NiceTicks ticks =
+      log ? logTicks(spec.low, spec.high, tickCount) : niceTicks(spec.low, spec.high, tickCount);
+  const std::vector<std::string> labels = log ? logTickLabels(ticks) : tickLabels(ticks);
+  const MapPosition tickFraction(spec.low, spec.high, log ? ColorScale::Log : ColorScale::Linear);
   std::vector<TextMetrics> labelMetrics;
   int widestLabel = 0;
   for (const std::string& label : labels) {
@@ -131,7 +135,7 @@ Image legendPanel(const LegendSpec& spec, bool horizontal, int barLength, float 
     }
   }
   for (std::size_t k = 0; k < ticks.values.size(); ++k) {
-    const float f = std::clamp(tickFraction(spec, ticks.values[k]), 0.0f, 1.0f);
+    const float f = tickFraction(ticks.values[k]);
     const int offset = static_cast<int>(std::lround(f * static_cast<float>(along - 1)));
     const TextMetrics& m = labelMetrics[k];
     if (horizontal) {
@@ -176,6 +180,57 @@ NiceTicks niceTicks(double low, double high, int targetCount) {
   }
   ticks.step = step;
   return ticks;
+}
+
+NiceTicks logTicks(double low, double high, int targetCount) {
+  if (!(low > 0) || !(high > low) || !std::isfinite(high)) return niceTicks(low, high, targetCount);
+  targetCount = std::max(targetCount, 2);
+  constexpr double kSlack = 1e-9;
+  const int first = static_cast<int>(std::ceil(std::log10(low) - kSlack));
+  const int last = static_cast<int>(std::floor(std::log10(high) + kSlack));
+  NiceTicks ticks;
+  const int decades = last - first + 1;
+  if (decades >= 3) {
+    // Every k-th power of ten, k such that about targetCount remain, aligned so that 10^0 is one.
+    const int every = (decades + targetCount - 1) / targetCount;
+    for (int e = first; e <= last; ++e)
+      if (((e % every) + every) % every == 0) ticks.values.push_back(std::pow(10.0, e));
+    if (ticks.values.size() >= 2) return ticks;
+    ticks.values.clear();
+    for (int e = first; e <= last; e += every) ticks.values.push_back(std::pow(10.0, e));
+    return ticks;
+  }
+  // A short range: 1, then 1 and 5, then 1, 2 and 5 times the powers of ten, the first that gives three.
+  constexpr std::array<std::array<double, 3>, 3> kMultiples = {{{1, 0, 0}, {1, 5, 0}, {1, 2, 5}}};
+  for (const auto& multiples : kMultiples) {
+    ticks.values.clear();
+    for (int e = first - 1; e <= last; ++e)
+      for (const double m : multiples) {
+        const double value = m * std::pow(10.0, e);
+        if (m > 0 && value >= low * (1 - kSlack) && value <= high * (1 + kSlack))
+          ticks.values.push_back(value);
+      }
+    if (ticks.values.size() >= 3) break;
+  }
+  if (ticks.values.size() < 2) return niceTicks(low, high, targetCount);  // within one 1-2-5 step
+  return ticks;
+}
+
+std::vector<std::string> logTickLabels(const NiceTicks& ticks) {
+  if (ticks.step > 0) return tickLabels(ticks);  // niceTicks' values, for a range within a 1-2-5 step
+  const bool plain = std::all_of(ticks.values.begin(), ticks.values.end(),
+                                 [](double v) { return v >= 1e-3 * (1 - 1e-9) && v < 1e5; });
+  std::vector<std::string> labels;
+  for (const double v : ticks.values) {
+    if (plain) {
+      labels.push_back(fmt::format("{:g}", v));
+      continue;
+    }
+    const int exponent = static_cast<int>(std::floor(std::log10(v) + 1e-9));
+    const long mantissa = std::lround(v / std::pow(10.0, exponent));
+    labels.push_back((mantissa == 1 ? "10" : fmt::format("{}\u00d710", mantissa)) + superscript(exponent));
+  }
+  return labels;
 }
 
 std::vector<std::string> tickLabels(const NiceTicks& ticks) {

@@ -16,14 +16,16 @@ namespace lancer {
 enum class LegendPlacement { None, Right, Bottom };
 
 // One colour bar: the map from low to high (a constant field has low == high and shows the map's
-// middle colour), `bands` > 0 draws it in that many discrete bands as the surface shows them.
+// middle colour), `bands` > 0 draws it in that many discrete bands as the surface shows them; on a
+// log scale the bar is the map along log(value) and its ticks are decades.
 struct LegendSpec {
-  ColorMapKind map = ColorMapKind::Viridis;
+  ColorMap map;
   double low = 0;
   double high = 1;
   std::string title;  // default: the field's name
   std::string units;  // shown after the title in parentheses
   int bands = 0;
+  ColorScale scale = ColorScale::Linear;
 };
 
 // Round tick values inside [low, high]: multiples of a step 1, 2 or 5 times a power of ten, chosen
@@ -35,6 +37,14 @@ struct NiceTicks {
   double step = 0;
 };
 NiceTicks niceTicks(double low, double high, int targetCount = 5);
+
+// Ticks for a log scale over [low, high] (0 < low <= high): the powers of ten inside it (every k-th
+// when more than about `targetCount`), with 2 and 5 times them added while fewer than three fit, and
+// niceTicks' values when not even those give two. `step` is 0 (labels: logTickLabels).
+NiceTicks logTicks(double low, double high, int targetCount = 5);
+// Their labels: plain decimals ("0.01", "20", "1000") while every value is in [0.001, 100000),
+// otherwise powers of ten ("10⁻³", "2×10⁻³", "10⁶").
+std::vector<std::string> logTickLabels(const NiceTicks& ticks);
 
 // The ticks' labels, all in one notation: plain decimals with the digits the step needs ("0.25",
 // "1500", "−2") while every |value| is in [0.001, 100000); otherwise a mantissa and one common power

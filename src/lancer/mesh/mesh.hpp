@@ -78,7 +78,8 @@ struct ExtraPhysicalGroups {
 // What the reader saw, for `lancer info` and for warnings.
 struct MeshSourceInfo {
   std::string path;
-  std::string formatVersion;  // "2.2", "4.0", "4.1"
+  std::string format = "msh";  // "msh", or "pos": a list-based view file, its elements the mesh
+  std::string formatVersion;   // "2.2", "4.0", "4.1" (msh)
   bool binary = false;
   std::uint64_t fileBytes = 0;
   std::uint64_t nodeCount = 0;

@@ -1,18 +1,23 @@
-// Reads gmsh .msh files (MSH 2.2, 4.0 and 4.1; ASCII and binary) into a Mesh: surface elements as
-// faces, volume elements as their skin. Bad input throws InputError pointing into the file.
-// The reader's parts are in mesh/msh/, reader.cpp first (the sections in file order).
+// The one door to mesh and view files: gmsh .msh files (MSH 2.2, 4.0 and 4.1; ASCII and binary) and
+// list-based .pos views (GetDP's default output) read into a Mesh, surface elements as faces, volume
+// elements as their skin; .pos views put on a mesh read from elsewhere. Bad input throws InputError
+// pointing into the file. The .msh reader's parts are in mesh/msh/, reader.cpp first (the sections
+// in file order); the .pos reader's in mesh/pos/.
 #pragma once
 
 #include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "lancer/mesh/mesh.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
 
-// Memory-maps and reads the file; source.loadSeconds holds the time it took. The parse is serial;
+// Memory-maps and reads the file; a list-based .pos view (recognised by content, or by its .pos name
+// when it looks like neither) becomes the mesh of its elements with its views' steps as element-node
+// fields (mesh/pos/pos_mesh.hpp). source.loadSeconds holds the time it took. The parse is serial;
 // the mesh assembly after it runs on `threads` threads (0: every core), the same mesh for any count.
 // When the file's result steps ($NodeData, $ElementData) would take more than residentFieldBytes as
 // floats, they are left in the file and read back when needed (MeshField::stored); the default is
@@ -27,5 +32,14 @@ std::uint64_t defaultResidentFieldBytes();
 
 // The same from bytes in memory (tests, fuzzing); nameForErrors is the file name errors show.
 Mesh readMshFromMemory(std::span<const char> bytes, const std::string& nameForErrors, int threads = 0);
+
+// Whether readMsh takes the file for a view file (a .pos) rather than a mesh: what the command line
+// asks of its inputs to tell the mesh from the views to put on it. False for a file it cannot read.
+bool isViewFile(const std::string& path);
+
+// Reads list-based .pos files and puts their views on `mesh` (read from another file), each step an
+// element-node field, by matching element coordinates (mesh/pos/pos_on_mesh.hpp). The time it takes
+// is added to mesh.source.loadSeconds.
+void addViewFiles(Mesh& mesh, const std::vector<std::string>& paths);
 
 }  // namespace lancer

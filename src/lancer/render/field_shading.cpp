@@ -26,12 +26,14 @@ bool fieldColorAt(const Scene& scene, const SurfacePoint& surface, bool lineariz
       t += surface.cornerWeight[c] * fields.vertexFieldT[face.vertex[c]];
   }
   if (std::isnan(t)) return false;
+  const FieldMap& fieldMap = fields.maps[static_cast<std::size_t>((map & FieldColors::kMapBits) - 1)];
+  if (fieldMap.scale == ColorScale::Log) t = fieldMap.position(t);  // the interpolated value, placed
   if (!fields.faceBands.empty() && fields.faceBands[surface.face] > 0) {
     // Discrete bands (gmsh's "discrete" intervals): each band shows the map at its middle.
     const auto bands = static_cast<float>(fields.faceBands[surface.face]);
     t = (std::min(std::floor(t * bands), bands - 1.0f) + 0.5f) / bands;
   }
-  color = colorMapLookup(static_cast<ColorMapKind>((map & FieldColors::kMapBits) - 1), t);
+  color = fieldMap.colors(t);
   if (linearize) color = {linearFromSrgb(color.x), linearFromSrgb(color.y), linearFromSrgb(color.z)};
   return true;
 }

@@ -1,5 +1,7 @@
 #include "lancer/scene/annotation_builder.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -31,12 +33,14 @@ std::vector<std::optional<ColorBy>> sharedColorRanges(const SceneDescription& de
     std::pair<double, double> range = *own[i];
     for (std::size_t j = 0; j < meshes.size(); ++j)
       if (own[j] && specs[j]->field == specs[i]->field && specs[j]->step == specs[i]->step &&
-          specs[j]->map == specs[i]->map) {
+          specs[j]->map == specs[i]->map && specs[j]->scale == specs[i]->scale) {
         range.first = std::min(range.first, own[j]->first);
         range.second = std::max(range.second, own[j]->second);
       }
-    // Only a range shared with other meshes is written down; a mesh alone keeps its own.
-    if (range != *own[i]) specs[i]->range = range;
+    // Only a range shared with other meshes is written down; a mesh alone keeps its own. A log scale
+    // over values <= 0 is left to resolveColorBy, which names the mesh's own least value.
+    const bool logOverNonPositive = specs[i]->scale == ColorScale::Log && !(range.first > 0);
+    if (range != *own[i] && !logOverNonPositive) specs[i]->range = range;
   }
   return specs;
 }
@@ -64,14 +68,31 @@ void appendInCornerOrder(std::vector<float>& out, const std::vector<float>& slot
 // faceEnd: its faces get the map, its vertices (or faces, or face corners) the field's t (the
 // mesh's vertices and faces are the scene's from the bases on, in order). Earlier meshes' entries
 // are filled with "not coloured" first.
-void appendFieldColoring(FieldColors& fields, const FieldColoring& coloring, std::uint32_t vertexBase,
-                         std::size_t vertexEnd, std::size_t faceBase, std::size_t faceEnd,
-                         const std::vector<MeshFace>& sceneFaces) {
+void appendFieldColoring(FieldColors& fields, const FieldColoring& coloring, const ColorBy& spec,
+                         std::uint32_t vertexBase, std::size_t vertexEnd, std::size_t faceBase,
+                         std::size_t faceEnd, const std::vector<MeshFace>& sceneFaces) {
   const int kind = coloring.at == FieldAt::kElement  ? FieldColors::kPerFace
                    : coloring.at == FieldAt::kCorner ? FieldColors::kPerCorner
                                                      : 0;
+  FieldMap fieldMap{coloring.map, coloring.scale};
+  if (coloring.scale == ColorScale::Log) {
+    fieldMap.low = coloring.low;
+    fieldMap.high = coloring.high;
+    fieldMap.position = MapPosition(coloring.low, coloring.high, ColorScale::Log);
+  }
+  auto map = std::find(fields.maps.begin(), fields.maps.end(), fieldMap);
+  if (map == fields.maps.end()) {
+    if (fields.maps.size() == FieldColors::kMaxMaps)
+      throw InputError(spec.where,
+                       fmt::format("color_by map \"{}\": a scene colours its meshes with at most {} "
+                                   "different colour maps (or log ranges); give some meshes the same "
+                                   "map",
+                                   coloring.map.name(), FieldColors::kMaxMaps));
+    map = fields.maps.insert(fields.maps.end(), std::move(fieldMap));
+  }
+  const int mapIndex = static_cast<int>(map - fields.maps.begin());
   fields.faceColorMap.resize(faceBase, 0);
-  fields.faceColorMap.resize(faceEnd, static_cast<std::uint8_t>((1 + static_cast<int>(coloring.map)) | kind));
+  fields.faceColorMap.resize(faceEnd, static_cast<std::uint8_t>((1 + mapIndex) | kind));
   if (coloring.at == FieldAt::kCorner) {
     appendInCornerOrder(fields.cornerFieldT, coloring.t, sceneFaces, faceBase, faceEnd);
     return;
@@ -102,10 +123,12 @@ void appendLegendAndBands(FieldColors& fields, const ColorBy& spec, const FieldC
   const std::string title = spec.title.value_or(fieldTitle(spec.field, spec.component, coloring.components));
   auto same = [&](const LegendSpec& legend) {
     return legend.map == coloring.map && legend.low == coloring.low && legend.high == coloring.high &&
-           legend.title == title && legend.units == spec.units && legend.bands == spec.bands;
+           legend.title == title && legend.units == spec.units && legend.bands == spec.bands &&
+           legend.scale == coloring.scale;
   };
   if (std::none_of(fields.legends.begin(), fields.legends.end(), same))
-    fields.legends.push_back({coloring.map, coloring.low, coloring.high, title, spec.units, spec.bands});
+    fields.legends.push_back(
+        {coloring.map, coloring.low, coloring.high, title, spec.units, spec.bands, coloring.scale});
   if (spec.legend && fields.legendPlacement == LegendPlacement::None) fields.legendPlacement = *spec.legend;
   if (spec.bands > 0) {
     fields.faceBands.resize(faceBase, 0);
@@ -117,12 +140,12 @@ void finishBands(FieldColors& fields, std::size_t faceCount) {
   if (!fields.faceBands.empty()) fields.faceBands.resize(faceCount, 0);
 }
 
-std::vector<Vec3> isolineValueColors(const std::vector<float>& values, ColorMapKind map, double low,
-                                     double high) {
+std::vector<Vec3> isolineValueColors(const std::vector<float>& values, const ColorMap& map, double low,
+                                     double high, ColorScale scale) {
   std::vector<Vec3> colors;
   colors.reserve(values.size());
-  const MapPosition position(low, high);  // as the surface colours are placed on the map
-  for (const float v : values) colors.push_back(colorMapLookup(map, position(v)));
+  const MapPosition position(low, high, scale);  // as the surface colours are placed on the map
+  for (const float v : values) colors.push_back(map(position(v)));
   return colors;
 }
 
@@ -188,23 +211,26 @@ void annotateScene(Scene& scene, const StepSelection& when, const std::vector<En
     if (entry.coloring) {
       startFields();
       if (entry.colorBy->paintsSurface)
-        appendFieldColoring(*fields, *entry.coloring, entry.vertexBase, entry.vertexEnd, entry.faceBase,
-                            entry.faceEnd, scene.geometry.faces);
+        appendFieldColoring(*fields, *entry.coloring, *entry.colorBy, entry.vertexBase, entry.vertexEnd,
+                            entry.faceBase, entry.faceEnd, scene.geometry.faces);
       appendLegendAndBands(*fields, *entry.colorBy, *entry.coloring, entry.faceBase, entry.faceEnd);
     }
     if (!entry.instance->isolines) continue;
     const IsolineSpec& spec = *entry.instance->isolines;
     std::optional<std::pair<double, double>> colorRange;  // gmsh's iso-values span the colours' range
-    if (entry.coloring && entry.colorBy->field == spec.field && entry.colorBy->component == spec.component)
+    ColorScale scale = ColorScale::Linear;                // and a log scale's lines are spaced as it is
+    if (entry.coloring && entry.colorBy->field == spec.field && entry.colorBy->component == spec.component) {
       colorRange = std::pair{entry.coloring->low, entry.coloring->high};
-    ResolvedIsolines resolved = resolveIsolines(spec, *entry.fields, when, colorRange);
+      scale = entry.coloring->scale;
+    }
+    ResolvedIsolines resolved = resolveIsolines(spec, *entry.fields, when, colorRange, scale);
     if (!isolines) isolines.emplace(std::exchange(spareIsolines, IsolineOverlay{}));
     std::vector<Vec3> valueColors;  // color = "map": over the colours' range, else over the lines'
     if (spec.colorFromMap && !resolved.values.empty()) {
       const auto [low, high] =
           colorRange.value_or(std::pair<double, double>{resolved.values.front(), resolved.values.back()});
-      valueColors = isolineValueColors(resolved.values,
-                                       entry.colorBy ? entry.colorBy->map : ColorMapKind::Viridis, low, high);
+      valueColors = isolineValueColors(resolved.values, entry.colorBy ? entry.colorBy->map : ColorMap{}, low,
+                                       high, scale);
     }
     appendIsolines(isolines, spec, std::move(resolved), entry.vertexBase, entry.faceBase, entry.faceEnd,
                    entry.vertexEnd, scene.geometry.faces, std::move(valueColors));
@@ -256,18 +282,21 @@ std::vector<Mesh> addArrowMeshes(SceneDescription& description, const std::vecto
         }
         if (range.first <= range.second) colorBy.range = range;
       }
-      colorBy.map = instance.colorBy ? instance.colorBy->map : ColorMapKind::Viridis;
+      colorBy.map = instance.colorBy ? instance.colorBy->map : ColorMap{};  // linear: magnitudes reach 0
       colorBy.legend = instance.colorBy ? instance.colorBy->legend : std::nullopt;
       colorBy.where = spec.where;
       colorBy.title = "|" + spec.field + "|";
       // Arrows of the field the mesh is coloured by (its magnitude) share its colours, so its one
-      // legend: the same title, units, bands and range.
+      // legend: the same title, units, bands and range (and scale, with the range).
       const ColorBy* surface = instance.colorBy ? &*instance.colorBy : nullptr;
       if (surface && surface->field == spec.field && surface->component == FieldComponent{}) {
         if (surface->title) colorBy.title = surface->title;
         colorBy.units = surface->units;
         colorBy.bands = surface->bands;
-        if (surface->range) colorBy.range = surface->range;
+        if (surface->range) {  // a log scale needs the range's low end above 0, which the mesh's has
+          colorBy.range = surface->range;
+          colorBy.scale = surface->scale;
+        }
       }
       instance.colorBy = colorBy;
     }

@@ -27,9 +27,10 @@ void appendLegendAndBands(FieldColors& fields, const ColorBy& spec, const FieldC
 // faceBands in step with the faces, when some mesh has bands.
 void finishBands(FieldColors& fields, std::size_t faceCount);
 
-// The colours of isolines at `values` for color = "map": each value's in `map` over [low, high].
-std::vector<Vec3> isolineValueColors(const std::vector<float>& values, ColorMapKind map, double low,
-                                     double high);
+// The colours of isolines at `values` for color = "map": each value's in `map` over [low, high],
+// placed on it by `scale` as the surface's colours are.
+std::vector<Vec3> isolineValueColors(const std::vector<float>& values, const ColorMap& map, double low,
+                                     double high, ColorScale scale = ColorScale::Linear);
 // Records a mesh's isolines (resolveIsolines's, drawn as `spec` says, in valueColors when given):
 // its vertices start at vertexBase and faces at faceBase in the scene, whose faces are sceneFaces.
 void appendIsolines(std::optional<IsolineOverlay>& overlay, const IsolineSpec& spec,

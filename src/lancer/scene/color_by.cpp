@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -22,7 +23,102 @@ void readLegendKeys(const TomlTableReader& reader, ColorBy& spec) {
     spec.legend = static_cast<LegendPlacement>(*legend);
 }
 
+constexpr std::string_view kListExample = R"(["#000080", "white", "#800000"])";
+
+// The `map` key: a name, or a list of colours (each text or [r, g, b]).
+ColorMap readColorMap(const TomlTableReader& reader, const toml::node& node) {
+  const std::string key = reader.qualified("map");
+  if (node.is_string()) {
+    const std::string name = node.value<std::string>().value_or("");
+    if (std::optional<ColorMap> map = ColorMap::named(name)) return *map;
+    reader.fail(node, fmt::format("{}: {}", key, unknownColorMapMessage(name)));
+  }
+  const toml::array* array = node.as_array();
+  if (!array)
+    reader.fail(
+        node, fmt::format("{} must be a colour map's name (\"viridis\") or a list of colours ({}), found {}",
+                          key, kListExample, describeValue(node)));
+  if (array->size() < 2 || array->size() > kMaxListColors)
+    reader.fail(node,
+                fmt::format("{} must list 2 to {} colours, evenly spaced from the low end to the high end, "
+                            "found {}",
+                            key, kMaxListColors, describeValue(node)));
+  std::vector<Vec3> colors;
+  std::string name = "[";
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const toml::node& item = *array->get(i);
+    const std::string itemKey = fmt::format("{}[{}]", key, i);
+    if (item.is_string()) {
+      const std::string text = item.value<std::string>().value_or("");
+      const std::optional<Vec3> color = parseColor(text);
+      if (!color) reader.fail(item, fmt::format("{}: {}", itemKey, unknownColorMessage(text)));
+      colors.push_back(*color);
+      name += fmt::format("{}\"{}\"", i == 0 ? "" : ", ", text);
+      continue;
+    }
+    const toml::array* triple = item.as_array();
+    std::array<double, 3> rgb{NAN, NAN, NAN};
+    for (std::size_t c = 0; triple && triple->size() == 3 && c < 3; ++c)
+      if (const toml::node* channel = triple->get(c); channel->is_number())
+        rgb[c] = channel->value<double>().value_or(NAN);
+    if (!std::all_of(rgb.begin(), rgb.end(), [](double c) { return c >= 0 && c <= 1; }))
+      reader.fail(item, fmt::format("{} must be a colour: \"#rrggbb\", \"#rgb\", a CSS colour name such as "
+                                    "\"navy\", or [r, g, b] with each 0 to 1; found {}",
+                                    itemKey, describeValue(item)));
+    colors.push_back(toFloat(Vec3d{rgb[0], rgb[1], rgb[2]}));
+    name += fmt::format("{}[{:g}, {:g}, {:g}]", i == 0 ? "" : ", ", rgb[0], rgb[1], rgb[2]);
+  }
+  return ColorMap::fromColors(std::move(colors), name + "]");
+}
+
 }  // namespace
+
+std::string unknownColorMapMessage(std::string_view name) {
+  if (name.starts_with("gmsh:"))
+    return fmt::format(
+        "\"{}\" is not one of gmsh's colour maps: gmsh:0 to gmsh:24 (gmsh's View.ColormapNumber), "
+        "with _r to reverse one",
+        name);
+  // "virdis_r" is offered "viridis_r".
+  const bool reversed = name.size() > 2 && name.ends_with("_r");
+  const std::string_view base = reversed ? name.substr(0, name.size() - 2) : name;
+  const std::vector<std::string_view> names = colorMapNames();
+  const std::optional<std::string> closest = closestName(base, std::span<const std::string_view>(names));
+  return fmt::format("\"{}\" is not a colour map{}: use {}; or a list of colours such as {}", name,
+                     closest ? fmt::format(" (did you mean '{}{}'?)", *closest, reversed ? "_r" : "") : "",
+                     describeColorMaps(), kListExample);
+}
+
+std::string unknownColorMessage(std::string_view text) {
+  const std::vector<std::string_view> names = colorNames();
+  return fmt::format(
+      "\"{}\" is not a colour{}: use \"#rrggbb\", \"#rgb\" or a CSS colour name such as \"navy\"", text,
+      didYouMean(text, std::span<const std::string_view>(names)));
+}
+
+ColorMap colorMapFromText(std::string_view text, const SourceLocation& where) {
+  if (text.find(',') == std::string_view::npos) {
+    if (std::optional<ColorMap> map = ColorMap::named(text)) return *map;
+    throw InputError(where, unknownColorMapMessage(text));
+  }
+  std::vector<Vec3> colors;
+  std::string name = "[";
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    std::string_view item = text.substr(start, comma - start);
+    while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
+    while (!item.empty() && item.back() == ' ') item.remove_suffix(1);
+    const std::optional<Vec3> color = parseColor(item);
+    if (!color)
+      throw InputError(where, fmt::format("colour {}: {}", colors.size() + 1, unknownColorMessage(item)));
+    colors.push_back(*color);
+    name += fmt::format("{}\"{}\"", colors.size() == 1 ? "" : ", ", item);
+    start = comma + 1;
+  }
+  if (colors.size() > kMaxListColors)
+    throw InputError(where, fmt::format("{} colours: give 2 to {}", colors.size(), kMaxListColors));
+  return ColorMap::fromColors(std::move(colors), name + "]");
+}
 
 std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReader& mesh) {
   const toml::node* node = mesh.find("color_by");
@@ -40,9 +136,9 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
     reader.failMissing("field", "field = \"temperature\" (a $NodeData or $ElementData view's name)");
   spec.field = *field;
   if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
-  constexpr std::array<std::string_view, 5> kMapNames = {"viridis", "magma", "coolwarm", "grey", "gray"};
-  if (auto map = reader.choice("map", kMapNames))
-    spec.map = *parseColorMap(kMapNames[static_cast<std::size_t>(*map)]);
+  if (const toml::node* map = reader.find("map")) spec.map = readColorMap(reader, *map);
+  constexpr std::array<std::string_view, 2> kScales = {"linear", "log"};
+  if (auto scale = reader.choice("scale", kScales)) spec.scale = static_cast<ColorScale>(*scale);
   if (auto component = readFieldComponent(reader)) spec.component = *component;
   if (const toml::node* range = reader.find("range"); range && range->is_string()) {
     if (range->value<std::string>() != "step")
@@ -61,7 +157,8 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
     if (!array || array->size() != 2 || !number(0) || !number(1))
       reader.fail(*range, fmt::format("{} must be two finite numbers [min, max], found {}",
                                       reader.qualified("range"), describeValue(*range)));
-    if (const std::string problem = colorRangeProblem(reader.qualified("range"), *number(0), *number(1));
+    if (const std::string problem =
+            colorRangeProblem(reader.qualified("range"), *number(0), *number(1), spec.scale);
         !problem.empty())
       reader.fail(*range, problem);
     spec.range = std::pair{*number(0), *number(1)};
@@ -88,10 +185,16 @@ std::string fieldTitle(const std::string& name, const FieldComponent& component,
   return fmt::format("{} (component {})", name, i);
 }
 
-std::string colorRangeProblem(std::string_view name, double low, double high) {
+std::string colorRangeProblem(std::string_view name, double low, double high, ColorScale scale) {
   if (!std::isfinite(low) || !std::isfinite(high))
     return fmt::format("{} must be two finite numbers, found {} and {}", name, low, high);
   if (!(low < high)) return fmt::format("{} must have min < max, found [{}, {}]", name, low, high);
+  if (scale == ColorScale::Log && !(low > 0))
+    return fmt::format(
+        "{} must have min > 0 with scale = \"log\", found [{}, {}]: the low end is "
+        "where the map starts (values below it, 0 and negative ones included, "
+        "are drawn at it), e.g. [{:.3g}, {}]",
+        name, low, high, high * 1e-3, high);
   return {};
 }
 
@@ -201,8 +304,23 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
   }
   if (!(range.first <= range.second)) range = {0, 0};
   const auto [low, high] = range;
+  if (spec.scale == ColorScale::Log && !(low > 0)) {
+    const std::string over = spec.perStepRange || spec.step ? "at the step shown" : "over every step";
+    throw InputError(
+        spec.where,
+        high > 0
+            ? fmt::format(
+                  "color_by field \"{}\" in {} has values down to {:g} ({}), but scale = \"log\" needs "
+                  "values > 0: give a range whose low end is > 0, e.g. range = [{:.3g}, {:.3g}] (values "
+                  "below it are drawn at it), or scale = \"linear\"",
+                  spec.field, mesh.source.path, low + 0.0, over, high * 1e-3, high)
+            : fmt::format("color_by field \"{}\" in {} has no value above 0 (its greatest is {:g}, {}), so "
+                          "scale = \"log\" cannot show it: use scale = \"linear\"",
+                          spec.field, mesh.source.path, high + 0.0, over));  // + 0.0: -0 said as 0
+  }
   coloring.low = low;
   coloring.high = high;
+  coloring.scale = spec.scale;
   const MapPosition position(low, high);
   const int components = found->field->components;
   coloring.t.resize(found->size() / static_cast<std::size_t>(components));
@@ -215,7 +333,8 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
         blended[static_cast<std::size_t>(c)] = (*found)[first + static_cast<std::size_t>(c)];
       item = blended.data();
     }
-    coloring.t[i] = position(componentScalar(item, components, spec.component));
+    const double scalar = componentScalar(item, components, spec.component);
+    coloring.t[i] = spec.scale == ColorScale::Log ? static_cast<float>(scalar) : position(scalar);
   }
   return coloring;
 }

@@ -18,7 +18,8 @@ namespace lancer {
 struct ColorBy {
   std::string field;
   std::optional<int> step;  // pins this mesh's colours to one step; default: the scene's step or time
-  ColorMapKind map = ColorMapKind::Viridis;
+  ColorMap map;             // map = "viridis" (default), "RdBu_r", "gmsh:2", [colours]
+  ColorScale scale = ColorScale::Linear;           // scale = "log": values placed by their logarithm
   std::optional<std::pair<double, double>> range;  // default: the field's range over every step
   bool perStepRange = false;                       // range = "step": the range of the step shown
   FieldComponent component;                        // component = "magnitude" (default), 0..8, "x", ...

@@ -1,6 +1,7 @@
 #include "lancer/scene/gmsh_post_options.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -44,11 +45,19 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path) {
       view.name = value.substr(first + 1, last == std::string::npos ? std::string::npos : last - first - 1);
       continue;
     }
-    constexpr std::array<std::string_view, 10> kNumbers = {
-        "TimeStep",      "VectorType", "DisplacementFactor", "RangeType", "CustomMin", "CustomMax",
-        "IntervalsType", "NbIso",      "ShowScale",          "Visible"};
+    constexpr std::array<std::string_view, 13> kNumbers = {
+        "TimeStep",      "VectorType", "DisplacementFactor", "RangeType",      "CustomMin",    "CustomMax",
+        "IntervalsType", "NbIso",      "ShowScale",          "ColormapNumber", "ColormapSwap", "Visible",
+        "ExternalView"};
     const auto known = std::find(kNumbers.begin(), kNumbers.end(), name);
-    if (known == kNumbers.end()) continue;  // colours, fonts, the rest: not lancer's
+    if (known == kNumbers.end()) {  // colours, fonts, the rest: named, not drawn
+      // What gmsh writes of every view and no one sets: the read-only values, the step count, and
+      // the time of the step shown (TimeStep says which).
+      const bool writtenAlways = line.find("(read-only)") != std::string::npos ||
+                                 line.find("(do not change this!)") != std::string::npos || name == "Time";
+      if (name != "Name" && !writtenAlways) view.unapplied.push_back(name);
+      continue;
+    }
     char* numberEnd = nullptr;
     const double number = std::strtod(value.c_str() + first, &numberEnd);
     if (numberEnd == value.c_str() + first || !std::isfinite(number))
@@ -93,8 +102,21 @@ std::vector<GmshPostView> readGmshPostViews(const std::string& path) {
       case 8:
         view.showScale = whole != 0;
         break;
-      default:
+      case 9:
+        if (!ColorMap::named(fmt::format("gmsh:{}", whole)))
+          throw InputError(
+              SourceLocation{path, lineNumber, static_cast<std::int64_t>(equals + first + 2)},
+              fmt::format("View[{}].ColormapNumber = {}: gmsh's colour maps are 0 to 24", index, whole));
+        view.colormapNumber = whole;
+        break;
+      case 10:
+        view.colormapSwap = whole != 0;
+        break;
+      case 11:
         view.visible = whole != 0;
+        break;
+      default:
+        view.externalView = whole;
         break;
     }
   }
@@ -120,8 +142,20 @@ void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
                       describeViews(mesh)));
     return names[static_cast<std::size_t>(view.index)];
   };
+  std::vector<std::string> unapplied;
+  for (const GmshPostView& view : views)
+    for (const std::string& option : view.unapplied)
+      unapplied.push_back(fmt::format("View[{}].{}", view.index, option));
+  if (!unapplied.empty())
+    description.notes.push_back(fmt::format(
+        "{}: warning: lancer does not draw these gmsh options: {}{}", path,
+        fmt::join(unapplied.begin(),
+                  unapplied.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(unapplied.size(), 8)),
+                  ", "),
+        unapplied.size() > 8 ? fmt::format(" and {} more", unapplied.size() - 8) : ""));
   const GmshPostView* displacement = nullptr;
   const GmshPostView* colour = nullptr;
+  const GmshPostView* arrows = nullptr;
   for (const GmshPostView& view : views) {
     if (!view.visible) continue;
     const std::vector<const MeshField*> steps = viewSteps(mesh, nameOf(view));
@@ -129,8 +163,27 @@ void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
         !steps.empty() && steps.front()->components == 3 && steps.front()->at != FieldAt::kElement;
     if (view.vectorType == 5 && vector && !displacement)
       displacement = &view;
+    else if (view.vectorType >= 1 && view.vectorType <= 4 && vector && !arrows)
+      arrows = &view;
     else if (!colour)
       colour = &view;
+  }
+  if (arrows && !instance.arrows) {
+    ArrowSpec spec;
+    spec.field = nameOf(*arrows);
+    spec.where = SourceLocation{path, arrows->line, 1};
+    instance.arrows = spec;
+  }
+  // gmsh's way to show stress on a deformed shape: the displacement view coloured by another view,
+  // usually hidden itself.
+  GmshPostView external;
+  if (displacement && displacement->externalView >= 0 && displacement->externalView != displacement->index) {
+    const auto named = std::find_if(views.begin(), views.end(), [&](const GmshPostView& view) {
+      return view.index == displacement->externalView;
+    });
+    external.index = displacement->externalView;
+    external.line = displacement->line;
+    colour = named != views.end() ? &*named : &external;
   }
   if (displacement && !instance.warp) {
     WarpSettings warp;
@@ -149,6 +202,8 @@ void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
     const std::vector<const MeshField*> steps = viewSteps(mesh, color.field);
     if (!steps.empty() && steps.front()->components == 9)
       color.component.kind = FieldComponent::Kind::VonMises;
+    color.map =
+        *ColorMap::named(fmt::format("gmsh:{}{}", colour->colormapNumber, colour->colormapSwap ? "_r" : ""));
   }
   if (colour->rangeType == 2 && colour->customMin < colour->customMax)
     color.range = std::pair{colour->customMin, colour->customMax};

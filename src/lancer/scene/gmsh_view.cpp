@@ -79,6 +79,19 @@ GmshView gmshViewFromOptions(const GmshOptionLookup& option, const std::string& 
   flag("Orthographic", view.orthographic);
   set("ClipFactor", view.clipFactor);
   set("DisplayBorderFactor", view.displayBorderFactor);
+  Vec3d low{}, high{};
+  bool bounds = false;
+  const auto coordinate = [&](const char* name, double& value) {
+    if (const std::optional<double> found = option(name)) value = *found, bounds = true;
+  };
+  coordinate("MinX", low.x), coordinate("MinY", low.y), coordinate("MinZ", low.z);
+  coordinate("MaxX", high.x), coordinate("MaxY", high.y), coordinate("MaxZ", high.z);
+  if (bounds && low.x <= high.x && low.y <= high.y && low.z <= high.z) {
+    Aabbd box;
+    box.extend(low);
+    box.extend(high);
+    view.modelBounds = box;
+  }
   return view;
 }
 
@@ -118,7 +131,8 @@ GmshView readGmshView(const std::string& path) {
       path);
 }
 
-GmshCamera gmshViewCamera(const GmshView& view, const Aabbd& worldBounds, double imageAspect) {
+GmshCamera gmshViewCamera(const GmshView& view, const Aabbd& sceneBounds, double imageAspect) {
+  const Aabbd& worldBounds = view.modelBounds ? *view.modelBounds : sceneBounds;
   const Vec3d low = worldBounds.empty() ? Vec3d{} : worldBounds.lower;
   const Vec3d high = worldBounds.empty() ? Vec3d{} : worldBounds.upper;
   const Vec3d cg = 0.5 * (low + high);  // gmsh's CTX::cg: the bounding box's centre

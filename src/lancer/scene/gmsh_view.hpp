@@ -26,6 +26,10 @@ struct GmshView {
   bool orthographic = true;                      // General.Orthographic
   double clipFactor = 5;                         // General.ClipFactor: sets the perspective eye distance
   double displayBorderFactor = 0.2;              // General.DisplayBorderFactor: margin around the model
+  // General.MinX .. MaxZ: the model's bounding box as gmsh saw it, what it frames (a view displaced
+  // by a warp is framed on the undeformed model); unset when the file gives none of them (gmsh
+  // leaves out a coordinate that is 0). Framing uses the scene's bounds then.
+  std::optional<Aabbd> modelBounds;
   // The graphics area's size (General.GraphicsWidth less the module menu beside it, General.
   // GraphicsHeight) does not frame the model: gmsh frames it anew for each viewport, the window's
   // or the printed image's.
@@ -40,7 +44,8 @@ GmshView gmshViewFromOptions(const GmshOptionLookup& option, const std::string& 
 // file that cannot be read or a view option whose value is not a number.
 GmshView readGmshView(const std::string& path);
 
-// The camera of that view for a model with these world bounds (what gmsh frames: its bounding box),
+// The camera of that view for a model with these world bounds (what gmsh frames: its bounding box,
+// view.modelBounds when the options give it),
 // for an image `imageAspect` (width / height) wide: where it is, where it looks, its up, and either the
 // orthographic window height or the perspective field of view with the window's off-axis shift
 // (gmsh's perspective eye sits at the model's centre of gravity in view space while the window stays
@@ -54,6 +59,6 @@ struct GmshCamera {
   double fovDegrees = 40;  // perspective: vertical
   double shiftX = 0, shiftY = 0;
 };
-GmshCamera gmshViewCamera(const GmshView& view, const Aabbd& worldBounds, double imageAspect);
+GmshCamera gmshViewCamera(const GmshView& view, const Aabbd& sceneBounds, double imageAspect);
 
 }  // namespace lancer

@@ -62,6 +62,12 @@ std::vector<double> evenIsoValues(double low, double high, int count) {
   return values;
 }
 
+std::vector<double> logIsoValues(double low, double high, int count) {
+  std::vector<double> values = evenIsoValues(std::log(low), std::log(high), count);
+  for (double& v : values) v = std::exp(v);
+  return values;
+}
+
 std::vector<double> gmshIsoValues(double low, double high, int count) {
   if (count == 1) return {0.5 * (low + high)};
   std::vector<double> values;
@@ -72,7 +78,7 @@ std::vector<double> gmshIsoValues(double low, double high, int count) {
 }
 
 ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh, const StepSelection& when,
-                                 std::optional<std::pair<double, double>> colorRange) {
+                                 std::optional<std::pair<double, double>> colorRange, ColorScale colorScale) {
   const MeshField field = meshFieldAt("isolines", spec.field, spec.step, mesh, when, spec.where);
   if (field.at == FieldAt::kElement)
     throw InputError(
@@ -91,7 +97,21 @@ ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh, cons
     resolved.vertexValue[i] =
         componentScalar(field.values.data() + i * components, field.components, spec.component);
   std::vector<double> values = spec.values;
-  if (values.empty() && spec.colorRangeEnds && colorRange) {
+  const bool log = colorRange && colorScale == ColorScale::Log && colorRange->first > 0 &&
+                   colorRange->second > colorRange->first;
+  if (values.empty() && log) {  // the colours' log scale: lines evenly spaced in log(value)
+    const auto [low, high] = *colorRange;
+    if (spec.colorRangeEnds) {  // gmsh's: 10^(log low + i (log high - log low) / (count - 1))
+      values = gmshIsoValues(std::log(low), std::log(high), spec.count);
+      for (double& v : values) v = std::exp(v);
+      if (spec.count > 1) {  // the ends exactly, as gmsh keeps them
+        values.front() = low;
+        values.back() = high;
+      }
+    } else {
+      values = logIsoValues(low, high, spec.count);
+    }
+  } else if (values.empty() && spec.colorRangeEnds && colorRange) {
     values = gmshIsoValues(colorRange->first, colorRange->second, spec.count);
   } else if (values.empty()) {
     // The range of the step shown when pinned, else of every step: a line means one value throughout.

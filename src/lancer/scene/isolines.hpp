@@ -28,14 +28,21 @@ struct ResolvedIsolines {
 // The lines at the step spec pins, else at the scene's `when`. Without `values`, `count` values
 // spread over the range of that step (when pinned) or of every step (as the colours), or with
 // spec.colorRangeEnds over `colorRange` (the mesh's colour range, when it is coloured by the field).
+// With a log `colorScale` (the mesh's colours on a log scale), the values are spread evenly in
+// log(value) over `colorRange` (both ends included with colorRangeEnds, as gmsh's log scale does).
 // Node and element-node data only: element data (constant over each face) has no curves, an InputError at
 // spec.where that suggests bands; an unknown field, step or component as color_by says it.
 ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh, const StepSelection& when = {},
-                                 std::optional<std::pair<double, double>> colorRange = std::nullopt);
+                                 std::optional<std::pair<double, double>> colorRange = std::nullopt,
+                                 ColorScale colorScale = ColorScale::Linear);
 
 // `count` values evenly inside (low, high): low + (high - low) * (i + 0.5) / count, one line in the
 // middle of each of `count` equal intervals.
 std::vector<double> evenIsoValues(double low, double high, int count);
+
+// `count` values evenly inside (log low, log high), 0 < low: one line at the middle, in log(value),
+// of each of `count` intervals equal on a log scale.
+std::vector<double> logIsoValues(double low, double high, int count);
 
 // gmsh's iso-values (PViewOptions::getScaleValue, linear scale): low + (high - low) * i / (count - 1)
 // for i = 0 .. count - 1, both ends included; the middle when count is 1.

@@ -40,9 +40,10 @@ void applyAnnotationOverrides(SceneDescription& description, const RenderOverrid
   const auto name = [&](const char* option) { return overrides.optionPrefix + option; };
   if (overrides.range) {
     const auto [low, high] = *overrides.range;
-    if (const std::string problem = colorRangeProblem(name("range"), low, high); !problem.empty())
-      throw InputError(SourceLocation{name("range")}, problem);
     for (MeshInstance* mesh : colouredMeshes(description, name("range"))) {
+      if (const std::string problem = colorRangeProblem(name("range"), low, high, mesh->colorBy->scale);
+          !problem.empty())
+        throw InputError(SourceLocation{name("range")}, problem);
       mesh->colorBy->range = *overrides.range;
       mesh->colorBy->perStepRange = false;
     }

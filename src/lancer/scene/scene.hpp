@@ -65,15 +65,34 @@ struct EdgeOverlay {
   std::vector<EdgeStyle> styles{EdgeStyle{}};
 };
 
-// Field colouring (color_by, field_shading.hpp): per face 0 (not coloured) or 1 + the ColorMapKind,
-// plus kPerFace for element data or kPerCorner for element-node data; the normalised field value t in
-// [0, 1] (NaN: none) per vertex (node data: interpolated per pixel, then mapped), per face (element
-// data) or per face corner (element-node data, kCornerSlots per face in the face's corner order:
-// interpolated over the face alone); each of the three is empty when no mesh is coloured by that kind.
+// A map the scene's faces are coloured with: its colours, and how the field's value interpolated at
+// a point becomes a place t on them. On a linear scale the stored values are t already (an affine
+// map commutes with interpolation); on a log scale they are the field's own values, placed after
+// interpolation (MapPosition), so that a face shows its interpolated value's colour as its isolines
+// and legend say.
+struct FieldMap {
+  ColorMap colors;
+  ColorScale scale = ColorScale::Linear;
+  double low = 0, high = 1;  // log: the range the values are placed in
+  MapPosition position{0, 1};
+  bool operator==(const FieldMap& other) const {
+    return colors == other.colors && scale == other.scale && low == other.low && high == other.high;
+  }
+};
+
+// Field colouring (color_by, field_shading.hpp): per face 0 (not coloured) or 1 + the index of its
+// FieldMap in `maps` (the scene's distinct maps, at most kMaxMaps), plus kPerFace for element data or
+// kPerCorner for element-node data; the value to interpolate (t in [0, 1], or on a log scale the
+// field's value; NaN: none) per vertex (node data: interpolated per pixel, then mapped), per face
+// (element data) or per face corner (element-node data, kCornerSlots per face in the face's corner
+// order: interpolated over the face alone); each of the three is empty when no mesh is coloured by
+// that kind.
 struct FieldColors {
   static constexpr std::uint8_t kPerFace = 0x80;
   static constexpr std::uint8_t kPerCorner = 0x40;
-  static constexpr std::uint8_t kMapBits = 0x3F;  // 1 + the ColorMapKind
+  static constexpr std::uint8_t kMapBits = 0x3F;  // 1 + the index in maps
+  static constexpr std::size_t kMaxMaps = kMapBits;
+  std::vector<FieldMap> maps;
   std::vector<std::uint8_t> faceColorMap;
   std::vector<float> vertexFieldT;
   std::vector<float> faceFieldT;

@@ -436,6 +436,7 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
   const double secondsBefore = times.totalSeconds();
   Scene scene;
   scene.warnings = std::move(warnings);
+  scene.warnings.insert(scene.warnings.begin(), description.notes.begin(), description.notes.end());
   SceneGeometry& geometry = scene.geometry;
   SceneAppearance& appearance = scene.appearance;
   appearance.materials = std::move(materials);

@@ -169,7 +169,10 @@ enum class UndeformedStyle { None, Edges, Ghost };
 struct MeshInstance {
   std::string file;      // resolved against the scene file's folder
   SourceLocation where;  // of the [[mesh]] table, for errors found when the mesh is loaded
-  int material = 0;      // index into SceneDescription::materials
+  // `views = ["az.pos"]`: list-based .pos views put on the mesh by their elements' coordinates
+  // (mesh/pos/pos_on_mesh.hpp), resolved against the scene file's folder.
+  std::vector<std::string> views;
+  int material = 0;  // index into SceneDescription::materials
   std::optional<ShadingMode> shading;
   float smoothAngleDegrees = 60;
   std::optional<ColorBy> colorBy;  // colour the surface by a field of the mesh file
@@ -232,6 +235,9 @@ struct SceneDescription {
   // The quick look's key and fill are placed for the automatic camera: an animation turns them with
   // the camera, so every frame is lit the same way.
   bool lightsFollowCamera = false;
+  // For the user, with the meshes' warnings (Scene::warnings): what a front end read and does not
+  // apply, as "file:line: warning: ...".
+  std::vector<std::string> notes;
 };
 
 }  // namespace lancer

@@ -20,12 +20,12 @@ constexpr std::array<std::string_view, 9> kLightKeys = {
 constexpr std::array<std::string_view, 10> kMaterialKeys = {
     "ka",           "kd",  "ks",      "shininess",  "reflectivity",
     "transparency", "ior", "fresnel", "absorption", "emission"};
-constexpr std::array<std::string_view, 15> kMeshKeys = {
-    "file",  "material", "shading",  "smooth_angle", "translate", "rotate", "scale",     "groups",
-    "edges", "color_by", "isolines", "arrows",       "clip",      "warp",   "undeformed"};
+constexpr std::array<std::string_view, 16> kMeshKeys = {
+    "file",   "views", "material", "shading",  "smooth_angle", "translate", "rotate", "scale",
+    "groups", "edges", "color_by", "isolines", "arrows",       "clip",      "warp",   "undeformed"};
 constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only", "feature_angle"};
-constexpr std::array<std::string_view, 9> kColorByKeys = {"field", "step",  "map",   "range", "component",
-                                                          "title", "units", "bands", "legend"};
+constexpr std::array<std::string_view, 10> kColorByKeys = {"field",     "step",  "map",   "scale", "range",
+                                                           "component", "title", "units", "bands", "legend"};
 constexpr std::array<std::string_view, 2> kWarpKeys = {"field", "factor"};
 constexpr std::array<std::string_view, 6> kArrowKeys = {"field", "step",   "max_count",
                                                         "scale", "length", "color"};

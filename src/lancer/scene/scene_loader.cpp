@@ -418,6 +418,27 @@ std::optional<EdgeSettings> readEdges(const SceneFile& file, const TomlTableRead
   return edges;
 }
 
+// `views = ["az.pos", "b.pos"]`: the files, resolved against the scene file's folder.
+std::vector<std::string> readViewFiles(const SceneFile& file, const TomlTableReader& reader) {
+  const toml::node* node = reader.find("views");
+  if (!node) return {};
+  const std::string example =
+      "views = [\"az.pos\", \"b.pos\"] (list-based .pos views, relative to the scene file)";
+  const auto* list = node->as_array();
+  if (!list)
+    reader.fail(*node, fmt::format("{} must be an array of file names, {}; found {}",
+                                   reader.qualified("views"), example, describeValue(*node)));
+  std::vector<std::string> views;
+  for (const toml::node& item : *list) {
+    const auto* name = item.as_string();
+    if (!name || name->get().empty())
+      reader.fail(item, fmt::format("{} must hold file names, like {}; found {}", reader.qualified("views"),
+                                    example, describeValue(item)));
+    views.push_back(file.resolve(name->get()));
+  }
+  return views;
+}
+
 MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size_t index,
                       const std::vector<Material>& materials) {
   const TomlTableReader reader(table, fmt::format("mesh[{}]", index), file.path, SceneTable::Mesh);
@@ -426,6 +447,7 @@ MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size
   const std::optional<std::string> path = reader.nonEmptyString("file");
   if (!path) reader.failMissing("file", "file = \"part.msh\" (a gmsh mesh, relative to the scene file)");
   mesh.file = file.resolve(*path);
+  mesh.views = readViewFiles(file, reader);
   if (const toml::node* material = reader.find("material"))
     mesh.material = materialIndex(file, *material, reader.qualified("material"), materials);
   if (auto shading = reader.choice("shading", kShadingNames))

@@ -144,9 +144,15 @@ Mesh readStepFiles(const std::string& pattern, const std::vector<std::string>& f
 namespace {
 
 Mesh readInstanceMesh(const MeshInstance& instance, int threads) {
+  for (const std::string& view : instance.views) {
+    std::error_code error;
+    if (!std::filesystem::exists(view, error))
+      throw InputError(instance.where, fmt::format("view file '{}' does not exist", view));
+  }
   if (isStepFilePattern(instance.file)) {
     Mesh mesh =
         readStepFiles(instance.file, matchStepFiles(instance.file, instance.where), threads, instance.where);
+    addViewFiles(mesh, instance.views);
     if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
       throw InputError(instance.where,
                        fmt::format("mesh '{}' has nothing to draw: {}", instance.file, reason));
@@ -156,6 +162,7 @@ Mesh readInstanceMesh(const MeshInstance& instance, int threads) {
   if (!std::filesystem::exists(instance.file, error))
     throw InputError(instance.where, fmt::format("mesh file '{}' does not exist", instance.file));
   Mesh mesh = readMsh(instance.file, threads);
+  addViewFiles(mesh, instance.views);
   if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
     throw InputError(instance.where, fmt::format("mesh '{}' has nothing to draw: {}", instance.file, reason));
   return mesh;

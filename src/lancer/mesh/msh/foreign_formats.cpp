@@ -11,7 +11,7 @@
 namespace lancer {
 namespace {
 
-enum class Format { kNone, kGeo, kStlAscii, kStlBinary, kStep, kIges, kBrep, kPos, kVtk, kObj };
+enum class Format { kNone, kGeo, kStlAscii, kStlBinary, kStep, kIges, kBrep, kVtk, kObj };
 
 std::string lower(std::string text) {
   for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -102,15 +102,6 @@ bool looksLikeObj(std::string_view text) {
   return vertices >= 3 && other == 0;
 }
 
-// A .pos view in gmsh's parsed format: View "name" { ... }; (comments may come first).
-bool looksLikePos(std::string_view text) {
-  bool found = false;
-  forEachLine(text, [&](std::string_view line) {
-    if (startsWithWord(line, "View")) found = true;
-  });
-  return found || text.starts_with("$PostFormat");
-}
-
 Format byContent(std::string_view text, std::uint64_t fileBytes) {
   const std::string_view start = trimmedStart(text);
   if (start.starts_with("ISO-10303-21")) return Format::kStep;
@@ -132,7 +123,6 @@ Format byContent(std::string_view text, std::uint64_t fileBytes) {
         }))
       return Format::kIges;
   }
-  if (looksLikePos(text)) return Format::kPos;
   if (looksLikeGeo(text)) return Format::kGeo;
   if (looksLikeObj(text)) return Format::kObj;
   return Format::kNone;
@@ -145,7 +135,6 @@ Format byExtension(const std::string& path) {
   if (extension == ".step" || extension == ".stp") return Format::kStep;
   if (extension == ".iges" || extension == ".igs") return Format::kIges;
   if (extension == ".brep") return Format::kBrep;
-  if (extension == ".pos") return Format::kPos;
   if (extension == ".vtk" || extension == ".vtu") return Format::kVtk;
   if (extension == ".obj") return Format::kObj;
   return Format::kNone;
@@ -164,8 +153,6 @@ const char* nativeExtension(Format format) {
       return ".iges";
     case Format::kBrep:
       return ".brep";
-    case Format::kPos:
-      return ".pos";
     case Format::kVtk:
       return ".vtk";
     case Format::kObj:
@@ -180,7 +167,6 @@ const char* nativeExtension(Format format) {
 // so); out: the .msh to write.
 std::string describe(Format format, std::string_view text, const std::string& path, const std::string& out,
                      const std::string& rename) {
-  const std::string name = std::filesystem::path(out).filename().string();
   switch (format) {
     case Format::kGeo: {
       // A script that makes volumes wants -3; otherwise surfaces are what lancer draws.
@@ -206,11 +192,6 @@ std::string describe(Format format, std::string_view text, const std::string& pa
     case Format::kBrep:
       return fmt::format("this is an OpenCASCADE BREP model, not a mesh: {}mesh it with 'gmsh {} -2 -o {}'",
                          rename, path, out);
-    case Format::kPos:
-      return fmt::format(
-          "this is a gmsh post-processing view (.pos), not a mesh: save it as a mesh with its "
-          "data: {}write 'Save View[0] \"{}\";' in save.geo and run 'gmsh {} save.geo -0'",
-          rename, name, path);
     case Format::kVtk:
       return fmt::format("this is a VTK file, not a gmsh mesh: {}convert it with 'gmsh {} -save -o {}'",
                          rename, path, out);

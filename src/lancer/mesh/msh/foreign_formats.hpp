@@ -1,6 +1,6 @@
-// Files people give lancer that are not gmsh meshes (a .geo script, STL, STEP, IGES, BREP, a .pos
-// view, VTK, OBJ): recognised by content, then by extension, and answered with the gmsh command that
-// makes a .msh of them, instead of a parser error.
+// Files people give lancer that are not gmsh meshes (a .geo script, STL, STEP, IGES, BREP, VTK,
+// OBJ; a .pos view is read, mesh/pos/): recognised by content, then by extension, and answered with the gmsh
+// command that makes a .msh of them, instead of a parser error.
 #pragma once
 
 #include <cstdint>

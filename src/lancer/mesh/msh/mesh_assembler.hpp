@@ -63,7 +63,7 @@ class MshMeshAssembler {
     element_ = tag;
     if (trackElements_) {
       elementNodes_ = nodeIndex;
-      elementNodeCount_ = mshElementType(type).nodeCount;
+      if (type != elementType_) elementType_ = type, elementNodeCount_ = mshElementType(type).nodeCount;
     }
     switch (type) {
       case 2:
@@ -163,6 +163,7 @@ class MshMeshAssembler {
   std::vector<MshCornerNodes> faceCornerNode_;
   std::vector<std::array<std::uint16_t, 9>> volumeFaceNodes_;
   const std::uint32_t* elementNodes_ = nullptr;
+  int elementType_ = 0;  // of elementNodeCount_
   int elementNodeCount_ = 0;
   const MshVolumeFace* volumeFace_ = nullptr;
   const std::array<std::uint16_t, 9>* volumeFaceNodeOrder_ = nullptr;

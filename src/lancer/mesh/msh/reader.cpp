@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <bit>
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -19,6 +21,9 @@
 #include "lancer/mesh/msh/foreign_formats.hpp"
 #include "lancer/mesh/msh/sections.hpp"
 #include "lancer/mesh/msh/stored_steps.hpp"
+#include "lancer/mesh/pos/pos_file_kind.hpp"
+#include "lancer/mesh/pos/pos_mesh.hpp"
+#include "lancer/mesh/pos/pos_on_mesh.hpp"
 #include "lancer/util/input_error.hpp"
 #include "lancer/util/mapped_file.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -354,13 +359,46 @@ void readFieldSections(MshReadState& state, Mesh& mesh, std::span<const char> by
   }
 }
 
+// A list-based view: its content says so, or its .pos name when it looks like no mesh either (the
+// .pos reader then says what it found instead of a view).
+bool isViewContent(std::span<const char> bytes, const std::string& name) {
+  if (looksLikeMsh(bytes)) return false;
+  if (looksLikePosFile(bytes)) return true;
+  std::string extension = std::filesystem::path(name).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".pos";
+}
+
+// Whether the file's last section is $ElementData or $ElementNodeData: its last "$End" marker, read
+// from the end (a constant cost, whatever the file's size).
+bool endsWithElementData(std::span<const char> bytes) {
+  const std::size_t tail = std::min<std::size_t>(bytes.size(), 64);
+  const std::string_view end(bytes.data() + bytes.size() - tail, tail);
+  const std::size_t marker = end.rfind("$End");
+  if (marker == std::string_view::npos) return false;
+  const std::string_view name = end.substr(marker);
+  return name.starts_with("$EndElementData") || name.starts_with("$EndElementNodeData");
+}
+
 Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteSource& byteSource,
                int threads) {
+  if (isViewContent(bytes, name)) {
+    MeshSourceInfo source;
+    source.path = name;
+    source.format = "pos";
+    source.fileBytes = byteSource.fileBytes;
+    const PosFile pos = readPosFromMemory(bytes, name);
+    Mesh mesh = meshFromPos(pos, std::move(source), threads);
+    mesh.source.warnings.insert(mesh.source.warnings.begin(), pos.warnings.begin(), pos.warnings.end());
+    return mesh;
+  }
   // Faces remember their element (16 bytes each) only when a $ElementData or $ElementNodeData needs
-  // it. gmsh writes them after $Elements, so the first read does not track, and meeting one reads the
-  // file again with tracking: twice the load time for those files only, and no cost (not even a
-  // scan) for others.
-  for (const bool track : {false, true}) {
+  // it. gmsh writes them after $Elements: a file whose last section is one (a solver's result, GetDP's
+  // -v2 output, views gmsh appended) tracks from the start; any other reads untracked, and meeting
+  // one reads the file again with tracking (twice the load time, for files whose element data
+  // comes before their last section only).
+  const bool trackFirst = endsWithElementData(bytes);
+  for (const bool track : {trackFirst, true}) {
     MshCursor cursor(bytes, name);
     if (bytes.empty()) cursor.failFile("the file is empty");
     if (!looksLikeMsh(bytes)) {
@@ -423,6 +461,25 @@ Mesh readMsh(const std::string& path, int threads, std::uint64_t residentFieldBy
   Mesh mesh = readBytes(file.bytes(), path, source, threads);
   mesh.source.loadSeconds = stopwatch.seconds();
   return mesh;
+}
+
+bool isViewFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::vector<char> head(4096);
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  return isViewContent(head, path);
+}
+
+void addViewFiles(Mesh& mesh, const std::vector<std::string>& paths) {
+  const Stopwatch stopwatch;
+  for (const std::string& path : paths) {
+    const PosFile pos = readPosFile(path);
+    mesh.source.warnings.insert(mesh.source.warnings.end(), pos.warnings.begin(), pos.warnings.end());
+    addPosViews(mesh, pos);
+  }
+  mesh.source.loadSeconds += stopwatch.seconds();
 }
 
 }  // namespace lancer

@@ -36,6 +36,31 @@ std::string describePostFormat(std::string_view rest) {
 
 }  // namespace
 
+bool looksLikePosFile(std::span<const char> head) {
+  std::string_view text(head.data(), head.size());
+  for (;;) {
+    const std::size_t start = text.find_first_not_of(" \t\r\n\f\v");
+    if (start == std::string_view::npos) return false;
+    text.remove_prefix(start);
+    if (text.starts_with("//")) {
+      const std::size_t end = text.find('\n');
+      if (end == std::string_view::npos) return false;
+      text.remove_prefix(end);
+    } else if (text.starts_with("/*")) {
+      const std::size_t end = text.find("*/", 2);
+      if (end == std::string_view::npos) return false;
+      text.remove_prefix(end + 2);
+    } else {
+      break;
+    }
+  }
+  if (text.starts_with("$PostFormat")) return true;
+  if (!text.starts_with("View")) return false;
+  text.remove_prefix(4);
+  return !text.empty() &&
+         (text.front() == '"' || std::string_view(" \t\r\n").find(text.front()) != text.npos);
+}
+
 void refuseOtherFormats(std::span<const char> bytes, const std::string& file) {
   const std::string_view text(bytes.data(), bytes.size());
   if (text.empty())
