@@ -229,28 +229,42 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
       "animate",
       "Render an orbit of the camera or of a light as an animated GIF, an animated PNG or numbered frames");
   addInputOption(*command, options->inputs);
-  command->add_option("-o,--output", options->output,
-                      "Output (required): NAME.gif (animated, looping), NAME.png (animated PNG) or "
-                      "NAME_%04d.png/.bmp/.ppm (one "
-                      "file per frame)");
-  command->add_option("--frames", options->frames, "Number of frames")->check(CLI::Range(1, kMaxFrames));
-  command->add_option("--fps", options->fps, "Frames per second")->check(CLI::Range(0.01, 100.0));
-  command->add_option("--orbit", options->orbit, "What turns: camera or light:K");
+  addSceneViewOptions(*command, options->overrides);
+  command
+      ->add_option("-o,--output", options->output,
+                   "Output (required): NAME.gif (animated, looping), NAME.png (animated PNG) or "
+                   "NAME_%04d.png/.bmp/.ppm (one file per frame)")
+      ->group(kOutputGroup);
+  command->add_option("--frames", options->frames, "Number of frames")
+      ->check(CLI::Range(1, kMaxFrames))
+      ->group(kOutputGroup);
+  command->add_option("--fps", options->fps, "Frames per second")
+      ->check(CLI::Range(0.01, 100.0))
+      ->group(kOutputGroup);
+  command->add_option("--orbit", options->orbit, "What turns: camera or light:K")->group(kCameraGroup);
   command
       ->add_option("--over", options->over,
                    "What the frames run through: orbit (default) or steps (the results' time steps)")
-      ->check(CLI::IsMember({"orbit", "steps"}));
-  command->add_option(
-      "--label", options->label,
-      "Over steps: text drawn into each frame, {time} and {step} replaced (\"t = {time:.3g} s\")");
+      ->check(CLI::IsMember({"orbit", "steps"}))
+      ->group(kResultsGroup);
+  command
+      ->add_option(
+          "--label", options->label,
+          "Over steps: text drawn into each frame, {time} and {step} replaced (\"t = {time:.3g} s\")")
+      ->group(kResultsGroup);
   addAnimationWriterOptions(*command, options->writer);
-  command->add_option("--shard", options->shard,
-                      "Job arrays: render only frames k with k % N == I (I/N), or take I and N from SLURM or "
-                      "mpirun (auto); writes numbered frames");
-  command->add_option("--frame-range", options->frameRange, "Render only frames A to B (A-B, both included)");
-  command->add_flag("--skip-existing", options->skipExisting,
-                    "Keep numbered frames that are already complete images (resume a pre-empted job)");
-  addSceneOverrideOptions(*command, options->overrides);
+  addSceneOutputOptions(*command, options->overrides);
+  command
+      ->add_option("--shard", options->shard,
+                   "Job arrays: render only frames k with k % N == I (I/N), or take I and N from SLURM or "
+                   "mpirun (auto); writes numbered frames")
+      ->group(kClusterGroup);
+  command->add_option("--frame-range", options->frameRange, "Render only frames A to B (A-B, both included)")
+      ->group(kClusterGroup);
+  command
+      ->add_flag("--skip-existing", options->skipExisting,
+                 "Keep numbered frames that are already complete images (resume a pre-empted job)")
+      ->group(kClusterGroup);
   command->callback([options, &runner] {
     takeInputFromGmshView(options->inputs, options->overrides);
     runner = [options] {

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
+#include <utility>
 
 #include "command_distribution.hpp"
 #include "commands.hpp"
@@ -17,6 +19,7 @@
 #include "lancer/render/denoiser.hpp"
 #include "lancer/render/progress_line.hpp"
 #include "lancer/render/renderer.hpp"
+#include "lancer/scene/render_limits.hpp"
 #include "lancer/util/stopwatch.hpp"
 #include "scene_setup.hpp"
 
@@ -38,7 +41,8 @@ struct RenderCommandOptions {
   std::vector<std::string> inputs;  // as given: the input, then views
   std::string output;
   std::string pixel;
-  std::string legend;                 // --legend: the legends of the field-coloured meshes
+  std::string legendFile;                          // --legend-file: the legends of the field-coloured meshes
+  std::string legendFileOption = "--legend-file";  // or "--legend", as the command line spelled it
   std::string shard;                  // --shard I/N or auto: a job-array task's part of the image
   std::string aovs;                   // --aovs albedo,normal,depth: layers of an EXR output
   std::optional<double> progressive;  // --progressive SECONDS: rewrite the image at least this often
@@ -330,24 +334,27 @@ int runRender(const RenderCommandOptions& options) {
                      "--progressive writes one image from one process; "
                      "leave it out of --shard and MPI runs");
   // The legends are the same in every task of a job array (the scene's ranges): the first writes them.
-  const bool writesLegend = !options.legend.empty() && options.pixel.empty() &&
+  const bool writesLegend = !options.legendFile.empty() && options.pixel.empty() &&
                             (shard ? shard->shard.index == 0 : distribution->delivers());
   std::optional<Image> legend;
-  if (!options.legend.empty()) {
-    imageFormatFromPath(options.legend);
+  if (!options.legendFile.empty()) {
+    imageFormatFromPath(options.legendFile);
     if (!prepared.scene.fieldColors)
       throw InputError(
           SourceLocation{options.input},
-          "--legend needs a mesh coloured by a field (color_by = { field = \"...\" } in a [[mesh]])");
-    if (!output.empty() && sameOutputPath(options.legend, output))
-      throw InputError(SourceLocation{"--legend"},
+          fmt::format(
+              "{} needs a mesh coloured by a field (--color-by FIELD, or color_by = {{ field = \"...\" }} "
+              "in a [[mesh]])",
+              options.legendFileOption));
+    if (!output.empty() && sameOutputPath(options.legendFile, output))
+      throw InputError(SourceLocation{options.legendFileOption},
                        fmt::format("'{}' is also the picture's output: give the legend a name of its own",
-                                   options.legend));
+                                   options.legendFile));
   }
   if (writesLegend) {
     // Before the render, so that a failed command changes no file: the legend's folder, and its text
     // (the font). The bar holds the map's display values: written as they are, like the picture's.
-    requireWritable(options.legend);
+    requireWritable(options.legendFile);
     legend =
         legendSheet(prepared.scene.fieldColors->legends, kLegendBarLength, kLegendTextHeight, settings.srgb);
   }
@@ -381,7 +388,7 @@ int runRender(const RenderCommandOptions& options) {
   }
   if (progress) std::fputc('\n', stderr);
   if (!written) return talks ? interruptedExit(output) : kExitInterrupted;  // rank 0 alone says so
-  if (legend) writeImage(options.legend, *legend);
+  if (legend) writeImage(options.legendFile, *legend);
   if (!talks || shard) return kExitOk;
   if (!options.overrides.quiet) {
     const double total = stopwatch.seconds();
@@ -404,24 +411,43 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
                                          "Render a scene file (.toml), or a mesh (.msh, or .pos views) with "
                                          "an automatic camera, lights and colours");
   addInputOption(*command, options->inputs);
-  command->add_option("-o,--output", options->output,
-                      fmt::format("Output image ({}); overrides render.output", kImageExtensions));
-  command->add_option(
-      "--shard", options->shard,
-      "Job arrays: render task I of N's bands into OUTPUT.part-I-of-N (I/N, or auto from SLURM "
-      "or mpirun); `lancer assemble --tiles` stitches the parts");
-  addSceneOverrideOptions(*command, options->overrides);
-  command->add_option("--legend", options->legend,
-                      "Also write the legends of the field-coloured meshes (color_by) to this image");
-  command->add_option(
-      "--aovs", options->aovs,
-      "Layers of an .exr output beside the radiance: albedo, normal, depth (comma-separated)");
-  command->add_option("--pixel", options->pixel, "Trace only pixel x,y and print its value (debugging)");
-  command->add_option(
-      "--progressive", options->progressive,
-      "path, ao: render 1, 2, 4, ... samples per pixel up to the scene's, rewriting the image at "
-      "least every SECONDS as it converges");
+  addSceneViewOptions(*command, options->overrides);
+  command
+      ->add_option("-o,--output", options->output,
+                   fmt::format("Output image ({}); overrides render.output", kImageExtensions))
+      ->group(kOutputGroup);
+  addSceneOutputOptions(*command, options->overrides);
+  command
+      ->add_option("--legend-file", options->legendFile,
+                   "Also write the legends of the field-coloured meshes (color_by) to this image")
+      ->group(kOutputGroup);
+  command
+      ->add_option("--aovs", options->aovs,
+                   "Layers of an .exr output beside the radiance: albedo, normal, depth (comma-separated)")
+      ->group(kOutputGroup);
+  command->add_option("--pixel", options->pixel, "Trace only pixel x,y and print its value (debugging)")
+      ->group(kOutputGroup);
+  command
+      ->add_option(
+          "--progressive", options->progressive,
+          "path, ao: render 1, 2, 4, ... samples per pixel up to the scene's, rewriting the image at "
+          "least every SECONDS as it converges")
+      ->group(kOutputGroup);
+  command
+      ->add_option("--shard", options->shard,
+                   "Job arrays: render task I of N's bands into OUTPUT.part-I-of-N (I/N, or auto from SLURM "
+                   "or mpirun); `lancer assemble --tiles` stitches the parts")
+      ->group(kClusterGroup);
   command->callback([options, &runner] {
+    // --legend FILE.png, the older spelling of --legend-file: a file name with an extension.
+    std::string& legend = options->overrides.legend;
+    if (!enumFromName<LegendPlacement>(kLegendPlacementNames, legend) &&
+        std::filesystem::path(legend).has_extension()) {
+      if (!options->legendFile.empty())
+        throw CLI::ValidationError("--legend", "'" + legend + "' is not right, bottom or none");
+      options->legendFile = std::exchange(legend, std::string());
+      options->legendFileOption = "--legend";
+    }
     takeInputFromGmshView(options->inputs, options->overrides);
     runner = [options] {
       options->input = takeMeshInput(options->inputs, options->overrides.views);

@@ -169,92 +169,241 @@ void applyResultOverrides(SceneDescription& description, const SceneOverrides& o
   }
 }
 
+// A whole string as a number, or nothing.
+std::optional<double> numberOf(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size()) return std::nullopt;
+  return value;
+}
+
+// --clip AXIS=VALUE (the side AXIS points to removed) or PX,PY,PZ,NX,NY,NZ (a point, the removed
+// side's normal): the plane as [[clip]] has it; checked with the other overrides.
+ClipSettings parseClip(const std::string& text) {
+  const auto fail = [&]() -> ClipSettings {
+    throw InputError(
+        SourceLocation{"--clip"},
+        fmt::format("'{}' is not a cutting plane: use AXIS=VALUE (x=0.5 removes x > 0.5, -z=0 "
+                    "removes z < 0) or PX,PY,PZ,NX,NY,NZ (a point on the plane, then the normal of "
+                    "the side removed)",
+                    text));
+  };
+  ClipSettings clip;
+  if (const std::size_t equals = text.find('='); equals != std::string::npos) {
+    const std::optional<UpAxis> axis = parseUpAxis(text.substr(0, equals));
+    const std::optional<double> value = numberOf(text.substr(equals + 1));
+    if (!axis || !value) return fail();
+    clip.normal = upVector(*axis);
+    const int index = static_cast<int>(*axis) % 3;
+    clip.point[index] = *value;
+    return clip;
+  }
+  double numbers[6];
+  std::size_t start = 0;
+  for (int i = 0; i < 6; ++i) {
+    const std::size_t comma = i < 5 ? text.find(',', start) : text.size();
+    if (comma == std::string::npos) return fail();
+    const std::optional<double> number = numberOf(text.substr(start, comma - start));
+    if (!number) return fail();
+    numbers[i] = *number;
+    start = comma + 1;
+  }
+  clip.point = {numbers[0], numbers[1], numbers[2]};
+  clip.normal = {numbers[3], numbers[4], numbers[5]};
+  return clip;
+}
+
+// --range, --legend, --isolines, --bands, --arrows and --clip turned into values; the renderer's
+// overrides check them (render_overrides.hpp).
+void applyAnnotationOptions(const SceneOverrides& overrides, RenderOverrides& applied) {
+  if (!overrides.range.empty()) {
+    // MIN:MAX; the colon that splits them is the one a number cannot hold.
+    const std::size_t colon = overrides.range.find(':');
+    const std::optional<double> low =
+        colon == std::string::npos ? std::nullopt : numberOf(overrides.range.substr(0, colon));
+    const std::optional<double> high =
+        colon == std::string::npos ? std::nullopt : numberOf(overrides.range.substr(colon + 1));
+    if (!low || !high)
+      throw InputError(SourceLocation{"--range"},
+                       fmt::format("'{}' is not MIN:MAX: give the values at the map's two ends, e.g. --range "
+                                   "0:250 or --range -1e-3:1e-3",
+                                   overrides.range));
+    applied.range = std::pair{*low, *high};
+  }
+  if (!overrides.legend.empty()) {
+    applied.legend = enumFromName<LegendPlacement>(kLegendPlacementNames, overrides.legend);
+    if (!applied.legend)
+      throw InputError(SourceLocation{"--legend"},
+                       fmt::format("'{}' is not a place for the legend: use right, bottom or none (render "
+                                   "--legend-file FILE.png writes it to its own image)",
+                                   overrides.legend));
+  }
+  applied.isolines = overrides.isolines;
+  applied.bands = overrides.bands;
+  applied.arrows = overrides.arrows;
+  for (const std::string& clip : overrides.clips) applied.clips.push_back(parseClip(clip));
+}
+
 }  // namespace
 
-void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides) {
-  command.add_option("--width", overrides.width, "Image width in pixels")
-      ->check(CLI::Range(1, kMaxRenderSide));
-  command.add_option("--height", overrides.height, "Image height in pixels")
-      ->check(CLI::Range(1, kMaxRenderSide));
+void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides) {
+  // Camera.
   command
-      .add_option("--samples", overrides.samples, "Samples per pixel (a perfect square for the regular grid)")
-      ->check(CLI::Range(1, kMaxSamples));
-  command.add_option("--sampler", overrides.sampler, "Anti-aliasing: regular, stratified or adaptive")
-      ->check(CLI::IsMember(choices(kSamplerNames)));
-  command.add_option("--max-depth", overrides.maxDepth, "Reflection/refraction depth")
-      ->check(CLI::Range(0, kMaxDepth));
-  command.add_option("--shading", overrides.shading, "Shading for every mesh: flat, gouraud or phong")
-      ->check(CLI::IsMember(choices(kShadingNames)));
-  command
-      .add_option(
-          "--accel", overrides.accel,
-          "Accelerator: bvh (default: the wide BVH), kdtree-sah (the kd-tree), kdtree-sah-exact (its slower "
-          "build, the quality reference), kdtree-median or naive (brute force)")
-      ->check(CLI::IsMember(choices(kAccelNames)));
-  command.add_option("--threads", overrides.threads, "Worker threads (default 0: one per usable CPU)")
-      ->check(CLI::Range(0, kMaxThreads));
-  CLI::Option* srgb =
-      command.add_flag("--srgb", overrides.srgb,
-                       "Encode the output with the sRGB curve (the default; over a scene's linear encoding)");
-  command
-      .add_flag("--linear", overrides.linear,
-                "Encode the output linearly, round(255 * I): the raw values of the lighting model, for tests")
-      ->excludes(srgb);
-  command.add_option("--tonemap", overrides.toneMap,
-                     "Tone curve before the encoding: none (default, clip at 1), filmic (Hable) or aces");
-  command.add_option("--exposure", overrides.exposure,
-                     "Exposure in stops: radiance x 2^STOPS before the curve");
-  command.add_option("--bit-depth", overrides.bitDepth, "Bits per sample: 8 (default) or 16 (PNG only)");
-  command.add_flag("--denoise", overrides.denoise,
-                   "Filter the noise with the edge-aware denoiser guided by albedo, normal and depth");
-  command.add_flag("--edges", overrides.edges,
-                   "Draw element edges (1 pixel, black) on every mesh whose scene sets no edges");
-  command.add_option("--up", overrides.up,
-                     "Up axis of the automatic camera: x, y, z, -x, -y or -z (a bare mesh: guessed; a scene: "
-                     "y)");
+      .add_option("--up", overrides.up,
+                  "Up axis of the automatic camera: x, y, z, -x, -y or -z (a bare mesh: guessed; a scene: "
+                  "y); a 3/4 view, flat models too")
+      ->group(kCameraGroup);
   command
       .add_option(
           "--gmsh-view", overrides.gmshView,
           "The view set up in gmsh, framed for the image as gmsh's own export at that size: its options "
           "file (File > Save Model Options; default: the mesh's MESH.msh.opt); before or after the input")
-      ->expected(0, 1);
-  command.add_option("--step", overrides.step, "Time step of the results shown (colours and warps)")
-      ->check(CLI::Range(0, 1'000'000'000));
-  command.add_option(
-      "--warp", overrides.warp,
-      "Deformed shape: FIELD[:FACTOR], every node moved by FACTOR (default 1) times its vector");
-  command.add_option("--color-by", overrides.colorBy,
-                     "Colour by a field: FIELD[:COMPONENT], COMPONENT magnitude, x, y, z, 0-8 or von_mises");
-  command.add_option(
-      "--color-map", overrides.colorMap,
-      "The colours' map: a matplotlib name (viridis, turbo, RdBu, jet, ...; NAME_r reversed), gmsh:N "
-      "(gmsh's View.ColormapNumber) or colours \"#000080,white,#800000\"; see docs/fields.md");
-  command
-      .add_option("--undeformed", overrides.undeformed, "With --warp, the shape before it: edges or ghost")
-      ->check(CLI::IsMember({"none", "edges", "ghost"}));
-  command
-      .add_option("--integrator", overrides.integrator,
-                  "How light is carried: whitted (the default, the brief's model), path (path tracing) or ao "
-                  "(ambient occlusion); see docs/lighting.md")
-      ->check(CLI::IsMember(choices(kIntegratorNames)));
-  command.add_option("--noise", overrides.noise,
-                     "path, ao: stop sampling a pixel once its relative error is below this (0 < noise < 1)");
+      ->expected(0, 1)
+      ->group(kCameraGroup);
+
+  // Look: how surfaces are lit and drawn.
   command
       .add_option("--look", overrides.look,
                   "A lit scene in one option (path tracing, soft light, sky, a floor catching shadows): "
                   "studio, sky or sun")
-      ->check(CLI::IsMember(choices(kLookNames)));
-  command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr");
-  command.add_flag("--timings", overrides.timings,
-                   "Print where the time before the first ray went: read, orient (shells, orientation, "
-                   "nesting), normals, scene, accel build");
+      ->check(CLI::IsMember(choices(kLookNames)))
+      ->group(kLookGroup);
+  command
+      .add_option("--integrator", overrides.integrator,
+                  "How light is carried: whitted (the default, the brief's model), path (path tracing) or ao "
+                  "(ambient occlusion); see docs/lighting.md")
+      ->check(CLI::IsMember(choices(kIntegratorNames)))
+      ->group(kLookGroup);
+  command
+      .add_option(
+          "--shading", overrides.shading,
+          "Shading for every mesh: flat, gouraud, phong or unlit (the colours as they are, no lights)")
+      ->check(CLI::IsMember(choices(kShadingNames)))
+      ->group(kLookGroup);
+  command
+      .add_flag("--edges", overrides.edges,
+                "Draw element edges (1 pixel, black) on every mesh whose scene sets no edges")
+      ->group(kLookGroup);
+  command
+      .add_option(
+          "--clip", overrides.clips,
+          "Cut away one side of a plane, on every mesh (any number): AXIS=VALUE removes the side AXIS "
+          "points to (x=0.5 removes x > 0.5, -z=0 removes z < 0), or PX,PY,PZ,NX,NY,NZ a point and "
+          "the normal of the removed side, as [[clip]]")
+      ->group(kLookGroup);
+
+  // Results: time steps, deformed shapes and annotations.
+  command.add_option("--step", overrides.step, "Time step of the results shown (colours and warps)")
+      ->check(CLI::Range(0, 1'000'000'000))
+      ->group(kResultsGroup);
+  command
+      .add_option("--warp", overrides.warp,
+                  "Deformed shape: FIELD[:FACTOR], every node moved by FACTOR (default 1) times its vector")
+      ->group(kResultsGroup);
+  command
+      .add_option("--undeformed", overrides.undeformed, "With --warp, the shape before it: edges or ghost")
+      ->check(CLI::IsMember({"none", "edges", "ghost"}))
+      ->group(kResultsGroup);
+  command
+      .add_option("--color-by", overrides.colorBy,
+                  "Colour by a field: FIELD[:COMPONENT], COMPONENT magnitude, x, y, z, 0-8 or von_mises")
+      ->group(kResultsGroup);
+  command
+      .add_option(
+          "--color-map", overrides.colorMap,
+          "The colours' map: a matplotlib name (viridis, turbo, RdBu, jet, ...; NAME_r reversed), gmsh:N "
+          "(gmsh's View.ColormapNumber) or colours \"#000080,white,#800000\"; see docs/fields.md")
+      ->group(kResultsGroup);
+  command
+      .add_option("--range", overrides.range,
+                  "The colours' range MIN:MAX (values outside are clamped); default: over every step")
+      ->group(kResultsGroup);
+  command
+      .add_option("--legend", overrides.legend,
+                  "The colours' legend in the picture: right, bottom or none (render: a FILE name writes it "
+                  "to its own image, as --legend-file)")
+      ->group(kResultsGroup);
+  command
+      .add_option("--isolines", overrides.isolines,
+                  "N isolines of the --color-by field, in the middle of N equal parts of its range")
+      ->group(kResultsGroup);
+  command.add_option("--bands", overrides.bands, "Discrete colours: N equal bands of the range")
+      ->group(kResultsGroup);
+  command.add_option("--arrows", overrides.arrows, "Arrows along a node vector field (3 components)")
+      ->group(kResultsGroup);
+}
+
+void addSceneOutputOptions(CLI::App& command, SceneOverrides& overrides) {
+  // Output: the picture's size and how it is written.
+  command.add_option("--width", overrides.width, "Image width in pixels")
+      ->check(CLI::Range(1, kMaxRenderSide))
+      ->group(kOutputGroup);
+  command.add_option("--height", overrides.height, "Image height in pixels")
+      ->check(CLI::Range(1, kMaxRenderSide))
+      ->group(kOutputGroup);
+  CLI::Option* srgb =
+      command
+          .add_flag("--srgb", overrides.srgb,
+                    "Encode the output with the sRGB curve (the default; over a scene's linear encoding)")
+          ->group(kOutputGroup);
+  command
+      .add_flag("--linear", overrides.linear,
+                "Encode the output linearly, round(255 * I): the raw values of the lighting model, for tests")
+      ->excludes(srgb)
+      ->group(kOutputGroup);
+  command
+      .add_option("--tonemap", overrides.toneMap,
+                  "Tone curve before the encoding: none (default, clip at 1), filmic (Hable) or aces")
+      ->group(kOutputGroup);
+  command
+      .add_option("--exposure", overrides.exposure, "Exposure in stops: radiance x 2^STOPS before the curve")
+      ->group(kOutputGroup);
+  command.add_option("--bit-depth", overrides.bitDepth, "Bits per sample: 8 (default) or 16 (PNG only)")
+      ->group(kOutputGroup);
+  command
+      .add_flag("--denoise", overrides.denoise,
+                "Filter the noise with the edge-aware denoiser guided by albedo, normal and depth")
+      ->group(kOutputGroup);
+  command.add_flag("-q,--quiet", overrides.quiet, "No progress or summary on stderr")->group(kOutputGroup);
+  command
+      .add_flag("--timings", overrides.timings,
+                "Print where the time before the first ray went: read, orient (shells, orientation, "
+                "nesting), normals, scene, accel build")
+      ->group(kOutputGroup);
+
+  // Quality: how many rays, and how they are found.
+  command
+      .add_option("--samples", overrides.samples, "Samples per pixel (a perfect square for the regular grid)")
+      ->check(CLI::Range(1, kMaxSamples))
+      ->group(kQualityGroup);
+  command.add_option("--sampler", overrides.sampler, "Anti-aliasing: regular, stratified or adaptive")
+      ->check(CLI::IsMember(choices(kSamplerNames)))
+      ->group(kQualityGroup);
+  command.add_option("--max-depth", overrides.maxDepth, "Reflection/refraction depth")
+      ->check(CLI::Range(0, kMaxDepth))
+      ->group(kQualityGroup);
+  command
+      .add_option("--noise", overrides.noise,
+                  "path, ao: stop sampling a pixel once its relative error is below this (0 < noise < 1)")
+      ->group(kQualityGroup);
+  command
+      .add_option(
+          "--accel", overrides.accel,
+          "Accelerator: bvh (default: the wide BVH), kdtree-sah (the kd-tree), kdtree-sah-exact (its slower "
+          "build, the quality reference), kdtree-median or naive (brute force)")
+      ->check(CLI::IsMember(choices(kAccelNames)))
+      ->group(kQualityGroup);
+  command.add_option("--threads", overrides.threads, "Worker threads (default 0: one per usable CPU)")
+      ->check(CLI::Range(0, kMaxThreads))
+      ->group(kQualityGroup);
 }
 
 CLI::Option* addInputOption(CLI::App& command, std::vector<std::string>& inputs) {
-  return command.add_option(
-      "input", inputs,
-      "Scene file (.toml), or gmsh mesh (.msh) or list-based view (.pos), then .pos views "
-      "to put on that mesh; required");
+  return command
+      .add_option("input", inputs,
+                  "Scene file (.toml), or gmsh mesh (.msh) or list-based view (.pos), then .pos views "
+                  "to put on that mesh; required")
+      ->group(kInputGroup);
 }
 
 void takeInputFromGmshView(std::vector<std::string>& inputs, SceneOverrides& overrides) {
@@ -371,6 +520,7 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     applied.noise = static_cast<float>(*overrides.noise);
   }
   if (!overrides.look.empty()) applied.look = enumFromName<Look>(kLookNames, overrides.look);
+  applyAnnotationOptions(overrides, applied);
   request.accel = parseAccelKind(overrides.accel);
   request.threads = overrides.threads;
   request.imageBuffer = imageBuffer;
@@ -427,11 +577,14 @@ RenderOptions commandRenderOptions(const SceneOverrides& overrides) {
 void addAnimationWriterOptions(CLI::App& command, AnimationOutputOptions& writer) {
   command
       .add_option("--loop", writer.loop, "Repeats after the first showing: 0 forever (default), -1 play once")
-      ->check(CLI::Range(-1, 65535));
+      ->check(CLI::Range(-1, 65535))
+      ->group(kOutputGroup);
   command.add_option("--dither", writer.dither, "GIF dithering: ordered (default), floyd-steinberg or none")
-      ->check(CLI::IsMember({"none", "ordered", "floyd-steinberg"}));
+      ->check(CLI::IsMember({"none", "ordered", "floyd-steinberg"}))
+      ->group(kOutputGroup);
   command.add_option("--palette", writer.palette, "GIF palette: global (default, no flicker) or per-frame")
-      ->check(CLI::IsMember({"global", "per-frame"}));
+      ->check(CLI::IsMember({"global", "per-frame"}))
+      ->group(kOutputGroup);
 }
 
 bool interruptRequested() { return gInterrupted.load(); }

@@ -47,11 +47,31 @@ struct SceneOverrides {
   std::string integrator;       // --integrator whitted|path|ao
   std::optional<double> noise;  // --noise: adaptive stop, in (0, 1)
   std::string look;             // --look studio|sky|sun
+  // Annotations on every mesh (docs/annotations.md), as the scene keys name them:
+  std::string range;               // --range MIN:MAX, the colour range
+  std::string legend;              // --legend right|bottom|none, in the picture
+  std::optional<int> isolines;     // --isolines N: lines of the --color-by field
+  std::optional<int> bands;        // --bands N
+  std::string arrows;              // --arrows FIELD
+  std::vector<std::string> clips;  // --clip AXIS=VALUE or PX,PY,PZ,NX,NY,NZ, any number
   // The inputs after the mesh: list-based .pos views put on it by their elements' coordinates.
   std::vector<std::string> views;
 };
 
-void addSceneOverrideOptions(CLI::App& command, SceneOverrides& overrides);
+// The option groups of `lancer render --help` and `lancer animate --help`.
+inline constexpr const char* kInputGroup = "Input";
+inline constexpr const char* kCameraGroup = "Camera";
+inline constexpr const char* kLookGroup = "Look";
+inline constexpr const char* kResultsGroup = "Results";
+inline constexpr const char* kOutputGroup = "Output";
+inline constexpr const char* kQualityGroup = "Quality";
+inline constexpr const char* kClusterGroup = "Cluster";
+
+// The options `render` and `animate` share, in the --help groups they belong to: what is seen
+// (Camera, Look, Results), then how the picture is made (Output, Quality). A command adds its own
+// -o between the two, so that it leads the Output group.
+void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides);
+void addSceneOutputOptions(CLI::App& command, SceneOverrides& overrides);
 
 // The command's inputs, positional: `lancer render|animate INPUT [VIEW.pos ...]`. Not required by
 // CLI11, since --gmsh-view's value is optional and CLI11 gives it the input when it comes first

@@ -15,6 +15,7 @@
 #include "lancer/scene/arrows.hpp"
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/isolines.hpp"
+#include "lancer/scene/render_limits.hpp"
 
 namespace lancer::python {
 namespace {
@@ -81,14 +82,14 @@ void applyResultKeywords(MeshInstance& instance, const ResultKeywords& keywords)
   if (auto isolines = readIsolines(kWhere, reader)) instance.isolines = std::move(isolines);
   if (auto arrows = readArrows(kWhere, reader)) instance.arrows = std::move(arrows);
   if (keywords.legend) {
-    constexpr std::array<std::string_view, 3> kPlacements = {"none", "right", "bottom"};
-    const auto* found = std::find(kPlacements.begin(), kPlacements.end(), *keywords.legend);
-    if (found == kPlacements.end())
+    const auto* found =
+        std::find(kLegendPlacementNames.begin(), kLegendPlacementNames.end(), *keywords.legend);
+    if (found == kLegendPlacementNames.end())
       throw py::value_error(fmt::format("legend='{}': use 'right', 'bottom' or 'none'", *keywords.legend));
     if (!instance.colorBy)
       throw py::value_error(
           fmt::format("legend='{}' shows the colours' legend: give color_by= too", *keywords.legend));
-    instance.colorBy->legend = static_cast<LegendPlacement>(found - kPlacements.begin());
+    instance.colorBy->legend = static_cast<LegendPlacement>(found - kLegendPlacementNames.begin());
   }
 }
 

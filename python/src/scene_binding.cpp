@@ -45,6 +45,7 @@ CameraSettings makeCameraSettings(const std::optional<Triple>& position, const s
                                   const Triple& up, double fov, const std::string& projection,
                                   const std::optional<double>& viewHeight) {
   CameraSettings camera;
+  camera.viewChosen = true;  // a Camera the caller made: a flat model is not turned straight on
   if (position) camera.position = toVec(*position);
   if (lookAt) camera.lookAt = toVec(*lookAt);
   camera.up = toVec(up);

@@ -288,19 +288,58 @@ void drawLegends(Image& picture, std::span<const LegendSpec> legends, LegendPlac
   drawLegendsInRows(picture, legends, placement, linearize, picture.width(), picture.height(), 0);
 }
 
-void drawLegendsInRows(Image& rows, std::span<const LegendSpec> legends, LegendPlacement placement,
-                       bool linearize, int width, int height, int firstRow) {
-  if (placement == LegendPlacement::None || legends.empty() || rows.empty()) return;
+namespace {
+
+// The legends' panels and where their top-left corners go in a picture `width` x `height`: along the
+// edge `placement` names, side by side (right) or one above the other (bottom), a margin apart.
+struct PlacedPanel {
+  Image panel;
+  int x0 = 0, y0 = 0;
+};
+struct LegendLayout {
+  std::vector<PlacedPanel> panels;
+  int margin = 0;
+};
+LegendLayout layOutLegends(std::span<const LegendSpec> legends, LegendPlacement placement, bool linearize,
+                           int width, int height) {
+  LegendLayout layout;
+  if (placement == LegendPlacement::None || legends.empty()) return layout;
   const bool horizontal = placement == LegendPlacement::Bottom;
   const float textHeight = std::max(9.0f, static_cast<float>(height) / 40.0f);
-  const int margin = static_cast<int>(std::lround(0.6f * textHeight));
+  layout.margin = static_cast<int>(std::lround(0.6f * textHeight));
   const int barLength =
       horizontal ? static_cast<int>(std::lround(0.45 * width)) : static_cast<int>(std::lround(0.55 * height));
-  int right = width - margin, bottom = height - margin;
+  int right = width - layout.margin, bottom = height - layout.margin;
   for (const LegendSpec& spec : legends) {
-    const Image panel = legendPanel(spec, horizontal, barLength, textHeight, linearize, kPanelOpacity);
-    const int x0 = horizontal ? (width - panel.width()) / 2 : right - panel.width();
-    const int y0 = horizontal ? bottom - panel.height() : (height - panel.height()) / 2;
+    PlacedPanel placed;
+    placed.panel = legendPanel(spec, horizontal, barLength, textHeight, linearize, kPanelOpacity);
+    placed.x0 = horizontal ? (width - placed.panel.width()) / 2 : right - placed.panel.width();
+    placed.y0 = horizontal ? bottom - placed.panel.height() : (height - placed.panel.height()) / 2;
+    if (horizontal)
+      bottom = placed.y0 - layout.margin;
+    else
+      right = placed.x0 - layout.margin;
+    layout.panels.push_back(std::move(placed));
+  }
+  return layout;
+}
+
+}  // namespace
+
+int legendsBreadth(std::span<const LegendSpec> legends, LegendPlacement placement, int width, int height) {
+  const LegendLayout layout = layOutLegends(legends, placement, false, width, height);
+  if (layout.panels.empty()) return 0;
+  const PlacedPanel& inner = layout.panels.back();
+  const int edge = placement == LegendPlacement::Bottom ? height - inner.y0 : width - inner.x0;
+  return edge + layout.margin;
+}
+
+void drawLegendsInRows(Image& rows, std::span<const LegendSpec> legends, LegendPlacement placement,
+                       bool linearize, int width, int height, int firstRow) {
+  if (rows.empty()) return;
+  for (const PlacedPanel& placed : layOutLegends(legends, placement, linearize, width, height).panels) {
+    const Image& panel = placed.panel;
+    const int x0 = placed.x0, y0 = placed.y0;
     // The panel's rows that fall in this band of the picture.
     const int yBegin = std::max(0, firstRow - y0),
               yEnd = std::min(panel.height(), firstRow + rows.height() - y0);
@@ -311,10 +350,6 @@ void drawLegendsInRows(Image& rows, std::span<const LegendSpec> legends, LegendP
         const Rgba& p = panel.at(x, y);
         blendOver(rows.at(px, py - firstRow), p.rgb(), p.a);
       }
-    if (horizontal)
-      bottom = y0 - margin;
-    else
-      right = x0 - margin;
   }
 }
 

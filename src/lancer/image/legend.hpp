@@ -70,6 +70,11 @@ Image legendSheet(std::span<const LegendSpec> legends, int barLength, float text
 void drawLegends(Image& picture, std::span<const LegendSpec> legends, LegendPlacement placement,
                  bool linearize);
 
+// How far from its edge (right or bottom, as `placement` says) drawLegends' panels reach into a
+// picture `width` x `height`, with the margin beside them: the automatic camera frames the model in
+// the rest, so that the legends never cover it. 0 for no legend.
+int legendsBreadth(std::span<const LegendSpec> legends, LegendPlacement placement, int width, int height);
+
 // The same legends' part that falls in `rows`, a band of a picture `width` x `height` whose first
 // row is the picture's `firstRow` (a job-array task's or a rank's band items): the bands drawn
 // one by one make the picture drawLegends draws in one go.

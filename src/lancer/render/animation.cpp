@@ -45,11 +45,12 @@ CameraSettings orbitCamera(const CameraSettings& givenCamera, const AnimationSet
   const Aabbd worldBounds{scene.geometry.origin + toDouble(scene.geometry.bounds.lower),
                           scene.geometry.origin + toDouble(scene.geometry.bounds.upper)};
   const double aspect = static_cast<double>(imageWidth) / imageHeight;
-  const CameraSettings camera = resolveGmshView(givenCamera, worldBounds, aspect);
+  // The first frame's camera, placed whole (the automatic one's window too), then turned.
+  const CameraSettings camera =
+      placeAutomaticCamera(resolveGmshView(givenCamera, worldBounds, aspect), worldBounds, aspect);
   CameraSettings result = camera;
-  const Vec3d sceneCentre = worldBounds.empty() ? Vec3d{} : worldBounds.center();
-  const Vec3d position = camera.position.value_or(defaultCameraPosition(worldBounds, camera, aspect));
-  const Vec3d lookAt = camera.lookAt.value_or(sceneCentre);
+  const Vec3d position = *camera.position;
+  const Vec3d lookAt = *camera.lookAt;
   const Vec3d centre = orbitCenter(animation, scene);
   const Vec3d axis = orbitAxis(animation, camera);
   const double degrees = orbitAngleDegrees(animation, frame);

@@ -1,10 +1,13 @@
 #include "lancer/render/ao_integrator.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include "lancer/render/field_shading.hpp"
+#include "lancer/render/isoline_paint.hpp"
 #include "lancer/render/light_sampling.hpp"
 #include "lancer/render/ray_offset.hpp"
+#include "lancer/render/shading.hpp"
 #include "lancer/render/surface_point.hpp"
 
 namespace lancer {
@@ -27,26 +30,35 @@ float AoIntegrator::openness(const Vec3& from, const Vec3& direction, TraceCount
                                                                                                        : 0.0f;
 }
 
-TraceResult AoIntegrator::li(const Ray& ray, SampleStream& samples, TraceCounters& counters) const {
+TraceResult AoIntegrator::li(const Ray& cameraRay, SampleStream& samples, TraceCounters& counters) const {
   TraceResult result;
   ++counters.rays;
-  const Sighting seen = queries_.firstSighting(ray);
-  const float distance = seen.t * length(ray.direction);
+  Ray ray = cameraRay;
+  PaintLayer paint;  // edges on the faces the ray passes (the undeformed shape's) and on the one it hits
+  float travelled = 0.0f;
+  const Sighting seen = paint_.sightingPastClearFaces(queries_, ray, travelled, paint);
+  const float distance = travelled + seen.t * length(ray.direction);
+  // The paint in front over what the ray sees, then the outlines over both.
+  auto finish = [&](float hitDistance) {
+    result.color = paint.over(result.color);
+    if (result.alpha < 1.0f) result.alpha = paint.coverage + result.alpha * (1.0f - paint.coverage);
+    paint_.paintOutlines(queries_, cameraRay, hitDistance, result, counters, nullptr);
+    return result;
+  };
   float u, v;
   samples.next2D(u, v);
+  if (paint.opaque()) return finish(travelled);
   switch (seen.kind) {
     case Sighting::Kind::kNothing:
       result.color = background_;
-      paint_.paintOutlines(queries_, ray, std::numeric_limits<float>::infinity(), result, counters, nullptr);
-      return result;
+      return finish(std::numeric_limits<float>::infinity());
     case Sighting::Kind::kShadowCatcher: {
       const Vec3& normal = scene_.shadowCatcher->normal;
       const Vec3 from = offsetRayOrigin(ray.at(seen.t), normal);
       const float open = openness(from, sampleCosine(normal, u, v), counters);
       result.color = background_ * open;
       result.alpha = 1.0f - open;
-      paint_.paintOutlines(queries_, ray, distance, result, counters, nullptr);
-      return result;
+      return finish(distance);
     }
     case Sighting::Kind::kCap:
     case Sighting::Kind::kSurface:
@@ -54,8 +66,6 @@ TraceResult AoIntegrator::li(const Ray& ray, SampleStream& samples, TraceCounter
   }
   SurfacePoint surface;
   std::uint32_t material;
-  float edge = 0.0f;
-  Vec3 edgeColor;
   if (seen.kind == Sighting::Kind::kCap) {
     surface = SurfacePoint{};
     surface.face = seen.hit.face;
@@ -70,21 +80,26 @@ TraceResult AoIntegrator::li(const Ray& ray, SampleStream& samples, TraceCounter
   } else {
     surface = makeSurfacePoint(scene_, ray, seen.hit);
     material = queries_.crossingAt(seen.hit.face, surface.normalSign > 0.0f).shown;
-    edge = paint_.coverageAt(ray, seen.hit, 0.0f, edgeColor);
+    Vec3 edgeColor;
+    paint.add(std::min(paint_.coverageAt(ray, seen.hit, travelled, edgeColor), 1.0f), edgeColor);
   }
   Vec3 kd;
   if (!fieldColorAt(scene_, surface, linearFieldColors_, kd)) kd = scene_.appearance.materials[material].kd;
+  Vec3 isolineColor;  // painted on the albedo, as the field's colour is
+  const float isoline = isolineCoverage(scene_, ray, surface, paint_.pixelSizeAt(distance), isolineColor);
+  if (isoline > 0.0f) kd = kd * (1.0f - isoline) + isolineColor * isoline;
   const Vec3 direction = sampleCosine(surface.shadingNormal, u, v);
   Vec3 color{0, 0, 0};
-  if (dot(direction, surface.geometricNormal) > 0.0f) {
+  if (unlitFace(scene_, surface.face)) {
+    color = kd;
+  } else if (dot(direction, surface.geometricNormal) > 0.0f) {
     const Vec3 from = offsetRayOrigin(surface.position, surface.positionError, surface.geometricNormal);
     const Vec3 light = scene_.environment ? environment_.radiance(direction) : Vec3{1, 1, 1};
     color = kd * light * openness(from, direction, counters);
   }
-  result.color = edge > 0.0f ? color * (1.0f - edge) + edgeColor * edge : color;
+  result.color = color;
   result.alpha = 1.0f;
-  paint_.paintOutlines(queries_, ray, distance, result, counters, nullptr);
-  return result;
+  return finish(distance);
 }
 
 }  // namespace lancer

@@ -19,7 +19,7 @@ class AoIntegrator {
   AoIntegrator(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings,
                const Camera& camera);
 
-  TraceResult li(const Ray& ray, SampleStream& samples, TraceCounters& counters) const;
+  TraceResult li(const Ray& cameraRay, SampleStream& samples, TraceCounters& counters) const;
 
  private:
   // 1 when the cosine-weighted direction from (u, v) about `normal` is open up to the distance.

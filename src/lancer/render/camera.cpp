@@ -17,10 +17,11 @@ Camera::Camera(const CameraSettings& givenSettings, const Vec3d& sceneOrigin, co
   const double aspect = static_cast<double>(imageWidth) / imageHeight;
   const Aabbd worldBounds{sceneOrigin + toDouble(sceneBounds.lower),
                           sceneOrigin + toDouble(sceneBounds.upper)};
-  const CameraSettings settings = resolveGmshView(givenSettings, worldBounds, aspect);
+  const CameraSettings settings =
+      placeAutomaticCamera(resolveGmshView(givenSettings, worldBounds, aspect), worldBounds, aspect);
   projection_ = settings.projection;
-  const Vec3d lookAt = settings.lookAt.value_or(worldBounds.empty() ? Vec3d{} : worldBounds.center());
-  const Vec3d position = settings.position.value_or(defaultCameraPosition(worldBounds, settings, aspect));
+  const Vec3d lookAt = *settings.lookAt;
+  const Vec3d position = *settings.position;
 
   const Vec3d forward = normalize(lookAt - position);
   Vec3d right = normalize(cross(forward, settings.up));
@@ -41,10 +42,8 @@ Camera::Camera(const CameraSettings& givenSettings, const Vec3d& sceneOrigin, co
     halfHeight_ = static_cast<float>(0.5 * height);
   }
   halfWidth_ = static_cast<float>(halfHeight_ * aspect);
-  if (projection_ == Projection::Perspective) {
-    shiftX_ = static_cast<float>(settings.shiftX);
-    shiftY_ = static_cast<float>(settings.shiftY);
-  }
+  shiftX_ = static_cast<float>(settings.shiftX);
+  shiftY_ = static_cast<float>(settings.shiftY);
   invWidth_ = 1.0f / static_cast<float>(imageWidth);
   invHeight_ = 1.0f / static_cast<float>(imageHeight);
 }
@@ -73,6 +72,9 @@ bool Camera::project(const Vec3& p, float& x, float& y) const {
     if (!(depth > 0.0f)) return false;
     sx = sx / depth - shiftX_;
     sy = sy / depth - shiftY_;
+  } else {
+    sx -= shiftX_;
+    sy -= shiftY_;
   }
   x = 0.5f * (sx / halfWidth_ + 1.0f) / invWidth_;
   y = 0.5f * (1.0f - sy / halfHeight_) / invHeight_;

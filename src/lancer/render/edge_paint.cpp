@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "lancer/render/ray_offset.hpp"
+
 namespace lancer {
 
 EdgePaint::EdgePaint(const Scene& scene, const Camera& camera, int width, int height)
@@ -24,6 +26,27 @@ float EdgePaint::coverageAt(const Ray& ray, const Hit& hit, float pathLength, Ve
   return edgeCoverage(ray.origin, ray.direction * (1.0f / directionLength), corners, face.cornerCount(),
                       overlay.faceEdgeMask[hit.face], overlay.faceLineCorners[hit.face], pixelSize,
                       overlay.styles[style].widthPixels);
+}
+
+Sighting EdgePaint::sightingPastClearFaces(const SceneQueries& queries, Ray& ray, float& travelled,
+                                           PaintLayer& paint, bool withCatcher) const {
+  constexpr int kMaxClearFaces = 64;  // a ray crosses a few; coincident copies cannot loop forever
+  for (int crossed = 0;; ++crossed) {
+    const Sighting seen = queries.firstSighting(ray, nullptr, withCatcher);
+    if (seen.kind != Sighting::Kind::kSurface || !queries.clearFace(seen.hit.face) ||
+        crossed == kMaxClearFaces)
+      return seen;
+    Vec3 edgeColor;
+    paint.add(std::min(coverageAt(ray, seen.hit, travelled, edgeColor), 1.0f), edgeColor);
+    const float directionLength = length(ray.direction);
+    travelled += seen.t * directionLength;
+    const Vec3 point = ray.at(seen.t);
+    const Vec3& normal = scene_.geometry.faceNormals[seen.hit.face];
+    const Vec3 beyond = dot(normal, ray.direction) > 0.0f ? normal : -normal;
+    ray =
+        Ray(offsetRayOrigin(point, rayPointError(ray.origin, ray.direction, seen.t), beyond), ray.direction);
+    if (paint.opaque()) return seen;
+  }
 }
 
 void EdgePaint::paintOutlinesNear(const SceneQueries& queries, const Ray& ray, float hitDistance,

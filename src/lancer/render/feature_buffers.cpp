@@ -4,6 +4,7 @@
 
 #include "lancer/render/edge_paint.hpp"
 #include "lancer/render/field_shading.hpp"
+#include "lancer/render/isoline_paint.hpp"
 #include "lancer/render/scene_queries.hpp"
 #include "lancer/render/surface_point.hpp"
 
@@ -23,10 +24,16 @@ SurfaceFeatures surfaceFeatures(const SceneQueries& queries, const EdgePaint& pa
   const Scene& scene = queries.scene();
   SurfaceFeatures features;
   features.albedo = background;
-  const Sighting seen = queries.firstSighting(ray);
-  if (seen.kind == Sighting::Kind::kNothing) return features;
+  Ray past = ray;  // past the clear faces (the undeformed shape's): their edges are paint
+  float travelled = 0.0f;
+  PaintLayer front;
+  const Sighting seen = paint.sightingPastClearFaces(queries, past, travelled, front);
+  if (seen.kind == Sighting::Kind::kNothing || front.opaque()) {
+    features.albedo = front.over(features.albedo);
+    return features;
+  }
   features.hit = true;
-  features.depth = seen.t * length(ray.direction);
+  features.depth = travelled + seen.t * length(past.direction);
   switch (seen.kind) {
     case Sighting::Kind::kNothing:
       break;
@@ -40,20 +47,27 @@ SurfaceFeatures surfaceFeatures(const SceneQueries& queries, const EdgePaint& pa
       features.normal = seen.capPlane->normal;  // the cap faces the removed side, where the ray came from
       break;
     case Sighting::Kind::kSurface: {
-      const SurfacePoint surface = makeSurfacePoint(scene, ray, seen.hit);
+      const SurfacePoint surface = makeSurfacePoint(scene, past, seen.hit);
       const MediumCrossing media = queries.crossingAt(seen.hit.face, surface.normalSign > 0.0f);
       Vec3 kd = scene.appearance.materials[media.shown].kd;
       Vec3 fieldColor;
       if (fieldColorAt(scene, surface, linearFieldColors, fieldColor)) kd = fieldColor;
+      Vec3 isolineColor;  // painted on the albedo, as the integrators paint them
+      if (const float isoline =
+              isolineCoverage(scene, past, surface, paint.pixelSizeAt(features.depth), isolineColor);
+          isoline > 0.0f)
+        kd = kd * (1.0f - isoline) + isolineColor * isoline;
       features.albedo = albedoOf(kd, queries.splitOf(media.shown));
       features.normal = surface.shadingNormal;
       // Drawn edges are paint: their colour is the albedo where they cover the pixel.
       Vec3 edgeColor;
-      if (const float edge = std::min(paint.coverageAt(ray, seen.hit, 0.0f, edgeColor), 1.0f); edge > 0.0f)
+      if (const float edge = std::min(paint.coverageAt(past, seen.hit, travelled, edgeColor), 1.0f);
+          edge > 0.0f)
         features.albedo = features.albedo * (1.0f - edge) + edgeColor * edge;
       break;
     }
   }
+  features.albedo = front.over(features.albedo);
   return features;
 }
 

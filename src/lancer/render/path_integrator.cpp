@@ -6,9 +6,11 @@
 
 #include "lancer/render/bsdf.hpp"
 #include "lancer/render/field_shading.hpp"
+#include "lancer/render/isoline_paint.hpp"
 #include "lancer/render/light_sampling.hpp"
 #include "lancer/render/optics.hpp"
 #include "lancer/render/ray_offset.hpp"
+#include "lancer/render/shading.hpp"
 
 namespace lancer {
 namespace {
@@ -131,33 +133,40 @@ Vec3 PathIntegrator::shadeShadowCatcher(const Vec3& point, const Vec3& direction
 TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, TraceCounters& counters) const {
   TraceResult result;
   Vec3 radiance{0, 0, 0}, throughput{1, 1, 1};
-  float edge = 0.0f, firstDistance = kInfinity;
-  Vec3 edgeColor;
+  float firstDistance = kInfinity;
+  PaintLayer paint;          // the edges the camera ray meets, over what it sees
+  float travelled = 0.0f;    // by the camera ray past clear faces
   float previousPdf = 0.0f;  // of the direction the current ray was sampled with; 0: a delta or the camera
   Ray ray = cameraRay;
+  // The camera's own sighting: what lies in front, past clear faces (their edges painted), and
+  // the paint and coverage that leaves over it.
+  auto firstPaint = [&](TraceResult seenFirst, float distance) {
+    seenFirst.color = paint.over(seenFirst.color);
+    if (seenFirst.alpha < 1.0f) seenFirst.alpha = paint.coverage + seenFirst.alpha * (1.0f - paint.coverage);
+    paint_.paintOutlines(queries_, cameraRay, distance, seenFirst, counters, nullptr);
+    return seenFirst;
+  };
   for (int bounce = 0;; ++bounce) {
     ++counters.rays;
-    const Sighting seen = queries_.firstSighting(ray, nullptr, bounce == 0);
+    const Sighting seen = bounce == 0 ? paint_.sightingPastClearFaces(queries_, ray, travelled, paint)
+                                      : queries_.firstSighting(ray, nullptr, false);
     const float directionLength = length(ray.direction);
     const Vec3 direction = ray.direction * (1.0f / directionLength);
+    if (bounce == 0 && paint.opaque()) return firstPaint(TraceResult{}, travelled);
     if (seen.kind == Sighting::Kind::kNothing) {
-      if (bounce == 0) {
-        result.color = missColor(direction);
-        paint_.paintOutlines(queries_, cameraRay, kInfinity, result, counters, nullptr);
-        return result;
-      }
+      if (bounce == 0) return firstPaint(TraceResult{missColor(direction), 0.0f}, kInfinity);
       radiance += throughput * escaped(ray.origin, direction, previousPdf);
       break;
     }
     const float distance = seen.t * directionLength;
     if (seen.kind == Sighting::Kind::kShadowCatcher) {
-      result.color = shadeShadowCatcher(ray.at(seen.t), direction, samples, counters, result.alpha);
-      paint_.paintOutlines(queries_, cameraRay, distance, result, counters, nullptr);
-      return result;
+      TraceResult caught;
+      caught.color = shadeShadowCatcher(ray.at(seen.t), direction, samples, counters, caught.alpha);
+      return firstPaint(caught, travelled + distance);
     }
     if (bounce == 0) {
       result.alpha = 1.0f;
-      firstDistance = distance;
+      firstDistance = travelled + distance;
     } else {
       radiance +=
           throughput * lightsAlongRay(scene_.appearance.lights, ray.origin, direction, distance, previousPdf);
@@ -171,8 +180,9 @@ TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, Trac
     if (!isCap) {
       media = queries_.crossingAt(seen.hit.face, surface.normalSign > 0.0f);
       if (bounce == 0) {
-        edge = paint_.coverageAt(ray, seen.hit, 0.0f, edgeColor);
-        if (edge >= 1.0f) break;
+        Vec3 edgeColor;
+        paint.add(std::min(paint_.coverageAt(ray, seen.hit, travelled, edgeColor), 1.0f), edgeColor);
+        if (paint.opaque()) break;
       }
       const Vec3 absorption = queries_.absorptionOf(media.from);
       if (maxComponent(absorption) > 0.0f) throughput *= beerLambert(absorption, distance);
@@ -187,6 +197,20 @@ TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, Trac
               : 1.0f;
       radiance += throughput * material.emission * weight;
     }
+    // The surface's albedo: the field's colour or the material's, with the isolines painted on it
+    // where the camera sees it first (as the edges are).
+    Vec3 albedo;
+    if (!fieldColorAt(scene_, surface, linearFieldColors_, albedo)) albedo = material.kd;
+    if (bounce == 0) {
+      Vec3 isolineColor;
+      const float isoline =
+          isolineCoverage(scene_, ray, surface, paint_.pixelSizeAt(travelled + distance), isolineColor);
+      if (isoline > 0.0f) albedo = albedo * (1.0f - isoline) + isolineColor * isoline;
+    }
+    if (unlitFace(scene_, surface.face)) {  // the colour as it is: no light, no bounce
+      radiance += throughput * albedo;
+      break;
+    }
     if (bounce >= maxBounces_) break;
 
     // The lobes: mirror and dielectric shares first (optics.hpp), the local lobe the rest.
@@ -200,10 +224,7 @@ TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, Trac
                                1.0f / material.ior, split.reflect, split.transmit);
       localWeight = split.local;
     }
-    Vec3 fieldColor;
-    const bool colored = fieldColorAt(scene_, surface, linearFieldColors_, fieldColor);
-    const LocalBsdf bsdf(colored ? fieldColor : material.kd, material.ks, material.shininess,
-                         surface.shadingNormal, -direction);
+    const LocalBsdf bsdf(albedo, material.ks, material.shininess, surface.shadingNormal, -direction);
     const float chanceLocal = bsdf.black() ? 0.0f : maxComponent(localWeight);
     const float chanceReflect = maxComponent(delta.reflect), chanceTransmit = delta.transmit;
     const float chances = chanceLocal + chanceReflect + chanceTransmit;
@@ -252,7 +273,7 @@ TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, Trac
       throughput = throughput * (1.0f / survive);
     }
   }
-  result.color = edge > 0.0f ? radiance * (1.0f - edge) + edgeColor * edge : radiance;
+  result.color = paint.over(radiance);
   paint_.paintOutlines(queries_, cameraRay, firstDistance, result, counters, nullptr);
   return result;
 }

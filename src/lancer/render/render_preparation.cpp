@@ -1,5 +1,6 @@
 #include "lancer/render/render_preparation.hpp"
 
+#include <algorithm>
 #include <type_traits>
 
 #include <fmt/format.h>
@@ -7,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "lancer/image/legend.hpp"
+#include "lancer/scene/flat_scene.hpp"
 #include "lancer/util/memory_budget.hpp"
 #include "lancer/util/stopwatch.hpp"
 
@@ -42,6 +45,25 @@ Accelerator buildAccelerator(const Scene& scene, AccelKind kind, int threads) {
   return Accelerator::build(scene.geometry.positions, scene.geometry.faces, kind, options);
 }
 
+namespace {
+
+// Legends drawn into the picture take their side of it: the automatic camera frames the scene in the
+// rest, so that they never cover it (a camera the scene places keeps its view: they overlay it).
+void frameBesideLegends(SceneDescription& description, const Scene& scene) {
+  CameraSettings& camera = description.camera;
+  if (!scene.fieldColors || camera.position || camera.gmshView) return;
+  const FieldColors& fields = *scene.fieldColors;
+  const RenderSettings& settings = description.render;
+  const int breadth = legendsBreadth(fields.legends, fields.legendPlacement, settings.width, settings.height);
+  constexpr double kMostShare = 0.6;  // a picture too small for its legends still shows the model
+  if (fields.legendPlacement == LegendPlacement::Right)
+    camera.legendShareRight = std::min(kMostShare, static_cast<double>(breadth) / settings.width);
+  else if (fields.legendPlacement == LegendPlacement::Bottom)
+    camera.legendShareBottom = std::min(kMostShare, static_cast<double>(breadth) / settings.height);
+}
+
+}  // namespace
+
 PreparedRender prepareRender(RenderRequest request) {
   const Stopwatch load;
   SceneDescription& description = request.description;
@@ -59,6 +81,10 @@ PreparedRender prepareRender(RenderRequest request) {
   else
     meshes = readSceneMeshes(description, request.threads, &stages);
   if (request.withMeshes) request.withMeshes(description, meshes);
+  // A flat scene nobody chose a view for: straight on; a look then lights it from that view.
+  const FlatSceneChoices choices{request.overrides.look.has_value(), request.overrides.shading.has_value()};
+  if (applyFlatSceneDefaults(description, meshes, choices) && request.overrides.look)
+    applyLookOverride(description, request.overrides);
   Scene scene;
   std::vector<Mesh> kept;
   if (request.keepMeshes) {
@@ -75,6 +101,7 @@ PreparedRender prepareRender(RenderRequest request) {
   const double buildSeconds = build.seconds();
   stages.add("accel build", buildSeconds);
 
+  frameBesideLegends(description, scene);
   Camera camera = makeCamera(description.camera, scene, description.render);
   return PreparedRender{std::move(description), std::move(scene), std::move(accelerator), camera,
                         std::move(stages),      loadSeconds,      buildSeconds,           std::move(kept)};

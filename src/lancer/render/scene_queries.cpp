@@ -44,6 +44,10 @@ SceneQueries::SceneQueries(const Scene& scene, const Accelerator& accelerator)
   for (const Material& material : scene.appearance.materials) {
     anyTransparent_ = anyTransparent_ || material.transparency > 0;
     splits_.push_back(energySplit(material));
+    const bool clear = splits_.back().transmit >= 1.0f && material.ior == 1.0f &&
+                       maxComponent(material.absorption) <= 0.0f && maxComponent(material.emission) <= 0.0f &&
+                       transmissionTint(material) == Vec3{1, 1, 1};
+    clear_.push_back(clear ? 1 : 0);
   }
 }
 

@@ -82,6 +82,10 @@ class SceneQueries {
   bool anyMeshClips() const { return anyMeshClips_; }
   const HitFilter& meshClipFilter() const { return meshClipFilter_; }
   const EnergySplit& splitOf(std::uint32_t material) const { return splits_[material]; }
+  // Whether `face` lets every ray through unbent and untinted (transparency 1, ior 1, no absorption:
+  // the surface the undeformed shape's edges are drawn on), so an integrator passes it as if it
+  // were not there but for the paint on it (pbrt-v4's interface material).
+  bool clearFace(std::uint32_t face) const { return clear_[scene_.appearance.faceMaterial[face]] != 0; }
 
   // The accelerator's closest-hit and any-hit queries, seeing through the faces that per-mesh clip
   // planes remove when the scene has such planes (the plain queries otherwise).
@@ -161,6 +165,7 @@ class SceneQueries {
   bool anyMeshClips_ = false;        // some mesh has planes of its own: use the clipped queries
   HitFilter meshClipFilter_;         // the hits those planes keep (FaceClipSets::keeps)
   std::vector<EnergySplit> splits_;  // per material
+  std::vector<std::uint8_t> clear_;  // per material: clearFace
 };
 
 }  // namespace lancer

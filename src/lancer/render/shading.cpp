@@ -6,7 +6,8 @@ namespace lancer {
 
 Vec3 shadingNormal(const Scene& scene, std::uint32_t face, const float cornerWeight[4],
                    const Vec3& geometricNormal, float normalSign) {
-  if (scene.appearance.faceShading[face] == ShadingMode::Flat) return geometricNormal;
+  const ShadingMode mode = scene.appearance.faceShading[face];
+  if (mode == ShadingMode::Flat || mode == ShadingMode::Unlit) return geometricNormal;
   Vec3 n{0, 0, 0};
   const auto& corners = scene.geometry.cornerNormals.faceCorner[face];
   for (int c = 0; c < scene.geometry.faces[face].cornerCount(); ++c)

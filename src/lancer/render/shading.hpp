@@ -2,7 +2,8 @@
 // how one light's response to the lighting model (lighting.hpp) is evaluated there.
 //   flat:    the face's own normal;
 //   Phong:   the corner normals interpolated at the point, the model evaluated there;
-//   Gouraud: the model evaluated at each corner with the corner's normal and view, interpolated.
+//   Gouraud: the model evaluated at each corner with the corner's normal and view, interpolated;
+//   unlit:   no model: the material's diffuse colour or the field's colour as it is (every integrator).
 // Shadows are per pixel in every mode: the tracer multiplies the response by what its shadow ray
 // lets through.
 #pragma once
@@ -14,6 +15,11 @@
 #include "lancer/scene/scene.hpp"
 
 namespace lancer {
+
+// Whether `face` shows its colour unlit (shading = "unlit"): no lights, no shadows.
+inline bool unlitFace(const Scene& scene, std::uint32_t face) {
+  return scene.appearance.faceShading[face] == ShadingMode::Unlit;
+}
 
 // The unit normal that `face` is shaded with at the point of corner weights `cornerWeight`, on the
 // side the ray arrived on (`geometricNormal` is the face normal turned to that side, `normalSign`

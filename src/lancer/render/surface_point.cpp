@@ -132,7 +132,8 @@ namespace {
 
 // Whether shading reads a point's corner weights on `face` (shading.cpp, field_shading.cpp).
 bool needsCornerWeights(const Scene& scene, std::uint32_t face) {
-  if (scene.appearance.faceShading[face] != ShadingMode::Flat) return true;
+  const ShadingMode mode = scene.appearance.faceShading[face];
+  if (mode != ShadingMode::Flat && mode != ShadingMode::Unlit) return true;
   if (!scene.fieldColors) return false;
   const std::uint8_t map = scene.fieldColors->faceColorMap[face];
   return map != 0 && (map & FieldColors::kPerFace) == 0;

@@ -59,6 +59,7 @@ Vec3 Tracer::shadeLocal(const Ray& ray, const SurfacePoint& surface, const Mater
   Vec3 fieldColor;
   const bool colored = fieldColorAt(scene_, surface, linearFieldColors_, fieldColor);
   const Vec3& kd = colored ? fieldColor : material.kd;
+  if (unlitFace(scene_, surface.face)) return kd;
   Vec3 color = scene_.appearance.ambient * (colored ? fieldColor : material.ka);
   const Vec3 toViewer = normalize(-ray.direction);
   const Vec3 shadowOrigin = offsetRayOrigin(surface.position, surface.positionError, surface.geometricNormal);

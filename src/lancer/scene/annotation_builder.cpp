@@ -120,7 +120,7 @@ void finishFieldColors(Scene& scene, std::optional<FieldColors> fields) {
 
 void appendLegendAndBands(FieldColors& fields, const ColorBy& spec, const FieldColoring& coloring,
                           std::size_t faceBase, std::size_t faceEnd) {
-  const std::string title = spec.title.value_or(spec.field);
+  const std::string title = spec.title.value_or(fieldTitle(spec.field, spec.component, coloring.components));
   auto same = [&](const LegendSpec& legend) {
     return legend.map == coloring.map && legend.low == coloring.low && legend.high == coloring.high &&
            legend.title == title && legend.units == spec.units && legend.bands == spec.bands &&
@@ -285,6 +285,19 @@ std::vector<Mesh> addArrowMeshes(SceneDescription& description, const std::vecto
       colorBy.map = instance.colorBy ? instance.colorBy->map : ColorMap{};  // linear: magnitudes reach 0
       colorBy.legend = instance.colorBy ? instance.colorBy->legend : std::nullopt;
       colorBy.where = spec.where;
+      colorBy.title = "|" + spec.field + "|";
+      // Arrows of the field the mesh is coloured by (its magnitude) share its colours, so its one
+      // legend: the same title, units, bands and range (and scale, with the range).
+      const ColorBy* surface = instance.colorBy ? &*instance.colorBy : nullptr;
+      if (surface && surface->field == spec.field && surface->component == FieldComponent{}) {
+        if (surface->title) colorBy.title = surface->title;
+        colorBy.units = surface->units;
+        colorBy.bands = surface->bands;
+        if (surface->range) {  // a log scale needs the range's low end above 0, which the mesh's has
+          colorBy.range = surface->range;
+          colorBy.scale = surface->scale;
+        }
+      }
       instance.colorBy = colorBy;
     }
     description.meshes.push_back(std::move(instance));

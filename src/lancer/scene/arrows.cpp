@@ -9,6 +9,7 @@
 
 #include "lancer/mesh/field_steps.hpp"
 #include "lancer/scene/color_by.hpp"
+#include "lancer/scene/render_limits.hpp"
 
 namespace lancer {
 namespace {
@@ -87,7 +88,7 @@ std::optional<ArrowSpec> readArrows(const std::string& file, const TomlTableRead
   if (!field) reader.failMissing("field", "field = \"velocity\" (a $NodeData view of 3 components)");
   spec.field = *field;
   if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
-  if (auto count = reader.integer("max_count", 1, 100'000)) spec.maxCount = static_cast<int>(*count);
+  if (auto count = reader.integer("max_count", 1, kMaxArrowCount)) spec.maxCount = static_cast<int>(*count);
   if (const toml::node* scale = reader.find("scale")) {
     if (!(scale->is_string() && scale->value<std::string>() == "auto")) {
       if (!scale->is_number())

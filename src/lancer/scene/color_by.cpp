@@ -18,9 +18,9 @@ namespace {
 void readLegendKeys(const TomlTableReader& reader, ColorBy& spec) {
   if (auto title = reader.text("title", kMaxDrawnText)) spec.title = *title;
   if (auto units = reader.text("units", kMaxDrawnText)) spec.units = *units;
-  if (auto bands = reader.integer("bands", 1, 256)) spec.bands = static_cast<int>(*bands);
-  constexpr std::array<std::string_view, 3> kPlacements = {"none", "right", "bottom"};
-  if (auto legend = reader.choice("legend", kPlacements)) spec.legend = static_cast<LegendPlacement>(*legend);
+  if (auto bands = reader.integer("bands", 1, kMaxBands)) spec.bands = static_cast<int>(*bands);
+  if (auto legend = reader.choice("legend", kLegendPlacementNames))
+    spec.legend = static_cast<LegendPlacement>(*legend);
 }
 
 constexpr std::string_view kListExample = R"(["#000080", "white", "#800000"])";
@@ -157,20 +157,45 @@ std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReade
     if (!array || array->size() != 2 || !number(0) || !number(1))
       reader.fail(*range, fmt::format("{} must be two finite numbers [min, max], found {}",
                                       reader.qualified("range"), describeValue(*range)));
-    if (!(*number(0) < *number(1)))
-      reader.fail(*range, fmt::format("{} must have min < max, found [{}, {}]", reader.qualified("range"),
-                                      *number(0), *number(1)));
-    if (spec.scale == ColorScale::Log && !(*number(0) > 0))
-      reader.fail(
-          *range,
-          fmt::format("{} must have min > 0 with scale = \"log\", found [{}, {}]: the low end is "
-                      "where the map starts (values below it, 0 and negative ones included, "
-                      "are drawn at it), e.g. [{:.3g}, {}]",
-                      reader.qualified("range"), *number(0), *number(1), *number(1) * 1e-3, *number(1)));
+    if (const std::string problem =
+            colorRangeProblem(reader.qualified("range"), *number(0), *number(1), spec.scale);
+        !problem.empty())
+      reader.fail(*range, problem);
     spec.range = std::pair{*number(0), *number(1)};
   }
   readLegendKeys(reader, spec);
   return spec;
+}
+
+std::string fieldTitle(const std::string& name, const FieldComponent& component, int components) {
+  if (components == 1) return name;
+  switch (component.kind) {
+    case FieldComponent::Kind::Magnitude:
+      return "|" + name + "|";
+    case FieldComponent::Kind::VonMises:
+      return name + " (von Mises)";
+    case FieldComponent::Kind::Index:
+      break;
+  }
+  static constexpr const char* kAxes[] = {"x", "y", "z"};
+  static constexpr const char* kTensor[] = {"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"};
+  const int i = component.index;
+  if (components == 3 && i >= 0 && i < 3) return fmt::format("{} ({})", name, kAxes[i]);
+  if (components == 9 && i >= 0 && i < 9) return fmt::format("{} ({})", name, kTensor[i]);
+  return fmt::format("{} (component {})", name, i);
+}
+
+std::string colorRangeProblem(std::string_view name, double low, double high, ColorScale scale) {
+  if (!std::isfinite(low) || !std::isfinite(high))
+    return fmt::format("{} must be two finite numbers, found {} and {}", name, low, high);
+  if (!(low < high)) return fmt::format("{} must have min < max, found [{}, {}]", name, low, high);
+  if (scale == ColorScale::Log && !(low > 0))
+    return fmt::format(
+        "{} must have min > 0 with scale = \"log\", found [{}, {}]: the low end is "
+        "where the map starts (values below it, 0 and negative ones included, "
+        "are drawn at it), e.g. [{:.3g}, {}]",
+        name, low, high, high * 1e-3, high);
+  return {};
 }
 
 const MeshField& findMeshField(std::string_view key, const std::string& name, int step, const Mesh& mesh,
@@ -263,6 +288,7 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
   FieldColoring coloring;
   coloring.map = spec.map;
   coloring.at = found->field->at;
+  coloring.components = found->field->components;
   std::pair<double, double> range;
   if (spec.range) {
     range = *spec.range;

@@ -21,6 +21,16 @@ namespace lancer {
 // The mesh table's `color_by`, if present (file: the scene file's path, for messages).
 std::optional<ColorBy> readColorBy(const std::string& file, const TomlTableReader& mesh);
 
+// Why [low, high] cannot be a colour range on `scale` (two finite numbers, low < high, low > 0 on a
+// log scale), in a message naming it `name` ("mesh[0].color_by.range", "--range"); empty when it
+// can. The scene file and the command line both ask it.
+std::string colorRangeProblem(std::string_view name, double low, double high,
+                              ColorScale scale = ColorScale::Linear);
+
+// A legend's title for `component` of the field `name` of `components` values, as a reader of the
+// picture says it: "T" for a scalar, "|b|" for a magnitude, "sigma (von Mises)", "u (x)", "sigma (xy)".
+std::string fieldTitle(const std::string& name, const FieldComponent& component, int components);
+
 // A field mapped for display: t = (scalar - low) / (high - low), clamped to [0, 1]; on a log scale
 // the scalar itself, placed on the map after interpolation (FieldMap, MapPosition). Vector fields
 // show spec.component (their magnitude by default). NaN where the file gives no value (not coloured).
@@ -28,6 +38,7 @@ struct FieldColoring {
   ColorMap map;
   ColorScale scale = ColorScale::Linear;
   FieldAt at = FieldAt::kNode;  // t per mesh vertex, per face or per face corner slot (MeshField's)
+  int components = 1;           // of the field's values: what its legend's title says of the component
   double low = 0;
   double high = 1;
   std::vector<float> t;

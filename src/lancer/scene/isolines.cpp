@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "lancer/scene/color_by.hpp"
+#include "lancer/scene/render_limits.hpp"
 
 namespace lancer {
 
@@ -25,7 +26,7 @@ std::optional<IsolineSpec> readIsolines(const std::string& file, const TomlTable
   spec.field = *field;
   if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
   if (auto component = readFieldComponent(reader)) spec.component = *component;
-  if (auto count = reader.integer("count", 1, 1000)) spec.count = static_cast<int>(*count);
+  if (auto count = reader.integer("count", 1, kMaxIsolineCount)) spec.count = static_cast<int>(*count);
   if (const toml::node* values = reader.find("values")) {
     const auto* array = values->as_array();
     if (!array || array->empty() || array->size() > 1000)

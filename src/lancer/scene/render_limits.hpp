@@ -28,16 +28,24 @@ inline constexpr std::size_t kMaxDrawnText = 200;
 // The width or precision a label's format may ask for ({time:12.6g}).
 inline constexpr std::uint64_t kMaxLabelFormatNumber = 64;
 
+// Annotations (docs/annotations.md): colour bands, isolines and arrows per mesh.
+inline constexpr int kMaxBands = 256;
+inline constexpr int kMaxIsolineCount = 1000;
+inline constexpr int kMaxArrowCount = 100'000;
+
 // In the order of the enums they name (checked below).
-inline constexpr std::array<std::string_view, 3> kShadingNames = {"flat", "gouraud", "phong"};
+inline constexpr std::array<std::string_view, 4> kShadingNames = {"flat", "gouraud", "phong", "unlit"};
 inline constexpr std::array<std::string_view, 2> kProjectionNames = {"perspective", "orthographic"};
 inline constexpr std::array<std::string_view, 3> kSamplerNames = {"regular", "stratified", "adaptive"};
 inline constexpr std::array<std::string_view, 3> kIntegratorNames = {"whitted", "path", "ao"};
+inline constexpr std::array<std::string_view, 3> kLegendPlacementNames = {"none", "right", "bottom"};
 inline constexpr std::array<std::string_view, 5> kLightTypeNames = {"point", "sun", "sphere", "rect", "disk"};
 static_assert(kIntegratorNames[static_cast<int>(IntegratorKind::AmbientOcclusion)] == "ao");
 static_assert(kLightTypeNames[static_cast<int>(LightType::Disk)] == "disk");
 static_assert(kShadingNames[static_cast<int>(ShadingMode::Gouraud)] == "gouraud" &&
-              kShadingNames[static_cast<int>(ShadingMode::Phong)] == "phong");
+              kShadingNames[static_cast<int>(ShadingMode::Phong)] == "phong" &&
+              kShadingNames[static_cast<int>(ShadingMode::Unlit)] == "unlit");
+static_assert(kLegendPlacementNames[static_cast<int>(LegendPlacement::Bottom)] == "bottom");
 static_assert(kProjectionNames[static_cast<int>(Projection::Orthographic)] == "orthographic");
 static_assert(kSamplerNames[static_cast<int>(SamplerKind::Stratified)] == "stratified" &&
               kSamplerNames[static_cast<int>(SamplerKind::Adaptive)] == "adaptive");

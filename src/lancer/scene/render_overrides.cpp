@@ -4,9 +4,95 @@
 
 #include <cmath>
 
+#include "lancer/scene/color_by.hpp"
 #include "lancer/scene/quick_look.hpp"
+#include "lancer/scene/render_limits.hpp"
 
 namespace lancer {
+namespace {
+
+// The meshes coloured by a field, which `option` (a colour range, legend, isolines, bands) goes on;
+// an error at the option when there is none.
+std::vector<MeshInstance*> colouredMeshes(SceneDescription& description, const std::string& option) {
+  std::vector<MeshInstance*> coloured;
+  for (MeshInstance& mesh : description.meshes)
+    if (mesh.colorBy) coloured.push_back(&mesh);
+  if (coloured.empty())
+    throw InputError(
+        SourceLocation{option},
+        fmt::format("{} goes with a field's colours, and no mesh is coloured: add --color-by FIELD "
+                    "(or color_by = {{ field = \"...\" }} in the scene's [[mesh]])",
+                    option));
+  return coloured;
+}
+
+std::string vectorText(const Vec3d& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }
+
+// A count of `option` in [1, most].
+int checkedCount(int count, int most, const std::string& option, const char* what) {
+  if (count < 1 || count > most)
+    throw InputError(SourceLocation{option},
+                     fmt::format("{} {} is not a number of {} from 1 to {}", option, count, what, most));
+  return count;
+}
+
+void applyAnnotationOverrides(SceneDescription& description, const RenderOverrides& overrides) {
+  const auto name = [&](const char* option) { return overrides.optionPrefix + option; };
+  if (overrides.range) {
+    const auto [low, high] = *overrides.range;
+    for (MeshInstance* mesh : colouredMeshes(description, name("range"))) {
+      if (const std::string problem = colorRangeProblem(name("range"), low, high, mesh->colorBy->scale);
+          !problem.empty())
+        throw InputError(SourceLocation{name("range")}, problem);
+      mesh->colorBy->range = *overrides.range;
+      mesh->colorBy->perStepRange = false;
+    }
+  }
+  if (overrides.legend) {
+    if (*overrides.legend == LegendPlacement::None) {
+      for (MeshInstance& mesh : description.meshes)
+        if (mesh.colorBy) mesh.colorBy->legend = LegendPlacement::None;
+    } else {
+      for (MeshInstance* mesh : colouredMeshes(description, name("legend")))
+        mesh->colorBy->legend = overrides.legend;
+    }
+  }
+  if (overrides.bands) {
+    const int bands = checkedCount(*overrides.bands, kMaxBands, name("bands"), "colour bands");
+    for (MeshInstance* mesh : colouredMeshes(description, name("bands"))) mesh->colorBy->bands = bands;
+  }
+  if (overrides.isolines) {
+    const int count = checkedCount(*overrides.isolines, kMaxIsolineCount, name("isolines"), "isolines");
+    for (MeshInstance* mesh : colouredMeshes(description, name("isolines"))) {
+      // The lines of the field the mesh is coloured by, as gmsh's iso-values of a view.
+      IsolineSpec lines;
+      lines.field = mesh->colorBy->field;
+      lines.component = mesh->colorBy->component;
+      lines.step = mesh->colorBy->step;
+      lines.count = count;
+      lines.where = SourceLocation{name("isolines")};
+      mesh->isolines = lines;
+    }
+  }
+  if (!overrides.arrows.empty())
+    for (MeshInstance& mesh : description.meshes) {
+      ArrowSpec arrows;
+      arrows.field = overrides.arrows;
+      arrows.where = SourceLocation{name("arrows")};
+      mesh.arrows = arrows;
+    }
+  for (ClipSettings clip : overrides.clips) {
+    if (!isFinite(clip.point) || !isFinite(clip.normal) || length(clip.normal) == 0)
+      throw InputError(SourceLocation{name("clip")},
+                       fmt::format("a cutting plane needs a finite point and a normal other than [0, 0, 0], "
+                                   "found point {} normal {}",
+                                   vectorText(clip.point), vectorText(clip.normal)));
+    clip.normal = normalize(clip.normal);
+    description.clips.push_back(clip);
+  }
+}
+
+}  // namespace
 
 void applyRenderOverrides(SceneDescription& description, const RenderOverrides& overrides,
                           const Mesh* quickLookMesh) {
@@ -30,12 +116,7 @@ void applyRenderOverrides(SceneDescription& description, const RenderOverrides& 
   if (overrides.edges)
     for (MeshInstance& mesh : description.meshes)
       if (!mesh.edges) mesh.edges = EdgeSettings{};
-  if (overrides.look) {
-    applyLook(description, *overrides.look);
-    if (overrides.samples) settings.samples = *overrides.samples;
-    if (overrides.noise) settings.noise = *overrides.noise;
-    if (overrides.integrator) settings.integrator = *overrides.integrator;
-  }
+  applyLookOverride(description, overrides);
   // The Whitted model's grids need a square count; path and AO take any.
   const int root = static_cast<int>(std::lround(std::sqrt(settings.samples)));
   if (settings.integrator == IntegratorKind::Whitted && settings.sampler != SamplerKind::Adaptive &&
@@ -44,10 +125,20 @@ void applyRenderOverrides(SceneDescription& description, const RenderOverrides& 
         SourceLocation{overrides.samplesName},
         fmt::format("{} samples cannot form an n x n grid: use a perfect square (1, 4, 9, 16, ...)",
                     settings.samples));
+  applyAnnotationOverrides(description, overrides);
   if (overrides.shading) {
     settings.shading = *overrides.shading;
     for (MeshInstance& mesh : description.meshes) mesh.shading.reset();
   }
+}
+
+void applyLookOverride(SceneDescription& description, const RenderOverrides& overrides) {
+  if (!overrides.look) return;
+  RenderSettings& settings = description.render;
+  applyLook(description, *overrides.look);
+  if (overrides.samples) settings.samples = *overrides.samples;
+  if (overrides.noise) settings.noise = *overrides.noise;
+  if (overrides.integrator) settings.integrator = *overrides.integrator;
 }
 
 }  // namespace lancer

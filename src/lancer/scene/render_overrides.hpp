@@ -4,6 +4,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "lancer/mesh/mesh.hpp"
 #include "lancer/scene/looks.hpp"
@@ -27,14 +29,30 @@ struct RenderOverrides {
   std::optional<Look> look;    // applied last (applyLook); the overrides above win over its defaults
   std::optional<bool> transparentBackground;
   bool edges = false;  // draw element edges on every mesh that does not set its own
+  // Annotations (docs/annotations.md) for every mesh, checked here whoever set them: the colour
+  // range and legend, isolines and bands of each field-coloured mesh (the lines follow its own
+  // field), arrows of a vector field, and cut planes after the scene's own.
+  std::optional<std::pair<double, double>> range;
+  std::optional<LegendPlacement> legend;
+  std::optional<int> isolines, bands;
+  std::string arrows;
+  std::vector<ClipSettings> clips;
+  // How the front end spells its options before their names ("--range"), for messages.
+  std::string optionPrefix = "--";
   // Names the samples check's messages give the value (the CLI's "--samples", Python's "samples").
   std::string samplesName = "--samples";
 };
 
 // Applies `overrides` to `description`. `quickLookMesh`: the mesh of a quick-look scene
 // (quickLookScene), whose lights are placed again when the image size changes. Throws InputError for
-// a sample count the sampler cannot use.
+// a sample count the sampler cannot use, and for an annotation that is out of range or has no
+// field-coloured mesh to go on, at the option's name.
 void applyRenderOverrides(SceneDescription& description, const RenderOverrides& overrides,
                           const Mesh* quickLookMesh = nullptr);
+
+// The look of `overrides` (if any) over the description, with the samples, noise and integrator the
+// caller gave winning over its defaults: applied again when the automatic camera turns after the
+// meshes are read (a flat scene seen straight on), since the look's lights follow the camera.
+void applyLookOverride(SceneDescription& description, const RenderOverrides& overrides);
 
 }  // namespace lancer

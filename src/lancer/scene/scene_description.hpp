@@ -16,7 +16,9 @@
 namespace lancer {
 
 enum class Projection { Perspective, Orthographic };
-enum class ShadingMode { Flat, Gouraud, Phong };
+// flat, gouraud, phong: the lighting model (docs/rendering.md); unlit: the material's diffuse colour
+// or the field's colour as it is, no lights, no shadows (a colour map that reads as its legend).
+enum class ShadingMode { Flat, Gouraud, Phong, Unlit };
 enum class SamplerKind { Regular, Stratified, Adaptive };
 // How light is carried (docs/lighting.md): the brief's Whitted model, unidirectional path tracing,
 // or ambient occlusion.
@@ -60,8 +62,19 @@ struct CameraSettings {
   Vec3d viewFrom{0.9, 0.65, 1.3};
   double fovDegrees = 40;            // vertical, perspective
   std::optional<double> viewHeight;  // world units, orthographic; default frames the scene
-  // Perspective: the view window's centre off the view axis, in tan units (gmsh's perspective).
+  // The view window's centre off the view axis: in tan units for a perspective camera (gmsh's
+  // perspective), in world units for an orthographic one.
   double shiftX = 0, shiftY = 0;
+  // Set when the scene or the caller chose the view (`position`, `up`, `up_axis`, `projection`,
+  // `--up`, a Python Camera): the automatic camera then keeps the direction and projection given.
+  // Otherwise a flat scene is seen straight on, orthographic, filling the picture (frameFlatScene).
+  bool viewChosen = false;
+  // The automatic camera fits the scene's bounding box as seen along the view (a flat scene
+  // straight on) instead of its bounding sphere.
+  bool fitBox = false;
+  // The share of the image's width at the right and of its height at the bottom that the legends
+  // take: the automatic camera frames the scene in the rest (a placed camera ignores them).
+  double legendShareRight = 0, legendShareBottom = 0;
   // `[camera] gmsh_view`, `--gmsh-view`: the view of a gmsh options file, resolved against the scene's
   // bounds when the camera is made (resolveGmshView); it replaces every key above.
   std::optional<GmshView> gmshView;

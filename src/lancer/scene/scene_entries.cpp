@@ -23,9 +23,11 @@ MeshInstance undeformedInstance(const MeshInstance& warped, std::vector<Material
   copy.undeformed = UndeformedStyle::None;
   Material material;
   material.name = "undeformed";
-  material.ka = material.kd = {0.8f, 0.8f, 0.85f};
+  // Edges are lines on a surface that lets every ray through untinted (no shadow of its own).
+  const bool ghost = warped.undeformed == UndeformedStyle::Ghost;
+  material.ka = material.kd = ghost ? Vec3{0.8f, 0.8f, 0.85f} : Vec3{1, 1, 1};
   material.ks = {0, 0, 0};
-  material.transparency = warped.undeformed == UndeformedStyle::Ghost ? 0.8f : 1.0f;
+  material.transparency = ghost ? 0.8f : 1.0f;
   material.ior = 1;
   materials.push_back(material);
   copy.material = static_cast<int>(materials.size() - 1);

@@ -228,6 +228,9 @@ CameraSettings readCamera(const SceneFile& file, const toml::table& table) {
   if (auto fov = reader.number("fov", NumberRange::strictlyBetween(0, 180))) camera.fovDegrees = *fov;
   camera.viewHeight = reader.number("view_height", NumberRange::above(0));
   checkCameraFrame(reader, camera);
+  // A view the file chose: a flat scene is then not turned straight on (frameFlatScene).
+  for (const std::string_view key : {"position", "up", "up_axis", "projection"})
+    if (reader.find(key)) camera.viewChosen = true;
   // gmsh_view: the view saved by gmsh (File > Save Model Options), which sets the whole camera.
   if (auto gmshView = reader.string("gmsh_view")) {
     for (const std::string_view key :

@@ -66,6 +66,25 @@ void applyUpAxis(CameraSettings& camera, UpAxis axis) {
   const ViewFrame frame = threeQuarterFrame(axis);
   camera.up = frame.up;
   camera.viewFrom = frame.toViewer;
+  camera.viewChosen = true;
+}
+
+std::optional<PlanarView> planarView(const Vec3d& extent) {
+  const double largest = std::max({extent.x, extent.y, extent.z});
+  if (!(largest > 0)) return std::nullopt;
+  const double extents[3] = {extent.x, extent.y, extent.z};
+  for (int axis : kPreference) {
+    if (extents[axis] > kPlanarExtent * largest) continue;
+    static constexpr UpAxis kScreenUp[3] = {UpAxis::Z, UpAxis::MinusZ, UpAxis::Y};
+    PlanarView view;
+    view.up = kScreenUp[axis];
+    view.axis = axis;
+    view.frame.up = upVector(view.up);
+    view.frame.toViewer = kAxes[axis];
+    view.frame.right = cross(-view.frame.toViewer, view.frame.up);
+    return view;
+  }
+  return std::nullopt;
 }
 
 UpGuess guessUpAxis(const Mesh& mesh) {
@@ -84,15 +103,11 @@ UpGuess guessUpAxis(const Mesh& mesh) {
   }
   // 1. Planar: straight on, from the + side of the plane's axis.
   const double extents[3] = {extent.x, extent.y, extent.z};
-  for (int axis : kPreference) {
-    if (extents[axis] > kPlanarExtent * largest) continue;
-    static constexpr UpAxis kScreenUp[3] = {UpAxis::Z, UpAxis::MinusZ, UpAxis::Y};
-    guess.up = kScreenUp[axis];
-    guess.frame.up = upVector(guess.up);
-    guess.frame.toViewer = kAxes[axis];
-    guess.frame.right = cross(-guess.frame.toViewer, guess.frame.up);
+  if (const std::optional<PlanarView> view = planarView(extent)) {
+    guess.up = view->up;
+    guess.frame = view->frame;
     guess.planar = true;
-    guess.reason = axis == 0 ? "planar in x" : (axis == 1 ? "planar in y" : "planar in z");
+    guess.reason = view->axis == 0 ? "planar in x" : (view->axis == 1 ? "planar in y" : "planar in z");
     return guess;
   }
   // 2. Base area: faces lying flat on the box's sides across each axis.

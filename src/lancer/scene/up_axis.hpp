@@ -31,8 +31,19 @@ struct ViewFrame {
 // has always used (right = +x, front = +z); z up looks from +x, -y, +z (CAD's front-right iso view).
 ViewFrame threeQuarterFrame(UpAxis axis);
 
-// Sets the automatic camera's up and 3/4 view direction (camera.viewFrom) for `axis`.
+// Sets the automatic camera's up and 3/4 view direction (camera.viewFrom) for `axis`: a view chosen,
+// so a flat scene keeps it (camera.viewChosen).
 void applyUpAxis(CameraSettings& camera, UpAxis axis);
+
+// Rule 1 below, for any bounds of this extent: a flat box (one extent at most 1e-6 of the largest,
+// as gmsh's 2D models) is seen straight on from the + side of that axis (index 0, 1, 2); nothing for
+// a box with depth (or no extent at all).
+struct PlanarView {
+  ViewFrame frame;
+  UpAxis up = UpAxis::Y;  // the screen's up
+  int axis = 2;           // the plane's normal
+};
+std::optional<PlanarView> planarView(const Vec3d& extent);
 
 // What the quick look makes of a bare mesh (README "Quick look"):
 //  1. planar (one extent at most 1e-6 of the largest: gmsh's 2D models in the XY plane) -> seen straight
