@@ -73,7 +73,8 @@ TEST(ColorMap, PerceptuallyUniformMapsGetLighterEverywhere) {
   // Entry by entry L* never falls by more than the 8-bit rounding can make it (0.2); over every
   // eight entries (1/32 of the map) it rises.
   for (const char* name : {"viridis", "plasma", "inferno", "magma", "cividis", "gray", "Greys_r"}) {
-    const std::span<const Vec3> colors = named(name).colors();
+    const ColorMap map = named(name);  // the span is its table's: the map must outlive it
+    const std::span<const Vec3> colors = map.colors();
     for (std::size_t i = 1; i < colors.size(); ++i) {
       EXPECT_GT(lightness(colors[i]), lightness(colors[i - 1]) - 0.2f) << name << " at " << i;
       if (i >= 8) EXPECT_GT(lightness(colors[i]), lightness(colors[i - 8])) << name << " at " << i;
