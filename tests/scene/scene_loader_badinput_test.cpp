@@ -263,13 +263,16 @@ TEST(SceneLoaderBadInput, GroupsNotATable) {
 TEST(SceneLoaderBadInput, MisspeltShading) {
   EXPECT_EQ(
       sceneErrorOf("[render]\nshading = \"phnog\"\n"),
-      "scene.toml:2:11: error: render.shading must be \"flat\", \"gouraud\" or \"phong\", found \"phnog\" "
+      "scene.toml:2:11: error: render.shading must be \"flat\", \"gouraud\", \"phong\" or \"unlit\", found "
+      "\"phnog\" "
       "(did you mean 'phong'?)");
-  EXPECT_TRUE(failsAt("[[mesh]]\nfile = \"a.msh\"\nshading = \"smooth\"\n", "3:11",
-                      "mesh[0].shading must be \"flat\", \"gouraud\" or \"phong\", found \"smooth\""));
+  EXPECT_TRUE(
+      failsAt("[[mesh]]\nfile = \"a.msh\"\nshading = \"smooth\"\n", "3:11",
+              "mesh[0].shading must be \"flat\", \"gouraud\", \"phong\" or \"unlit\", found \"smooth\""));
   EXPECT_TRUE(
       failsAt("[render]\nshading = 1\n", "2:11",
-              "render.shading must be the string \"flat\", \"gouraud\" or \"phong\", found integer 1"));
+              "render.shading must be the string \"flat\", \"gouraud\", \"phong\" or \"unlit\", found "
+              "integer 1"));
 }
 
 TEST(SceneLoaderBadInput, UnknownSampler) {
