@@ -39,8 +39,8 @@ class MshMeshAssembler {
   };
   std::vector<ElementNodeField> elementNodeFields;
   // Set before the elements are read when the file has $ElementData or $ElementNodeData (reader.cpp
-  // reads such a file again): faces then remember their element's tag and where each of their
-  // corners is among the element's nodes (16 bytes per face, only for such files).
+  // says when): faces then remember their element's tag and where each of their corners is among
+  // the element's nodes (16 bytes per face, only for such files).
   void trackElements() { trackElements_ = true; }
   bool tracksElements() const { return trackElements_; }
   // An MSH 2 copy of an element (one per further physical group) that was skipped: $ElementData
@@ -157,7 +157,7 @@ class MshMeshAssembler {
   std::vector<std::pair<std::uint64_t, std::uint64_t>> elementAliases_;  // (copy, kept), when tracking
   std::vector<std::uint64_t> volumeFaceElement_;                         // per volume face, when tracking
   // When tracking: per face, the position of each corner among its element's nodes (the order of
-  // $ElementNodeData values; kNoElementNode for a centre lancer adds), and per volume face the
+  // $ElementNodeData values; kAddedCentre for a centre lancer adds), and per volume face the
   // positions of its corner, mid and centre nodes (MshVolumeFace's order). While faces are added,
   // the nodes of the element at hand: elementNodes_ for a surface element, else volumeFaceNodes_.
   std::vector<MshCornerNodes> faceCornerNode_;
