@@ -270,7 +270,7 @@ void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides) {
       ->group(kLookGroup);
   command
       .add_option("--integrator", overrides.integrator,
-                  "How light is carried: whitted (the default, the brief's model), path (path tracing) or ao "
+                  "How light is carried: whitted (the default, the classic model), path (path tracing) or ao "
                   "(ambient occlusion); see docs/lighting.md")
       ->check(CLI::IsMember(choices(kIntegratorNames)))
       ->group(kLookGroup);

@@ -26,7 +26,7 @@ struct SceneOverrides {
   std::string accel{kDefaultAccelName};
   int threads = 0;
   bool srgb = false;    // --srgb: the default encoding, over a scene's encoding = "linear"
-  bool linear = false;  // --linear: the brief's raw values (round(255 * I))
+  bool linear = false;  // --linear: the raw values (round(255 * I))
   std::string toneMap;  // --tonemap none | filmic | aces
   std::optional<double> exposure;
   std::optional<int> bitDepth;

@@ -1,4 +1,4 @@
-// What `lancer render` writes: sRGB-encoded by default (the PNG says so), --linear keeps the brief's
+// What `lancer render` writes: sRGB-encoded by default (the PNG says so), --linear keeps the
 // raw values, 16-bit PNG, OpenEXR with its layers (the radiance the library renders, to the bit),
 // tone curves and the denoiser from the command line.
 #include <gtest/gtest.h>

@@ -43,7 +43,7 @@ TEST_P(PacketRenderIdentity, PacketsAndSingleRaysRenderTheSameBytes) {
   EXPECT_EQ(singleStats.samplesPerPixel, packetStats.samplesPerPixel);
   EXPECT_EQ(test::differingPixels(single, render(description, scene, accelerator, true, 3)), 0)
       << "3 threads";
-  // Every accelerator renders the example's bytes (the BVH is the default, the kd-tree the seed's).
+  // Every accelerator renders the example's bytes (the BVH is the default, the kd-tree the original one).
   const Accelerator kdTree =
       Accelerator::build(scene.geometry.positions, scene.geometry.faces, AccelKind::KdTreeSah);
   EXPECT_EQ(test::differingPixels(single, render(description, scene, kdTree, true, 2)), 0)

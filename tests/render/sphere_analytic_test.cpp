@@ -1,4 +1,4 @@
-// The brief's lighting model on a gmsh sphere against the exact sphere: an orthographic view, one
+// The Whitted lighting model on a gmsh sphere against the exact sphere: an orthographic view, one
 // light, ambient + diffuse. With Phong shading every pixel inside the silhouette must be within a
 // few 1/255 of the closed form; flat shading must be visibly further off (the test can fail).
 #include <gtest/gtest.h>

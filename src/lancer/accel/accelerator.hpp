@@ -1,6 +1,6 @@
 // The accelerator the renderer holds, chosen by name (`--accel`), behind one value type with no
 // virtual call per ray. accel/README.md maps the folder: bvh/ the default, naive_accel.hpp the
-// reference, kd_tree.hpp and kd/ the seed's kd-tree kept selectable.
+// reference, kd_tree.hpp and kd/ the original kd-tree kept selectable.
 #pragma once
 
 #include <array>

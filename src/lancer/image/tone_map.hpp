@@ -11,7 +11,7 @@
 namespace lancer {
 
 enum class ToneMap {
-  None,    // clamp at 1 when encoded: the brief's values
+  None,    // clamp at 1 when encoded: the raw values
   Filmic,  // John Hable's Uncharted 2 curve, white point 11.2
   Aces,    // Krzysztof Narkowicz's fit of the ACES reference rendering transform
 };

@@ -20,7 +20,7 @@ enum class Projection { Perspective, Orthographic };
 // or the field's colour as it is, no lights, no shadows (a colour map that reads as its legend).
 enum class ShadingMode { Flat, Gouraud, Phong, Unlit };
 enum class SamplerKind { Regular, Stratified, Adaptive };
-// How light is carried (docs/lighting.md): the brief's Whitted model, unidirectional path tracing,
+// How light is carried (docs/lighting.md): the classic Whitted model, unidirectional path tracing,
 // or ambient occlusion.
 enum class IntegratorKind { Whitted, Path, AmbientOcclusion };
 
@@ -42,7 +42,7 @@ struct RenderSettings {
   bool transparentBackground = false;  // background = "transparent": PNG with alpha
   std::string output;                  // resolved against the scene file's folder; may be empty
   // How the radiance becomes a picture (docs/output.md): `encoding = "srgb"` (the default) or
-  // "linear" (the brief's raw values, round(255 * clamp(I, 0, 1))), after `exposure` (stops) and
+  // "linear" (the raw values, round(255 * clamp(I, 0, 1))), after `exposure` (stops) and
   // `tonemap`; 8 or 16 bits per sample (16: PNG only); `denoise` filters the radiance first.
   bool srgb = true;
   ToneMap toneMap = ToneMap::None;
