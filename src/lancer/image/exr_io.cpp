@@ -156,7 +156,7 @@ void checkPixelsFitTheFile(const std::string& path, const Imf::Header& header, i
   const std::uint64_t fileBytes = std::filesystem::file_size(path, error);
   if (error) return;  // OpenEXR opened it: it will say what is wrong
   if (!header.hasTileDescription()) {
-    const Imath::Box2i window = header.dataWindow();
+    const Imath::Box2i& window = header.dataWindow();
     checkExrScanLineChunks(
         path, fileBytes,
         {window.min.y, height, static_cast<std::int64_t>(linesPerChunk(header.compression())),

@@ -6,19 +6,19 @@ namespace lancer {
 namespace {
 
 struct Shape {
-  char letter;
   const char* name;
   int dimension;
   int firstOrderType, firstOrderNodes;
   int secondOrderType, secondOrderNodes;  // 0: none (a point has no second order)
+  char letter;
 };
 
 // gmsh's MSH element types and node counts (gmsh reference manual, "MSH file format", element types).
 constexpr Shape kShapes[] = {
-    {'P', "point", 0, 15, 1, 0, 0},        {'L', "line", 1, 1, 2, 8, 3},
-    {'T', "triangle", 2, 2, 3, 9, 6},      {'Q', "quadrangle", 2, 3, 4, 10, 9},
-    {'S', "tetrahedron", 3, 4, 4, 11, 10}, {'H', "hexahedron", 3, 5, 8, 12, 27},
-    {'I', "prism", 3, 6, 6, 13, 18},       {'Y', "pyramid", 3, 7, 5, 14, 14},
+    {"point", 0, 15, 1, 0, 0, 'P'},        {"line", 1, 1, 2, 8, 3, 'L'},
+    {"triangle", 2, 2, 3, 9, 6, 'T'},      {"quadrangle", 2, 3, 4, 10, 9, 'Q'},
+    {"tetrahedron", 3, 4, 4, 11, 10, 'S'}, {"hexahedron", 3, 5, 8, 12, 27, 'H'},
+    {"prism", 3, 6, 6, 13, 18, 'I'},       {"pyramid", 3, 7, 5, 14, 14, 'Y'},
 };
 
 }  // namespace
