@@ -20,5 +20,6 @@ void addInfoCommand(CLI::App& app, CommandRunner& runner);
 void addRenderCommand(CLI::App& app, CommandRunner& runner);
 void addAnimateCommand(CLI::App& app, CommandRunner& runner);
 void addAssembleCommand(CLI::App& app, CommandRunner& runner);
+void addProbeCommand(CLI::App& app, CommandRunner& runner);
 
 }  // namespace lancer::cli

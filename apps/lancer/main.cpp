@@ -72,6 +72,7 @@ int main(int argc, char** argv) {
   addRenderCommand(app, runner);
   addAnimateCommand(app, runner);
   addAssembleCommand(app, runner);
+  addProbeCommand(app, runner);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -6,11 +6,13 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "lancer/mesh/mesh.hpp"
+#include "lancer/mesh/volume/volume_mesh.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
@@ -29,6 +31,16 @@ Mesh readMsh(const std::string& path, int threads, std::uint64_t residentFieldBy
 // LANCER_STEP_MEMORY_MB megabytes. Throws InputError when that variable is not a number.
 inline constexpr std::uint64_t kDefaultResidentFieldBytes = std::uint64_t{64} << 20;
 std::uint64_t defaultResidentFieldBytes();
+
+// The mesh and its volume elements with the fields inside them (mesh/volume/volume_mesh.hpp), for
+// slices, isosurfaces, field lines and probes. The volume is empty when the file has no volume
+// elements; a list-based .pos view gives none (its elements are read as the mesh). Every step is
+// kept in memory.
+struct MeshWithVolume {
+  Mesh mesh;
+  std::shared_ptr<const VolumeMesh> volume;
+};
+MeshWithVolume readMshWithVolume(const std::string& path, int threads = 0);
 
 // The same from bytes in memory (tests, fuzzing); nameForErrors is the file name errors show.
 Mesh readMshFromMemory(std::span<const char> bytes, const std::string& nameForErrors, int threads = 0);

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -42,6 +43,8 @@ struct MshFieldMapping {
   std::vector<std::uint64_t> faceElement;      // per mesh face, its element's tag (aliases resolved)
   std::vector<MshCornerNodes> faceCornerNode;  // per mesh face, where its corners are in its element
   std::vector<std::pair<std::uint64_t, std::uint64_t>> elementAliases;  // sorted (copy, kept)
+  // Set when the caller asked for the volume: each section's values go there too.
+  std::shared_ptr<class MshVolumeCapture> volume;
   std::uint64_t minElementTag = UINT64_MAX;
   std::uint64_t maxElementTag = 0;
 };

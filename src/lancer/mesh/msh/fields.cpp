@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "lancer/mesh/msh/element_types.hpp"
+#include "lancer/mesh/msh/volume_capture.hpp"
 
 namespace lancer {
 namespace {
@@ -189,6 +190,7 @@ void readNodeRecords(MshCursor& cursor, const MshFieldSection& section, const Ms
                     "first: node {}); they were dropped and the other {} kept",
                     field.name, dropped, dropped == 1 ? "" : "s", static_cast<std::int64_t>(firstDropped),
                     section.count - dropped)));
+  if (mapping.volume) mapping.volume->addNodeField(field, field.values);
   remapNodeValues(field.values, field.components, mapping.usedNode, mapping.usedCount,
                   mapping.nodes.taggedCount(), mapping.derivedSources);
 }
@@ -238,6 +240,7 @@ void readElementRecords(MshCursor& cursor, const MshFieldSection& section, const
       values.push_back(readFieldValue(cursor, binary, "$ElementData", field.name, "element", tag));
   }
   dropped.warn(cursor, "$ElementData", field.name, section.count, warnings);
+  if (mapping.volume) mapping.volume->addElementField(field, tags, values);
   field.values = mapElementValues(std::move(tags), values, field.components, mapping.faceElement,
                                   mapping.elementAliases);
 }
@@ -269,6 +272,7 @@ void readElementNodeRecords(MshCursor& cursor, const MshFieldSection& section, c
           readFieldValue(cursor, binary, "$ElementNodeData", field.name, "element", tag));
   }
   dropped.warn(cursor, "$ElementNodeData", field.name, section.count, warnings);
+  if (mapping.volume) mapping.volume->addElementNodeField(field, records);
   field.values = mapElementNodeValues(std::move(records), field.components, mapping.faceElement,
                                       mapping.faceCornerNode, mapping.elementAliases);
 }

@@ -13,6 +13,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace lancer {
 namespace {
@@ -161,6 +162,10 @@ void MshMeshAssembler::recordCornerNodes() {
 }
 
 void MshMeshAssembler::addVolumeElement(int type, const std::uint32_t* n) {
+  if (volumeCapture_) {
+    if (const std::optional<CellShape> shape = mshVolumeShape(type))
+      volumeCapture_->addCell(*shape, n, element_, physical_, entity_);
+  }
   const std::size_t first = volumeFaces_.size();
   appendVolumeElementFaces(type, n, group_, volumeFaces_);
   if (volumeGroups_.empty() || volumeGroups_.back() != group_) volumeGroups_.push_back(group_);
@@ -424,6 +429,7 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   parallelFor(coords.size(), threads_, kNodeGrain, [&](std::size_t i) {
     if (identity || usedNode[i]) mesh.positions[identity ? i : remap[i]] = toFloat(coords[i] - mesh.origin);
   });
+  if (volumeCapture_) volumeCapture_->finishCells(coords, mesh.origin);
 
   // Drop the faces that are degenerate as the renderer will see them (isDegenerateFace, face_geometry.hpp):
   // each chunk renumbers its faces and marks the degenerate ones, then one pass closes the gaps.
@@ -489,9 +495,11 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   mesh.physicalGroups = std::move(namedGroups);
   mesh.source = std::move(source);
   mesh.fields = std::move(nodeFields);
-  for (MeshField& field : mesh.fields)
+  for (MeshField& field : mesh.fields) {
+    if (volumeCapture_) volumeCapture_->addNodeField(field, field.values);
     remapNodeValues(field.values, field.components, usedNode, usedCount, nodes.taggedCount(),
                     derivedSources_);
+  }
   std::sort(elementAliases_.begin(), elementAliases_.end());
   // Corner order becomes slot order (cornerSlot, mesh.hpp): the orientation of shells turns faces
   // after this, and a slot follows its vertex wherever the winding puts it.
@@ -517,6 +525,7 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
     mapping->faceElement = std::move(faceElement_);
     mapping->faceCornerNode = std::move(cornerSlots);
     mapping->elementAliases = std::move(elementAliases_);
+    mapping->volume = volumeCapture_;
     fieldMapping_ = std::move(mapping);
   }
   faceElement_ = std::vector<std::uint64_t>();
@@ -525,12 +534,14 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
 
 void MshMeshAssembler::mapElementFields(Mesh& mesh, const std::vector<MshCornerNodes>& cornerSlots) {
   for (ElementField& raw : elementFields) {
+    if (volumeCapture_) volumeCapture_->addElementField(raw.field, raw.tags, raw.field.values);
     raw.field.values = mapElementValues(std::move(raw.tags), raw.field.values, raw.field.components,
                                         faceElement_, elementAliases_);
     mesh.fields.push_back(std::move(raw.field));
   }
   elementFields.clear();
   for (ElementNodeField& raw : elementNodeFields) {
+    if (volumeCapture_) volumeCapture_->addElementNodeField(raw.field, raw.records);
     raw.field.values = mapElementNodeValues(std::move(raw.records), raw.field.components, faceElement_,
                                             cornerSlots, elementAliases_);
     mesh.fields.push_back(std::move(raw.field));

@@ -15,6 +15,7 @@
 #include "lancer/mesh/msh/element_types.hpp"
 #include "lancer/mesh/msh/field_mapping.hpp"
 #include "lancer/mesh/msh/node_table.hpp"
+#include "lancer/mesh/msh/volume_capture.hpp"
 #include "lancer/mesh/msh/volume_skin.hpp"
 
 namespace lancer {
@@ -49,6 +50,11 @@ class MshMeshAssembler {
     if (trackElements_) elementAliases_.emplace_back(copy, kept);
   }
 
+  // Set before the elements are read: volume elements and the fields' values inside them are kept
+  // too (mesh/volume/volume_mesh.hpp), for slices, isosurfaces, field lines and probes.
+  void keepVolume() { volumeCapture_ = std::make_shared<MshVolumeCapture>(); }
+  // After finish(): the volume, when it was asked for and the field sections are read (else null).
+  std::shared_ptr<MshVolumeCapture> volumeCapture() const { return volumeCapture_; }
   // Threads for finish()'s passes (0: every core); the mesh does not depend on it.
   void setThreads(int threads) { threads_ = threads; }
   void reserveFaces(std::size_t count);
@@ -152,6 +158,7 @@ class MshMeshAssembler {
   std::vector<MshVolumeFace> volumeFaces_;
   std::vector<std::array<std::uint32_t, 8>> derivedSources_;  // corners and mids of each derived centre
   bool trackElements_ = false;
+  std::shared_ptr<MshVolumeCapture> volumeCapture_;                      // set by keepVolume()
   std::uint64_t element_ = 0;                                            // tag of the element being added
   std::vector<std::uint64_t> faceElement_;                               // per face, when tracking
   std::vector<std::pair<std::uint64_t, std::uint64_t>> elementAliases_;  // (copy, kept), when tracking

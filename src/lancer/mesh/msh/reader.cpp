@@ -19,6 +19,7 @@
 #include "lancer/mesh/field_steps.hpp"
 #include "lancer/mesh/msh/fields.hpp"
 #include "lancer/mesh/msh/foreign_formats.hpp"
+#include "lancer/mesh/msh/mesh_assembler.hpp"
 #include "lancer/mesh/msh/sections.hpp"
 #include "lancer/mesh/msh/stored_steps.hpp"
 #include "lancer/mesh/pos/pos_file_kind.hpp"
@@ -293,6 +294,7 @@ struct ByteSource {
   bool mapped = false;               // a file mapping: its pages can be handed back
   std::optional<FileIdentity> file;  // set when stored steps can be read again from `name`
   std::uint64_t residentFieldBytes = UINT64_MAX;
+  bool keepVolume = false;
 };
 
 // Reads the field sections the pass noted, in file order (node data first, as gmsh lists views),
@@ -359,6 +361,12 @@ void readFieldSections(MshReadState& state, Mesh& mesh, std::span<const char> by
   }
 }
 
+// The volume the assembler kept, with the values the field sections gave it; null when none was asked.
+std::shared_ptr<const VolumeMesh> takeVolume(MshMeshAssembler& assembler) {
+  const std::shared_ptr<MshVolumeCapture> capture = assembler.volumeCapture();
+  return capture ? capture->take() : nullptr;
+}
+
 // A list-based view: its content says so, or its .pos name when it looks like no mesh either (the
 // .pos reader then says what it found instead of a view).
 bool isViewContent(std::span<const char> bytes, const std::string& name) {
@@ -381,7 +389,7 @@ bool endsWithElementData(std::span<const char> bytes) {
 }
 
 Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteSource& byteSource,
-               int threads) {
+               int threads, std::shared_ptr<const VolumeMesh>* volume = nullptr) {
   if (isViewContent(bytes, name)) {
     MeshSourceInfo source;
     source.path = name;
@@ -409,6 +417,7 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteS
     MshMeshAssembler assembler;
     assembler.setThreads(threads);
     if (track) assembler.trackElements();
+    if (volume) assembler.keepVolume();
     MeshSourceInfo source;
     source.path = name;
     source.fileBytes = byteSource.fileBytes;
@@ -419,6 +428,7 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteS
       Mesh mesh = assembler.finish(std::move(source), std::move(state.namedGroups));
       readFieldSections(state, mesh, bytes, name, byteSource);
       addDeclaredGroups(state, mesh);
+      if (volume) *volume = takeVolume(assembler);
       return mesh;
     }
   }
@@ -461,6 +471,18 @@ Mesh readMsh(const std::string& path, int threads, std::uint64_t residentFieldBy
   Mesh mesh = readBytes(file.bytes(), path, source, threads);
   mesh.source.loadSeconds = stopwatch.seconds();
   return mesh;
+}
+
+MeshWithVolume readMshWithVolume(const std::string& path, int threads) {
+  const Stopwatch stopwatch;
+  const MappedFile file(path, ".msh file");
+  MeshWithVolume result;
+  // Every step stays in memory: the volume's values are read with the surface's, once.
+  const ByteSource source{file.bytes().size(), true, std::nullopt, UINT64_MAX};
+  result.mesh = readBytes(file.bytes(), path, source, threads, &result.volume);
+  if (!result.volume) result.volume = std::make_shared<const VolumeMesh>();
+  result.mesh.source.loadSeconds = stopwatch.seconds();
+  return result;
 }
 
 bool isViewFile(const std::string& path) {

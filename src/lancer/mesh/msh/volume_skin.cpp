@@ -101,11 +101,11 @@ MshFaceKey mshFaceKey(const std::uint32_t* corners, int cornerCount) {
   return key;
 }
 
-void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_t group,
-                              std::vector<MshVolumeFace>& faces) {
+std::optional<CellShape> mshVolumeShape(int type) {
   switch (type) {
+    // Order 3 and up too: every gmsh volume element lists its corners first.
     case 4:
-    // Order 3 and up: the skin through the corners, which every gmsh volume element lists first.
+    case 11:
     case 29:
     case 30:
     case 31:
@@ -123,16 +123,10 @@ void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_
     case 83:
     case 137:
     case 139:
-      appendFaces(kTetFaces, nodes, group, faces);
-      break;
-    case 11:
-      appendFaces(kTetFaces, nodes, group, faces);
-      for (int f = 0; f < 4; ++f) {
-        MshVolumeFace& face = faces[faces.size() - 4 + static_cast<std::size_t>(f)];
-        for (int e = 0; e < 3; ++e) face.mid[e] = nodes[kTet10FaceMids[f][e]];
-      }
-      break;
+      return CellShape::kTetrahedron;
     case 5:
+    case 12:
+    case 17:
     case 92:
     case 93:
     case 94:
@@ -147,17 +141,7 @@ void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_
     case 103:
     case 104:
     case 105:
-      appendFaces(kHexFaces, nodes, group, faces);
-      break;
-    case 12:
-    case 17:
-      appendFaces(kHexFaces, nodes, group, faces);
-      for (int f = 0; f < 6; ++f) {
-        MshVolumeFace& face = faces[faces.size() - 6 + static_cast<std::size_t>(f)];
-        for (int e = 0; e < 4; ++e) face.mid[e] = nodes[kHex20FaceMids[f][e]];
-        if (type == 12) face.centre = nodes[kHex27FaceCentres[f]];
-      }
-      break;
+      return CellShape::kHexahedron;
     case 6:
     case 13:
     case 18:
@@ -175,8 +159,7 @@ void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_
     case 115:
     case 116:
     case 117:
-      appendFaces(kPrismFaces, nodes, group, faces);
-      break;
+      return CellShape::kPrism;
     case 7:
     case 14:
     case 19:
@@ -194,9 +177,41 @@ void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_
     case 129:
     case 130:
     case 131:
-      appendFaces(kPyramidFaces, nodes, group, faces);
-      break;
+      return CellShape::kPyramid;
     default:
+      return std::nullopt;
+  }
+}
+
+void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_t group,
+                              std::vector<MshVolumeFace>& faces) {
+  const std::optional<CellShape> shape = mshVolumeShape(type);
+  if (!shape) return;
+  switch (*shape) {
+    case CellShape::kTetrahedron:
+      appendFaces(kTetFaces, nodes, group, faces);
+      if (type == 11) {
+        for (int f = 0; f < 4; ++f) {
+          MshVolumeFace& face = faces[faces.size() - 4 + static_cast<std::size_t>(f)];
+          for (int e = 0; e < 3; ++e) face.mid[e] = nodes[kTet10FaceMids[f][e]];
+        }
+      }
+      break;
+    case CellShape::kHexahedron:
+      appendFaces(kHexFaces, nodes, group, faces);
+      if (type == 12 || type == 17) {
+        for (int f = 0; f < 6; ++f) {
+          MshVolumeFace& face = faces[faces.size() - 6 + static_cast<std::size_t>(f)];
+          for (int e = 0; e < 4; ++e) face.mid[e] = nodes[kHex20FaceMids[f][e]];
+          if (type == 12) face.centre = nodes[kHex27FaceCentres[f]];
+        }
+      }
+      break;
+    case CellShape::kPrism:
+      appendFaces(kPrismFaces, nodes, group, faces);
+      break;
+    case CellShape::kPyramid:
+      appendFaces(kPyramidFaces, nodes, group, faces);
       break;
   }
 }

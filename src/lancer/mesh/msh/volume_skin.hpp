@@ -5,10 +5,12 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "lancer/mesh/mesh.hpp"
+#include "lancer/mesh/volume/volume_mesh.hpp"
 
 namespace lancer {
 
@@ -28,7 +30,10 @@ using MshFaceKey = std::array<std::uint32_t, 4>;  // sorted corner indices, kNoV
 
 MshFaceKey mshFaceKey(const std::uint32_t* corners, int cornerCount);
 
-// Appends the faces of a volume element of gmsh type 4-7, 11-14 or 17-19.
+// The shape of a gmsh volume element type of any order, or nullopt for any other type.
+std::optional<CellShape> mshVolumeShape(int type);
+
+// Appends the faces of a volume element (any type mshVolumeShape knows; others add nothing).
 void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_t group,
                               std::vector<MshVolumeFace>& faces);
 
