@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -159,7 +160,9 @@ void applyResultOverrides(SceneDescription& description, const SceneOverrides& o
     }
   }
   // With --gmsh-view the view may colour the mesh: the map is applied again once it has.
-  applyColorMap(description, overrides.colorMap, !overrides.gmshView);
+  // Isosurfaces and field lines take the map when no mesh is coloured (render_overrides.hpp).
+  applyColorMap(description, overrides.colorMap,
+                !overrides.gmshView && overrides.isosurfaces.empty() && overrides.streamlines.empty());
   if (!overrides.undeformed.empty()) {
     const UndeformedStyle style = overrides.undeformed == "edges"   ? UndeformedStyle::Edges
                                   : overrides.undeformed == "ghost" ? UndeformedStyle::Ghost
@@ -213,6 +216,115 @@ ClipSettings parseClip(const std::string& text) {
   return clip;
 }
 
+// --slice AXIS (through the volume's centre), AXIS=VALUE or PX,PY,PZ,NX,NY,NZ, as --clip's planes.
+SliceSpec parseSlice(const std::string& text) {
+  SliceSpec slice;
+  if (const std::optional<UpAxis> axis = parseUpAxis(text)) {
+    slice.normal = upVector(*axis);
+    return slice;
+  }
+  try {
+    const ClipSettings plane = parseClip(text);
+    slice.point = plane.point;
+    slice.normal = plane.normal;
+  } catch (const InputError&) {
+    throw InputError(SourceLocation{"--slice"},
+                     fmt::format("'{}' is not a plane: use AXIS (x, y or z: through the volume's centre), "
+                                 "AXIS=VALUE (z=0.3) or PX,PY,PZ,NX,NY,NZ (a point and the normal)",
+                                 text));
+  }
+  return slice;
+}
+
+// FIELD[:COUNT] of --isosurfaces and --streamlines: the field, and the count when given (1 to most).
+std::pair<std::string, std::optional<int>> fieldAndCount(const std::string& text, const char* option,
+                                                         int most) {
+  const std::size_t colon = text.rfind(':');
+  std::pair<std::string, std::optional<int>> result{text.substr(0, colon), std::nullopt};
+  if (colon != std::string::npos) {
+    const std::optional<double> count = numberOf(text.substr(colon + 1));
+    if (!count || *count < 1 || *count > most || *count != std::floor(*count))
+      throw InputError(
+          SourceLocation{option},
+          fmt::format("'{}' is not FIELD[:COUNT]: COUNT is a whole number from 1 to {}", text, most));
+    result.second = static_cast<int>(*count);
+  }
+  if (result.first.empty())
+    throw InputError(SourceLocation{option}, fmt::format("give the field: {} FIELD[:COUNT]", option));
+  return result;
+}
+
+// --streamlines FIELD[:COUNT] and --seed-line X1,Y1,Z1,X2,Y2,Z2.
+void applyStreamlineOptions(const SceneOverrides& overrides, RenderOverrides& applied) {
+  if (overrides.streamlines.empty()) {
+    if (!overrides.seedLine.empty())
+      throw InputError(SourceLocation{"--seed-line"},
+                       "--seed-line gives the seeds of --streamlines FIELD: add --streamlines");
+    return;
+  }
+  StreamlineSpec spec;
+  const auto [field, count] = fieldAndCount(overrides.streamlines, "--streamlines", 100000);
+  spec.field = field;
+  if (count) spec.count = *count;
+  if (!overrides.seedLine.empty()) {
+    double numbers[6];
+    std::size_t start = 0;
+    for (int i = 0; i < 6; ++i) {
+      const std::size_t comma = i < 5 ? overrides.seedLine.find(',', start) : overrides.seedLine.size();
+      const std::optional<double> number = comma == std::string::npos
+                                               ? std::nullopt
+                                               : numberOf(overrides.seedLine.substr(start, comma - start));
+      if (!number || !std::isfinite(*number))
+        throw InputError(
+            SourceLocation{"--seed-line"},
+            fmt::format("'{}' is not a line: give its two ends X1,Y1,Z1,X2,Y2,Z2", overrides.seedLine));
+      numbers[i] = *number;
+      start = comma + 1;
+    }
+    spec.seeds = StreamlineSpec::Seeds::Line;
+    spec.points = {{numbers[0], numbers[1], numbers[2]}, {numbers[3], numbers[4], numbers[5]}};
+  }
+  applied.streamlines = spec;
+}
+
+// --slice, --skin, --isosurfaces and --isovalues turned into values.
+void applyVolumeOptions(const SceneOverrides& overrides, RenderOverrides& applied) {
+  for (const std::string& slice : overrides.slices) applied.slices.push_back(parseSlice(slice));
+  if (!overrides.skin.empty()) {
+    constexpr std::array<std::string_view, 4> kSkins = {"shown", "ghost", "edges", "hidden"};
+    const auto found = std::find(kSkins.begin(), kSkins.end(), overrides.skin);
+    if (found == kSkins.end())
+      throw InputError(SourceLocation{"--skin"},
+                       fmt::format("'{}' is not a skin style: use shown, ghost, edges "
+                                   "or hidden",
+                                   overrides.skin));
+    applied.skin = static_cast<SkinStyle>(found - kSkins.begin());
+  }
+  applyStreamlineOptions(overrides, applied);
+  if (overrides.isosurfaces.empty()) {
+    if (!overrides.isovalues.empty())
+      throw InputError(SourceLocation{"--isovalues"},
+                       "--isovalues gives the values of --isosurfaces FIELD: add --isosurfaces");
+    return;
+  }
+  IsosurfaceSpec spec;
+  const auto [field, count] = fieldAndCount(overrides.isosurfaces, "--isosurfaces", 100);
+  spec.field = field;
+  if (count) spec.count = *count;
+  std::size_t start = 0;
+  while (!overrides.isovalues.empty() && start <= overrides.isovalues.size()) {
+    const std::size_t comma = std::min(overrides.isovalues.find(',', start), overrides.isovalues.size());
+    const std::optional<double> value = numberOf(overrides.isovalues.substr(start, comma - start));
+    if (!value || !std::isfinite(*value) || std::abs(*value) > 3.4e38 || spec.values.size() >= 100)
+      throw InputError(
+          SourceLocation{"--isovalues"},
+          fmt::format("'{}' is not a list of up to 100 finite numbers V1,V2,...", overrides.isovalues));
+    spec.values.push_back(*value);
+    start = comma + 1;
+  }
+  applied.isosurfaces = spec;
+}
+
 // --range, --legend, --isolines, --bands, --arrows and --clip turned into values; the renderer's
 // overrides check them (render_overrides.hpp).
 void applyAnnotationOptions(const SceneOverrides& overrides, RenderOverrides& applied) {
@@ -242,6 +354,9 @@ void applyAnnotationOptions(const SceneOverrides& overrides, RenderOverrides& ap
   applied.bands = overrides.bands;
   applied.arrows = overrides.arrows;
   for (const std::string& clip : overrides.clips) applied.clips.push_back(parseClip(clip));
+  applyVolumeOptions(overrides, applied);
+  if (!overrides.colorMap.empty())
+    applied.colorMap = colorMapFromText(overrides.colorMap, SourceLocation{"--color-map"});
 }
 
 }  // namespace
@@ -331,6 +446,35 @@ void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides) {
       ->group(kResultsGroup);
   command.add_option("--arrows", overrides.arrows, "Arrows along a node vector field (3 components)")
       ->group(kResultsGroup);
+
+  // Inside the volume: cuts of the volume elements, coloured by the field.
+  command
+      .add_option("--slice", overrides.slices,
+                  "The section of the volume by a plane, coloured as the mesh (any number): AXIS through the "
+                  "centre (x, y, z), AXIS=VALUE (z=0.3) or PX,PY,PZ,NX,NY,NZ; see docs/volume.md")
+      ->group(kVolumeGroup);
+  command
+      .add_option(
+          "--skin", overrides.skin,
+          "The mesh's own surface beside slices and isosurfaces: ghost (default), edges, hidden or shown")
+      ->group(kVolumeGroup);
+  command
+      .add_option("--isosurfaces", overrides.isosurfaces,
+                  "Surfaces where a scalar field of the volume is constant: FIELD[:COUNT] (default 5, evenly "
+                  "spaced in its range)")
+      ->group(kVolumeGroup);
+  command.add_option("--isovalues", overrides.isovalues, "The values of --isosurfaces: V1,V2,...")
+      ->group(kVolumeGroup);
+  command
+      .add_option(
+          "--streamlines", overrides.streamlines,
+          "Field lines of a vector field of the volume, as tubes: FIELD[:COUNT] (default 50 lines from "
+          "seeds spread evenly through the volume)")
+      ->group(kVolumeGroup);
+  command
+      .add_option("--seed-line", overrides.seedLine,
+                  "The --streamlines seeds: COUNT points evenly along the segment X1,Y1,Z1,X2,Y2,Z2")
+      ->group(kVolumeGroup);
 }
 
 void addSceneOutputOptions(CLI::App& command, SceneOverrides& overrides) {
@@ -467,7 +611,14 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     description = quickLookScene(input, *request.quickLookMesh, up);
   } else if (isMeshFile(input)) {
     const Stopwatch read;
-    request.quickLookMesh = readMsh(input, overrides.threads);
+    if (!overrides.slices.empty() || !overrides.isosurfaces.empty() || !overrides.streamlines.empty() ||
+        (!overrides.clips.empty() && !overrides.colorBy.empty())) {
+      MeshWithVolume read = readMshWithVolume(input, overrides.threads);
+      request.quickLookMesh = std::move(read.mesh);
+      request.quickLookVolume = std::move(read.volume);
+    } else {
+      request.quickLookMesh = readMsh(input, overrides.threads);
+    }
     addViewFiles(*request.quickLookMesh, overrides.views);
     request.stages.add("read", read.seconds());
     if (const std::string reason = nothingToDrawReason(*request.quickLookMesh); !reason.empty())

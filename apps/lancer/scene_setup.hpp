@@ -54,6 +54,14 @@ struct SceneOverrides {
   std::optional<int> bands;        // --bands N
   std::string arrows;              // --arrows FIELD
   std::vector<std::string> clips;  // --clip AXIS=VALUE or PX,PY,PZ,NX,NY,NZ, any number
+  // Inside the volume (docs/volume.md): --slice PLANE (any number), --skin STYLE,
+  // --isosurfaces FIELD[:COUNT], --isovalues V1,V2,...
+  std::vector<std::string> slices;
+  std::string skin;
+  std::string isosurfaces;
+  std::string isovalues;
+  std::string streamlines;  // --streamlines FIELD[:COUNT]
+  std::string seedLine;     // --seed-line X1,Y1,Z1,X2,Y2,Z2
   // The inputs after the mesh: list-based .pos views put on it by their elements' coordinates.
   std::vector<std::string> views;
 };
@@ -63,6 +71,7 @@ inline constexpr const char* kInputGroup = "Input";
 inline constexpr const char* kCameraGroup = "Camera";
 inline constexpr const char* kLookGroup = "Look";
 inline constexpr const char* kResultsGroup = "Results";
+inline constexpr const char* kVolumeGroup = "Inside the volume";
 inline constexpr const char* kOutputGroup = "Output";
 inline constexpr const char* kQualityGroup = "Quality";
 inline constexpr const char* kClusterGroup = "Cluster";

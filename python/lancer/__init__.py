@@ -8,13 +8,14 @@
 No display is needed (no X, no GL). The C++ library does the work; this package is a thin layer.
 """
 
-from ._lancer import Camera, InputError, Mesh, Scene, __version__, color_map, color_maps, read_msh, read_png
+from ._lancer import (Camera, InputError, Mesh, Scene, Volume, __version__, color_map, color_maps, read_msh, read_png,
+                      read_volume)
 from . import _lancer
 from ._image import Image
 from ._gmsh import camera_from_gmsh, from_gmsh
 
-__all__ = ["Camera", "Image", "InputError", "Mesh", "Scene", "animate", "color_map", "color_maps", "from_gmsh",
-           "read_msh", "read_png", "render"]
+__all__ = ["Camera", "Image", "InputError", "Mesh", "Scene", "Volume", "animate", "color_map", "color_maps",
+           "from_gmsh", "read_msh", "read_png", "read_volume", "render"]
 
 Camera.from_gmsh = staticmethod(camera_from_gmsh)
 

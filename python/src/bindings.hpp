@@ -48,5 +48,6 @@ void bindScene(py::module_& module);
 void bindRender(py::module_& module);
 void bindAnimate(py::module_& module);
 void bindImage(py::module_& module);
+void bindVolume(py::module_& module);
 
 }  // namespace lancer::python

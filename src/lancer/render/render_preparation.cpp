@@ -10,6 +10,7 @@
 
 #include "lancer/image/legend.hpp"
 #include "lancer/scene/flat_scene.hpp"
+#include "lancer/scene/results/volume_views.hpp"
 #include "lancer/util/memory_budget.hpp"
 #include "lancer/util/stopwatch.hpp"
 
@@ -76,11 +77,15 @@ PreparedRender prepareRender(RenderRequest request) {
   StageTimes stages = std::move(request.stages);
   const double secondsBefore = stages.totalSeconds();
   std::vector<Mesh> meshes;
-  if (request.quickLookMesh)
+  std::vector<std::shared_ptr<const VolumeMesh>> volumes;
+  if (request.quickLookMesh) {
     meshes.push_back(std::move(*request.quickLookMesh));
-  else
-    meshes = readSceneMeshes(description, request.threads, &stages);
+    volumes.push_back(request.quickLookVolume);
+  } else {
+    meshes = readSceneMeshes(description, request.threads, &stages, &volumes);
+  }
   if (request.withMeshes) request.withMeshes(description, meshes);
+  addVolumeViews(description, meshes, volumes);
   // A flat scene nobody chose a view for: straight on; a look then lights it from that view.
   const FlatSceneChoices choices{request.overrides.look.has_value(), request.overrides.shading.has_value()};
   if (applyFlatSceneDefaults(description, meshes, choices) && request.overrides.look)

@@ -26,6 +26,8 @@ struct RenderRequest {
   // The quick look's mesh, already read (the CLI read it to make the quick look; Python holds it):
   // used instead of a file, and its lights are placed again when the image size changes.
   std::optional<Mesh> quickLookMesh;
+  // Its volume, read with it when the overrides draw slices, isosurfaces or coloured caps.
+  std::shared_ptr<const VolumeMesh> quickLookVolume;
   RenderOverrides overrides;
   AccelKind accel = kDefaultAccel;
   int threads = 0;  // of the scene preparation and the accelerator build; 0: every core

@@ -35,6 +35,22 @@ struct InstanceTransform {
                  rotation[2][0] * s.x + rotation[2][1] * s.y + rotation[2][2] * s.z} +
            translate;
   }
+
+  // The mesh's own coordinates of the scene point p (the inverse of apply).
+  Vec3d toLocal(const Vec3d& p) const {
+    const Vec3d d = p - translate;
+    const Vec3d r{rotation[0][0] * d.x + rotation[1][0] * d.y + rotation[2][0] * d.z,
+                  rotation[0][1] * d.x + rotation[1][1] * d.y + rotation[2][1] * d.z,
+                  rotation[0][2] * d.x + rotation[1][2] * d.y + rotation[2][2] * d.z};
+    return Vec3d{r.x / scale.x, r.y / scale.y, r.z / scale.z};
+  }
+  // A plane's normal in the mesh's own coordinates (not normalised): S R^T n.
+  Vec3d normalToLocal(const Vec3d& n) const {
+    const Vec3d r{rotation[0][0] * n.x + rotation[1][0] * n.y + rotation[2][0] * n.z,
+                  rotation[0][1] * n.x + rotation[1][1] * n.y + rotation[2][1] * n.z,
+                  rotation[0][2] * n.x + rotation[1][2] * n.y + rotation[2][2] * n.z};
+    return r * scale;
+  }
 };
 
 }  // namespace lancer

@@ -38,6 +38,45 @@ int checkedCount(int count, int most, const std::string& option, const char* wha
 
 void applyAnnotationOverrides(SceneDescription& description, const RenderOverrides& overrides) {
   const auto name = [&](const char* option) { return overrides.optionPrefix + option; };
+  // First what is drawn inside the volume, whose colours the options below may set.
+  for (SliceSpec slice : overrides.slices) {
+    if ((slice.point && !isFinite(*slice.point)) || !isFinite(slice.normal) || length(slice.normal) == 0)
+      throw InputError(
+          SourceLocation{name("slice")},
+          fmt::format("a slice needs a finite point and a normal other than [0, 0, 0], found normal {}",
+                      vectorText(slice.normal)));
+    slice.normal = normalize(slice.normal);
+    slice.where = SourceLocation{name("slice")};
+    for (MeshInstance& mesh : description.meshes) mesh.volume.slices.push_back(slice);
+  }
+  for (MeshInstance& mesh : description.meshes) {
+    if (overrides.skin) mesh.volume.skin = overrides.skin;
+    if (overrides.isosurfaces && !mesh.volume.isosurfaces) {
+      mesh.volume.isosurfaces = overrides.isosurfaces;
+      mesh.volume.isosurfaces->where = SourceLocation{name("isosurfaces")};
+    }
+    if (overrides.streamlines && !mesh.volume.streamlines) {
+      mesh.volume.streamlines = overrides.streamlines;
+      mesh.volume.streamlines->where = SourceLocation{name("streamlines")};
+    }
+  }
+  // Isosurfaces and field lines in a field's colours on a mesh that is not coloured itself: the
+  // field's range and legend are the mesh's (not painted on it), so that --range, --legend, --bands
+  // and --isolines reach them.
+  for (MeshInstance& mesh : description.meshes) {
+    if (mesh.colorBy) continue;
+    std::optional<std::string> field;
+    if (const auto& iso = mesh.volume.isosurfaces; iso && !iso->color)
+      field = iso->colorBy.value_or(iso->field);
+    if (const auto& lines = mesh.volume.streamlines; !field && lines && !lines->color)
+      field = lines->colorBy.value_or(lines->field);
+    if (!field) continue;
+    ColorBy colors;
+    colors.field = *field;
+    colors.paintsSurface = false;
+    if (overrides.colorMap) colors.map = *overrides.colorMap;
+    mesh.colorBy = colors;
+  }
   if (overrides.range) {
     const auto [low, high] = *overrides.range;
     for (MeshInstance* mesh : colouredMeshes(description, name("range"))) {

@@ -37,6 +37,14 @@ struct RenderOverrides {
   std::optional<int> isolines, bands;
   std::string arrows;
   std::vector<ClipSettings> clips;
+  // Inside the volume (docs/volume.md), for every mesh: slices after its own, its skin style, and
+  // isosurfaces for a mesh that has none of its own.
+  std::vector<SliceSpec> slices;
+  std::optional<SkinStyle> skin;
+  std::optional<IsosurfaceSpec> isosurfaces;
+  std::optional<StreamlineSpec> streamlines;
+  // The colour map of isosurfaces and field lines on a mesh that has no colours of its own.
+  std::optional<ColorMap> colorMap;
   // How the front end spells its options before their names ("--range"), for messages.
   std::string optionPrefix = "--";
   // Names the samples check's messages give the value (the CLI's "--samples", Python's "samples").

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "lancer/math/aabb.hpp"
 #include "lancer/mesh/mesh.hpp"
 #include "lancer/mesh/vertex_normals.hpp"
+#include "lancer/mesh/volume/volume_mesh.hpp"
 #include "lancer/scene/clip_planes.hpp"
 #include "lancer/scene/face_clip_sets.hpp"
 #include "lancer/scene/scene_description.hpp"
@@ -195,8 +197,11 @@ Scene buildScene(const SceneDescription& description, int threads = 0, StageTime
 Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads = 0,
                  StageTimes* times = nullptr);
 // The meshes of the description as buildScene reads them (a `file` pattern: one step per file).
+// With `volumes`, volumes[i] is mesh i's volume when needsVolume says it is needed
+// (results/volume_views.hpp: slices, isosurfaces, coloured caps), else null.
 std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threads = 0,
-                                  StageTimes* times = nullptr);
+                                  StageTimes* times = nullptr,
+                                  std::vector<std::shared_ptr<const VolumeMesh>>* volumes = nullptr);
 // The scene at description.when from meshes read once and kept (they hold every step of their views):
 // each call copies their geometry, warps it and colours it for that step. An animation over steps
 // calls it per frame.

@@ -20,6 +20,7 @@
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/instance_transform.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/results/volume_views.hpp"
 #include "lancer/scene/scene.hpp"
 #include "lancer/scene/scene_entries.hpp"
 #include "lancer/scene/scene_layout.hpp"
@@ -424,7 +425,11 @@ std::vector<SceneLight> sceneLights(const SceneDescription& description, const S
 }
 
 Scene buildScene(const SceneDescription& description, int threads, StageTimes* times) {
-  return buildScene(description, readSceneMeshes(description, threads, times), threads, times);
+  SceneDescription expanded = description;
+  std::vector<std::shared_ptr<const VolumeMesh>> volumes;
+  std::vector<Mesh> meshes = readSceneMeshes(expanded, threads, times, &volumes);
+  addVolumeViews(expanded, meshes, volumes);
+  return buildScene(expanded, std::move(meshes), threads, times);
 }
 
 namespace {

@@ -11,6 +11,7 @@
 #include "lancer/math/vec3.hpp"
 #include "lancer/scene/color_by_spec.hpp"
 #include "lancer/scene/gmsh_view.hpp"
+#include "lancer/scene/results/volume_view_spec.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
@@ -186,6 +187,7 @@ struct MeshInstance {
   std::vector<ClipSettings> clips;  // [[mesh.clip]]: planes that cut this mesh only
   std::optional<WarpSettings> warp;
   UndeformedStyle undeformed = UndeformedStyle::None;
+  VolumeViews volume;  // slices, isosurfaces (results/volume_view_spec.hpp)
 };
 
 // Where `[animation] label` goes in each frame.

@@ -9,29 +9,25 @@
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
-namespace {
-
-// The undeformed shape beside a warped mesh: a faint glass-like copy ("ghost") or only its feature
-// edges on a surface that lets everything through ("edges"); neither is coloured nor cut.
-MeshInstance undeformedInstance(const MeshInstance& warped, std::vector<Material>& materials) {
-  MeshInstance copy = warped;
+MeshInstance backdropInstance(const MeshInstance& instance, bool ghost, std::vector<Material>& materials) {
+  MeshInstance copy = instance;
   copy.warp.reset();
   copy.colorBy.reset();
   copy.isolines.reset();
   copy.arrows.reset();
   copy.groupMaterials.clear();
   copy.undeformed = UndeformedStyle::None;
+  copy.volume = VolumeViews{};
   Material material;
-  material.name = "undeformed";
+  material.name = ghost ? "ghost" : "outline";
   // Edges are lines on a surface that lets every ray through untinted (no shadow of its own).
-  const bool ghost = warped.undeformed == UndeformedStyle::Ghost;
   material.ka = material.kd = ghost ? Vec3{0.8f, 0.8f, 0.85f} : Vec3{1, 1, 1};
   material.ks = {0, 0, 0};
   material.transparency = ghost ? 0.8f : 1.0f;
   material.ior = 1;
   materials.push_back(material);
   copy.material = static_cast<int>(materials.size() - 1);
-  if (warped.undeformed == UndeformedStyle::Edges) {
+  if (!ghost) {
     EdgeSettings edges;
     edges.featuresOnly = true;
     edges.color = {0.25f, 0.25f, 0.25f};
@@ -41,8 +37,6 @@ MeshInstance undeformedInstance(const MeshInstance& warped, std::vector<Material
   }
   return copy;
 }
-
-}  // namespace
 
 // Everything of a mesh but its fields: what a step's scene is built from (the fields stay with the
 // mesh as read, which holds every step).
@@ -107,13 +101,14 @@ std::vector<SceneEntry> sceneEntries(const SceneDescription& description, std::v
     std::optional<SceneEntry> undeformed;
     if (instance.warp) {
       if (instance.undeformed != UndeformedStyle::None)
-        undeformed = SceneEntry{undeformedInstance(instance, materials),
-                                geometryOf(entry.mesh),
-                                std::nullopt,
-                                std::nullopt,
-                                nullptr,
-                                i,
-                                true};
+        undeformed =
+            SceneEntry{backdropInstance(instance, instance.undeformed == UndeformedStyle::Ghost, materials),
+                       geometryOf(entry.mesh),
+                       std::nullopt,
+                       std::nullopt,
+                       nullptr,
+                       i,
+                       true};
       std::vector<float>* perFace =
           entry.coloring && entry.coloring->at != FieldAt::kNode ? &entry.coloring->t : nullptr;
       const WarpReport report = warpMesh(entry.mesh, source, *instance.warp, description.when, perFace);

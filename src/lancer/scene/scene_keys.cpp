@@ -20,9 +20,10 @@ constexpr std::array<std::string_view, 9> kLightKeys = {
 constexpr std::array<std::string_view, 10> kMaterialKeys = {
     "ka",           "kd",  "ks",      "shininess",  "reflectivity",
     "transparency", "ior", "fresnel", "absorption", "emission"};
-constexpr std::array<std::string_view, 16> kMeshKeys = {
-    "file",   "views", "material", "shading",  "smooth_angle", "translate", "rotate", "scale",
-    "groups", "edges", "color_by", "isolines", "arrows",       "clip",      "warp",   "undeformed"};
+constexpr std::array<std::string_view, 20> kMeshKeys = {
+    "file",  "views",      "material", "shading",  "smooth_angle", "translate",  "rotate",
+    "scale", "groups",     "edges",    "color_by", "isolines",     "arrows",     "clip",
+    "warp",  "undeformed", "slice",    "skin",     "isosurfaces",  "streamlines"};
 constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only", "feature_angle"};
 constexpr std::array<std::string_view, 10> kColorByKeys = {"field",     "step",  "map",   "scale", "range",
                                                            "component", "title", "units", "bands", "legend"};
@@ -32,13 +33,19 @@ constexpr std::array<std::string_view, 6> kArrowKeys = {"field", "step",   "max_
 constexpr std::array<std::string_view, 7> kIsolineKeys = {"field",  "step",  "component", "count",
                                                           "values", "color", "width"};
 constexpr std::array<std::string_view, 3> kClipKeys = {"point", "normal", "cap"};
+constexpr std::array<std::string_view, 2> kSliceKeys = {"point", "normal"};
+constexpr std::array<std::string_view, 6> kIsosurfaceKeys = {"field", "step",  "values",
+                                                             "count", "color", "color_by"};
+constexpr std::array<std::string_view, 13> kStreamlineKeys = {
+    "field",       "step",   "count",      "seed_line", "seed_points", "seed_center", "seed_normal",
+    "seed_radius", "radius", "max_length", "direction", "color",       "color_by"};
 constexpr std::array<std::string_view, 3> kFloorKeys = {"shadow_catcher", "height", "normal"};
 constexpr std::array<std::string_view, 10> kAnimationKeys = {
     "frames", "fps", "orbit", "axis", "center", "degrees", "over", "range", "label", "label_position"};
 constexpr std::array<std::string_view, 8> kEnvironmentKeys = {"color", "zenith",   "horizon",  "ground",
                                                               "map",   "rotation", "strength", "visible"};
 
-constexpr std::array<SceneTableKeys, 17> kSceneTables = {{
+constexpr std::array<SceneTableKeys, 20> kSceneTables = {{
     {SceneTable::Document, "", kDocumentKeys},
     {SceneTable::Render, "render", kRenderKeys},
     {SceneTable::Camera, "camera", kCameraKeys},
@@ -56,6 +63,9 @@ constexpr std::array<SceneTableKeys, 17> kSceneTables = {{
     {SceneTable::Animation, "animation", kAnimationKeys},
     {SceneTable::MeshWarp, "mesh.warp", kWarpKeys},
     {SceneTable::Environment, "environment", kEnvironmentKeys},
+    {SceneTable::MeshSlice, "mesh.slice", kSliceKeys},
+    {SceneTable::MeshIsosurfaces, "mesh.isosurfaces", kIsosurfaceKeys},
+    {SceneTable::MeshStreamlines, "mesh.streamlines", kStreamlineKeys},
 }};
 
 constexpr bool inEnumOrder() {

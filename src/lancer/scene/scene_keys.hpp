@@ -28,6 +28,9 @@ enum class SceneTable {
   Animation,
   MeshWarp,
   Environment,
+  MeshSlice,
+  MeshIsosurfaces,
+  MeshStreamlines,
 };
 
 struct SceneTableKeys {

@@ -19,6 +19,7 @@
 #include "lancer/scene/light_loader.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/volume_views.hpp"
 #include "lancer/scene/suggest.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
 #include "lancer/scene/up_axis.hpp"
@@ -468,6 +469,12 @@ MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size
   const std::vector<const toml::table*> clips = tableArray(file, table, "clip", clipName, "mesh.clip");
   for (std::size_t i = 0; i < clips.size(); ++i)
     mesh.clips.push_back(readClip(file, *clips[i], fmt::format("{}[{}]", clipName, i), SceneTable::MeshClip));
+  const std::string sliceName = reader.qualified("slice");
+  const std::vector<const toml::table*> slices = tableArray(file, table, "slice", sliceName, "mesh.slice");
+  for (std::size_t i = 0; i < slices.size(); ++i)
+    mesh.volume.slices.push_back(readSlice(
+        TomlTableReader(*slices[i], fmt::format("{}[{}]", sliceName, i), file.path, SceneTable::MeshSlice)));
+  readVolumeViewKeys(reader, mesh);
   return mesh;
 }
 

@@ -7,6 +7,7 @@
 
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
+#include "lancer/scene/results/volume_views.hpp"
 #include "lancer/scene/scene.hpp"
 #include "lancer/util/stopwatch.hpp"
 
@@ -143,13 +144,18 @@ Mesh readStepFiles(const std::string& pattern, const std::vector<std::string>& f
 
 namespace {
 
-Mesh readInstanceMesh(const MeshInstance& instance, int threads) {
+Mesh readInstanceMesh(const MeshInstance& instance, int threads, std::shared_ptr<const VolumeMesh>* volume) {
   for (const std::string& view : instance.views) {
     std::error_code error;
     if (!std::filesystem::exists(view, error))
       throw InputError(instance.where, fmt::format("view file '{}' does not exist", view));
   }
   if (isStepFilePattern(instance.file)) {
+    if (volume && instance.volume.any())
+      throw InputError(instance.where,
+                       fmt::format("slices and isosurfaces are drawn from one file; '{}' is a "
+                                   "pattern of step files: give one of them",
+                                   instance.file));
     Mesh mesh =
         readStepFiles(instance.file, matchStepFiles(instance.file, instance.where), threads, instance.where);
     addViewFiles(mesh, instance.views);
@@ -161,7 +167,14 @@ Mesh readInstanceMesh(const MeshInstance& instance, int threads) {
   std::error_code error;
   if (!std::filesystem::exists(instance.file, error))
     throw InputError(instance.where, fmt::format("mesh file '{}' does not exist", instance.file));
-  Mesh mesh = readMsh(instance.file, threads);
+  Mesh mesh;
+  if (volume) {
+    MeshWithVolume read = readMshWithVolume(instance.file, threads);
+    mesh = std::move(read.mesh);
+    *volume = std::move(read.volume);
+  } else {
+    mesh = readMsh(instance.file, threads);
+  }
   addViewFiles(mesh, instance.views);
   if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
     throw InputError(instance.where, fmt::format("mesh '{}' has nothing to draw: {}", instance.file, reason));
@@ -170,12 +183,17 @@ Mesh readInstanceMesh(const MeshInstance& instance, int threads) {
 
 }  // namespace
 
-std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threads, StageTimes* times) {
+std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threads, StageTimes* times,
+                                  std::vector<std::shared_ptr<const VolumeMesh>>* volumes) {
   const Stopwatch read;
   std::vector<Mesh> meshes;
   meshes.reserve(description.meshes.size());
-  for (const MeshInstance& instance : description.meshes)
-    meshes.push_back(readInstanceMesh(instance, threads));
+  if (volumes) volumes->assign(description.meshes.size(), nullptr);
+  for (std::size_t i = 0; i < description.meshes.size(); ++i) {
+    const MeshInstance& instance = description.meshes[i];
+    const bool withVolume = volumes && needsVolume(description, instance);
+    meshes.push_back(readInstanceMesh(instance, threads, withVolume ? &(*volumes)[i] : nullptr));
+  }
   if (times) times->add("read", read.seconds());
   return meshes;
 }

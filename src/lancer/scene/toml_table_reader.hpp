@@ -78,11 +78,13 @@ class TomlTableReader {
   std::optional<Vec3d> vector(std::string_view key, Triple meaning, NumberRange range = {}) const;
   // A number s (meaning [s, s, s]) or an array of three numbers.
   std::optional<Vec3d> numberOrVector(std::string_view key, Triple meaning, NumberRange range = {}) const;
+  // A node that must be a vector (an element of an array of points), `name` how messages call it;
+  // `alternative` names what else it may be ("a number or "), or is empty.
+  Vec3d checkedVector(const toml::node& node, const std::string& name, Triple meaning,
+                      const NumberRange& range, std::string_view alternative) const;
 
  private:
   double checkedNumber(const toml::node& node, const std::string& name, const NumberRange& range) const;
-  Vec3d checkedVector(const toml::node& node, const std::string& name, Triple meaning,
-                      const NumberRange& range, std::string_view alternative) const;
 
   const toml::table& table_;
   std::string name_;

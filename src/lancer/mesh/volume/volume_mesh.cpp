@@ -1,5 +1,8 @@
 #include "lancer/mesh/volume/volume_mesh.hpp"
 
+#include <cmath>
+#include <limits>
+
 namespace lancer {
 
 const char* cellShapeName(CellShape shape) {
@@ -27,6 +30,34 @@ std::vector<const VolumeField*> VolumeMesh::fieldSteps(const std::string& name) 
   for (const VolumeField& field : fields)
     if (field.name == name) steps.push_back(&field);
   return steps;
+}
+
+VolumeField nodeMeans(const VolumeMesh& volume, const VolumeField& field) {
+  if (field.at == FieldAt::kNode) return field;
+  VolumeField means = field;
+  means.at = FieldAt::kNode;
+  const auto components = static_cast<std::size_t>(field.components);
+  std::vector<double> sum(volume.nodes.size() * components, 0.0);
+  std::vector<std::uint32_t> count(volume.nodes.size(), 0);
+  for (std::size_t cell = 0; cell < volume.cells.size(); ++cell) {
+    const int corners = cellCornerCount(volume.shapes[cell]);
+    for (int k = 0; k < corners; ++k) {
+      const float* value =
+          field.at == FieldAt::kElement
+              ? field.values.data() + cell * components
+              : field.values.data() + (cell * kMaxCellCorners + static_cast<std::size_t>(k)) * components;
+      if (!std::isfinite(value[0])) continue;
+      const std::uint32_t node = volume.cells[cell][static_cast<std::size_t>(k)];
+      for (std::size_t c = 0; c < components; ++c) sum[node * components + c] += value[c];
+      ++count[node];
+    }
+  }
+  means.values.assign(volume.nodes.size() * components, std::numeric_limits<float>::quiet_NaN());
+  for (std::size_t node = 0; node < volume.nodes.size(); ++node)
+    if (count[node] > 0)
+      for (std::size_t c = 0; c < components; ++c)
+        means.values[node * components + c] = static_cast<float>(sum[node * components + c] / count[node]);
+  return means;
 }
 
 }  // namespace lancer

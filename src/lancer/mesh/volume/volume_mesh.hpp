@@ -69,4 +69,9 @@ struct VolumeMesh {
   std::vector<const VolumeField*> fieldSteps(const std::string& name) const;
 };
 
+// The field at the nodes: node data as it is; element and element-node data as the mean of the
+// values the cells around each node give it (what ParaView's Cell Data to Point Data does), for what
+// needs one value per node (an isosurface that is watertight and smooth).
+VolumeField nodeMeans(const VolumeMesh& volume, const VolumeField& field);
+
 }  // namespace lancer

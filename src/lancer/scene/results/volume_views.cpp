@@ -1,0 +1,519 @@
+#include "lancer/scene/results/volume_views.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "lancer/mesh/volume/field_line_tubes.hpp"
+#include "lancer/mesh/volume/field_lines.hpp"
+#include "lancer/mesh/volume/volume_cut.hpp"
+#include "lancer/mesh/volume/volume_locator.hpp"
+#include "lancer/scene/instance_transform.hpp"
+#include "lancer/scene/isolines.hpp"
+#include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/scene_entries.hpp"
+
+namespace lancer {
+namespace {
+
+constexpr std::array<std::string_view, 4> kSkinStyles = {"shown", "ghost", "edges", "hidden"};
+constexpr int kMaxIsosurfaces = 100;
+
+// A cut that lies on a capped clipping plane is moved this fraction of the volume's diagonal into
+// the kept side, where rays meet it before the plane's grey cap (scene_queries.cpp).
+constexpr double kCapOffset = 1e-5;
+
+// The volume's cut added to `into` (a mesh of cuts of the same volume), with every field of the
+// volume carried over, in the volume's field order.
+void appendCut(Mesh& into, const VolumeCut& cut, const VolumeMesh& volume) {
+  const auto vertexBase = static_cast<std::uint32_t>(into.positions.size());
+  into.positions.insert(into.positions.end(), cut.surface.positions.begin(), cut.surface.positions.end());
+  for (MeshFace face : cut.surface.faces) {
+    for (int c = 0; c < 3; ++c) face.vertex[c] += vertexBase;
+    into.faces.push_back(face);
+  }
+  into.facePhysicalTag.insert(into.facePhysicalTag.end(), cut.surface.facePhysicalTag.begin(),
+                              cut.surface.facePhysicalTag.end());
+  into.faceEntityTag.insert(into.faceEntityTag.end(), cut.surface.faceEntityTag.begin(),
+                            cut.surface.faceEntityTag.end());
+  into.faceEdgeMask.insert(into.faceEdgeMask.end(), cut.surface.faceEdgeMask.begin(),
+                           cut.surface.faceEdgeMask.end());
+  const bool first = into.fields.empty();
+  for (std::size_t k = 0; k < volume.fields.size(); ++k) {
+    MeshField field = cutField(cut, volume, volume.fields[k]);
+    if (first) {
+      into.fields.push_back(std::move(field));
+    } else {
+      std::vector<float>& values = into.fields[k].values;
+      values.insert(values.end(), field.values.begin(), field.values.end());
+    }
+  }
+}
+
+Mesh emptyCutMesh(const VolumeMesh& volume, const Mesh& parent, const std::string& what) {
+  Mesh mesh;
+  mesh.origin = volume.origin;
+  mesh.physicalGroups = parent.physicalGroups;
+  mesh.source.path = fmt::format("{} ({})", parent.source.path, what);
+  return mesh;
+}
+
+// The instance that draws a cut of `parent`'s volume: its placement, material, groups, clips,
+// colours, isolines and arrows; not its views, warp, edges or volume requests.
+MeshInstance cutInstance(const MeshInstance& parent) {
+  MeshInstance child = parent;
+  child.views.clear();
+  child.warp.reset();
+  child.undeformed = UndeformedStyle::None;
+  child.edges.reset();
+  child.volume = VolumeViews{};
+  return child;
+}
+
+// The instance of an isosurface's or a field line's mesh: the parent's placement and clips, one
+// `color`, or coloured by the field `field` with the parent's map (its legend when the field is the
+// parent's own).
+MeshInstance colouredChild(const MeshInstance& parent, const std::optional<Vec3>& color,
+                           const std::string& field, const SourceLocation& where,
+                           std::vector<Material>& materials, const char* name) {
+  MeshInstance child = cutInstance(parent);
+  child.isolines.reset();
+  child.arrows.reset();
+  child.groupMaterials.clear();  // one colour, or the field's
+  if (color) {
+    child.colorBy.reset();
+    Material material = materials[static_cast<std::size_t>(parent.material)];
+    material.name = name;
+    material.ka = material.kd = *color;
+    materials.push_back(material);
+    child.material = static_cast<int>(materials.size() - 1);
+    return child;
+  }
+  ColorBy colorBy = parent.colorBy.value_or(ColorBy{});
+  if (!parent.colorBy || parent.colorBy->field != field) {
+    colorBy.field = field;
+    colorBy.component = FieldComponent{};
+    colorBy.title.reset();
+    colorBy.units.clear();
+    colorBy.range.reset();
+  }
+  colorBy.where = where;
+  colorBy.paintsSurface = true;
+  child.colorBy = colorBy;
+  return child;
+}
+
+// The step of a field that a volume view shows: its own, else the scene's, else the first.
+const VolumeField* viewStep(const VolumeMesh& volume, const std::string& name, std::optional<int> step,
+                            const StepSelection& when) {
+  const std::vector<const VolumeField*> steps = volume.fieldSteps(name);
+  if (steps.empty()) return nullptr;
+  const int wanted = step.value_or(when.step.value_or(steps.front()->step));
+  for (const VolumeField* field : steps)
+    if (field->step == wanted) return field;
+  return step || when.step ? nullptr : steps.front();
+}
+
+std::string fieldList(const VolumeMesh& volume) {
+  std::vector<std::string> names;
+  for (const VolumeField& field : volume.fields)
+    if (std::find(names.begin(), names.end(), field.name) == names.end()) names.push_back(field.name);
+  return names.empty() ? "none" : fmt::format("{}", fmt::join(names, ", "));
+}
+
+// The seeds of field lines in the volume's frame.
+std::vector<Vec3d> streamlineSeeds(const StreamlineSpec& spec, const VolumeMesh& volume,
+                                   const VolumeLocator& locator, const InstanceTransform& transform) {
+  const auto local = [&](const Vec3d& p) { return transform.toLocal(p) - volume.origin; };
+  std::vector<Vec3d> seeds;
+  switch (spec.seeds) {
+    case StreamlineSpec::Seeds::Automatic:
+      return automaticSeeds(volume, locator, spec.count);
+    case StreamlineSpec::Seeds::Points:
+      for (const Vec3d& p : spec.points) seeds.push_back(local(p));
+      return seeds;
+    case StreamlineSpec::Seeds::Line: {
+      const Vec3d a = local(spec.points[0]), b = local(spec.points[1]);
+      for (int i = 0; i < spec.count; ++i)
+        seeds.push_back(a + (b - a) * (spec.count == 1 ? 0.5 : static_cast<double>(i) / (spec.count - 1)));
+      return seeds;
+    }
+    case StreamlineSpec::Seeds::Disk:
+      break;
+  }
+  // A disk: the points of a sunflower spiral, evenly spread over its area.
+  const Vec3d n = normalize(transform.normalToLocal(spec.diskNormal));
+  const Vec3d u = normalize(cross(n, std::abs(n.x) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0})), v = cross(n, u);
+  const Vec3d centre = local(spec.diskCenter);
+  const double radius = spec.diskRadius * length(transform.normalToLocal(u)) / std::max(length(u), 1e-300);
+  const double golden = std::numbers::pi * (3 - std::sqrt(5.0));
+  for (int i = 0; i < spec.count; ++i) {
+    const double r = radius * std::sqrt((i + 0.5) / spec.count), angle = i * golden;
+    seeds.push_back(centre + u * (r * std::cos(angle)) + v * (r * std::sin(angle)));
+  }
+  return seeds;
+}
+
+std::pair<double, double> scalarRange(const VolumeField& field) {
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (const float value : field.values) {
+    if (!std::isfinite(value)) continue;
+    low = std::min<double>(low, value);
+    high = std::max<double>(high, value);
+  }
+  return {low, high};
+}
+
+Vec3d volumeCentre(const VolumeMesh& volume) {
+  Aabbd box;
+  for (const Vec3& node : volume.nodes) box.extend(toDouble(node));
+  return box.center();
+}
+
+double volumeDiagonal(const VolumeMesh& volume) {
+  Aabbd box;
+  for (const Vec3& node : volume.nodes) box.extend(toDouble(node));
+  return length(box.extent());
+}
+
+const VolumeField& isosurfaceField(const VolumeMesh& volume, const IsosurfaceSpec& spec,
+                                   const StepSelection& when, const std::string& file) {
+  const std::vector<const VolumeField*> steps = volume.fieldSteps(spec.field);
+  if (steps.empty())
+    throw InputError(spec.where, fmt::format("isosurfaces of '{}': {} has no such field inside its volume "
+                                             "(its fields: {})",
+                                             spec.field, file, fieldList(volume)));
+  if (steps.front()->components != 1)
+    throw InputError(
+        spec.where,
+        fmt::format("isosurfaces of '{}': it has {} components, and an isosurface is where a scalar "
+                    "takes a value; give a scalar field (colour the surfaces by this one with "
+                    "color_by = \"{}\")",
+                    spec.field, steps.front()->components, spec.field));
+  const int step = spec.step.value_or(when.step.value_or(steps.front()->step));
+  for (const VolumeField* field : steps)
+    if (field->step == step) return *field;
+  if (!spec.step && !when.step) return *steps.front();
+  throw InputError(spec.where, fmt::format("isosurfaces of '{}': it has no step {}", spec.field, step));
+}
+
+}  // namespace
+
+SliceSpec readSlice(const TomlTableReader& reader) {
+  SliceSpec slice;
+  slice.where = reader.location(reader.table());
+  if (auto point = reader.vector("point", Triple::Xyz)) slice.point = *point;
+  const std::optional<Vec3d> normal = reader.vector("normal", Triple::Xyz);
+  if (!normal) reader.failMissing("normal", "normal = [x, y, z] (the plane's normal)");
+  if (length(*normal) == 0.0)
+    reader.fail(*reader.find("normal"), fmt::format("{} must not be [0, 0, 0]", reader.qualified("normal")));
+  slice.normal = normalize(*normal);
+  return slice;
+}
+
+void readVolumeViewKeys(const TomlTableReader& mesh, MeshInstance& instance) {
+  readStreamlineKeys(mesh, instance);
+  if (auto skin = mesh.choice("skin", kSkinStyles)) instance.volume.skin = static_cast<SkinStyle>(*skin);
+  const toml::node* node = mesh.find("isosurfaces");
+  if (!node) return;
+  const auto* table = node->as_table();
+  if (!table)
+    mesh.fail(*node, fmt::format("{} must be a table like {{ field = \"v\", count = 5 }}, found {}",
+                                 mesh.qualified("isosurfaces"), describeValue(*node)));
+  const TomlTableReader reader(*table, mesh.qualified("isosurfaces"), mesh.file(),
+                               SceneTable::MeshIsosurfaces);
+  IsosurfaceSpec spec;
+  spec.where = reader.location(*node);
+  const std::optional<std::string> field = reader.nonEmptyString("field");
+  if (!field) reader.failMissing("field", "field = \"v\" (a scalar field of the volume)");
+  spec.field = *field;
+  if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
+  if (auto count = reader.integer("count", 1, kMaxIsosurfaces)) spec.count = static_cast<int>(*count);
+  if (const toml::node* values = reader.find("values")) {
+    const auto* array = values->as_array();
+    if (!array || array->empty() || array->size() > kMaxIsosurfaces)
+      reader.fail(*values, fmt::format("{} must be an array of 1 to {} numbers, found {}",
+                                       reader.qualified("values"), kMaxIsosurfaces, describeValue(*values)));
+    for (const toml::node& item : *array) {
+      const double value = item.is_number() ? item.value<double>().value_or(NAN) : NAN;
+      if (!std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max())
+        reader.fail(item, fmt::format("{} must hold finite numbers, found {}", reader.qualified("values"),
+                                      describeValue(item)));
+      spec.values.push_back(value);
+    }
+    if (reader.find("count"))
+      reader.fail(*values, fmt::format("{} gives both count and values: keep one", reader.label()));
+  }
+  if (auto color = reader.vector("color", Triple::Rgb, NumberRange::between(0, 1)))
+    spec.color = toFloat(*color);
+  if (auto colorBy = reader.nonEmptyString("color_by")) spec.colorBy = *colorBy;
+  if (spec.color && spec.colorBy)
+    reader.fail(*reader.find("color"),
+                fmt::format("{} gives both color and color_by: keep one", reader.label()));
+  instance.volume.isosurfaces = spec;
+}
+
+namespace {
+
+constexpr std::array<std::string_view, 3> kDirections = {"both", "forward", "backward"};
+constexpr int kMaxStreamlines = 100000;
+
+// An array of [x, y, z] points (seed_line: exactly two).
+std::vector<Vec3d> readPoints(const TomlTableReader& reader, std::string_view key, std::size_t least,
+                              std::size_t most) {
+  std::vector<Vec3d> points;
+  const toml::node* node = reader.find(key);
+  if (!node) return points;
+  const auto* array = node->as_array();
+  const std::string expected = least == most ? fmt::format("{} points [x, y, z]", least)
+                                             : fmt::format("{} to {} points [x, y, z]", least, most);
+  if (!array || array->size() < least || array->size() > most)
+    reader.fail(*node, fmt::format("{} must be an array of {}, found {}", reader.qualified(key), expected,
+                                   describeValue(*node)));
+  for (std::size_t i = 0; i < array->size(); ++i)
+    points.push_back(reader.checkedVector(*array->get(i), fmt::format("{}[{}]", reader.qualified(key), i),
+                                          Triple::Xyz, NumberRange::any(), ""));
+  return points;
+}
+
+}  // namespace
+
+void readStreamlineKeys(const TomlTableReader& mesh, MeshInstance& instance) {
+  const toml::node* node = mesh.find("streamlines");
+  if (!node) return;
+  const auto* table = node->as_table();
+  if (!table)
+    mesh.fail(*node, fmt::format("{} must be a table like {{ field = \"e\", count = 50 }}, found {}",
+                                 mesh.qualified("streamlines"), describeValue(*node)));
+  const TomlTableReader reader(*table, mesh.qualified("streamlines"), mesh.file(),
+                               SceneTable::MeshStreamlines);
+  StreamlineSpec spec;
+  spec.where = reader.location(*node);
+  const std::optional<std::string> field = reader.nonEmptyString("field");
+  if (!field) reader.failMissing("field", "field = \"e\" (a vector field of the volume)");
+  spec.field = *field;
+  if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
+  if (auto count = reader.integer("count", 1, kMaxStreamlines)) spec.count = static_cast<int>(*count);
+  int seedKinds = 0;
+  if (reader.find("seed_line")) {
+    spec.seeds = StreamlineSpec::Seeds::Line;
+    spec.points = readPoints(reader, "seed_line", 2, 2);
+    ++seedKinds;
+  }
+  if (reader.find("seed_points")) {
+    spec.seeds = StreamlineSpec::Seeds::Points;
+    spec.points = readPoints(reader, "seed_points", 1, kMaxStreamlines);
+    ++seedKinds;
+  }
+  if (reader.find("seed_center") || reader.find("seed_radius") || reader.find("seed_normal")) {
+    spec.seeds = StreamlineSpec::Seeds::Disk;
+    const std::optional<Vec3d> center = reader.vector("seed_center", Triple::Xyz);
+    const std::optional<double> radius = reader.number("seed_radius", NumberRange::above(0));
+    if (!center || !radius)
+      reader.fail(*node, fmt::format("{}: a disk of seeds needs seed_center = [x, y, z] and seed_radius (and "
+                                     "seed_normal, default [0, 0, 1])",
+                                     reader.label()));
+    spec.diskCenter = *center;
+    spec.diskRadius = *radius;
+    if (auto normal = reader.vector("seed_normal", Triple::Xyz)) {
+      if (length(*normal) == 0)
+        reader.fail(*reader.find("seed_normal"),
+                    fmt::format("{} must not be [0, 0, 0]", reader.qualified("seed_normal")));
+      spec.diskNormal = normalize(*normal);
+    }
+    ++seedKinds;
+  }
+  if (seedKinds > 1)
+    reader.fail(
+        *node, fmt::format("{} gives seeds more than one way (seed_line, seed_points, a seed disk): keep one",
+                           reader.label()));
+  if (auto radius = reader.number("radius", NumberRange::above(0))) spec.radius = *radius;
+  if (auto length = reader.number("max_length", NumberRange::above(0))) spec.maxLength = *length;
+  if (auto direction = reader.choice("direction", kDirections)) {
+    spec.forward = *direction != 2;
+    spec.backward = *direction != 1;
+  }
+  if (auto color = reader.vector("color", Triple::Rgb, NumberRange::between(0, 1)))
+    spec.color = toFloat(*color);
+  if (auto colorBy = reader.nonEmptyString("color_by")) spec.colorBy = *colorBy;
+  if (spec.color && spec.colorBy)
+    reader.fail(*reader.find("color"),
+                fmt::format("{} gives both color and color_by: keep one", reader.label()));
+  instance.volume.streamlines = spec;
+}
+
+bool needsVolume(const SceneDescription& description, const MeshInstance& instance) {
+  if (instance.volume.any()) return true;
+  if (!instance.colorBy || !instance.colorBy->paintsSurface) return false;
+  const auto capped = [](const std::vector<ClipSettings>& clips) {
+    return std::any_of(clips.begin(), clips.end(), [](const ClipSettings& clip) { return clip.cap; });
+  };
+  return capped(description.clips) || capped(instance.clips);
+}
+
+void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
+                    const std::vector<std::shared_ptr<const VolumeMesh>>& volumes) {
+  const std::size_t original = std::min(description.meshes.size(), volumes.size());
+  std::vector<std::size_t> hidden;
+  for (std::size_t i = 0; i < original; ++i) {
+    if (!volumes[i]) continue;
+    const VolumeMesh& volume = *volumes[i];
+    const MeshInstance instance = description.meshes[i];  // a copy: the vector grows below
+    const Mesh& parent = meshes[i];
+    if (instance.volume.any() && volume.empty())
+      throw InputError(instance.volume.slices.empty() ? instance.volume.isosurfaces->where
+                                                      : instance.volume.slices.front().where,
+                       fmt::format("'{}' has no volume elements (tetrahedra, hexahedra, prisms, pyramids): "
+                                   "slices and isosurfaces cut volumes",
+                                   instance.file));
+    if (volume.empty()) continue;
+    const InstanceTransform transform(instance);
+
+    // Slices, and caps that show the colour field: one mesh of sections.
+    Mesh sections = emptyCutMesh(volume, parent, "slices");
+    for (const SliceSpec& slice : instance.volume.slices) {
+      const Vec3d point =
+          slice.point ? transform.toLocal(*slice.point) - volume.origin : volumeCentre(volume);
+      const VolumeCut cut = sliceVolume(volume, point, transform.normalToLocal(slice.normal));
+      if (cut.surface.faces.empty()) {
+        const Vec3d shown = slice.point ? *slice.point : transform.apply(point + volume.origin);
+        description.notes.push_back(formatInputWarning(
+            slice.where,
+            fmt::format("the slice through ({:.6g}, {:.6g}, {:.6g}) with normal ({:.3g}, {:.3g}, "
+                        "{:.3g}) misses the volume of '{}'; it is not drawn",
+                        shown.x, shown.y, shown.z, slice.normal.x, slice.normal.y, slice.normal.z,
+                        instance.file)));
+        continue;
+      }
+      appendCut(sections, cut, volume);
+    }
+    if (instance.colorBy && instance.colorBy->paintsSurface &&
+        !volume.fieldSteps(instance.colorBy->field).empty()) {
+      const double offset = kCapOffset * volumeDiagonal(volume);
+      for (const std::vector<ClipSettings>* clips :
+           std::array<const std::vector<ClipSettings>*, 2>{&description.clips, &instance.clips}) {
+        for (const ClipSettings& clip : *clips) {
+          if (!clip.cap) continue;
+          const Vec3d normal = normalize(transform.normalToLocal(clip.normal));
+          const Vec3d point = transform.toLocal(clip.point) - volume.origin - normal * offset;
+          appendCut(sections, sliceVolume(volume, point, normal), volume);
+        }
+      }
+    }
+    if (!sections.faces.empty()) {
+      description.meshes.push_back(cutInstance(instance));
+      meshes.push_back(std::move(sections));
+    }
+
+    // Isosurfaces: one mesh of every value's surface.
+    if (const std::optional<IsosurfaceSpec>& spec = instance.volume.isosurfaces) {
+      const VolumeField& field = isosurfaceField(volume, *spec, description.when, instance.file);
+      const auto [low, high] = scalarRange(field);
+      if (!(low <= high))
+        throw InputError(spec->where,
+                         fmt::format("isosurfaces of '{}': the field has no finite value", spec->field));
+      std::vector<double> values =
+          spec->values.empty() ? evenIsoValues(low, high, spec->count) : spec->values;
+      Mesh surfaces = emptyCutMesh(volume, parent, "isosurfaces");
+      std::vector<double> outside;
+      // Element and element-node data are cut at their node means: one surface, smooth and closed.
+      const VolumeField atNodes = nodeMeans(volume, field);
+      const CellLevels levels = [&](std::uint32_t cell, float* out) {
+        cellPointValues(volume, atNodes, cell, out);
+      };
+      for (const double value : values) {
+        if (value < low || value > high) {
+          outside.push_back(value);
+          continue;
+        }
+        appendCut(surfaces, cutVolume(volume, levels, static_cast<float>(value), true), volume);
+      }
+      if (!outside.empty())
+        description.notes.push_back(formatInputWarning(
+            spec->where, fmt::format("isosurfaces of '{}': {} outside its range {:.6g} .. {:.6g}, not drawn",
+                                     spec->field, fmt::join(outside, ", "), low, high)));
+      if (!surfaces.faces.empty()) {
+        MeshInstance child = colouredChild(instance, spec->color, spec->colorBy.value_or(spec->field),
+                                           spec->where, description.materials, "isosurfaces");
+        description.meshes.push_back(child);
+        meshes.push_back(std::move(surfaces));
+      }
+    }
+
+    // Field lines: one mesh of tubes.
+    if (const std::optional<StreamlineSpec>& spec = instance.volume.streamlines) {
+      const VolumeField* field = viewStep(volume, spec->field, spec->step, description.when);
+      if (!field)
+        throw InputError(
+            spec->where,
+            fmt::format("streamlines of '{}': {} has no {} inside its volume (its fields: "
+                        "{})",
+                        spec->field, instance.file,
+                        volume.fieldSteps(spec->field).empty() ? "such field" : "such step of it",
+                        fieldList(volume)));
+      if (field->components != 3)
+        throw InputError(spec->where,
+                         fmt::format("streamlines of '{}': it has {} component{}, and field lines "
+                                     "follow a vector (3 components)",
+                                     spec->field, field->components, field->components == 1 ? "" : "s"));
+      const VolumeLocator locator(volume);
+      const std::vector<Vec3d> seeds = streamlineSeeds(*spec, volume, locator, transform);
+      FieldLineSettings settings;
+      settings.forward = spec->forward;
+      settings.backward = spec->backward;
+      if (spec->maxLength) settings.maxLength = *spec->maxLength;
+      const std::vector<FieldLine> lines = traceFieldLines(volume, locator, *field, seeds, settings);
+      const auto outside = static_cast<std::size_t>(std::count_if(
+          lines.begin(), lines.end(), [](const FieldLine& line) { return line.points.empty(); }));
+      if (outside == lines.size())
+        throw InputError(
+            spec->where,
+            fmt::format("streamlines of '{}': none of the {} seeds is inside the volume of "
+                        "'{}' (its box: {:.6g} to {:.6g} along x)",
+                        spec->field, seeds.size(), instance.file, locator.bounds().lower.x + volume.origin.x,
+                        locator.bounds().upper.x + volume.origin.x));
+      if (outside > 0 && spec->seeds != StreamlineSpec::Seeds::Automatic)
+        description.notes.push_back(formatInputWarning(
+            spec->where,
+            fmt::format("streamlines of '{}': {} of the {} seeds are outside the volume and start no "
+                        "line",
+                        spec->field, outside, seeds.size())));
+      const double radius = spec->radius
+                                ? *spec->radius / std::max(length(instance.scale), 1e-300) * std::sqrt(3.0)
+                                : 0.003 * volumeDiagonal(volume);
+      Mesh tubes = fieldLineTubes(volume, locator, lines, radius);
+      tubes.source.path = fmt::format("{} (streamlines)", parent.source.path);
+      if (!tubes.faces.empty()) {
+        description.meshes.push_back(colouredChild(instance, spec->color, spec->colorBy.value_or(spec->field),
+                                                   spec->where, description.materials, "streamlines"));
+        meshes.push_back(std::move(tubes));
+      }
+    }
+
+    if (!instance.volume.any()) continue;
+    switch (instance.volume.skin.value_or(SkinStyle::Ghost)) {
+      case SkinStyle::Shown:
+        break;
+      case SkinStyle::Ghost:
+      case SkinStyle::Edges:
+        description.meshes[i] =
+            backdropInstance(instance, instance.volume.skin.value_or(SkinStyle::Ghost) == SkinStyle::Ghost,
+                             description.materials);
+        break;
+      case SkinStyle::Hidden:
+        hidden.push_back(i);
+        break;
+    }
+  }
+  for (auto it = hidden.rbegin(); it != hidden.rend(); ++it) {
+    description.meshes.erase(description.meshes.begin() + static_cast<std::ptrdiff_t>(*it));
+    meshes.erase(meshes.begin() + static_cast<std::ptrdiff_t>(*it));
+  }
+}
+
+}  // namespace lancer

@@ -1,0 +1,200 @@
+// Slices, coloured cut caps and isosurfaces as a user asks for them (scene files and the CLI), on the
+// gmsh-made cube of tetrahedra whose field f = x + 2y + 3z is linear (tests/data/element_node): at
+// every pixel of a slice seen straight on, unlit, the colour is the map's at f of the point the
+// pixel sees; a cap of a coloured mesh is the same slice; requests the volume cannot meet exit 2.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "lancer/image/color_map.hpp"
+#include "lancer/image/image_io.hpp"
+#include "lancer/render/render_preparation.hpp"
+#include "lancer/scene/scene_loader.hpp"
+#include "support/cli.hpp"
+#include "support/files.hpp"
+
+namespace lancer {
+namespace {
+
+constexpr int kSide = 96;
+
+std::string cube() { return test::dataFile("element_node/tet_v41_bin.msh"); }
+
+// A scene looking straight down at z = 0.3 from above the unit cube, orthographic, unlit, f on
+// viridis over [0, 6]; `mesh` holds the rest of the [[mesh]] table and what follows it.
+std::string topViewScene(const std::string& mesh) {
+  return fmt::format(R"([render]
+width = {0}
+height = {0}
+shading = "unlit"
+
+[camera]
+projection = "orthographic"
+position = [0.5, 0.5, 5]
+look_at = [0.5, 0.5, 0.3]
+up = [0, 1, 0]
+view_height = 1.2
+
+[[light]]
+position = [0.5, 0.5, 10]
+
+[[mesh]]
+file = "{1}"
+color_by = {{ field = "f", range = [0, 6] }}
+{2}
+)",
+                     kSide, cube(), mesh);
+}
+
+// Renders the scene with the CLI and checks every pixel that sees the unit square at z = 0.3
+// against viridis at f there; returns the pixels checked.
+int expectSliceColours(const test::ScratchFolder& folder, const std::string& scene) {
+  const std::string path = folder.file("scene.toml");
+  std::ofstream(path) << scene;
+  const std::string out = folder.file("out.png");
+  const test::CommandResult run =
+      test::runCli("render " + test::quoted(path) + " -q -o " + test::quoted(out) + " 2>&1");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  const Image image = readPng(out);
+  RenderRequest request;
+  request.description = loadScene(path);
+  const PreparedRender prepared = prepareRender(std::move(request));
+  int checked = 0;
+  double worst = 0;
+  for (int y = 0; y < kSide; ++y)
+    for (int x = 0; x < kSide; ++x) {
+      const Ray ray = prepared.camera.generateRay(x + 0.5f, y + 0.5f);
+      const Vec3d origin = prepared.scene.geometry.origin + toDouble(ray.origin);
+      const Vec3d direction = toDouble(ray.direction);
+      const double t = (0.3 - origin.z) / direction.z;
+      const Vec3d p = origin + direction * t;
+      // Away from the square's border, where a pixel may see the background too.
+      if (p.x < 0.01 || p.x > 0.99 || p.y < 0.01 || p.y > 0.99) continue;
+      const double f = p.x + 2 * p.y + 0.9;
+      const Vec3 expected = colorMapLookup(ColorMapKind::Viridis, static_cast<float>(f / 6));
+      worst = std::max(worst, 255.0 * maxComponent(abs(image.at(x, y).rgb() - expected)));
+      ++checked;
+    }
+  EXPECT_LE(worst, 1.0);
+  return checked;
+}
+
+TEST(VolumeViews, ASliceSeenStraightOnShowsTheFieldAtEveryPixel) {
+  const test::ScratchFolder folder;
+  const int checked = expectSliceColours(
+      folder, topViewScene("skin = \"hidden\"\n\n[[mesh.slice]]\npoint = [0, 0, 0.3]\nnormal = [0, 0, 1]\n"));
+  EXPECT_GT(checked, kSide * kSide / 2);
+}
+
+TEST(VolumeViews, ACutCapOfAColouredVolumeShowsTheField) {
+  // The top of the cube cut away at z = 0.3: the cap is the slice there.
+  const test::ScratchFolder folder;
+  const int checked =
+      expectSliceColours(folder, topViewScene("\n[[clip]]\npoint = [0, 0, 0.3]\nnormal = [0, 0, 1]\n"));
+  EXPECT_GT(checked, kSide * kSide / 2);
+}
+
+TEST(VolumeViews, TheCliDrawsSlicesAndIsosurfaces) {
+  const test::ScratchFolder folder;
+  const std::string out = folder.file("out.png");
+  for (const std::string options :
+       {"--color-by f --slice z=0.3 --slice x", "--color-by f --slice 0.5,0.5,0.5,1,1,0 --skin edges",
+        "--isosurfaces f:3", "--isosurfaces f --isovalues 1,2.5 --color-by g",
+        "--color-by f --clip y=0.5 --legend right"}) {
+    const test::CommandResult run =
+        test::runCli("render " + test::quoted(cube()) + " " + options + " --width 64 --height 48 -q -o " +
+                     test::quoted(out) + " 2>&1");
+    EXPECT_EQ(run.exitCode, 0) << options << "\n" << run.output;
+  }
+}
+
+TEST(VolumeViews, RequestsTheVolumeCannotMeetExitTwoWithoutAPicture) {
+  const test::ScratchFolder folder;
+  const std::string out = folder.file("out.png");
+  const std::string surface = test::dataFile("element_node/quad9_v41_bin.msh");
+  const struct {
+    std::string input, options, message;
+  } cases[] = {
+      {surface, "--color-by f --slice z=0", "has no volume elements"},
+      {cube(), "--isosurfaces u", "it has 3 components"},
+      {cube(), "--isosurfaces nope",
+       "has no such field inside its volume (its fields: f, g, jump, jumpe, u)"},
+      {cube(), "--isovalues 1,2", "--isovalues gives the values of --isosurfaces FIELD"},
+      {cube(), "--isosurfaces f:0", "COUNT is a whole number from 1 to 100"},
+      {cube(), "--isosurfaces f --isovalues 1,x", "is not a list of up to 100 finite numbers"},
+      {cube(), "--slice w=1", "is not a plane"},
+      {cube(), "--slice 0,0,0,0,0,0", "a normal other than [0, 0, 0]"},
+      {cube(), "--skin glass --slice z", "is not a skin style"},
+  };
+  for (const auto& c : cases) {
+    const test::CommandResult run =
+        test::runCli("render " + test::quoted(c.input) + " " + c.options + " --width 32 --height 32 -q -o " +
+                     test::quoted(out) + " 2>&1");
+    EXPECT_EQ(run.exitCode, 2) << c.options << "\n" << run.output;
+    EXPECT_TRUE(test::contains(run.output, c.message)) << c.options << "\n" << run.output;
+    EXPECT_FALSE(std::filesystem::exists(out)) << c.options;
+  }
+}
+
+TEST(VolumeViews, NotesForASliceThatMissesAndValuesOutsideTheRange) {
+  const test::ScratchFolder folder;
+  const std::string out = folder.file("out.png");
+  const test::CommandResult run = test::runCli("render " + test::quoted(cube()) +
+                                               " --color-by f --slice z=7 --isosurfaces f --isovalues 3,99" +
+                                               " --width 32 --height 32 -o " + test::quoted(out) + " 2>&1");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_TRUE(test::contains(run.output, "misses the volume")) << run.output;
+  EXPECT_TRUE(test::contains(run.output, "99 outside its range")) << run.output;
+}
+
+TEST(VolumeViews, SceneFileKeysAreChecked) {
+  const test::ScratchFolder folder;
+  const std::string path = folder.file("scene.toml");
+  const struct {
+    std::string mesh, message;
+  } cases[] = {
+      {"\n[[mesh.slice]]\npoint = [0, 0, 0.3]\n", "normal"},
+      {"\n[[mesh.slice]]\nnormal = [0, 0, 1]\nponit = [0, 0, 0]\n", "did you mean 'point'"},
+      {"skin = \"glass\"\n", "skin"},
+      {"isosurfaces = { field = \"f\", count = 3, values = [1] }\n", "gives both count and values"},
+      {"isosurfaces = { field = \"f\", color = [1, 0, 0], color_by = \"g\" }\n",
+       "gives both color and color_by"},
+      {"isosurfaces = { count = 3 }\n", "field"},
+      {"isosurfaces = { field = \"f\", values = [1e39] }\n", "finite numbers"},
+  };
+  for (const auto& c : cases) {
+    std::ofstream(path) << topViewScene(c.mesh);
+    const test::CommandResult run = test::runCli("render " + test::quoted(path) + " -q -o " +
+                                                 test::quoted(folder.file("out.png")) + " 2>&1");
+    EXPECT_EQ(run.exitCode, 2) << c.mesh << "\n" << run.output;
+    EXPECT_TRUE(test::contains(run.output, c.message)) << c.mesh << "\n" << run.output;
+  }
+}
+
+TEST(VolumeProbeCli, PrintsTheFieldAndSaysWhatIsWrong) {
+  const test::CommandResult run =
+      test::runCli("probe " + test::quoted(cube()) + " --at 0.1,0.2,0.3 --field f 2>&1");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_TRUE(test::contains(run.output, "f at (0.1, 0.2, 0.3), step 0 (t = 0): 1.4")) << run.output;
+  const test::CommandResult json =
+      test::runCli("probe " + test::quoted(cube()) + " --at 0.5,0.5,0.5 --field u --json 2>&1");
+  EXPECT_EQ(json.exitCode, 0) << json.output;
+  EXPECT_TRUE(test::contains(json.output, "\"field\": \"u\", \"at\": \"element-node\"")) << json.output;
+  for (const std::string bad : {"--at 2,0,0", "--at 0.5,0.5", "--at 0.5,0.5,0.5 --field nope",
+                                "--at 0.5,0.5,0.5 --field g --step 5"}) {
+    const test::CommandResult failed = test::runCli("probe " + test::quoted(cube()) + " " + bad + " 2>&1");
+    EXPECT_EQ(failed.exitCode, 2) << bad << "\n" << failed.output;
+  }
+  const test::CommandResult surface = test::runCli(
+      "probe " + test::quoted(test::dataFile("element_node/quad9_v41_bin.msh")) + " --at 0,0,0 2>&1");
+  EXPECT_EQ(surface.exitCode, 2);
+  EXPECT_TRUE(test::contains(surface.output, "has no volume elements")) << surface.output;
+}
+
+}  // namespace
+}  // namespace lancer
