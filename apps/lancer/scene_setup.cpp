@@ -329,7 +329,9 @@ void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides) {
       ->group(kResultsGroup);
   command.add_option("--bands", overrides.bands, "Discrete colours: N equal bands of the range")
       ->group(kResultsGroup);
-  command.add_option("--arrows", overrides.arrows, "Arrows along a node vector field (3 components)")
+  command
+      .add_option("--arrows", overrides.arrows,
+                  "Arrows along a vector field (3 components; node, element or element-node data)")
       ->group(kResultsGroup);
 }
 
