@@ -20,9 +20,11 @@ std::vector<MeshInstance*> colouredMeshes(SceneDescription& description, const s
   if (coloured.empty())
     throw InputError(
         SourceLocation{option},
-        fmt::format("{} goes with a field's colours, and no mesh is coloured: add --color-by FIELD "
-                    "(or color_by = {{ field = \"...\" }} in the scene's [[mesh]])",
-                    option));
+        fmt::format("{} goes with a field's colours, and no mesh is coloured: {} (or color_by = {{ field "
+                    "= \"...\" }} in the scene's [[mesh]])",
+                    option,
+                    option.starts_with("--") ? "add --color-by FIELD"
+                                             : "colour it with Scene.quick_look(mesh, color_by=FIELD)"));
   return coloured;
 }
 
@@ -38,6 +40,14 @@ int checkedCount(int count, int most, const std::string& option, const char* wha
 
 void applyAnnotationOverrides(SceneDescription& description, const RenderOverrides& overrides) {
   const auto name = [&](const char* option) { return overrides.optionPrefix + option; };
+  if (overrides.colorMap)
+    for (MeshInstance* mesh : colouredMeshes(description, name("color_map")))
+      mesh->colorBy->map = *overrides.colorMap;
+  if (overrides.scale)
+    for (MeshInstance* mesh : colouredMeshes(description, name("log"))) {
+      mesh->colorBy->scale = *overrides.scale;
+      mesh->colorBy->logOption = *overrides.scale == ColorScale::Log ? name("log") : std::string();
+    }
   if (overrides.range) {
     const auto [low, high] = *overrides.range;
     for (MeshInstance* mesh : colouredMeshes(description, name("range"))) {
