@@ -10,4 +10,5 @@ PYBIND11_MODULE(_lancer, module) {
   lancer::python::bindRender(module);
   lancer::python::bindAnimate(module);
   lancer::python::bindImage(module);
+  lancer::python::bindListViews(module);
 }
