@@ -83,6 +83,19 @@ TEST(AnnotationOptionsCli, LogIsTheSceneKey) {
   EXPECT_GT(test::differingPixels(options, linear), 1000);
 }
 
+TEST(AnnotationOptionsCli, IsolinesOfElementDataComeWithANote) {
+  const test::ScratchFolder folder;
+  const std::string grid = test::dataFile("fields/element_centroids_grid_v41_ascii.msh");
+  const test::CommandResult run =
+      test::runCli("render " + quoted(grid) + " --width 64 --height 64 --color-by f --isolines 5 -o " +
+                   quoted(folder.file("iso.png")) + " 2>&1");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(
+      run.output.find("--isolines: warning: isolines of element data \"f\" follow its mean at each vertex"),
+      std::string::npos)
+      << run.output;
+}
+
 TEST(AnnotationOptionsCli, LitPathTracedIsolinesDarkenTheSurface) {
   // Black lines under --look studio: the paint is the albedo, so a line is darker than the surface
   // beside it whatever the light. The unit square with x + 2 y fills the picture straight on; the

@@ -87,7 +87,7 @@ std::optional<ArrowSpec> readArrows(const std::string& file, const TomlTableRead
   ArrowSpec spec;
   spec.where = reader.location(*node);
   const std::optional<std::string> field = reader.nonEmptyString("field");
-  if (!field) reader.failMissing("field", "field = \"velocity\" (a $NodeData view of 3 components)");
+  if (!field) reader.failMissing("field", "field = \"velocity\" (a view of 3 components)");
   spec.field = *field;
   if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
   if (auto count = reader.integer("max_count", 1, kMaxArrowCount)) spec.maxCount = static_cast<int>(*count);

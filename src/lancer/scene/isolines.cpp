@@ -24,7 +24,7 @@ std::optional<IsolineSpec> readIsolines(const std::string& file, const TomlTable
   IsolineSpec spec;
   spec.where = reader.location(*node);
   const std::optional<std::string> field = reader.nonEmptyString("field");
-  if (!field) reader.failMissing("field", "field = \"temperature\" (a $NodeData view's name)");
+  if (!field) reader.failMissing("field", "field = \"temperature\" (a view's name)");
   spec.field = *field;
   if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
   if (auto component = readFieldComponent(reader)) spec.component = *component;
