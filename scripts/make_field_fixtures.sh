@@ -40,6 +40,20 @@ log=$(gmsh tests/data/geo/field_square.geo -0 -setnumber elementData 1 -setnumbe
 if grep -q '^Error' <<<"$log" || [[ ! -s $out/element_tet10_v41_bin.msh ]]; then echo "$log" >&2; exit 1; fi
 rm -f tests/data/geo/field_square.geo_unrolled
 
+# Element data of 3 components: arrows stand at the elements' centroids (the square's triangles,
+# and the split second-order skin faces of the tet10 cube, one arrow per drawn element face).
+log=$(gmsh tests/data/geo/field_square.geo -0 -setnumber vector 1 -setnumber elementData 1 \
+  -setstring out "$out/element_vector_v41_bin.msh" -setnumber Mesh.MshFileVersion 4.1 -setnumber Mesh.Binary 1 2>&1)
+if grep -q '^Error' <<<"$log" || [[ ! -s $out/element_vector_v41_bin.msh ]]; then echo "$log" >&2; exit 1; fi
+log=$(gmsh tests/data/geo/field_square.geo -0 -setnumber vector 1 -setnumber elementData 1 -setnumber volume 1 \
+  -setstring out "$out/element_vector_tet10_v41_bin.msh" -setnumber Mesh.MshFileVersion 4.1 -setnumber Mesh.Binary 1 2>&1)
+if grep -q '^Error' <<<"$log" || [[ ! -s $out/element_vector_tet10_v41_bin.msh ]]; then echo "$log" >&2; exit 1; fi
+rm -f tests/data/geo/field_square.geo_unrolled
+
+# Element data of 3 x + y sampled at the centroids of a regular grid of quads (gmsh's Python API):
+# the closed form that isolines of element data are checked against.
+/usr/bin/python3 tests/data/geo/element_centroid_grid.py "$out/element_centroids_grid_v41_ascii.msh"
+
 # The example of examples/field.toml (the .geo names its output, beside it).
 log=$(cd examples/meshes && gmsh field_sphere.geo -0 2>&1)
 if grep -q '^Error' <<<"$log" || [[ ! -s examples/meshes/field_sphere.msh ]]; then echo "$log" >&2; exit 1; fi

@@ -24,6 +24,7 @@
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/render/renderer.hpp"
+#include "lancer/scene/clip_text.hpp"
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/gmsh_post_options.hpp"
 #include "lancer/scene/gmsh_view.hpp"
@@ -180,42 +181,6 @@ std::optional<double> numberOf(const std::string& text) {
   return value;
 }
 
-// --clip AXIS=VALUE (the side AXIS points to removed) or PX,PY,PZ,NX,NY,NZ (a point, the removed
-// side's normal): the plane as [[clip]] has it; checked with the other overrides.
-ClipSettings parseClip(const std::string& text) {
-  const auto fail = [&]() -> ClipSettings {
-    throw InputError(
-        SourceLocation{"--clip"},
-        fmt::format("'{}' is not a cutting plane: use AXIS=VALUE (x=0.5 removes x > 0.5, -z=0 "
-                    "removes z < 0) or PX,PY,PZ,NX,NY,NZ (a point on the plane, then the normal of "
-                    "the side removed)",
-                    text));
-  };
-  ClipSettings clip;
-  if (const std::size_t equals = text.find('='); equals != std::string::npos) {
-    const std::optional<UpAxis> axis = parseUpAxis(text.substr(0, equals));
-    const std::optional<double> value = numberOf(text.substr(equals + 1));
-    if (!axis || !value) return fail();
-    clip.normal = upVector(*axis);
-    const int index = static_cast<int>(*axis) % 3;
-    clip.point[index] = *value;
-    return clip;
-  }
-  double numbers[6];
-  std::size_t start = 0;
-  for (int i = 0; i < 6; ++i) {
-    const std::size_t comma = i < 5 ? text.find(',', start) : text.size();
-    if (comma == std::string::npos) return fail();
-    const std::optional<double> number = numberOf(text.substr(start, comma - start));
-    if (!number) return fail();
-    numbers[i] = *number;
-    start = comma + 1;
-  }
-  clip.point = {numbers[0], numbers[1], numbers[2]};
-  clip.normal = {numbers[3], numbers[4], numbers[5]};
-  return clip;
-}
-
 // --slice AXIS (through the volume's centre), AXIS=VALUE or PX,PY,PZ,NX,NY,NZ, as --clip's planes.
 SliceSpec parseSlice(const std::string& text) {
   SliceSpec slice;
@@ -224,7 +189,7 @@ SliceSpec parseSlice(const std::string& text) {
     return slice;
   }
   try {
-    const ClipSettings plane = parseClip(text);
+    const ClipSettings plane = clipFromText(text, SourceLocation{"--slice"});
     slice.point = plane.point;
     slice.normal = plane.normal;
   } catch (const InputError&) {
@@ -325,7 +290,7 @@ void applyVolumeOptions(const SceneOverrides& overrides, RenderOverrides& applie
   applied.isosurfaces = spec;
 }
 
-// --range, --legend, --isolines, --bands, --arrows and --clip turned into values; the renderer's
+// --log, --range, --legend, --isolines, --bands, --arrows and --clip turned into values; the renderer's
 // overrides check them (render_overrides.hpp).
 void applyAnnotationOptions(const SceneOverrides& overrides, RenderOverrides& applied) {
   if (!overrides.range.empty()) {
@@ -350,12 +315,15 @@ void applyAnnotationOptions(const SceneOverrides& overrides, RenderOverrides& ap
                                    "--legend-file FILE.png writes it to its own image)",
                                    overrides.legend));
   }
+  if (overrides.log) applied.scale = ColorScale::Log;
   applied.isolines = overrides.isolines;
   applied.bands = overrides.bands;
   applied.arrows = overrides.arrows;
-  for (const std::string& clip : overrides.clips) applied.clips.push_back(parseClip(clip));
+  for (const std::string& clip : overrides.clips)
+    applied.clips.push_back(clipFromText(clip, SourceLocation{"--clip"}));
   applyVolumeOptions(overrides, applied);
-  if (!overrides.colorMap.empty())
+  // Isosurfaces and field lines take the map when no mesh is coloured (render_overrides.cpp).
+  if (!overrides.colorMap.empty() && (!overrides.isosurfaces.empty() || !overrides.streamlines.empty()))
     applied.colorMap = colorMapFromText(overrides.colorMap, SourceLocation{"--color-map"});
 }
 
@@ -434,6 +402,11 @@ void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides) {
                   "The colours' range MIN:MAX (values outside are clamped); default: over every step")
       ->group(kResultsGroup);
   command
+      .add_flag("--log", overrides.log,
+                "The colours on a log scale, as scale = \"log\": the values must be > 0, or the range's "
+                "low end (--range MIN:MAX, MIN > 0)")
+      ->group(kResultsGroup);
+  command
       .add_option("--legend", overrides.legend,
                   "The colours' legend in the picture: right, bottom or none (render: a FILE name writes it "
                   "to its own image, as --legend-file)")
@@ -444,7 +417,9 @@ void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides) {
       ->group(kResultsGroup);
   command.add_option("--bands", overrides.bands, "Discrete colours: N equal bands of the range")
       ->group(kResultsGroup);
-  command.add_option("--arrows", overrides.arrows, "Arrows along a node vector field (3 components)")
+  command
+      .add_option("--arrows", overrides.arrows,
+                  "Arrows along a vector field (3 components; node, element or element-node data)")
       ->group(kResultsGroup);
 
   // Inside the volume: cuts of the volume elements, coloured by the field.

@@ -49,6 +49,7 @@ struct SceneOverrides {
   std::string look;             // --look studio|sky|sun
   // Annotations on every mesh (docs/annotations.md), as the scene keys name them:
   std::string range;               // --range MIN:MAX, the colour range
+  bool log = false;                // --log: the colours on a log scale
   std::string legend;              // --legend right|bottom|none, in the picture
   std::optional<int> isolines;     // --isolines N: lines of the --color-by field
   std::optional<int> bands;        // --bands N

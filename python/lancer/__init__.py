@@ -22,8 +22,10 @@ Camera.from_gmsh = staticmethod(camera_from_gmsh)
 
 def _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads, progress,
                sampler, max_depth, encoding=None, tonemap=None, exposure=None, denoise=None, integrator=None,
-               noise=None, look=None):
+               noise=None, look=None, results=None):
     arguments = _lancer._RenderArguments()
+    for name, value in (results or {}).items():
+        setattr(arguments, name, value)
     arguments.width = width
     arguments.height = height
     arguments.samples = samples
@@ -45,10 +47,16 @@ def _arguments(width, height, samples, shading, srgb, transparent_background, ed
     return arguments
 
 
+def _results(color_map, range, log, scale, legend, isolines, bands, arrows, clip):
+    return {"color_map": color_map, "range": range, "log": log, "scale": scale, "legend": legend,
+            "isolines": isolines, "bands": bands, "arrows": arrows, "clip": clip}
+
+
 def render(scene, width=None, height=None, samples=None, shading=None, srgb=None,
            transparent_background=None, edges=None, threads=0, progress=False, dtype="uint8",
            sampler=None, max_depth=None, encoding=None, tonemap=None, exposure=None, denoise=None,
-           integrator=None, noise=None, look=None):
+           integrator=None, noise=None, look=None, *, color_map=None, range=None, log=None, scale=None,
+           legend=None, isolines=None, bands=None, arrows=None, clip=None):
     """Renders a lancer.Scene, or the quick look of a lancer.Mesh (as `lancer render part.msh`).
 
     integrator: "whitted" (the default), "path" (path tracing) or "ao" (ambient occlusion); noise:
@@ -61,12 +69,19 @@ def render(scene, width=None, height=None, samples=None, shading=None, srgb=None
     (stops) and tonemap ("none", "filmic", "aces"); with dtype="float32", the linear floating-point
     RGBA radiance the renderer made, (H, W, 4), before exposure and tone curve. denoise=True filters
     the noise (docs/output.md). Releases the GIL; Ctrl-C raises KeyboardInterrupt within a tile's time.
+
+    Results, as the command line's options (docs/python.md), on every mesh coloured by a field
+    (Scene.quick_look's color_by=, or a scene file's color_by): color_map (a map's name or a list of
+    colours, --color-map), range=(low, high) (--range), log=True or scale="log" (--log), legend
+    ("right", "bottom" or "none", --legend), isolines=N (--isolines), bands=N (--bands); and on every
+    mesh, arrows="FIELD" (--arrows) and clip="x=0.5" or a list of planes (--clip).
     """
     if dtype not in ("uint8", "float32"):
         raise ValueError(f"dtype={dtype!r}: use 'uint8' (encoded, as the image files) or 'float32' (linear)")
     arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
                            progress, sampler, max_depth, encoding, tonemap, exposure, denoise, integrator,
-                           noise, look)
+                           noise, look, _results(color_map, range, log, scale, legend, isolines, bands,
+                                                 arrows, clip))
     array, info = _lancer._render(scene, arguments, dtype == "float32")
     return Image._wrap(array, srgb=info["srgb"], stats=info)
 
@@ -74,15 +89,19 @@ def render(scene, width=None, height=None, samples=None, shading=None, srgb=None
 def animate(scene, output, frames=None, fps=None, orbit=None, width=None, height=None, samples=None,
             shading=None, srgb=None, transparent_background=None, edges=None, threads=0, progress=False,
             loop=None, dither=None, palette=None, sampler=None, max_depth=None, encoding=None, tonemap=None,
-            exposure=None, denoise=None, over=None, integrator=None, noise=None, look=None, label=None):
+            exposure=None, denoise=None, over=None, integrator=None, noise=None, look=None, label=None, *,
+            color_map=None, range=None, log=None, scale=None, legend=None, isolines=None, bands=None,
+            arrows=None, clip=None):
     """Writes an orbit of the camera (orbit="camera") or of light K (orbit="light:K") as `lancer
     animate` does: an animated .gif, an animated .png, or numbered frames ("frame_%04d.png").
     over="steps": one frame per time step of the views the scene colours or warps by, in time order
     (frames=N: N frames evenly spaced in time, the steps between blended; one frame per step when the
     times repeat or decrease). label="t = {time:.3g} s" writes each frame's time (the time the file
     gives its step) and {step} into a corner, as --label does.
-    None keeps the scene's value (its [animation] table, else 36 frames at 12 fps, the camera)."""
+    None keeps the scene's value (its [animation] table, else 36 frames at 12 fps, the camera).
+    color_map, range, log, scale, legend, isolines, bands, arrows and clip: as render's."""
     arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
                            progress, sampler, max_depth, encoding, tonemap, exposure, denoise, integrator,
-                           noise, look)
+                           noise, look, _results(color_map, range, log, scale, legend, isolines, bands,
+                                                 arrows, clip))
     _lancer._animate(scene, str(output), arguments, frames, fps, orbit, loop, dither, palette, over, label)

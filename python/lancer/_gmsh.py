@@ -56,7 +56,7 @@ def _view_fields(gmsh, tag_to_index, node_count):
     """Every step of every view holding model data (gmsh.view.getModelData): node data as values per
     mesh node (NaN where the view gives none), element data as (element tags, values), element-node
     data as (element tags, nodes per element, values), each with its step index and time; and the
-    names of the views without model data (list-based views, read from .pos files)."""
+    tags of the views without model data (list-based views, read from .pos files)."""
     node_fields, element_fields, element_node_fields, list_views = [], [], [], []
     for view in gmsh.view.getTags():
         index = gmsh.view.getIndex(view)
@@ -66,8 +66,8 @@ def _view_fields(gmsh, tag_to_index, node_count):
             try:
                 data_type, tags, data, time, components = gmsh.view.getModelData(view, step)
             except Exception:  # a list-based view (no model data), or a step without data
-                if step == 0 and name not in list_views:
-                    list_views.append(name)
+                if step == 0 and view not in list_views:
+                    list_views.append(view)
                 continue
             components = int(components)
             if data_type not in ("NodeData", "ElementData", "ElementNodeData") or components <= 0 or len(tags) == 0:
@@ -97,8 +97,10 @@ def from_gmsh(dim=2, name=None):
     interfaces become faces as the .msh reader makes them. Physical groups and their names come
     along, and every step of each view with node, element or element-node data
     (gmsh.view.addModelData, a merged .msh result) becomes a field for color_by and warp, as the .msh
-    reader makes one of $NodeData, $ElementData and $ElementNodeData. List-based views (a merged .pos)
-    are named in a warning and left out. Call it after gmsh.model.mesh.generate(dim)."""
+    reader makes one of $NodeData, $ElementData and $ElementNodeData. List-based views (a merged .pos,
+    gmsh.view.addListData) are put on the mesh by their elements' coordinates as `lancer render
+    mesh.msh view.pos` puts a file's, each step an element-node field (their steps timed 0, 1, ...:
+    gmsh's API gives no list view's times). Call it after gmsh.model.mesh.generate(dim)."""
     if dim not in (2, 3):
         raise ValueError(f"dim={dim!r}: use 2 (surfaces) or 3 (surfaces and volumes)")
     gmsh = _gmsh()
@@ -137,13 +139,23 @@ def _from_gmsh(gmsh, dim, name):
             group_names[(group_dim, tag)] = group_name
     node_fields, element_fields, element_node_fields, list_views = _view_fields(gmsh, tag_to_index,
                                                                                  len(node_tags))
-    if list_views:
-        import warnings
-        warnings.warn(f"lancer.from_gmsh: the list-based views {', '.join(repr(v) for v in list_views)} (merged "
-                      f".pos files) are left out: render the .pos files with lancer itself (lancer render "
-                      f"mesh.msh view.pos), or save them as model data in gmsh", stacklevel=3)
-    return _lancer._mesh_from_elements(points, blocks, group_names, name or f"gmsh:{gmsh.model.getCurrent()}",
+    mesh = _lancer._mesh_from_elements(points, blocks, group_names, name or f"gmsh:{gmsh.model.getCurrent()}",
                                        node_fields, element_fields, element_node_fields)
+    if list_views:
+        _lancer._add_list_views(mesh, _list_views(gmsh, list_views), f"gmsh:{gmsh.model.getCurrent()} views")
+    return mesh
+
+
+def _list_views(gmsh, tags):
+    """(name, [(element code, element count, data), ...]) of each list-based view, as
+    gmsh.view.getListData gives them: per element, its nodes' x, y and z, then its values per step."""
+    views = []
+    for view in tags:
+        name = gmsh.option.getString(f"View[{gmsh.view.getIndex(view)}].Name")
+        codes, counts, data = gmsh.view.getListData(view)
+        views.append((name, [(code, int(count), np.asarray(values, dtype=float))
+                             for code, count, values in zip(codes, counts, data)]))
+    return views
 
 
 # The General.* options that make gmsh's view (lancer/scene/gmsh_view.hpp reads the same ones).

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "lancer/image/color_map.hpp"
 #include "lancer/mesh/mesh.hpp"
 #include "lancer/scene/scene_description.hpp"
 #include "lancer/scene/up_axis.hpp"
@@ -39,6 +40,9 @@ struct ResultKeywords {
 // value is an InputError with the scene file's message, a bad type a TypeError.
 void applyResultKeywords(MeshInstance& instance, const ResultKeywords& keywords);
 
+// color_map=: a map's name, or a list of two or more colours (ValueError, TypeError otherwise).
+ColorMap colorMapArgument(const py::object& map);
+
 // A threads= argument: 0 (every core) to kMaxThreads, else a ValueError saying so.
 void requireThreads(int threads);
 
@@ -49,5 +53,6 @@ void bindRender(py::module_& module);
 void bindAnimate(py::module_& module);
 void bindImage(py::module_& module);
 void bindVolume(py::module_& module);
+void bindListViews(py::module_& module);
 
 }  // namespace lancer::python

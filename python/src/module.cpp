@@ -11,4 +11,5 @@ PYBIND11_MODULE(_lancer, module) {
   lancer::python::bindAnimate(module);
   lancer::python::bindImage(module);
   lancer::python::bindVolume(module);
+  lancer::python::bindListViews(module);
 }

@@ -103,6 +103,7 @@ RenderOverrides renderOverridesFromArguments(const RenderArguments& arguments) {
           "noise={} is out of range: use a relative error greater than 0 and less than 1", *arguments.noise));
     overrides.noise = static_cast<float>(*arguments.noise);
   }
+  applyResultArguments(arguments, overrides);
   return overrides;
 }
 
@@ -203,7 +204,16 @@ void bindRender(py::module_& module) {
       .def_readwrite("transparent_background", &RenderArguments::transparentBackground)
       .def_readwrite("edges", &RenderArguments::edges)
       .def_readwrite("threads", &RenderArguments::threads)
-      .def_readwrite("progress", &RenderArguments::progress);
+      .def_readwrite("progress", &RenderArguments::progress)
+      .def_readwrite("color_map", &RenderArguments::colorMap)
+      .def_readwrite("range", &RenderArguments::range)
+      .def_readwrite("log", &RenderArguments::log)
+      .def_readwrite("scale", &RenderArguments::scale)
+      .def_readwrite("legend", &RenderArguments::legend)
+      .def_readwrite("isolines", &RenderArguments::isolines)
+      .def_readwrite("bands", &RenderArguments::bands)
+      .def_readwrite("arrows", &RenderArguments::arrows)
+      .def_readwrite("clip", &RenderArguments::clip);
 }
 
 }  // namespace lancer::python

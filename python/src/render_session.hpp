@@ -28,7 +28,20 @@ struct RenderArguments {
   std::optional<double> noise;
   int threads = 0;
   bool progress = false;
+  // The command line's result options on every field-coloured mesh (--color-map, --range, --log,
+  // --legend, --isolines, --bands), arrows of a vector field and cut planes (--arrows, --clip).
+  py::object colorMap;  // a map's name or a list of colours
+  std::optional<std::pair<double, double>> range;
+  std::optional<bool> log;
+  std::optional<std::string> scale;  // "linear" | "log"
+  std::optional<std::string> legend;
+  std::optional<int> isolines, bands;
+  std::optional<std::string> arrows;
+  py::object clip;  // a plane as text, or a list of them
 };
+
+// Checks render's and animate's result keywords and puts them into `overrides` (result_arguments.cpp).
+void applyResultArguments(const RenderArguments& arguments, RenderOverrides& overrides);
 
 // Checks the arguments' ranges and names (ValueError) and turns them into overrides.
 RenderOverrides renderOverridesFromArguments(const RenderArguments& arguments);

@@ -1,7 +1,11 @@
-// Scene.quick_look's result keywords (color_by=, isolines=, arrows=, legend=) read as a scene file's
-// [[mesh]] keys: each Python value becomes the TOML value the file would hold and goes through the
-// scene loader's own readers, so a bad value is refused with the message the file would get.
+// The result keywords: Scene.quick_look's (color_by=, isolines=, arrows=, legend=) read as a scene
+// file's [[mesh]] keys: each Python value becomes the TOML value the file would hold and goes through
+// the scene loader's own readers, so a bad value is refused with the message the file would get; and
+// render's and animate's (color_map=, range=, log=, ...), the command line's --color-map, --range,
+// --log, ..., checked where those are.
 #include <fmt/format.h>
+
+#include <pybind11/stl.h>
 
 #include <toml++/toml.h>
 
@@ -12,10 +16,14 @@
 #include <variant>
 
 #include "bindings.hpp"
+#include "lancer/image/color_map.hpp"
 #include "lancer/scene/arrows.hpp"
+#include "lancer/scene/clip_text.hpp"
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/isolines.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/render_overrides.hpp"
+#include "render_session.hpp"
 
 namespace lancer::python {
 namespace {
@@ -68,6 +76,87 @@ toml::table keyTable(const py::object& value, const std::string& name, std::stri
 }
 
 }  // namespace
+
+// color_map=: a map's name, or a list of two or more colours, each a str ('#000080', 'white') or an
+// (r, g, b) of numbers 0 to 1, as a scene file's `map` takes them.
+ColorMap colorMapArgument(const py::object& map) {
+  if (py::isinstance<py::str>(map)) {
+    const std::string name = map.cast<std::string>();
+    if (std::optional<ColorMap> named = ColorMap::named(name)) return *named;
+    throw py::value_error(fmt::format("color_map='{}': {}", name, unknownColorMapMessage(name)));
+  }
+  if (!py::isinstance<py::list>(map) && !py::isinstance<py::tuple>(map))
+    throw py::type_error(
+        "color_map= takes a map's name ('viridis', 'RdBu_r', 'gmsh:2') or a list of colours, e.g. "
+        "['#000080', 'white', '#800000']");
+  std::vector<Vec3> colors;
+  std::string name = "[";
+  for (const py::handle item : map) {
+    const std::size_t i = colors.size();
+    if (py::isinstance<py::str>(item)) {
+      const std::string text = item.cast<std::string>();
+      const std::optional<Vec3> color = parseColor(text);
+      if (!color)
+        throw py::value_error(fmt::format("color_map=[...]: item {}: {}", i, unknownColorMessage(text)));
+      colors.push_back(*color);
+      name += fmt::format("{}'{}'", i == 0 ? "" : ", ", text);
+      continue;
+    }
+    std::array<double, 3> rgb{NAN, NAN, NAN};
+    try {
+      rgb = item.cast<std::array<double, 3>>();
+    } catch (const py::cast_error&) {
+    }
+    if (!std::all_of(rgb.begin(), rgb.end(), [](double c) { return c >= 0 && c <= 1; }))
+      throw py::value_error(
+          fmt::format("color_map=[...]: item {} is {}: give a colour as '#rrggbb', '#rgb', a CSS "
+                      "name or (r, g, b) with each 0 to 1",
+                      i, py::repr(item).cast<std::string>()));
+    colors.push_back(toFloat(Vec3d{rgb[0], rgb[1], rgb[2]}));
+    name += fmt::format("{}({:g}, {:g}, {:g})", i == 0 ? "" : ", ", rgb[0], rgb[1], rgb[2]);
+  }
+  if (colors.size() < 2 || colors.size() > kMaxListColors)
+    throw py::value_error(
+        fmt::format("color_map= lists {} colours: give 2 to {}", colors.size(), kMaxListColors));
+  return ColorMap::fromColors(std::move(colors), name + "]");
+}
+
+void applyResultArguments(const RenderArguments& arguments, RenderOverrides& overrides) {
+  overrides.optionPrefix = "";  // messages name the keywords: "range must have min < max"
+  if (arguments.colorMap && !arguments.colorMap.is_none())
+    overrides.colorMap = colorMapArgument(arguments.colorMap);
+  if (arguments.scale && *arguments.scale != "linear" && *arguments.scale != "log")
+    throw py::value_error(fmt::format("scale='{}': use 'linear' or 'log'", *arguments.scale));
+  if (arguments.log && arguments.scale && *arguments.log != (*arguments.scale == "log"))
+    throw py::value_error("log and scale disagree: give one of them");
+  if (arguments.log) overrides.scale = *arguments.log ? ColorScale::Log : ColorScale::Linear;
+  if (arguments.scale) overrides.scale = *arguments.scale == "log" ? ColorScale::Log : ColorScale::Linear;
+  overrides.range = arguments.range;
+  if (arguments.legend) {
+    overrides.legend = enumFromName<LegendPlacement>(kLegendPlacementNames, *arguments.legend);
+    if (!overrides.legend)
+      throw py::value_error(fmt::format("legend='{}': use 'right', 'bottom' or 'none'", *arguments.legend));
+  }
+  overrides.isolines = arguments.isolines;
+  overrides.bands = arguments.bands;
+  if (arguments.arrows) {
+    if (arguments.arrows->empty()) throw py::value_error("arrows='': give the name of a vector field");
+    overrides.arrows = *arguments.arrows;
+  }
+  if (arguments.clip && !arguments.clip.is_none()) {
+    // One plane as text, or a list of them, as --clip takes them.
+    const bool one = py::isinstance<py::str>(arguments.clip);
+    if (!one && !py::isinstance<py::list>(arguments.clip) && !py::isinstance<py::tuple>(arguments.clip))
+      throw py::type_error("clip= takes a plane as text ('x=0.5', '0,0,0,1,0,0') or a list of them");
+    const py::list planes = one ? py::list(py::make_tuple(arguments.clip)) : py::list(arguments.clip);
+    for (const py::handle plane : planes) {
+      if (!py::isinstance<py::str>(plane))
+        throw py::type_error(fmt::format("clip=: {} is not a plane as text ('x=0.5', '0,0,0,1,0,0')",
+                                         py::repr(plane).cast<std::string>()));
+      overrides.clips.push_back(clipFromText(plane.cast<std::string>(), SourceLocation{"clip"}));
+    }
+  }
+}
 
 void applyResultKeywords(MeshInstance& instance, const ResultKeywords& keywords) {
   toml::table mesh;

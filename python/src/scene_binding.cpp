@@ -76,50 +76,6 @@ std::string describeCamera(const CameraSettings& camera) {
       camera.viewHeight ? fmt::format("{:g}", *camera.viewHeight) : "None");
 }
 
-// color_map=: a map's name, or a list of two or more colours, each a str ('#000080', 'white') or an
-// (r, g, b) of numbers 0 to 1, as a scene file's `map` takes them.
-ColorMap colorMapArgument(const py::object& map) {
-  if (py::isinstance<py::str>(map)) {
-    const std::string name = map.cast<std::string>();
-    if (std::optional<ColorMap> named = ColorMap::named(name)) return *named;
-    throw py::value_error(fmt::format("color_map='{}': {}", name, unknownColorMapMessage(name)));
-  }
-  if (!py::isinstance<py::list>(map) && !py::isinstance<py::tuple>(map))
-    throw py::type_error(
-        "color_map= takes a map's name ('viridis', 'RdBu_r', 'gmsh:2') or a list of colours, e.g. "
-        "['#000080', 'white', '#800000']");
-  std::vector<Vec3> colors;
-  std::string name = "[";
-  for (const py::handle item : map) {
-    const std::size_t i = colors.size();
-    if (py::isinstance<py::str>(item)) {
-      const std::string text = item.cast<std::string>();
-      const std::optional<Vec3> color = parseColor(text);
-      if (!color)
-        throw py::value_error(fmt::format("color_map=[...]: item {}: {}", i, unknownColorMessage(text)));
-      colors.push_back(*color);
-      name += fmt::format("{}'{}'", i == 0 ? "" : ", ", text);
-      continue;
-    }
-    std::array<double, 3> rgb{NAN, NAN, NAN};
-    try {
-      rgb = item.cast<std::array<double, 3>>();
-    } catch (const py::cast_error&) {
-    }
-    if (!std::all_of(rgb.begin(), rgb.end(), [](double c) { return c >= 0 && c <= 1; }))
-      throw py::value_error(
-          fmt::format("color_map=[...]: item {} is {}: give a colour as '#rrggbb', '#rgb', a CSS "
-                      "name or (r, g, b) with each 0 to 1",
-                      i, py::repr(item).cast<std::string>()));
-    colors.push_back(toFloat(Vec3d{rgb[0], rgb[1], rgb[2]}));
-    name += fmt::format("{}({:g}, {:g}, {:g})", i == 0 ? "" : ", ", rgb[0], rgb[1], rgb[2]);
-  }
-  if (colors.size() < 2 || colors.size() > kMaxListColors)
-    throw py::value_error(
-        fmt::format("color_map= lists {} colours: give 2 to {}", colors.size(), kMaxListColors));
-  return ColorMap::fromColors(std::move(colors), name + "]");
-}
-
 // color_by= of Scene.quick_look: the mesh coloured by one of its fields, as a scene file's
 // `color_by = {field, map, range, step}` does. The field's name is checked when the scene is built
 // (an InputError naming the fields the mesh has).

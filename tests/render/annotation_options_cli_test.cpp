@@ -1,4 +1,4 @@
-// The command line reaches what needed a scene file: --range, --legend, --isolines, --bands,
+// The command line reaches what needed a scene file: --log, --range, --legend, --isolines, --bands,
 // --arrows and --clip on the quick look give the picture a scene file with the same keys gives, the
 // values are checked where the scene file's are (exit 2, a message naming the option, no picture),
 // and --help lists the options in groups.
@@ -66,6 +66,36 @@ TEST(AnnotationOptionsCli, ArrowsStandOnTheModel) {
   EXPECT_GT(test::differingPixels(arrows, plain), 500);
 }
 
+TEST(AnnotationOptionsCli, LogIsTheSceneKey) {
+  const std::string square = test::dataFile("fields/node_xy_v41_bin.msh");
+  const test::ScratchFolder folder;
+  const Image options =
+      rendered(folder, quoted(square) + kSize + " --color-by temperature --log --range 0.03:3 --isolines 3",
+               "log.png");
+  folder.write("scene.toml",
+               sceneWith(square,
+                         "color_by = { field = \"temperature\", scale = \"log\", range = [0.03, 3] }\n"
+                         "isolines = { field = \"temperature\", count = 3 }"));
+  const Image scene = rendered(folder, quoted(folder.file("scene.toml")) + kSize, "scene.png");
+  EXPECT_EQ(test::differingPixels(options, scene), 0);
+  const Image linear = rendered(
+      folder, quoted(square) + kSize + " --color-by temperature --range 0.03:3 --isolines 3", "lin.png");
+  EXPECT_GT(test::differingPixels(options, linear), 1000);
+}
+
+TEST(AnnotationOptionsCli, IsolinesOfElementDataComeWithANote) {
+  const test::ScratchFolder folder;
+  const std::string grid = test::dataFile("fields/element_centroids_grid_v41_ascii.msh");
+  const test::CommandResult run =
+      test::runCli("render " + quoted(grid) + " --width 64 --height 64 --color-by f --isolines 5 -o " +
+                   quoted(folder.file("iso.png")) + " 2>&1");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(
+      run.output.find("--isolines: warning: isolines of element data \"f\" follow its mean at each vertex"),
+      std::string::npos)
+      << run.output;
+}
+
 TEST(AnnotationOptionsCli, LitPathTracedIsolinesDarkenTheSurface) {
   // Black lines under --look studio: the paint is the albedo, so a line is darker than the surface
   // beside it whatever the light. The unit square with x + 2 y fills the picture straight on; the
@@ -110,11 +140,16 @@ TEST(AnnotationOptionsCliBadInput, EachValueIsCheckedWithTheOptionsName) {
   expectRefused("--clip 0,0,0,0,0,0",
                 "--clip: error: a cutting plane needs a finite point and a normal other");
   expectRefused("--arrows nothing", "--arrows: error: arrows field \"nothing\" is not in");
+  // --log as scale = "log": the field az reaches 0 and below, the range must start above 0.
+  expectRefused("--log", "--log: error: color_by field \"az\" in ");
+  expectRefused("--log", "but --log needs values > 0: give a range whose low end is > 0, e.g. --range ");
+  expectRefused("--log", "or leave --log out");
+  expectRefused("--log --range 0:0.02", "--range: error: --range must have min > 0 with scale = \"log\"");
 }
 
 TEST(AnnotationOptionsCliBadInput, AFieldsAnnotationNeedsAColouredMesh) {
   const test::ScratchFolder folder;
-  for (const char* option : {"--isolines 4", "--bands 4", "--range 0:1", "--legend right"}) {
+  for (const char* option : {"--isolines 4", "--bands 4", "--range 0:1", "--legend right", "--log"}) {
     const test::CommandResult run = test::runCli("render " + quoted(kMagnet) + " " + option + " -o " +
                                                  quoted(folder.file("out.png")) + " 2>&1");
     EXPECT_EQ(run.exitCode, 2) << option;

@@ -3,6 +3,7 @@
 // bands split the surface into the asked number of colours.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
@@ -155,18 +156,120 @@ TEST(Bands, SplitTheSurfaceIntoTheAskedNumberOfColours) {
   EXPECT_LT(length(image.at(4, kSide - 5).rgb() - first), 1e-5f);
 }
 
-TEST(IsolinesBadInput, ElementDataSuggestsBands) {
+TEST(Isolines, ElementDataFollowsItsMeanAtTheVertices) {
+  // 3 x + y at the centroids of an 8 x 8 grid of quads (cell h = 1/8): its mean at an inner vertex is
+  // 3 x + y there, so the lines cross inner edges exactly on 3 x + y = v; at the border, where fewer
+  // elements meet, within a cell of it.
+  const Mesh mesh = readMsh(test::dataFile("fields/element_centroids_grid_v41_ascii.msh"));
+  ASSERT_EQ(mesh.fields.at(0).at, FieldAt::kElement);
+  IsolineSpec spec;
+  spec.field = "f";
+  spec.count = 7;
+  const ResolvedIsolines lines = resolveIsolines(spec, mesh);
+  EXPECT_TRUE(lines.fromElementData);
+  EXPECT_EQ(lines.at, FieldAt::kNode);
+  ASSERT_EQ(lines.vertexValue.size(), mesh.positions.size());
+  // The values spread over the element data's own range, 0.25 .. 3.75.
+  ASSERT_EQ(lines.values.size(), 7u);
+  EXPECT_NEAR(lines.values.front(), 0.25 + 3.5 * 0.5 / 7, 1e-5);
+  EXPECT_NEAR(lines.values.back(), 0.25 + 3.5 * 6.5 / 7, 1e-5);
+  const double h = 1.0 / 8, gradient = std::sqrt(10.0);
+  const auto inner = [&](std::uint32_t v) {
+    const Vec3d p = mesh.worldPosition(v);
+    return p.x > 1e-6 && p.x < 1 - 1e-6 && p.y > 1e-6 && p.y < 1 - 1e-6;
+  };
+  int innerCrossings = 0, borderCrossings = 0;
+  for (const MeshFace& face : mesh.faces)
+    for (int c = 0; c < face.cornerCount(); ++c) {
+      const std::uint32_t a = face.vertex[c], b = face.vertex[(c + 1) % face.cornerCount()];
+      const double fa = lines.vertexValue[a], fb = lines.vertexValue[b];
+      for (const float value : lines.values) {
+        if ((fa - value) * (fb - value) > 0 || fa == fb) continue;
+        const double t = (value - fa) / (fb - fa);
+        const Vec3d p = mesh.worldPosition(a) * (1 - t) + mesh.worldPosition(b) * t;
+        const double distance = std::abs(3 * p.x + p.y - value) / gradient;  // to the exact line
+        if (inner(a) && inner(b)) {
+          EXPECT_LT(distance, 1e-5) << p.x << ", " << p.y;
+          ++innerCrossings;
+        } else {
+          EXPECT_LT(distance, h) << p.x << ", " << p.y;
+          ++borderCrossings;
+        }
+      }
+    }
+  EXPECT_GT(innerCrossings, 50);
+  EXPECT_GT(borderCrossings, 0);
+  // Split second-order skin faces (10-node tetrahedra): a value at every vertex the faces use.
+  const Mesh tet10 = readMsh(test::dataFile("fields/element_tet10_v41_bin.msh"));
+  spec.field = "temperature";
+  const ResolvedIsolines skin = resolveIsolines(spec, tet10);
+  for (const MeshFace& face : tet10.faces)
+    for (int c = 0; c < face.cornerCount(); ++c) EXPECT_FALSE(std::isnan(skin.vertexValue[face.vertex[c]]));
+}
+
+TEST(Isolines, ElementDataLinesOnFlatQuadsLieOnTheClosedForm) {
+  // The grid's flat quads coloured per element, a red line at 3 x + y = 2 (the mean at the inner
+  // vertices is exact): only the line is red, along its closed form, not whole faces.
+  std::string text = R"(
+[render]
+width = 96
+height = 96
+background = [0, 0, 0]
+encoding = "linear"
+[camera]
+projection = "orthographic"
+position = [0.5, 0.5, 5]
+look_at = [0.5, 0.5, 0]
+up = [0, 1, 0]
+view_height = 1
+[ambient]
+intensity = [1, 1, 1]
+[[mesh]]
+file = "../fields/element_centroids_grid_v41_ascii.msh"
+shading = "flat"
+color_by = { field = "f", map = ["#0000ff", "#0000ff"] }
+isolines = { field = "f", values = [2.0], color = [1, 0, 0], width = 2 }
+)";
+  const Image image = test::renderScene(parseScene(text, test::dataFile("render/isolines.toml")));
+  int rows = 0;
+  double red = 0;
+  for (int j = 0; j < kSide; ++j) {
+    const double y = 1 - (j + 0.5) / kSide, x = (2 - y) / 3;
+    for (int i = 0; i < kSide; ++i) red += image.at(i, j).r;
+    if (y < 0.2 || y > 0.8) continue;
+    const double exactColumn = x * kSide - 0.5;
+    double sum = 0, weighted = 0;
+    for (int i = 0; i < kSide; ++i) {
+      if (std::abs(i - exactColumn) > 6) continue;
+      sum += image.at(i, j).r;
+      weighted += image.at(i, j).r * i;
+    }
+    ASSERT_GT(sum, 0) << "row " << j;
+    EXPECT_NEAR(weighted / sum, exactColumn, 0.1) << "row " << j;
+    ++rows;
+  }
+  EXPECT_GT(rows, 50);
+  // A line 2 pixels wide across the gradient (3, 1) covers 2 sqrt(10) / 3 pixels of each row.
+  EXPECT_NEAR(red / kSide, 2 * std::sqrt(10.0) / 3, 0.3);
+}
+
+TEST(Isolines, ElementDataGetsANote) {
   const std::string text = R"(
 [[mesh]]
-file = "../fields/element_xy_v41_bin.msh"
-isolines = { field = "temperature", count = 5 }
+file = "../fields/element_centroids_grid_v41_ascii.msh"
+color_by = { field = "f" }
+isolines = { field = "f", count = 5 }
 )";
   const SceneDescription description = parseScene(text, test::dataFile("render/isolines.toml"));
-  const std::string message = test::messageOf([&] { buildScene(description); });
-  EXPECT_NE(message.find("isolines.toml:4:12: error: isolines field \"temperature\" is element data"),
-            std::string::npos)
-      << message;
-  EXPECT_NE(message.find("color_by = { field = \"temperature\", bands = 8 }"), std::string::npos) << message;
+  const Scene scene = buildScene(description);
+  ASSERT_TRUE(scene.isolines.has_value());
+  const std::string expected =
+      "isolines.toml:5:12: warning: isolines of element data \"f\" follow its mean at "
+      "each vertex (of the elements around it)";
+  EXPECT_EQ(std::count_if(scene.warnings.begin(), scene.warnings.end(),
+                          [&](const std::string& w) { return w.find(expected) != std::string::npos; }),
+            1)
+      << (scene.warnings.empty() ? "" : scene.warnings.front());
 }
 
 TEST(IsolinesBadInput, UnknownFieldCountsAndKeys) {

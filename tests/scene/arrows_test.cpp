@@ -1,5 +1,6 @@
-// Arrows along a node vector field: placed one per occupied cell of a grid over the surface (not one
-// per node), at most max_count, built as closed triangle meshes of known size and length; bad input.
+// Arrows along a vector field: node data placed one per occupied cell of a grid over the surface
+// (not one per node), at most max_count; element data at each element's centroid; built as closed
+// triangle meshes of known size and length; bad input.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -111,6 +112,60 @@ arrows = { field = "temperature", max_count = 8, color = [1, 0, 0] }
   EXPECT_EQ(scene.appearance.materials.back().kd, (Vec3{1, 0, 0}));
 }
 
+// The base and the tip of each arrow of an arrow mesh (appendArrow's last two vertices).
+std::vector<std::pair<Vec3d, Vec3d>> arrowBasesAndTips(const Mesh& arrows) {
+  const int perArrow = 3 * kArrowSides + 2;
+  std::vector<std::pair<Vec3d, Vec3d>> out;
+  for (std::size_t a = 0; a < arrows.positions.size() / perArrow; ++a)
+    out.emplace_back(arrows.worldPosition(static_cast<std::uint32_t>(a * perArrow + 3 * kArrowSides)),
+                     arrows.worldPosition(static_cast<std::uint32_t>(a * perArrow + 3 * kArrowSides + 1)));
+  return out;
+}
+
+TEST(Arrows, ElementDataStandsAtEachElementsCentroid) {
+  // gmsh's (x, 2 y, 2) per triangle: one arrow per triangle, at its centroid, along its value.
+  const Mesh mesh = readMsh(test::dataFile("fields/element_vector_v41_bin.msh"));
+  ASSERT_EQ(mesh.fields.at(0).at, FieldAt::kElement);
+  ArrowSpec spec;
+  spec.field = "temperature";
+  const auto arrows = arrowBasesAndTips(arrowMesh(spec, mesh));
+  ASSERT_EQ(arrows.size(), mesh.faces.size());
+  std::set<std::uint32_t> faces;
+  for (const auto& [base, tip] : arrows) {
+    std::uint32_t found = kNoVertex;
+    for (std::uint32_t f = 0; f < mesh.faces.size(); ++f) {
+      Vec3d centroid{0, 0, 0};
+      for (int c = 0; c < 3; ++c)
+        centroid = centroid + mesh.worldPosition(mesh.faces[f].vertex[c]) * (1.0 / 3);
+      if (length(centroid - base) < 1e-6) found = f;
+    }
+    ASSERT_NE(found, kNoVertex) << "an arrow stands at no triangle's centroid";
+    faces.insert(found);
+    const float* value = &mesh.fields[0].values[found * 3];
+    const Vec3d expected = normalize(Vec3d{value[0], value[1], value[2]});
+    EXPECT_NEAR(dot(normalize(tip - base), expected), 1.0, 1e-5);
+  }
+  EXPECT_EQ(faces.size(), mesh.faces.size());
+}
+
+TEST(Arrows, ElementDataOnSecondOrderSkinsGivesOneArrowPerElementFace) {
+  // 10-node tetrahedra: each skin face is drawn as four triangles, and carries one arrow.
+  const Mesh mesh = readMsh(test::dataFile("fields/element_vector_tet10_v41_bin.msh"));
+  ASSERT_EQ(mesh.source.skinFaces * 4, mesh.faces.size());
+  ArrowSpec spec;
+  spec.field = "temperature";
+  const auto arrows = arrowBasesAndTips(arrowMesh(spec, mesh));
+  EXPECT_EQ(arrows.size(), mesh.source.skinFaces);
+  // Each on the cube's surface, at the centroid of a skin face (not at a corner of its four parts).
+  for (const auto& [base, tip] : arrows) {
+    const double toSurface = std::min({base.x, base.y, base.z, 1 - base.x, 1 - base.y, 1 - base.z});
+    EXPECT_NEAR(toSurface, 0.0, 1e-6);
+  }
+  // Beyond max_count, the grid thins them as it thins node arrows.
+  spec.maxCount = 10;
+  EXPECT_LE(arrowBasesAndTips(arrowMesh(spec, mesh)).size(), 10u);
+}
+
 TEST(ArrowsBadInput, ScalarFieldsCountsAndScale) {
   const std::string scalar = R"(
 [[mesh]]
@@ -121,10 +176,20 @@ arrows = { field = "temperature" }
   const std::string message = test::messageOf([&] { buildScene(description); });
   EXPECT_NE(
       message.find(
-          "arrows.toml:4:10: error: arrows field \"temperature\" must be node or element-node data of 3 "
-          "components (a vector per node), but it is node data of 1 component"),
+          "arrows.toml:4:10: error: arrows field \"temperature\" must be a vector of 3 components (node, "
+          "element or element-node data), but it is node data of 1 component"),
       std::string::npos)
       << message;
+  const std::string elementScalar = R"(
+[[mesh]]
+file = "../fields/element_xy_v41_bin.msh"
+arrows = { field = "temperature" }
+)";
+  const SceneDescription elements = parseScene(elementScalar, test::dataFile("render/arrows.toml"));
+  EXPECT_NE(test::messageOf([&] { buildScene(elements); })
+                .find("must be a vector of 3 components (node, element or element-node data), but it is "
+                      "element data of 1 component"),
+            std::string::npos);
   test::expectSceneErrorContains("[[mesh]]\nfile = \"a.msh\"\narrows = { field = \"v\", max_count = 0 }\n",
                                  "mesh[0].arrows.max_count");
   test::expectSceneErrorContains(

@@ -134,6 +134,8 @@ namespace {
 bool needsCornerWeights(const Scene& scene, std::uint32_t face) {
   const ShadingMode mode = scene.appearance.faceShading[face];
   if (mode != ShadingMode::Flat && mode != ShadingMode::Unlit) return true;
+  // Isolines read the field at the point (an element-data colour does not).
+  if (scene.isolines && scene.isolines->faceStyle[face] != 0) return true;
   if (!scene.fieldColors) return false;
   const std::uint8_t map = scene.fieldColors->faceColorMap[face];
   return map != 0 && (map & FieldColors::kPerFace) == 0;

@@ -224,6 +224,14 @@ void annotateScene(Scene& scene, const StepSelection& when, const std::vector<En
       scale = entry.coloring->scale;
     }
     ResolvedIsolines resolved = resolveIsolines(spec, *entry.fields, when, colorRange, scale);
+    if (resolved.fromElementData) {
+      const std::string note = formatInputWarning(
+          spec.where, fmt::format("isolines of element data \"{}\" follow its mean at each vertex (of the "
+                                  "elements around it), not the values of the elements themselves",
+                                  spec.field));
+      if (std::find(scene.warnings.begin(), scene.warnings.end(), note) == scene.warnings.end())
+        scene.warnings.push_back(note);
+    }
     if (!isolines) isolines.emplace(std::exchange(spareIsolines, IsolineOverlay{}));
     std::vector<Vec3> valueColors;  // color = "map": over the colours' range, else over the lines'
     if (spec.colorFromMap && !resolved.values.empty()) {

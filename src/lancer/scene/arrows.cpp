@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <unordered_map>
 
 #include "lancer/mesh/field_steps.hpp"
 #include "lancer/scene/color_by.hpp"
+#include "lancer/scene/face_elements.hpp"
 #include "lancer/scene/render_limits.hpp"
 
 namespace lancer {
@@ -85,7 +87,7 @@ std::optional<ArrowSpec> readArrows(const std::string& file, const TomlTableRead
   ArrowSpec spec;
   spec.where = reader.location(*node);
   const std::optional<std::string> field = reader.nonEmptyString("field");
-  if (!field) reader.failMissing("field", "field = \"velocity\" (a $NodeData view of 3 components)");
+  if (!field) reader.failMissing("field", "field = \"velocity\" (a view of 3 components)");
   spec.field = *field;
   if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
   if (auto count = reader.integer("max_count", 1, kMaxArrowCount)) spec.maxCount = static_cast<int>(*count);
@@ -104,60 +106,151 @@ std::optional<ArrowSpec> readArrows(const std::string& file, const TomlTableRead
   return spec;
 }
 
-ArrowPlacement placeArrows(const Mesh& mesh, const MeshField& field, int maxCount) {
-  ArrowPlacement placement;
-  std::vector<std::uint8_t> used(mesh.positions.size(), 0);
-  Aabb bounds;
-  double area = 0;
-  for (const MeshFace& face : mesh.faces) {
-    for (int c = 0; c < face.cornerCount(); ++c) {
-      used[face.vertex[c]] = 1;
-      bounds.extend(mesh.positions[face.vertex[c]]);
-    }
-    const Vec3 e1 = mesh.positions[face.vertex[1]] - mesh.positions[face.vertex[0]];
-    const Vec3 e2 = mesh.positions[face.vertex[2]] - mesh.positions[face.vertex[0]];
-    area += 0.5 * length(cross(e1, e2)) * (face.isQuad() ? 2 : 1);
-  }
-  std::vector<std::uint32_t> candidates;
-  for (std::uint32_t v = 0; v < used.size(); ++v)
-    if (used[v] && usable(vectorAt(field, v))) candidates.push_back(v);
-  if (candidates.empty() || area <= 0) return placement;
+namespace {
+
+// One per occupied cell of a grid of cubes over `lower`.., as fine as keeps the occupied cells at
+// most maxCount: in each, the point nearest the cell's centre. `points` in the mesh's local frame;
+// `area`: the surface's, which sets the first cell size.
+struct GridChoice {
+  double cellSize = 0;
+  std::vector<std::uint32_t> chosen;  // indices into the points, sorted
+};
+GridChoice chooseOnGrid(const std::vector<Vec3d>& points, const Vec3d& lower, double area, int maxCount) {
+  GridChoice choice;
+  if (points.empty() || area <= 0) return choice;
   // About maxCount cells of a surface of this area; coarser until the occupied ones are few enough.
   double cell = std::sqrt(area / maxCount);
   for (;;) {
     std::unordered_map<std::uint64_t, std::pair<double, std::uint32_t>> nearest;
-    for (const std::uint32_t v : candidates) {
-      const Vec3 p = mesh.positions[v] - bounds.lower;
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+      const Vec3d p = points[i] - lower;
       const double cx = std::floor(p.x / cell), cy = std::floor(p.y / cell), cz = std::floor(p.z / cell);
       const std::uint64_t key = (static_cast<std::uint64_t>(cx) << 42) ^
                                 (static_cast<std::uint64_t>(cy) << 21) ^ static_cast<std::uint64_t>(cz);
       const Vec3d centre{(cx + 0.5) * cell, (cy + 0.5) * cell, (cz + 0.5) * cell};
-      const double d = length(toDouble(p) - centre);
-      auto [it, inserted] = nearest.try_emplace(key, d, v);
-      if (!inserted && (d < it->second.first || (d == it->second.first && v < it->second.second)))
-        it->second = {d, v};
+      const double d = length(p - centre);
+      auto [it, inserted] = nearest.try_emplace(key, d, i);
+      if (!inserted && (d < it->second.first || (d == it->second.first && i < it->second.second)))
+        it->second = {d, i};
     }
     if (static_cast<int>(nearest.size()) <= maxCount) {
-      for (const auto& [key, chosen] : nearest) placement.vertices.push_back(chosen.second);
-      std::sort(placement.vertices.begin(), placement.vertices.end());
-      placement.cellSize = cell;
-      return placement;
+      for (const auto& [key, chosen] : nearest) choice.chosen.push_back(chosen.second);
+      std::sort(choice.chosen.begin(), choice.chosen.end());
+      choice.cellSize = cell;
+      return choice;
     }
     cell *= 1.15;
   }
+}
+
+double surfaceArea(const Mesh& mesh) {
+  double area = 0;
+  for (const MeshFace& face : mesh.faces) {
+    const Vec3 e1 = mesh.positions[face.vertex[1]] - mesh.positions[face.vertex[0]];
+    const Vec3 e2 = mesh.positions[face.vertex[2]] - mesh.positions[face.vertex[0]];
+    area += 0.5 * length(cross(e1, e2)) * (face.isQuad() ? 2 : 1);
+  }
+  return area;
+}
+
+// Where each arrow stands (world coordinates, before a warp) and which of the field's items gives
+// its vector: a vertex (node data) or an element's first face (element data).
+struct ArrowSites {
+  double cellSize = 0;
+  std::vector<std::uint32_t> items;
+  std::vector<Vec3d> bases;
+};
+
+// Element data: one arrow at each element's centroid (a volume's skin: each drawn face of its
+// elements); more elements than maxCount are thinned on the grid as vertices are.
+ArrowSites elementArrowSites(const Mesh& mesh, const MeshField& field, int maxCount,
+                             const std::vector<Vec3d>& positions, const FaceElements& elements) {
+  const ElementCentroids centroids = elementCentroids(mesh, elements, positions);
+  std::vector<Vec3d> points;
+  std::vector<std::uint32_t> elementOf;
+  Aabb bounds;
+  for (const Vec3& p : mesh.positions) bounds.extend(p);
+  for (std::uint32_t e = 0; e < elements.count(); ++e)
+    if (usable(vectorAt(field, elements.first[e]))) {
+      points.push_back(centroids.centroid[e]);
+      elementOf.push_back(e);
+    }
+  // Every element while they are few enough, the longest arrow then 0.9 of an element's mean size;
+  // else as many as the grid keeps.
+  const double area = surfaceArea(mesh);
+  GridChoice choice;
+  if (static_cast<int>(points.size()) <= maxCount) {
+    choice.chosen.resize(points.size());
+    std::iota(choice.chosen.begin(), choice.chosen.end(), 0u);
+    choice.cellSize = points.empty() ? 0 : std::sqrt(area / static_cast<double>(points.size()));
+  } else {
+    choice = chooseOnGrid(points, toDouble(bounds.lower), area, maxCount);
+  }
+  ArrowSites sites;
+  sites.cellSize = choice.cellSize;
+  for (const std::uint32_t i : choice.chosen) {
+    sites.items.push_back(elements.first[elementOf[i]]);
+    sites.bases.push_back(mesh.origin + points[i]);
+  }
+  return sites;
+}
+
+}  // namespace
+
+ArrowPlacement placeArrows(const Mesh& mesh, const MeshField& field, int maxCount) {
+  std::vector<std::uint8_t> used(mesh.positions.size(), 0);
+  Aabb bounds;
+  for (const MeshFace& face : mesh.faces)
+    for (int c = 0; c < face.cornerCount(); ++c) {
+      used[face.vertex[c]] = 1;
+      bounds.extend(mesh.positions[face.vertex[c]]);
+    }
+  std::vector<std::uint32_t> candidates;
+  std::vector<Vec3d> points;
+  for (std::uint32_t v = 0; v < used.size(); ++v)
+    if (used[v] && usable(vectorAt(field, v))) {
+      candidates.push_back(v);
+      points.push_back(toDouble(mesh.positions[v]));
+    }
+  const GridChoice choice = chooseOnGrid(points, toDouble(bounds.lower), surfaceArea(mesh), maxCount);
+  ArrowPlacement placement;
+  placement.cellSize = choice.cellSize;
+  for (const std::uint32_t i : choice.chosen) placement.vertices.push_back(candidates[i]);
+  return placement;
 }
 
 Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh, const StepSelection& when, const WarpSettings* warp) {
   // Element-node data stands at the nodes by the mean of what the elements give each one.
   const MeshField field =
       vertexMeans(mesh, meshFieldAt("arrows", spec.field, spec.step, mesh, when, spec.where));
-  if (field.at == FieldAt::kElement || field.components != 3)
+  if (field.components != 3)
     throw InputError(
         spec.where,
-        fmt::format("arrows field \"{}\" must be node or element-node data of 3 components "
-                    "(a vector per node), but it is {} data of {} component{}",
+        fmt::format("arrows field \"{}\" must be a vector of 3 components (node, element or "
+                    "element-node data), but it is {} data of {} component{}",
                     spec.field, fieldAtName(field.at), field.components, field.components == 1 ? "" : "s"));
-  const ArrowPlacement placement = placeArrows(mesh, field, spec.maxCount);
+  std::optional<MeshField> displacement;
+  if (warp)
+    displacement = vertexMeans(mesh, meshFieldAt("warp", warp->field, std::nullopt, mesh, when, warp->where));
+  const bool warped = displacement && displacement->components == 3;
+  // Where a vertex is drawn: moved by the warp where it gives a finite vector.
+  const auto drawnPosition = [&](std::uint32_t v) {
+    const Vec3d base = mesh.worldPosition(v);
+    if (!warped) return base;
+    const Vec3d moved = base + vectorAt(*displacement, v) * warp->factor;
+    return std::isfinite(moved.x) && std::isfinite(moved.y) && std::isfinite(moved.z) ? moved : base;
+  };
+  ArrowSites sites;
+  if (field.at == FieldAt::kElement) {
+    std::vector<Vec3d> local(mesh.positions.size());
+    for (std::uint32_t v = 0; v < local.size(); ++v) local[v] = drawnPosition(v) - mesh.origin;
+    sites = elementArrowSites(mesh, field, spec.maxCount, local, faceElements(mesh));
+  } else {
+    const ArrowPlacement placement = placeArrows(mesh, field, spec.maxCount);
+    sites.cellSize = placement.cellSize;
+    sites.items = placement.vertices;
+    for (const std::uint32_t v : placement.vertices) sites.bases.push_back(drawnPosition(v));
+  }
   // The longest arrow of the step shown, or of every step when they follow the scene's: an arrow's
   // length means the same magnitude in every frame of an animation.
   double largest = 0;
@@ -165,33 +258,25 @@ Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh, const StepSelection& whe
   if (!spec.step) steps = viewSteps(mesh, spec.field);
   for (const MeshField* step : steps) {
     // A step left in its file (mesh_field.hpp) is not read back for this, nor an element-node step
-    // averaged: its largest magnitude over every node, which the reader kept, stands in for the
-    // largest at the arrows' nodes.
+    // averaged: its largest magnitude over every item, which the reader kept, stands in for the
+    // largest at the arrows' items.
     if (step->isStored() || step->at == FieldAt::kCorner)
       largest = std::max(largest, componentRange(*step, FieldComponent{}).second);
     if (step->values.size() == field.values.size())
-      for (const std::uint32_t v : placement.vertices)
-        largest = std::max(largest, length(vectorAt(*step, v)));
+      for (const std::uint32_t item : sites.items) largest = std::max(largest, length(vectorAt(*step, item)));
   }
-  const double scale = spec.scale ? *spec.scale : (largest > 0 ? 0.9 * placement.cellSize / largest : 0);
-  std::optional<MeshField> displacement;
-  if (warp)
-    displacement = vertexMeans(mesh, meshFieldAt("warp", warp->field, std::nullopt, mesh, when, warp->where));
+  const double scale = spec.scale ? *spec.scale : (largest > 0 ? 0.9 * sites.cellSize / largest : 0);
   Mesh out;
   out.origin = mesh.origin;
   out.source.path = mesh.source.path;
   std::vector<float> magnitudes;
-  for (const std::uint32_t v : placement.vertices) {
-    const Vec3d vector = vectorAt(field, v);
+  for (std::size_t i = 0; i < sites.items.size(); ++i) {
+    const Vec3d vector = vectorAt(field, sites.items[i]);
     const double magnitude = length(vector);
-    const double arrowLength = spec.fixedLength ? 0.8 * placement.cellSize : scale * magnitude;
+    const double arrowLength = spec.fixedLength ? 0.8 * sites.cellSize : scale * magnitude;
     if (!(arrowLength > 0)) continue;
-    Vec3d base = mesh.worldPosition(v);
-    if (displacement && displacement->components == 3) {
-      const Vec3d moved = base + vectorAt(*displacement, v) * warp->factor;
-      if (std::isfinite(moved.x) && std::isfinite(moved.y) && std::isfinite(moved.z)) base = moved;
-    }
-    appendArrow(out, magnitudes, base, vector * (1 / magnitude), arrowLength, static_cast<float>(magnitude));
+    appendArrow(out, magnitudes, sites.bases[i], vector * (1 / magnitude), arrowLength,
+                static_cast<float>(magnitude));
   }
   out.facePhysicalTag.assign(out.faces.size(), 0);
   out.faceEntityTag.assign(out.faces.size(), 1);

@@ -29,9 +29,13 @@ ArrowPlacement placeArrows(const Mesh& mesh, const MeshField& field, int maxCoun
 
 // The arrows of `spec` on `mesh` at the step spec pins, else at the scene's `when`, as a closed
 // triangle mesh in the mesh's coordinates (same origin), with a node field "<field> magnitude" for
-// colouring by magnitude. Their automatic scale is the same at every step (the longest arrow over the
-// steps is 0.9 cells) unless a step is pinned. With `warp`, they stand on the deformed surface. An
-// InputError at spec.where when the field is not node data with 3 components.
+// colouring by magnitude. Node and element-node data (the latter averaged at the vertices) stand at
+// vertices placed as placeArrows says; element data stands at each element's centroid (of a volume
+// element, at the centroid of each of its drawn skin faces; the faces of a split second-order element
+// count once), thinned on the same grid. Their automatic scale is the same at every step (the longest
+// arrow over the steps is 0.9 cells, or of an element's mean size when every element has its arrow) unless a
+// step is pinned. With `warp`, they stand on the deformed surface. An InputError at spec.where when the field
+// does not have 3 components.
 Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh, const StepSelection& when = {},
                const WarpSettings* warp = nullptr);
 

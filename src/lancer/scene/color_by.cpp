@@ -306,17 +306,25 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
   const auto [low, high] = range;
   if (spec.scale == ColorScale::Log && !(low > 0)) {
     const std::string over = spec.perStepRange || spec.step ? "at the step shown" : "over every step";
+    // The scene key's words, or the option's that asked for the log scale.
+    const bool option = !spec.logOption.empty();
+    const bool cli = spec.logOption.starts_with("--");
+    const std::string log = option ? spec.logOption : "scale = \"log\"";
+    const std::string range = !option ? fmt::format("range = [{:.3g}, {:.3g}]", high * 1e-3, high)
+                              : cli   ? fmt::format("--range {:.3g}:{:.3g}", high * 1e-3, high)
+                                      : fmt::format("range=({:.3g}, {:.3g})", high * 1e-3, high);
+    const std::string linear = !option ? "scale = \"linear\"" : fmt::format("leave {} out", spec.logOption);
     throw InputError(
-        spec.where,
+        option ? SourceLocation{spec.logOption} : spec.where,
         high > 0
-            ? fmt::format(
-                  "color_by field \"{}\" in {} has values down to {:g} ({}), but scale = \"log\" needs "
-                  "values > 0: give a range whose low end is > 0, e.g. range = [{:.3g}, {:.3g}] (values "
-                  "below it are drawn at it), or scale = \"linear\"",
-                  spec.field, mesh.source.path, low + 0.0, over, high * 1e-3, high)
+            ? fmt::format("color_by field \"{}\" in {} has values down to {:g} ({}), but {} needs "
+                          "values > 0: give a range whose low end is > 0, e.g. {} (values below it are "
+                          "drawn at it), or {}",
+                          spec.field, mesh.source.path, low + 0.0, over, log, range, linear)
             : fmt::format("color_by field \"{}\" in {} has no value above 0 (its greatest is {:g}, {}), so "
-                          "scale = \"log\" cannot show it: use scale = \"linear\"",
-                          spec.field, mesh.source.path, high + 0.0, over));  // + 0.0: -0 said as 0
+                          "{} cannot show it: {}",
+                          spec.field, mesh.source.path, high + 0.0, over, log,
+                          option ? linear : "use " + linear));  // + 0.0: -0 said as 0
   }
   coloring.low = low;
   coloring.high = high;

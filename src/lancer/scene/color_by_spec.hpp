@@ -24,10 +24,13 @@ struct ColorBy {
   bool perStepRange = false;                       // range = "step": the range of the step shown
   FieldComponent component;                        // component = "magnitude" (default), 0..8, "x", ...
   SourceLocation where;                            // the color_by value, for errors found at load
-  std::optional<std::string> title;                // the legend's; default: the field's name
-  std::string units;                               // the legend's, after the title
-  int bands = 0;                                   // > 0: that many discrete colour bands
-  std::optional<LegendPlacement> legend;           // legends in the picture; default: none
+  // The front end's option that asked for the log scale ("--log", Python's "log"), which its errors
+  // name instead of the scene key; empty for the key.
+  std::string logOption;
+  std::optional<std::string> title;       // the legend's; default: the field's name
+  std::string units;                      // the legend's, after the title
+  int bands = 0;                          // > 0: that many discrete colour bands
+  std::optional<LegendPlacement> legend;  // legends in the picture; default: none
   // False for gmsh's iso-values view (View.IntervalsType = 1, --gmsh-view): the range and legend
   // hold, the surface keeps its material, and the isolines take the map's colours.
   bool paintsSurface = true;

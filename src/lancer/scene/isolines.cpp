@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "lancer/scene/color_by.hpp"
+#include "lancer/scene/face_elements.hpp"
 #include "lancer/scene/render_limits.hpp"
 
 namespace lancer {
@@ -22,7 +24,7 @@ std::optional<IsolineSpec> readIsolines(const std::string& file, const TomlTable
   IsolineSpec spec;
   spec.where = reader.location(*node);
   const std::optional<std::string> field = reader.nonEmptyString("field");
-  if (!field) reader.failMissing("field", "field = \"temperature\" (a $NodeData view's name)");
+  if (!field) reader.failMissing("field", "field = \"temperature\" (a view's name)");
   spec.field = *field;
   if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
   if (auto component = readFieldComponent(reader)) spec.component = *component;
@@ -55,6 +57,34 @@ std::optional<IsolineSpec> readIsolines(const std::string& file, const TomlTable
   return spec;
 }
 
+std::vector<float> elementMeansAtVertices(const Mesh& mesh, const std::vector<float>& faceValues) {
+  const FaceElements elements = faceElements(mesh);
+  std::vector<double> sum(mesh.positions.size(), 0.0);
+  std::vector<std::uint32_t> count(mesh.positions.size(), 0);
+  const auto add = [&](std::uint32_t vertex, std::uint32_t face) {
+    const float value = faceValues[face];
+    if (std::isnan(value)) return;
+    sum[vertex] += value;
+    ++count[vertex];
+  };
+  if (elements.count() == mesh.faces.size()) {  // one face per element: each meets a vertex once
+    for (std::uint32_t f = 0; f < mesh.faces.size(); ++f)
+      for (int c = 0; c < mesh.faces[f].cornerCount(); ++c) add(mesh.faces[f].vertex[c], f);
+  } else {  // split second-order elements: each element once at each of its vertices
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> vertexElement;
+    for (std::uint32_t f = 0; f < mesh.faces.size(); ++f)
+      for (int c = 0; c < mesh.faces[f].cornerCount(); ++c)
+        vertexElement.emplace_back(mesh.faces[f].vertex[c], elements.ofFace[f]);
+    std::sort(vertexElement.begin(), vertexElement.end());
+    vertexElement.erase(std::unique(vertexElement.begin(), vertexElement.end()), vertexElement.end());
+    for (const auto& [vertex, element] : vertexElement) add(vertex, elements.first[element]);
+  }
+  std::vector<float> means(mesh.positions.size(), std::numeric_limits<float>::quiet_NaN());
+  for (std::size_t v = 0; v < means.size(); ++v)
+    if (count[v]) means[v] = static_cast<float>(sum[v] / count[v]);
+  return means;
+}
+
 std::vector<double> evenIsoValues(double low, double high, int count) {
   std::vector<double> values;
   values.reserve(static_cast<std::size_t>(std::max(count, 0)));
@@ -80,12 +110,6 @@ std::vector<double> gmshIsoValues(double low, double high, int count) {
 ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh, const StepSelection& when,
                                  std::optional<std::pair<double, double>> colorRange, ColorScale colorScale) {
   const MeshField field = meshFieldAt("isolines", spec.field, spec.step, mesh, when, spec.where);
-  if (field.at == FieldAt::kElement)
-    throw InputError(
-        spec.where, fmt::format("isolines field \"{}\" is element data ($ElementData: one value per element, "
-                                "constant over each face), so it has no curves to draw; show its steps as "
-                                "colours with color_by = {{ field = \"{}\", bands = 8 }} instead",
-                                spec.field, spec.field));
   if (const std::string problem = componentProblem(spec.component, field.components); !problem.empty())
     throw InputError(spec.where,
                      fmt::format("isolines field \"{}\" in {}: {}", spec.field, mesh.source.path, problem));
@@ -96,6 +120,13 @@ ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh, cons
   for (std::size_t i = 0; i < resolved.vertexValue.size(); ++i)
     resolved.vertexValue[i] =
         componentScalar(field.values.data() + i * components, field.components, spec.component);
+  if (field.at == FieldAt::kElement) {
+    // Constant over each element, the field has no curves of its own: they are drawn on its mean at
+    // each vertex, as ParaView's Cell Data to Point Data before Contour.
+    resolved.vertexValue = elementMeansAtVertices(mesh, resolved.vertexValue);
+    resolved.at = FieldAt::kNode;
+    resolved.fromElementData = true;
+  }
   std::vector<double> values = spec.values;
   const bool log = colorRange && colorScale == ColorScale::Log && colorRange->first > 0 &&
                    colorRange->second > colorRange->first;

@@ -23,15 +23,23 @@ struct ResolvedIsolines {
   FieldAt at = FieldAt::kNode;
   std::vector<float> vertexValue;
   std::vector<float> values;  // sorted, distinct
+  // Element data, drawn on its mean at the vertices (elementMeansAtVertices): worth a note.
+  bool fromElementData = false;
 };
+
+// Element data (one value per face) as one value per vertex: the mean of the values of the elements
+// around it, each element once (the faces of a split second-order element are one element), NaN
+// ignored; NaN where none gives one. ParaView's Cell Data to Point Data does the same.
+std::vector<float> elementMeansAtVertices(const Mesh& mesh, const std::vector<float>& faceValues);
 
 // The lines at the step spec pins, else at the scene's `when`. Without `values`, `count` values
 // spread over the range of that step (when pinned) or of every step (as the colours), or with
 // spec.colorRangeEnds over `colorRange` (the mesh's colour range, when it is coloured by the field).
 // With a log `colorScale` (the mesh's colours on a log scale), the values are spread evenly in
 // log(value) over `colorRange` (both ends included with colorRangeEnds, as gmsh's log scale does).
-// Node and element-node data only: element data (constant over each face) has no curves, an InputError at
-// spec.where that suggests bands; an unknown field, step or component as color_by says it.
+// Element data (constant over each face) has no curves of its own: its lines are those of its mean at
+// the vertices (elementMeansAtVertices), at values from its own range. An unknown field, step or
+// component is an InputError at spec.where as color_by says it.
 ResolvedIsolines resolveIsolines(const IsolineSpec& spec, const Mesh& mesh, const StepSelection& when = {},
                                  std::optional<std::pair<double, double>> colorRange = std::nullopt,
                                  ColorScale colorScale = ColorScale::Linear);

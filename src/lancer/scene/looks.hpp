@@ -17,7 +17,8 @@ inline constexpr std::array<std::string_view, 3> kLookNames = {"studio", "sky", 
 
 // Replaces the description's lights, ambient and environment by the look's, adds its floor (a
 // shadow catcher under the scene, across the camera's up), and renders with the path integrator
-// (64 samples per pixel, noise 0.02, unless the scene asked for more).
+// (64 samples per pixel, noise 0.02, unless the scene asked for more). Meshes coloured by a field
+// lose their materials' highlights (ks), so that their colours keep the map's saturation.
 void applyLook(SceneDescription& description, Look look);
 
 }  // namespace lancer

@@ -20,9 +20,11 @@ std::vector<MeshInstance*> colouredMeshes(SceneDescription& description, const s
   if (coloured.empty())
     throw InputError(
         SourceLocation{option},
-        fmt::format("{} goes with a field's colours, and no mesh is coloured: add --color-by FIELD "
-                    "(or color_by = {{ field = \"...\" }} in the scene's [[mesh]])",
-                    option));
+        fmt::format("{} goes with a field's colours, and no mesh is coloured: {} (or color_by = {{ field "
+                    "= \"...\" }} in the scene's [[mesh]])",
+                    option,
+                    option.starts_with("--") ? "add --color-by FIELD"
+                                             : "colour it with Scene.quick_look(mesh, color_by=FIELD)"));
   return coloured;
 }
 
@@ -74,9 +76,16 @@ void applyAnnotationOverrides(SceneDescription& description, const RenderOverrid
     ColorBy colors;
     colors.field = *field;
     colors.paintsSurface = false;
-    if (overrides.colorMap) colors.map = *overrides.colorMap;
     mesh.colorBy = colors;
   }
+  if (overrides.colorMap)
+    for (MeshInstance* mesh : colouredMeshes(description, name("color_map")))
+      mesh->colorBy->map = *overrides.colorMap;
+  if (overrides.scale)
+    for (MeshInstance* mesh : colouredMeshes(description, name("log"))) {
+      mesh->colorBy->scale = *overrides.scale;
+      mesh->colorBy->logOption = *overrides.scale == ColorScale::Log ? name("log") : std::string();
+    }
   if (overrides.range) {
     const auto [low, high] = *overrides.range;
     for (MeshInstance* mesh : colouredMeshes(description, name("range"))) {

@@ -31,7 +31,10 @@ struct RenderOverrides {
   bool edges = false;  // draw element edges on every mesh that does not set its own
   // Annotations (docs/annotations.md) for every mesh, checked here whoever set them: the colour
   // range and legend, isolines and bands of each field-coloured mesh (the lines follow its own
-  // field), arrows of a vector field, and cut planes after the scene's own.
+  // field), arrows of a vector field, and cut planes after the scene's own. The scale is set before
+  // the range is checked (a log scale's range starts above 0).
+  std::optional<ColorMap> colorMap;  // the map of every field-coloured mesh (Python's color_map=)
+  std::optional<ColorScale> scale;   // --log: the colours' scale of every field-coloured mesh
   std::optional<std::pair<double, double>> range;
   std::optional<LegendPlacement> legend;
   std::optional<int> isolines, bands;
@@ -43,8 +46,6 @@ struct RenderOverrides {
   std::optional<SkinStyle> skin;
   std::optional<IsosurfaceSpec> isosurfaces;
   std::optional<StreamlineSpec> streamlines;
-  // The colour map of isosurfaces and field lines on a mesh that has no colours of its own.
-  std::optional<ColorMap> colorMap;
   // How the front end spells its options before their names ("--range"), for messages.
   std::string optionPrefix = "--";
   // Names the samples check's messages give the value (the CLI's "--samples", Python's "samples").
