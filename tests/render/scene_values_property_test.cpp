@@ -93,74 +93,80 @@ struct Key {
   int components = 0;  // 0: a number; n: an array of n numbers
 };
 
-const std::vector<Key> kKeys = {
-    {"width", "8"},
-    {"height", "6"},
-    {"samples", "4"},
-    {"max_depth", "3"},
-    {"exposure", "0.5"},
-    {"bit_depth", "8"},
-    {"adaptive_threshold", "0.1"},
-    {"step", "1"},
-    {"max_bounces", "4"},
-    {"noise", "0.5"},
-    {"ao_distance", "2"},
-    {"point.position", "[5, 10, 3]", 3},
-    {"point.intensity", "[1, 1, 1]", 3},
-    {"point.attenuation", "[1, 0, 0]", 3},
-    {"sun.direction", "[-1, -1, -1]", 3},
-    {"sun.intensity", "[1, 1, 1]", 3},
-    {"sun.angle", "1"},
-    {"sphere.intensity", "[1, 1, 1]", 3},
-    {"sphere.radius", "0.5"},
-    {"rect.position", "[5, 10, 3]", 3},
-    {"rect.direction", "[0, -1, 0]", 3},
-    {"rect.width", "2"},
-    {"rect.height", "1"},
-    {"disk.direction", "[0, -1, 0]", 3},
-    {"disk.intensity", "[1, 1, 1]", 3},
-    {"disk.radius", "0.5"},
-    {"environment.zenith", "[0.2, 0.3, 0.5]", 3},
-    {"environment.horizon", "[0.8, 0.8, 0.8]", 3},
-    {"environment.ground", "[0.1, 0.1, 0.1]", 3},
-    {"environment.color", "", 3},  // a uniform sky in place of the gradient
-    {"environment.strength", "1"},
-    {"environment.rotation", "30"},
-    {"warp.factor", "2"},
-    {"color_by.step", "1"},
-    {"color_by.range", "[0, 10]", 2},
-    {"color_by.bands", "5"},
-    {"isolines.count", "4"},
-    {"isolines.width", "1.5"},
-    {"isolines.step", "1"},
-    {"arrows.max_count", "20"},
-    {"arrows.scale", "1"},
-    {"arrows.step", "1"},
-};
+const std::vector<Key>& keys() {
+  static const std::vector<Key> kKeys = {
+      {"width", "8"},
+      {"height", "6"},
+      {"samples", "4"},
+      {"max_depth", "3"},
+      {"exposure", "0.5"},
+      {"bit_depth", "8"},
+      {"adaptive_threshold", "0.1"},
+      {"step", "1"},
+      {"max_bounces", "4"},
+      {"noise", "0.5"},
+      {"ao_distance", "2"},
+      {"point.position", "[5, 10, 3]", 3},
+      {"point.intensity", "[1, 1, 1]", 3},
+      {"point.attenuation", "[1, 0, 0]", 3},
+      {"sun.direction", "[-1, -1, -1]", 3},
+      {"sun.intensity", "[1, 1, 1]", 3},
+      {"sun.angle", "1"},
+      {"sphere.intensity", "[1, 1, 1]", 3},
+      {"sphere.radius", "0.5"},
+      {"rect.position", "[5, 10, 3]", 3},
+      {"rect.direction", "[0, -1, 0]", 3},
+      {"rect.width", "2"},
+      {"rect.height", "1"},
+      {"disk.direction", "[0, -1, 0]", 3},
+      {"disk.intensity", "[1, 1, 1]", 3},
+      {"disk.radius", "0.5"},
+      {"environment.zenith", "[0.2, 0.3, 0.5]", 3},
+      {"environment.horizon", "[0.8, 0.8, 0.8]", 3},
+      {"environment.ground", "[0.1, 0.1, 0.1]", 3},
+      {"environment.color", "", 3},  // a uniform sky in place of the gradient
+      {"environment.strength", "1"},
+      {"environment.rotation", "30"},
+      {"warp.factor", "2"},
+      {"color_by.step", "1"},
+      {"color_by.range", "[0, 10]", 2},
+      {"color_by.bands", "5"},
+      {"isolines.count", "4"},
+      {"isolines.width", "1.5"},
+      {"isolines.step", "1"},
+      {"arrows.max_count", "20"},
+      {"arrows.scale", "1"},
+      {"arrows.step", "1"},
+  };
+  return kKeys;
+}
 
 // TOML spellings of extreme numbers: signed zero, tiny, past float, past double's denormals, NaN and
 // infinities (as TOML has them and as a string), integers past 32 and 64 bits.
-const std::vector<std::string> kValues = {"0",
-                                          "-0.0",
-                                          "-1",
-                                          "0.5",
-                                          "7",
-                                          "1024",
-                                          "1e-30",
-                                          "-1e-30",
-                                          "1e-310",
-                                          "3e38",
-                                          "1e39",
-                                          "-1e39",
-                                          "1e308",
-                                          "\"NaN\"",
-                                          "nan",
-                                          "inf",
-                                          "-inf",
-                                          "2147483648",
-                                          "4294967297",
-                                          "9223372036854775807",
-                                          "-9223372036854775808"};
+const std::vector<std::string>& extremeValues() {
+  static const std::vector<std::string> kValues = {"0",
+                                                   "-0.0",
+                                                   "-1",
+                                                   "0.5",
+                                                   "7",
+                                                   "1024",
+                                                   "1e-30",
+                                                   "-1e-30",
+                                                   "1e-310",
+                                                   "3e38",
+                                                   "1e39",
+                                                   "-1e39",
+                                                   "1e308",
+                                                   "\"NaN\"",
+                                                   "nan",
+                                                   "inf",
+                                                   "-inf",
+                                                   "2147483648",
+                                                   "4294967297",
+                                                   "9223372036854775807",
+                                                   "-9223372036854775808"};
+  return kValues;
+}
 
 const char* const kIntegrators[] = {"whitted", "path", "ao"};
 
@@ -184,7 +190,7 @@ std::string sceneText(const std::vector<Change>& changes, const char* integrator
   for (const Change& change : changes)
     if (change.key->name == "environment.color") sky = "color = @environment.color@";
   replace("environment.sky", sky);
-  for (const Key& key : kKeys) {
+  for (const Key& key : keys()) {
     if (text.find("@" + key.name + "@") == std::string::npos) continue;
     std::string value = key.name == "environment.color" ? "[0.5, 0.5, 0.5]" : key.value;
     for (const Change& change : changes) {
@@ -237,8 +243,8 @@ TEST(SceneValues, TheCleanSceneRendersWithEveryIntegrator) {
 
 TEST(SceneValues, EveryKeyTakesEveryExtremeValueAsAnInputErrorOrARender) {
   int trial = 0, rendered = 0;
-  for (const Key& key : kKeys)
-    for (const std::string& value : kValues)
+  for (const Key& key : keys())
+    for (const std::string& value : extremeValues())
       for (int component = -1; component < (key.components > 1 ? 1 : 0); ++component) {
         const char* integrator = kIntegrators[trial++ % 3];
         const std::string text = sceneText({{&key, value, component}}, integrator);
@@ -259,7 +265,7 @@ TEST(SceneValues, RandomCombinationsAreAnInputErrorOrARender) {
     std::vector<Change> changes;
     const int count = 2 + static_cast<int>(random() % 3);
     for (int c = 0; c < count; ++c) {
-      const Key& key = kKeys[random() % kKeys.size()];
+      const Key& key = keys()[random() % keys().size()];
       const int component = key.components > 0 ? static_cast<int>(random() % (key.components + 1)) - 1 : -1;
       // One image-size key at most, or a combination may ask for a large image.
       if ((key.name == "width" || key.name == "height" || key.name == "samples") &&
@@ -268,7 +274,7 @@ TEST(SceneValues, RandomCombinationsAreAnInputErrorOrARender) {
                    change.key->name == "samples";
           }))
         continue;
-      changes.push_back({&key, kValues[random() % kValues.size()], component});
+      changes.push_back({&key, extremeValues()[random() % extremeValues().size()], component});
     }
     const char* integrator = kIntegrators[trial % 3];
     const std::string outcome = outcomeOf(sceneText(changes, integrator));
@@ -288,8 +294,10 @@ TEST(SceneValues, TheCliExitsWithZeroOrTwo) {
       {"ao_distance", "inf"},           {"max_bounces", "9223372036854775807"}};
   int trial = 0;
   for (const auto& [name, value] : cases) {
-    const auto key = std::find_if(kKeys.begin(), kKeys.end(), [&](const Key& k) { return k.name == name; });
-    ASSERT_NE(key, kKeys.end()) << name;
+    const std::string& wanted = name;
+    const auto key =
+        std::find_if(keys().begin(), keys().end(), [&](const Key& k) { return k.name == wanted; });
+    ASSERT_NE(key, keys().end()) << name;
     const char* integrator = kIntegrators[trial++ % 3];
     folder.write("scene.toml", sceneText({{&*key, value, -1}}, integrator));
     const test::CommandResult result = test::runCli("render -q " + test::quoted(folder.file("scene.toml")) +
