@@ -14,6 +14,7 @@
 #include "lancer/image/environment_map.hpp"
 #include "lancer/image/exr_io.hpp"
 #include "lancer/util/input_error.hpp"
+#include "lancer/util/memory_budget.hpp"
 
 namespace {
 
@@ -27,6 +28,13 @@ const std::string& scratchFile() {
 }
 
 }  // namespace
+
+// A small budget: a header may ask for any size its chunks could hold, and the reader allocates and
+// fills that much before it finds the chunks corrupt; 64 MiB keeps each input quick.
+extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** /*argv*/) {
+  lancer::setMemoryBudget(64u << 20);
+  return 0;
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string& path = scratchFile();
