@@ -434,6 +434,15 @@ std::vector<Case> catalogue() {
                                 32768, 16384, 3, 1024, [](int, std::uint64_t start) { return start; }, ""));
        },
        "$LANCER render -q scene.toml -o out.png", nullptr},
+      {"map_exr_attribute_beyond_file", "an .exr map whose header attribute says 2 GiB (30 bytes)",
+       "`map = \"sky.exr\"`, an attribute of an unknown type sized 2147483647",
+       [](const Scratch& s) {
+         withScene(scene("integrator = \"path\"\n", "[environment]\nmap = \"sky.exr\"\n"))(s);
+         s.write("sky.exr", std::string("\x76\x2f\x31\x01\x02\x00\x00\x00comments\0weird\0\xff\xff\xff\x7f"
+                                        "abc",
+                                        30));
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
       // --- text drawn into the picture, bounded when it is read ---
       {"cli_label_huge_width", "a label whose format asks for a width of 1.5 billion",
        "`--label \"{time:1500000000}\"`",
