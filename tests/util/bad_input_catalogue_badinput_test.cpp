@@ -438,7 +438,8 @@ std::vector<Case> catalogue() {
        "`map = \"sky.exr\"`, an attribute of an unknown type sized 2147483647",
        [](const Scratch& s) {
          withScene(scene("integrator = \"path\"\n", "[environment]\nmap = \"sky.exr\"\n"))(s);
-         s.write("sky.exr", std::string("\x76\x2f\x31\x01\x02\x00\x00\x00comments\0weird\0\xff\xff\xff\x7f"
+         s.write("sky.exr", std::string("\x76\x2f\x31\x01\x02\x00\x00\x00"
+                                        "comments\0weird\0\xff\xff\xff\x7f"
                                         "abc",
                                         30));
        },
