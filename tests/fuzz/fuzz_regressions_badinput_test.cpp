@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "lancer/image/environment_map.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "lancer/util/input_error.hpp"
@@ -64,6 +65,17 @@ TEST(FuzzRegressions, SceneLoaderInputsFailCleanly) {
       (void)parseScene(readText(path), "/fuzz/scene.toml");
     } catch (const InputError& e) {
       EXPECT_EQ(e.location().file, "/fuzz/scene.toml");
+    }
+  }
+}
+
+TEST(FuzzRegressions, ExrMapInputsFailCleanly) {
+  for (const fs::path& path : regressionInputs("exr_map")) {
+    SCOPED_TRACE(path.filename().string());
+    try {
+      (void)readEnvironmentMap(path.string());
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.location().file, path.string());
     }
   }
 }

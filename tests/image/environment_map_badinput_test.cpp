@@ -60,6 +60,21 @@ class EnvironmentMapExr : public testing::Test {
   }
 };
 
+TEST_F(EnvironmentMapExr, HeaderAttributeLongerThanTheFileIsRefusedBeforeOpenExrAllocatesIt) {
+  // Found by fuzz_exr_map: 30 bytes whose attribute of an unknown type says 2 GiB; OpenEXR allocated
+  // its value at that size before reading it (fuzz/regressions/exr_map/attribute_of_2gib.exr).
+  std::string bytes("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
+  bytes += std::string("comments\0weird\0", 15) + std::string("\xff\xff\xff\x7f", 4) + "abc";
+  ASSERT_EQ(bytes.size(), 30u);
+  test::ScratchFolder folder;
+  folder.write("map.exr", bytes);
+  const std::string path = folder.file("map.exr");
+  EXPECT_EQ(test::messageOf([&] { readEnvironmentMap(path); }),
+            path + ": error: '" + path +
+                "' is truncated or corrupt: its header's attribute 'comments' (weird) says its value is "
+                "2147483647 bytes, but the file has 3 bytes after byte 27");
+}
+
 TEST_F(EnvironmentMapExr, FileThatEndsAfterItsChunkTableIsRefused) {
   // 32768 x 16384 with ZIP: a whole table of 1024 chunks (8 KiB), and no chunk after it.
   const std::string bytes = test::exrFile(

@@ -111,6 +111,40 @@ TEST(OutputCliBadInput, NonFinitePixelsAreAnErrorNotAPicture) {
   EXPECT_EQ(folder.entries(), (std::vector<std::string>{"bracket_coarse.msh", "floor.msh", "hot.toml"}));
 }
 
+// Every integrator goes through the one pixel loop and its one check: the same message, exit code 2.
+TEST(OutputCliBadInput, NonFinitePixelsAreTheSameErrorForEveryIntegrator) {
+  const test::ScratchFolder folder;
+  const std::vector<char> bytes = test::readFileBytes(kScene);
+  std::string scene(bytes.begin(), bytes.end());
+  folder.copy(test::dataFile("render/bracket_coarse.msh"), "bracket_coarse.msh");
+  folder.copy(test::dataFile("render/floor.msh"), "floor.msh");
+  // A background of 3e38 is a float, but four samples of it add up to infinity (the AO integrator
+  // shows the background where nothing occludes; the others where the rays miss).
+  folder.write("hot.toml", replaceAll(scene, "background = [1, 1, 1]", "background = [3e38, 3e38, 3e38]"));
+  const std::string expected = folder.file("hot.toml") +
+                               ": error: pixel 0,0 came out non-finite (rgb inf inf inf), so no image was "
+                               "written: look for extreme light intensities or material values, and trace "
+                               "the pixel with --pixel 0,0\n";
+  for (const char* integrator : {"whitted", "path", "ao"}) {
+    const test::CommandResult result =
+        test::runCli("render -q " + quoted(folder.file("hot.toml")) + " --integrator " + integrator +
+                     " --samples 4 --width 16 --height 12 -o " + quoted(folder.file("hot.png")));
+    EXPECT_EQ(result.exitCode, 2) << integrator << ": " << result.output;
+    EXPECT_EQ(result.output.substr(result.output.find(folder.file("hot.toml") + ": error:")), expected)
+        << integrator;
+  }
+  // Path tracing under three lights of 3e38, as the Whitted test above.
+  const std::string light = "\n[[light]]\nposition = [-4, 8, 5]\nintensity = [3e38, 3e38, 3e38]\n";
+  folder.write("lights.toml", scene + light + light + light);
+  const test::CommandResult path = test::runCli("render -q " + quoted(folder.file("lights.toml")) +
+                                                " --integrator path --samples 4 --width 32 --height 24 -o " +
+                                                quoted(folder.file("hot.png")));
+  EXPECT_EQ(path.exitCode, 2) << path.output;
+  EXPECT_NE(path.output.find("came out non-finite (rgb "), std::string::npos) << path.output;
+  EXPECT_EQ(folder.entries(),
+            (std::vector<std::string>{"bracket_coarse.msh", "floor.msh", "hot.toml", "lights.toml"}));
+}
+
 TEST(OutputCliBadInput, TheRendererThrowsForANonFinitePixel) {
   SceneDescription description = test::flatLitOnBlue(test::topDownView(8, 8, 4.0), {0.0, 0.0, 3.0});
   description.materials = {test::matteMaterial("grey", {0.2f, 0.2f, 0.2f}, {0.7f, 0.7f, 0.7f})};

@@ -252,6 +252,22 @@ std::vector<Case> catalogue() {
        withScene("[render]\nwidth = 4000\nheight = 4000\n[[mesh]]\nfile = \"part.msh\"\n"),
        "$LANCER render -q --max-memory 1M scene.toml -o out.png", nullptr},
 
+      {"scene_non_finite_pixels_whitted", "pixels that come out non-finite, integrator = \"whitted\"",
+       "`background = [3e38, 3e38, 3e38]`, `samples = 4` (the sum overflows)",
+       withScene(scene("background = [3e38, 3e38, 3e38]\nsamples = 4\nintegrator = \"whitted\"\n")),
+       "$LANCER render -q scene.toml -o out.png",
+       [](const Scratch& s) { EXPECT_FALSE(fs::exists(s.file("out.png"))); }},
+      {"scene_non_finite_pixels_path", "pixels that come out non-finite, integrator = \"path\"",
+       "`background = [3e38, 3e38, 3e38]`, `samples = 4` (the sum overflows)",
+       withScene(scene("background = [3e38, 3e38, 3e38]\nsamples = 4\nintegrator = \"path\"\n")),
+       "$LANCER render -q scene.toml -o out.png",
+       [](const Scratch& s) { EXPECT_FALSE(fs::exists(s.file("out.png"))); }},
+      {"scene_non_finite_pixels_ao", "pixels that come out non-finite, integrator = \"ao\"",
+       "`background = [3e38, 3e38, 3e38]`, `samples = 4` (the sum overflows)",
+       withScene(scene("background = [3e38, 3e38, 3e38]\nsamples = 4\nintegrator = \"ao\"\n")),
+       "$LANCER render -q scene.toml -o out.png",
+       [](const Scratch& s) { EXPECT_FALSE(fs::exists(s.file("out.png"))); }},
+
       // --- command line ---
       {"cli_no_subcommand", "no subcommand", "`lancer`", nullptr, "$LANCER", nullptr},
       {"cli_unknown_option", "unknown option", "`--widht 3`", withScene(scene()),
@@ -416,6 +432,16 @@ std::vector<Case> catalogue() {
          withScene(scene("integrator = \"path\"\n", "[environment]\nmap = \"sky.exr\"\n"))(s);
          s.write("sky.exr", test::exrFile(
                                 32768, 16384, 3, 1024, [](int, std::uint64_t start) { return start; }, ""));
+       },
+       "$LANCER render -q scene.toml -o out.png", nullptr},
+      {"map_exr_attribute_beyond_file", "an .exr map whose header attribute says 2 GiB (30 bytes)",
+       "`map = \"sky.exr\"`, an attribute of an unknown type sized 2147483647",
+       [](const Scratch& s) {
+         withScene(scene("integrator = \"path\"\n", "[environment]\nmap = \"sky.exr\"\n"))(s);
+         s.write("sky.exr", std::string("\x76\x2f\x31\x01\x02\x00\x00\x00"
+                                        "comments\0weird\0\xff\xff\xff\x7f"
+                                        "abc",
+                                        30));
        },
        "$LANCER render -q scene.toml -o out.png", nullptr},
       // --- text drawn into the picture, bounded when it is read ---

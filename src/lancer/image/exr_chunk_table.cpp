@@ -39,6 +39,35 @@ bool skipHeader(std::istream& in) {
 
 }  // namespace
 
+void checkExrHeaderSizes(const std::string& path, std::uint64_t fileBytes) {
+  constexpr std::uint32_t kMagic = 20000630;  // 76 2f 31 01
+  std::ifstream in(path, std::ios::binary);
+  std::uint32_t magic = 0, version = 0;
+  if (!readLittleEndian(in, magic) || !readLittleEndian(in, version) || magic != kMagic) return;
+  const bool multiPart = (version & kMultiPart) != 0;
+  // A single part's header ends with an empty name; a multi-part file's headers, each so ended, end
+  // with an empty header.
+  for (bool partStarts = true;;) {
+    std::string name, type;
+    if (!std::getline(in, name, '\0') || name.size() > 255) return;
+    if (name.empty()) {
+      if (!multiPart || partStarts) return;
+      partStarts = true;
+      continue;
+    }
+    partStarts = false;
+    std::int32_t size = 0;
+    if (!std::getline(in, type, '\0') || type.size() > 255 || !readLittleEndian(in, size)) return;
+    const auto at = static_cast<std::uint64_t>(in.tellg());
+    if (size < 0 || at + static_cast<std::uint64_t>(size) > fileBytes)
+      throw InputError(SourceLocation{path},
+                       fmt::format("'{}' is truncated or corrupt: its header's attribute '{}' ({}) says its "
+                                   "value is {} bytes, but the file has {} bytes after byte {}",
+                                   path, name, type, size, fileBytes - std::min(at, fileBytes), at));
+    if (!in.seekg(size, std::ios::cur)) return;
+  }
+}
+
 void checkExrScanLineChunks(const std::string& path, std::uint64_t fileBytes,
                             const ExrScanLineLayout& layout) {
   std::ifstream in(path, std::ios::binary);

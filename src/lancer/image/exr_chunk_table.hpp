@@ -1,5 +1,5 @@
-// The chunk table of an OpenEXR scan-line file, checked against the file's bytes before any pixel is
-// allocated: OpenEXR checks a chunk only as it decodes it, into an image of the header's size.
+// The header and chunk table of an OpenEXR file, checked against the file's bytes before OpenEXR
+// allocates what they say: it checks an attribute or a chunk only as it reads it.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +21,11 @@ struct ExrScanLineLayout {
 // bytes) has, after its header, a table of one offset per chunk, each to a chunk inside the file that
 // starts with the chunk's first row, no two chunks overlapping, and each large enough to hold its rows
 // at the compression's largest ratio. Multi-part, tiled and deep files are left to OpenEXR.
+// Throws InputError naming `path` when an attribute of the header (of any part) says its value is longer
+// than the bytes left in the file (`fileBytes`): OpenEXR allocates an attribute of a type it does not
+// know at the size the file gives (up to 2 GiB) before it reads it. Anything else is OpenEXR's to judge.
+void checkExrHeaderSizes(const std::string& path, std::uint64_t fileBytes);
+
 void checkExrScanLineChunks(const std::string& path, std::uint64_t fileBytes,
                             const ExrScanLineLayout& layout);
 

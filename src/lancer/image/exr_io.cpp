@@ -199,6 +199,9 @@ bool greyOnly(const std::string& path, const Imf::ChannelList& channels) {
 
 Image readExr(const std::string& path, ExrLayers* layers) {
   try {
+    std::error_code error;
+    if (const std::uint64_t fileBytes = std::filesystem::file_size(path, error); !error)
+      checkExrHeaderSizes(path, fileBytes);  // before OpenEXR allocates what the header says
     Imf::InputFile in(path.c_str(), 1);
     const Imath::Box2i window = in.header().dataWindow();
     const int width = window.max.x - window.min.x + 1, height = window.max.y - window.min.y + 1;

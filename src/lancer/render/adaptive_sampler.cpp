@@ -4,6 +4,8 @@
 #include <bit>
 #include <cmath>
 
+#include "lancer/render/tracer.hpp"
+
 namespace lancer {
 
 int adaptiveMaxDepth(int samples) {
@@ -12,27 +14,31 @@ int adaptiveMaxDepth(int samples) {
   return depth;
 }
 
-AdaptiveSampler::AdaptiveSampler(const Tracer& tracer, const Camera& camera, const RenderSettings& settings,
-                                 bool packets)
-    : tracer_(tracer),
+template <DeterministicIntegrator Integrator>
+AdaptiveSampler<Integrator>::AdaptiveSampler(const Integrator& integrator, const Camera& camera,
+                                             const RenderSettings& settings, bool packets)
+    : integrator_(integrator),
       camera_(camera),
-      parallelView_(camera.projection() == Projection::Orthographic),
       compareAlpha_(settings.transparentBackground),
-      packets_(packets),
+      packets_(packets && PacketIntegrator<Integrator>),
       threshold_(settings.adaptiveThreshold),
       depth_(adaptiveMaxDepth(settings.samples)),
       side_((1 << depth_) + 1),
       lattice_(static_cast<std::size_t>(side_ * side_)),
       latticeStamp_(static_cast<std::size_t>(side_ * side_), 0) {}
 
-AdaptiveSampler::Sample AdaptiveSampler::traceAt(float x, float y, TraceCounters& counters,
-                                                 std::uint64_t& samples) const {
+template <DeterministicIntegrator Integrator>
+typename AdaptiveSampler<Integrator>::Sample AdaptiveSampler<Integrator>::traceAt(
+    float x, float y, TraceCounters& counters, std::uint64_t& samples) const {
   ++samples;
-  const TraceResult result = tracer_.tracePrimary(camera_.generateRay(x, y), parallelView_, counters);
+  SampleStream unused(0, 0, 0);  // a deterministic integrator draws nothing from it
+  const TraceResult result = integrator_.li(camera_.generateRay(x, y), unused, counters);
   return {result.color, result.alpha};
 }
 
-bool AdaptiveSampler::differ(const Sample& a, const Sample& b, const Sample& c, const Sample& d) const {
+template <DeterministicIntegrator Integrator>
+bool AdaptiveSampler<Integrator>::differ(const Sample& a, const Sample& b, const Sample& c,
+                                         const Sample& d) const {
   const Vec3 high = max(max(a.color, b.color), max(c.color, d.color));
   const Vec3 low = min(min(a.color, b.color), min(c.color, d.color));
   if (maxComponent(high - low) > threshold_) return true;
@@ -41,8 +47,9 @@ bool AdaptiveSampler::differ(const Sample& a, const Sample& b, const Sample& c, 
              threshold_;
 }
 
-AdaptiveSampler::Sample& AdaptiveSampler::latticeSample(int i, int j, TraceCounters& counters,
-                                                        std::uint64_t& samples) {
+template <DeterministicIntegrator Integrator>
+typename AdaptiveSampler<Integrator>::Sample& AdaptiveSampler<Integrator>::latticeSample(
+    int i, int j, TraceCounters& counters, std::uint64_t& samples) {
   const auto index = static_cast<std::size_t>(j * side_ + i);
   if (latticeStamp_[index] != stamp_) {
     const float step = 1.0f / static_cast<float>(side_ - 1);
@@ -53,8 +60,10 @@ AdaptiveSampler::Sample& AdaptiveSampler::latticeSample(int i, int j, TraceCount
   return lattice_[index];
 }
 
-AdaptiveSampler::Sample AdaptiveSampler::square(int i, int j, int size, TraceCounters& counters,
-                                                std::uint64_t& samples) {
+template <DeterministicIntegrator Integrator>
+typename AdaptiveSampler<Integrator>::Sample AdaptiveSampler<Integrator>::square(int i, int j, int size,
+                                                                                 TraceCounters& counters,
+                                                                                 std::uint64_t& samples) {
   const Sample a = latticeSample(i, j, counters, samples);
   const Sample b = latticeSample(i + size, j, counters, samples);
   const Sample c = latticeSample(i, j + size, counters, samples);
@@ -71,8 +80,9 @@ AdaptiveSampler::Sample AdaptiveSampler::square(int i, int j, int size, TraceCou
           (s00.alpha + s10.alpha + s01.alpha + s11.alpha) * 0.25f};
 }
 
-void AdaptiveSampler::traceMidpoints(int i, int j, int size, TraceCounters& counters,
-                                     std::uint64_t& samples) {
+template <DeterministicIntegrator Integrator>
+void AdaptiveSampler<Integrator>::traceMidpoints(int i, int j, int size, TraceCounters& counters,
+                                                 std::uint64_t& samples) {
   const int half = size / 2;
   const int points[5][2] = {
       {i + half, j}, {i, j + half}, {i + half, j + half}, {i + size, j + half}, {i + half, j + size}};
@@ -90,7 +100,7 @@ void AdaptiveSampler::traceMidpoints(int i, int j, int size, TraceCounters& coun
   }
   if (std::popcount(active) < 2) return;  // one ray: latticeSample traces it as well
   TraceResult results[kPacketSize];
-  tracer_.tracePrimaries(rays, active, parallelView_, results, counters);
+  if constexpr (PacketIntegrator<Integrator>) integrator_.liPacket(rays, active, results, counters);
   for (std::uint32_t lanes = active; lanes != 0; lanes &= lanes - 1) {
     const int p = std::countr_zero(lanes);
     ++samples;
@@ -99,8 +109,9 @@ void AdaptiveSampler::traceMidpoints(int i, int j, int size, TraceCounters& coun
   }
 }
 
-Rgba AdaptiveSampler::shadePixel(int x, int y, const Sample corners[4], TraceCounters& counters,
-                                 std::uint64_t& samples) {
+template <DeterministicIntegrator Integrator>
+Rgba AdaptiveSampler<Integrator>::shadePixel(int x, int y, const Sample corners[4], TraceCounters& counters,
+                                             std::uint64_t& samples) {
   if (++stamp_ == 0) {  // wrapped: forget every stamp
     std::fill(latticeStamp_.begin(), latticeStamp_.end(), 0u);
     stamp_ = 1;
@@ -118,8 +129,9 @@ Rgba AdaptiveSampler::shadePixel(int x, int y, const Sample corners[4], TraceCou
   return toRgba(value.color, compareAlpha_ ? value.alpha : 1.0f);
 }
 
-void AdaptiveSampler::renderTile(int x0, int y0, int x1, int y1, Image& band, int bandY0,
-                                 TraceCounters& counters, std::uint64_t& samples) {
+template <DeterministicIntegrator Integrator>
+void AdaptiveSampler<Integrator>::renderTile(int x0, int y0, int x1, int y1, Image& band, int bandY0,
+                                             TraceCounters& counters, std::uint64_t& samples) {
   const int columns = x1 - x0 + 1, rows = y1 - y0 + 1;
   cornerRows_.resize(static_cast<std::size_t>(columns * rows));
   traceCorners(x0, y0, columns, rows, counters, samples);
@@ -133,8 +145,9 @@ void AdaptiveSampler::renderTile(int x0, int y0, int x1, int y1, Image& band, in
   }
 }
 
-void AdaptiveSampler::traceCorners(int x0, int y0, int columns, int rows, TraceCounters& counters,
-                                   std::uint64_t& samples) {
+template <DeterministicIntegrator Integrator>
+void AdaptiveSampler<Integrator>::traceCorners(int x0, int y0, int columns, int rows, TraceCounters& counters,
+                                               std::uint64_t& samples) {
   if (!packets_) {
     for (int j = 0; j < rows; ++j)
       for (int i = 0; i < columns; ++i)
@@ -155,7 +168,7 @@ void AdaptiveSampler::traceCorners(int x0, int y0, int columns, int rows, TraceC
         camera_.generateRay(static_cast<float>(x0 + i), static_cast<float>(y0 + j), rays[p]);
         active |= 1u << p;
       }
-      tracer_.tracePrimaries(rays, active, parallelView_, results, counters);
+      if constexpr (PacketIntegrator<Integrator>) integrator_.liPacket(rays, active, results, counters);
       for (int p = 0; p < kPacketSize; ++p) {
         if ((active >> p & 1u) == 0) continue;
         ++samples;
@@ -166,12 +179,15 @@ void AdaptiveSampler::traceCorners(int x0, int y0, int columns, int rows, TraceC
   }
 }
 
-Rgba AdaptiveSampler::renderPixel(int x, int y, TraceCounters& counters, std::uint64_t& samples) {
+template <DeterministicIntegrator Integrator>
+Rgba AdaptiveSampler<Integrator>::renderPixel(int x, int y, TraceCounters& counters, std::uint64_t& samples) {
   Sample corners[4];
   for (int c = 0; c < 4; ++c)
     corners[c] =
         traceAt(static_cast<float>(x + (c & 1)), static_cast<float>(y + (c >> 1)), counters, samples);
   return shadePixel(x, y, corners, counters, samples);
 }
+
+template class AdaptiveSampler<Tracer>;
 
 }  // namespace lancer

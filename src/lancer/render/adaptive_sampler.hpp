@@ -7,7 +7,8 @@
 
 #include "lancer/image/image.hpp"
 #include "lancer/render/camera.hpp"
-#include "lancer/render/tracer.hpp"
+#include "lancer/render/integrator.hpp"
+#include "lancer/scene/scene_description.hpp"
 
 namespace lancer {
 
@@ -21,10 +22,13 @@ int adaptiveMaxDepth(int samples);
 // a box filter over the pixel like the regular grid's. Corner samples are traced at fixed positions,
 // so the image is the same for any thread count: pixel corners are shared by the pixels of a tile
 // (neighbouring tiles each trace their common border), sub-pixel points by the squares of a pixel.
+// Defined for the Whitted tracer (adaptive_sampler.cpp instantiates it), the one deterministic integrator.
+template <DeterministicIntegrator Integrator>
 class AdaptiveSampler {
  public:
-  // `packets`: the pixel corners of a tile are traced in packets of 4x2 (Tracer::tracePrimaries).
-  AdaptiveSampler(const Tracer& tracer, const Camera& camera, const RenderSettings& settings,
+  // `packets`: with a PacketIntegrator, the pixel corners of a tile are traced in packets of 4x2, and
+  // the midpoints of a split square in one packet.
+  AdaptiveSampler(const Integrator& integrator, const Camera& camera, const RenderSettings& settings,
                   bool packets = false);
 
   // Renders pixels [x0, x1) x [y0, y1) into `band`, whose row 0 is image row bandY0; `samples`
@@ -52,9 +56,8 @@ class AdaptiveSampler {
   void traceMidpoints(int i, int j, int size, TraceCounters& counters, std::uint64_t& samples);
   bool differ(const Sample& a, const Sample& b, const Sample& c, const Sample& d) const;
 
-  const Tracer& tracer_;
+  const Integrator& integrator_;
   const Camera& camera_;
-  bool parallelView_;
   bool compareAlpha_;
   bool packets_;
   float threshold_;

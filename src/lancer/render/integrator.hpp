@@ -4,7 +4,9 @@
 
 #include <concepts>
 #include <cstdint>
+#include <span>
 
+#include "lancer/accel/ray_packet.hpp"
 #include "lancer/math/ray.hpp"
 #include "lancer/math/vec3.hpp"
 #include "lancer/render/sample_sequence.hpp"
@@ -26,11 +28,31 @@ struct TraceCounters {
 // the work). The integrators: the Whitted tracer (tracer.hpp, which ignores the stream), the path
 // tracer (path_integrator.hpp) and ambient occlusion (ao_integrator.hpp). They share the surface
 // records (surface_point.hpp), the scene queries (scene_queries.hpp), the lights and materials of
-// the Scene and its accelerator. Batching rays into packets is the renderer's business.
+// the Scene and its accelerator. One pixel loop drives them all (pixel_loop.hpp); what it may do
+// besides calling li, an integrator says with the capabilities below.
 template <typename I>
 concept RayIntegrator = requires(const I& integrator, const Ray& ray, SampleStream& samples,
                                  TraceCounters& counters) {
   { integrator.li(ray, samples, counters) } -> std::same_as<TraceResult>;
+};
+
+// An integrator that draws no random numbers (`static constexpr bool kDeterministic = true`): li
+// ignores the stream, so its pixels are sampled at the points of the settings' sampler (the regular
+// or stratified grid, or adaptive supersampling) rather than at the stream's, and `noise` does not
+// apply. The others are Monte Carlo estimators, sampled at the points of their pixels' streams.
+template <typename I>
+concept DeterministicIntegrator = RayIntegrator<I> && requires {
+  requires I::kDeterministic;
+};
+
+// A deterministic integrator that also traces up to kPacketSize camera rays at once (the lanes of
+// `active`), each with the result li gives it, to the bit: the pixel loop then traces the camera
+// rays of neighbouring pixels, or of neighbouring adaptive samples, as packets.
+template <typename I>
+concept PacketIntegrator = DeterministicIntegrator<I> &&
+    requires(const I& integrator, std::span<const Ray, kPacketSize> rays, std::uint32_t active,
+             std::span<TraceResult, kPacketSize> results, TraceCounters& counters) {
+  integrator.liPacket(rays, active, results, counters);
 };
 
 }  // namespace lancer

@@ -5,22 +5,20 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <exception>
 #include <limits>
 #include <mutex>
-#include <optional>
 #include <stdexcept>
 #include <thread>
 #include <vector>
 
 #include "lancer/image/tone_map.hpp"
-#include "lancer/render/adaptive_sampler.hpp"
 #include "lancer/render/denoiser.hpp"
+#include "lancer/render/pixel_loop.hpp"
 #include "lancer/render/pixel_sampler.hpp"
 #include "lancer/util/parallel_for.hpp"
 #include "lancer/util/stopwatch.hpp"
 #include "lancer/util/thread_count.hpp"
-
-#include <fmt/format.h>
 
 namespace lancer {
 namespace {
@@ -167,125 +165,6 @@ std::uint64_t bandMemoryBytes(int width, int height, int threads) {
 
 namespace {
 
-Rgba tracePixel(const Tracer& tracer, const Camera& camera, const RenderSettings& settings, int x, int y,
-                TraceCounters& counters, std::uint64_t& samplesTraced) {
-  if (settings.sampler == SamplerKind::Adaptive)
-    return AdaptiveSampler(tracer, camera, settings).renderPixel(x, y, counters, samplesTraced);
-  const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(settings.samples)))));
-  const bool parallelView = camera.projection() == Projection::Orthographic;
-  Vec3 sum{0, 0, 0};
-  float alphaSum = 0;
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      float dx = 0.5f, dy = 0.5f;
-      gridSampleOffset(settings.sampler, n, i, j, x, y, dx, dy);
-      const Ray ray = camera.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy);
-      const TraceResult result = tracer.tracePrimary(ray, parallelView, counters);
-      sum += result.color;
-      alphaSum += result.alpha;
-    }
-  }
-  samplesTraced += static_cast<std::uint64_t>(n * n);
-  const float weight = 1.0f / static_cast<float>(n * n);
-  const float alpha = settings.transparentBackground ? alphaSum * weight : 1.0f;
-  return toRgba(sum * weight, alpha);
-}
-
-// The pixels of the block [x0, x0 + 4) x [y0, y0 + 2) inside [.., x1) x [.., y1), as tracePixel
-// renders them: each sample of the 8 pixels traced as one packet (Tracer::tracePrimaries).
-void tracePixelBlock(const Tracer& tracer, const Camera& camera, const RenderSettings& settings, int x0,
-                     int y0, int x1, int y1, Image& band, int bandY0, TraceCounters& counters,
-                     std::uint64_t& samplesTraced) {
-  constexpr int kBlockWidth = 4;
-  static_assert(kPacketSize % kBlockWidth == 0);
-  const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(settings.samples)))));
-  const bool parallelView = camera.projection() == Projection::Orthographic;
-  std::uint32_t active = 0;
-  for (int p = 0; p < kPacketSize; ++p) {
-    if (x0 + p % kBlockWidth < x1 && y0 + p / kBlockWidth < y1) active |= 1u << p;
-  }
-  Vec3 sum[kPacketSize] = {};
-  float alphaSum[kPacketSize] = {};
-  Ray rays[kPacketSize];
-  TraceResult results[kPacketSize];
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      for (int p = 0; p < kPacketSize; ++p) {
-        if ((active >> p & 1u) == 0) continue;
-        const int x = x0 + p % kBlockWidth, y = y0 + p / kBlockWidth;
-        float dx = 0.5f, dy = 0.5f;
-        gridSampleOffset(settings.sampler, n, i, j, x, y, dx, dy);
-        camera.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy, rays[p]);
-      }
-      tracer.tracePrimaries(rays, active, parallelView, results, counters);
-      for (int p = 0; p < kPacketSize; ++p) {
-        if ((active >> p & 1u) == 0) continue;
-        sum[p] += results[p].color;
-        alphaSum[p] += results[p].alpha;
-      }
-    }
-  }
-  const float weight = 1.0f / static_cast<float>(n * n);
-  for (int p = 0; p < kPacketSize; ++p) {
-    if ((active >> p & 1u) == 0) continue;
-    samplesTraced += static_cast<std::uint64_t>(n * n);
-    const float alpha = settings.transparentBackground ? alphaSum[p] * weight : 1.0f;
-    band.at(x0 + p % kBlockWidth, y0 + p / kBlockWidth - bandY0) = toRgba(sum[p] * weight, alpha);
-  }
-}
-
-// The pixel of a sampling integrator: `settings.samples` samples of its stream, each at a point of the
-// pixel from the stream's first two dimensions (a box filter); with `settings.noise`, fewer once the
-// relative standard error of the pixel's luminance falls below it (checked every 8 samples from the
-// 16th; a dark pixel is measured against 1/64 of full scale, or it might never stop).
-template <RayIntegrator Integrator>
-Rgba samplePixel(const Integrator& integrator, const Camera& camera, const RenderSettings& settings, int x,
-                 int y, TraceCounters& counters, std::uint64_t& samplesTraced) {
-  constexpr int kBatch = 8, kMinSamples = 16;
-  constexpr double kDarkest = 1.0 / 64.0;
-  Vec3 sum{0, 0, 0};
-  float alphaSum = 0;
-  double luminanceSum = 0, luminanceSquares = 0;
-  int n = 0;
-  while (n < settings.samples) {
-    SampleStream samples(x, y, static_cast<std::uint32_t>(n));
-    float dx, dy;
-    samples.next2D(dx, dy);
-    const Ray ray = camera.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy);
-    const TraceResult result = integrator.li(ray, samples, counters);
-    sum += result.color;
-    alphaSum += result.alpha;
-    const double luminance = 0.2126 * result.color.x + 0.7152 * result.color.y + 0.0722 * result.color.z;
-    luminanceSum += luminance;
-    luminanceSquares += luminance * luminance;
-    ++n;
-    if (settings.noise > 0.0f && n >= kMinSamples && n % kBatch == 0) {
-      const double mean = luminanceSum / n;
-      const double variance = std::max(0.0, (luminanceSquares - luminanceSum * mean) / (n - 1));
-      if (std::sqrt(variance / n) <= settings.noise * std::max(mean, kDarkest)) break;
-    }
-  }
-  samplesTraced += static_cast<std::uint64_t>(n);
-  const float weight = 1.0f / static_cast<float>(n);
-  const float alpha = settings.transparentBackground ? alphaSum * weight : 1.0f;
-  return toRgba(sum * weight, alpha);
-}
-
-// The first pixel of `band` (rows from bandY0, columns [x0, x1), rows to y1) that is not finite.
-void checkFinite(const Image& band, int x0, int x1, int bandY0, int y1) {
-  for (int y = bandY0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x) {
-      const Rgba& pixel = band.at(x, y - bandY0);
-      if (!(std::isfinite(pixel.r) && std::isfinite(pixel.g) && std::isfinite(pixel.b) &&
-            std::isfinite(pixel.a)))
-        throw std::runtime_error(
-            fmt::format("pixel {},{} came out non-finite ({}, {}, {}): the scene gives the renderer infinite "
-                        "or undefined "
-                        "light (check intensities, emission and the environment map); no image was written",
-                        x, y, pixel.r, pixel.g, pixel.b));
-    }
-}
-
 template <typename Variant>
 auto makeIntegrator(const Scene& scene, const Accelerator& accelerator, const Camera& camera,
                     const RenderSettings& settings) {
@@ -314,14 +193,9 @@ Renderer::Renderer(const Scene& scene, const Accelerator& accelerator, const Cam
       integrator_(makeIntegrator<decltype(integrator_)>(scene, accelerator, camera, settings)) {}
 
 Rgba Renderer::renderPixel(int x, int y, TraceCounters& counters, std::uint64_t& samplesTraced) const {
-  if (const auto* tracer = std::get_if<Tracer>(&integrator_))
-    return tracePixel(*tracer, camera_, settings_, x, y, counters, samplesTraced);
   return std::visit(
       [&](const auto& integrator) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(integrator)>, Tracer>)
-          return Rgba{};
-        else
-          return samplePixel(integrator, camera_, settings_, x, y, counters, samplesTraced);
+        return PixelLoop(integrator, camera_, settings_, false).renderPixel(x, y, counters, samplesTraced);
       },
       integrator_);
 }
@@ -369,7 +243,6 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
                            BandRange range) const {
   using Clock = std::chrono::steady_clock;
   const Stopwatch stopwatch;
-  const Tracer* whitted = std::get_if<Tracer>(&integrator_);
   const Camera& camera = camera_;
   const RenderSettings& settings = settings_;
 
@@ -385,19 +258,17 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
   std::atomic<std::uint64_t> pixelsDone{0};
   std::atomic<std::uint64_t> raysTraced{0};
   std::atomic<std::uint64_t> samplesTraced{0};
-  // A worker's error (a non-finite pixel) stops the render and is thrown on this thread.
+  // A worker's exception stops the render and is rethrown on this thread.
   std::atomic<bool> failed{false};
-  std::mutex failureMutex;
-  std::string failure;
+  std::exception_ptr failure;
   const auto cancelled = [&] {
     return failed.load(std::memory_order_relaxed) ||
            (options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed));
   };
 
-  auto worker = [&] {
-    std::optional<AdaptiveSampler> adaptive;
-    if (whitted != nullptr && settings.sampler == SamplerKind::Adaptive)
-      adaptive.emplace(*whitted, camera, settings, options.packets);
+  // One dispatch on the integrator per worker; inside, the pixel loop of that integrator.
+  const auto traceTiles = [&](const auto& integrator) {
+    PixelLoop loop(integrator, camera, settings, options.packets);
     for (;;) {
       if (cancelled()) break;
       const int tile = nextTile.fetch_add(1, std::memory_order_relaxed);
@@ -411,33 +282,20 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
                 y1 = std::min(bandY0 + kTileSize, settings.height);
       TraceCounters counters;
       std::uint64_t samples = 0;
-      if (whitted == nullptr) {
-        for (int y = bandY0; y < y1; ++y)
-          for (int x = x0; x < x1; ++x) pixels->at(x, y - bandY0) = renderPixel(x, y, counters, samples);
-        try {
-          checkFinite(*pixels, x0, x1, bandY0, y1);
-        } catch (const std::runtime_error& error) {
-          const std::lock_guard lock(failureMutex);
-          if (!failed.exchange(true)) failure = error.what();
-          bands.stop();
-          break;
-        }
-      } else if (adaptive) {
-        adaptive->renderTile(x0, bandY0, x1, y1, *pixels, bandY0, counters, samples);
-      } else if (options.packets) {
-        for (int y = bandY0; y < y1; y += 2)
-          for (int x = x0; x < x1; x += 4)
-            tracePixelBlock(*whitted, camera, settings, x, y, x1, y1, *pixels, bandY0, counters, samples);
-      } else {
-        for (int y = bandY0; y < y1; ++y)
-          for (int x = x0; x < x1; ++x)
-            pixels->at(x, y - bandY0) = tracePixel(*whitted, camera, settings, x, y, counters, samples);
-      }
+      loop.renderTile(x0, bandY0, x1, y1, *pixels, bandY0, counters, samples);
       raysTraced.fetch_add(counters.rays, std::memory_order_relaxed);
       samplesTraced.fetch_add(samples, std::memory_order_relaxed);
       pixelsDone.fetch_add(static_cast<std::uint64_t>(x1 - x0) * static_cast<std::uint64_t>(y1 - bandY0),
                            std::memory_order_relaxed);
       bands.tileDone(band);
+    }
+  };
+  auto worker = [&] {
+    try {
+      std::visit(traceTiles, integrator_);
+    } catch (...) {
+      if (!failed.exchange(true)) failure = std::current_exception();
+      bands.stop();
     }
   };
 
@@ -473,7 +331,7 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
       }
     }
   }
-  if (failed.load()) throw std::runtime_error(failure);
+  if (failed.load()) std::rethrow_exception(failure);
   report();
 
   if (stats != nullptr) {

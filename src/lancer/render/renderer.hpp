@@ -36,8 +36,9 @@ struct RenderOptions {
   double progressInterval = 0.25;
   // Set by another thread (e.g. a signal handler) to stop early; the image is then incomplete.
   const std::atomic<bool>* cancel = nullptr;
-  // Primary rays of 4x2-pixel blocks and their shadow rays traced as packets (Tracer::tracePrimaries);
-  // false traces every ray on its own. The image is the same, to the bit.
+  // Camera rays of 4x2-pixel blocks traced as packets by the integrators that can (PacketIntegrator,
+  // integrator.hpp: the Whitted tracer, with its shadow rays); false traces every ray on its own.
+  // The image is the same, to the bit.
   bool packets = true;
 };
 
@@ -49,9 +50,10 @@ struct RenderStats {
   int peakBufferedRows = 0;  // most image rows held at once in bands being traced or waiting for the sink
 };
 
-// A pixel came out NaN or infinite: never a picture with holes reported as success. renderBands
-// throws it before the band reaches the sink; the CLI and Python report it as an InputError of the
-// scene (extreme intensities overflow float), exit code 2.
+// A pixel came out NaN or infinite, whatever the integrator: never a picture with holes reported as
+// success. renderBands checks every band, on the calling thread, before it reaches the sink, and
+// throws this for its first bad pixel in scan order (the same pixel for any thread count); the CLI
+// and Python report it as an InputError of the scene (extreme intensities overflow float), exit code 2.
 class NonFiniteRenderError : public std::runtime_error {
  public:
   NonFiniteRenderError(int x, int y, const Rgba& value);
@@ -106,8 +108,8 @@ class Renderer {
   const Camera& camera_;
   RenderSettings settings_;
   SceneQueries queries_;  // the feature buffers' camera rays, whatever the integrator
-  // The Whitted tracer keeps its own samplers (grid, adaptive) and packets; the others sample each
-  // pixel with their sample streams (sample_sequence.hpp), `samples` each, or fewer with `noise`.
+  // Chosen once per worker thread (std::visit), then driven by the pixel loop of its type
+  // (pixel_loop.hpp), which samples each pixel as the integrator's capabilities say.
   std::variant<Tracer, PathIntegrator, AoIntegrator> integrator_;
 };
 

@@ -39,9 +39,14 @@ class Tracer {
          const Camera& camera);
 
   // The integrator's answer (integrator.hpp): tracePrimary for the camera's projection. The Whitted
-  // model draws no random numbers.
+  // model draws no random numbers, and traces camera rays as packets (tracePrimaries).
+  static constexpr bool kDeterministic = true;
   TraceResult li(const Ray& ray, SampleStream& /*samples*/, TraceCounters& counters) const {
     return tracePrimary(ray, parallelView_, counters);
+  }
+  void liPacket(std::span<const Ray, kPacketSize> rays, std::uint32_t active,
+                std::span<TraceResult, kPacketSize> results, TraceCounters& counters) const {
+    tracePrimaries(rays, active, parallelView_, results, counters);
   }
   // `parallelView`: the ray is an orthographic primary ray, so the viewer is at infinity along it.
   TraceResult tracePrimary(const Ray& ray, bool parallelView, TraceCounters& counters) const;
