@@ -2,7 +2,7 @@
 // box of about a million tetrahedra, the scalar s and the vector b at the nodes), the time to build
 // the isosurface s = 0 against the BVH build over its triangles, and the time to trace 1,000 field
 // lines of b of 1,000 steps each. Medians of --reps runs, wall and CPU seconds of the process.
-//   volume_bench bench/data/volume_box.msh [--reps N] [--threads T]
+//   volume_timings bench/data/volume_box.msh [--reps N] [--threads T]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
