@@ -36,7 +36,7 @@ std::shared_ptr<PythonVolume> readVolume(const std::string& path, int threads) {
   return result;
 }
 
-py::array_t<double> probe(const PythonVolume& volume, const py::array& points, const std::string& field,
+py::array_t<double> probe(const PythonVolume& volume, const py::object& points, const std::string& field,
                           std::optional<int> step) {
   const auto checked = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(points);
   if (!checked ||

@@ -180,7 +180,7 @@ TEST(VolumeProbeCli, PrintsTheFieldAndSaysWhatIsWrong) {
   const test::CommandResult run =
       test::runCli("probe " + test::quoted(cube()) + " --at 0.1,0.2,0.3 --field f 2>&1");
   EXPECT_EQ(run.exitCode, 0) << run.output;
-  EXPECT_TRUE(test::contains(run.output, "f at (0.1, 0.2, 0.3), step 0 (t = 0): 1.4")) << run.output;
+  EXPECT_TRUE(test::contains(run.output, "f at (0.1, 0.2, 0.3), step 0 (t = 0): 1.3999")) << run.output;
   const test::CommandResult json =
       test::runCli("probe " + test::quoted(cube()) + " --at 0.5,0.5,0.5 --field u --json 2>&1");
   EXPECT_EQ(json.exitCode, 0) << json.output;

@@ -77,8 +77,19 @@ bool frameFlatScene(CameraSettings& camera, const Aabbd& worldBounds) {
   if (worldBounds.empty()) return false;
   const std::optional<PlanarView> view = planarView(worldBounds.extent());
   if (!view) return false;
-  camera.up = view->frame.up;
-  camera.viewFrom = view->frame.toViewer;
+  // An up the camera already has in the plane (a 3D model's, when only a slice of it is drawn) stays
+  // up: the plane is seen from the side that puts +x, else +y, to the right.
+  const Vec3d normal = view->frame.toViewer;
+  if (std::abs(dot(camera.up, normal)) < 1e-9 && length(camera.up) > 0) {
+    const Vec3d up = normalize(camera.up);
+    const Vec3d right = cross(normal * -1.0, up);
+    const double rightness = std::abs(right.x) > 1e-9 ? right.x : right.y;
+    camera.up = up;
+    camera.viewFrom = rightness >= 0 ? normal : normal * -1.0;
+  } else {
+    camera.up = view->frame.up;
+    camera.viewFrom = view->frame.toViewer;
+  }
   camera.projection = Projection::Orthographic;
   camera.fitBox = true;
   return true;

@@ -75,14 +75,12 @@ std::optional<PlanarView> planarView(const Vec3d& extent) {
   const double extents[3] = {extent.x, extent.y, extent.z};
   for (int axis : kPreference) {
     if (extents[axis] > kPlanarExtent * largest) continue;
-    // Right is +x where x lies in the plane: a y plane is seen from -y, so that z is up (the front
-    // view of a part or a section through the y axis).
-    static constexpr UpAxis kScreenUp[3] = {UpAxis::Z, UpAxis::Z, UpAxis::Y};
+    static constexpr UpAxis kScreenUp[3] = {UpAxis::Z, UpAxis::MinusZ, UpAxis::Y};
     PlanarView view;
     view.up = kScreenUp[axis];
     view.axis = axis;
     view.frame.up = upVector(view.up);
-    view.frame.toViewer = axis == 1 ? kAxes[1] * -1.0 : kAxes[axis];
+    view.frame.toViewer = kAxes[axis];
     view.frame.right = cross(-view.frame.toViewer, view.frame.up);
     return view;
   }

@@ -36,8 +36,8 @@ ViewFrame threeQuarterFrame(UpAxis axis);
 void applyUpAxis(CameraSettings& camera, UpAxis axis);
 
 // Rule 1 below, for any bounds of this extent: a flat box (one extent at most 1e-6 of the largest,
-// as gmsh's 2D models) is seen straight on (index 0, 1, 2: from +x with z up, from -y with z up, from
-// +z with y up); nothing for a box with depth (or no extent at all).
+// as gmsh's 2D models) is seen straight on from the + side of that axis (index 0, 1, 2); nothing for
+// a box with depth (or no extent at all).
 struct PlanarView {
   ViewFrame frame;
   UpAxis up = UpAxis::Y;  // the screen's up
@@ -47,7 +47,7 @@ std::optional<PlanarView> planarView(const Vec3d& extent);
 
 // What the quick look makes of a bare mesh (README "Quick look"):
 //  1. planar (one extent at most 1e-6 of the largest: gmsh's 2D models in the XY plane) -> seen straight
-//     on: a z plane from +z with y up, an x plane from +x with z up, a y plane from -y with z up;
+//     on from the + side of that axis: a z plane with y up, an x plane with z up, a y plane with -z up;
 //  2. else the axis with the most "base" area, faces lying flat (within 5 degrees) on or near (within
 //     5% of the largest extent) the two sides of the bounding box across it (the plate a part stands
 //     on, even with bolt heads below it; the ends of a cylinder), counted when
