@@ -33,6 +33,11 @@ class PosScanner {
   const char* numberStart() const { return numberStart_; }
   // Moves to `at` (a copy's way to describe a token it has passed; lines are not recounted).
   void seekTo(const char* at) { pos_ = at; }
+  // Moves to `at`, on `line` (where another scan of the same bytes stopped).
+  void seekTo(const char* at, std::int64_t line) {
+    pos_ = at;
+    line_ = line;
+  }
 
   // Skips whitespace and comments (the hot case, a number right here, costs two compares).
   void skipSpace() {
