@@ -266,7 +266,9 @@ class PosParser {
     const std::size_t elementBytes = std::max<std::size_t>(
         1, static_cast<std::size_t>(scan_.position() - state.firstElement) / kSampleElements);
     const auto bytesLeft = static_cast<std::size_t>(std::max(limit_ - scan_.position(), std::ptrdiff_t{0}));
-    const std::size_t elements = block.elementCount() + bytesLeft / elementBytes + 1;
+    // A quarter more than the mean says: elements later in the file may print shorter numbers, and
+    // outgrowing the reserve copies every value so far to fresh pages.
+    const std::size_t elements = block.elementCount() + bytesLeft / elementBytes * 5 / 4 + 1;
     const std::uint64_t bytes =
         saturatingProduct(elements, 3 * block.kind.nodes * sizeof(double) + valueCount * sizeof(float) + 8);
     if (allocated_ + bytes > memoryBudget()) return;  // grow by doubling, checked at each step
