@@ -59,6 +59,14 @@ class MshCursor {
   template <typename Int>
   Int readInt(const char* what) {
     skipWhitespace();
+    // One digit and a space (the node count of each $ElementNodeData record, the counts of the
+    // headers): no call to from_chars.
+    if (end_ - pos_ >= 2 && static_cast<unsigned char>(pos_[0] - '0') < 10 &&
+        static_cast<unsigned char>(pos_[1]) <= ' ') {
+      const auto digit = static_cast<Int>(pos_[0] - '0');
+      ++pos_;
+      return digit;
+    }
     Int value{};
     const auto [next, error] = std::from_chars(pos_, end_, value);
     if (error != std::errc() || !endsToken(next)) failNumber(what, error == std::errc::result_out_of_range);

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "lancer/mesh/msh/element_types.hpp"
+#include "lancer/util/huge_pages.hpp"
 
 namespace lancer {
 namespace {
@@ -253,6 +254,10 @@ void readElementNodeRecords(MshCursor& cursor, const MshFieldSection& section, c
   records.nodeCount.reserve(section.count);
   // A guess of three nodes a record (a triangle); the count was checked against the file's bytes.
   records.values.reserve(section.count * components * 3);
+  adviseHugePages(records.tags);
+  adviseHugePages(records.firstValue);
+  adviseHugePages(records.nodeCount);
+  adviseHugePages(records.values);
   DroppedElements dropped;
   for (std::uint64_t i = 0; i < section.count; ++i) {
     const char* recordAt = binary ? cursor.position() : cursor.tokenStart();
