@@ -11,6 +11,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "lancer/mesh/msh/text_number.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
@@ -36,7 +37,7 @@ class MshCursor {
 
   // --- text -------------------------------------------------------------------------------------
   void skipWhitespace() {
-    while (pos_ < end_ && static_cast<unsigned char>(*pos_) <= ' ') ++pos_;
+    while (pos_ < end_ && isTextSpace(*pos_)) ++pos_;
   }
   // Where the next token starts (for error locations).
   const char* tokenStart() {
@@ -52,7 +53,7 @@ class MshCursor {
   std::string_view token() {
     skipWhitespace();
     const char* start = pos_;
-    while (pos_<end_&& static_cast<unsigned char>(*pos_)> ' ') ++pos_;
+    while (pos_ < end_ && !isTextSpace(*pos_)) ++pos_;
     return {start, static_cast<std::size_t>(pos_ - start)};
   }
 
@@ -84,7 +85,7 @@ class MshCursor {
   double readDouble(const char* what) {
     skipWhitespace();
     double value = 0;
-    const auto [next, error] = std::from_chars(pos_, end_, value);
+    const auto [next, error] = readTextDouble(pos_, end_, value);
     if (error != std::errc() || !endsToken(next))
       failNumber(what, error == std::errc::result_out_of_range, "a number");
     pos_ = next;
@@ -133,9 +134,7 @@ class MshCursor {
   [[noreturn]] void failFile(const std::string& message) const;
 
  private:
-  bool endsToken(const char* next) const {
-    return next > pos_ && (next == end_ || static_cast<unsigned char>(*next) <= ' ');
-  }
+  bool endsToken(const char* next) const { return next > pos_ && (next == end_ || isTextSpace(*next)); }
   [[noreturn]] void failNumber(const char* what, bool outOfRange, const char* kind = "an integer") const;
   [[noreturn]] void failTooFew(std::uint64_t count, std::uint64_t itemBytes, const char* what) const;
 

@@ -84,7 +84,8 @@ class PointIndex {
     return static_cast<std::size_t>(h ^ (h >> 32));
   }
   void rehash(std::size_t size) {
-    slots_ = vectorOnHugePages(size, kNone);  // TLB misses in a table of 4 KiB pages cost as much as cache misses
+    slots_ =
+        vectorOnHugePages(size, kNone);  // TLB misses in a table of 4 KiB pages cost as much as cache misses
     mask_ = size - 1;
     for (std::uint32_t id = 0; id < points_.size(); ++id) {
       std::size_t slot = hash(points_[id]) & mask_;

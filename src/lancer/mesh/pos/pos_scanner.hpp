@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "lancer/mesh/pos/decimal_number.hpp"
+#include "lancer/mesh/msh/text_number.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
@@ -43,7 +43,7 @@ class PosScanner {
   void skipSpace() {
     while (pos_ < end_) {
       const auto c = static_cast<unsigned char>(*pos_);
-      if (c > ' ' && c != '/') return;
+      if (!isTextSpace(*pos_) && c != '/') return;
       if (c == '/') {
         if (!skipComment()) return;
       } else {
