@@ -30,6 +30,12 @@ void MshMeshAssembler::reserveFaces(std::size_t count) {
   adviseHugePages(faces_);
   adviseHugePages(facePhysical_);
   adviseHugePages(faceEntity_);
+  if (trackElements_) {  // 16 bytes a face that grew by doubling, copied to fresh pages each time
+    faceElement_.reserve(count);
+    faceCornerNode_.reserve(count);
+    adviseHugePages(faceElement_);
+    adviseHugePages(faceCornerNode_);
+  }
 }
 
 void MshMeshAssembler::adoptSurfaceMesh(std::span<const Vec3d> points, std::vector<MeshFace> faces,
