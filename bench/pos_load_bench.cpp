@@ -87,6 +87,15 @@ BENCHMARK_CAPTURE(loadMsh, nodedata_1_thread, "plate_nodedata.msh", 1)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(3);
+// Per value, $ElementNodeData (3 values a triangle) against $NodeData: (file - mesh alone) / values.
+BENCHMARK_CAPTURE(loadMsh, elementnodedata_1_thread, "plate_elementnodedata.msh", 1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(3);
+BENCHMARK_CAPTURE(loadMsh, mesh_alone_1_thread, "plate_mesh.msh", 1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(3);
 BENCHMARK_CAPTURE(loadMsh, mesh_alone, "plate_mesh.msh", 0)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
