@@ -60,6 +60,46 @@ std::vector<float> mapElementValues(std::vector<std::uint64_t> tags, const std::
   return perFace;
 }
 
+namespace {
+
+constexpr std::uint32_t kNoRecord = 0xFFFFFFFFu;
+
+// Per face corner, the value recordOf(its element's tag) gives for its node: nodeCount(record)
+// nodes, their values from valuesOf(record) on.
+template <typename RecordOf, typename NodeCount, typename ValuesOf>
+std::vector<float> cornerValues(int componentCount, const std::vector<std::uint64_t>& faceElement,
+                                const std::vector<MshCornerNodes>& faceCornerNode, RecordOf recordOf,
+                                NodeCount nodeCount, ValuesOf valuesOf) {
+  const auto components = static_cast<std::size_t>(componentCount);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<float> perCorner = vectorOnHugePages(faceElement.size() * kCornerSlots * components, nan);
+  for (std::size_t f = 0; f < faceElement.size(); ++f) {
+    const std::uint32_t record = recordOf(faceElement[f]);
+    if (record == kNoRecord) continue;
+    float* out = perCorner.data() + f * kCornerSlots * components;
+    const MshCornerNodes& nodes = faceCornerNode[f];
+    int added = -1;
+    for (std::size_t s = 0; s < kCornerSlots; ++s) {
+      if (nodes[s] == kAddedCentre) added = static_cast<int>(s);
+      // No node (a triangle's fourth slot), or the record stops short of this node: NaN.
+      if (nodes[s] >= nodeCount(record)) continue;
+      std::copy_n(valuesOf(record) + nodes[s] * components, components, out + s * components);
+    }
+    if (added < 0) continue;
+    // The centre lancer added to an 8-node quad (a corner of each of its four quads): the mean of
+    // the other three corners of its quad, the element giving no value there.
+    for (std::size_t c = 0; c < components; ++c) {
+      float sum = 0;
+      for (std::size_t s = 0; s < kCornerSlots; ++s)
+        if (static_cast<int>(s) != added) sum += out[s * components + c];
+      out[static_cast<std::size_t>(added) * components + c] = sum / 3.0f;
+    }
+  }
+  return perCorner;
+}
+
+}  // namespace
+
 std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componentCount,
                                         const std::vector<std::uint64_t>& faceElement,
                                         const std::vector<MshCornerNodes>& faceCornerNode,
@@ -72,7 +112,6 @@ std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componen
   // The record of each element tag: its offset from the first when the records list consecutive
   // tags (gmsh numbers elements 1..N and writes them in order), an array over the tags' span when
   // they are dense, else sorted (tag, record) pairs searched per face.
-  constexpr std::uint32_t kNoRecord = 0xFFFFFFFFu;
   std::uint64_t lowTag = UINT64_MAX, highTag = 0;
   bool consecutive = true;
   for (std::size_t r = 0; r < records.tags.size(); ++r) {
@@ -93,41 +132,31 @@ std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componen
       byTag[r] = {records.tags[r], static_cast<std::uint32_t>(r)};
     std::sort(byTag.begin(), byTag.end());
   }
-  const auto recordOf = [&](std::uint64_t tag) {
+  const auto recordOf = [&](std::uint64_t tag) -> std::uint32_t {
     if (consecutive)
       return tag < lowTag || tag > highTag ? kNoRecord : static_cast<std::uint32_t>(tag - lowTag);
     if (dense) return tag < lowTag || tag > highTag ? kNoRecord : recordOfTag[tag - lowTag];
     const auto found = std::lower_bound(byTag.begin(), byTag.end(), std::pair{tag, std::uint32_t{0}});
     return found == byTag.end() || found->first != tag ? kNoRecord : found->second;
   };
-  const auto components = static_cast<std::size_t>(componentCount);
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  std::vector<float> perCorner = vectorOnHugePages(faceElement.size() * kCornerSlots * components, nan);
-  for (std::size_t f = 0; f < faceElement.size(); ++f) {
-    const std::uint32_t record = recordOf(faceElement[f]);
-    if (record == kNoRecord) continue;
-    float* out = perCorner.data() + f * kCornerSlots * components;
-    const MshCornerNodes& nodes = faceCornerNode[f];
-    int added = -1;
-    for (std::size_t s = 0; s < kCornerSlots; ++s) {
-      if (nodes[s] == kAddedCentre) added = static_cast<int>(s);
-      // No node (a triangle's fourth slot), or the record stops short of this node: NaN.
-      if (nodes[s] >= records.nodeCount[record]) continue;
-      std::copy_n(records.values.begin() +
-                      static_cast<std::ptrdiff_t>(records.firstValue[record] + nodes[s] * components),
-                  components, out + s * components);
-    }
-    if (added < 0) continue;
-    // The centre lancer added to an 8-node quad (a corner of each of its four quads): the mean of
-    // the other three corners of its quad, the element giving no value there.
-    for (std::size_t c = 0; c < components; ++c) {
-      float sum = 0;
-      for (std::size_t s = 0; s < kCornerSlots; ++s)
-        if (static_cast<int>(s) != added) sum += out[s * components + c];
-      out[static_cast<std::size_t>(added) * components + c] = sum / 3.0f;
-    }
-  }
-  return perCorner;
+  return cornerValues(
+      componentCount, faceElement, faceCornerNode, recordOf,
+      [&](std::uint32_t record) { return records.nodeCount[record]; },
+      [&](std::uint32_t record) { return records.values.data() + records.firstValue[record]; });
+}
+
+std::vector<float> mapElementNodeValues(const UniformElementNodeRecords& records, int componentCount,
+                                        const std::vector<std::uint64_t>& faceElement,
+                                        const std::vector<MshCornerNodes>& faceCornerNode) {
+  return cornerValues(
+      componentCount, faceElement, faceCornerNode,
+      [&](std::uint64_t tag) -> std::uint32_t {
+        return tag < records.firstTag || tag - records.firstTag >= records.count
+                   ? kNoRecord
+                   : static_cast<std::uint32_t>(tag - records.firstTag);
+      },
+      [&](std::uint32_t) { return records.nodes; },
+      [&](std::uint32_t record) { return records.values + record * records.stride; });
 }
 
 }  // namespace lancer
