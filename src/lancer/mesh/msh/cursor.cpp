@@ -55,8 +55,10 @@ void MshCursor::failNumber(const char* what, bool outOfRange, const char* kind) 
 }
 
 void MshCursor::requireMemory(std::uint64_t count, const char* what) const {
-  lancer::requireMemory(saturatingProduct(count, kMeshBytesPerItem), locate(pos_),
-                        fmt::format("{} with {} entries", what, count));
+  const std::uint64_t bytes = saturatingProduct(count, kMeshBytesPerItem);
+  // The location counts the lines before it: only for the message.
+  if (bytes <= memoryBudget()) return;
+  lancer::requireMemory(bytes, locate(pos_), fmt::format("{} with {} entries", what, count));
 }
 
 void MshCursor::failTooFew(std::uint64_t count, std::uint64_t itemBytes, const char* what) const {

@@ -159,8 +159,11 @@ void MshMeshAssembler::recordCornerNodes() {
           break;
         }
     } else if (elementNodes_) {
+      // A face of a surface element mostly keeps its nodes' order: corner c is node c.
       order[static_cast<std::size_t>(c)] =
-          elementNodePosition(elementNodes_, elementNodeCount_, face.vertex[c]);
+          c < elementNodeCount_ && elementNodes_[c] == face.vertex[c]
+              ? static_cast<std::uint16_t>(c)
+              : elementNodePosition(elementNodes_, elementNodeCount_, face.vertex[c]);
     }
   }
   faceCornerNode_.push_back(order);
