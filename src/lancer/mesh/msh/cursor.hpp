@@ -60,14 +60,6 @@ class MshCursor {
   template <typename Int>
   Int readInt(const char* what) {
     skipWhitespace();
-    // One digit and a space (the node count of each $ElementNodeData record, the counts of the
-    // headers): no call to from_chars.
-    if (end_ - pos_ >= 2 && static_cast<unsigned char>(pos_[0] - '0') < 10 &&
-        static_cast<unsigned char>(pos_[1]) <= ' ') {
-      const auto digit = static_cast<Int>(pos_[0] - '0');
-      ++pos_;
-      return digit;
-    }
     Int value{};
     const auto [next, error] = std::from_chars(pos_, end_, value);
     if (error != std::errc() || !endsToken(next)) failNumber(what, error == std::errc::result_out_of_range);
@@ -75,6 +67,15 @@ class MshCursor {
     return value;
   }
   std::int64_t readInt64(const char* what) { return readInt<std::int64_t>(what); }
+  // A small count that is mostly one digit (an $ElementNodeData record's node count): that digit
+  // without a call to from_chars (kept out of readInt, whose inlined from_chars the element lists
+  // need).
+  std::int64_t readShortInt64(const char* what) {
+    skipWhitespace();
+    if (end_ - pos_ >= 2 && static_cast<unsigned char>(pos_[0] - '0') < 10 && isTextSpace(pos_[1]))
+      return *pos_++ - '0';
+    return readInt<std::int64_t>(what);
+  }
   int readInt32(const char* what) { return readInt<int>(what); }
   // A count or tag that may not be negative.
   std::uint64_t readCount(const char* what) {

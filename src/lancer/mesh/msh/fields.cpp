@@ -81,7 +81,7 @@ FieldHeader readHeader(MshReadState& state, const char* section) {
 std::uint64_t readElementNodeCount(MshCursor& cursor, bool binary) {
   const char* at = binary ? cursor.position() : cursor.tokenStart();
   const std::int64_t count = binary ? cursor.readRaw<std::int32_t>("the element's number of nodes")
-                                    : cursor.readInt64("the element's number of nodes");
+                                    : cursor.readShortInt64("the element's number of nodes");
   if (count < 1 || count > kMaxMshElementNodes)
     cursor.failAt(at, fmt::format("an element with {} nodes in $ElementNodeData: expected 1 to {} (the "
                                   "number of nodes of the element, then its values)",
