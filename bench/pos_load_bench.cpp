@@ -1,8 +1,9 @@
 // Reading one scalar step on a 1M-triangle plate as a list-based .pos view (one ST per triangle),
 // parsed alone and read as a mesh (readMsh: parse, nodes merged, faces assembled, values mapped),
 // against the same values as $NodeData in an ASCII .msh, and the mesh alone; the files are made by
-// bench/make_pos_bench_data.py (bench/data/, or LANCER_BENCH_DATA). Wall time: readMsh assembles
-// the mesh on every core (threads = 0) or on one; the .pos reader is one pass on one thread.
+// bench/make_pos_bench_data.py (bench/data/, or LANCER_BENCH_DATA). Wall time: readMsh and
+// readPosFile run on lancer's default thread count (threads = 0: the .pos text parsed in pieces, the
+// mesh assembled on every core) or on one; CPU is the calling thread's alone.
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
@@ -33,12 +34,12 @@ void fileRate(benchmark::State& state, const std::string& path) {
                          benchmark::Counter::kIsIterationInvariantRate);
 }
 
-void loadPos(benchmark::State& state) {
+void loadPos(benchmark::State& state, int threads) {
   const std::string path = benchFile("plate.pos");
   if (!present(state, path)) return;
   std::size_t elements = 0;
   for (auto _ : state) {
-    const lancer::PosFile file = lancer::readPosFile(path);
+    const lancer::PosFile file = lancer::readPosFile(path, threads);
     elements = file.views.front().elementCount();
     benchmark::DoNotOptimize(file.views.front().blocks.front().values.data());
   }
@@ -74,7 +75,8 @@ void loadMsh(benchmark::State& state, const char* name, int threads) {
   fileRate(state, path);
 }
 
-BENCHMARK(loadPos)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);
+BENCHMARK_CAPTURE(loadPos, parse, 0)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);
+BENCHMARK_CAPTURE(loadPos, parse_1_thread, 1)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);
 BENCHMARK_CAPTURE(loadPosMesh, mesh, 0)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);
 BENCHMARK_CAPTURE(loadPosMesh, mesh_1_thread, 1)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);
 BENCHMARK_CAPTURE(loadMsh, nodedata, "plate_nodedata.msh", 0)
@@ -82,6 +84,15 @@ BENCHMARK_CAPTURE(loadMsh, nodedata, "plate_nodedata.msh", 0)
     ->UseRealTime()
     ->MinTime(3);
 BENCHMARK_CAPTURE(loadMsh, nodedata_1_thread, "plate_nodedata.msh", 1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(3);
+// Per value, $ElementNodeData (3 values a triangle) against $NodeData: (file - mesh alone) / values.
+BENCHMARK_CAPTURE(loadMsh, elementnodedata_1_thread, "plate_elementnodedata.msh", 1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(3);
+BENCHMARK_CAPTURE(loadMsh, mesh_alone_1_thread, "plate_mesh.msh", 1)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(3);

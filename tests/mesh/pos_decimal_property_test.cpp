@@ -11,7 +11,7 @@
 #include <random>
 #include <string>
 
-#include "lancer/mesh/pos/decimal_number.hpp"
+#include "lancer/mesh/msh/text_number.hpp"
 
 namespace lancer {
 namespace {

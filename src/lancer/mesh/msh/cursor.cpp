@@ -7,20 +7,6 @@
 #include <algorithm>
 
 namespace lancer {
-namespace {
-
-// What the user sees of a bad token: at most 32 printable characters.
-std::string quoteToken(std::string_view token) {
-  std::string shown;
-  for (char c : token.substr(0, 32)) {
-    const auto u = static_cast<unsigned char>(c);
-    shown += (u >= 32 && u < 127) ? c : '?';
-  }
-  if (token.size() > 32) shown += "...";
-  return "'" + shown + "'";
-}
-
-}  // namespace
 
 SourceLocation MshCursor::locate(const char* at) const {
   at = std::clamp(at, begin_, end_);
@@ -53,7 +39,7 @@ void MshCursor::expectToken(std::string_view expected, const char* context) {
   if (found.empty())
     failAt(start, fmt::format("expected {} {}, found the end of the file (the file looks truncated)",
                               expected, context));
-  failAt(start, fmt::format("expected {} {}, found {}", expected, context, quoteToken(found)));
+  failAt(start, fmt::format("expected {} {}, found {}", expected, context, quoteTokenForMessage(found)));
 }
 
 void MshCursor::failNumber(const char* what, bool outOfRange, const char* kind) const {
@@ -64,13 +50,15 @@ void MshCursor::failNumber(const char* what, bool outOfRange, const char* kind) 
   if (found.empty())
     failAt(start,
            fmt::format("expected {} ({}), found the end of the file (the file looks truncated)", what, kind));
-  if (outOfRange) failAt(start, fmt::format("{} {} is out of range", what, quoteToken(found)));
-  failAt(start, fmt::format("expected {} ({}), found {}", what, kind, quoteToken(found)));
+  if (outOfRange) failAt(start, fmt::format("{} {} is out of range", what, quoteTokenForMessage(found)));
+  failAt(start, fmt::format("expected {} ({}), found {}", what, kind, quoteTokenForMessage(found)));
 }
 
 void MshCursor::requireMemory(std::uint64_t count, const char* what) const {
-  lancer::requireMemory(saturatingProduct(count, kMeshBytesPerItem), locate(pos_),
-                        fmt::format("{} with {} entries", what, count));
+  const std::uint64_t bytes = saturatingProduct(count, kMeshBytesPerItem);
+  // The location counts the lines before it: only for the message.
+  if (bytes <= memoryBudget()) return;
+  lancer::requireMemory(bytes, locate(pos_), fmt::format("{} with {} entries", what, count));
 }
 
 void MshCursor::failTooFew(std::uint64_t count, std::uint64_t itemBytes, const char* what) const {

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "lancer/mesh/msh/text_number.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
@@ -36,7 +37,7 @@ class MshCursor {
 
   // --- text -------------------------------------------------------------------------------------
   void skipWhitespace() {
-    while (pos_ < end_ && static_cast<unsigned char>(*pos_) <= ' ') ++pos_;
+    while (pos_ < end_ && isTextSpace(*pos_)) ++pos_;
   }
   // Where the next token starts (for error locations).
   const char* tokenStart() {
@@ -52,7 +53,7 @@ class MshCursor {
   std::string_view token() {
     skipWhitespace();
     const char* start = pos_;
-    while (pos_<end_&& static_cast<unsigned char>(*pos_)> ' ') ++pos_;
+    while (pos_ < end_ && !isTextSpace(*pos_)) ++pos_;
     return {start, static_cast<std::size_t>(pos_ - start)};
   }
 
@@ -66,6 +67,15 @@ class MshCursor {
     return value;
   }
   std::int64_t readInt64(const char* what) { return readInt<std::int64_t>(what); }
+  // A small count that is mostly one digit (an $ElementNodeData record's node count): that digit
+  // without a call to from_chars (kept out of readInt, whose inlined from_chars the element lists
+  // need).
+  std::int64_t readShortInt64(const char* what) {
+    skipWhitespace();
+    if (end_ - pos_ >= 2 && static_cast<unsigned char>(pos_[0] - '0') < 10 && isTextSpace(pos_[1]))
+      return *pos_++ - '0';
+    return readInt<std::int64_t>(what);
+  }
   int readInt32(const char* what) { return readInt<int>(what); }
   // A count or tag that may not be negative.
   std::uint64_t readCount(const char* what) {
@@ -76,7 +86,7 @@ class MshCursor {
   double readDouble(const char* what) {
     skipWhitespace();
     double value = 0;
-    const auto [next, error] = std::from_chars(pos_, end_, value);
+    const auto [next, error] = readTextDouble(pos_, end_, value);
     if (error != std::errc() || !endsToken(next))
       failNumber(what, error == std::errc::result_out_of_range, "a number");
     pos_ = next;
@@ -125,9 +135,7 @@ class MshCursor {
   [[noreturn]] void failFile(const std::string& message) const;
 
  private:
-  bool endsToken(const char* next) const {
-    return next > pos_ && (next == end_ || static_cast<unsigned char>(*next) <= ' ');
-  }
+  bool endsToken(const char* next) const { return next > pos_ && (next == end_ || isTextSpace(*next)); }
   [[noreturn]] void failNumber(const char* what, bool outOfRange, const char* kind = "an integer") const;
   [[noreturn]] void failTooFew(std::uint64_t count, std::uint64_t itemBytes, const char* what) const;
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "lancer/util/huge_pages.hpp"
+
 namespace lancer {
 
 // Keeps the values of the nodes that became mesh vertices, in the same order as the positions.
@@ -58,41 +60,19 @@ std::vector<float> mapElementValues(std::vector<std::uint64_t> tags, const std::
   return perFace;
 }
 
-std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componentCount,
-                                        const std::vector<std::uint64_t>& faceElement,
-                                        const std::vector<MshCornerNodes>& faceCornerNode,
-                                        const std::vector<std::pair<std::uint64_t, std::uint64_t>>& aliases) {
-  for (std::uint64_t& tag : records.tags) {
-    const auto alias = std::lower_bound(aliases.begin(), aliases.end(), std::pair{tag, std::uint64_t{0}});
-    if (alias != aliases.end() && alias->first == tag) tag = alias->second;
-  }
-  // The record of each element tag: an array over the tags' span when they are dense (gmsh numbers
-  // elements 1..N), else sorted (tag, record) pairs searched per face.
-  constexpr std::uint32_t kNoRecord = 0xFFFFFFFFu;
-  std::uint64_t lowTag = UINT64_MAX, highTag = 0;
-  for (const std::uint64_t tag : records.tags)
-    lowTag = std::min(lowTag, tag), highTag = std::max(highTag, tag);
-  const bool dense = !records.tags.empty() && highTag - lowTag < 4 * records.tags.size() + 1024;
-  std::vector<std::uint32_t> recordOfTag;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> byTag;
-  if (dense) {
-    recordOfTag.assign(highTag - lowTag + 1, kNoRecord);
-    for (std::size_t r = 0; r < records.tags.size(); ++r)
-      recordOfTag[records.tags[r] - lowTag] = static_cast<std::uint32_t>(r);
-  } else {
-    byTag.resize(records.tags.size());
-    for (std::size_t r = 0; r < records.tags.size(); ++r)
-      byTag[r] = {records.tags[r], static_cast<std::uint32_t>(r)};
-    std::sort(byTag.begin(), byTag.end());
-  }
-  const auto recordOf = [&](std::uint64_t tag) {
-    if (dense) return tag < lowTag || tag > highTag ? kNoRecord : recordOfTag[tag - lowTag];
-    const auto found = std::lower_bound(byTag.begin(), byTag.end(), std::pair{tag, std::uint32_t{0}});
-    return found == byTag.end() || found->first != tag ? kNoRecord : found->second;
-  };
+namespace {
+
+constexpr std::uint32_t kNoRecord = 0xFFFFFFFFu;
+
+// Per face corner, the value recordOf(its element's tag) gives for its node: nodeCount(record)
+// nodes, their values from valuesOf(record) on.
+template <typename RecordOf, typename NodeCount, typename ValuesOf>
+std::vector<float> cornerValues(int componentCount, const std::vector<std::uint64_t>& faceElement,
+                                const std::vector<MshCornerNodes>& faceCornerNode, RecordOf recordOf,
+                                NodeCount nodeCount, ValuesOf valuesOf) {
   const auto components = static_cast<std::size_t>(componentCount);
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  std::vector<float> perCorner(faceElement.size() * kCornerSlots * components, nan);
+  std::vector<float> perCorner = vectorOnHugePages(faceElement.size() * kCornerSlots * components, nan);
   for (std::size_t f = 0; f < faceElement.size(); ++f) {
     const std::uint32_t record = recordOf(faceElement[f]);
     if (record == kNoRecord) continue;
@@ -102,10 +82,8 @@ std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componen
     for (std::size_t s = 0; s < kCornerSlots; ++s) {
       if (nodes[s] == kAddedCentre) added = static_cast<int>(s);
       // No node (a triangle's fourth slot), or the record stops short of this node: NaN.
-      if (nodes[s] >= records.nodeCount[record]) continue;
-      std::copy_n(records.values.begin() +
-                      static_cast<std::ptrdiff_t>(records.firstValue[record] + nodes[s] * components),
-                  components, out + s * components);
+      if (nodes[s] >= nodeCount(record)) continue;
+      std::copy_n(valuesOf(record) + nodes[s] * components, components, out + s * components);
     }
     if (added < 0) continue;
     // The centre lancer added to an 8-node quad (a corner of each of its four quads): the mean of
@@ -118,6 +96,67 @@ std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componen
     }
   }
   return perCorner;
+}
+
+}  // namespace
+
+std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componentCount,
+                                        const std::vector<std::uint64_t>& faceElement,
+                                        const std::vector<MshCornerNodes>& faceCornerNode,
+                                        const std::vector<std::pair<std::uint64_t, std::uint64_t>>& aliases) {
+  if (!aliases.empty())
+    for (std::uint64_t& tag : records.tags) {
+      const auto alias = std::lower_bound(aliases.begin(), aliases.end(), std::pair{tag, std::uint64_t{0}});
+      if (alias != aliases.end() && alias->first == tag) tag = alias->second;
+    }
+  // The record of each element tag: its offset from the first when the records list consecutive
+  // tags (gmsh numbers elements 1..N and writes them in order), an array over the tags' span when
+  // they are dense, else sorted (tag, record) pairs searched per face.
+  std::uint64_t lowTag = UINT64_MAX, highTag = 0;
+  bool consecutive = true;
+  for (std::size_t r = 0; r < records.tags.size(); ++r) {
+    const std::uint64_t tag = records.tags[r];
+    lowTag = std::min(lowTag, tag), highTag = std::max(highTag, tag);
+    consecutive = consecutive && tag == records.tags.front() + r;
+  }
+  const bool dense = !records.tags.empty() && highTag - lowTag < 4 * records.tags.size() + 1024;
+  std::vector<std::uint32_t> recordOfTag;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> byTag;
+  if (!consecutive && dense) {
+    recordOfTag.assign(highTag - lowTag + 1, kNoRecord);
+    for (std::size_t r = 0; r < records.tags.size(); ++r)
+      recordOfTag[records.tags[r] - lowTag] = static_cast<std::uint32_t>(r);
+  } else if (!consecutive) {
+    byTag.resize(records.tags.size());
+    for (std::size_t r = 0; r < records.tags.size(); ++r)
+      byTag[r] = {records.tags[r], static_cast<std::uint32_t>(r)};
+    std::sort(byTag.begin(), byTag.end());
+  }
+  const auto recordOf = [&](std::uint64_t tag) -> std::uint32_t {
+    if (consecutive)
+      return tag < lowTag || tag > highTag ? kNoRecord : static_cast<std::uint32_t>(tag - lowTag);
+    if (dense) return tag < lowTag || tag > highTag ? kNoRecord : recordOfTag[tag - lowTag];
+    const auto found = std::lower_bound(byTag.begin(), byTag.end(), std::pair{tag, std::uint32_t{0}});
+    return found == byTag.end() || found->first != tag ? kNoRecord : found->second;
+  };
+  return cornerValues(
+      componentCount, faceElement, faceCornerNode, recordOf,
+      [&](std::uint32_t record) { return records.nodeCount[record]; },
+      [&](std::uint32_t record) { return records.values.data() + records.firstValue[record]; });
+}
+
+std::vector<float> mapElementNodeValues(const UniformElementNodeRecords& records, int componentCount,
+                                        const std::vector<std::uint64_t>& faceElement,
+                                        const std::vector<MshCornerNodes>& faceCornerNode) {
+  return cornerValues(
+      componentCount, faceElement, faceCornerNode,
+      [&](std::uint64_t tag) -> std::uint32_t {
+        return tag < records.firstTag || tag - records.firstTag >= records.count
+                   ? kNoRecord
+                   : static_cast<std::uint32_t>(tag - records.firstTag);
+      },
+      [&](std::uint32_t) { return records.nodes; },
+      [&](std::uint32_t record) { return records.values + record * records.stride; });
 }
 
 }  // namespace lancer

@@ -71,6 +71,20 @@ std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componen
                                         const std::vector<std::uint64_t>& faceElement,
                                         const std::vector<MshCornerNodes>& faceCornerNode,
                                         const std::vector<std::pair<std::uint64_t, std::uint64_t>>& aliases);
+// Records that need no copy and no table: record r is the element tagged firstTag + r, with `nodes`
+// nodes of the section's components each at values + r * stride (a .pos view's block, one step of
+// it read in place).
+struct UniformElementNodeRecords {
+  std::uint64_t firstTag = 1;
+  std::size_t count = 0;
+  std::uint32_t nodes = 0;
+  const float* values = nullptr;
+  std::size_t stride = 0;
+};
+// The same as above for such records.
+std::vector<float> mapElementNodeValues(const UniformElementNodeRecords& records, int components,
+                                        const std::vector<std::uint64_t>& faceElement,
+                                        const std::vector<MshCornerNodes>& faceCornerNode);
 std::vector<float> mapElementValues(std::vector<std::uint64_t> tags, const std::vector<float>& values,
                                     int components, const std::vector<std::uint64_t>& faceElement,
                                     const std::vector<std::pair<std::uint64_t, std::uint64_t>>& aliases);

@@ -8,6 +8,7 @@
 
 #include "lancer/mesh/msh/element_types.hpp"
 #include "lancer/mesh/msh/volume_capture.hpp"
+#include "lancer/util/huge_pages.hpp"
 
 namespace lancer {
 namespace {
@@ -81,7 +82,7 @@ FieldHeader readHeader(MshReadState& state, const char* section) {
 std::uint64_t readElementNodeCount(MshCursor& cursor, bool binary) {
   const char* at = binary ? cursor.position() : cursor.tokenStart();
   const std::int64_t count = binary ? cursor.readRaw<std::int32_t>("the element's number of nodes")
-                                    : cursor.readInt64("the element's number of nodes");
+                                    : cursor.readShortInt64("the element's number of nodes");
   if (count < 1 || count > kMaxMshElementNodes)
     cursor.failAt(at, fmt::format("an element with {} nodes in $ElementNodeData: expected 1 to {} (the "
                                   "number of nodes of the element, then its values)",
@@ -256,6 +257,10 @@ void readElementNodeRecords(MshCursor& cursor, const MshFieldSection& section, c
   records.nodeCount.reserve(section.count);
   // A guess of three nodes a record (a triangle); the count was checked against the file's bytes.
   records.values.reserve(section.count * components * 3);
+  adviseHugePages(records.tags);
+  adviseHugePages(records.firstValue);
+  adviseHugePages(records.nodeCount);
+  adviseHugePages(records.values);
   DroppedElements dropped;
   for (std::uint64_t i = 0; i < section.count; ++i) {
     const char* recordAt = binary ? cursor.position() : cursor.tokenStart();

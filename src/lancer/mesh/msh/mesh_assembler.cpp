@@ -31,6 +31,12 @@ void MshMeshAssembler::reserveFaces(std::size_t count) {
   adviseHugePages(faces_);
   adviseHugePages(facePhysical_);
   adviseHugePages(faceEntity_);
+  if (trackElements_) {  // 16 bytes a face that grew by doubling, copied to fresh pages each time
+    faceElement_.reserve(count);
+    faceCornerNode_.reserve(count);
+    adviseHugePages(faceElement_);
+    adviseHugePages(faceCornerNode_);
+  }
 }
 
 void MshMeshAssembler::adoptSurfaceMesh(std::span<const Vec3d> points, std::vector<MeshFace> faces,
@@ -154,8 +160,11 @@ void MshMeshAssembler::recordCornerNodes() {
           break;
         }
     } else if (elementNodes_) {
+      // A face of a surface element mostly keeps its nodes' order: corner c is node c.
       order[static_cast<std::size_t>(c)] =
-          elementNodePosition(elementNodes_, elementNodeCount_, face.vertex[c]);
+          c < elementNodeCount_ && elementNodes_[c] == face.vertex[c]
+              ? static_cast<std::uint16_t>(c)
+              : elementNodePosition(elementNodes_, elementNodeCount_, face.vertex[c]);
     }
   }
   faceCornerNode_.push_back(order);

@@ -57,6 +57,7 @@ class MshMeshAssembler {
   std::shared_ptr<MshVolumeCapture> volumeCapture() const { return volumeCapture_; }
   // Threads for finish()'s passes (0: every core); the mesh does not depend on it.
   void setThreads(int threads) { threads_ = threads; }
+  // Room for `count` faces (and their elements, when trackElements() came first).
   void reserveFaces(std::size_t count);
   // The physical and elementary tags of the elements that follow; dimension is the elements'.
   void setGroup(int dimension, std::int32_t physical, std::int32_t entity) {

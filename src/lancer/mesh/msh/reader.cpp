@@ -395,7 +395,7 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteS
     source.path = name;
     source.format = "pos";
     source.fileBytes = byteSource.fileBytes;
-    const PosFile pos = readPosFromMemory(bytes, name);
+    const PosFile pos = readPosFromMemory(bytes, name, threads);
     Mesh mesh = meshFromPos(pos, std::move(source), threads);
     mesh.source.warnings.insert(mesh.source.warnings.begin(), pos.warnings.begin(), pos.warnings.end());
     return mesh;

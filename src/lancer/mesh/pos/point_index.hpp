@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lancer/math/vec3.hpp"
+#include "lancer/util/huge_pages.hpp"
 
 namespace lancer {
 
@@ -17,8 +18,12 @@ class PointIndex {
  public:
   static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
+  // A table for `expected` points, and room for a quarter more (a mesh's boundary adds nodes to a
+  // count from its element count): growing copies every point; unused room costs no memory.
   explicit PointIndex(std::size_t expected = 0) {
     rehash(std::bit_ceil(std::max<std::size_t>(expected * 2, 64)));
+    points_.reserve(expected + expected / 4);
+    adviseHugePages(points_);
   }
 
   // The number of `p`, given to it now when it is new (then points() grows by one).
@@ -79,7 +84,8 @@ class PointIndex {
     return static_cast<std::size_t>(h ^ (h >> 32));
   }
   void rehash(std::size_t size) {
-    slots_.assign(size, kNone);
+    slots_ =
+        vectorOnHugePages(size, kNone);  // TLB misses in a table of 4 KiB pages cost as much as cache misses
     mask_ = size - 1;
     for (std::uint32_t id = 0; id < points_.size(); ++id) {
       std::size_t slot = hash(points_[id]) & mask_;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "lancer/mesh/field_steps.hpp"
 
@@ -66,6 +67,32 @@ ElementNodeRecords stepRecords(const PosView& view, int step, const PosElementTa
   return records;
 }
 
+// The records of one step read where the view holds them, when they need no copy: one drawn
+// block, its elements tagged one after another, each keeping its own node order (a view made into
+// the mesh of its elements); else nullopt.
+std::optional<UniformElementNodeRecords> uniformRecords(const PosView& view, int step,
+                                                        const PosElementTags& elements) {
+  const PosElementBlock* drawn = nullptr;
+  std::size_t first = 0, element = 0;
+  for (const PosElementBlock& block : view.blocks) {
+    if (drawnBlock(block)) {
+      if (drawn) return std::nullopt;
+      drawn = &block;
+      first = element;
+    }
+    element += block.elementCount();
+  }
+  if (!drawn || drawn->elementCount() == 0 || !elements.orderAt.empty() || elements.tag[first] == 0)
+    return std::nullopt;
+  for (std::size_t e = 0; e < drawn->elementCount(); ++e)
+    if (elements.tag[first + e] != elements.tag[first] + e) return std::nullopt;
+  const std::size_t perStep = static_cast<std::size_t>(drawn->kind.nodes * drawn->kind.components);
+  return UniformElementNodeRecords{elements.tag[first], drawn->elementCount(),
+                                   static_cast<std::uint32_t>(drawn->kind.nodes),
+                                   drawn->values.data() + static_cast<std::size_t>(step) * perStep,
+                                   perStep * static_cast<std::size_t>(view.stepCount)};
+}
+
 }  // namespace
 
 bool sameElements(const PosView& a, const PosView& b) {
@@ -104,8 +131,12 @@ void addPosViewSteps(Mesh& mesh, const PosView& view, int components, const PosE
     field.components = components;
     field.step = firstStep + k;
     field.time = view.timesGiven ? view.times[static_cast<std::size_t>(k)] : field.step;
-    field.values =
-        mapElementNodeValues(stepRecords(view, k, elements), components, faceElement, faceCornerNode, {});
+    if (const auto inPlace = uniformRecords(view, k, elements)) {
+      field.values = mapElementNodeValues(*inPlace, components, faceElement, faceCornerNode);
+    } else {
+      field.values =
+          mapElementNodeValues(stepRecords(view, k, elements), components, faceElement, faceCornerNode, {});
+    }
     field.ranges = componentRanges(field.values, components);
     mesh.fields.push_back(std::move(field));
   }

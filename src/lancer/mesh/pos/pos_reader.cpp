@@ -4,16 +4,20 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cctype>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
+#include <thread>
 
 #include "lancer/mesh/pos/pos_file_kind.hpp"
 #include "lancer/mesh/pos/pos_scanner.hpp"
+#include "lancer/mesh/pos/pos_split.hpp"
 #include "lancer/util/huge_pages.hpp"
 #include "lancer/util/mapped_file.hpp"
 #include "lancer/util/memory_budget.hpp"
+#include "lancer/util/thread_count.hpp"
 
 namespace lancer {
 namespace {
@@ -25,10 +29,68 @@ std::string plural(std::size_t count, std::string_view one, std::string_view man
   return fmt::format("{} {}", count, count == 1 ? one : many);
 }
 
+// A piece of a large file parsed on a thread of its own: the run of elements from `begin` (lines
+// counted from 1 there), in a view of their own (blocks in order of first use, one step count), up
+// to the first element at or after the next piece's start or the first thing that is no element
+// of that run (the end of the view, a TIME list, an error): `stop`, on `stopLine`. The serial parse
+// takes the piece when it reaches `begin` inside a view whose step count is the piece's, and reads
+// on from `stop` itself; what a piece could not read it reads, and reports, as it would alone.
+struct PosPiece {
+  const char* begin = nullptr;
+  const char* limit = nullptr;
+  const char* stop = nullptr;
+  std::int64_t stopLine = 1;
+  PosView view;
+};
+
 class PosParser {
  public:
-  PosParser(std::span<const char> bytes, const std::string& name) : scan_(bytes, name) {
+  PosParser(std::span<const char> bytes, const std::string& name)
+      : scan_(bytes, name), limit_(bytes.data() + bytes.size()) {
     result_.file = name;
+  }
+
+  // The pieces the parse may take (their threads are waited for, in order, when it reaches them).
+  void usePieces(std::span<PosPiece> pieces, std::span<std::thread> threads) {
+    pieces_ = pieces;
+    threads_ = threads;
+  }
+
+  // Reads piece.begin's run of elements, up to piece.limit (see PosPiece); never throws for the
+  // file's content: where the run stops, the serial parse reads on. `cancel` stops it early.
+  void parsePiece(PosPiece& piece, const std::atomic<bool>& cancel) {
+    limit_ = piece.limit;
+    scan_.seekTo(piece.begin, 1);
+    piece.stop = piece.begin;
+    PosView& view = piece.view;
+    ViewState state;
+    state.blockOfSlot.fill(-1);
+    try {
+      while (!cancel.load(std::memory_order_relaxed)) {
+        scan_.skipSpace();
+        const char* at = scan_.position();
+        if (at >= limit_) break;
+        const std::int64_t line = scan_.line();
+        const std::string_view code = scan_.name();
+        if (code.empty() || code != state.lastCode) {
+          const auto kind = posElementKind(code);
+          if (!kind) break;
+          state.lastCode = code;
+          state.lastKind = *kind;
+        }
+        readElement(view, state, state.lastKind, at, line);
+        piece.stop = scan_.position();
+        piece.stopLine = scan_.line();
+      }
+    } catch (...) {  // the serial parse meets it again and reports it (or runs out of memory) itself
+    }
+    // An element that failed half-way may have left values (and coordinates) behind.
+    for (PosElementBlock& block : view.blocks) {
+      const std::size_t elements = block.elementCount();
+      block.values.resize(elements * static_cast<std::size_t>(block.kind.nodes * block.kind.components) *
+                          static_cast<std::size_t>(view.stepCount));
+      block.coords.resize(elements * 3 * static_cast<std::size_t>(block.kind.nodes));
+    }
   }
 
   PosFile parse() {
@@ -80,6 +142,7 @@ class PosParser {
     state.blockOfSlot.fill(-1);
     for (;;) {
       const char c = scan_.peek();
+      if (nextPiece_ < pieces_.size() && takePiece(view, state)) continue;
       if (c == '}') {
         scan_.accept('}');
         if (!scan_.accept(';'))
@@ -122,6 +185,33 @@ class PosParser {
           fmt::format("skipped {} of view \"{}\": lancer draws no text from a .pos file",
                       plural(view.skippedTexts, "text annotation (T2, T3)", "text annotations (T2, T3)"),
                       view.name)));
+  }
+
+  // Appends the piece that starts here, when one does and its elements continue this view (the
+  // same step count); then reads on where it stopped. Pieces the parse has passed are not used.
+  bool takePiece(PosView& view, ViewState& state) {
+    const char* at = scan_.position();
+    while (nextPiece_ < pieces_.size() && pieces_[nextPiece_].begin < at) ++nextPiece_;
+    if (nextPiece_ == pieces_.size() || pieces_[nextPiece_].begin != at) return false;
+    if (threads_[nextPiece_].joinable()) threads_[nextPiece_].join();
+    PosPiece& piece = pieces_[nextPiece_++];
+    if (piece.stop == piece.begin || !state.stepsKnown || view.blocks.empty() ||
+        piece.view.stepCount != view.stepCount)
+      return false;
+    const std::int64_t lineOffset = scan_.line() - 1;
+    for (PosElementBlock& from : piece.view.blocks) {
+      if (from.elementCount() == 0) continue;
+      PosElementBlock& to = blockFor(view, state, from.kind);
+      reserveFor(to.coords, from.coords.size(), at);
+      to.coords.insert(to.coords.end(), from.coords.begin(), from.coords.end());
+      reserveFor(to.values, from.values.size(), at);
+      to.values.insert(to.values.end(), from.values.begin(), from.values.end());
+      reserveFor(to.lines, from.lines.size(), at);
+      for (const std::int64_t line : from.lines) to.lines.push_back(line + lineOffset);
+      from = PosElementBlock{from.kind, {}, {}, {}};  // its memory goes back now
+    }
+    scan_.seekTo(piece.stop, lineOffset + piece.stopLine);
+    return true;
   }
 
   [[noreturn]] void refuseItem(const PosView& view, std::string_view code, const char* at) {
@@ -175,7 +265,10 @@ class PosParser {
   void reserveForView(PosElementBlock& block, const ViewState& state, std::size_t valueCount) {
     const std::size_t elementBytes = std::max<std::size_t>(
         1, static_cast<std::size_t>(scan_.position() - state.firstElement) / kSampleElements);
-    const std::size_t elements = block.elementCount() + scan_.remainingBytes() / elementBytes + 1;
+    const auto bytesLeft = static_cast<std::size_t>(std::max(limit_ - scan_.position(), std::ptrdiff_t{0}));
+    // A quarter more than the mean says: elements later in the file may print shorter numbers, and
+    // outgrowing the reserve copies every value so far to fresh pages.
+    const std::size_t elements = block.elementCount() + bytesLeft / elementBytes * 5 / 4 + 1;
     const std::uint64_t bytes =
         saturatingProduct(elements, 3 * block.kind.nodes * sizeof(double) + valueCount * sizeof(float) + 8);
     if (allocated_ + bytes > memoryBudget()) return;  // grow by doubling, checked at each step
@@ -184,10 +277,12 @@ class PosParser {
     moveTo(block.lines, elements);
   }
 
+  // What a view leaves of its reserve was never touched, so it holds no memory (the pages of an
+  // array are faulted in as it is filled): it leaves the budget's count but stays reserved. Copying
+  // the array to its size instead cleared and filled fresh pages for every value again.
   template <typename T>
-  void giveBackUnused(std::vector<T>& v) {
-    if (v.capacity() - v.size() <= v.size() / 4 + 4096) return;
-    moveTo(v, v.size());
+  void giveBackUnused(const std::vector<T>& v) {
+    allocated_ -= (v.capacity() - v.size()) * sizeof(T);
   }
 
   PosElementBlock& blockFor(PosView& view, ViewState& state, const PosElementKind& kind) {
@@ -347,8 +442,35 @@ class PosParser {
   }
 
   PosScanner scan_;
+  const char* limit_;  // the end of the bytes this parser reads (a piece's: the next piece's start)
   PosFile result_;
   std::uint64_t allocated_ = 0;
+  std::span<PosPiece> pieces_;
+  std::span<std::thread> threads_;
+  std::size_t nextPiece_ = 0;
+};
+
+// The threads parsing pieces: told to stop and waited for when the serial parse ends, however it ends.
+class PieceThreads {
+ public:
+  explicit PieceThreads(std::size_t count) { threads_.reserve(count); }
+  ~PieceThreads() {
+    cancel_.store(true, std::memory_order_relaxed);
+    for (std::thread& thread : threads_)
+      if (thread.joinable()) thread.join();
+  }
+  PieceThreads(const PieceThreads&) = delete;
+  PieceThreads& operator=(const PieceThreads&) = delete;
+
+  void start(std::span<const char> bytes, const std::string& name, PosPiece& piece) {
+    threads_.emplace_back(
+        [this, bytes, &name, &piece] { PosParser(bytes, name).parsePiece(piece, cancel_); });
+  }
+  std::span<std::thread> threads() { return threads_; }
+
+ private:
+  std::vector<std::thread> threads_;
+  std::atomic<bool> cancel_{false};
 };
 
 }  // namespace
@@ -368,13 +490,26 @@ int PosView::components() const {
   return components;
 }
 
-PosFile readPosFromMemory(std::span<const char> bytes, const std::string& nameForErrors) {
-  return PosParser(bytes, nameForErrors).parse();
+PosFile readPosFromMemory(std::span<const char> bytes, const std::string& nameForErrors, int threads) {
+  const std::size_t pieces =
+      std::min(static_cast<std::size_t>(resolveThreadCount(threads)), bytes.size() / kMinPosPieceBytes);
+  PosParser parser(bytes, nameForErrors);
+  if (pieces <= 1) return parser.parse();
+  const std::vector<const char*> starts = posPieceStarts(bytes, pieces);
+  std::vector<PosPiece> parsed(starts.size());
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    parsed[i].begin = starts[i];
+    parsed[i].limit = i + 1 < starts.size() ? starts[i + 1] : bytes.data() + bytes.size();
+  }
+  PieceThreads pieceThreads(parsed.size());
+  for (PosPiece& piece : parsed) pieceThreads.start(bytes, nameForErrors, piece);
+  parser.usePieces(parsed, pieceThreads.threads());
+  return parser.parse();
 }
 
-PosFile readPosFile(const std::string& path) {
+PosFile readPosFile(const std::string& path, int threads) {
   const MappedFile file(path, ".pos file");
-  return readPosFromMemory(file.bytes(), path);
+  return readPosFromMemory(file.bytes(), path, threads);
 }
 
 }  // namespace lancer

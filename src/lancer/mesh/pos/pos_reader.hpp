@@ -66,8 +66,10 @@ struct PosFile {
 };
 
 // Memory-maps and reads a list-based .pos file. Throws InputError on anything it cannot read whole.
-PosFile readPosFile(const std::string& path);
+// threads: as readMsh's (0: lancer's default count); a file of a few MB or more is parsed in pieces
+// on that many threads, with the same result, and the same first error, as on one.
+PosFile readPosFile(const std::string& path, int threads = 0);
 // The same from bytes in memory (tests, fuzzing); nameForErrors is the file name errors show.
-PosFile readPosFromMemory(std::span<const char> bytes, const std::string& nameForErrors);
+PosFile readPosFromMemory(std::span<const char> bytes, const std::string& nameForErrors, int threads = 0);
 
 }  // namespace lancer

@@ -12,20 +12,7 @@ namespace {
 
 bool isNameStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
 bool isNameChar(char c) { return isNameStart(c) || (c >= '0' && c <= '9'); }
-bool isSeparator(char c) {
-  return static_cast<unsigned char>(c) <= ' ' || std::strchr(",;(){}\"", c) != nullptr;
-}
-
-// What the user sees of a bad token: at most 32 printable characters.
-std::string quoted(std::string_view token) {
-  std::string shown;
-  for (char c : token.substr(0, 32)) {
-    const auto u = static_cast<unsigned char>(c);
-    shown += (u >= 32 && u < 127) ? c : '?';
-  }
-  if (token.size() > 32) shown += "...";
-  return "'" + shown + "'";
-}
+bool isSeparator(char c) { return isTextSpace(c) || std::strchr(",;(){}\"", c) != nullptr; }
 
 }  // namespace
 
@@ -91,13 +78,15 @@ double PosScanner::otherNumber(std::string_view context) {
     // value too small for a double is as good as zero to a colour map.
     const double tiny = std::strtod(token.c_str(), nullptr);
     if (std::isinf(tiny))
-      failAt(start, fmt::format("the number {} {} is beyond the range of a double", quoted(token), context));
+      failAt(start, fmt::format("the number {} {} is beyond the range of a double",
+                                quoteTokenForMessage(token), context));
     pos_ = next;
     return tiny;
   }
   failAt(start, fmt::format("found {}, which is {}, {}: lancer reads finite numbers only; the solver "
                             "wrote no value here, check its solution",
-                            quoted(token), std::isnan(value) ? "not a number (NaN)" : "infinite", context));
+                            quoteTokenForMessage(token),
+                            std::isnan(value) ? "not a number (NaN)" : "infinite", context));
 }
 
 SourceLocation PosScanner::locate(const char* at) const {
@@ -118,9 +107,9 @@ std::string PosScanner::describeNext() {
   skipSpace();
   if (pos_ >= end_) return "the end of the file";
   const char* end = pos_;
-  if (isSeparator(*end)) return quoted({pos_, 1});
+  if (isSeparator(*end)) return quoteTokenForMessage({pos_, 1});
   while (end < end_ && !isSeparator(*end)) ++end;
-  return quoted({pos_, static_cast<std::size_t>(end - pos_)});
+  return quoteTokenForMessage({pos_, static_cast<std::size_t>(end - pos_)});
 }
 
 void PosScanner::failExpected(std::string_view what, std::string_view context) {

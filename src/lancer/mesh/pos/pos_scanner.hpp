@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "lancer/mesh/pos/decimal_number.hpp"
+#include "lancer/mesh/msh/text_number.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
@@ -33,12 +33,17 @@ class PosScanner {
   const char* numberStart() const { return numberStart_; }
   // Moves to `at` (a copy's way to describe a token it has passed; lines are not recounted).
   void seekTo(const char* at) { pos_ = at; }
+  // Moves to `at`, on `line` (where another scan of the same bytes stopped).
+  void seekTo(const char* at, std::int64_t line) {
+    pos_ = at;
+    line_ = line;
+  }
 
   // Skips whitespace and comments (the hot case, a number right here, costs two compares).
   void skipSpace() {
     while (pos_ < end_) {
       const auto c = static_cast<unsigned char>(*pos_);
-      if (c > ' ' && c != '/') return;
+      if (!isTextSpace(*pos_) && c != '/') return;
       if (c == '/') {
         if (!skipComment()) return;
       } else {

@@ -1,5 +1,6 @@
-// The fast path for the decimal numbers solvers print (%.16g: "0.001414427157001414",
-// "-4.877771239555906e-05"): a .pos file is mostly such numbers, so their parse sets its speed.
+// The numbers and blanks of the text formats, one implementation for the .msh cursor and the .pos
+// scanner: the decimal numbers solvers print (%.16g: "0.001414427157001414",
+// "-4.877771239555906e-05") take a fast path, so their parse sets the speed of a text file.
 // Digits are read eight at a time (SWAR, as in Lemire's fast_float, "Number Parsing at a Gigabyte
 // per Second", 2021); a mantissa below 2^53 with a power of ten within 10^+-22 gives the correctly
 // rounded double with one multiplication or division of two exact doubles (Clinger, "How to Read
@@ -7,8 +8,11 @@
 #pragma once
 
 #include <bit>
+#include <charconv>
 #include <cstdint>
 #include <cstring>
+#include <string>
+#include <string_view>
 
 namespace lancer {
 
@@ -111,5 +115,20 @@ inline void readDigits(const char*& p, const char* end, std::uint64_t& mantissa,
   p = q;
   return true;
 }
+
+// What std::from_chars reads into a double (no '+', no hex; nan and inf too), the same result,
+// with the fast path above for the common case.
+[[gnu::always_inline]] inline std::from_chars_result readTextDouble(const char* p, const char* end,
+                                                                    double& value) {
+  const char* q = p;
+  if (readDecimalFast(q, end, value)) return {q, std::errc()};
+  return std::from_chars(p, end, value);
+}
+
+// Blanks between tokens: space, tab, line ends and every other control character.
+inline bool isTextSpace(char c) { return static_cast<unsigned char>(c) <= ' '; }
+
+// What the user sees of a bad token in a message: at most 32 printable characters, in quotes.
+std::string quoteTokenForMessage(std::string_view token);
 
 }  // namespace lancer
