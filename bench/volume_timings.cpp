@@ -4,7 +4,9 @@
 // lines of b of 1,000 steps each. Medians of --reps runs, wall and CPU seconds of the process.
 //   volume_timings bench/data/volume_box.msh [--reps N] [--threads T]
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -36,7 +38,8 @@ Seconds median(std::vector<Seconds> runs) {
   const auto middle = [&](auto member) {
     std::vector<double> values;
     for (const Seconds& run : runs) values.push_back(run.*member);
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2),
+                     values.end());
     return values[values.size() / 2];
   };
   return {middle(&Seconds::wall), middle(&Seconds::cpu)};
@@ -77,14 +80,71 @@ int main(int argc, char** argv) {
   options.threads = threads;
   for (int r = 0; r < reps; ++r)
     builds.push_back(timed([&] {
-      const Accelerator tree = Accelerator::build(cut.surface.positions, cut.surface.faces, kDefaultAccel, options);
+      const Accelerator tree =
+          Accelerator::build(cut.surface.positions, cut.surface.faces, kDefaultAccel, options);
       (void)tree;
     }));
   const Seconds cutTime = median(cuts), buildTime = median(builds);
-  std::printf("isosurface s = 0: %zu triangles, %zu vertices: %.3f s wall, %.3f s CPU\n", cut.surface.faceCount(),
-              cut.surface.positions.size(), cutTime.wall, cutTime.cpu);
+  std::printf("isosurface s = 0: %zu triangles, %zu vertices: %.3f s wall, %.3f s CPU\n",
+              cut.surface.faceCount(), cut.surface.positions.size(), cutTime.wall, cutTime.cpu);
   std::printf("BVH build over them (%d threads): %.3f s wall, %.3f s CPU; isosurface / build: %.2f (wall)\n",
               threads, buildTime.wall, buildTime.cpu, cutTime.wall / buildTime.wall);
+
+  // The slice through the box's middle, against the BVH build over it (a plane through a plane of
+  // nodes: the awkward case for the cut).
+  for (const double z : {0.5001, 0.5}) {
+    VolumeCut slice;
+    const Seconds sliceTime = timed([&] {
+      slice = sliceVolume(volume, Vec3d{0.5, 0.5, z} - volume.origin, {0, 0, 1});
+    });
+    double boxArea = 0;
+    int slivers = 0;
+    for (const MeshFace& face : slice.surface.faces) {
+      Aabb b;
+      for (int c = 0; c < 3; ++c) b.extend(slice.surface.positions[face.vertex[c]]);
+      const Vec3 e = b.extent();
+      boxArea += double(e.x) * e.y;
+      const Vec3d a = toDouble(slice.surface.positions[face.vertex[0]]);
+      const Vec3d ab = toDouble(slice.surface.positions[face.vertex[1]]) - a,
+                  ac = toDouble(slice.surface.positions[face.vertex[2]]) - a;
+      const double longest = std::max({length(ab), length(ac), length(ab - ac)});
+      if (length(cross(ab, ac)) / longest < 1e-4 * longest) ++slivers;
+    }
+    int nonFinite = 0;
+    for (const Vec3& p : slice.surface.positions) nonFinite += !std::isfinite(p.x + p.y + p.z);
+    std::vector<std::array<std::uint32_t, 3>> keys;
+    for (const MeshFace& face : slice.surface.faces) {
+      std::array<std::uint32_t, 3> k{face.vertex[0], face.vertex[1], face.vertex[2]};
+      std::sort(k.begin(), k.end());
+      keys.push_back(k);
+    }
+    std::sort(keys.begin(), keys.end());
+    const auto duplicates =
+        keys.size() - static_cast<std::size_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
+    std::printf("z = %g: sum of triangle boxes' areas %.4f, slivers %d, non-finite %d, duplicate faces %zu\n",
+                z, boxArea, slivers, nonFinite, duplicates);
+    Aabb box;
+    for (const Vec3& p : slice.surface.positions) box.extend(p);
+    double area = 0, largest = 0;
+    for (const MeshFace& face : slice.surface.faces) {
+      const Vec3d a = toDouble(slice.surface.positions[face.vertex[0]]);
+      const double twice = length(cross(toDouble(slice.surface.positions[face.vertex[1]]) - a,
+                                        toDouble(slice.surface.positions[face.vertex[2]]) - a));
+      area += 0.5 * twice;
+      largest = std::max(largest, 0.5 * twice);
+    }
+    std::printf("slice area %.6f (largest triangle %.3g)\n", area, largest);
+    KdBuildOptions one;
+    one.threads = threads;
+    const Seconds sliceBuild = timed([&] {
+      const Accelerator tree =
+          Accelerator::build(slice.surface.positions, slice.surface.faces, kDefaultAccel, one);
+      (void)tree;
+    });
+    std::printf("slice z = 0.5: %zu triangles, %zu vertices, box z %.9g .. %.9g: %.3f s; its BVH %.3f s\n",
+                slice.surface.faceCount(), slice.surface.positions.size(), box.lower.z + volume.origin.z,
+                box.upper.z + volume.origin.z, sliceTime.wall, sliceBuild.wall);
+  }
 
   // 1,000 field lines of b from seeds within 0.45 of the box's axis, forward, 1,000 steps each.
   const VolumeLocator locator(volume);
@@ -108,7 +168,8 @@ int main(int argc, char** argv) {
     full += line.forwardEnd == FieldLineEnd::kSteps;
   }
   const Seconds traceTime = median(traces);
-  std::printf("field lines: %zu lines, %zu steps (%zu lines ran all 1,000), %d threads: %.3f s wall, %.3f s CPU\n",
-              lines.size(), steps, full, threads, traceTime.wall, traceTime.cpu);
+  std::printf(
+      "field lines: %zu lines, %zu steps (%zu lines ran all 1,000), %d threads: %.3f s wall, %.3f s CPU\n",
+      lines.size(), steps, full, threads, traceTime.wall, traceTime.cpu);
   return 0;
 }

@@ -101,7 +101,11 @@ class CutBuilder {
     std::uint32_t idA = pointId(cell, a), idB = pointId(cell, b);
     // The segment in one direction whichever cell meets it, so both compute the same point.
     if (idA > idB) std::swap(a, b), std::swap(idA, idB);
-    const float t = (value - level[a]) / (level[b] - level[a]);
+    float t = (value - level[a]) / (level[b] - level[a]);
+    // A cut through a node (a slice through a plane of nodes) is that node, whichever segment
+    // reaches it: one vertex, shared by every triangle around it.
+    if (level[a] == value) t = 0, idB = idA;
+    if (level[b] == value) t = 1, idA = idB;
     corner = CutPoint{cell, a, b, t};
     const std::uint64_t key = (std::uint64_t{idA} << 32) | idB;
     const std::uint32_t known = vertices_.find(key);
@@ -109,7 +113,9 @@ class CutBuilder {
     const Vec3d& pa = geometry.point[a];
     const Vec3d& pb = geometry.point[b];
     const auto index = static_cast<std::uint32_t>(cut_.surface.positions.size());
-    cut_.surface.positions.push_back(toFloat(pa + (pb - pa) * static_cast<double>(t)));
+    cut_.surface.positions.push_back(toFloat(t == 0   ? pa
+                                             : t == 1 ? pb
+                                                      : pa + (pb - pa) * static_cast<double>(t)));
     cut_.vertexPoint.push_back(corner);
     vertices_.insert(key, index);
     return index;
@@ -121,7 +127,16 @@ class CutBuilder {
     const Vec3d p0 = toDouble(cut_.surface.positions[vertex[0]]);
     const Vec3d normal = cross(toDouble(cut_.surface.positions[vertex[1]]) - p0,
                                toDouble(cut_.surface.positions[vertex[2]]) - p0);
-    if (dot(normal, normal) == 0) return;
+    // Slivers (a cut through nodes makes triangles of next to no width along the elements' faces)
+    // cover nothing and are dropped.
+    const double longest = std::max(
+        {dot(toDouble(cut_.surface.positions[vertex[1]]) - p0,
+             toDouble(cut_.surface.positions[vertex[1]]) - p0),
+         dot(toDouble(cut_.surface.positions[vertex[2]]) - p0,
+             toDouble(cut_.surface.positions[vertex[2]]) - p0),
+         dot(toDouble(cut_.surface.positions[vertex[2]]) - toDouble(cut_.surface.positions[vertex[1]]),
+             toDouble(cut_.surface.positions[vertex[2]]) - toDouble(cut_.surface.positions[vertex[1]]))});
+    if (!(dot(normal, normal) > 1e-16 * longest * longest)) return;
     if (dot(normal, towardsHigher) < 0) std::swap(vertex[1], vertex[2]), std::swap(corner[1], corner[2]);
     cut_.surface.faces.push_back(MeshFace{{vertex[0], vertex[1], vertex[2], kNoVertex}});
     cut_.surface.facePhysicalTag.push_back(volume_.cellPhysicalTag[cell]);
@@ -209,7 +224,15 @@ VolumeCut sliceVolume(const VolumeMesh& volume, const Vec3d& point, const Vec3d&
     }
     out[kCellCentre] = static_cast<float>(sum / corners);
   };
-  return cutVolume(volume, distance, 0.0F, true);
+  VolumeCut cut = cutVolume(volume, distance, 0.0F, true);
+  // A plane across an axis is made exactly flat: rounding leaves its points a few ulps off it, and a
+  // surface that thin but not flat is far slower to trace than either a flat or a thick one.
+  for (int axis = 0; axis < 3; ++axis) {
+    if (std::abs(unit[axis]) != 1.0) continue;
+    const auto on = static_cast<float>(point[axis]);
+    for (Vec3& position : cut.surface.positions) position[axis] = on;
+  }
+  return cut;
 }
 
 MeshField cutField(const VolumeCut& cut, const VolumeMesh& volume, const VolumeField& field) {

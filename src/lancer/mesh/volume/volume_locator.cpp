@@ -51,6 +51,7 @@ void cellPointValues(const VolumeMesh& volume, const VolumeField& field, std::ui
 VolumeLocator::VolumeLocator(const VolumeMesh& volume) : volume_(volume) {
   for (const Vec3& node : volume.nodes) bounds_.extend(toDouble(node));
   const std::size_t cells = volume.cells.size();
+  buildNodeCells();
   if (cells == 0) {
     binStart_.assign(2, 0);
     return;
@@ -107,6 +108,19 @@ VolumeLocator::VolumeLocator(const VolumeMesh& volume) : volume_(volume) {
   }
 }
 
+void VolumeLocator::buildNodeCells() {
+  nodeCellStart_.assign(volume_.nodes.size() + 1, 0);
+  for (const auto& cell : volume_.cells)
+    for (const std::uint32_t node : cell)
+      if (node != kOutside) ++nodeCellStart_[node + 1];
+  for (std::size_t n = 0; n < volume_.nodes.size(); ++n) nodeCellStart_[n + 1] += nodeCellStart_[n];
+  nodeCells_.resize(nodeCellStart_.back());
+  std::vector<std::uint32_t> next(nodeCellStart_.begin(), nodeCellStart_.end() - 1);
+  for (std::uint32_t c = 0; c < volume_.cells.size(); ++c)
+    for (const std::uint32_t node : volume_.cells[c])
+      if (node != kOutside) nodeCells_[next[node]++] = c;
+}
+
 bool VolumeLocator::locateInCell(const Vec3d& point, std::uint32_t cell, CellPoint& found) const {
   const CellShape shape = volume_.shapes[cell];
   const CellTetrahedra split = cellTetrahedra(shape, volume_.cells[cell]);
@@ -136,9 +150,54 @@ bool VolumeLocator::locateInCell(const Vec3d& point, std::uint32_t cell, CellPoi
   return false;
 }
 
+bool VolumeLocator::walk(const Vec3d& point, std::uint32_t cell, CellPoint& found) const {
+  // A few steps through tetrahedra, each across the face the point lies beyond (its most negative
+  // barycentric coordinate); a step onto another shape or out of the mesh gives up.
+  constexpr int kSteps = 8;
+  for (int step = 0; step < kSteps; ++step) {
+    if (volume_.shapes[cell] != CellShape::kTetrahedron) return false;
+    const auto& corners = volume_.cells[cell];
+    const Vec3d a = toDouble(volume_.nodes[corners[0]]);
+    const Vec3d ab = toDouble(volume_.nodes[corners[1]]) - a, ac = toDouble(volume_.nodes[corners[2]]) - a,
+                ad = toDouble(volume_.nodes[corners[3]]) - a;
+    const double whole = determinant(ab, ac, ad);
+    if (whole == 0) return false;
+    const Vec3d ap = point - a;
+    const double w1 = determinant(ap, ac, ad) / whole, w2 = determinant(ab, ap, ad) / whole,
+                 w3 = determinant(ab, ac, ap) / whole;
+    const std::array<double, 4> w{1 - w1 - w2 - w3, w1, w2, w3};
+    const int out = static_cast<int>(std::min_element(w.begin(), w.end()) - w.begin());
+    if (w[static_cast<std::size_t>(out)] >= -1e-9) {
+      found.cell = cell;
+      found.points = {0, 1, 2, 3};
+      found.weights = w;
+      return true;
+    }
+    // The cell across the face opposite corner `out`: the other cell around its first node that holds
+    // its other two nodes too.
+    std::array<std::uint32_t, 3> face{};
+    for (int k = 0, n = 0; k < 4; ++k)
+      if (k != out) face[static_cast<std::size_t>(n++)] = corners[static_cast<std::size_t>(k)];
+    std::uint32_t next = kOutside;
+    for (std::uint32_t i = nodeCellStart_[face[0]]; i < nodeCellStart_[face[0] + 1] && next == kOutside;
+         ++i) {
+      const std::uint32_t other = nodeCells_[i];
+      if (other == cell) continue;
+      const auto& c = volume_.cells[other];
+      const auto holds = [&](std::uint32_t node) { return std::find(c.begin(), c.end(), node) != c.end(); };
+      if (holds(face[1]) && holds(face[2])) next = other;
+    }
+    if (next == kOutside) return false;
+    cell = next;
+  }
+  return false;
+}
+
 CellPoint VolumeLocator::locate(const Vec3d& point, std::uint32_t hint) const {
   CellPoint found;
-  if (hint != kOutside && hint < volume_.cells.size() && locateInCell(point, hint, found)) return found;
+  if (hint != kOutside && hint < volume_.cells.size() &&
+      (walk(point, hint, found) || locateInCell(point, hint, found)))
+    return found;
   if (volume_.cells.empty()) return found;
   std::array<int, 3> bin{};
   for (int axis = 0; axis < 3; ++axis) {
@@ -159,6 +218,17 @@ CellPoint VolumeLocator::locate(const Vec3d& point, std::uint32_t hint) const {
 
 void VolumeLocator::interpolate(const VolumeField& field, const CellPoint& at, float* out) const {
   const auto components = static_cast<std::size_t>(field.components);
+  if (field.at == FieldAt::kNode && *std::max_element(at.points.begin(), at.points.end()) < kCellCentre) {
+    // Node data on four corners (every tetrahedron, the pyramids' halves): no centre to make.
+    const auto& corners = volume_.cells[at.cell];
+    for (std::size_t c = 0; c < components; ++c) {
+      double sum = 0;
+      for (std::size_t k = 0; k < 4; ++k)
+        sum += at.weights[k] * field.values[corners[at.points[k]] * components + c];
+      out[c] = static_cast<float>(sum);
+    }
+    return;
+  }
   std::array<float, (kMaxCellCorners + 1) * 9> values{};
   cellPointValues(volume_, field, at.cell, values.data());
   for (std::size_t c = 0; c < components; ++c) {

@@ -1,7 +1,8 @@
 // Finds the cell that holds a point, and where in it, for probes, field lines and arrows inside a
 // volume: a uniform grid over the cells' bounding boxes, then the cell's tetrahedra
 // (cell_tetrahedra.hpp) by barycentric coordinates. Values there are the tetrahedron's linear
-// interpolation of the corners' (and the centre's) values.
+// interpolation of the corners' (and the centre's) values. From a nearby cell (a hint), a walk
+// through neighbouring tetrahedra finds it first.
 #pragma once
 
 #include <array>
@@ -35,6 +36,10 @@ class VolumeLocator {
 
  private:
   bool locateInCell(const Vec3d& point, std::uint32_t cell, CellPoint& found) const;
+  // From `cell` through neighbouring tetrahedra towards the point (a field line's next point is a
+  // cell or two away); false when it leaves the tetrahedra or the mesh (the grid then decides).
+  bool walk(const Vec3d& point, std::uint32_t cell, CellPoint& found) const;
+  void buildNodeCells();
 
   const VolumeMesh& volume_;
   Aabbd bounds_;
@@ -42,6 +47,8 @@ class VolumeLocator {
   Vec3d binSize_{1, 1, 1};
   std::vector<std::uint32_t> binStart_;  // CSR: the cells overlapping each bin
   std::vector<std::uint32_t> binCells_;
+  std::vector<std::uint32_t> nodeCellStart_;  // CSR: the cells around each node (for the walk)
+  std::vector<std::uint32_t> nodeCells_;
 };
 
 // A field's values at a cell's tetrahedron points: corner k at out[k * components], the centre (the
