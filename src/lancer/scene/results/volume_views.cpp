@@ -467,7 +467,10 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       settings.forward = spec->forward;
       settings.backward = spec->backward;
       if (spec->maxLength) settings.maxLength = *spec->maxLength;
-      const std::vector<FieldLine> lines = traceFieldLines(volume, locator, *field, seeds, settings);
+      // Element and element-node data follow their node means: a field that jumps at every face
+      // (a gradient of P1 elements) turns lines back and forth where its neighbours disagree.
+      const std::vector<FieldLine> lines =
+          traceFieldLines(volume, locator, nodeMeans(volume, *field), seeds, settings);
       const auto outside = static_cast<std::size_t>(std::count_if(
           lines.begin(), lines.end(), [](const FieldLine& line) { return line.points.empty(); }));
       if (outside == lines.size())
