@@ -16,8 +16,8 @@ std::array<std::array<std::uint8_t, 3>, 2> splitQuad(
     const Face& quad, const std::array<std::uint32_t, kMaxCellCorners>& corners) {
   int least = 0;
   for (int i = 1; i < 4; ++i)
-    if (corners[static_cast<std::size_t>(quad[static_cast<std::size_t>(i)])] <
-        corners[static_cast<std::size_t>(quad[static_cast<std::size_t>(least)])])
+    if (corners[static_cast<std::uint8_t>(quad[static_cast<std::size_t>(i)])] <
+        corners[static_cast<std::uint8_t>(quad[static_cast<std::size_t>(least)])])
       least = i;
   const auto at = [&](int i) {
     return static_cast<std::uint8_t>(quad[static_cast<std::size_t>((least + i) % 4)]);
