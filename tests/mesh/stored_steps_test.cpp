@@ -79,7 +79,8 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, StoredStepsFixture,
                                          "fields/element_xy_v22_ascii.msh", "fields/element_xy_v41_bin.msh",
                                          "fields/element_tet10_v41_bin.msh",
                                          "fields/node_quad8_v41_ascii.msh", "fields/node_vector_v41_bin.msh",
-                                         "results/cantilever.msh", "results/steps/step_2.msh"));
+                                         "results/cantilever.msh", "results/steps/step_2.msh",
+                                         "volume/capacitor.msh", "volume/cube_hex.msh"));
 
 const MeshField& fieldAt(const Mesh& mesh, const std::string& name, int step) {
   for (const MeshField& field : mesh.fields)

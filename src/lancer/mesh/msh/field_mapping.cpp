@@ -39,7 +39,8 @@ void remapNodeValues(std::vector<float>& values, int componentCount,
 
 std::vector<float> mapElementValues(std::vector<std::uint64_t> tags, const std::vector<float>& values,
                                     int componentCount, const std::vector<std::uint64_t>& faceElement,
-                                    const std::vector<std::pair<std::uint64_t, std::uint64_t>>& aliases) {
+                                    const std::vector<std::pair<std::uint64_t, std::uint64_t>>& aliases,
+                                    const MshCoveredElements& covered) {
   for (std::uint64_t& tag : tags) {
     const auto alias = std::lower_bound(aliases.begin(), aliases.end(), std::pair{tag, std::uint64_t{0}});
     if (alias != aliases.end() && alias->first == tag) tag = alias->second;
@@ -50,10 +51,15 @@ std::vector<float> mapElementValues(std::vector<std::uint64_t> tags, const std::
   std::sort(byTag.begin(), byTag.end());
   const auto components = static_cast<std::size_t>(componentCount);
   std::vector<float> perFace(faceElement.size() * components, std::numeric_limits<float>::quiet_NaN());
+  const auto recordOf = [&](std::uint64_t tag) {
+    const auto found = std::lower_bound(byTag.begin(), byTag.end(), std::pair{tag, std::uint32_t{0}});
+    return found == byTag.end() || found->first != tag ? byTag.end() : found;
+  };
   for (std::size_t f = 0; f < faceElement.size(); ++f) {
-    const auto found =
-        std::lower_bound(byTag.begin(), byTag.end(), std::pair{faceElement[f], std::uint32_t{0}});
-    if (found == byTag.end() || found->first != faceElement[f]) continue;
+    auto found = recordOf(faceElement[f]);
+    if (found == byTag.end() && !covered.element.empty() && covered.element[f] != kNoCoveredElement)
+      found = recordOf(covered.element[f]);
+    if (found == byTag.end()) continue;
     std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(found->second * components), components,
                 perFace.begin() + static_cast<std::ptrdiff_t>(f * components));
   }
@@ -64,20 +70,28 @@ namespace {
 
 constexpr std::uint32_t kNoRecord = 0xFFFFFFFFu;
 
-// Per face corner, the value recordOf(its element's tag) gives for its node: nodeCount(record)
-// nodes, their values from valuesOf(record) on.
+// Per face corner, the value recordOf(its element's tag) gives for its node, else recordOf(the
+// covered volume element's tag) for the node there: nodeCount(record) nodes, their values from
+// valuesOf(record) on.
 template <typename RecordOf, typename NodeCount, typename ValuesOf>
 std::vector<float> cornerValues(int componentCount, const std::vector<std::uint64_t>& faceElement,
-                                const std::vector<MshCornerNodes>& faceCornerNode, RecordOf recordOf,
-                                NodeCount nodeCount, ValuesOf valuesOf) {
+                                const std::vector<MshCornerNodes>& faceCornerNode,
+                                const MshCoveredElements& covered, RecordOf recordOf, NodeCount nodeCount,
+                                ValuesOf valuesOf) {
   const auto components = static_cast<std::size_t>(componentCount);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   std::vector<float> perCorner = vectorOnHugePages(faceElement.size() * kCornerSlots * components, nan);
   for (std::size_t f = 0; f < faceElement.size(); ++f) {
-    const std::uint32_t record = recordOf(faceElement[f]);
-    if (record == kNoRecord) continue;
+    std::uint32_t record = recordOf(faceElement[f]);
+    const MshCornerNodes* cornerNodes = &faceCornerNode[f];
+    if (record == kNoRecord) {  // a skin face's surface element without values: its volume element's
+      if (covered.element.empty() || covered.element[f] == kNoCoveredElement) continue;
+      record = recordOf(covered.element[f]);
+      if (record == kNoRecord) continue;
+      cornerNodes = &covered.cornerNode[f];
+    }
     float* out = perCorner.data() + f * kCornerSlots * components;
-    const MshCornerNodes& nodes = faceCornerNode[f];
+    const MshCornerNodes& nodes = *cornerNodes;
     int added = -1;
     for (std::size_t s = 0; s < kCornerSlots; ++s) {
       if (nodes[s] == kAddedCentre) added = static_cast<int>(s);
@@ -103,7 +117,8 @@ std::vector<float> cornerValues(int componentCount, const std::vector<std::uint6
 std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componentCount,
                                         const std::vector<std::uint64_t>& faceElement,
                                         const std::vector<MshCornerNodes>& faceCornerNode,
-                                        const std::vector<std::pair<std::uint64_t, std::uint64_t>>& aliases) {
+                                        const std::vector<std::pair<std::uint64_t, std::uint64_t>>& aliases,
+                                        const MshCoveredElements& covered) {
   if (!aliases.empty())
     for (std::uint64_t& tag : records.tags) {
       const auto alias = std::lower_bound(aliases.begin(), aliases.end(), std::pair{tag, std::uint64_t{0}});
@@ -140,7 +155,7 @@ std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componen
     return found == byTag.end() || found->first != tag ? kNoRecord : found->second;
   };
   return cornerValues(
-      componentCount, faceElement, faceCornerNode, recordOf,
+      componentCount, faceElement, faceCornerNode, covered, recordOf,
       [&](std::uint32_t record) { return records.nodeCount[record]; },
       [&](std::uint32_t record) { return records.values.data() + records.firstValue[record]; });
 }
@@ -149,7 +164,7 @@ std::vector<float> mapElementNodeValues(const UniformElementNodeRecords& records
                                         const std::vector<std::uint64_t>& faceElement,
                                         const std::vector<MshCornerNodes>& faceCornerNode) {
   return cornerValues(
-      componentCount, faceElement, faceCornerNode,
+      componentCount, faceElement, faceCornerNode, MshCoveredElements{},
       [&](std::uint64_t tag) -> std::uint32_t {
         return tag < records.firstTag || tag - records.firstTag >= records.count
                    ? kNoRecord

@@ -243,7 +243,7 @@ void readElementRecords(MshCursor& cursor, const MshFieldSection& section, const
   dropped.warn(cursor, "$ElementData", field.name, section.count, warnings);
   if (mapping.volume) mapping.volume->addElementField(field, tags, values);
   field.values = mapElementValues(std::move(tags), values, field.components, mapping.faceElement,
-                                  mapping.elementAliases);
+                                  mapping.elementAliases, mapping.covered);
 }
 
 // The records' values per face corner, from the record of the element each face came from.
@@ -279,7 +279,7 @@ void readElementNodeRecords(MshCursor& cursor, const MshFieldSection& section, c
   dropped.warn(cursor, "$ElementNodeData", field.name, section.count, warnings);
   if (mapping.volume) mapping.volume->addElementNodeField(field, records);
   field.values = mapElementNodeValues(std::move(records), field.components, mapping.faceElement,
-                                      mapping.faceCornerNode, mapping.elementAliases);
+                                      mapping.faceCornerNode, mapping.elementAliases, mapping.covered);
 }
 
 }  // namespace

@@ -146,6 +146,15 @@ std::uint16_t elementNodePosition(const std::uint32_t* nodes, int count, std::ui
   return kAddedCentre;
 }
 
+// Where `node` is among the nodes of a volume face's element, `order` giving the element positions of
+// the face's nodes; kAddedCentre when it is none of them.
+std::uint16_t volumeFaceNodePosition(const MshVolumeFace& face, const std::array<std::uint16_t, 9>& order,
+                                     std::uint32_t node) {
+  for (int i = 0; i < 9; ++i)
+    if (volumeFaceNode(face, i) == node) return order[static_cast<std::size_t>(i)];
+  return kAddedCentre;
+}
+
 }  // namespace
 
 void MshMeshAssembler::recordCornerNodes() {
@@ -154,11 +163,8 @@ void MshMeshAssembler::recordCornerNodes() {
   for (int c = 0; c < face.cornerCount(); ++c) {
     order[static_cast<std::size_t>(c)] = kAddedCentre;
     if (volumeFace_) {
-      for (int i = 0; i < 9; ++i)
-        if (volumeFaceNode(*volumeFace_, i) == face.vertex[c]) {
-          order[static_cast<std::size_t>(c)] = (*volumeFaceNodeOrder_)[static_cast<std::size_t>(i)];
-          break;
-        }
+      order[static_cast<std::size_t>(c)] =
+          volumeFaceNodePosition(*volumeFace_, *volumeFaceNodeOrder_, face.vertex[c]);
     } else if (elementNodes_) {
       // A face of a surface element mostly keeps its nodes' order: corner c is node c.
       order[static_cast<std::size_t>(c)] =
@@ -239,6 +245,22 @@ void MshMeshAssembler::alignWinding(const SurfaceElementFaces& element, const Ms
   }
 }
 
+void MshMeshAssembler::recordCoveredElement(const SurfaceElementFaces& element, std::uint32_t volumeFace) {
+  if (faceCoveredElement_.empty()) {
+    faceCoveredElement_.assign(faces_.size(), kNoCoveredElement);
+    faceCoveredCornerNode_.assign(faces_.size(),
+                                  {kNoElementNode, kNoElementNode, kNoElementNode, kNoElementNode});
+  }
+  const MshVolumeFace& face = volumeFaces_[volumeFace];
+  const std::array<std::uint16_t, 9>& order = volumeFaceNodes_[volumeFace];
+  for (std::uint32_t f = element.firstFace; f < element.firstFace + element.faceCount; ++f) {
+    faceCoveredElement_[f] = volumeFaceElement_[volumeFace];
+    for (int c = 0; c < faces_[f].cornerCount(); ++c)
+      faceCoveredCornerNode_[f][static_cast<std::size_t>(c)] =
+          volumeFaceNodePosition(face, order, faces_[f].vertex[c]);
+  }
+}
+
 void MshMeshAssembler::moveFace(std::size_t to, std::size_t from) {
   faces_[to] = faces_[from];
   facePhysical_[to] = facePhysical_[from];
@@ -247,6 +269,10 @@ void MshMeshAssembler::moveFace(std::size_t to, std::size_t from) {
   if (trackElements_) {
     faceElement_[to] = faceElement_[from];
     faceCornerNode_[to] = faceCornerNode_[from];
+    if (!faceCoveredElement_.empty()) {
+      faceCoveredElement_[to] = faceCoveredElement_[from];
+      faceCoveredCornerNode_[to] = faceCoveredCornerNode_[from];
+    }
   }
   if (trackSides_) {
     sides_.side[to] = sides_.side[from];
@@ -263,6 +289,10 @@ void MshMeshAssembler::truncateFaces(std::size_t count) {
   if (trackElements_) {
     faceElement_.resize(count);
     faceCornerNode_.resize(count);
+    if (!faceCoveredElement_.empty()) {
+      faceCoveredElement_.resize(count);
+      faceCoveredCornerNode_.resize(count);
+    }
   }
   if (trackSides_) {
     sides_.side.resize(count);
@@ -345,6 +375,8 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
       }
       addBoundaryFace[b] = 0;
       ++source.skinFacesCoveredBySurfaces;
+      if (trackElements_)
+        for (auto e = begin; e != end; ++e) recordCoveredElement(*e, boundary[b].face);
       if (!anyInterface) continue;
       // Among interfaces, edges meet three faces and shells cannot be oriented by their edges: the
       // surface element takes its volume's winding instead.
@@ -521,7 +553,21 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
       slots[static_cast<std::size_t>(cornerSlot(face, c))] = faceCornerNode_[f][static_cast<std::size_t>(c)];
   });
   faceCornerNode_ = std::vector<MshCornerNodes>();
-  mapElementFields(mesh, cornerSlots);
+  MshCoveredElements covered;
+  if (!faceCoveredElement_.empty()) {
+    covered.element = std::move(faceCoveredElement_);
+    covered.cornerNode.resize(faceCoveredCornerNode_.size());
+    for (std::size_t f = 0; f < covered.element.size(); ++f) {
+      if (covered.element[f] == kNoCoveredElement) continue;
+      MshCornerNodes& slots = covered.cornerNode[f];
+      slots.fill(kNoElementNode);
+      for (int c = 0; c < mesh.faces[f].cornerCount(); ++c)
+        slots[static_cast<std::size_t>(cornerSlot(mesh.faces[f], c))] =
+            faceCoveredCornerNode_[f][static_cast<std::size_t>(c)];
+    }
+    faceCoveredCornerNode_ = std::vector<MshCornerNodes>();
+  }
+  mapElementFields(mesh, cornerSlots, covered);
   if (keepFieldMapping_) {
     // The reader's field sections are read after this, into the mesh's order: what it takes.
     auto mapping = std::make_shared<MshFieldMapping>();
@@ -534,6 +580,7 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
     mapping->faceElement = std::move(faceElement_);
     mapping->faceCornerNode = std::move(cornerSlots);
     mapping->elementAliases = std::move(elementAliases_);
+    mapping->covered = std::move(covered);
     mapping->volume = volumeCapture_;
     fieldMapping_ = std::move(mapping);
   }
@@ -541,18 +588,19 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   return mesh;
 }
 
-void MshMeshAssembler::mapElementFields(Mesh& mesh, const std::vector<MshCornerNodes>& cornerSlots) {
+void MshMeshAssembler::mapElementFields(Mesh& mesh, const std::vector<MshCornerNodes>& cornerSlots,
+                                        const MshCoveredElements& covered) {
   for (ElementField& raw : elementFields) {
     if (volumeCapture_) volumeCapture_->addElementField(raw.field, raw.tags, raw.field.values);
     raw.field.values = mapElementValues(std::move(raw.tags), raw.field.values, raw.field.components,
-                                        faceElement_, elementAliases_);
+                                        faceElement_, elementAliases_, covered);
     mesh.fields.push_back(std::move(raw.field));
   }
   elementFields.clear();
   for (ElementNodeField& raw : elementNodeFields) {
     if (volumeCapture_) volumeCapture_->addElementNodeField(raw.field, raw.records);
     raw.field.values = mapElementNodeValues(std::move(raw.records), raw.field.components, faceElement_,
-                                            cornerSlots, elementAliases_);
+                                            cornerSlots, elementAliases_, covered);
     mesh.fields.push_back(std::move(raw.field));
   }
   elementNodeFields.clear();

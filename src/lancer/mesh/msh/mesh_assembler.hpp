@@ -113,6 +113,10 @@ class MshMeshAssembler {
     if (trackElements_) {
       faceElement_.push_back(element_);
       recordCornerNodes();
+      if (!faceCoveredElement_.empty()) {
+        faceCoveredElement_.push_back(kNoCoveredElement);
+        faceCoveredCornerNode_.push_back({kNoElementNode, kNoElementNode, kNoElementNode, kNoElementNode});
+      }
     }
     facePhysical_.push_back(physical_);
     faceEntity_.push_back(entity_);
@@ -145,12 +149,15 @@ class MshMeshAssembler {
   };
   std::vector<SurfaceElementFaces> surfaceElementsByKey() const;
   void alignWinding(const SurfaceElementFaces& element, const MshVolumeFace& volumeFace);
+  // The faces of a surface element that covers volume face `volumeFace` remember its element.
+  void recordCoveredElement(const SurfaceElementFaces& element, std::uint32_t volumeFace);
   void moveFace(std::size_t to, std::size_t from);  // every per-face array
   void truncateFaces(std::size_t count);
   void removeFaces(const std::vector<std::uint8_t>& removed);
   void addVolumeFace(const MshVolumeFace& face);
   void appendVolumeBoundary(MeshSourceInfo& source);
-  void mapElementFields(Mesh& mesh, const std::vector<MshCornerNodes>& cornerSlots);
+  void mapElementFields(Mesh& mesh, const std::vector<MshCornerNodes>& cornerSlots,
+                        const MshCoveredElements& covered);
 
   std::vector<MeshFace> faces_;
   std::vector<std::int32_t> facePhysical_;
@@ -170,6 +177,11 @@ class MshMeshAssembler {
   // the nodes of the element at hand: elementNodes_ for a surface element, else volumeFaceNodes_.
   std::vector<MshCornerNodes> faceCornerNode_;
   std::vector<std::array<std::uint16_t, 9>> volumeFaceNodes_;
+  // When tracking and a surface element covers a volume's skin face, per face: the volume element
+  // under it and where the face's corners are among that element's nodes (MshCoveredElements, in
+  // corner order until finish()); empty otherwise, 16 bytes a face then.
+  std::vector<std::uint64_t> faceCoveredElement_;
+  std::vector<MshCornerNodes> faceCoveredCornerNode_;
   const std::uint32_t* elementNodes_ = nullptr;
   int elementType_ = 0;  // of elementNodeCount_
   int elementNodeCount_ = 0;
