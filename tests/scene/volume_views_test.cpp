@@ -166,6 +166,15 @@ TEST(VolumeViews, SceneFileKeysAreChecked) {
        "gives both color and color_by"},
       {"isosurfaces = { count = 3 }\n", "field"},
       {"isosurfaces = { field = \"f\", values = [1e39] }\n", "finite numbers"},
+      {"streamlines = { field = \"f\" }\n", "field lines follow a vector (3 components)"},
+      {"streamlines = { field = \"u\", seed_line = [[0, 0, 0], [1, 1, 1]], seed_points = [[0.5, 0.5, 0.5]] "
+       "}\n",
+       "gives seeds more than one way"},
+      {"streamlines = { field = \"u\", seed_center = [0.5, 0.5, 0.5] }\n", "a disk of seeds needs"},
+      {"streamlines = { field = \"u\", seed_points = [[5, 5, 5]] }\n",
+       "none of the 1 seeds is inside the volume"},
+      {"streamlines = { field = \"u\", seed_line = [[0, 0, 0]] }\n", "must be an array of 2 points"},
+      {"streamlines = { field = \"u\", direction = \"up\" }\n", "direction"},
   };
   for (const auto& c : cases) {
     std::ofstream(path) << topViewScene(c.mesh);
@@ -174,6 +183,33 @@ TEST(VolumeViews, SceneFileKeysAreChecked) {
     EXPECT_EQ(run.exitCode, 2) << c.mesh << "\n" << run.output;
     EXPECT_TRUE(test::contains(run.output, c.message)) << c.mesh << "\n" << run.output;
   }
+}
+
+TEST(VolumeViews, FieldLinesFromEverySeedKindRender) {
+  const test::ScratchFolder folder;
+  const std::string path = folder.file("scene.toml");
+  for (const std::string lines : {"streamlines = { field = \"u\", count = 5 }",
+                                  "streamlines = { field = \"u\", seed_points = [[0.5, 0.5, 0.5]] }",
+                                  "streamlines = { field = \"u\", seed_line = [[0.1, 0.1, 0.5], [0.9, 0.9, "
+                                  "0.5]], count = 4, color = [1, 0, 0] }",
+                                  "streamlines = { field = \"u\", seed_center = [0.5, 0.5, 0.5], seed_radius "
+                                  "= 0.2, count = 6, color_by = \"f\" }"}) {
+    std::ofstream(path) << topViewScene(lines + "\nskin = \"edges\"\n");
+    const test::CommandResult run = test::runCli("render " + test::quoted(path) + " -q -o " +
+                                                 test::quoted(folder.file("out.png")) + " 2>&1");
+    EXPECT_EQ(run.exitCode, 0) << lines << "\n" << run.output;
+  }
+  const test::CommandResult cli =
+      test::runCli("render " + test::quoted(cube()) +
+                   " --streamlines u:3 --seed-line 0.1,0.1,0.5,0.9,0.9,0.5 --width 32 "
+                   "--height 24 -q -o " +
+                   test::quoted(folder.file("cli.png")) + " 2>&1");
+  EXPECT_EQ(cli.exitCode, 0) << cli.output;
+  const test::CommandResult bad =
+      test::runCli("render " + test::quoted(cube()) + " --seed-line 0,0,0,1,1,1 -o " +
+                   test::quoted(folder.file("bad.png")) + " 2>&1");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_TRUE(test::contains(bad.output, "add --streamlines")) << bad.output;
 }
 
 TEST(VolumeProbeCli, PrintsTheFieldAndSaysWhatIsWrong) {

@@ -202,6 +202,33 @@ const VolumeField& isosurfaceField(const VolumeMesh& volume, const IsosurfaceSpe
   throw InputError(spec.where, fmt::format("isosurfaces of '{}': it has no step {}", spec.field, step));
 }
 
+// The inline table `key` of a [mesh] for a view of one field, with that field and its step read:
+// nothing when the key is absent. `example` is what the key's error shows; `fieldHint` what the
+// missing field's does.
+struct FieldViewTable {
+  TomlTableReader reader;
+  SourceLocation where;
+  std::string field;
+  std::optional<int> step;
+};
+std::optional<FieldViewTable> readFieldViewTable(const TomlTableReader& mesh, std::string_view key,
+                                                 const char* example, const char* fieldHint,
+                                                 SceneTable kind) {
+  const toml::node* node = mesh.find(key);
+  if (!node) return std::nullopt;
+  const auto* table = node->as_table();
+  if (!table)
+    mesh.fail(*node, fmt::format("{} must be a table like {}, found {}", mesh.qualified(key), example,
+                                 describeValue(*node)));
+  FieldViewTable view{
+      TomlTableReader(*table, mesh.qualified(key), mesh.file(), kind), mesh.location(*node), {}, {}};
+  const std::optional<std::string> field = view.reader.nonEmptyString("field");
+  if (!field) view.reader.failMissing("field", fieldHint);
+  view.field = *field;
+  if (auto step = view.reader.integer("step", 0, 1'000'000'000)) view.step = static_cast<int>(*step);
+  return view;
+}
+
 }  // namespace
 
 SliceSpec readSlice(const TomlTableReader& reader) {
@@ -219,20 +246,15 @@ SliceSpec readSlice(const TomlTableReader& reader) {
 void readVolumeViewKeys(const TomlTableReader& mesh, MeshInstance& instance) {
   readStreamlineKeys(mesh, instance);
   if (auto skin = mesh.choice("skin", kSkinStyles)) instance.volume.skin = static_cast<SkinStyle>(*skin);
-  const toml::node* node = mesh.find("isosurfaces");
-  if (!node) return;
-  const auto* table = node->as_table();
-  if (!table)
-    mesh.fail(*node, fmt::format("{} must be a table like {{ field = \"v\", count = 5 }}, found {}",
-                                 mesh.qualified("isosurfaces"), describeValue(*node)));
-  const TomlTableReader reader(*table, mesh.qualified("isosurfaces"), mesh.file(),
-                               SceneTable::MeshIsosurfaces);
+  const std::optional<FieldViewTable> view =
+      readFieldViewTable(mesh, "isosurfaces", "{ field = \"v\", count = 5 }",
+                         "field = \"v\" (a scalar field of the volume)", SceneTable::MeshIsosurfaces);
+  if (!view) return;
+  const TomlTableReader& reader = view->reader;
   IsosurfaceSpec spec;
-  spec.where = reader.location(*node);
-  const std::optional<std::string> field = reader.nonEmptyString("field");
-  if (!field) reader.failMissing("field", "field = \"v\" (a scalar field of the volume)");
-  spec.field = *field;
-  if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
+  spec.where = view->where;
+  spec.field = view->field;
+  spec.step = view->step;
   if (auto count = reader.integer("count", 1, kMaxIsosurfaces)) spec.count = static_cast<int>(*count);
   if (const toml::node* values = reader.find("values")) {
     const auto* array = values->as_array();
@@ -284,20 +306,15 @@ std::vector<Vec3d> readPoints(const TomlTableReader& reader, std::string_view ke
 }  // namespace
 
 void readStreamlineKeys(const TomlTableReader& mesh, MeshInstance& instance) {
-  const toml::node* node = mesh.find("streamlines");
-  if (!node) return;
-  const auto* table = node->as_table();
-  if (!table)
-    mesh.fail(*node, fmt::format("{} must be a table like {{ field = \"e\", count = 50 }}, found {}",
-                                 mesh.qualified("streamlines"), describeValue(*node)));
-  const TomlTableReader reader(*table, mesh.qualified("streamlines"), mesh.file(),
-                               SceneTable::MeshStreamlines);
+  const std::optional<FieldViewTable> view =
+      readFieldViewTable(mesh, "streamlines", "{ field = \"e\", count = 50 }",
+                         "field = \"e\" (a vector field of the volume)", SceneTable::MeshStreamlines);
+  if (!view) return;
+  const TomlTableReader& reader = view->reader;
   StreamlineSpec spec;
-  spec.where = reader.location(*node);
-  const std::optional<std::string> field = reader.nonEmptyString("field");
-  if (!field) reader.failMissing("field", "field = \"e\" (a vector field of the volume)");
-  spec.field = *field;
-  if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
+  spec.where = view->where;
+  spec.field = view->field;
+  spec.step = view->step;
   if (auto count = reader.integer("count", 1, kMaxStreamlines)) spec.count = static_cast<int>(*count);
   int seedKinds = 0;
   if (reader.find("seed_line")) {
@@ -315,9 +332,10 @@ void readStreamlineKeys(const TomlTableReader& mesh, MeshInstance& instance) {
     const std::optional<Vec3d> center = reader.vector("seed_center", Triple::Xyz);
     const std::optional<double> radius = reader.number("seed_radius", NumberRange::above(0));
     if (!center || !radius)
-      reader.fail(*node, fmt::format("{}: a disk of seeds needs seed_center = [x, y, z] and seed_radius (and "
-                                     "seed_normal, default [0, 0, 1])",
-                                     reader.label()));
+      reader.fail(reader.table(),
+                  fmt::format("{}: a disk of seeds needs seed_center = [x, y, z] and seed_radius (and "
+                              "seed_normal, default [0, 0, 1])",
+                              reader.label()));
     spec.diskCenter = *center;
     spec.diskRadius = *radius;
     if (auto normal = reader.vector("seed_normal", Triple::Xyz)) {
@@ -330,8 +348,9 @@ void readStreamlineKeys(const TomlTableReader& mesh, MeshInstance& instance) {
   }
   if (seedKinds > 1)
     reader.fail(
-        *node, fmt::format("{} gives seeds more than one way (seed_line, seed_points, a seed disk): keep one",
-                           reader.label()));
+        reader.table(),
+        fmt::format("{} gives seeds more than one way (seed_line, seed_points, a seed disk): keep one",
+                    reader.label()));
   if (auto radius = reader.number("radius", NumberRange::above(0))) spec.radius = *radius;
   if (auto length = reader.number("max_length", NumberRange::above(0))) spec.maxLength = *length;
   if (auto direction = reader.choice("direction", kDirections)) {
