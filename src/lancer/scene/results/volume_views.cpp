@@ -425,7 +425,23 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       }
     }
     if (!sections.faces.empty()) {
-      description.meshes.push_back(cutInstance(instance));
+      // What the mesh shows of fields its volume does not carry (a view on its surfaces only) is
+      // left off the sections, with a note, instead of failing the picture.
+      MeshInstance child = cutInstance(instance);
+      const auto notInVolume = [&](const std::string& field) { return volume.fieldSteps(field).empty(); };
+      for (const std::string* field : {child.colorBy ? &child.colorBy->field : nullptr,
+                                       child.isolines ? &child.isolines->field : nullptr,
+                                       child.arrows ? &child.arrows->field : nullptr}) {
+        if (field && notInVolume(*field))
+          description.notes.push_back(formatInputWarning(
+              instance.where, fmt::format("'{}' is not given inside the volume of '{}': its slices and cut "
+                                          "caps do not show it",
+                                          *field, instance.file)));
+      }
+      if (child.colorBy && notInVolume(child.colorBy->field)) child.colorBy.reset();
+      if (child.isolines && notInVolume(child.isolines->field)) child.isolines.reset();
+      if (child.arrows && notInVolume(child.arrows->field)) child.arrows.reset();
+      description.meshes.push_back(child);
       meshes.push_back(std::move(sections));
     }
 
