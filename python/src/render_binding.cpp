@@ -145,6 +145,7 @@ PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides
   PreparedRender prepared = [&] {
     const py::gil_scoped_release release;
     RenderRequest request;
+    request.quickLookVolume = quickLookVolumeFor(scene, overrides, threads);  // before the move below
     request.description = std::move(scene.description);
     if (scene.quickLookMesh) request.quickLookMesh = *scene.quickLookMesh;
     request.overrides = overrides;
@@ -213,7 +214,11 @@ void bindRender(py::module_& module) {
       .def_readwrite("isolines", &RenderArguments::isolines)
       .def_readwrite("bands", &RenderArguments::bands)
       .def_readwrite("arrows", &RenderArguments::arrows)
-      .def_readwrite("clip", &RenderArguments::clip);
+      .def_readwrite("clip", &RenderArguments::clip)
+      .def_readwrite("slices", &RenderArguments::slices)
+      .def_readwrite("skin", &RenderArguments::skin)
+      .def_readwrite("isosurfaces", &RenderArguments::isosurfaces)
+      .def_readwrite("streamlines", &RenderArguments::streamlines);
 }
 
 }  // namespace lancer::python
