@@ -217,16 +217,16 @@ void applyStreamlineOptions(const SceneOverrides& overrides, RenderOverrides& ap
 
 // --slice, --skin, --isosurfaces and --isovalues turned into values.
 void applyVolumeOptions(const SceneOverrides& overrides, RenderOverrides& applied) {
-  for (const std::string& slice : overrides.slices) applied.slices.push_back(sliceFromText(slice, SourceLocation{"--slice"}));
+  for (const std::string& slice : overrides.slices)
+    applied.slices.push_back(sliceFromText(slice, SourceLocation{"--slice"}));
   if (!overrides.skin.empty()) {
-    constexpr std::array<std::string_view, 4> kSkins = {"shown", "ghost", "edges", "hidden"};
-    const auto found = std::find(kSkins.begin(), kSkins.end(), overrides.skin);
-    if (found == kSkins.end())
+    const auto found = std::find(kSkinStyles.begin(), kSkinStyles.end(), overrides.skin);
+    if (found == kSkinStyles.end())
       throw InputError(SourceLocation{"--skin"},
                        fmt::format("'{}' is not a skin style: use shown, ghost, edges "
                                    "or hidden",
                                    overrides.skin));
-    applied.skin = static_cast<SkinStyle>(found - kSkins.begin());
+    applied.skin = static_cast<SkinStyle>(found - kSkinStyles.begin());
   }
   applyStreamlineOptions(overrides, applied);
   if (overrides.isosurfaces.empty()) {

@@ -41,8 +41,8 @@ struct PythonScene {
 // (or for a scene file, whose meshes are read with their volumes when the scene is built); else the
 // quick look's mesh's volume, read from the file lancer.read_msh read it from (volume_binding.cpp).
 // An InputError for a mesh made from arrays or by gmsh, which has no volume elements.
-std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene, const RenderOverrides& overrides,
-                                                     int threads);
+std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene,
+                                                     const RenderOverrides& overrides, int threads);
 
 // The quick look of a mesh, as `lancer render part.msh` makes it.
 PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh);

@@ -100,9 +100,10 @@ void applySlicesArgument(const py::object& slices, RenderOverrides& overrides) {
       const std::string name = one ? "slices" : fmt::format("slices[{}]", i);
       overrides.slices.push_back(readSlice(TomlTableReader(table, name, "slices", SceneTable::MeshSlice)));
     } else {
-      throw py::type_error(fmt::format(
-          "slices=: {} is not a plane as text ('z=0.3', 'y') or a dict {{'point': [x, y, z], 'normal': [x, y, z]}}",
-          py::repr(item).cast<std::string>()));
+      throw py::type_error(
+          fmt::format("slices=: {} is not a plane as text ('z=0.3', 'y') or a dict {{'point': [x, y, z], "
+                      "'normal': [x, y, z]}}",
+                      py::repr(item).cast<std::string>()));
     }
   }
 }
@@ -125,8 +126,8 @@ VolumeViews volumeKeyArgument(const py::object& value, const char* key, int most
     return views;
   }
   if (!py::isinstance<py::dict>(value))
-    throw py::type_error(fmt::format("{}= takes 'FIELD', 'FIELD:COUNT' or a dict of the scene file's keys, e.g. {}",
-                                     key, example));
+    throw py::type_error(fmt::format(
+        "{}= takes 'FIELD', 'FIELD:COUNT' or a dict of the scene file's keys, e.g. {}", key, example));
   toml::table mesh;
   mesh.insert(key, std::get<toml::table>(tomlValue(value, key)));
   MeshInstance instance;

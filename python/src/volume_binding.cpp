@@ -75,8 +75,8 @@ SourceLocation volumeKeyword(const RenderOverrides& overrides) {
 
 }  // namespace
 
-std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene, const RenderOverrides& overrides,
-                                                     int threads) {
+std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene,
+                                                     const RenderOverrides& overrides, int threads) {
   if (!scene.quickLookMesh) return nullptr;
   // The overrides on a copy of the description say what the render draws, as the scene's own keys do.
   SceneDescription applied = scene.description;
@@ -87,21 +87,23 @@ std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene, c
   if (mesh.source.fileBytes == 0) {
     // Made from arrays or by gmsh: the faces are all there is. Coloured caps then stay flat.
     if (!instance.volume.any()) return nullptr;
-    throw InputError(volumeKeyword(overrides),
-                     fmt::format("'{}' has no volume elements (tetrahedra, hexahedra, prisms, pyramids): a mesh "
-                                 "made from arrays or by gmsh is its surface alone; read the .msh file with "
-                                 "lancer.read_msh to draw slices, isosurfaces or field lines inside it",
-                                 mesh.source.path));
+    throw InputError(
+        volumeKeyword(overrides),
+        fmt::format("'{}' has no volume elements (tetrahedra, hexahedra, prisms, pyramids): a mesh "
+                    "made from arrays or by gmsh is its surface alone; read the .msh file with "
+                    "lancer.read_msh to draw slices, isosurfaces or field lines inside it",
+                    mesh.source.path));
   }
   const std::lock_guard<std::mutex> lock(scene.quickLookVolume->mutex);
   if (!scene.quickLookVolume->volume) {
     MeshWithVolume read = readMshWithVolume(mesh.source.path, threads);
     // The volume must be the one under the Mesh's surface.
     if (read.mesh.faces.size() != mesh.faces.size() || read.mesh.positions.size() != mesh.positions.size())
-      throw InputError(SourceLocation{mesh.source.path},
-                       fmt::format("the file has changed since lancer.read_msh read it ({} faces then, {} now): "
-                                   "read it again to draw inside its volume",
-                                   mesh.faces.size(), read.mesh.faces.size()));
+      throw InputError(
+          SourceLocation{mesh.source.path},
+          fmt::format("the file has changed since lancer.read_msh read it ({} faces then, {} now): "
+                      "read it again to draw inside its volume",
+                      mesh.faces.size(), read.mesh.faces.size()));
     scene.quickLookVolume->volume = std::move(read.volume);
   }
   return scene.quickLookVolume->volume;
