@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 
 #include "bindings.hpp"
 #include "lancer/image/pixel_encoding.hpp"
@@ -134,9 +135,8 @@ InterruptibleRender::InterruptibleRender(int threads, bool progress) {
 void InterruptibleRender::finish() {
   if (progress_) std::fputc('\n', stderr);
   if (pending_) {
-    const py::error_already_set error = *pending_;
-    pending_.reset();
-    throw error;
+    const std::unique_ptr<py::error_already_set> pending = std::move(pending_);
+    throw py::error_already_set(*pending);
   }
 }
 

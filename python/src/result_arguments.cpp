@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "bindings.hpp"
@@ -45,7 +46,7 @@ TomlValue tomlValue(const py::handle& value, const std::string& name) {
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
     toml::array array;
     for (const py::handle item : value)
-      std::visit([&](auto&& v) { array.push_back(std::move(v)); }, tomlValue(item, name));
+      std::visit([&](auto&& v) { array.push_back(std::forward<decltype(v)>(v)); }, tomlValue(item, name));
     return array;
   }
   if (py::isinstance<py::dict>(value)) {
@@ -56,7 +57,8 @@ TomlValue tomlValue(const py::handle& value, const std::string& name) {
             fmt::format("{}=: the dict's keys are the scene file's key names (str), found {}", name,
                         py::repr(key).cast<std::string>()));
       const std::string text = key.cast<std::string>();
-      std::visit([&](auto&& v) { table.insert_or_assign(text, std::move(v)); }, tomlValue(item, name));
+      std::visit([&](auto&& v) { table.insert_or_assign(text, std::forward<decltype(v)>(v)); },
+                 tomlValue(item, name));
     }
     return table;
   }
