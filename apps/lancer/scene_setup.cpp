@@ -32,6 +32,7 @@
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/render_overrides.hpp"
+#include "lancer/scene/results/volume_view_text.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "lancer/scene/step_files.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -181,44 +182,6 @@ std::optional<double> numberOf(const std::string& text) {
   return value;
 }
 
-// --slice AXIS (through the volume's centre), AXIS=VALUE or PX,PY,PZ,NX,NY,NZ, as --clip's planes.
-SliceSpec parseSlice(const std::string& text) {
-  SliceSpec slice;
-  if (const std::optional<UpAxis> axis = parseUpAxis(text)) {
-    slice.normal = upVector(*axis);
-    return slice;
-  }
-  try {
-    const ClipSettings plane = clipFromText(text, SourceLocation{"--slice"});
-    slice.point = plane.point;
-    slice.normal = plane.normal;
-  } catch (const InputError&) {
-    throw InputError(SourceLocation{"--slice"},
-                     fmt::format("'{}' is not a plane: use AXIS (x, y or z: through the volume's centre), "
-                                 "AXIS=VALUE (z=0.3) or PX,PY,PZ,NX,NY,NZ (a point and the normal)",
-                                 text));
-  }
-  return slice;
-}
-
-// FIELD[:COUNT] of --isosurfaces and --streamlines: the field, and the count when given (1 to most).
-std::pair<std::string, std::optional<int>> fieldAndCount(const std::string& text, const char* option,
-                                                         int most) {
-  const std::size_t colon = text.rfind(':');
-  std::pair<std::string, std::optional<int>> result{text.substr(0, colon), std::nullopt};
-  if (colon != std::string::npos) {
-    const std::optional<double> count = numberOf(text.substr(colon + 1));
-    if (!count || *count < 1 || *count > most || *count != std::floor(*count))
-      throw InputError(
-          SourceLocation{option},
-          fmt::format("'{}' is not FIELD[:COUNT]: COUNT is a whole number from 1 to {}", text, most));
-    result.second = static_cast<int>(*count);
-  }
-  if (result.first.empty())
-    throw InputError(SourceLocation{option}, fmt::format("give the field: {} FIELD[:COUNT]", option));
-  return result;
-}
-
 // --streamlines FIELD[:COUNT] and --seed-line X1,Y1,Z1,X2,Y2,Z2.
 void applyStreamlineOptions(const SceneOverrides& overrides, RenderOverrides& applied) {
   if (overrides.streamlines.empty()) {
@@ -228,7 +191,7 @@ void applyStreamlineOptions(const SceneOverrides& overrides, RenderOverrides& ap
     return;
   }
   StreamlineSpec spec;
-  const auto [field, count] = fieldAndCount(overrides.streamlines, "--streamlines", 100000);
+  const auto [field, count] = fieldAndCountFromText(overrides.streamlines, "--streamlines", kMaxStreamlines);
   spec.field = field;
   if (count) spec.count = *count;
   if (!overrides.seedLine.empty()) {
@@ -254,16 +217,16 @@ void applyStreamlineOptions(const SceneOverrides& overrides, RenderOverrides& ap
 
 // --slice, --skin, --isosurfaces and --isovalues turned into values.
 void applyVolumeOptions(const SceneOverrides& overrides, RenderOverrides& applied) {
-  for (const std::string& slice : overrides.slices) applied.slices.push_back(parseSlice(slice));
+  for (const std::string& slice : overrides.slices)
+    applied.slices.push_back(sliceFromText(slice, SourceLocation{"--slice"}));
   if (!overrides.skin.empty()) {
-    constexpr std::array<std::string_view, 4> kSkins = {"shown", "ghost", "edges", "hidden"};
-    const auto found = std::find(kSkins.begin(), kSkins.end(), overrides.skin);
-    if (found == kSkins.end())
+    const auto found = std::find(kSkinStyles.begin(), kSkinStyles.end(), overrides.skin);
+    if (found == kSkinStyles.end())
       throw InputError(SourceLocation{"--skin"},
                        fmt::format("'{}' is not a skin style: use shown, ghost, edges "
                                    "or hidden",
                                    overrides.skin));
-    applied.skin = static_cast<SkinStyle>(found - kSkins.begin());
+    applied.skin = static_cast<SkinStyle>(found - kSkinStyles.begin());
   }
   applyStreamlineOptions(overrides, applied);
   if (overrides.isosurfaces.empty()) {
@@ -273,7 +236,7 @@ void applyVolumeOptions(const SceneOverrides& overrides, RenderOverrides& applie
     return;
   }
   IsosurfaceSpec spec;
-  const auto [field, count] = fieldAndCount(overrides.isosurfaces, "--isosurfaces", 100);
+  const auto [field, count] = fieldAndCountFromText(overrides.isosurfaces, "--isosurfaces", kMaxIsosurfaces);
   spec.field = field;
   if (count) spec.count = *count;
   std::size_t start = 0;

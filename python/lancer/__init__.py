@@ -47,16 +47,19 @@ def _arguments(width, height, samples, shading, srgb, transparent_background, ed
     return arguments
 
 
-def _results(color_map, range, log, scale, legend, isolines, bands, arrows, clip):
+def _results(color_map, range, log, scale, legend, isolines, bands, arrows, clip, slices, skin, isosurfaces,
+             streamlines):
     return {"color_map": color_map, "range": range, "log": log, "scale": scale, "legend": legend,
-            "isolines": isolines, "bands": bands, "arrows": arrows, "clip": clip}
+            "isolines": isolines, "bands": bands, "arrows": arrows, "clip": clip, "slices": slices, "skin": skin,
+            "isosurfaces": isosurfaces, "streamlines": streamlines}
 
 
 def render(scene, width=None, height=None, samples=None, shading=None, srgb=None,
            transparent_background=None, edges=None, threads=0, progress=False, dtype="uint8",
            sampler=None, max_depth=None, encoding=None, tonemap=None, exposure=None, denoise=None,
            integrator=None, noise=None, look=None, *, color_map=None, range=None, log=None, scale=None,
-           legend=None, isolines=None, bands=None, arrows=None, clip=None):
+           legend=None, isolines=None, bands=None, arrows=None, clip=None, slices=None, skin=None,
+           isosurfaces=None, streamlines=None):
     """Renders a lancer.Scene, or the quick look of a lancer.Mesh (as `lancer render part.msh`).
 
     integrator: "whitted" (the default), "path" (path tracing) or "ao" (ambient occlusion); noise:
@@ -75,13 +78,22 @@ def render(scene, width=None, height=None, samples=None, shading=None, srgb=None
     colours, --color-map), range=(low, high) (--range), log=True or scale="log" (--log), legend
     ("right", "bottom" or "none", --legend), isolines=N (--isolines), bands=N (--bands); and on every
     mesh, arrows="FIELD" (--arrows) and clip="x=0.5" or a list of planes (--clip).
+
+    Inside the volume (docs/volume.md), as --slice, --skin, --isosurfaces and --streamlines:
+    slices="z=0.3" ("y": through the volume's centre; "PX,PY,PZ,NX,NY,NZ"; a dict {"point": [x, y, z],
+    "normal": [x, y, z]}; or a list of these), skin ("shown", "ghost", "edges", "hidden"),
+    isosurfaces="v" or "v:4" or a dict of the scene keys ({"field": "v", "values": [-0.5, 0.5],
+    "color_by": "e"}), streamlines="e" or "e:40" or a dict ({"field": "e", "count": 40, "seed_line":
+    [[x1, y1, z1], [x2, y2, z2]]}). A Mesh lancer.read_msh read has its volume read from the same file
+    the first time a render draws inside it (a Scene.quick_look keeps it for its later renders); a
+    Mesh made from arrays or by gmsh has none (InputError).
     """
     if dtype not in ("uint8", "float32"):
         raise ValueError(f"dtype={dtype!r}: use 'uint8' (encoded, as the image files) or 'float32' (linear)")
     arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
                            progress, sampler, max_depth, encoding, tonemap, exposure, denoise, integrator,
                            noise, look, _results(color_map, range, log, scale, legend, isolines, bands,
-                                                 arrows, clip))
+                                                 arrows, clip, slices, skin, isosurfaces, streamlines))
     array, info = _lancer._render(scene, arguments, dtype == "float32")
     return Image._wrap(array, srgb=info["srgb"], stats=info)
 
@@ -91,7 +103,7 @@ def animate(scene, output, frames=None, fps=None, orbit=None, width=None, height
             loop=None, dither=None, palette=None, sampler=None, max_depth=None, encoding=None, tonemap=None,
             exposure=None, denoise=None, over=None, integrator=None, noise=None, look=None, label=None, *,
             color_map=None, range=None, log=None, scale=None, legend=None, isolines=None, bands=None,
-            arrows=None, clip=None):
+            arrows=None, clip=None, slices=None, skin=None, isosurfaces=None, streamlines=None):
     """Writes an orbit of the camera (orbit="camera") or of light K (orbit="light:K") as `lancer
     animate` does: an animated .gif, an animated .png, or numbered frames ("frame_%04d.png").
     over="steps": one frame per time step of the views the scene colours or warps by, in time order
@@ -99,9 +111,10 @@ def animate(scene, output, frames=None, fps=None, orbit=None, width=None, height
     times repeat or decrease). label="t = {time:.3g} s" writes each frame's time (the time the file
     gives its step) and {step} into a corner, as --label does.
     None keeps the scene's value (its [animation] table, else 36 frames at 12 fps, the camera).
-    color_map, range, log, scale, legend, isolines, bands, arrows and clip: as render's."""
+    color_map, range, log, scale, legend, isolines, bands, arrows, clip, slices, skin, isosurfaces and
+    streamlines: as render's."""
     arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
                            progress, sampler, max_depth, encoding, tonemap, exposure, denoise, integrator,
                            noise, look, _results(color_map, range, log, scale, legend, isolines, bands,
-                                                 arrows, clip))
+                                                 arrows, clip, slices, skin, isosurfaces, streamlines))
     _lancer._animate(scene, str(output), arguments, frames, fps, orbit, loop, dither, palette, over, label)

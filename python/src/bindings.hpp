@@ -6,11 +6,14 @@
 #include <pybind11/pybind11.h>
 
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 
 #include "lancer/image/color_map.hpp"
 #include "lancer/mesh/mesh.hpp"
+#include "lancer/mesh/volume/volume_mesh.hpp"
+#include "lancer/scene/render_overrides.hpp"
 #include "lancer/scene/scene_description.hpp"
 #include "lancer/scene/up_axis.hpp"
 
@@ -18,12 +21,28 @@ namespace lancer::python {
 
 namespace py = pybind11;
 
+// The volume of a quick look's mesh, read from the mesh's file the first time a render draws inside
+// it (slices, isosurfaces, field lines, coloured caps), then kept for the Scene's later renders.
+struct QuickLookVolume {
+  std::mutex mutex;  // renders release the GIL
+  std::shared_ptr<const VolumeMesh> volume;
+};
+
 // lancer.Scene: what a scene file or the quick look says, before any mesh is loaded. A quick look
-// keeps its mesh (the Python Mesh it was made from), which every render reuses instead of a file.
+// keeps its mesh (the Python Mesh it was made from), which every render reuses instead of a file,
+// and its volume once read (shared by the Scene's copies).
 struct PythonScene {
   SceneDescription description;
   std::shared_ptr<const Mesh> quickLookMesh;
+  std::shared_ptr<QuickLookVolume> quickLookVolume = std::make_shared<QuickLookVolume>();
 };
+
+// The volume a render of `scene` with `overrides` draws from: none when it draws nothing inside
+// (or for a scene file, whose meshes are read with their volumes when the scene is built); else the
+// quick look's mesh's volume, read from the file lancer.read_msh read it from (volume_binding.cpp).
+// An InputError for a mesh made from arrays or by gmsh, which has no volume elements.
+std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene,
+                                                     const RenderOverrides& overrides, int threads);
 
 // The quick look of a mesh, as `lancer render part.msh` makes it.
 PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 
 #include "bindings.hpp"
 #include "lancer/image/pixel_encoding.hpp"
@@ -134,9 +135,8 @@ InterruptibleRender::InterruptibleRender(int threads, bool progress) {
 void InterruptibleRender::finish() {
   if (progress_) std::fputc('\n', stderr);
   if (pending_) {
-    const py::error_already_set error = *pending_;
-    pending_.reset();
-    throw error;
+    const std::unique_ptr<py::error_already_set> pending = std::move(pending_);
+    throw py::error_already_set(*pending);
   }
 }
 
@@ -145,6 +145,7 @@ PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides
   PreparedRender prepared = [&] {
     const py::gil_scoped_release release;
     RenderRequest request;
+    request.quickLookVolume = quickLookVolumeFor(scene, overrides, threads);  // before the move below
     request.description = std::move(scene.description);
     if (scene.quickLookMesh) request.quickLookMesh = *scene.quickLookMesh;
     request.overrides = overrides;
@@ -213,7 +214,11 @@ void bindRender(py::module_& module) {
       .def_readwrite("isolines", &RenderArguments::isolines)
       .def_readwrite("bands", &RenderArguments::bands)
       .def_readwrite("arrows", &RenderArguments::arrows)
-      .def_readwrite("clip", &RenderArguments::clip);
+      .def_readwrite("clip", &RenderArguments::clip)
+      .def_readwrite("slices", &RenderArguments::slices)
+      .def_readwrite("skin", &RenderArguments::skin)
+      .def_readwrite("isosurfaces", &RenderArguments::isosurfaces)
+      .def_readwrite("streamlines", &RenderArguments::streamlines);
 }
 
 }  // namespace lancer::python

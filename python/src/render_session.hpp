@@ -38,10 +38,17 @@ struct RenderArguments {
   std::optional<int> isolines, bands;
   std::optional<std::string> arrows;
   py::object clip;  // a plane as text, or a list of them
+  // Inside the volume (--slice, --skin, --isosurfaces, --streamlines): planes as text or dicts of a
+  // [[mesh.slice]]'s keys; "FIELD", "FIELD:COUNT" or a dict of the scene keys.
+  py::object slices, isosurfaces, streamlines;
+  std::optional<std::string> skin;
 };
 
 // Checks render's and animate's result keywords and puts them into `overrides` (result_arguments.cpp).
 void applyResultArguments(const RenderArguments& arguments, RenderOverrides& overrides);
+// Their slices=, skin=, isosurfaces= and streamlines=, read as --slice, --skin, ... or as the scene
+// file's keys (a dict), with the messages those get.
+void applyVolumeArguments(const RenderArguments& arguments, RenderOverrides& overrides);
 
 // Checks the arguments' ranges and names (ValueError) and turns them into overrides.
 RenderOverrides renderOverridesFromArguments(const RenderArguments& arguments);

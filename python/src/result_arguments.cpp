@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "bindings.hpp"
@@ -23,6 +24,8 @@
 #include "lancer/scene/isolines.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/render_overrides.hpp"
+#include "lancer/scene/results/volume_view_text.hpp"
+#include "lancer/scene/results/volume_views.hpp"
 #include "render_session.hpp"
 
 namespace lancer::python {
@@ -43,7 +46,7 @@ TomlValue tomlValue(const py::handle& value, const std::string& name) {
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
     toml::array array;
     for (const py::handle item : value)
-      std::visit([&](auto&& v) { array.push_back(std::move(v)); }, tomlValue(item, name));
+      std::visit([&](auto&& v) { array.push_back(std::forward<decltype(v)>(v)); }, tomlValue(item, name));
     return array;
   }
   if (py::isinstance<py::dict>(value)) {
@@ -54,7 +57,8 @@ TomlValue tomlValue(const py::handle& value, const std::string& name) {
             fmt::format("{}=: the dict's keys are the scene file's key names (str), found {}", name,
                         py::repr(key).cast<std::string>()));
       const std::string text = key.cast<std::string>();
-      std::visit([&](auto&& v) { table.insert_or_assign(text, std::move(v)); }, tomlValue(item, name));
+      std::visit([&](auto&& v) { table.insert_or_assign(text, std::forward<decltype(v)>(v)); },
+                 tomlValue(item, name));
     }
     return table;
   }
@@ -73,6 +77,64 @@ toml::table keyTable(const py::object& value, const std::string& name, std::stri
     throw py::type_error(
         fmt::format("{}= takes a field's name or a dict of the scene file's keys, e.g. {}", name, example));
   return std::get<toml::table>(tomlValue(value, name));
+}
+
+// A keyword that is one item or a list of them: the items.
+py::list itemsOf(const py::object& value, bool one) {
+  return one ? py::list(py::make_tuple(value)) : py::list(value);
+}
+
+// slices=: one plane or a list of them, each as --slice's text ('z=0.3', 'y', '0,0,0,0,0,1') or a
+// dict of a [[mesh.slice]]'s keys ({'point': [0, 0, 0.1], 'normal': [0, 0, 1]}).
+void applySlicesArgument(const py::object& slices, RenderOverrides& overrides) {
+  const bool one = py::isinstance<py::str>(slices) || py::isinstance<py::dict>(slices);
+  if (!one && !py::isinstance<py::list>(slices) && !py::isinstance<py::tuple>(slices))
+    throw py::type_error(
+        "slices= takes a plane as text ('z=0.3', 'y', '0,0,0,0,0,1'), a dict {'point': [x, y, z], 'normal': "
+        "[x, y, z]}, or a list of them");
+  const py::list items = itemsOf(slices, one);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const py::handle item = items[i];
+    if (py::isinstance<py::str>(item)) {
+      overrides.slices.push_back(sliceFromText(item.cast<std::string>(), SourceLocation{"slices"}));
+    } else if (py::isinstance<py::dict>(item)) {
+      const toml::table table = std::get<toml::table>(tomlValue(item, "slices"));
+      const std::string name = one ? "slices" : fmt::format("slices[{}]", i);
+      overrides.slices.push_back(readSlice(TomlTableReader(table, name, "slices", SceneTable::MeshSlice)));
+    } else {
+      throw py::type_error(
+          fmt::format("slices=: {} is not a plane as text ('z=0.3', 'y') or a dict {{'point': [x, y, z], "
+                      "'normal': [x, y, z]}}",
+                      py::repr(item).cast<std::string>()));
+    }
+  }
+}
+
+// isosurfaces= and streamlines=: --isosurfaces's and --streamlines's FIELD[:COUNT], or a dict of the
+// scene keys, read by the scene loader's reader (readVolumeViewKeys) as a [[mesh]]'s `key` table.
+VolumeViews volumeKeyArgument(const py::object& value, const char* key, int most, std::string_view example) {
+  VolumeViews views;
+  if (py::isinstance<py::str>(value)) {
+    const auto [field, count] = fieldAndCountFromText(value.cast<std::string>(), key, most);
+    if (std::string_view(key) == "isosurfaces") {
+      views.isosurfaces.emplace();
+      views.isosurfaces->field = field;
+      if (count) views.isosurfaces->count = *count;
+    } else {
+      views.streamlines.emplace();
+      views.streamlines->field = field;
+      if (count) views.streamlines->count = *count;
+    }
+    return views;
+  }
+  if (!py::isinstance<py::dict>(value))
+    throw py::type_error(fmt::format(
+        "{}= takes 'FIELD', 'FIELD:COUNT' or a dict of the scene file's keys, e.g. {}", key, example));
+  toml::table mesh;
+  mesh.insert(key, std::get<toml::table>(tomlValue(value, key)));
+  MeshInstance instance;
+  readVolumeViewKeys(TomlTableReader(mesh, "", key, SceneTable::Mesh), instance);
+  return instance.volume;
 }
 
 }  // namespace
@@ -156,6 +218,27 @@ void applyResultArguments(const RenderArguments& arguments, RenderOverrides& ove
       overrides.clips.push_back(clipFromText(plane.cast<std::string>(), SourceLocation{"clip"}));
     }
   }
+  applyVolumeArguments(arguments, overrides);
+}
+
+void applyVolumeArguments(const RenderArguments& arguments, RenderOverrides& overrides) {
+  if (arguments.slices && !arguments.slices.is_none()) applySlicesArgument(arguments.slices, overrides);
+  if (arguments.skin) {
+    const auto* found = std::find(kSkinStyles.begin(), kSkinStyles.end(), *arguments.skin);
+    if (found == kSkinStyles.end())
+      throw py::value_error(fmt::format(
+          "skin='{}' is not a skin style: use 'shown', 'ghost', 'edges' or 'hidden'", *arguments.skin));
+    overrides.skin = static_cast<SkinStyle>(found - kSkinStyles.begin());
+  }
+  if (arguments.isosurfaces && !arguments.isosurfaces.is_none())
+    overrides.isosurfaces = volumeKeyArgument(arguments.isosurfaces, "isosurfaces", kMaxIsosurfaces,
+                                              "{'field': 'v', 'values': [-0.5, 0.5], 'color_by': 'e'}")
+                                .isosurfaces;
+  if (arguments.streamlines && !arguments.streamlines.is_none())
+    overrides.streamlines =
+        volumeKeyArgument(arguments.streamlines, "streamlines", kMaxStreamlines,
+                          "{'field': 'e', 'count': 40, 'seed_line': [[0, 0, 0], [1, 0, 0]]}")
+            .streamlines;
 }
 
 void applyResultKeywords(MeshInstance& instance, const ResultKeywords& keywords) {

@@ -1,5 +1,6 @@
 // lancer.Volume (read_volume): the volume elements of a .msh file and the fields inside them, and
-// Volume.probe, a field's values at points, interpolated in the element that holds each.
+// Volume.probe, a field's values at points, interpolated in the element that holds each; and the
+// volume a quick look's render draws slices, isosurfaces and field lines from.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -7,6 +8,7 @@
 
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/volume/volume_locator.hpp"
 #include "lancer/mesh/volume/volume_probe.hpp"
+#include "lancer/scene/results/volume_views.hpp"
 
 namespace lancer::python {
 namespace {
@@ -64,7 +67,47 @@ py::array_t<double> probe(const PythonVolume& volume, const py::object& points, 
   return out;
 }
 
+// Where the first of the overrides' volume views was asked for, for messages.
+SourceLocation volumeKeyword(const RenderOverrides& overrides) {
+  if (!overrides.slices.empty()) return overrides.slices.front().where;
+  return SourceLocation{overrides.isosurfaces ? "isosurfaces" : "streamlines"};
+}
+
 }  // namespace
+
+std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene,
+                                                     const RenderOverrides& overrides, int threads) {
+  if (!scene.quickLookMesh) return nullptr;
+  // The overrides on a copy of the description say what the render draws, as the scene's own keys do.
+  SceneDescription applied = scene.description;
+  applyRenderOverrides(applied, overrides, scene.quickLookMesh.get());
+  const MeshInstance& instance = applied.meshes.front();
+  if (!needsVolume(applied, instance)) return nullptr;
+  const Mesh& mesh = *scene.quickLookMesh;
+  if (mesh.source.fileBytes == 0) {
+    // Made from arrays or by gmsh: the faces are all there is. Coloured caps then stay flat.
+    if (!instance.volume.any()) return nullptr;
+    throw InputError(
+        volumeKeyword(overrides),
+        fmt::format("'{}' has no volume elements (tetrahedra, hexahedra, prisms, pyramids): a mesh "
+                    "made from arrays or by gmsh is its surface alone; read the .msh file with "
+                    "lancer.read_msh to draw slices, isosurfaces or field lines inside it",
+                    mesh.source.path));
+  }
+  const std::lock_guard<std::mutex> lock(scene.quickLookVolume->mutex);
+  if (!scene.quickLookVolume->volume) {
+    MeshWithVolume read = readMshWithVolume(mesh.source.path, threads);
+    // The volume must be the one under the Mesh's surface.
+    if (read.mesh.faces.size() != mesh.faces.size() || read.mesh.positions.size() != mesh.positions.size())
+      throw InputError(
+          SourceLocation{mesh.source.path},
+          fmt::format("the file has changed since lancer.read_msh read it ({} faces then, {} now): "
+                      "read it again to draw inside its volume",
+                      mesh.faces.size(), read.mesh.faces.size()));
+    scene.quickLookVolume->volume = std::move(read.volume);
+  }
+  return scene.quickLookVolume->volume;
+}
 
 void bindVolume(py::module_& module) {
   py::class_<PythonVolume, std::shared_ptr<PythonVolume>>(

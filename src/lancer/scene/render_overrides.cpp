@@ -42,13 +42,14 @@ void applyAnnotationOverrides(SceneDescription& description, const RenderOverrid
   const auto name = [&](const char* option) { return overrides.optionPrefix + option; };
   // First what is drawn inside the volume, whose colours the options below may set.
   for (SliceSpec slice : overrides.slices) {
+    // The option that gave it, when its reader said (Python's slices=), else --slice.
+    if (slice.where.file.empty()) slice.where = SourceLocation{name("slice")};
     if ((slice.point && !isFinite(*slice.point)) || !isFinite(slice.normal) || length(slice.normal) == 0)
       throw InputError(
-          SourceLocation{name("slice")},
+          slice.where,
           fmt::format("a slice needs a finite point and a normal other than [0, 0, 0], found normal {}",
                       vectorText(slice.normal)));
     slice.normal = normalize(slice.normal);
-    slice.where = SourceLocation{name("slice")};
     for (MeshInstance& mesh : description.meshes) mesh.volume.slices.push_back(slice);
   }
   for (MeshInstance& mesh : description.meshes) {

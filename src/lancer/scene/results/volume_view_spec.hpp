@@ -4,8 +4,10 @@
 // mesh's volume (mesh/volume/) as meshes of their own that take the [[mesh]]'s colours, isolines and arrows.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "lancer/math/vec3.hpp"
@@ -24,6 +26,11 @@ struct SliceSpec {
 // The mesh's own surface when slices or isosurfaces are drawn: as it is, a faint transparent copy
 // (the default), its feature edges only, or not at all.
 enum class SkinStyle { Shown, Ghost, Edges, Hidden };
+inline constexpr std::array<std::string_view, 4> kSkinStyles = {"shown", "ghost", "edges", "hidden"};
+
+// The most isosurfaces, and field lines, one mesh may ask for.
+inline constexpr int kMaxIsosurfaces = 100;
+inline constexpr int kMaxStreamlines = 100000;
 
 // `isosurfaces = { field = "v", values = [0.2, 0.4] }` (or `count = 5`): the surfaces where a scalar
 // field of the volume takes each value, coloured by `color_by` (another field; default: the field

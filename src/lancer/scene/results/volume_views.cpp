@@ -21,9 +21,6 @@
 namespace lancer {
 namespace {
 
-constexpr std::array<std::string_view, 4> kSkinStyles = {"shown", "ghost", "edges", "hidden"};
-constexpr int kMaxIsosurfaces = 100;
-
 // A cut that lies on a capped clipping plane is moved this fraction of the volume's diagonal into
 // the kept side, where rays meet it before the plane's grey cap (scene_queries.cpp).
 constexpr double kCapOffset = 1e-5;
@@ -283,7 +280,6 @@ void readVolumeViewKeys(const TomlTableReader& mesh, MeshInstance& instance) {
 namespace {
 
 constexpr std::array<std::string_view, 3> kDirections = {"both", "forward", "backward"};
-constexpr int kMaxStreamlines = 100000;
 
 // An array of [x, y, z] points (seed_line: exactly two).
 std::vector<Vec3d> readPoints(const TomlTableReader& reader, std::string_view key, std::size_t least,
@@ -366,6 +362,16 @@ void readStreamlineKeys(const TomlTableReader& mesh, MeshInstance& instance) {
   instance.volume.streamlines = spec;
 }
 
+namespace {
+
+// Where the first of a mesh's volume views was asked for (any() is true).
+const SourceLocation& volumeViewsWhere(const VolumeViews& views) {
+  if (!views.slices.empty()) return views.slices.front().where;
+  return views.isosurfaces ? views.isosurfaces->where : views.streamlines->where;
+}
+
+}  // namespace
+
 bool needsVolume(const SceneDescription& description, const MeshInstance& instance) {
   if (instance.volume.any()) return true;
   if (!instance.colorBy || !instance.colorBy->paintsSurface) return false;
@@ -385,10 +391,9 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
     const MeshInstance instance = description.meshes[i];  // a copy: the vector grows below
     const Mesh& parent = meshes[i];
     if (instance.volume.any() && volume.empty())
-      throw InputError(instance.volume.slices.empty() ? instance.volume.isosurfaces->where
-                                                      : instance.volume.slices.front().where,
+      throw InputError(volumeViewsWhere(instance.volume),
                        fmt::format("'{}' has no volume elements (tetrahedra, hexahedra, prisms, pyramids): "
-                                   "slices and isosurfaces cut volumes",
+                                   "slices, isosurfaces and field lines are drawn inside volumes",
                                    instance.file));
     if (volume.empty()) continue;
     const InstanceTransform transform(instance);

@@ -1,0 +1,183 @@
+"""lancer.render's slices=, skin=, isosurfaces= and streamlines= are the command line's --slice,
+--skin, --isosurfaces (--isovalues) and --streamlines (--seed-line): the same picture, byte for byte,
+whether given as the options' text or as dicts of the scene file's keys; refused with the same
+messages. A Mesh lancer.read_msh read has its volume read from its file; one made from arrays has none."""
+
+import shutil
+
+import numpy as np
+import pytest
+
+import lancer
+
+from conftest import data, run_cli
+
+CAPACITOR = str(data("tests", "data", "volume", "capacitor.msh"))
+HEXAHEDRA = str(data("tests", "data", "volume", "cube_hex.msh"))
+MIXED = str(data("tests", "data", "volume", "mixed.msh"))
+TETRAHEDRA = str(data("tests", "data", "element_node", "tet_v41_bin.msh"))
+SURFACE = str(data("tests", "data", "fields", "node_xy_v41_bin.msh"))
+SIZE = {"width": 96, "height": 64}
+
+
+def cli_image(tmp_path, *arguments):
+    run_cli("render", *arguments, "--width", 96, "--height", 64, "-q", "-o", tmp_path / "cli.png")
+    return np.asarray(lancer.read_png(str(tmp_path / "cli.png")))[..., :3]
+
+
+def test_slices_match_the_cli(tmp_path):
+    mesh = lancer.read_msh(CAPACITOR)
+    coloured = lancer.Scene.quick_look(mesh, color_by="v")
+    image = np.asarray(lancer.render(coloured, slices="y", legend="right", **SIZE))
+    assert np.array_equal(image, cli_image(tmp_path, CAPACITOR, "--color-by", "v", "--slice", "y", "--legend", "right"))
+    assert not np.array_equal(image, np.asarray(lancer.render(coloured, legend="right", **SIZE)))
+    # A dict of a [[mesh.slice]]'s keys is the plane's text; a list is --slice given again.
+    two = np.asarray(lancer.render(coloured, slices=[{"point": [0, 0, 0.1], "normal": [0, 0, 1]}, "x=0"],
+                                   skin="edges", **SIZE))
+    assert np.array_equal(two, cli_image(tmp_path, CAPACITOR, "--color-by", "v", "--slice", "0,0,0.1,0,0,1", "--slice",
+                                         "x=0", "--skin", "edges"))
+    # Element data on hexahedra; a mixed mesh without fields, in the material's colour.
+    hexahedra = np.asarray(lancer.render(lancer.Scene.quick_look(lancer.read_msh(HEXAHEDRA), color_by="g"),
+                                         slices="0.5,0.5,0.5,1,1,1", skin="hidden", **SIZE))
+    assert np.array_equal(hexahedra, cli_image(tmp_path, HEXAHEDRA, "--color-by", "g", "--slice", "0.5,0.5,0.5,1,1,1",
+                                               "--skin", "hidden"))
+    mixed = np.asarray(lancer.render(lancer.read_msh(MIXED), slices="z", **SIZE))
+    assert np.array_equal(mixed, cli_image(tmp_path, MIXED, "--slice", "z"))
+
+
+def test_a_scene_file_takes_the_keywords(tmp_path):
+    # A scene file's meshes are read with their volumes by the scene's own build.
+    scene_file = tmp_path / "capacitor.toml"
+    scene_file.write_text(f'[[mesh]]\nfile = "{CAPACITOR}"\ncolor_by = {{ field = "v" }}\n')
+    image = np.asarray(lancer.render(lancer.Scene.load(str(scene_file)), slices="z", streamlines="e:5", **SIZE))
+    assert np.array_equal(image, cli_image(tmp_path, scene_file, "--slice", "z", "--streamlines", "e:5"))
+
+
+def test_coloured_cut_caps_match_the_cli(tmp_path):
+    # clip= through a field-coloured Mesh read from a file shows the field on the cut, as --clip does.
+    scene = lancer.Scene.quick_look(lancer.read_msh(CAPACITOR), color_by="v")
+    image = np.asarray(lancer.render(scene, clip="y=0", **SIZE))
+    assert np.array_equal(image, cli_image(tmp_path, CAPACITOR, "--color-by", "v", "--clip", "y=0"))
+
+
+def test_isosurfaces_match_the_cli(tmp_path):
+    mesh = lancer.read_msh(CAPACITOR)
+    image = np.asarray(lancer.render(mesh, isosurfaces="v:4", legend="right", **SIZE))
+    assert np.array_equal(image, cli_image(tmp_path, CAPACITOR, "--isosurfaces", "v:4", "--legend", "right"))
+    values = np.asarray(lancer.render(mesh, isosurfaces={"field": "v", "values": [-0.5, 0.5]}, **SIZE))
+    assert np.array_equal(values, cli_image(tmp_path, CAPACITOR, "--isosurfaces", "v", "--isovalues", "-0.5,0.5"))
+    on_coloured = np.asarray(lancer.render(lancer.Scene.quick_look(mesh, color_by="e"),
+                                           isosurfaces={"field": "v", "values": [-0.5, 0.5]}, **SIZE))
+    assert np.array_equal(on_coloured, cli_image(tmp_path, CAPACITOR, "--color-by", "e", "--isosurfaces", "v",
+                                                 "--isovalues", "-0.5,0.5"))
+    # The scene keys the command line has no option for: the surfaces in another field's colours.
+    by_e = np.asarray(lancer.render(mesh, isosurfaces={"field": "v", "values": [-0.5, 0.5], "color_by": "e"},
+                                    **SIZE))
+    assert not np.array_equal(by_e, values)
+    # Node data on tetrahedra.
+    tetrahedra = np.asarray(lancer.render(lancer.read_msh(TETRAHEDRA), isosurfaces="f:3", **SIZE))
+    assert np.array_equal(tetrahedra, cli_image(tmp_path, TETRAHEDRA, "--isosurfaces", "f:3"))
+
+
+def test_streamlines_match_the_cli(tmp_path):
+    mesh = lancer.read_msh(CAPACITOR)
+    image = np.asarray(lancer.render(mesh, streamlines="e:20", **SIZE))
+    assert np.array_equal(image, cli_image(tmp_path, CAPACITOR, "--streamlines", "e:20"))
+    line = np.asarray(lancer.render(mesh, streamlines={"field": "e", "count": 10,
+                                                       "seed_line": [[-0.5, 0, 0], [0.5, 0, 0]]}, **SIZE))
+    assert np.array_equal(line, cli_image(tmp_path, CAPACITOR, "--streamlines", "e:10", "--seed-line",
+                                          "-0.5,0,0,0.5,0,0"))
+    assert not np.array_equal(image, line)
+
+
+def test_a_quick_look_keeps_its_volume(tmp_path):
+    # The volume is read once, from the file read_msh read, and kept by the Scene: a copy of the
+    # file removed after the first render still renders.
+    copy = tmp_path / "capacitor.msh"
+    shutil.copy(CAPACITOR, copy)
+    scene = lancer.Scene.quick_look(lancer.read_msh(str(copy)), color_by="v")
+    first = np.asarray(lancer.render(scene, slices="z", **SIZE))
+    copy.unlink()
+    assert np.array_equal(first, np.asarray(lancer.render(scene, slices="z", **SIZE)))
+    with pytest.raises(lancer.InputError, match="capacitor.msh"):
+        lancer.render(scene.mesh, slices="z", **SIZE)  # a new quick look reads the file again
+
+
+def test_animate_takes_the_volume_keywords(tmp_path):
+    output = tmp_path / "turn.gif"
+    lancer.animate(lancer.read_msh(CAPACITOR), str(output), frames=2, fps=10, slices="y", isosurfaces="v:2", width=32,
+                   height=32)
+    assert output.stat().st_size > 0
+
+
+def test_volume_keywords_bad_input():
+    mesh = lancer.read_msh(CAPACITOR)
+    with pytest.raises(lancer.InputError, match=r"^slices: error: 'w' is not a plane: use AXIS \(x, y or z: through "
+                                                r"the volume's centre\), AXIS=VALUE"):
+        lancer.render(mesh, slices="w", **SIZE)
+    with pytest.raises(lancer.InputError, match="slices: error: a slice needs a finite point and a normal other than"):
+        lancer.render(mesh, slices="0,0,0,0,0,0", **SIZE)
+    with pytest.raises(lancer.InputError, match=r"\[slices\] has no 'normal'; add normal = \[x, y, z\]"):
+        lancer.render(mesh, slices={"point": [0, 0, 0]}, **SIZE)
+    with pytest.raises(lancer.InputError, match=r"slices\[1\].normal must be an array of 3 numbers"):
+        lancer.render(mesh, slices=["z", {"normal": [0, 0]}], **SIZE)
+    with pytest.raises(lancer.InputError, match=r"unknown key 'colour' in \[slices\]"):
+        lancer.render(mesh, slices={"normal": [0, 0, 1], "colour": 1}, **SIZE)
+    with pytest.raises(TypeError, match="slices= takes a plane as text"):
+        lancer.render(mesh, slices=3, **SIZE)
+    with pytest.raises(TypeError, match="slices=: 3 is not a plane"):
+        lancer.render(mesh, slices=["z", 3], **SIZE)
+    with pytest.raises(ValueError, match="skin='glass' is not a skin style: use 'shown', 'ghost', 'edges' or 'hidden'"):
+        lancer.render(mesh, slices="z", skin="glass", **SIZE)
+
+    with pytest.raises(lancer.InputError, match="isosurfaces: error: 'v:0' is not FIELD\\[:COUNT\\]: COUNT is a whole "
+                                                "number from 1 to 100"):
+        lancer.render(mesh, isosurfaces="v:0", **SIZE)
+    with pytest.raises(lancer.InputError, match=r"give the field: isosurfaces FIELD\[:COUNT\]"):
+        lancer.render(mesh, isosurfaces=":3", **SIZE)
+    with pytest.raises(TypeError, match="isosurfaces= takes 'FIELD', 'FIELD:COUNT' or a dict"):
+        lancer.render(mesh, isosurfaces=3, **SIZE)
+    with pytest.raises(lancer.InputError, match=r"\[isosurfaces\] gives both count and values: keep one"):
+        lancer.render(mesh, isosurfaces={"field": "v", "count": 3, "values": [1]}, **SIZE)
+    with pytest.raises(lancer.InputError, match=r"unknown key 'colour' in \[isosurfaces\] \(did you mean 'color'\?\)"):
+        lancer.render(mesh, isosurfaces={"field": "v", "colour": [1, 0, 0]}, **SIZE)
+    with pytest.raises(lancer.InputError, match="isosurfaces of 'nothing': .*capacitor.msh has no such field inside "
+                                                r"its volume \(its fields: v, e\)"):
+        lancer.render(mesh, isosurfaces="nothing", **SIZE)
+    with pytest.raises(lancer.InputError, match="isosurfaces of 'e': it has 3 components"):
+        lancer.render(mesh, isosurfaces="e", **SIZE)
+
+    with pytest.raises(lancer.InputError, match="streamlines: error: 'e:0' is not FIELD\\[:COUNT\\]: COUNT is a whole "
+                                                "number from 1 to 100000"):
+        lancer.render(mesh, streamlines="e:0", **SIZE)
+    with pytest.raises(lancer.InputError, match=r"streamlines of 'v': it has 1 component, and field lines follow a "
+                                                r"vector"):
+        lancer.render(mesh, streamlines="v", **SIZE)
+    with pytest.raises(lancer.InputError, match=r"streamlines.seed_line must be an array of 2 points"):
+        lancer.render(mesh, streamlines={"field": "e", "seed_line": [[0, 0, 0]]}, **SIZE)
+    with pytest.raises(lancer.InputError, match=r"streamlines.direction must be \"both\", \"forward\" or \"backward\""):
+        lancer.render(mesh, streamlines={"field": "e", "direction": "up"}, **SIZE)
+    with pytest.raises(TypeError, match=r"streamlines=: the dict's keys are the scene file's key names"):
+        lancer.render(mesh, streamlines={"field": "e", 3: 1}, **SIZE)
+
+
+def test_a_mesh_without_volume_elements_says_so():
+    surface = lancer.read_msh(SURFACE)
+    with pytest.raises(lancer.InputError, match=r"^slices: error: '.*node_xy_v41_bin.msh' has no volume elements "
+                                                r"\(tetrahedra, hexahedra, prisms, pyramids\)"):
+        lancer.render(surface, slices="z", **SIZE)
+    # Field lines alone name their keyword too.
+    with pytest.raises(lancer.InputError, match="^streamlines: error: .* has no volume elements"):
+        lancer.render(surface, streamlines="u", **SIZE)
+    arrays = lancer.Mesh(np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]]), np.array([[0, 1, 2]]))
+    with pytest.raises(lancer.InputError, match="^isosurfaces: error: '<arrays>' has no volume elements .*a mesh made "
+                                                "from arrays or by gmsh is its surface alone; read the .msh file with "
+                                                "lancer.read_msh"):
+        lancer.render(arrays, isosurfaces="v", **SIZE)
+
+
+def test_the_command_line_names_the_option_of_field_lines_without_a_volume(tmp_path):
+    code, stderr = run_cli("render", SURFACE, "--streamlines", "u", "-q", "-o", tmp_path / "no.png", check=False)
+    assert code == 2
+    assert stderr.startswith("--streamlines: error: ") and "has no volume elements" in stderr, stderr
+    assert not (tmp_path / "no.png").exists()
