@@ -105,7 +105,9 @@ TEST(VolumeViews, TheCliDrawsSlicesAndIsosurfaces) {
   for (const std::string options :
        {"--color-by f --slice z=0.3 --slice x", "--color-by f --slice 0.5,0.5,0.5,1,1,0 --skin edges",
         "--isosurfaces f:3", "--isosurfaces f --isovalues 1,2.5 --color-by g",
-        "--color-by f --clip y=0.5 --legend right"}) {
+        "--color-by f --clip y=0.5 --legend right",
+        // Every kind on one mesh: each adds a mesh to the scene after the others.
+        "--color-by f --slice z --slice x --isosurfaces f:2 --streamlines u:3 --clip y=0.5"}) {
     const test::CommandResult run =
         test::runCli("render " + test::quoted(cube()) + " " + options + " --width 64 --height 48 -q -o " +
                      test::quoted(out) + " 2>&1");

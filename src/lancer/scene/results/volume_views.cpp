@@ -389,7 +389,10 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
     if (!volumes[i]) continue;
     const VolumeMesh& volume = *volumes[i];
     const MeshInstance instance = description.meshes[i];  // a copy: the vector grows below
-    const Mesh& parent = meshes[i];
+    // What the cuts take of the mesh, copied before `meshes` grows below (it may move the mesh).
+    Mesh parent;
+    parent.physicalGroups = meshes[i].physicalGroups;
+    parent.source.path = meshes[i].source.path;
     if (instance.volume.any() && volume.empty())
       throw InputError(volumeViewsWhere(instance.volume),
                        fmt::format("'{}' has no volume elements (tetrahedra, hexahedra, prisms, pyramids): "
