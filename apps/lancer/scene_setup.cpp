@@ -1,6 +1,7 @@
 #include "scene_setup.hpp"
 
 #include "commands.hpp"
+#include "volume_options.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -32,7 +33,6 @@
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/render_overrides.hpp"
-#include "lancer/scene/results/volume_view_text.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "lancer/scene/step_files.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -182,77 +182,6 @@ std::optional<double> numberOf(const std::string& text) {
   return value;
 }
 
-// --streamlines FIELD[:COUNT] and --seed-line X1,Y1,Z1,X2,Y2,Z2.
-void applyStreamlineOptions(const SceneOverrides& overrides, RenderOverrides& applied) {
-  if (overrides.streamlines.empty()) {
-    if (!overrides.seedLine.empty())
-      throw InputError(SourceLocation{"--seed-line"},
-                       "--seed-line gives the seeds of --streamlines FIELD: add --streamlines");
-    return;
-  }
-  StreamlineSpec spec;
-  const auto [field, count] = fieldAndCountFromText(overrides.streamlines, "--streamlines", kMaxStreamlines);
-  spec.field = field;
-  if (count) spec.count = *count;
-  if (!overrides.seedLine.empty()) {
-    double numbers[6];
-    std::size_t start = 0;
-    for (int i = 0; i < 6; ++i) {
-      const std::size_t comma = i < 5 ? overrides.seedLine.find(',', start) : overrides.seedLine.size();
-      const std::optional<double> number = comma == std::string::npos
-                                               ? std::nullopt
-                                               : numberOf(overrides.seedLine.substr(start, comma - start));
-      if (!number || !std::isfinite(*number))
-        throw InputError(
-            SourceLocation{"--seed-line"},
-            fmt::format("'{}' is not a line: give its two ends X1,Y1,Z1,X2,Y2,Z2", overrides.seedLine));
-      numbers[i] = *number;
-      start = comma + 1;
-    }
-    spec.seeds = StreamlineSpec::Seeds::Line;
-    spec.points = {{numbers[0], numbers[1], numbers[2]}, {numbers[3], numbers[4], numbers[5]}};
-  }
-  applied.streamlines = spec;
-}
-
-// --slice, --skin, --isosurfaces and --isovalues turned into values.
-void applyVolumeOptions(const SceneOverrides& overrides, RenderOverrides& applied) {
-  for (const std::string& slice : overrides.slices)
-    applied.slices.push_back(sliceFromText(slice, SourceLocation{"--slice"}));
-  if (!overrides.skin.empty()) {
-    const auto found = std::find(kSkinStyles.begin(), kSkinStyles.end(), overrides.skin);
-    if (found == kSkinStyles.end())
-      throw InputError(SourceLocation{"--skin"},
-                       fmt::format("'{}' is not a skin style: use shown, ghost, edges "
-                                   "or hidden",
-                                   overrides.skin));
-    applied.skin = static_cast<SkinStyle>(found - kSkinStyles.begin());
-  }
-  applyStreamlineOptions(overrides, applied);
-  if (overrides.isosurfaces.empty()) {
-    if (!overrides.isovalues.empty())
-      throw InputError(SourceLocation{"--isovalues"},
-                       "--isovalues gives the values of --isosurfaces FIELD: add --isosurfaces");
-    return;
-  }
-  IsosurfaceSpec spec;
-  const auto [field, count] = fieldAndCountFromText(overrides.isosurfaces, "--isosurfaces", kMaxIsosurfaces);
-  spec.field = field;
-  if (count) spec.count = *count;
-  std::size_t start = 0;
-  while (!overrides.isovalues.empty() && start <= overrides.isovalues.size()) {
-    const std::size_t comma = std::min(overrides.isovalues.find(',', start), overrides.isovalues.size());
-    const std::optional<double> value = numberOf(overrides.isovalues.substr(start, comma - start));
-    if (!value || !std::isfinite(*value) || std::abs(*value) > 3.4e38 || spec.values.size() >= 100)
-      throw InputError(
-          SourceLocation{"--isovalues"},
-          fmt::format("'{}' is not a list of up to 100 finite numbers V1,V2,...", overrides.isovalues));
-    spec.values.push_back(*value);
-    start = comma + 1;
-  }
-  applied.isosurfaces = spec;
-}
-
 // --log, --range, --legend, --isolines, --bands, --arrows and --clip turned into values; the renderer's
 // overrides check them (render_overrides.hpp).
 void applyAnnotationOptions(const SceneOverrides& overrides, RenderOverrides& applied) {
@@ -385,34 +314,7 @@ void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides) {
                   "Arrows along a vector field (3 components; node, element or element-node data)")
       ->group(kResultsGroup);
 
-  // Inside the volume: cuts of the volume elements, coloured by the field.
-  command
-      .add_option("--slice", overrides.slices,
-                  "The section of the volume by a plane, coloured as the mesh (any number): AXIS through the "
-                  "centre (x, y, z), AXIS=VALUE (z=0.3) or PX,PY,PZ,NX,NY,NZ; see docs/volume.md")
-      ->group(kVolumeGroup);
-  command
-      .add_option(
-          "--skin", overrides.skin,
-          "The mesh's own surface beside slices and isosurfaces: ghost (default), edges, hidden or shown")
-      ->group(kVolumeGroup);
-  command
-      .add_option("--isosurfaces", overrides.isosurfaces,
-                  "Surfaces where a scalar field of the volume is constant: FIELD[:COUNT] (default 5, evenly "
-                  "spaced in its range)")
-      ->group(kVolumeGroup);
-  command.add_option("--isovalues", overrides.isovalues, "The values of --isosurfaces: V1,V2,...")
-      ->group(kVolumeGroup);
-  command
-      .add_option(
-          "--streamlines", overrides.streamlines,
-          "Field lines of a vector field of the volume, as tubes: FIELD[:COUNT] (default 50 lines from "
-          "seeds spread evenly through the volume)")
-      ->group(kVolumeGroup);
-  command
-      .add_option("--seed-line", overrides.seedLine,
-                  "The --streamlines seeds: COUNT points evenly along the segment X1,Y1,Z1,X2,Y2,Z2")
-      ->group(kVolumeGroup);
+  addVolumeOptions(command, overrides);
 }
 
 void addSceneOutputOptions(CLI::App& command, SceneOverrides& overrides) {
