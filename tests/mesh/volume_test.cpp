@@ -95,8 +95,9 @@ TEST(VolumeProbe, SaysWhatIsWrong) {
     return std::string("no error");
   };
   EXPECT_NE(message({2, 0.5, 0.5}, "f", 0).find("inside no volume element"), std::string::npos);
-  EXPECT_NE(message({0.5, 0.5, 0.5}, "F", 0).find("no field 'F' in the file; its fields: f, g, jump, jumpe, u"),
-            std::string::npos)
+  EXPECT_NE(
+      message({0.5, 0.5, 0.5}, "F", 0).find("no field 'F' in the file; its fields: f, g, jump, jumpe, u"),
+      std::string::npos)
       << message({0.5, 0.5, 0.5}, "F", 0);
   EXPECT_NE(message({0.5, 0.5, 0.5}, "g", 7).find("no step 7 of 'g'; its steps: 0, 1"), std::string::npos);
   EXPECT_NE(message({NAN, 0.5, 0.5}, "f", 0).find("inside no volume element"), std::string::npos);

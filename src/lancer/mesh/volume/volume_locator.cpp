@@ -65,7 +65,8 @@ VolumeLocator::VolumeLocator(const VolumeMesh& volume) : volume_(volume) {
   const double side = std::cbrt(volumeOfBox / static_cast<double>(cells));
   for (int axis = 0; axis < 3; ++axis) {
     const double length = extent[axis];
-    dims_[static_cast<std::size_t>(axis)] = static_cast<int>(std::clamp(std::ceil(length / side), 1.0, 1024.0));
+    dims_[static_cast<std::size_t>(axis)] =
+        static_cast<int>(std::clamp(std::ceil(length / side), 1.0, 1024.0));
     binSize_[axis] = std::max(length, floor) / dims_[static_cast<std::size_t>(axis)];
   }
   const auto binOf = [&](const Vec3d& p, int axis) {
