@@ -13,6 +13,7 @@
 #include "lancer/cluster/tile_parts.hpp"
 #include "lancer/image/atomic_file.hpp"
 #include "lancer/image/exr_io.hpp"
+#include "lancer/image/frame_sequence.hpp"
 #include "lancer/image/image_io.hpp"
 #include "lancer/image/image_row_writer.hpp"
 #include "lancer/image/legend.hpp"
@@ -336,7 +337,9 @@ int runRender(const RenderCommandOptions& options) {
   // The legends are the same in every task of a job array (the scene's ranges): the first writes them.
   const bool writesLegend = !options.legendFile.empty() && options.pixel.empty() &&
                             (shard ? shard->shard.index == 0 : distribution->delivers());
-  std::optional<Image> legend;
+  // The legend sheet goes with the picture: written beside its target under a hidden name before the
+  // render, renamed into place once the picture is, removed when the render fails or is interrupted.
+  StagedFrames legend;
   if (!options.legendFile.empty()) {
     imageFormatFromPath(options.legendFile);
     if (!prepared.scene.fieldColors)
@@ -352,11 +355,14 @@ int runRender(const RenderCommandOptions& options) {
                                    options.legendFile));
   }
   if (writesLegend) {
-    // Before the render, so that a failed command changes no file: the legend's folder, and its text
-    // (the font). The bar holds the map's display values: written as they are, like the picture's.
-    requireWritable(options.legendFile);
-    legend =
-        legendSheet(prepared.scene.fieldColors->legends, kLegendBarLength, kLegendTextHeight, settings.srgb);
+    // Before the render, so that a failed command changes no file: the legend's folder, its text (the
+    // font) and its bytes. The bar holds the map's display values: written as they are, like the
+    // picture's.
+    requireWritable(options.legendFile);  // the error names the legend, not its hidden name
+    legend.write(
+        options.legendFile,
+        legendSheet(prepared.scene.fieldColors->legends, kLegendBarLength, kLegendTextHeight, settings.srgb),
+        ImageWriteOptions{});
   }
 
   const Renderer renderer = prepared.renderer();
@@ -388,7 +394,7 @@ int runRender(const RenderCommandOptions& options) {
   }
   if (progress) std::fputc('\n', stderr);
   if (!written) return talks ? interruptedExit(output) : kExitInterrupted;  // rank 0 alone says so
-  if (legend) writeImage(options.legendFile, *legend);
+  legend.publish();
   if (!talks || shard) return kExitOk;
   if (!options.overrides.quiet) {
     const double total = stopwatch.seconds();
