@@ -167,10 +167,10 @@ bool renderToFile(const PreparedRender& prepared, const Renderer& renderer, cons
 // (atomically) whenever `seconds` have passed since the last write, and at the end, each through
 // the plain render's pipeline: the denoiser with the final render's feature buffers (made once),
 // the legends, the tone curve and encoding, or the EXR with its layers. False when interrupted;
-// the file then holds the last pass written.
+// the file then holds the last pass written, whose samples per pixel go to `writtenSamples` (0: none).
 bool renderProgressive(const PreparedRender& prepared, const Renderer& finalRenderer,
                        const std::string& output, double seconds, const ExrLayerChoice& aovs,
-                       const RenderOptions& renderOptions, RenderStats& stats) {
+                       const RenderOptions& renderOptions, RenderStats& stats, int& writtenSamples) {
   const RenderSettings& settings = prepared.description.render;
   std::optional<FeatureBuffers> features;
   if (settings.denoise || aovs.any()) features = finalRenderer.renderFeatures(renderOptions.threads);
@@ -193,6 +193,7 @@ bool renderProgressive(const PreparedRender& prepared, const Renderer& finalRend
         image = denoise(image, *features, denoiseOptions);
       }
       writeWithLegends(output, std::move(image), prepared, aovs, features ? &*features : nullptr);
+      writtenSamples = samples;
       sinceWrite = Stopwatch();
     }
     if (last) return true;
@@ -375,14 +376,15 @@ int runRender(const RenderCommandOptions& options) {
   if (progress) renderOptions.onProgress = printProgressLine;
   RenderStats stats;
   bool written = false;
+  int progressiveSamples = 0;  // of the last pass --progressive wrote
   try {
     if (shard)
       written = renderPart(prepared, renderer, output, *shard, renderOptions, options.overrides.quiet, stats);
     else if (distribution->ranks() > 1)
       written = renderDistributed(prepared, renderer, output, *distribution, renderOptions, stats);
     else if (options.progressive)
-      written =
-          renderProgressive(prepared, renderer, output, *options.progressive, aovs, renderOptions, stats);
+      written = renderProgressive(prepared, renderer, output, *options.progressive, aovs, renderOptions,
+                                  stats, progressiveSamples);
     else
       written = renderToFile(prepared, renderer, output, aovs, renderOptions, stats);
   } catch (const NonFiniteRenderError& e) {
@@ -393,6 +395,11 @@ int runRender(const RenderCommandOptions& options) {
     throw;
   }
   if (progress) std::fputc('\n', stderr);
+  if (!written && progressiveSamples > 0) {
+    std::fprintf(stderr, "lancer: interrupted; %s holds the last pass written, %d samples per pixel of %d\n",
+                 output.c_str(), progressiveSamples, settings.samples);
+    return kExitInterrupted;
+  }
   if (!written) return talks ? interruptedExit(output) : kExitInterrupted;  // rank 0 alone says so
   legend.publish();
   if (!talks || shard) return kExitOk;
