@@ -11,8 +11,8 @@
 
 #include "bindings.hpp"
 #include "lancer/mesh/field_steps.hpp"
+#include "lancer/mesh/mesh_file.hpp"
 #include "lancer/mesh/mesh_from_elements.hpp"
-#include "lancer/mesh/msh_reader.hpp"
 #include "lancer/util/huge_pages.hpp"
 #include "lancer/util/parallel_for.hpp"
 
@@ -443,7 +443,7 @@ void bindMesh(py::module_& module) {
       [](const std::string& path, int threads, const std::vector<std::string>& views) {
         requireThreads(threads);
         py::gil_scoped_release release;
-        auto mesh = std::make_shared<Mesh>(readMsh(path, threads));
+        auto mesh = std::make_shared<Mesh>(readMeshFile(path, threads));
         addViewFiles(*mesh, views);
         return mesh;
       },
