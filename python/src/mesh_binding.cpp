@@ -448,7 +448,8 @@ void bindMesh(py::module_& module) {
         return mesh;
       },
       py::arg("path"), py::arg("threads") = 0, py::arg("views") = std::vector<std::string>{},
-      "Reads a gmsh .msh file (MSH 2.2, 4.0, 4.1) or a list-based .pos view as the lancer command does "
+      "Reads a mesh file as the lancer command does: a gmsh .msh (MSH 2.2, 4.0, 4.1), a list-based .pos "
+      "view, or an STL, OBJ or PLY surface (told apart by content) "
       "(threads: for the assembly after the parse, 0: every core; the mesh is the same for any count); "
       "views: list-based .pos files put on the mesh by their elements' coordinates, each step of each "
       "view an element-node field");
