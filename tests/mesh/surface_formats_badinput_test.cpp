@@ -6,6 +6,7 @@
 #include <string>
 
 #include "lancer/mesh/mesh_file.hpp"
+#include "lancer/mesh/nothing_to_draw.hpp"
 #include "support/files.hpp"
 #include "support/input_errors.hpp"
 
@@ -182,6 +183,19 @@ TEST(PlyBadInput, IndicesAndShapesTheReaderCannotUse) {
   EXPECT_EQ(errorOf("ply\nformat binary_middle_endian 1.0\nend_header\n", "part.ply"),
             "part.ply:2:8: error: unknown PLY format 'binary_middle_endian': expected ascii, "
             "binary_little_endian or binary_big_endian");
+}
+
+TEST(SurfaceBadInput, PointsWithoutFacesHaveNothingToDraw) {
+  const std::string cloud =
+      "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n0 0 0\n1 1 1\n";
+  EXPECT_EQ(
+      nothingToDrawReason(readMeshFromMemory(std::span<const char>(cloud.data(), cloud.size()), "scan.ply")),
+      "it holds no faces (2 points and no face element entries): lancer draws surfaces");
+  const std::string points = "v 0 0 0\nv 1 0 0\n";
+  EXPECT_EQ(
+      nothingToDrawReason(readMeshFromMemory(std::span<const char>(points.data(), points.size()), "p.obj")),
+      "it holds no faces (2 points and no f line): lancer draws surfaces");
 }
 
 }  // namespace
