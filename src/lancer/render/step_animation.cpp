@@ -10,7 +10,6 @@
 #include "lancer/image/legend.hpp"
 #include "lancer/image/text.hpp"
 #include "lancer/mesh/field_steps.hpp"
-#include "lancer/mesh/msh/stored_steps.hpp"
 #include "lancer/scene/annotation_builder.hpp"
 #include "lancer/scene/instance_transform.hpp"
 #include "lancer/scene/result_keys.hpp"
@@ -199,8 +198,7 @@ void StepScenes::buildAt(double time) {
   // frame reads its steps again, which only the first frame and the rare rebuilds pay).
   const auto forgetKeptSteps = [this] {
     for (const Mesh& mesh : meshes_)
-      for (const MeshField& field : mesh.fields)
-        if (field.isStored()) field.stored->file->forgetKept();
+      for (const MeshField& field : mesh.fields) lancer::forgetKeptSteps(field);
   };
   // A warped step with the same faces: its vertices, normals and colours are written over the
   // previous frame's scene and the tree is refitted (nothing as large as the scene is allocated).

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <map>
 
-#include "lancer/mesh/msh_reader.hpp"
+#include "lancer/mesh/mesh_file.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/scene/results/volume_views.hpp"
 #include "lancer/scene/scene.hpp"
@@ -185,11 +185,11 @@ Mesh readInstanceMesh(const MeshInstance& instance, int threads, std::shared_ptr
     throw InputError(instance.where, fmt::format("mesh file '{}' does not exist", instance.file));
   Mesh mesh;
   if (volume) {
-    MeshWithVolume read = readMshWithVolume(instance.file, threads);
+    MeshWithVolume read = readMeshFileWithVolume(instance.file, threads);
     mesh = std::move(read.mesh);
     *volume = std::move(read.volume);
   } else {
-    mesh = readMsh(instance.file, threads);
+    mesh = readMeshFile(instance.file, threads);
   }
   addViewFiles(mesh, instance.views);
   if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
