@@ -79,6 +79,7 @@ deb)
     for needed in python3 python3-numpy; do
       grep -qxF "$needed" <<<"$depends_names" || fail "Depends lacks $needed: $depends"
     done
+    dpkg-deb -I "$deb" postinst | grep -q 'py3compile -p lancer' || fail "the package's postinst does not byte-compile the package"
     site=$root/usr/lib/python3/dist-packages
     [ -f "$site/lancer/__init__.py" ] || fail "no /usr/lib/python3/dist-packages/lancer in the package"
     printed=$(PYTHONPATH=$site import_from "$python" "$site") || fail "$python could not import lancer from $site"
