@@ -126,6 +126,12 @@ class CopyProgram(build_scripts):
             os.chmod(target, 0o755)
 
 
+try:
+    import wheel  # noqa: F401  setuptools before 70 builds wheels with it (bdist_wheel)
+except ImportError:
+    fail(f"cannot build a wheel: {sys.executable} has no wheel package (Debian: apt install python3-wheel, "
+         "then make the venv from /usr/bin/python3 with --system-site-packages and pip install --no-build-isolation .)")
+
 setup(
     version=version(),
     packages=["lancer"],
