@@ -7,8 +7,9 @@
 #          and completion are where man and the shells look.
 #   wheel: `pip install --no-build-isolation --no-index .` in a venv made with --system-site-packages,
 #          setup.py pointed at the build folder (LANCER_CMAKE_BUILD_DIR): `lancer` is on the venv's PATH
-#          and `import lancer` works from any folder. Run on a copy of the files setup.py reads, so
-#          that the source tree is not written to.
+#          and `import lancer` works from any folder; without cmake, ninja and c++ on PATH pip fails
+#          with one line naming them. Run on a copy of the files setup.py reads, so that the source
+#          tree is not written to.
 # A missing tool (dpkg-deb, dpkg-shlibdeps; python3-venv, pip, setuptools, wheel) skips with exit 77.
 # Usage: package_test.sh deb|wheel SOURCE_DIR BUILD_DIR VERSION [PYTHON]
 set -euo pipefail
@@ -101,6 +102,13 @@ wheel)
     "$work/venv/bin/pip" install --no-build-isolation --no-index . >"$work/pip.log" 2>&1) ||
     { cat "$work/pip.log" >&2; fail "pip install failed"; }
   [ -x "$work/venv/bin/lancer" ] || fail "pip installed no bin/lancer in the venv"
+  # Without the build tools (an empty PATH: no cmake, ninja nor c++), one line says what to install.
+  if (cd "$copy" && env -u LANCER_CMAKE_BUILD_DIR PATH=/nonexistent PIP_NO_CACHE_DIR=1 \
+    "$work/venv/bin/pip" wheel --no-build-isolation --no-index --no-deps -w "$work/wheels" . >"$work/pip-no-tools.log" 2>&1); then
+    fail "pip built a wheel without cmake, ninja or a compiler on PATH"
+  fi
+  grep -q 'lancer: cannot build: cmake, ninja, a C++ compiler (c++) not found; install them' "$work/pip-no-tools.log" ||
+    { cat "$work/pip-no-tools.log" >&2; fail "pip without the build tools did not say which are missing"; }
   printed=$(cd "$elsewhere" && PATH=$work/venv/bin:$PATH && command -v lancer && lancer --version)
   [ "$printed" = "$work/venv/bin/lancer"$'\n'"lancer $version" ] || fail "lancer on the venv's PATH printed '$printed'"
   (cd "$elsewhere" && "$work/venv/bin/lancer" info "$mesh" >/dev/null) || fail "the venv's lancer info failed"
