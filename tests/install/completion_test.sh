@@ -76,4 +76,7 @@ for command in "${commands[@]}"; do
     [ "$offered" = "$expected" ] || fail "bash offers '$offered' after lancer $command $option, --help says '$expected'"
   done < <(choices_of "$command")
 done
-echo "completion_test: ${#commands[@]} subcommands, $checked options in bash${have_zsh:+, zsh}${have_fish:+, fish} and the man pages"
+fish_check=read
+[ -z "$have_fish" ] || fish_check=asked
+echo "completion_test: ${#commands[@]} subcommands, $checked options: bash asked, zsh ${have_zsh:+syntax-checked and }read," \
+  "fish $fish_check, the man pages read"
