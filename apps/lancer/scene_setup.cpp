@@ -311,6 +311,11 @@ bool applyCameraOptions(SceneDescription& description, const SceneOverrides& ove
       camera.viewChosen = true;
     }
   }
+  if (!overrides.view.empty() || turns) {
+    // `animate` turns the camera about the model's up, not about the turned camera's own up.
+    if (!description.animation) description.animation.emplace();
+    if (!description.animation->axis) description.animation->axis = axis;
+  }
   camera.zoom = zoom;
   return true;
 }
