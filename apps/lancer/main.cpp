@@ -98,6 +98,8 @@ int main(int argc, char** argv) {
       "lancer: a fast ray tracer for gmsh surface meshes.\n"
       "Exit codes: 0 success, 2 bad input (message names the file and line), 1 internal error."};
   app.require_subcommand(1);
+  // The positional inputs lead every command's --help under the name of their group.
+  app.get_formatter()->label("Positionals", "Input");
   // LANCER_VERSION: CMake's project(VERSION), defined for this file in apps/lancer/CMakeLists.txt.
   app.set_version_flag("-V,--version", "lancer " LANCER_VERSION);
   // Options every subcommand accepts (fallthrough: `lancer render --max-memory 2G x.msh` works too).

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -40,6 +41,9 @@ PipedOutput::~PipedOutput() {
 }
 
 void PipedOutput::send() const {
+  // A reader that stops early (`| head -c 100`) makes the write fail with EPIPE instead of killing
+  // lancer, so that the temporary file is still removed.
+  std::signal(SIGPIPE, SIG_IGN);
   std::FILE* in = std::fopen(path_.c_str(), "rb");
   if (in == nullptr)
     throw InputError(SourceLocation{path_},

@@ -38,7 +38,7 @@ TEST(CommandLineCli, EveryRenderAndAnimateOptionIsInAGroup) {
       }
     }
     EXPECT_EQ(ungrouped, 1);
-    for (const char* group : {"Camera:", "Look:", "Results:", "Output:", "Quality:", "Cluster:"})
+    for (const char* group : {"Input:", "Camera:", "Look:", "Results:", "Output:", "Quality:", "Cluster:"})
       EXPECT_TRUE(contains(help.output, std::string("\n") + group + "\n")) << group;
     EXPECT_TRUE(contains(help.output, "--view TEXT:{iso,front,back,left,right,top,bottom}"));
   }
