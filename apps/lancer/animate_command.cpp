@@ -18,8 +18,10 @@
 #include "lancer/render/step_animation.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/setting_checks.hpp"
 #include "lancer/util/check.hpp"
 #include "lancer/util/stopwatch.hpp"
+#include "piped_output.hpp"
 #include "scene_setup.hpp"
 
 namespace lancer::cli {
@@ -74,6 +76,10 @@ std::vector<int> framesToRender(const AnimateCommandOptions& options, const Anim
 }
 
 int runAnimate(const AnimateCommandOptions& options) {
+  if (options.output == "-")
+    throw InputError(SourceLocation{"-o"},
+                     "animate writes a file (.gif, .png or numbered frames), not stdout: give -o NAME.gif "
+                     "(`lancer render -o -` sends one PNG to stdout)");
   // A job-array task works alone; a --frame-range under mpirun is shared by the ranks.
   const std::unique_ptr<WorkDistribution> distribution = commandDistribution(!options.shard.empty());
   // Over steps, the meshes as read (every step) stay for the frames' scenes.
@@ -84,7 +90,10 @@ int runAnimate(const AnimateCommandOptions& options) {
   const RenderSettings& settings = prepared.description.render;
   AnimationSettings animation = prepared.description.animation.value_or(AnimationSettings{});
   if (!options.over.empty()) animation.overSteps = overStepsAsked;
-  if (options.frames) animation.frames = *options.frames, animation.framesGiven = true;
+  if (options.frames) {
+    animation.frames = checkFrames(*options.frames, SettingName{SourceLocation{"--frames"}, "--frames"});
+    animation.framesGiven = true;
+  }
   if (options.fps) animation.fps = *options.fps;
   if (options.label) {
     formatStepLabel(*options.label, 0.0, 0, SourceLocation{"--label"});  // unknown names: said now
@@ -108,12 +117,11 @@ int runAnimate(const AnimateCommandOptions& options) {
     releaseSceneForSteps(prepared);
   }
 
-  // render.output names `lancer render`'s still image: an animation never writes over it unasked.
-  const std::string& output = options.output;
-  if (output.empty())
-    throw InputError(
-        SourceLocation{options.input},
-        "no output: give -o FILE.gif, -o FILE.png (animated PNG) or -o frame_%04d.png (numbered frames)");
+  // render.output names `lancer render`'s still image: an animation never writes over it unasked, and
+  // without -o goes to the input's name as a .gif in the current folder.
+  const std::string output =
+      options.output.empty() ? outputNamedAfter(options.input, ".gif") : options.output;
+  checkTransparentOutput(options.overrides, output);
   const bool talks = distribution->delivers();  // rank 0 of an MPI job, or a single process
   AnimationOutputOptions format = options.writer;
   format.frames = animation.frames;
@@ -232,11 +240,10 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
   addSceneViewOptions(*command, options->overrides);
   command
       ->add_option("-o,--output", options->output,
-                   "Output (required): NAME.gif (animated, looping), NAME.png (animated PNG) or "
-                   "NAME_%04d.png/.bmp/.ppm (one file per frame)")
+                   "Output: NAME.gif (animated, looping), NAME.png (animated PNG) or NAME_%04d.png/.bmp/.ppm "
+                   "(one file per frame); default: the input's name as a .gif in the current folder")
       ->group(kOutputGroup);
-  command->add_option("--frames", options->frames, "Number of frames")
-      ->check(CLI::Range(1, kMaxFrames))
+  command->add_option("--frames", options->frames, fmt::format("Number of frames (1 to {})", kMaxFrames))
       ->group(kOutputGroup);
   command->add_option("--fps", options->fps, "Frames per second")
       ->check(CLI::Range(0.01, 100.0))

@@ -4,8 +4,10 @@
 
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +37,50 @@ std::string unknownSubcommand(CLI::App& app, int argc, char** argv) {
   return {};
 }
 
+// The options a command takes, as typed: "--width", "-o"; with the global ones (--max-memory, -V, ...).
+std::vector<std::string> optionNames(const CLI::App& command, const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::App* owner : {&command, &app}) {
+    for (const CLI::Option* option : owner->get_options()) {
+      for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+      for (const std::string& name : option->get_snames()) names.push_back("-" + name);
+    }
+    if (owner == &app) break;
+  }
+  return names;
+}
+
+// "lancer: error: unknown option '--widht' (did you mean '--width'?); ..." for the first word of the
+// command line that looks like an option and is none of the command's; "" when there is none (an
+// extra positional value: CLI11's own message says so).
+std::string unknownOptionMessage(CLI::App& app, int argc, char** argv) {
+  const std::vector<CLI::App*> chosen = app.get_subcommands();
+  const CLI::App& command = chosen.empty() ? app : *chosen.front();
+  // Without a subcommand CLI11 stops at the missing subcommand: the words are all there is.
+  std::vector<std::string> words = app.remaining(true);
+  if (chosen.empty())
+    for (int i = 1; i < argc; ++i) {
+      const std::string word = argv[i];
+      if (word == "--max-memory") ++i;  // and its value
+      const std::string name = word.substr(0, word.find('='));
+      if (name.size() > 1 && name[0] == '-' && app.get_option_no_throw(name) == nullptr)
+        words.push_back(word);
+    }
+  for (const std::string& word : words) {
+    if (word.size() < 2 || word[0] != '-') continue;
+    char* end = nullptr;
+    std::strtod(word.c_str(), &end);
+    if (end == word.c_str() + word.size()) continue;  // a negative number, a value
+    const std::vector<std::string> names = optionNames(command, app);
+    const std::optional<std::string> closest = lancer::closestOption(word, names);
+    const std::string help = chosen.empty() ? "lancer --help" : "lancer " + command.get_name() + " --help";
+    return "lancer: error: unknown option '" + word.substr(0, word.find('=')) + "'" +
+           (closest ? " (did you mean '" + *closest + "'?)" : std::string()) + "; " + help +
+           " lists the options";
+  }
+  return {};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -52,6 +98,8 @@ int main(int argc, char** argv) {
       "lancer: a fast ray tracer for gmsh surface meshes.\n"
       "Exit codes: 0 success, 2 bad input (message names the file and line), 1 internal error."};
   app.require_subcommand(1);
+  // The positional inputs lead every command's --help under the name of their group.
+  app.get_formatter()->label("Positionals", "Input");
   // LANCER_VERSION: CMake's project(VERSION), defined for this file in apps/lancer/CMakeLists.txt.
   app.set_version_flag("-V,--version", "lancer " LANCER_VERSION);
   // Options every subcommand accepts (fallthrough: `lancer render --max-memory 2G x.msh` works too).
@@ -86,6 +134,12 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "lancer: error: unknown subcommand '%s'%s; the commands are %s (lancer --help)\n",
                    unknown.c_str(), lancer::didYouMean(unknown, names).c_str(), commands.c_str());
       return kExitBadInput;
+    }
+    if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr || app.get_subcommands().empty()) {
+      if (const std::string message = unknownOptionMessage(app, argc, argv); !message.empty()) {
+        std::fprintf(stderr, "%s\n", message.c_str());
+        return kExitBadInput;
+      }
     }
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitBadInput;

@@ -22,6 +22,7 @@
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/util/stopwatch.hpp"
+#include "piped_output.hpp"
 #include "scene_setup.hpp"
 
 namespace lancer::cli {
@@ -67,8 +68,22 @@ int tracePixel(const PreparedRender& prepared, const Renderer& renderer, const s
   return kExitOk;
 }
 
+// -o, else render.output, else the input's name as a .png in the current folder.
 std::string outputPath(const RenderCommandOptions& options, const RenderSettings& settings) {
-  return options.output.empty() ? settings.output : options.output;
+  if (!options.output.empty()) return options.output;
+  return settings.output.empty() ? outputNamedAfter(options.input, ".png") : settings.output;
+}
+
+// -o -: what cannot go to stdout is refused before anything is read.
+void checkPipedOutput(const RenderCommandOptions& options) {
+  const char* refused = !options.shard.empty()   ? "--shard writes a part file per task"
+                        : options.progressive    ? "--progressive rewrites its file as the picture converges"
+                        : !options.aovs.empty()  ? "--aovs needs an .exr file"
+                        : !options.pixel.empty() ? "--pixel prints its value to stdout"
+                                                 : nullptr;
+  if (refused)
+    throw InputError(SourceLocation{"-o"},
+                     fmt::format("-o - sends one PNG to stdout: {}; give -o FILE instead", refused));
 }
 
 // PNG, BMP and PPM go to the file band by band as they finish, so memory holds a few bands of rows
@@ -296,8 +311,15 @@ bool renderDistributed(const PreparedRender& prepared, const Renderer& renderer,
   return true;
 }
 
-int runRender(const RenderCommandOptions& options) {
+int runRender(const RenderCommandOptions& given) {
   const Stopwatch stopwatch;
+  // -o -: rendered into a temporary PNG, sent to stdout once complete.
+  std::optional<PipedOutput> piped;
+  RenderCommandOptions options = given;
+  if (given.output == "-") {
+    checkPipedOutput(given);
+    options.output = piped.emplace().path();
+  }
   if (options.progressive && !(std::isfinite(*options.progressive) && *options.progressive > 0))
     throw InputError(SourceLocation{"--progressive"},
                      fmt::format("{} is not a number of seconds > 0 (how often the image is rewritten as it "
@@ -312,15 +334,15 @@ int runRender(const RenderCommandOptions& options) {
       });
   const RenderSettings& settings = prepared.description.render;
   const std::string output = outputPath(options, settings);
-  if (output.empty() && options.pixel.empty())
-    throw InputError(SourceLocation{options.input}, "no output image: give -o FILE or set render.output");
+  const std::string shownOutput = piped ? "stdout" : output;  // for messages
   ExrLayerChoice aovs;
-  if (!output.empty()) {  // refuse a bad extension, bit depth or layer before rendering
+  if (options.pixel.empty()) {  // refuse a bad extension, bit depth or layer before rendering
+    checkTransparentOutput(options.overrides, output);
     requireBitDepth(output, imageFormatFromPath(output), settings.bitDepth);
     if (isExr(output) && !exrSupported()) writeExr(output, Image(1, 1));  // says how to get OpenEXR
     aovs = parseAovs(options.aovs, output);
   }
-  if (shard && (settings.denoise || (!output.empty() && isExr(output)) || settings.bitDepth != 8))
+  if (shard && (settings.denoise || isExr(output) || settings.bitDepth != 8))
     throw InputError(SourceLocation{"--shard"},
                      "a job-array part holds 8-bit rows: --denoise, --bit-depth 16 and .exr need a render "
                      "without --shard");
@@ -350,7 +372,7 @@ int runRender(const RenderCommandOptions& options) {
               "{} needs a mesh coloured by a field (--color-by FIELD, or color_by = {{ field = \"...\" }} "
               "in a [[mesh]])",
               options.legendFileOption));
-    if (!output.empty() && sameOutputPath(options.legendFile, output))
+    if (options.pixel.empty() && sameOutputPath(options.legendFile, output))
       throw InputError(SourceLocation{options.legendFileOption},
                        fmt::format("'{}' is also the picture's output: give the legend a name of its own",
                                    options.legendFile));
@@ -397,18 +419,19 @@ int runRender(const RenderCommandOptions& options) {
   if (progress) std::fputc('\n', stderr);
   if (!written && progressiveSamples > 0) {
     std::fprintf(stderr, "lancer: interrupted; %s holds the last pass written, %d samples per pixel of %d\n",
-                 output.c_str(), progressiveSamples, settings.samples);
+                 shownOutput.c_str(), progressiveSamples, settings.samples);
     return kExitInterrupted;
   }
-  if (!written) return talks ? interruptedExit(output) : kExitInterrupted;  // rank 0 alone says so
+  if (!written) return talks ? interruptedExit(shownOutput) : kExitInterrupted;  // rank 0 alone says so
   legend.publish();
+  if (piped && talks) piped->send();
   if (!talks || shard) return kExitOk;
   if (!options.overrides.quiet) {
     const double total = stopwatch.seconds();
     std::fprintf(stderr,
                  "%s: %dx%d, %zu faces, %.2f samples/pixel, load %.3f s, build %.3f s, trace %.3f s "
                  "(%.2f Mrays/s), total %.3f s\n",
-                 output.c_str(), settings.width, settings.height, prepared.scene.geometry.faces.size(),
+                 shownOutput.c_str(), settings.width, settings.height, prepared.scene.geometry.faces.size(),
                  stats.samplesPerPixel, prepared.loadSeconds, prepared.buildSeconds, stats.seconds,
                  stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, total);
   }
@@ -426,8 +449,11 @@ void addRenderCommand(CLI::App& app, CommandRunner& runner) {
   addInputOption(*command, options->inputs);
   addSceneViewOptions(*command, options->overrides);
   command
-      ->add_option("-o,--output", options->output,
-                   fmt::format("Output image ({}); overrides render.output", kImageExtensions))
+      ->add_option(
+          "-o,--output", options->output,
+          fmt::format("Output image ({}; default: render.output, else the input's name as a .png in the "
+                      "current folder); - writes a PNG to stdout",
+                      kImageExtensions))
       ->group(kOutputGroup);
   addSceneOutputOptions(*command, options->overrides);
   command

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "lancer/image/atomic_file.hpp"
+#include "lancer/image/color_map.hpp"
 #include "lancer/image/image.hpp"
 #include "lancer/mesh/mesh_file.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
@@ -33,7 +34,10 @@
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/render_overrides.hpp"
 #include "lancer/scene/scene_loader.hpp"
+#include "lancer/scene/setting_checks.hpp"
 #include "lancer/scene/step_files.hpp"
+#include "lancer/scene/suggest.hpp"
+#include "lancer/scene/view_presets.hpp"
 #include "lancer/util/stopwatch.hpp"
 
 namespace lancer::cli {
@@ -60,6 +64,22 @@ std::vector<std::string> choices(const std::array<std::string_view, N>& names) {
   return {names.begin(), names.end()};
 }
 
+// An option as setting_checks.hpp's functions name it.
+SettingName optionName(const char* option) { return {SourceLocation{option}, option}; }
+
+// --width, --height, --samples, --max-depth, --threads (the checks the scene file's keys and Python's
+// arguments go through too) and --azimuth, --elevation, --zoom, before any file is read.
+void checkOptionValues(const SceneOverrides& overrides) {
+  if (overrides.width) checkWidth(*overrides.width, optionName("--width"));
+  if (overrides.height) checkHeight(*overrides.height, optionName("--height"));
+  if (overrides.samples) checkSamples(*overrides.samples, optionName("--samples"));
+  if (overrides.maxDepth) checkMaxDepth(*overrides.maxDepth, optionName("--max-depth"));
+  checkThreads(overrides.threads, optionName("--threads"));
+  if (overrides.azimuth) checkAzimuth(*overrides.azimuth, optionName("--azimuth"));
+  if (overrides.elevation) checkElevation(*overrides.elevation, optionName("--elevation"));
+  if (overrides.zoom) checkZoom(*overrides.zoom, optionName("--zoom"));
+}
+
 // --tonemap, --exposure, --bit-depth, --denoise, checked here so that the messages name the option.
 void applyOutputOverrides(const SceneOverrides& overrides, RenderOverrides& applied) {
   if (!overrides.toneMap.empty()) {
@@ -68,20 +88,8 @@ void applyOutputOverrides(const SceneOverrides& overrides, RenderOverrides& appl
       throw InputError(SourceLocation{"--tonemap"},
                        fmt::format("unknown tone map '{}': use none, filmic or aces", overrides.toneMap));
   }
-  if (overrides.exposure) {
-    const double stops = *overrides.exposure;
-    if (!std::isfinite(stops) || std::abs(stops) > kMaxExposureStops)
-      throw InputError(SourceLocation{"--exposure"},
-                       fmt::format("exposure {} is not a number of stops between -{} and {}", stops,
-                                   kMaxExposureStops, kMaxExposureStops));
-    applied.exposure = static_cast<float>(stops);
-  }
-  if (overrides.bitDepth) {
-    if (*overrides.bitDepth != 8 && *overrides.bitDepth != 16)
-      throw InputError(SourceLocation{"--bit-depth"},
-                       fmt::format("bit depth {} is not supported: use 8 or 16", *overrides.bitDepth));
-    applied.bitDepth = *overrides.bitDepth;
-  }
+  if (overrides.exposure) applied.exposure = checkExposure(*overrides.exposure, optionName("--exposure"));
+  if (overrides.bitDepth) applied.bitDepth = checkBitDepth(*overrides.bitDepth, optionName("--bit-depth"));
   if (overrides.denoise) applied.denoise = true;
 }
 
@@ -203,6 +211,99 @@ void applyAnnotationOptions(const SceneOverrides& overrides, RenderOverrides& ap
     applied.colorMap = colorMapFromText(overrides.colorMap, SourceLocation{"--color-map"});
 }
 
+// --background: a CSS name, #rrggbb or #rgb (parseColor), or r,g,b with each in [0, 1]; the colour the
+// picture shows.
+Vec3 backgroundFromText(const std::string& text) {
+  if (const std::optional<Vec3> color = parseColor(text)) return *color;
+  std::array<double, 3> rgb{};
+  std::size_t start = 0;
+  int count = 0;
+  bool numbers = true;
+  while (numbers && start <= text.size() && count < 4) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::optional<double> value = numberOf(text.substr(start, comma - start));
+    numbers = value && *value >= 0 && *value <= 1;
+    if (numbers && count < 3) rgb[count] = *value;
+    ++count;
+    start = comma + 1;
+  }
+  if (numbers && count == 3) return toFloat(Vec3d{rgb[0], rgb[1], rgb[2]});
+  const std::vector<std::string_view> names = colorNames();
+  throw InputError(
+      SourceLocation{"--background"},
+      fmt::format("'{}' is not a colour{}: use a CSS colour name (white, navy), #rrggbb, #rgb or "
+                  "r,g,b with each in 0..1 (e.g. 1,1,1)",
+                  text, didYouMean(text, std::span<const std::string_view>(names))));
+}
+
+// --view, --azimuth, --elevation and --zoom on the description's camera (docs/rendering.md): the
+// automatic camera turns its view direction; a scene's placed camera turns about its look_at.
+// Returns whether any was given.
+bool applyCameraOptions(SceneDescription& description, const SceneOverrides& overrides) {
+  const bool turns = overrides.azimuth || overrides.elevation;
+  if (overrides.view.empty() && !turns && !overrides.zoom) return false;
+  const char* first = !overrides.view.empty() ? "--view"
+                      : overrides.azimuth     ? "--azimuth"
+                      : overrides.elevation   ? "--elevation"
+                                              : "--zoom";
+  CameraSettings& camera = description.camera;
+  if (overrides.gmshView || camera.gmshView)
+    throw InputError(SourceLocation{first},
+                     fmt::format("{} places the camera as gmsh shows it: turn and zoom the view in gmsh, or "
+                                 "leave {} out",
+                                 overrides.gmshView ? "--gmsh-view" : "the scene's camera.gmsh_view", first));
+  OrbitAngles angles;
+  if (overrides.azimuth) angles.azimuthDegrees = checkAzimuth(*overrides.azimuth, optionName("--azimuth"));
+  if (overrides.elevation)
+    angles.elevationDegrees = checkElevation(*overrides.elevation, optionName("--elevation"));
+  const double zoom = overrides.zoom ? checkZoom(*overrides.zoom, optionName("--zoom")) : 1.0;
+  Vec3d axis = camera.up;  // the model's up, which --azimuth turns about
+  if (!overrides.view.empty()) {
+    const std::optional<ViewPreset> preset = parseViewPreset(overrides.view);
+    if (camera.position)
+      throw InputError(
+          SourceLocation{"--view"},
+          fmt::format("{} places its camera (camera.position): --view chooses the side of the "
+                      "automatic camera; turn this one with --azimuth and --elevation, or remove "
+                      "camera.position",
+                      description.path));
+    const std::optional<UpAxis> up = upAxisOf(camera.up);
+    if (!preset || !up)
+      throw InputError(
+          SourceLocation{"--view"},
+          fmt::format("the camera's up [{}, {}, {}] is along no axis: --view names its sides from "
+                      "an up axis (set camera.up_axis, or --up x|y|z|-x|-y|-z)",
+                      camera.up.x, camera.up.y, camera.up.z));
+    const ViewFrame frame = presetFrame(*preset, *up);
+    camera.up = frame.up;
+    camera.viewFrom = frame.toViewer;
+    camera.viewChosen = true;
+    axis = upVector(*up);
+  }
+  if (turns) {
+    if (camera.position) {
+      if (!camera.lookAt)
+        throw InputError(SourceLocation{first},
+                         fmt::format("{} places its camera without camera.look_at: --azimuth and --elevation "
+                                     "turn it about its look_at; add look_at to [camera]",
+                                     description.path));
+      Vec3d toViewer = *camera.position - *camera.lookAt;
+      turnView(toViewer, camera.up, axis, angles);
+      camera.position = *camera.lookAt + toViewer;
+    } else {
+      turnView(camera.viewFrom, camera.up, axis, angles);
+      camera.viewChosen = true;
+    }
+  }
+  if (!overrides.view.empty() || turns) {
+    // `animate` turns the camera about the model's up, not about the turned camera's own up.
+    if (!description.animation) description.animation.emplace();
+    if (!description.animation->axis) description.animation->axis = axis;
+  }
+  camera.zoom = zoom;
+  return true;
+}
+
 }  // namespace
 
 void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides) {
@@ -218,6 +319,31 @@ void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides) {
           "The view set up in gmsh, framed for the image as gmsh's own export at that size: its options "
           "file (File > Save Model Options; default: the mesh's MESH.msh.opt); before or after the input")
       ->expected(0, 1)
+      ->group(kCameraGroup);
+  command
+      .add_option("--view", overrides.view,
+                  "The automatic camera's side, named from the up axis (--up, or guessed): iso (the 3/4 "
+                  "view, default), front, back, left, right, top or bottom; y up: front is +z (gmsh's "
+                  "default view), z up: front is -y; see docs/rendering.md")
+      ->check(CLI::IsMember(choices(kViewPresetNames)))
+      ->group(kCameraGroup);
+  command
+      .add_option("--azimuth", overrides.azimuth,
+                  "Turn the camera DEG degrees round the model's up axis, about its target (positive: the "
+                  "camera moves to its right)")
+      ->type_name("DEG")
+      ->group(kCameraGroup);
+  command
+      .add_option("--elevation", overrides.elevation,
+                  "Raise the camera DEG degrees over its target (-90 to 90; negative: from below)")
+      ->type_name("DEG")
+      ->group(kCameraGroup);
+  command
+      .add_option("--zoom", overrides.zoom,
+                  fmt::format("Bring the camera F times closer to its target (F > 1 closer, < 1 farther; "
+                              "{} to {})",
+                              kMinZoom, kMaxZoom))
+      ->type_name("F")
       ->group(kCameraGroup);
 
   // Look: how surfaces are lit and drawn.
@@ -238,6 +364,18 @@ void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides) {
           "--shading", overrides.shading,
           "Shading for every mesh: flat, gouraud, phong or unlit (the colours as they are, no lights)")
       ->check(CLI::IsMember(choices(kShadingNames)))
+      ->group(kLookGroup);
+  CLI::Option* background =
+      command
+          .add_option("--background", overrides.background,
+                      "The background's colour as the picture shows it: a CSS name (white, navy), #rrggbb, "
+                      "#rgb or r,g,b in 0..1")
+          ->type_name("COLOR")
+          ->group(kLookGroup);
+  command
+      .add_flag("--transparent", overrides.transparent,
+                "A transparent background: alpha 0 where nothing is hit (.png, .exr, .gif)")
+      ->excludes(background)
       ->group(kLookGroup);
   command
       .add_flag("--edges", overrides.edges,
@@ -303,11 +441,12 @@ void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides) {
 
 void addSceneOutputOptions(CLI::App& command, SceneOverrides& overrides) {
   // Output: the picture's size and how it is written.
-  command.add_option("--width", overrides.width, "Image width in pixels")
-      ->check(CLI::Range(1, kMaxRenderSide))
+  command
+      .add_option("--width", overrides.width, fmt::format("Image width in pixels (1 to {})", kMaxRenderSide))
       ->group(kOutputGroup);
-  command.add_option("--height", overrides.height, "Image height in pixels")
-      ->check(CLI::Range(1, kMaxRenderSide))
+  command
+      .add_option("--height", overrides.height,
+                  fmt::format("Image height in pixels (1 to {})", kMaxRenderSide))
       ->group(kOutputGroup);
   CLI::Option* srgb =
       command
@@ -341,14 +480,16 @@ void addSceneOutputOptions(CLI::App& command, SceneOverrides& overrides) {
 
   // Quality: how many rays, and how they are found.
   command
-      .add_option("--samples", overrides.samples, "Samples per pixel (a perfect square for the regular grid)")
-      ->check(CLI::Range(1, kMaxSamples))
+      .add_option(
+          "--samples", overrides.samples,
+          fmt::format("Samples per pixel, 1 to {} (a perfect square for the regular grid)", kMaxSamples))
       ->group(kQualityGroup);
   command.add_option("--sampler", overrides.sampler, "Anti-aliasing: regular, stratified or adaptive")
       ->check(CLI::IsMember(choices(kSamplerNames)))
       ->group(kQualityGroup);
-  command.add_option("--max-depth", overrides.maxDepth, "Reflection/refraction depth")
-      ->check(CLI::Range(0, kMaxDepth))
+  command
+      .add_option("--max-depth", overrides.maxDepth,
+                  fmt::format("Reflection/refraction depth (0 to {})", kMaxDepth))
       ->group(kQualityGroup);
   command
       .add_option("--noise", overrides.noise,
@@ -361,8 +502,9 @@ void addSceneOutputOptions(CLI::App& command, SceneOverrides& overrides) {
           "build, the quality reference), kdtree-median or naive (brute force)")
       ->check(CLI::IsMember(choices(kAccelNames)))
       ->group(kQualityGroup);
-  command.add_option("--threads", overrides.threads, "Worker threads (default 0: one per usable CPU)")
-      ->check(CLI::Range(0, kMaxThreads))
+  command
+      .add_option("--threads", overrides.threads,
+                  fmt::format("Worker threads, 0 to {} (default 0: one per usable CPU)", kMaxThreads))
       ->group(kQualityGroup);
 }
 
@@ -417,6 +559,9 @@ std::string takeMeshInput(const std::vector<std::string>& inputs, std::vector<st
 
 PreparedRender prepareScene(const std::string& input, const SceneOverrides& overrides,
                             const ImageBufferChoice& imageBuffer, bool keepMeshes) {
+  checkOptionValues(overrides);
+  std::optional<Vec3> background;
+  if (!overrides.background.empty()) background = backgroundFromText(overrides.background);
   std::optional<UpAxis> up;
   if (!overrides.up.empty()) {
     up = parseUpAxis(overrides.up);
@@ -433,6 +578,8 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     addViewFiles(*request.quickLookMesh, overrides.views);
     request.stages.add("read", read.seconds());
     description = quickLookScene(input, *request.quickLookMesh, up);
+    if (applyCameraOptions(description, overrides))
+      placeQuickLookLights(description, *request.quickLookMesh);  // the lights follow the camera
   } else if (isMeshFile(input)) {
     const Stopwatch read;
     if (!overrides.slices.empty() || !overrides.isosurfaces.empty() || !overrides.streamlines.empty() ||
@@ -448,6 +595,8 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     if (const std::string reason = nothingToDrawReason(*request.quickLookMesh); !reason.empty())
       throw InputError(SourceLocation{input}, "nothing to draw: " + reason);
     description = quickLookScene(input, *request.quickLookMesh, up);
+    if (applyCameraOptions(description, overrides))
+      placeQuickLookLights(description, *request.quickLookMesh);  // the lights follow the camera
   } else {
     if (!overrides.views.empty())
       throw InputError(SourceLocation{overrides.views.front()},
@@ -457,6 +606,7 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
                                    overrides.views.front(), input, overrides.views.front()));
     description = loadScene(input);
     if (up) applyUpAxis(description.camera, *up);
+    applyCameraOptions(description, overrides);
   }
   if (overrides.gmshView) {
     // gmsh reads part.msh.opt beside part.msh whenever it opens it: the same file by default.
@@ -479,6 +629,8 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
   if (overrides.srgb) applied.srgb = true;
   if (overrides.linear) applied.srgb = false;
   applyOutputOverrides(overrides, applied);
+  applied.backgroundDisplay = background;
+  if (overrides.transparent) applied.transparentBackground = true;
   if (!overrides.sampler.empty())
     applied.sampler = enumFromName<SamplerKind>(kSamplerNames, overrides.sampler);
   if (!overrides.shading.empty())
@@ -486,14 +638,7 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
   applied.edges = overrides.edges;
   if (!overrides.integrator.empty())
     applied.integrator = enumFromName<IntegratorKind>(kIntegratorNames, overrides.integrator);
-  if (overrides.noise) {
-    if (!(*overrides.noise > 0 && *overrides.noise < 1))
-      throw InputError(SourceLocation{"--noise"},
-                       fmt::format("--noise must be greater than 0 and less than 1 (a relative error, e.g. "
-                                   "0.01), found {}",
-                                   *overrides.noise));
-    applied.noise = static_cast<float>(*overrides.noise);
-  }
+  if (overrides.noise) applied.noise = checkNoise(*overrides.noise, optionName("--noise"));
   if (!overrides.look.empty()) applied.look = enumFromName<Look>(kLookNames, overrides.look);
   applyAnnotationOptions(overrides, applied);
   request.accel = parseAccelKind(overrides.accel);
@@ -505,6 +650,17 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
   if (!overrides.quiet)
     for (const std::string& warning : prepared.scene.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
   return prepared;
+}
+
+void checkTransparentOutput(const SceneOverrides& overrides, const std::string& output) {
+  if (!overrides.transparent) return;
+  const std::string extension = lowerCaseExtension(output);
+  if (extension != ".png" && extension != ".exr" && extension != ".gif")
+    throw InputError(
+        SourceLocation{"--transparent"},
+        fmt::format("{} has no alpha channel for a transparent background: write a .png, .exr or "
+                    ".gif",
+                    output));
 }
 
 bool sceneAnimatesOverSteps(const std::string& input) {

@@ -33,6 +33,12 @@ struct SceneOverrides {
   bool denoise = false;
   bool edges = false;  // draw element edges on every mesh that does not set its own
   std::string up;      // --up: the automatic camera's up axis (x, y, z, -x, -y, -z)
+  // --view iso|front|...: the automatic camera's side; --azimuth, --elevation (degrees) turn the camera
+  // about its target from there, --zoom brings it closer (view_presets.hpp).
+  std::string view;
+  std::optional<double> azimuth, elevation, zoom;
+  std::string background;    // --background COLOR: a CSS name, #rrggbb, #rgb or r,g,b in 0..1
+  bool transparent = false;  // --transparent: the background's alpha 0 (PNG, EXR, GIF)
   // --gmsh-view [FILE]: the camera of a gmsh options file; "" for the mesh's own MESH.msh.opt.
   std::optional<std::string> gmshView;
   bool quiet = false;
@@ -114,6 +120,9 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
 // Whether `input` is a scene file whose [animation] says over = "steps" (read once more, before the
 // meshes, so that they are kept for the frames).
 bool sceneAnimatesOverSteps(const std::string& input);
+
+// --transparent asks for alpha: an output without it (.bmp, .ppm) is refused (InputError at the option).
+void checkTransparentOutput(const SceneOverrides& overrides, const std::string& output);
 
 // Ctrl-C and SIGTERM set the flag instead of killing the process, so outputs stay untouched.
 const std::atomic<bool>& installInterruptHandler();

@@ -12,6 +12,7 @@
 #include "lancer/render/step_animation.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/setting_checks.hpp"
 #include "render_session.hpp"
 
 namespace lancer::python {
@@ -24,8 +25,7 @@ void animate(const py::object& target, const std::string& output, const RenderAr
              const std::optional<std::string>& over, const std::optional<std::string>& label) {
   if (over && *over != "orbit" && *over != "steps")
     throw py::value_error(fmt::format("over='{}': use 'orbit' or 'steps'", *over));
-  if (frames && (*frames < 1 || *frames > kMaxFrames))
-    throw py::value_error(fmt::format("frames={} is out of range: use 1 to {}", *frames, kMaxFrames));
+  if (frames) checkFrames(*frames, SettingName{SourceLocation{"frames"}, "frames"});
   if (fps && !(*fps >= 0.01 && *fps <= 100))
     throw py::value_error(fmt::format("fps={} is out of range: use 0.01 to 100", *fps));
   if (loop && (*loop < -1 || *loop > 65535))

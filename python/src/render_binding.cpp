@@ -15,15 +15,14 @@
 #include "lancer/image/pixel_encoding.hpp"
 #include "lancer/render/progress_line.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/setting_checks.hpp"
 #include "render_session.hpp"
 
 namespace lancer::python {
 namespace {
 
-void requireRange(const std::optional<int>& value, const char* name, int low, int high) {
-  if (value && (*value < low || *value > high))
-    throw py::value_error(fmt::format("{}={} is out of range: use {} to {}", name, *value, low, high));
-}
+// The keyword argument as the library's checks name it (setting_checks.hpp): "width".
+SettingName argumentName(const char* name) { return {SourceLocation{name}, name}; }
 
 template <typename Enum, std::size_t N>
 std::optional<Enum> choiceArgument(const std::optional<std::string>& value, const char* name,
@@ -58,17 +57,13 @@ py::array toArray(const Image& image, const RenderSettings& settings, bool linea
 
 }  // namespace
 
-void requireThreads(int threads) {
-  if (threads < 0 || threads > kMaxThreads)
-    throw py::value_error(
-        fmt::format("threads={} is out of range: use 0 (one per usable CPU) to {}", threads, kMaxThreads));
-}
+void requireThreads(int threads) { checkThreads(threads, argumentName("threads")); }
 
 RenderOverrides renderOverridesFromArguments(const RenderArguments& arguments) {
-  requireRange(arguments.width, "width", 1, kMaxRenderSide);
-  requireRange(arguments.height, "height", 1, kMaxRenderSide);
-  requireRange(arguments.samples, "samples", 1, kMaxSamples);
-  requireRange(arguments.maxDepth, "max_depth", 0, kMaxDepth);
+  if (arguments.width) checkWidth(*arguments.width, argumentName("width"));
+  if (arguments.height) checkHeight(*arguments.height, argumentName("height"));
+  if (arguments.samples) checkSamples(*arguments.samples, argumentName("samples"));
+  if (arguments.maxDepth) checkMaxDepth(*arguments.maxDepth, argumentName("max_depth"));
   requireThreads(arguments.threads);
   RenderOverrides overrides;
   overrides.width = arguments.width;
@@ -86,24 +81,14 @@ RenderOverrides renderOverridesFromArguments(const RenderArguments& arguments) {
     overrides.srgb = *arguments.encoding == "srgb";
   }
   overrides.toneMap = choiceArgument<ToneMap>(arguments.toneMap, "tonemap", kToneMapNames);
-  if (arguments.exposure) {
-    if (!std::isfinite(*arguments.exposure) || std::abs(*arguments.exposure) > kMaxExposureStops)
-      throw py::value_error(fmt::format("exposure={} is not a number of stops between -{} and {}",
-                                        *arguments.exposure, kMaxExposureStops, kMaxExposureStops));
-    overrides.exposure = static_cast<float>(*arguments.exposure);
-  }
+  if (arguments.exposure) overrides.exposure = checkExposure(*arguments.exposure, argumentName("exposure"));
   overrides.denoise = arguments.denoise;
   overrides.transparentBackground = arguments.transparentBackground;
   overrides.edges = arguments.edges.value_or(false);
   overrides.samplesName = "samples";
   overrides.integrator = choiceArgument<IntegratorKind>(arguments.integrator, "integrator", kIntegratorNames);
   overrides.look = choiceArgument<Look>(arguments.look, "look", kLookNames);
-  if (arguments.noise) {
-    if (!(*arguments.noise > 0 && *arguments.noise < 1))
-      throw py::value_error(fmt::format(
-          "noise={} is out of range: use a relative error greater than 0 and less than 1", *arguments.noise));
-    overrides.noise = static_cast<float>(*arguments.noise);
-  }
+  if (arguments.noise) overrides.noise = checkNoise(*arguments.noise, argumentName("noise"));
   applyResultArguments(arguments, overrides);
   return overrides;
 }

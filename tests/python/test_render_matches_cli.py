@@ -94,7 +94,7 @@ def test_encoding_tonemap_and_denoise_arguments(tmp_path):
         lancer.render(lancer.read_msh(str(BRACKET)), width=8, height=8, tonemap="agx")
     with pytest.raises(ValueError, match="encoding='gamma'"):
         lancer.render(lancer.read_msh(str(BRACKET)), width=8, height=8, encoding="gamma")
-    with pytest.raises(ValueError, match="exposure=nan"):
+    with pytest.raises(lancer.InputError, match="exposure must be a number of stops between -20 and 20, found nan"):
         lancer.render(lancer.read_msh(str(BRACKET)), width=8, height=8, exposure=float("nan"))
 
 
@@ -143,5 +143,5 @@ def test_bad_integrator_and_noise_are_value_errors():
     mesh = lancer.read_msh(str(BRACKET))
     with pytest.raises(ValueError, match="integrator='photon'"):
         lancer.render(mesh, width=8, height=8, integrator="photon")
-    with pytest.raises(ValueError, match="noise=1"):
+    with pytest.raises(lancer.InputError, match="noise must be greater than 0 and less than 1"):
         lancer.render(mesh, width=8, height=8, integrator="path", noise=1.0)

@@ -33,8 +33,9 @@ TEST(AnimateCliBadInput, OptionsAreClearErrors) {
       {"--orbit light:+1 -o " + quoted(out), "'light:+1' is not an orbit"},
       {"--orbit 'light: 1' -o " + quoted(out), "'light: 1' is not an orbit"},
       {"--orbit light:99999999999 -o " + quoted(out), "'light:99999999999' is not an orbit"},
-      {"--frames 0 -o " + quoted(out), "--frames: Value 0 not in range"},
-      {"--frames many -o " + quoted(out), "--frames: Value many not in range 1 to 10000"},
+      {"--frames 0 -o " + quoted(out), "--frames: error: --frames must be between 1 and 10000, found 0"},
+      {"--frames many -o " + quoted(out), "Could not convert: --frames = many"},
+      {"-o -", "-o: error: animate writes a file (.gif, .png or numbered frames), not stdout"},
       {"--fps 0 -o " + quoted(out), "--fps: Value 0 not in range"},
       {"--loop -2 -o " + quoted(out), "--loop: Value -2 not in range"},
       {"--dither blue-noise -o " + quoted(out), "--dither: blue-noise not in {none,ordered,floyd-steinberg}"},
@@ -53,7 +54,6 @@ TEST(AnimateCliBadInput, OptionsAreClearErrors) {
       {"-o " + quoted(folder.file("f_%04d.tiff")), "f_0000.tiff: error:"},
       {"-o " + quoted(folder.file("missing/t.gif")), "the folder"},
       {"-o " + quoted(folder.file("missing/f_%04d.png")), "the folder"},
-      {"", "no output: give -o FILE.gif, -o FILE.png (animated PNG) or -o frame_%04d.png (numbered frames)"},
       {"--frames 10000 --width 8000 --height 8000 -o " + quoted(out),
        "--palette: error: a global GIF palette keeps every frame until the end: 10000 frames of 8000x8000 "
        "need "

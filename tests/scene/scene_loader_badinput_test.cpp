@@ -311,10 +311,10 @@ TEST(SceneLoaderBadInput, SampleCount) {
 }
 
 TEST(SceneLoaderBadInput, SamplesNotASquareForGridSamplers) {
-  EXPECT_EQ(sceneErrorOf("[render]\nsamples = 8\n"),
-            "scene.toml:2:11: error: render.samples must be a perfect square (n x n sub-pixel grid) for the "
-            "regular "
-            "sampler, found 8; use 4 or 9, or sampler = \"adaptive\"");
+  EXPECT_EQ(
+      sceneErrorOf("[render]\nsamples = 8\n"),
+      "scene.toml:2:11: error: render.samples must be a perfect square (an n x n sub-pixel grid) for "
+      "the regular sampler, found 8; use 4 or 9, or the adaptive sampler, or the path or ao integrator");
   // The sampler may come after samples in the file: it is still taken into account.
   EXPECT_TRUE(failsAt("[render]\nsamples = 5\nsampler = \"stratified\"\n", "2:11",
                       "for the stratified sampler, found 5; use 4 or 9"));

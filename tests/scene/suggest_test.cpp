@@ -1,6 +1,9 @@
 // Edit distance and the "did you mean" suggestions of scene-file messages.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include <array>
 #include <string_view>
 
@@ -28,6 +31,18 @@ TEST(Suggest, OffersOnlyCloseNames) {
   EXPECT_EQ(didYouMean("colour", kKeys), "");
   EXPECT_EQ(didYouMean("x", std::array<std::string_view, 1>{"y"}), "");
   EXPECT_FALSE(closestName("transparency", kKeys));
+}
+
+TEST(Suggest, OptionsAreFoundWithTheirDashesAndWithoutTheirValue) {
+  const std::vector<std::string> options = {"--width", "--height", "-o", "--output", "--view", "--samples"};
+  EXPECT_EQ(closestOption("--widht", options), "--width");
+  EXPECT_EQ(closestOption("--widht=80", options), "--width");
+  EXPECT_EQ(closestOption("-width", options), "--width");
+  EXPECT_EQ(closestOption("--sample", options), "--samples");
+  EXPECT_EQ(closestOption("--veiw", options), "--view");
+  EXPECT_FALSE(closestOption("--frobnicate", options));
+  EXPECT_FALSE(closestOption("--", options));
+  EXPECT_FALSE(closestOption("-=3", options));
 }
 
 }  // namespace

@@ -290,6 +290,14 @@ std::vector<Case> catalogue() {
        "$LANCER render -q --max-memory lots scene.toml -o out.png", nullptr},
       {"cli_bad_pixel", "--pixel outside the image", "`--pixel 99,0`", withScene(scene()),
        "$LANCER render -q --pixel 99,0 scene.toml", nullptr},
+      {"cli_elevation_range", "--elevation past the pole", "`--elevation 95`", withScene(scene()),
+       "$LANCER render -q --elevation 95 scene.toml -o out.png", nullptr},
+      {"cli_bad_background", "--background not a colour", "`--background navyy`", withScene(scene()),
+       "$LANCER render -q --background navyy scene.toml -o out.png", nullptr},
+      {"cli_transparent_bmp", "--transparent for a format without alpha", "`--transparent -o out.bmp`",
+       withScene(scene()), "$LANCER render -q --transparent scene.toml -o out.bmp", nullptr},
+      {"cli_animate_stdout", "an animation to stdout", "`animate -o -`", withScene(scene()),
+       "$LANCER animate -q scene.toml -o -", nullptr},
 
       // --- output ---
       {"out_bad_extension", "unknown output extension", "`-o out.tiff`", withScene(scene()),

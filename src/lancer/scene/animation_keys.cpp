@@ -50,7 +50,8 @@ int readOrbit(const TomlTableReader& reader, std::size_t lightCount) {
 AnimationSettings readAnimation(const toml::table& table, const std::string& path, std::size_t lightCount) {
   const TomlTableReader reader(table, "animation", path, SceneTable::Animation);
   AnimationSettings animation;
-  if (auto frames = reader.integer("frames", 1, kMaxFrames)) animation.frames = static_cast<int>(*frames);
+  if (auto frames = reader.integer("frames"))
+    animation.frames = checkFrames(*frames, reader.settingName("frames"));
   if (auto fps = reader.number("fps", NumberRange::above(0))) animation.fps = *fps;
   if (reader.find("orbit")) animation.orbitLight = readOrbit(reader, lightCount);
   if (auto axis = reader.vector("axis", Triple::Xyz)) {

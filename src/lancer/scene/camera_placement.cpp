@@ -20,10 +20,21 @@ double fittingDistance(double radius, double halfVertical, double halfHorizontal
 }  // namespace
 
 CameraSettings placeAutomaticCamera(const CameraSettings& settings, const Aabbd& worldBounds, double aspect) {
-  if (settings.position) return settings;
-  CameraSettings placed = settings;
   const Vec3d centre = worldBounds.empty() ? Vec3d{} : worldBounds.center();
   const double radius = std::max(0.5 * length(worldBounds.extent()), 1e-12);
+  if (settings.position) {
+    if (settings.zoom == 1) return settings;
+    // Placed once: the result has zoom 1, so placing it again changes nothing.
+    CameraSettings zoomed = settings;
+    zoomed.zoom = 1;
+    const Vec3d lookAt = settings.lookAt.value_or(centre);
+    zoomed.position = lookAt + (*settings.position - lookAt) * (1.0 / settings.zoom);
+    if (settings.projection == Projection::Orthographic)
+      zoomed.viewHeight = settings.viewHeight.value_or(2.16 * radius / std::min(1.0, aspect)) / settings.zoom;
+    return zoomed;
+  }
+  CameraSettings placed = settings;
+  placed.zoom = 1;
   // The part of the image the scene is framed in: the legends take a share of the right or bottom.
   const double keepWidth = 1.0 - settings.legendShareRight, keepHeight = 1.0 - settings.legendShareBottom;
   const bool whole = keepWidth == 1.0 && keepHeight == 1.0;
@@ -35,7 +46,7 @@ CameraSettings placeAutomaticCamera(const CameraSettings& settings, const Aabbd&
                                                   std::atan(tanVertical * aspect * keepWidth));
   const Vec3d lookAt = settings.lookAt.value_or(centre);
   placed.lookAt = lookAt;
-  placed.position = centre + toViewer * distance;
+  placed.position = centre + toViewer * (distance / settings.zoom);
   if (settings.projection == Projection::Perspective) {
     // The window's centre off the axis, in tan units: the look-at point lands in the kept part's centre.
     placed.shiftX = settings.shiftX + settings.legendShareRight * tanVertical * aspect;
@@ -63,6 +74,7 @@ CameraSettings placeAutomaticCamera(const CameraSettings& settings, const Aabbd&
                                 : std::max(2.16 * radius / keepHeight, 2.16 * radius / (aspect * keepWidth));
     }
   }
+  if (settings.zoom != 1) placed.viewHeight = *placed.viewHeight / settings.zoom;
   placed.shiftX = settings.shiftX + settings.legendShareRight * 0.5 * *placed.viewHeight * aspect;
   placed.shiftY = settings.shiftY - settings.legendShareBottom * 0.5 * *placed.viewHeight;
   return placed;

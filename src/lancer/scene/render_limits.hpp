@@ -22,6 +22,9 @@ inline constexpr int kMaxFrames = 10000;
 inline constexpr int kMaxThreads = 1024;
 // render.exposure and --exposure, in stops: 2^20 is a million times brighter or darker.
 inline constexpr double kMaxExposureStops = 20;
+// --zoom: the camera up to a thousand times closer or farther.
+inline constexpr double kMinZoom = 0.001;
+inline constexpr double kMaxZoom = 1000;
 // Text drawn into a picture (an animation's label, a legend's title and units), in characters: a
 // line this long already spans a 1920-pixel picture several times.
 inline constexpr std::size_t kMaxDrawnText = 200;

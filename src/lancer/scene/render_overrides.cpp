@@ -4,9 +4,11 @@
 
 #include <cmath>
 
+#include "lancer/image/pixel_encoding.hpp"
 #include "lancer/scene/color_by.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/setting_checks.hpp"
 
 namespace lancer {
 namespace {
@@ -155,6 +157,12 @@ void applyRenderOverrides(SceneDescription& description, const RenderOverrides& 
   if (overrides.bitDepth) settings.bitDepth = *overrides.bitDepth;
   if (overrides.denoise) settings.denoise = *overrides.denoise;
   if (overrides.transparentBackground) settings.transparentBackground = *overrides.transparentBackground;
+  if (overrides.backgroundDisplay) {
+    const Vec3 shown = *overrides.backgroundDisplay;
+    settings.background =
+        settings.srgb ? Vec3{linearFromSrgb(shown.x), linearFromSrgb(shown.y), linearFromSrgb(shown.z)}
+                      : shown;
+  }
   if (overrides.sampler) settings.sampler = *overrides.sampler;
   if (overrides.samples) settings.samples = *overrides.samples;
   // The quick look's fill sits at the automatic camera, whose distance depends on the image's aspect.
@@ -167,13 +175,8 @@ void applyRenderOverrides(SceneDescription& description, const RenderOverrides& 
       if (!mesh.edges) mesh.edges = EdgeSettings{};
   applyLookOverride(description, overrides);
   // The Whitted model's grids need a square count; path and AO take any.
-  const int root = static_cast<int>(std::lround(std::sqrt(settings.samples)));
-  if (settings.integrator == IntegratorKind::Whitted && settings.sampler != SamplerKind::Adaptive &&
-      root * root != settings.samples)
-    throw InputError(
-        SourceLocation{overrides.samplesName},
-        fmt::format("{} samples cannot form an n x n grid: use a perfect square (1, 4, 9, 16, ...)",
-                    settings.samples));
+  checkSampleGrid(settings.samples, settings.sampler, settings.integrator,
+                  SettingName{SourceLocation{overrides.samplesName}, overrides.samplesName});
   applyAnnotationOverrides(description, overrides);
   if (overrides.shading) {
     settings.shading = *overrides.shading;

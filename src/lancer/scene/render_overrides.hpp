@@ -28,6 +28,9 @@ struct RenderOverrides {
   std::optional<float> noise;  // checked by the caller: in (0, 1)
   std::optional<Look> look;    // applied last (applyLook); the overrides above win over its defaults
   std::optional<bool> transparentBackground;
+  // The background as the picture shows it (--background: a display colour in [0, 1]); decoded with the
+  // output's curve, so that an sRGB picture without tone curve or exposure shows exactly this colour.
+  std::optional<Vec3> backgroundDisplay;
   bool edges = false;  // draw element edges on every mesh that does not set its own
   // Annotations (docs/annotations.md) for every mesh, checked here whoever set them: the colour
   // range and legend, isolines and bands of each field-coloured mesh (the lines follow its own

@@ -74,6 +74,10 @@ struct CameraSettings {
   // The automatic camera fits the scene's bounding box as seen along the view (a flat scene
   // straight on) instead of its bounding sphere.
   bool fitBox = false;
+  // `--zoom`: the camera this many times closer to its target (an orthographic window this many times
+  // smaller), applied when the camera is placed (placeAutomaticCamera); a placed camera moves along
+  // its line of sight towards its look_at (default the scene's centre).
+  double zoom = 1;
   // The share of the image's width at the right and of its height at the bottom that the legends
   // take: the automatic camera frames the scene in the rest (a placed camera ignores them).
   double legendShareRight = 0, legendShareBottom = 0;

@@ -45,11 +45,6 @@ struct SceneFile {
   }
 };
 
-bool isPerfectSquare(std::int64_t n) {
-  const auto root = static_cast<std::int64_t>(std::llround(std::sqrt(static_cast<double>(n))));
-  return root * root == n;
-}
-
 std::string formatVector(const Vec3d& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }
 
 // `[render]`, `[camera]`, ... : a table if present, nullptr if absent.
@@ -118,43 +113,29 @@ void readOutputKeys(const TomlTableReader& reader, RenderSettings& render) {
     render.srgb = *encoding == 0;
   }
   if (auto toneMap = reader.choice("tonemap", kToneMapNames)) render.toneMap = static_cast<ToneMap>(*toneMap);
-  if (auto exposure = reader.number("exposure", NumberRange::between(-kMaxExposureStops, kMaxExposureStops)))
-    render.exposure = static_cast<float>(*exposure);
-  if (auto bits = reader.integer("bit_depth", std::numeric_limits<std::int64_t>::min(),
-                                 std::numeric_limits<std::int64_t>::max())) {
-    if (*bits != 8 && *bits != 16)
-      reader.fail(*reader.find("bit_depth"),
-                  fmt::format("render.bit_depth must be 8 or 16, found {}", *bits));
-    render.bitDepth = static_cast<int>(*bits);
-  }
+  if (auto exposure = reader.number("exposure"))
+    render.exposure = checkExposure(*exposure, reader.settingName("exposure"));
+  if (auto bits = reader.integer("bit_depth"))
+    render.bitDepth = checkBitDepth(*bits, reader.settingName("bit_depth"));
   if (auto denoise = reader.boolean("denoise")) render.denoise = *denoise;
 }
 
 RenderSettings readRender(const SceneFile& file, const toml::table& table) {
   const TomlTableReader reader(table, "render", file.path, SceneTable::Render);
   RenderSettings render;
-  if (auto width = reader.integer("width", 1, kMaxRenderSide)) render.width = static_cast<int>(*width);
-  if (auto height = reader.integer("height", 1, kMaxRenderSide)) render.height = static_cast<int>(*height);
+  if (auto width = reader.integer("width")) render.width = checkWidth(*width, reader.settingName("width"));
+  if (auto height = reader.integer("height"))
+    render.height = checkHeight(*height, reader.settingName("height"));
   if (auto sampler = reader.choice("sampler", kSamplerNames))
     render.sampler = static_cast<SamplerKind>(*sampler);
   if (auto integrator = reader.choice("integrator", kIntegratorNames))
     render.integrator = static_cast<IntegratorKind>(*integrator);
-  if (auto samples = reader.integer("samples", 1, kMaxSamples)) {
-    // The regular and the stratified sampler both lay an n x n grid over the pixel (the path and AO
-    // integrators take any count: their samples are a low-discrepancy sequence).
-    if (render.integrator == IntegratorKind::Whitted && render.sampler != SamplerKind::Adaptive &&
-        !isPerfectSquare(*samples)) {
-      const auto below = static_cast<std::int64_t>(std::floor(std::sqrt(static_cast<double>(*samples))));
-      reader.fail(
-          *reader.find("samples"),
-          fmt::format("render.samples must be a perfect square (n x n sub-pixel grid) for the {} sampler, "
-                      "found {}; use {} or {}, or sampler = \"adaptive\"",
-                      kSamplerNames[static_cast<std::size_t>(render.sampler)], *samples, below * below,
-                      (below + 1) * (below + 1)));
-    }
-    render.samples = static_cast<int>(*samples);
+  if (auto samples = reader.integer("samples")) {
+    render.samples = checkSamples(*samples, reader.settingName("samples"));
+    checkSampleGrid(render.samples, render.sampler, render.integrator, reader.settingName("samples"));
   }
-  if (auto depth = reader.integer("max_depth", 0, kMaxDepth)) render.maxDepth = static_cast<int>(*depth);
+  if (auto depth = reader.integer("max_depth"))
+    render.maxDepth = checkMaxDepth(*depth, reader.settingName("max_depth"));
   if (auto threshold = reader.number("adaptive_threshold", NumberRange::above(0)))
     render.adaptiveThreshold = static_cast<float>(*threshold);
   if (auto shading = reader.choice("shading", kShadingNames))
@@ -164,8 +145,7 @@ RenderSettings readRender(const SceneFile& file, const toml::table& table) {
   readOutputKeys(reader, render);
   if (auto bounces = reader.integer("max_bounces", 0, kMaxDepth))
     render.maxBounces = static_cast<int>(*bounces);
-  if (auto noise = reader.number("noise", NumberRange::strictlyBetween(0, 1)))
-    render.noise = static_cast<float>(*noise);
+  if (auto noise = reader.number("noise")) render.noise = checkNoise(*noise, reader.settingName("noise"));
   if (auto distance = reader.number("ao_distance", NumberRange::above(0)))
     render.aoDistance = static_cast<float>(*distance);
   return render;

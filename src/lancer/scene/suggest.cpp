@@ -67,6 +67,13 @@ std::optional<std::string> closestName(std::string_view word, std::span<const st
 std::optional<std::string> closestName(std::string_view word, std::span<const std::string> candidates) {
   return closestNameIn(word, candidates);
 }
+std::optional<std::string> closestOption(std::string_view given, std::span<const std::string> options) {
+  const std::string_view name = given.substr(0, given.find('='));
+  // "--" and "-" alone say nothing; the dashes count as letters, so "-width" finds "--width".
+  if (name.find_first_not_of('-') == std::string_view::npos) return std::nullopt;
+  return closestNameIn(name, options);
+}
+
 std::string didYouMean(std::string_view word, std::span<const std::string_view> candidates) {
   return didYouMeanIn(word, candidates);
 }

@@ -18,6 +18,10 @@ std::size_t editDistance(std::string_view a, std::string_view b);
 std::optional<std::string> closestName(std::string_view word, std::span<const std::string_view> candidates);
 std::optional<std::string> closestName(std::string_view word, std::span<const std::string> candidates);
 
+// The command-line option `given` most likely stands for: the closest of `options` (spelt with their
+// dashes, "--width", "-o") to its name, the part before any '=' ("--widht=80" -> "--width"), or nothing.
+std::optional<std::string> closestOption(std::string_view given, std::span<const std::string> options);
+
 // " (did you mean 'shininess'?)", or "" when nothing is close.
 std::string didYouMean(std::string_view word, std::span<const std::string_view> candidates);
 std::string didYouMean(std::string_view word, std::span<const std::string> candidates);

@@ -170,6 +170,15 @@ std::optional<std::int64_t> TomlTableReader::integer(std::string_view key, std::
   return integer->get();
 }
 
+std::optional<std::int64_t> TomlTableReader::integer(std::string_view key) const {
+  return integer(key, std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max());
+}
+
+SettingName TomlTableReader::settingName(std::string_view key) const {
+  const toml::node* node = find(key);
+  return {node ? location(*node) : location(table_), qualified(key)};
+}
+
 double TomlTableReader::checkedNumber(const toml::node& node, const std::string& name,
                                       const NumberRange& range) const {
   if (!isNumber(node)) fail(node, fmt::format("{} must be a number, found {}", name, describeValue(node)));

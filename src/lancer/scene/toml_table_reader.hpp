@@ -13,6 +13,7 @@
 
 #include "lancer/math/vec3.hpp"
 #include "lancer/scene/scene_keys.hpp"
+#include "lancer/scene/setting_checks.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
@@ -67,6 +68,10 @@ class TomlTableReader {
   [[noreturn]] void failMissing(std::string_view key, std::string_view example) const;
 
   std::optional<std::int64_t> integer(std::string_view key, std::int64_t min, std::int64_t max) const;
+  // Any integer, for a setting a function of setting_checks.hpp checks (with settingName(key)).
+  std::optional<std::int64_t> integer(std::string_view key) const;
+  // The key's value's position and its name ("render.width"), for setting_checks.hpp.
+  SettingName settingName(std::string_view key) const;
   std::optional<double> number(std::string_view key, NumberRange range = {}) const;
   std::optional<bool> boolean(std::string_view key) const;
   std::optional<std::string> string(std::string_view key) const;
