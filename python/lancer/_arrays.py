@@ -355,14 +355,18 @@ def mesh_init(self, points, cells, point_data=None, cell_data=None, *, groups=No
         tags = np.arange(first_tag[b], first_tag[b + 1], dtype=np.int64) + 1
         p = physical[first_tag[b]:first_tag[b + 1]] if physical is not None else np.zeros(len(array), np.int64)
         e = entity[first_tag[b]:first_tag[b + 1]] if entity is not None else p
-        pairs, inverse = np.unique(np.column_stack([p, e]), axis=0, return_inverse=True)
-        inverse = inverse.reshape(-1)
-        for k, (group, ent) in enumerate(pairs):
-            rows = inverse == k
-            element_blocks.append((gmsh_type, dimension, int(group), int(ent),
+        key = (p << 32) | e  # (group, entity) as one number: tags are below 2^31
+        if len(key) and (key == key[0]).all():
+            runs = [(key[0], slice(None))]  # one group and entity: the block as it is
+        else:
+            keys, inverse = np.unique(key, return_inverse=True)
+            runs = [(k, inverse == i) for i, k in enumerate(keys)]
+        for k, rows in runs:
+            group, ent = int(k) >> 32, int(k) & 0xFFFFFFFF
+            element_blocks.append((gmsh_type, dimension, group, ent,
                                    np.ascontiguousarray(array[rows]).reshape(-1), tags[rows]))
             if group:
-                dimension_of_tag.setdefault(int(group), set()).add(dimension)
+                dimension_of_tag.setdefault(group, set()).add(dimension)
     names = {}
     for tag, dimension, group_name in named:
         for d in ([dimension] if dimension is not None else sorted(dimension_of_tag.get(tag, {2}))):
