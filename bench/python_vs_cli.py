@@ -34,7 +34,7 @@ points, faces, groups, names = mesh.points, mesh.faces, mesh.groups, mesh.group_
 print(f"mesh: {len(faces)} faces, {len(points)} points")
 for threads in (1, 0):  # one thread, then every core (the assembly after the parse is parallel)
     label = "1 thread" if threads == 1 else "all cores"
-    convert = best(lambda: lancer.Mesh(points, faces, groups, names, threads=threads))
+    convert = best(lambda: lancer.Mesh(points, faces, groups=groups, group_names=names, threads=threads))
     read_binary = best(lambda: lancer.read_msh(binary, threads=threads))
     print(f"[{label}] Mesh(points, faces, groups) {convert:7.3f} s")
     print(f"[{label}] read_msh, MSH 4.1 binary    {read_binary:7.3f} s   arrays / reader: {convert / read_binary:.2f}")

@@ -29,7 +29,7 @@ else()
 endif()
 
 foreach(file IN LISTS lancer_package_files)
-  if(file MATCHES "\\.py$")
+  if(file MATCHES "\\.(py|pyi|typed)$")
     file(INSTALL DESTINATION "${site_dir}/lancer" TYPE FILE FILES "${file}")
   else()
     file(INSTALL DESTINATION "${site_dir}/lancer" TYPE SHARED_LIBRARY FILES "${file}")

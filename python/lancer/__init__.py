@@ -8,16 +8,19 @@
 No display is needed (no X, no GL). The C++ library does the work; this package is a thin layer.
 """
 
-from ._lancer import (Camera, InputError, Mesh, Scene, Volume, __version__, color_map, color_maps, read_msh, read_png,
-                      read_volume)
+from ._lancer import (Camera, InputError, LancerWarning, Mesh, Scene, Volume, __version__, color_map, color_maps,
+                      read_msh, read_png, read_volume)
 from . import _lancer
+from . import _arrays
 from ._image import Image
-from ._gmsh import camera_from_gmsh, from_gmsh
+from ._gmsh import camera_from_gmsh as _camera_from_gmsh, from_gmsh
 
-__all__ = ["Camera", "Image", "InputError", "Mesh", "Scene", "Volume", "animate", "color_map", "color_maps",
-           "from_gmsh", "read_msh", "read_png", "read_volume", "render"]
+__all__ = ["Camera", "Image", "InputError", "LancerWarning", "Mesh", "Scene", "Volume", "__version__", "animate",
+           "color_map", "color_maps", "from_gmsh", "read_msh", "read_png", "read_volume", "render"]
 
-Camera.from_gmsh = staticmethod(camera_from_gmsh)
+Camera.from_gmsh = staticmethod(_camera_from_gmsh)
+# Mesh(points, cells, point_data, cell_data, ...): meshio's arguments, read in Python (_arrays.py).
+Mesh.__init__ = _arrays.mesh_init
 
 
 def _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads, progress,

@@ -5,10 +5,13 @@
 
 #include <pybind11/pybind11.h>
 
+#include <toml++/toml.h>
+
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "lancer/image/color_map.hpp"
 #include "lancer/mesh/mesh.hpp"
@@ -35,6 +38,15 @@ struct PythonScene {
   SceneDescription description;
   std::shared_ptr<const Mesh> quickLookMesh;
   std::shared_ptr<QuickLookVolume> quickLookVolume = std::make_shared<QuickLookVolume>();
+  // A scene file's TOML, or one built in code (Scene(), add_mesh, ...): the scene loader reads it
+  // again after each change (scene_building_binding.cpp). Null for a quick look. Shared by copies of
+  // the Scene until one changes it (each change makes a new table).
+  std::shared_ptr<const toml::table> document;
+  std::string folder;  // relative paths in the document resolve against this
+  // givenMeshes[i]: the lancer.Mesh that [[mesh]] i stands for, in memory, or null (read from its file).
+  std::vector<std::shared_ptr<const Mesh>> givenMeshes;
+  // A Camera set in Python (scene.camera = ...), which the document's [camera] cannot say (a gmsh view).
+  std::optional<CameraSettings> camera;
 };
 
 // The volume a render of `scene` with `overrides` draws from: none when it draws nothing inside
@@ -59,13 +71,24 @@ struct ResultKeywords {
 // value is an InputError with the scene file's message, a bad type a TypeError.
 void applyResultKeywords(MeshInstance& instance, const ResultKeywords& keywords);
 
+// Keyword arguments as the TOML table of a scene file's section with those keys (str, numbers, bools,
+// lists, tuples, dicts, numpy arrays and scalars; None leaves a key out): the scene loader then reads
+// it as it reads a file. `name` ("add_mesh") names the call in a TypeError.
+toml::table keywordTable(const py::dict& keys, const std::string& name);
+
 // color_map=: a map's name, or a list of two or more colours (ValueError, TypeError otherwise).
 ColorMap colorMapArgument(const py::object& map);
 
 // A threads= argument: 0 (every core) to kMaxThreads, else a ValueError saying so.
 void requireThreads(int threads);
 
+// A lancer.LancerWarning through Python's warnings.warn (an error when the filters make it one).
+// stackLevel as warnings.warn's: 1 the caller of the C++ function, 2 its caller (a lancer/*.py wrapper's).
+void warnUser(const std::string& message, int stackLevel = 1);
+void warnUser(const std::vector<std::string>& messages, int stackLevel = 1);
+
 void bindErrors(py::module_& module);
+void bindSceneBuilding(py::class_<PythonScene>& scene);
 void bindMesh(py::module_& module);
 void bindScene(py::module_& module);
 void bindRender(py::module_& module);

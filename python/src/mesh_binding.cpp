@@ -14,6 +14,7 @@
 #include "lancer/mesh/mesh_file.hpp"
 #include "lancer/mesh/mesh_from_elements.hpp"
 #include "lancer/util/huge_pages.hpp"
+#include "lancer/util/input_error.hpp"
 #include "lancer/util/parallel_for.hpp"
 
 namespace lancer::python {
@@ -22,7 +23,14 @@ namespace {
 using IndexArray = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
 using PointArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-[[noreturn]] void valueError(const std::string& message) { throw py::value_error(message); }
+// Bad arrays are an InputError (a ValueError) at "lancer.Mesh", as the checks of lancer/_arrays.py.
+[[noreturn]] void valueError(const std::string& message) {
+  throw InputError(SourceLocation{"lancer.Mesh"}, message);
+}
+
+// lancer.Mesh's second constructor: from element blocks and fields, the form lancer/_arrays.py puts
+// meshio-style cells, point_data and cell_data in (a marker first, so that no array call matches it).
+struct ElementBlocksMarker {};
 
 // The first i in [0, count) for which bad(i) holds, or count: checked in parallel chunks (a 1M-face
 // array is a few milliseconds a pass), the lowest failing index reported whatever the threads.
@@ -51,7 +59,10 @@ std::string shapeOf(const py::array& array) {
 // (N, 3) real numbers, every coordinate finite, as one contiguous float64 array (a view when it is one).
 PointArray checkedPoints(const py::array& points, int threads) {
   if (points.ndim() != 2 || points.shape(1) != 3)
-    valueError(fmt::format("points must be an (N, 3) array of coordinates; got shape {}", shapeOf(points)));
+    valueError(fmt::format("points must be an (N, 3) array of coordinates; got shape {}{}", shapeOf(points),
+                           points.ndim() == 2 && points.shape(1) == 2
+                               ? "; add a zero z column to 2-D points: np.c_[points, np.zeros(len(points))]"
+                               : ""));
   const char kind = dtypeKind(points);
   if (kind != 'f' && kind != 'i' && kind != 'u')
     valueError(fmt::format("points must hold real numbers (float64); got dtype {}",
@@ -86,7 +97,7 @@ std::vector<std::int32_t> checkedTags(const py::object& tags, py::ssize_t faceCo
   const py::array array = py::array::ensure(tags);
   if (!array) valueError(fmt::format("{} must be an array of one integer per face", name));
   if (array.ndim() != 1 || array.shape(0) != faceCount)
-    valueError(fmt::format("{} must be an ({},) array, one tag per face; got shape {}", name, faceCount,
+    valueError(fmt::format("{} must be an ({},) array, one tag per cell; got shape {}", name, faceCount,
                            shapeOf(array)));
   const IndexArray values = checkedIntegers(array, name);
   for (py::ssize_t f = 0; f < faceCount; ++f) {
@@ -121,9 +132,9 @@ std::shared_ptr<Mesh> meshFromArrays(const py::array& pointsIn, const py::array&
   requireThreads(threads);
   const PointArray points = checkedPoints(pointsIn, threads);
   if (facesIn.ndim() != 2 || (facesIn.shape(1) != 3 && facesIn.shape(1) != 4))
-    valueError(fmt::format("faces must be an (M, 3) or (M, 4) array of 0-based point indices; got shape {}",
+    valueError(fmt::format("cells must be an (M, 3) or (M, 4) array of 0-based point indices; got shape {}",
                            shapeOf(facesIn)));
-  const IndexArray faces = checkedIntegers(facesIn, "faces");
+  const IndexArray faces = checkedIntegers(facesIn, "cells");
   const py::ssize_t faceCount = faces.shape(0);
   const auto corners = static_cast<int>(faces.shape(1));
   std::vector<std::int32_t> groups = checkedTags(groupsIn, faceCount, "groups");
@@ -152,7 +163,7 @@ std::shared_ptr<Mesh> meshFromArrays(const py::array& pointsIn, const py::array&
     const int c = static_cast<int>(
         std::find_if(corner, corner + corners, [&](std::int64_t v) { return v < 0 || v >= pointCount; }) -
         corner);
-    valueError(fmt::format("faces[{}] uses point {}, but points has {} rows (indices are 0-based{})", f,
+    valueError(fmt::format("cells[{}] uses point {}, but points has {} rows (indices are 0-based{})", f,
                            corner[c], pointCount, corners == 4 ? "; -1 last makes a triangle" : ""));
   }
   input.physical = std::move(groups);
@@ -161,8 +172,13 @@ std::shared_ptr<Mesh> meshFromArrays(const py::array& pointsIn, const py::array&
   static_assert(sizeof(Vec3d) == 3 * sizeof(double));
   const std::span<const Vec3d> xyz(reinterpret_cast<const Vec3d*>(points.data()),
                                    static_cast<std::size_t>(pointCount));
-  py::gil_scoped_release release;
-  return std::make_shared<Mesh>(meshFromFaces(xyz, std::move(input), std::move(named), name, threads));
+  std::shared_ptr<Mesh> mesh;
+  {
+    py::gil_scoped_release release;
+    mesh = std::make_shared<Mesh>(meshFromFaces(xyz, std::move(input), std::move(named), name, threads));
+  }
+  warnUser(mesh->source.warnings, 2);
+  return mesh;
 }
 
 // Non-negative element tags (gmsh's size_t tags) as uint64, named for messages.
@@ -316,9 +332,14 @@ std::shared_ptr<Mesh> meshFromElementBlocks(const py::array& pointsIn, const py:
   }
   const std::span<const Vec3d> xyz(reinterpret_cast<const Vec3d*>(points.data()),
                                    static_cast<std::size_t>(pointCount));
-  py::gil_scoped_release release;
-  return std::make_shared<Mesh>(
-      meshFromElements(xyz, blocks, std::move(named), name, fields, elementFields, elementNodeFields));
+  std::shared_ptr<Mesh> mesh;
+  {
+    py::gil_scoped_release release;
+    mesh = std::make_shared<Mesh>(
+        meshFromElements(xyz, blocks, std::move(named), name, fields, elementFields, elementNodeFields));
+  }
+  warnUser(mesh->source.warnings, 2);
+  return mesh;
 }
 
 py::array_t<double> pointsOf(const Mesh& mesh) {
@@ -395,8 +416,17 @@ py::dict groupNamesOf(const Mesh& mesh) {
 }  // namespace
 
 void bindMesh(py::module_& module) {
+  py::class_<ElementBlocksMarker>(module, "_ElementBlocks").def(py::init<>());
   py::class_<Mesh, std::shared_ptr<Mesh>>(module, "Mesh",
                                           "A surface mesh: points, triangle and quad faces, physical groups")
+      .def(py::init([](const ElementBlocksMarker&, const py::array& points, const py::list& blocks,
+                       const py::dict& groupNames, const std::string& name, const py::list& nodeFields,
+                       const py::list& elementFields) {
+             return meshFromElementBlocks(points, blocks, groupNames, name, nodeFields, elementFields,
+                                          py::list());
+           }),
+           py::arg("marker"), py::arg("points"), py::arg("blocks"), py::arg("group_names"), py::arg("name"),
+           py::arg("node_fields"), py::arg("element_fields"))
       .def(py::init(&meshFromArrays), py::arg("points"), py::arg("faces"), py::arg("groups") = py::none(),
            py::arg("group_names") = py::none(), py::arg("entities") = py::none(),
            py::arg("name") = "<arrays>", py::arg("threads") = 0,
@@ -442,9 +472,13 @@ void bindMesh(py::module_& module) {
       "read_msh",
       [](const std::string& path, int threads, const std::vector<std::string>& views) {
         requireThreads(threads);
-        py::gil_scoped_release release;
-        auto mesh = std::make_shared<Mesh>(readMeshFile(path, threads));
-        addViewFiles(*mesh, views);
+        std::shared_ptr<Mesh> mesh;
+        {
+          py::gil_scoped_release release;
+          mesh = std::make_shared<Mesh>(readMeshFile(path, threads));
+          addViewFiles(*mesh, views);
+        }
+        warnUser(mesh->source.warnings);
         return mesh;
       },
       py::arg("path"), py::arg("threads") = 0, py::arg("views") = std::vector<std::string>{},

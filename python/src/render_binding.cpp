@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -127,19 +128,27 @@ void InterruptibleRender::finish() {
 
 PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides, int threads,
                              bool keepMeshes) {
+  std::vector<const Mesh*> given = {scene.quickLookMesh.get()};
+  for (const std::shared_ptr<const Mesh>& mesh : scene.givenMeshes) given.push_back(mesh.get());
   PreparedRender prepared = [&] {
     const py::gil_scoped_release release;
     RenderRequest request;
     request.quickLookVolume = quickLookVolumeFor(scene, overrides, threads);  // before the move below
     request.description = std::move(scene.description);
     if (scene.quickLookMesh) request.quickLookMesh = *scene.quickLookMesh;
+    request.givenMeshes = scene.givenMeshes;
     request.overrides = overrides;
     request.threads = threads;
     request.keepMeshes = keepMeshes;
     return lancer::prepareRender(std::move(request));
   }();
+  // A mesh in memory warned when it was made (read_msh, Mesh): its warnings are not said again.
   for (const std::string& warning : sceneWarnings(prepared.scene))
-    if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
+    if (std::none_of(given.begin(), given.end(), [&](const Mesh* mesh) {
+          return mesh && std::find(mesh->source.warnings.begin(), mesh->source.warnings.end(), warning) !=
+                             mesh->source.warnings.end();
+        }))
+      warnUser(warning, 2);
   return prepared;
 }
 

@@ -5,6 +5,7 @@
 // --log, ..., checked where those are.
 #include <fmt/format.h>
 
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <toml++/toml.h>
@@ -39,6 +40,9 @@ constexpr const char* kWhere = "quick_look";
 using TomlValue = std::variant<bool, std::int64_t, double, std::string, toml::array, toml::table>;
 
 TomlValue tomlValue(const py::handle& value, const std::string& name) {
+  // numpy arrays and scalars (np.float64 is a float, np.int64 is no int): as their Python values.
+  if (py::isinstance<py::array>(value) || py::isinstance(value, py::module_::import("numpy").attr("generic")))
+    return tomlValue(value.attr("tolist")(), name);
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
   if (py::isinstance<py::int_>(value)) return value.cast<std::int64_t>();
   if (py::isinstance<py::float_>(value)) return value.cast<double>();
@@ -138,6 +142,17 @@ VolumeViews volumeKeyArgument(const py::object& value, const char* key, int most
 }
 
 }  // namespace
+
+toml::table keywordTable(const py::dict& keys, const std::string& name) {
+  toml::table table;
+  for (const auto& [key, value] : keys) {
+    if (value.is_none()) continue;  // None: not given, as everywhere in the module
+    const std::string text = key.cast<std::string>();
+    std::visit([&](auto&& v) { table.insert_or_assign(text, std::forward<decltype(v)>(v)); },
+               tomlValue(value, fmt::format("{}({}", name, text)));
+  }
+  return table;
+}
 
 // color_map=: a map's name, or a list of two or more colours, each a str ('#000080', 'white') or an
 // (r, g, b) of numbers 0 to 1, as a scene file's `map` takes them.

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include "bindings.hpp"
 
@@ -120,7 +121,9 @@ WarpSettings warpArgument(const py::object& warp) {
 PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh, std::optional<UpAxis> up) {
   if (const std::string reason = nothingToDrawReason(*mesh); !reason.empty())
     throw InputError(SourceLocation{mesh->source.path}, "nothing to draw: " + reason);
-  PythonScene scene{quickLookScene(mesh->source.path, *mesh, up), std::move(mesh)};
+  PythonScene scene;
+  scene.description = quickLookScene(mesh->source.path, *mesh, up);
+  scene.quickLookMesh = std::move(mesh);
   return scene;
 }
 
@@ -203,12 +206,22 @@ void bindScene(py::module_& module) {
       },
       py::arg("options"));
 
-  py::class_<PythonScene>(module, "Scene", "A scene: a scene file, or the quick look of a mesh")
+  py::class_<PythonScene> sceneClass(
+      module, "Scene",
+      "A scene: a scene file, one built in code (Scene(), add_mesh, ...), or the quick "
+      "look of a mesh");
+  bindSceneBuilding(sceneClass);
+  sceneClass
       .def_static(
           "load",
           [](const std::string& path) {
             py::gil_scoped_release release;
-            return PythonScene{loadScene(path), nullptr};
+            PythonScene scene;
+            scene.description = loadScene(path);
+            // Kept for add_mesh and the like; the loader has read the file, so it parses.
+            scene.document = std::make_shared<const toml::table>(toml::parse_file(path));
+            scene.folder = std::filesystem::path(path).parent_path().string();
+            return scene;
           },
           py::arg("path"), "Reads a scene file (.toml) exactly as `lancer render` does")
       .def_static(
@@ -278,6 +291,7 @@ void bindScene(py::module_& module) {
           "camera", [](const PythonScene& scene) { return scene.description.camera; },
           [](PythonScene& scene, const CameraSettings& camera) {
             scene.description.camera = camera;
+            if (scene.document) scene.camera = camera;  // over the document's [camera], after any change
             // The quick look's key and fill follow its camera, wherever it is put.
             if (scene.quickLookMesh) placeQuickLookLights(scene.description, *scene.quickLookMesh);
           })

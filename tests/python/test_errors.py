@@ -44,10 +44,10 @@ def test_missing_file():
         (SQUARE[:, :2], TRIANGLES, r"points must be an \(N, 3\) array"),
         (SQUARE.astype(complex), TRIANGLES, "points must hold real numbers"),
         (np.where(SQUARE == 1, np.nan, SQUARE), TRIANGLES, r"points\[1\] is .*finite"),
-        (SQUARE, TRIANGLES[:, :2], r"faces must be an \(M, 3\) or \(M, 4\) array"),
-        (SQUARE, TRIANGLES.astype(float), "faces must hold integers"),
-        (SQUARE, np.array([[0, 1, 4]]), r"faces\[0\] uses point 4, but points has 4 rows"),
-        (SQUARE, np.array([[0, 1, 2], [-1, 2, 3]]), r"faces\[1\] uses point -1"),
+        (SQUARE, TRIANGLES[:, :2], r"cells must be an \(M, 3\) or \(M, 4\) array"),
+        (SQUARE, TRIANGLES.astype(float), "cells must hold integers"),
+        (SQUARE, np.array([[0, 1, 4]]), r"cells\[0\] uses point 4, but points has 4 rows"),
+        (SQUARE, np.array([[0, 1, 2], [-1, 2, 3]]), r"cells\[1\] uses point -1"),
     ],
 )
 def test_bad_arrays(points, faces, message):
@@ -119,7 +119,7 @@ def test_threads_change_nothing_and_the_first_bad_row_is_reported():
     broken[250_123, 2] = len(points)
     broken[170_001, 0] = -7  # the lower row is the one named, whatever the threads
     for threads in (1, 2, 0):
-        with pytest.raises(ValueError, match=r"faces\[170001\] uses point -7"):
+        with pytest.raises(ValueError, match=r"cells\[170001\] uses point -7"):
             lancer.Mesh(points, broken, threads=threads)
     bad_points = points.copy()
     bad_points[200_000, 1] = np.inf

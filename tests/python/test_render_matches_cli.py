@@ -105,7 +105,7 @@ def test_repr_png_is_a_png():
 
 def test_arrays_give_the_file_image(tmp_path):
     mesh = lancer.read_msh(str(BRACKET))
-    again = lancer.Mesh(mesh.points, mesh.faces, mesh.groups, mesh.group_names, entities=mesh.entities,
+    again = lancer.Mesh(mesh.points, mesh.faces, groups=mesh.groups, group_names=mesh.group_names, entities=mesh.entities,
                         name=str(BRACKET))
     assert again.faces.shape == mesh.faces.shape
     first = lancer.render(mesh, width=64, height=48)

@@ -11,6 +11,7 @@
 #include "lancer/image/legend.hpp"
 #include "lancer/scene/flat_scene.hpp"
 #include "lancer/scene/results/volume_views.hpp"
+#include "lancer/scene/step_files.hpp"
 #include "lancer/util/memory_budget.hpp"
 #include "lancer/util/stopwatch.hpp"
 
@@ -82,7 +83,7 @@ PreparedRender prepareRender(RenderRequest request) {
     meshes.push_back(std::move(*request.quickLookMesh));
     volumes.push_back(request.quickLookVolume);
   } else {
-    meshes = readSceneMeshes(description, request.threads, &stages, &volumes);
+    meshes = readSceneMeshes(description, request.threads, &stages, &volumes, request.givenMeshes);
   }
   if (request.withMeshes) request.withMeshes(description, meshes);
   addVolumeViews(description, meshes, volumes);

@@ -28,6 +28,9 @@ struct RenderRequest {
   std::optional<Mesh> quickLookMesh;
   // Its volume, read with it when the overrides draw slices, isosurfaces or coloured caps.
   std::shared_ptr<const VolumeMesh> quickLookVolume;
+  // Meshes already in memory (Python's Scene.add_mesh): givenMeshes[i], when set, stands for
+  // description.meshes[i] instead of its file (readSceneMeshes).
+  std::vector<std::shared_ptr<const Mesh>> givenMeshes;
   RenderOverrides overrides;
   AccelKind accel = kDefaultAccel;
   int threads = 0;  // of the scene preparation and the accelerator build; 0: every core

@@ -21,6 +21,7 @@
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/result_keys.hpp"
 #include "lancer/scene/results/volume_views.hpp"
+#include "lancer/scene/scene_from_toml.hpp"
 #include "lancer/scene/suggest.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
 #include "lancer/scene/up_axis.hpp"
@@ -480,8 +481,12 @@ Material defaultMaterial() {
 }
 
 SceneDescription parseScene(std::string_view text, const std::string& path) {
-  const toml::table root = parseToml(text, path);
-  const SceneFile file{path, std::filesystem::path(path).parent_path()};
+  return sceneFromToml(parseToml(text, path), path, std::filesystem::path(path).parent_path());
+}
+
+SceneDescription sceneFromToml(const toml::table& root, const std::string& path,
+                               const std::filesystem::path& folder) {
+  const SceneFile file{path, folder};
   const TomlTableReader document(root, "", path, SceneTable::Document);
 
   SceneDescription scene;

@@ -197,21 +197,47 @@ Mesh readInstanceMesh(const MeshInstance& instance, int threads, std::shared_ptr
   return mesh;
 }
 
+// A mesh the caller holds in memory, in place of a file: its views added, and no volume (its faces
+// are all there is; coloured caps stay flat, volume views cannot be drawn).
+Mesh givenInstanceMesh(const MeshInstance& instance, const Mesh& given) {
+  if (instance.volume.any())
+    throw InputError(instance.where,
+                     fmt::format("'{}' is a mesh in memory, its surface alone: slices, isosurfaces and "
+                                 "field lines are drawn from a mesh file's volume; give the file instead",
+                                 given.source.path));
+  Mesh mesh = given;
+  addViewFiles(mesh, instance.views);
+  if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
+    throw InputError(instance.where,
+                     fmt::format("mesh '{}' has nothing to draw: {}", given.source.path, reason));
+  return mesh;
+}
+
 }  // namespace
 
 std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threads, StageTimes* times,
-                                  std::vector<std::shared_ptr<const VolumeMesh>>* volumes) {
+                                  std::vector<std::shared_ptr<const VolumeMesh>>* volumes,
+                                  std::span<const std::shared_ptr<const Mesh>> given) {
   const Stopwatch read;
   std::vector<Mesh> meshes;
   meshes.reserve(description.meshes.size());
   if (volumes) volumes->assign(description.meshes.size(), nullptr);
   for (std::size_t i = 0; i < description.meshes.size(); ++i) {
     const MeshInstance& instance = description.meshes[i];
+    if (i < given.size() && given[i]) {
+      meshes.push_back(givenInstanceMesh(instance, *given[i]));
+      continue;
+    }
     const bool withVolume = volumes && needsVolume(description, instance);
     meshes.push_back(readInstanceMesh(instance, threads, withVolume ? &(*volumes)[i] : nullptr));
   }
   if (times) times->add("read", read.seconds());
   return meshes;
+}
+
+std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threads, StageTimes* times,
+                                  std::vector<std::shared_ptr<const VolumeMesh>>* volumes) {
+  return readSceneMeshes(description, threads, times, volumes, {});
 }
 
 }  // namespace lancer

@@ -3,11 +3,16 @@
 // before result_10); each file is one step of its views, on one mesh that every file must share.
 #pragma once
 
+#include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "lancer/mesh/mesh.hpp"
+#include "lancer/mesh/volume/volume_mesh.hpp"
+#include "lancer/scene/scene_description.hpp"
 #include "lancer/util/input_error.hpp"
+#include "lancer/util/stage_times.hpp"
 
 namespace lancer {
 
@@ -27,5 +32,12 @@ bool naturalLess(const std::string& a, const std::string& b);
 // mesh's source.path is "PATTERN (N files)" for messages.
 Mesh readStepFiles(const std::string& pattern, const std::vector<std::string>& files, int threads,
                    const SourceLocation& where);
+
+// readSceneMeshes (scene.hpp) with meshes already in memory (Python's Scene.add_mesh): `given[i]`,
+// when set, is mesh i, copied instead of reading description.meshes[i].file, with its `views` added;
+// it has no volume (a [[mesh]] that draws inside one is an InputError).
+std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threads, StageTimes* times,
+                                  std::vector<std::shared_ptr<const VolumeMesh>>* volumes,
+                                  std::span<const std::shared_ptr<const Mesh>> given);
 
 }  // namespace lancer
