@@ -1,5 +1,6 @@
 // `lancer animate SCENE.toml -o turntable.gif`: the camera or a light orbits the scene; one
-// accelerator build serves every frame. Output: an animated GIF, an animated PNG, or numbered frames.
+// accelerator build serves every frame. Output: an animated GIF or PNG, an MP4 or WebM video, or
+// numbered frames.
 // The frames are work items: one process renders them all, the ranks of an MPI job share them, or a
 // job-array task renders its share (--shard) as numbered frames for `lancer assemble`.
 #include <fmt/format.h>
@@ -113,7 +114,8 @@ int runAnimate(const AnimateCommandOptions& options) {
   if (output.empty())
     throw InputError(
         SourceLocation{options.input},
-        "no output: give -o FILE.gif, -o FILE.png (animated PNG) or -o frame_%04d.png (numbered frames)");
+        "no output: give -o FILE.gif, -o FILE.png (animated PNG), -o FILE.mp4, -o FILE.webm or -o "
+        "frame_%04d.png (numbered frames)");
   const bool talks = distribution->delivers();  // rank 0 of an MPI job, or a single process
   AnimationOutputOptions format = options.writer;
   format.frames = animation.frames;
@@ -232,8 +234,8 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
   addSceneViewOptions(*command, options->overrides);
   command
       ->add_option("-o,--output", options->output,
-                   "Output (required): NAME.gif (animated, looping), NAME.png (animated PNG) or "
-                   "NAME_%04d.png/.bmp/.ppm (one file per frame)")
+                   "Output (required): NAME.gif (animated, looping), NAME.png (animated PNG), NAME.mp4 "
+                   "(H.264), NAME.webm (VP9) or NAME_%04d.png/.jpg/.webp/.bmp/.ppm (one file per frame)")
       ->group(kOutputGroup);
   command->add_option("--frames", options->frames, "Number of frames")
       ->check(CLI::Range(1, kMaxFrames))

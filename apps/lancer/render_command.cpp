@@ -315,6 +315,7 @@ int runRender(const RenderCommandOptions& options) {
   ExrLayerChoice aovs;
   if (!output.empty()) {  // refuse a bad extension, bit depth or layer before rendering
     requireBitDepth(output, imageFormatFromPath(output), settings.bitDepth);
+    requireImageSize(output, imageFormatFromPath(output), settings.width, settings.height);
     if (isExr(output) && !exrSupported()) writeExr(output, Image(1, 1));  // says how to get OpenEXR
     aovs = parseAovs(options.aovs, output);
   }

@@ -98,6 +98,9 @@ void applyOutputOverrides(const SceneOverrides& overrides, RenderOverrides& appl
                        fmt::format("bit depth {} is not supported: use 8 or 16", *overrides.bitDepth));
     applied.bitDepth = *overrides.bitDepth;
   }
+  if (overrides.quality) applied.quality = *overrides.quality;  // checked by applyRenderOverrides
+  if (overrides.lossless) applied.lossless = true;
+  if (overrides.dpi) applied.dpi = *overrides.dpi;
   if (overrides.denoise) applied.denoise = true;
 }
 
@@ -345,6 +348,17 @@ void addSceneOutputOptions(CLI::App& command, SceneOverrides& overrides) {
   command.add_option("--bit-depth", overrides.bitDepth, "Bits per sample: 8 (default) or 16 (PNG only)")
       ->group(kOutputGroup);
   command
+      .add_option(
+          "--quality", overrides.quality,
+          fmt::format("JPEG and WebP quality: 1 (smallest) to 100 (best), default {}", kDefaultImageQuality))
+      ->group(kOutputGroup);
+  command.add_flag("--lossless", overrides.lossless, "WebP: lossless instead of --quality")
+      ->group(kOutputGroup);
+  command
+      .add_option("--dpi", overrides.dpi,
+                  "Print resolution recorded in the file (PNG pHYs, JPEG density, WebP and EXR), e.g. 300")
+      ->group(kOutputGroup);
+  command
       .add_flag("--denoise", overrides.denoise,
                 "Filter the noise with the edge-aware denoiser guided by albedo, normal and depth")
       ->group(kOutputGroup);
@@ -547,11 +561,27 @@ const std::atomic<bool>& installInterruptHandler() {
 
 bool showProgress(const SceneOverrides& overrides) { return !overrides.quiet && isatty(STDERR_FILENO); }
 
+namespace {
+std::string gCommandLine;  // set once by main, before any thread starts
+}  // namespace
+
+// The program as "lancer", not the path it was started by (which says where it was built or installed).
+void setCommandLine(int argc, const char* const* argv) {
+  std::vector<const char*> words(argv, argv + argc);
+  if (!words.empty()) words[0] = "lancer";
+  gCommandLine = quoteCommandLine(argc, words.data());
+}
+
 ImageWriteOptions imageWriteOptions(const RenderSettings& settings) {
   ImageWriteOptions options;
   options.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
   options.bitDepth = settings.bitDepth;
   options.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
+  options.quality = settings.quality;
+  options.lossless = settings.lossless;
+  options.metadata.dpi = settings.dpi;
+  options.metadata.software = softwareName();
+  options.metadata.command = gCommandLine;
   return options;
 }
 
