@@ -46,14 +46,18 @@ TEST(AnimateCliBadInput, OptionsAreClearErrors) {
       {"--loop 2 -o " + quoted(folder.file("f_%04d.png")),
        "--loop: error: --loop applies to an animated .gif or .png, not to numbered frames"},
       {"-o " + quoted(folder.file("t.bmp")),
-       "t.bmp: error: an animation is written as .gif, as an animated .png, or as numbered frames with %04d"},
+       "t.bmp: error: an animation is written as .gif, as an animated .png, as an .mp4 (H.264) or .webm "
+       "(VP9) "
+       "video, or as numbered frames with %04d"},
       {"-o " + quoted(folder.file("f_%x.png")),
        "a frame-sequence name needs one %d or %0Nd (e.g. frame_%04d.png)"},
       {"-o " + quoted(folder.file("f_%04d_%d.png")), "a frame-sequence name may hold only one %d"},
       {"-o " + quoted(folder.file("f_%04d.tiff")), "f_0000.tiff: error:"},
       {"-o " + quoted(folder.file("missing/t.gif")), "the folder"},
       {"-o " + quoted(folder.file("missing/f_%04d.png")), "the folder"},
-      {"", "no output: give -o FILE.gif, -o FILE.png (animated PNG) or -o frame_%04d.png (numbered frames)"},
+      {"",
+       "no output: give -o FILE.gif, -o FILE.png (animated PNG), -o FILE.mp4, -o FILE.webm or -o "
+       "frame_%04d.png (numbered frames)"},
       {"--frames 10000 --width 8000 --height 8000 -o " + quoted(out),
        "--palette: error: a global GIF palette keeps every frame until the end: 10000 frames of 8000x8000 "
        "need "

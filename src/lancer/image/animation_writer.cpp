@@ -81,6 +81,7 @@ AnimationWriter::AnimationWriter(const std::string& output, int width, int heigh
   try {
     format = imageFormatFromPath(pattern_ ? pattern_->name(0) : output);
   } catch (const InputError&) {
+    if (pattern_) throw;  // numbered frames: the still formats' message
     throw InputError(SourceLocation{output}, kAnimationOutputs);
   }
   const bool animatedGif = !pattern_ && format == ImageFormat::Gif;

@@ -29,19 +29,38 @@ void writeWebp8(const std::string& path, int width, int height, int channels, co
   requireImageSize(path, ImageFormat::Webp, width, height);
   requireImageQuality(quality, SourceLocation{path});
   AtomicFileWriter file(path);  // a bad folder fails before the encoding
-  const int stride = width * channels;
-  std::uint8_t* raw = nullptr;
-  std::size_t size = 0;
-  if (lossless)
-    size = channels == 4 ? WebPEncodeLosslessRGBA(samples, width, height, stride, &raw)
-                         : WebPEncodeLosslessRGB(samples, width, height, stride, &raw);
-  else
-    size = channels == 4 ? WebPEncodeRGBA(samples, width, height, stride, static_cast<float>(quality), &raw)
-                         : WebPEncodeRGB(samples, width, height, stride, static_cast<float>(quality), &raw);
-  const std::unique_ptr<std::uint8_t, WebpFree> encoded(raw);
-  if (size == 0) {
+  // The advanced API: lossless files keep the colour under fully transparent pixels too (`exact`), so
+  // that they decode to every sample written.
+  WebPConfig config;
+  WebPPicture picture;
+  if (!WebPConfigInit(&config) || !WebPPictureInit(&picture)) {
     file.discard();
-    throw InputError(SourceLocation{path}, "WebP encoding failed (out of memory?)");
+    throw InputError(SourceLocation{path}, "WebP encoding failed: libwebp version mismatch");
+  }
+  config.quality = static_cast<float>(quality);
+  if (lossless) {
+    config.lossless = 1;
+    config.exact = 1;
+    config.quality = 75;  // for lossless: the effort, libwebp's default
+  }
+  picture.use_argb = lossless ? 1 : 0;
+  picture.width = width;
+  picture.height = height;
+  WebPMemoryWriter memory;
+  WebPMemoryWriterInit(&memory);
+  picture.writer = WebPMemoryWrite;
+  picture.custom_ptr = &memory;
+  const int stride = width * channels;
+  const bool imported = channels == 4 ? WebPPictureImportRGBA(&picture, samples, stride)
+                                      : WebPPictureImportRGB(&picture, samples, stride);
+  const bool encodedOk = imported && WebPEncode(&config, &picture);
+  WebPPictureFree(&picture);
+  const std::unique_ptr<std::uint8_t, WebpFree> encoded(memory.mem);
+  const std::size_t size = memory.size;
+  if (!encodedOk || size == 0) {
+    file.discard();
+    throw InputError(SourceLocation{path}, fmt::format("WebP encoding failed (libwebp error {})",
+                                                       static_cast<int>(picture.error_code)));
   }
   const std::vector<std::uint8_t> exif = exifBlock(metadata);
   if (exif.empty()) {
