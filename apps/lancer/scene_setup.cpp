@@ -572,6 +572,13 @@ void setCommandLine(int argc, const char* const* argv) {
   gCommandLine = quoteCommandLine(argc, words.data());
 }
 
+ImageMetadata commandProvenance() {
+  ImageMetadata metadata;
+  metadata.software = softwareName();
+  metadata.command = gCommandLine;
+  return metadata;
+}
+
 ImageWriteOptions imageWriteOptions(const RenderSettings& settings) {
   ImageWriteOptions options;
   options.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
@@ -579,9 +586,8 @@ ImageWriteOptions imageWriteOptions(const RenderSettings& settings) {
   options.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
   options.quality = settings.quality;
   options.lossless = settings.lossless;
+  options.metadata = commandProvenance();
   options.metadata.dpi = settings.dpi;
-  options.metadata.software = softwareName();
-  options.metadata.command = gCommandLine;
   return options;
 }
 

@@ -129,6 +129,8 @@ bool showProgress(const SceneOverrides& overrides);
 ImageWriteOptions imageWriteOptions(const RenderSettings& settings);
 // The command line the pictures record as how they were made (main calls it once).
 void setCommandLine(int argc, const char* const* argv);
+// lancer's version and that command line, for pictures written without render settings (assemble).
+ImageMetadata commandProvenance();
 
 // A command's render options: its --threads, and Ctrl-C (or SIGTERM) stops the render.
 RenderOptions commandRenderOptions(const SceneOverrides& overrides);
