@@ -181,3 +181,4 @@ PY
 echo "fixtures: $(ls "$out"/*.msh | wc -l) files, broken corpus: $(ls "$out"/broken/*.msh | wc -l) files, $(du -sh "$out" | cut -f1)"
 scripts/gmsh_reference.sh  # what gmsh itself reports for each fixture, the oracle of msh_gmsh_reference_test
 scripts/make_reader_fixtures.sh  # tests/data/reader: groups, order 3+, nothing to draw, appended views, non-mesh files
+scripts/make_surface_fixtures.sh  # tests/data/surface: STL by gmsh, OBJ and PLY by meshio

@@ -13,6 +13,8 @@
 #                  f = x + 2 y + 3 z and r = distance to (0.5, 0.5, 0.5), written by gmsh's API.
 #   cube_hex.msh   6 x 6 x 6 hexahedra (cube_hex.geo): f (nodes), g = f at centroids (elements), and the
 #                  vectors u = (1, 2, 3) and dipole (a point dipole below the cube) at nodes.
+#   moving.msh     the same hexahedra with three steps (times 0, 1, 2) of a scalar s = x - t / 4 and a
+#                  vector w turning about z: isosurfaces and field lines over time steps.
 # Deterministic: one thread, fixed sizes and seed. Runs from any folder.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -53,9 +55,11 @@ cp "$work/capacitor.msh" "$out/capacitor.msh"
 
 /usr/bin/python3 "$sources/volume_fields.py" mixed "$sources/mixed.geo" "$out/mixed.msh"
 /usr/bin/python3 "$sources/volume_fields.py" cube_hex "$sources/cube_hex.geo" "$out/cube_hex.msh"
+/usr/bin/python3 "$sources/volume_fields.py" moving "$sources/cube_hex.geo" "$out/moving.msh"
 
 # What gmsh reads back: element counts and fields, each on the file's own elements and nodes.
 /usr/bin/python3 "$sources/volume_fields.py" check "$out/capacitor.msh" v e
 /usr/bin/python3 "$sources/volume_fields.py" check "$out/mixed.msh" f r
 /usr/bin/python3 "$sources/volume_fields.py" check "$out/cube_hex.msh" f g u dipole
+/usr/bin/python3 "$sources/volume_fields.py" check "$out/moving.msh" s w
 echo "volume fixtures: $(ls "$out"/*.msh | wc -l) files, $(du -sh "$out" | cut -f1)"

@@ -8,9 +8,9 @@
 
 #include "commands.hpp"
 #include "info_accel.hpp"
+#include "lancer/mesh/mesh_file.hpp"
 #include "lancer/mesh/mesh_stats.hpp"
 #include "lancer/mesh/msh/element_types.hpp"
-#include "lancer/mesh/msh_reader.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "scene_setup.hpp"
 
@@ -69,6 +69,12 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
   fmt::print("file:            {} ({} bytes)\n", source.path, source.fileBytes);
   if (source.format == "pos")
     fmt::print("format:          list-based views (.pos, gmsh's parsed post-processing format)\n");
+  else if (source.format == "stl")
+    fmt::print("format:          STL {}\n", source.binary ? "binary" : "ASCII");
+  else if (source.format == "obj")
+    fmt::print("format:          Wavefront OBJ\n");
+  else if (source.format == "ply")
+    fmt::print("format:          PLY {}\n", source.formatVersion);
   else
     fmt::print("format:          MSH {} {}{}\n", source.formatVersion, source.binary ? "binary" : "ASCII",
                source.partitionCount ? fmt::format(", {} partitions", source.partitionCount) : "");
@@ -275,7 +281,7 @@ void addInfoCommand(CLI::App& app, CommandRunner& runner) {
     runner = [options] {
       std::vector<std::string> views;
       const std::string file = takeMeshInput(options->files, views);
-      Mesh mesh = readMsh(file);
+      Mesh mesh = readMeshFile(file);
       addViewFiles(mesh, views);
       const MeshStats stats = computeMeshStats(mesh);
       if (options->json) {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "lancer/mesh/msh_reader.hpp"
+#include "lancer/mesh/mesh_file.hpp"
 #include "lancer/mesh/volume/volume_locator.hpp"
 #include "lancer/mesh/volume/volume_probe.hpp"
 #include "lancer/util/input_error.hpp"
@@ -85,7 +85,7 @@ void addProbeCommand(CLI::App& app, CommandRunner& runner) {
     runner = [options] {
       std::vector<Vec3d> points;
       for (const std::string& text : options->points) points.push_back(parsePoint(text));
-      const MeshWithVolume read = readMshWithVolume(options->file);
+      const MeshWithVolume read = readMeshFileWithVolume(options->file);
       const VolumeMesh& volume = *read.volume;
       const VolumeLocator locator(volume);
       std::string json = "[";

@@ -13,6 +13,7 @@
 #include "lancer/cluster/tile_parts.hpp"
 #include "lancer/image/atomic_file.hpp"
 #include "lancer/image/exr_io.hpp"
+#include "lancer/image/frame_sequence.hpp"
 #include "lancer/image/image_io.hpp"
 #include "lancer/image/image_row_writer.hpp"
 #include "lancer/image/legend.hpp"
@@ -166,10 +167,10 @@ bool renderToFile(const PreparedRender& prepared, const Renderer& renderer, cons
 // (atomically) whenever `seconds` have passed since the last write, and at the end, each through
 // the plain render's pipeline: the denoiser with the final render's feature buffers (made once),
 // the legends, the tone curve and encoding, or the EXR with its layers. False when interrupted;
-// the file then holds the last pass written.
+// the file then holds the last pass written, whose samples per pixel go to `writtenSamples` (0: none).
 bool renderProgressive(const PreparedRender& prepared, const Renderer& finalRenderer,
                        const std::string& output, double seconds, const ExrLayerChoice& aovs,
-                       const RenderOptions& renderOptions, RenderStats& stats) {
+                       const RenderOptions& renderOptions, RenderStats& stats, int& writtenSamples) {
   const RenderSettings& settings = prepared.description.render;
   std::optional<FeatureBuffers> features;
   if (settings.denoise || aovs.any()) features = finalRenderer.renderFeatures(renderOptions.threads);
@@ -192,6 +193,7 @@ bool renderProgressive(const PreparedRender& prepared, const Renderer& finalRend
         image = denoise(image, *features, denoiseOptions);
       }
       writeWithLegends(output, std::move(image), prepared, aovs, features ? &*features : nullptr);
+      writtenSamples = samples;
       sinceWrite = Stopwatch();
     }
     if (last) return true;
@@ -337,7 +339,9 @@ int runRender(const RenderCommandOptions& options) {
   // The legends are the same in every task of a job array (the scene's ranges): the first writes them.
   const bool writesLegend = !options.legendFile.empty() && options.pixel.empty() &&
                             (shard ? shard->shard.index == 0 : distribution->delivers());
-  std::optional<Image> legend;
+  // The legend sheet goes with the picture: written beside its target under a hidden name before the
+  // render, renamed into place once the picture is, removed when the render fails or is interrupted.
+  StagedFrames legend;
   if (!options.legendFile.empty()) {
     imageFormatFromPath(options.legendFile);
     if (!prepared.scene.fieldColors)
@@ -353,11 +357,14 @@ int runRender(const RenderCommandOptions& options) {
                                    options.legendFile));
   }
   if (writesLegend) {
-    // Before the render, so that a failed command changes no file: the legend's folder, and its text
-    // (the font). The bar holds the map's display values: written as they are, like the picture's.
-    requireWritable(options.legendFile);
-    legend =
-        legendSheet(prepared.scene.fieldColors->legends, kLegendBarLength, kLegendTextHeight, settings.srgb);
+    // Before the render, so that a failed command changes no file: the legend's folder, its text (the
+    // font) and its bytes. The bar holds the map's display values: written as they are, like the
+    // picture's.
+    requireWritable(options.legendFile);  // the error names the legend, not its hidden name
+    legend.write(
+        options.legendFile,
+        legendSheet(prepared.scene.fieldColors->legends, kLegendBarLength, kLegendTextHeight, settings.srgb),
+        ImageWriteOptions{});
   }
 
   const Renderer renderer = prepared.renderer();
@@ -370,14 +377,15 @@ int runRender(const RenderCommandOptions& options) {
   if (progress) renderOptions.onProgress = printProgressLine;
   RenderStats stats;
   bool written = false;
+  int progressiveSamples = 0;  // of the last pass --progressive wrote
   try {
     if (shard)
       written = renderPart(prepared, renderer, output, *shard, renderOptions, options.overrides.quiet, stats);
     else if (distribution->ranks() > 1)
       written = renderDistributed(prepared, renderer, output, *distribution, renderOptions, stats);
     else if (options.progressive)
-      written =
-          renderProgressive(prepared, renderer, output, *options.progressive, aovs, renderOptions, stats);
+      written = renderProgressive(prepared, renderer, output, *options.progressive, aovs, renderOptions,
+                                  stats, progressiveSamples);
     else
       written = renderToFile(prepared, renderer, output, aovs, renderOptions, stats);
   } catch (const NonFiniteRenderError& e) {
@@ -388,8 +396,13 @@ int runRender(const RenderCommandOptions& options) {
     throw;
   }
   if (progress) std::fputc('\n', stderr);
+  if (!written && progressiveSamples > 0) {
+    std::fprintf(stderr, "lancer: interrupted; %s holds the last pass written, %d samples per pixel of %d\n",
+                 output.c_str(), progressiveSamples, settings.samples);
+    return kExitInterrupted;
+  }
   if (!written) return talks ? interruptedExit(output) : kExitInterrupted;  // rank 0 alone says so
-  if (legend) writeImage(options.legendFile, *legend);
+  legend.publish();
   if (!talks || shard) return kExitOk;
   if (!options.overrides.quiet) {
     const double total = stopwatch.seconds();

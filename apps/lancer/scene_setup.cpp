@@ -21,8 +21,7 @@
 
 #include "lancer/image/atomic_file.hpp"
 #include "lancer/image/image.hpp"
-#include "lancer/mesh/msh/foreign_formats.hpp"
-#include "lancer/mesh/msh_reader.hpp"
+#include "lancer/mesh/mesh_file.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/clip_text.hpp"
@@ -53,21 +52,6 @@ std::string lowerCaseExtension(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return extension;
-}
-
-// A .msh by name, or a file that is no scene: a mesh or a .pos view by content, or a file that is neither (a
-// .geo, STL, STEP, ...), which the mesh reader names with the gmsh command that makes a mesh of it.
-bool isMeshFile(const std::string& path) {
-  const std::string extension = lowerCaseExtension(path);
-  if (extension == ".msh") return true;
-  if (extension == ".toml") return false;
-  std::ifstream in(path, std::ios::binary);
-  std::vector<char> head(4096);
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
-  std::error_code error;
-  const std::uintmax_t size = std::filesystem::file_size(path, error);
-  return looksLikeMsh(head) || isViewFile(path) || !foreignFileMessage(head, error ? 0 : size, path).empty();
 }
 
 // The command line checks its choices against the same tables (CLI11 wants strings).
@@ -467,11 +451,11 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     const Stopwatch read;
     if (!overrides.slices.empty() || !overrides.isosurfaces.empty() || !overrides.streamlines.empty() ||
         (!overrides.clips.empty() && !overrides.colorBy.empty())) {
-      MeshWithVolume read = readMshWithVolume(input, overrides.threads);
+      MeshWithVolume read = readMeshFileWithVolume(input, overrides.threads);
       request.quickLookMesh = std::move(read.mesh);
       request.quickLookVolume = std::move(read.volume);
     } else {
-      request.quickLookMesh = readMsh(input, overrides.threads);
+      request.quickLookMesh = readMeshFile(input, overrides.threads);
     }
     addViewFiles(*request.quickLookMesh, overrides.views);
     request.stages.add("read", read.seconds());

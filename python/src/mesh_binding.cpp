@@ -11,8 +11,8 @@
 
 #include "bindings.hpp"
 #include "lancer/mesh/field_steps.hpp"
+#include "lancer/mesh/mesh_file.hpp"
 #include "lancer/mesh/mesh_from_elements.hpp"
-#include "lancer/mesh/msh_reader.hpp"
 #include "lancer/util/huge_pages.hpp"
 #include "lancer/util/parallel_for.hpp"
 
@@ -443,12 +443,13 @@ void bindMesh(py::module_& module) {
       [](const std::string& path, int threads, const std::vector<std::string>& views) {
         requireThreads(threads);
         py::gil_scoped_release release;
-        auto mesh = std::make_shared<Mesh>(readMsh(path, threads));
+        auto mesh = std::make_shared<Mesh>(readMeshFile(path, threads));
         addViewFiles(*mesh, views);
         return mesh;
       },
       py::arg("path"), py::arg("threads") = 0, py::arg("views") = std::vector<std::string>{},
-      "Reads a gmsh .msh file (MSH 2.2, 4.0, 4.1) or a list-based .pos view as the lancer command does "
+      "Reads a mesh file as the lancer command does: a gmsh .msh (MSH 2.2, 4.0, 4.1), a list-based .pos "
+      "view, or an STL, OBJ or PLY surface (told apart by content) "
       "(threads: for the assembly after the parse, 0: every core; the mesh is the same for any count); "
       "views: list-based .pos files put on the mesh by their elements' coordinates, each step of each "
       "view an element-node field");

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "lancer/mesh/msh_reader.hpp"
+#include "lancer/mesh/mesh_file.hpp"
 #include "lancer/mesh/volume/volume_locator.hpp"
 #include "lancer/mesh/volume/volume_probe.hpp"
 #include "lancer/scene/results/volume_views.hpp"
@@ -34,7 +34,7 @@ std::shared_ptr<PythonVolume> readVolume(const std::string& path, int threads) {
   py::gil_scoped_release release;
   auto result = std::make_shared<PythonVolume>();
   result->path = path;
-  result->volume = readMshWithVolume(path, threads).volume;
+  result->volume = readMeshFileWithVolume(path, threads).volume;
   result->locator = std::make_unique<VolumeLocator>(*result->volume);
   return result;
 }
@@ -96,7 +96,7 @@ std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene,
   }
   const std::lock_guard<std::mutex> lock(scene.quickLookVolume->mutex);
   if (!scene.quickLookVolume->volume) {
-    MeshWithVolume read = readMshWithVolume(mesh.source.path, threads);
+    MeshWithVolume read = readMeshFileWithVolume(mesh.source.path, threads);
     // The volume must be the one under the Mesh's surface.
     if (read.mesh.faces.size() != mesh.faces.size() || read.mesh.positions.size() != mesh.positions.size())
       throw InputError(

@@ -5,6 +5,9 @@ checks a finished fixture; scripts/make_volume_fixtures.sh runs it.
     volume_fields.py cube_hex GEO OUT.msh  f as $NodeData, g = f at each hexahedron's centroid as
                                            $ElementData, the vectors u = (1, 2, 3) and dipole (the
                                            field of a point dipole below the cube) as $NodeData
+    volume_fields.py moving GEO OUT.msh    three steps at times 0, 1, 2 of s = x - t / 4 (its surface
+                                           s = 0.25 moves from x = 0.25 to 0.75) and of w, the unit
+                                           vector along x turned by 30 degrees a step about z
     volume_fields.py check FILE.msh [FIELD ...]  prints the elements and views gmsh reads from FILE;
                                            fails unless it holds the named fields, each on elements
                                            and nodes of FILE's own mesh
@@ -92,6 +95,20 @@ def make_cube_hex(geo, out):
     save_with_views(out, views)
 
 
+def make_moving(geo, out):
+    node_tags, points = mesh_geo(geo)
+    model = gmsh.model.getCurrent()
+    scalar, vector = gmsh.view.add("s"), gmsh.view.add("w")
+    for step in range(3):
+        gmsh.view.addModelData(scalar, step, model, "NodeData", node_tags,
+                               (points[:, 0] - step / 4).reshape(-1, 1), time=float(step), numComponents=1)
+        angle = np.radians(30 * step)
+        turned = np.tile([np.cos(angle), np.sin(angle), 0.0], (len(node_tags), 1))
+        gmsh.view.addModelData(vector, step, model, "NodeData", node_tags, turned, time=float(step),
+                               numComponents=3)
+    save_with_views(out, [scalar, vector])
+
+
 def check(path, fields):
     gmsh.open(path)
     print_element_counts(path)
@@ -117,7 +134,7 @@ def check(path, fields):
 
 
 def main():
-    if len(sys.argv) < 3 or sys.argv[1] not in ("mixed", "cube_hex", "check"):
+    if len(sys.argv) < 3 or sys.argv[1] not in ("mixed", "cube_hex", "moving", "check"):
         sys.exit(__doc__)
     gmsh.initialize()
     gmsh.option.setNumber("General.Terminal", 0)
@@ -125,6 +142,8 @@ def main():
         check(sys.argv[2], sys.argv[3:])
     elif sys.argv[1] == "mixed":
         make_mixed(sys.argv[2], sys.argv[3])
+    elif sys.argv[1] == "moving":
+        make_moving(sys.argv[2], sys.argv[3])
     else:
         make_cube_hex(sys.argv[2], sys.argv[3])
     gmsh.finalize()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `cmake --install` of a finished build into a temporary prefix, then what a user runs from there:
-# P/bin/lancer --version, the manual in P/share/doc/lancer, and (when the build has the Python module)
-# `import lancer` from another folder with PYTHONPATH at the installed package. Installs only: no rebuild.
+# P/bin/lancer --version, the manual in P/share/doc/lancer, the man pages and shell completion, and
+# (when the build has the Python module) `import lancer` from another folder with PYTHONPATH at the
+# installed package. Installs only: no rebuild.
 # Usage: install_test.sh BUILD_DIR VERSION [PYTHON]
 set -euo pipefail
 build=$1 version=$2 python=${3:-}
@@ -37,6 +38,17 @@ printed=$(cd "$elsewhere" && "$prefix/bin/lancer" -V)
 for page in rendering.md scene_file.md python.md LICENSE; do
   [ -f "$prefix/share/doc/lancer/$page" ] || fail "no $prefix/share/doc/lancer/$page"
 done
+# The man pages and the shell completion, where the build made them (packaging/CMakeLists.txt).
+if [ -f "$build/packaging/man/lancer.1" ]; then
+  for page in "$build"/packaging/man/*.1; do
+    [ -f "$prefix/share/man/man1/$(basename "$page")" ] || fail "no $prefix/share/man/man1/$(basename "$page")"
+  done
+fi
+if [ -d "$build/packaging/completion" ]; then
+  for file in bash-completion/completions/lancer zsh/vendor-completions/_lancer fish/vendor_completions.d/lancer.fish; do
+    [ -f "$prefix/share/$file" ] || fail "no $prefix/share/$file"
+  done
+fi
 
 if [ -n "$python" ]; then
   # The folder the package went to, as install_package.cmake chose it for this prefix.

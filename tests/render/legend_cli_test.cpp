@@ -1,12 +1,15 @@
 // `lancer render --legend FILE`: writes the colour bar of the first field-coloured mesh beside the
 // picture (with --shard, the first task writes it), and refuses (exit 2, nothing written) when no mesh is
 // coloured, when the legend cannot be written or drawn (its folder, the font: found before the render,
-// the picture untouched) and when it is the picture's own path.
+// the picture untouched) and when it is the picture's own path. The legend is published with the
+// picture: a render that fails on the way leaves neither, nor a hidden file.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -83,6 +86,46 @@ void expectRefusedBeforeTheRender(const test::ScratchFolder& folder, const std::
                    prefix);
   EXPECT_EQ(result.exitCode, 2) << result.output;
   EXPECT_NE(result.output.find(message), std::string::npos) << result.output;
+  EXPECT_EQ(folder.read("a.png"), "old image") << "the picture was replaced by a command that failed";
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{"a.png"});
+}
+
+// The legend sheet is written before the render under a hidden name and renamed into place with the
+// picture: a render that fails while tracing (its pixels overflow a float) leaves the old files as
+// they were and no hidden file.
+TEST(LegendCli, AFailedRenderPublishesNoLegend) {
+  const test::ScratchFolder folder;
+  std::ifstream in(test::dataFile("render/field_square.toml"));
+  std::string scene((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string white = "background = [1, 1, 1]", mesh = "\"../fields/node_xy_v22_ascii.msh\"";
+  scene.replace(scene.find(white), white.size(), "background = [3e38, 3e38, 3e38]\nsamples = 4");
+  scene.replace(scene.find(mesh), mesh.size(), "\"" + test::dataFile("fields/node_xy_v22_ascii.msh") + "\"");
+  folder.write("scene.toml", scene);
+  folder.write("a.png", "old image");
+  folder.write("leg.png", "old legend");
+  const test::CommandResult result =
+      test::runCli("render " + quoted(folder.file("scene.toml")) + " -q -o " + quoted(folder.file("a.png")) +
+                   " --legend " + quoted(folder.file("leg.png")));
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_NE(result.output.find("non-finite"), std::string::npos) << result.output;
+  EXPECT_EQ(folder.read("a.png"), "old image");
+  EXPECT_EQ(folder.read("leg.png"), "old legend");
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"a.png", "leg.png", "scene.toml"}));
+}
+
+// Both outputs are written before either is published: a legend that cannot be written (here it
+// exceeds the file size limit the picture fits under) fails the command before the picture is
+// replaced, and the message names the legend.
+TEST(LegendCli, ALegendThatCannotBeWrittenLeavesThePicture) {
+  const test::ScratchFolder folder;
+  folder.write("a.png", "old image");
+  const test::CommandResult result =
+      test::runCli("render " + quoted(test::dataFile("render/field_square.toml")) + " -q -o " +
+                       quoted(folder.file("a.png")) + " --legend " + quoted(folder.file("leg.png")),
+                   "trap '' XFSZ; ulimit -f 4;");
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_NE(result.output.find(folder.file("leg.png") + ": error: writing failed"), std::string::npos)
+      << result.output;
   EXPECT_EQ(folder.read("a.png"), "old image") << "the picture was replaced by a command that failed";
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"a.png"});
 }

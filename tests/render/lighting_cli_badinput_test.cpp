@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "lancer/image/image_io.hpp"
 #include "support/cli.hpp"
 
 namespace lancer {
@@ -93,6 +94,26 @@ TEST(LightingCli, ProgressiveWritesThroughThePlainRendersPipeline) {
     EXPECT_FALSE(plain.empty()) << variant;
     EXPECT_EQ(plain, bytesOf(folder / ("progressive" + extension))) << variant;
   }
+  std::filesystem::remove_all(folder);
+}
+
+// Ctrl-C during --progressive: the file holds the last pass written (a whole picture), and the
+// message says so instead of "was not written".
+TEST(LightingCli, AnInterruptedProgressiveRenderSaysWhatTheFileHolds) {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / "lancer_progressive_interrupt";
+  std::filesystem::create_directories(folder);
+  const std::string output = (folder / "out.png").string();
+  const test::CommandResult result = test::runCli(
+      "render " + test::quoted(kMesh) + " --look sky --width 160 --height 120 --samples 1024 -q" +
+          " --progressive 0.000001 -o " + test::quoted(output),
+      "timeout -s INT --preserve-status 1.5");
+  EXPECT_EQ(result.exitCode, 130) << result.output;
+  EXPECT_TRUE(
+      test::contains(result.output, "lancer: interrupted; " + output + " holds the last pass written, "))
+      << result.output;
+  EXPECT_TRUE(test::contains(result.output, "samples per pixel of 1024")) << result.output;
+  EXPECT_EQ(readPng(output).width(), 160);
   std::filesystem::remove_all(folder);
 }
 

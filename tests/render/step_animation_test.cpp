@@ -69,7 +69,7 @@ void expectSilhouette(const Image& image, double t, double factor, const std::st
 
 TEST(StepAnimation, EachStepsSilhouetteIsTheExactDeformedShape) {
   SceneDescription description = sideView(1.0);
-  const std::vector<Mesh> meshes = readSceneMeshes(description);
+  std::vector<Mesh> meshes = readSceneMeshes(description);
   AnimationSettings animation;
   animation.overSteps = true;
   StepScenes steps(description, meshes, animation, AccelKind::KdTreeSah, 0);
@@ -91,7 +91,7 @@ TEST(StepAnimation, FramesUpdatedInPlaceMatchFramesBuiltAfresh) {
   color.field = "temperature";
   description.meshes[0].colorBy = color;
   description.meshes[0].smoothAngleDegrees = 60;
-  const std::vector<Mesh> meshes = readSceneMeshes(description);
+  std::vector<Mesh> meshes = readSceneMeshes(description);
   AnimationSettings animation;
   animation.overSteps = true;
   animation.framesGiven = true;
@@ -119,7 +119,7 @@ TEST(StepAnimation, FramesUpdatedInPlaceMatchFramesBuiltAfresh) {
 
 TEST(StepAnimation, FramesBetweenStepsBlendLinearlyInTime) {
   SceneDescription description = sideView(2.0);
-  const std::vector<Mesh> meshes = readSceneMeshes(description);
+  std::vector<Mesh> meshes = readSceneMeshes(description);
   AnimationSettings animation;
   animation.overSteps = true;
   animation.framesGiven = true;
@@ -137,7 +137,7 @@ TEST(StepAnimation, ColourRangeIsFixedOverTheFramesUnlessPerStep) {
   color.field = "temperature";
   description.meshes[0].colorBy = color;
   description.meshes[0].warp.reset();
-  const std::vector<Mesh> meshes = readSceneMeshes(description);
+  std::vector<Mesh> meshes = readSceneMeshes(description);
   AnimationSettings animation;
   animation.overSteps = true;
   StepScenes fixed(description, meshes, animation, AccelKind::KdTreeSah, 0);
@@ -158,7 +158,7 @@ TEST(StepAnimation, PinnedColoursAndNoViewsAreNotSteps) {
   color.field = "temperature";
   color.step = 2;
   description.meshes[0].colorBy = color;
-  const std::vector<Mesh> meshes = readSceneMeshes(description);
+  std::vector<Mesh> meshes = readSceneMeshes(description);
   AnimationSettings animation;
   animation.overSteps = true;
   EXPECT_THROW(planStepFrames(description, meshes, animation), InputError);
@@ -176,10 +176,10 @@ TEST(StepAnimation, StepsLeftInTheFileMakeTheSameFrames) {
   animation.overSteps = true;
   animation.framesGiven = true;
   animation.frames = 7;  // blends between the steps too
-  const std::vector<Mesh> kept = readSceneMeshes(description);
+  std::vector<Mesh> kept = readSceneMeshes(description);
   StepScenes fromMemory(description, kept, animation, AccelKind::Bvh, 0);
   const test::ScopedEnv storeAll("LANCER_STEP_MEMORY_MB", "0");
-  const std::vector<Mesh> stored = readSceneMeshes(description);
+  std::vector<Mesh> stored = readSceneMeshes(description);
   ASSERT_TRUE(stored[0].fields.front().isStored());
   ASSERT_FALSE(kept[0].fields.front().isStored());
   StepScenes fromFile(description, stored, animation, AccelKind::Bvh, 0);

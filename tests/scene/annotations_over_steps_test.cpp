@@ -103,7 +103,7 @@ TEST(AnnotationsOverSteps, TheScenesArrowsAreThoseOfItsStep) {
   spec.maxCount = 9;
   instance.arrows = spec;
   description.meshes.push_back(instance);
-  const std::vector<Mesh> meshes{turningFlow()};
+  std::vector<Mesh> meshes{turningFlow()};
   description.when = atStep(0);
   const Scene first = buildSceneAt(description, meshes, 1);
   description.when = atStep(1);
@@ -138,7 +138,7 @@ TEST(AnnotationsOverSteps, ArrowsAloneMakeAnAnimationOverSteps) {
   spec.field = "velocity";
   instance.arrows = spec;
   description.meshes.push_back(instance);
-  const std::vector<Mesh> meshes{turningFlow()};
+  std::vector<Mesh> meshes{turningFlow()};
   EXPECT_EQ(planStepFrames(description, meshes, AnimationSettings{}).times, (std::vector<double>{0, 1}));
   description.meshes[0].arrows->step = 0;  // pinned: no steps to run through
   EXPECT_THROW(planStepFrames(description, meshes, AnimationSettings{}), InputError);
@@ -179,7 +179,7 @@ TEST(AnnotationsOverSteps, EachFramesLegendShowsTheRangeOfItsColours) {
   // The turning flow's speed is 1 everywhere at step 0 and 2 at step 1. With range = "step" each
   // frame's colours span its own step (one value: the map's middle colour in both frames), so only
   // the legend's label tells the frames apart; with the default range both frames share [1, 2].
-  const std::vector<Mesh> meshes{turningFlow()};
+  std::vector<Mesh> meshes{turningFlow()};
   const auto frames = [&](bool perStepRange, LegendPlacement legend) {
     SceneDescription description =
         test::flatLitOnBlue(test::orthographicView(96, 64, {0.5, 0.5, 5}, {0.5, 0.5, 0}, 1.5), {0.5, 0.5, 5});

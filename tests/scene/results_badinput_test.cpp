@@ -74,6 +74,27 @@ TEST(ResultsBadInput, WarpFieldWithoutValuesForSomeNodes) {
   EXPECT_NE(message.find("a warp needs one for every node"), std::string::npos);
 }
 
+// A view the reader skipped (here for a NaN) is named with the reader's reason, not as missing.
+TEST(ResultsBadInput, WarpByAViewTheReaderSkipped) {
+  const test::ScratchFolder folder;
+  folder.write("nan.msh",
+               "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n"
+               "$EndNodes\n$Elements\n2\n1 2 2 1 1 1 2 3\n2 2 2 1 1 1 3 4\n$EndElements\n"
+               "$NodeData\n1\n\"u\"\n1\n0\n3\n0\n3\n4\n1 0 0 nan\n2 0 0 0\n3 0 0 0\n4 0 0 0\n"
+               "$EndNodeData\n");
+  Mesh mesh = readMsh(folder.file("nan.msh"));
+  const Mesh fields = mesh;
+  WarpSettings warp;
+  warp.field = "u";
+  warp.where = SourceLocation{"scene.toml", 2, 1};
+  const std::string message = test::messageOf([&] { warpMesh(mesh, fields, warp, {}); });
+  EXPECT_NE(message.find("warp field \"u\": its section in " + folder.file("nan.msh") +
+                         " could not be read and was skipped ("),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("non-finite"), std::string::npos) << message;
+}
+
 TEST(ResultsBadInput, ComponentThatDoesNotExist) {
   ColorBy spec;
   spec.field = "displacement";

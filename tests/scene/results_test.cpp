@@ -125,5 +125,33 @@ TEST(StepFiles, EachFileIsAStepInNaturalOrderOnOneMesh) {
   EXPECT_NE(mesh.source.path.find("step_*.msh (3 files)"), std::string::npos) << mesh.source.path;
 }
 
+// Files that hold several steps each: the steps follow each other over the files (0 to 3 for two
+// files of two), each with the time its file gives it.
+TEST(StepFiles, FilesOfSeveralStepsAreNumberedOneAfterTheOther) {
+  const test::ScratchFolder folder;
+  const auto square = [](double firstTime) {
+    std::string text =
+        "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n"
+        "$EndNodes\n$Elements\n2\n1 2 2 1 1 1 2 3\n2 2 2 1 1 1 3 4\n$EndElements\n";
+    for (int step = 0; step < 2; ++step)
+      text += fmt::format("$NodeData\n1\n\"f\"\n1\n{}\n3\n{}\n1\n4\n1 {}\n2 {}\n3 {}\n4 {}\n$EndNodeData\n",
+                          firstTime + step, 5 + step, firstTime + step, firstTime + step, firstTime + step,
+                          firstTime + step);
+    return text;
+  };
+  folder.write("run_1.msh", square(0));
+  folder.write("run_2.msh", square(2));
+  const std::string pattern = folder.file("run_*.msh");
+  const std::vector<std::string> files = matchStepFiles(pattern, SourceLocation{"scene.toml"});
+  const Mesh mesh = readStepFiles(pattern, files, 0, SourceLocation{"scene.toml"});
+  const auto steps = viewSteps(mesh, "f");
+  ASSERT_EQ(steps.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(steps[k]->step, static_cast<int>(k));
+    EXPECT_DOUBLE_EQ(steps[k]->time, static_cast<double>(k));
+    EXPECT_FLOAT_EQ(steps[k]->values.front(), static_cast<float>(k));
+  }
+}
+
 }  // namespace
 }  // namespace lancer

@@ -133,6 +133,16 @@ Case readerCase(std::string id, std::string what, const std::string& file, const
           nullptr};
 }
 
+// `lancer render` of a file `name` holding `text`.
+Case surfaceCase(std::string id, std::string what, std::string input, const std::string& name,
+                 std::string text) {
+  Case c{
+      std::move(id), std::move(what), std::move(input), nullptr, "$LANCER render -q " + name + " -o out.png",
+      nullptr};
+  c.setUp = [name, text = std::move(text)](const Scratch& s) { s.write(name, text); };
+  return c;
+}
+
 // After a failed write: the old out.png is intact and nothing else is in the folder `folder`.
 std::function<void(const Scratch&)> oldOutputKept(const std::string& file, const std::string& folder = "") {
   return [file, folder](const Scratch& s) {
@@ -343,11 +353,6 @@ std::vector<Case> catalogue() {
        "`tests/data/geo/square.geo` as `t1.geo`",
        [](const Scratch& s) { s.copy(dataFile("geo/square.geo"), "t1.geo"); }, "$LANCER info t1.geo",
        nullptr},
-      readerCase("not_mesh_stl_ascii", "an ASCII STL", "sphere.stl", "part.stl"),
-      readerCase("not_mesh_stl_binary", "a binary STL under another name", "sphere_binary.stl", "part.dat"),
-      {"not_mesh_stl_info", "an STL given to info", "`tests/data/reader/sphere.stl` as `part.stl`",
-       [](const Scratch& s) { s.copy(dataFile("reader/sphere.stl"), "part.stl"); }, "$LANCER info part.stl",
-       nullptr},
       readerCase("not_mesh_step", "a STEP model", "box.step", "part.stp"),
       readerCase("not_mesh_brep", "a BREP model", "box.brep", "part.brep"),
       {"pos_binary", "a view in gmsh's older binary format ($PostFormat)",
@@ -355,14 +360,24 @@ std::vector<Case> catalogue() {
        [](const Scratch& s) { s.copy(dataFile("pos/binary_view.pos"), "view.pos"); },
        "$LANCER render -q view.pos -o out.png", nullptr},
       readerCase("not_mesh_vtk", "a VTK file", "sphere.vtk", "part.vtk"),
-      readerCase("not_mesh_stl_as_msh", "an STL named .msh", "sphere.stl", "part.msh"),
-      {"not_mesh_obj", "a Wavefront OBJ (gmsh writes none: a 4-line one)", "`v`/`f` lines in `part.obj`",
-       [](const Scratch& s) { s.write("part.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"); },
-       "$LANCER render -q part.obj -o out.png", nullptr},
-      {"not_mesh_scene_stl", "a scene's mesh is an STL", "`file = \"part.stl\"`",
+      surfaceCase("surface_stl_truncated", "a binary STL cut short", "gmsh's `box_binary.stl` less 10 bytes",
+                  "part.stl", test::readText(dataFile("surface/box_binary.stl")).substr(0, 7958)),
+      surfaceCase("surface_stl_bad_number", "an ASCII STL with a bad number", "`vertex 1 x 0`", "part.stl",
+                  "solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 x 0\n"),
+      surfaceCase("surface_obj_index_out_of_range", "an OBJ face using a vertex it does not define",
+                  "`f 1 2 9`", "part.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"),
+      surfaceCase("surface_obj_negative_index", "an OBJ negative index past the first vertex", "`f -1 -2 -4`",
+                  "part.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n"),
+      surfaceCase("surface_ply_unknown_type", "a PLY property of an unknown type", "`property half y`",
+                  "part.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty half y\n"),
+      surfaceCase(
+          "surface_ply_huge_count", "a PLY count far beyond the file size", "`element vertex 4000000000`",
+          "part.ply",
+          "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\nend_header\n0 1 2 3\n"),
+      {"not_mesh_scene_unv", "a scene's mesh is an I-deas UNV", "`file = \"part.unv\"`",
        [](const Scratch& s) {
-         s.copy(dataFile("reader/sphere.stl"), "part.stl");
-         s.write("scene.toml", "[[mesh]]\nfile = \"part.stl\"\n");
+         s.write("part.unv", "    -1\n  2411\n         1         1         1        11\n");
+         s.write("scene.toml", "[[mesh]]\nfile = \"part.unv\"\n");
        },
        "$LANCER render -q scene.toml -o out.png", nullptr},
       {"field_section_unreadable", "color_by a field whose section could not be read",

@@ -101,7 +101,13 @@ void StagedFrames::write(const std::string& target, const Image& image, const Im
   // The hidden name keeps the extension, which selects the format.
   const std::string hidden =
       (path.parent_path() / fmt::format(".lancer-{}-{}", ::getpid(), path.filename().string())).string();
-  writeImage(hidden, image, options);
+  try {
+    writeImage(hidden, image, options);
+  } catch (const InputError& e) {
+    // The user named the target: the hidden name would only puzzle them (nothing of it is left).
+    if (e.location().file != hidden) throw;
+    throw InputError(SourceLocation{target}, e.message());
+  }
   staged_.emplace_back(hidden, target);
 }
 
@@ -110,7 +116,7 @@ void StagedFrames::publish() {
     if (std::rename(it->first.c_str(), it->second.c_str()) != 0)
       throw InputError(
           SourceLocation{it->second},
-          fmt::format("cannot rename {} into place: {}; this frame and the later ones were not written",
+          fmt::format("cannot rename {} into place: {}; it and the files staged after it were not written",
                       it->first, std::strerror(errno)));
   }
 }

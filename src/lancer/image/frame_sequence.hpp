@@ -27,9 +27,10 @@ std::optional<FramePattern> parseFramePattern(const std::string& path);
 // cannot exist, but a frame from a render of another size can.
 bool completeFrameExists(const std::string& path, int width, int height);
 
-// Each frame is written (atomically) to a hidden file beside its target, ".lancer-PID-NAME", as
-// soon as it is rendered; publish() renames them all into place at the end. Destroying the object
-// before publish() (Ctrl-C, an error) removes the hidden files, and existing frames stay as they were.
+// Each frame (or a legend sheet) is written (atomically) to a hidden file beside its target,
+// ".lancer-PID-NAME", as soon as it is rendered; publish() renames them all into place at the end. Destroying
+// the object before publish() (Ctrl-C, an error) removes the hidden files, and existing frames stay as they
+// were.
 class StagedFrames {
  public:
   StagedFrames() = default;

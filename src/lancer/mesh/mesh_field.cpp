@@ -27,6 +27,10 @@ const std::vector<float>& fieldValues(const MeshField& field,
   return *keep;
 }
 
+void forgetKeptSteps(const MeshField& field) {
+  if (field.stored) field.stored->file->forgetKept();
+}
+
 MeshField loadedField(const MeshField& field) {
   if (!field.stored) return field;
   MeshField copy = field;  // no values to copy: they are in the file

@@ -75,6 +75,10 @@ struct MeshField {
   std::pair<float, float> range() const;
 };
 
+// Drops the steps a stored field's file keeps read (before a large allocation, such as a tree's
+// build): they are read again when needed. Nothing for a field in memory.
+void forgetKeptSteps(const MeshField& field);
+
 // The field with its values in memory: a copy of it, read back from its file when it is stored.
 // Throws InputError when the file cannot be read again or changed since it was read.
 MeshField loadedField(const MeshField& field);

@@ -1,4 +1,5 @@
-// The one door to mesh and view files: gmsh .msh files (MSH 2.2, 4.0 and 4.1; ASCII and binary) and
+// gmsh's mesh and view files (callers open meshes through mesh_file.hpp, which also reads STL, OBJ
+// and PLY): gmsh .msh files (MSH 2.2, 4.0 and 4.1; ASCII and binary) and
 // list-based .pos views (GetDP's default output) read into a Mesh, surface elements as faces, volume
 // elements as their skin; .pos views put on a mesh read from elsewhere. Bad input throws InputError
 // pointing into the file. The .msh reader's parts are in mesh/msh/, reader.cpp first (the sections

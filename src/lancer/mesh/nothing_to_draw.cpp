@@ -28,6 +28,13 @@ std::string nothingToDrawReason(const Mesh& mesh) {
   if (source.elementsByType.empty() && onlyVolumeGroups)
     return "it holds no elements, and its physical groups are volumes: mesh it with -3 (or save with "
            "-save_all)";
+  // STL, OBJ and PLY (surface_formats/): points with no faces, as a scanner's point cloud is.
+  if (source.elementsByType.empty() &&
+      (source.format == "stl" || source.format == "obj" || source.format == "ply"))
+    return fmt::format("it holds no faces ({} points and no {}): lancer draws surfaces", source.nodeCount,
+                       source.format == "stl"   ? "facet"
+                       : source.format == "obj" ? "f line"
+                                                : "face element entries");
   if (source.elementsByType.empty())
     return "it holds no elements (no $Elements section, or an empty one): mesh the model with gmsh -2 "
            "(surfaces) or -3 (volumes) before saving";

@@ -5,13 +5,15 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 #include "lancer/image/legend.hpp"
 #include "lancer/image/text.hpp"
 #include "lancer/mesh/field_steps.hpp"
-#include "lancer/mesh/msh/stored_steps.hpp"
 #include "lancer/scene/annotation_builder.hpp"
+#include "lancer/scene/instance_transform.hpp"
 #include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/volume_views.hpp"
 #include "lancer/scene/scene_update.hpp"
 #include "lancer/scene/warp.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -38,6 +40,38 @@ bool anyWarp(const SceneDescription& description) {
                      [](const MeshInstance& mesh) { return mesh.warp.has_value(); });
 }
 
+// Whether isosurfaces or field lines are made again per frame: their geometry changes as a warp's.
+bool anyVolumeViewMoves(const SceneDescription& description) {
+  return std::any_of(description.meshes.begin(), description.meshes.end(),
+                     [](const MeshInstance& mesh) { return mesh.volumeSource != nullptr; });
+}
+
+// The least and greatest value a coloured isosurface or field line can take over the animation: the
+// colouring field's over every step in the whole volume (its magnitude for a vector), so that a
+// colour means the same value in every frame as the surfaces move. Empty when the field is not in the
+// volume or a component other than the magnitude is asked for.
+std::optional<std::pair<double, double>> volumeColourRange(const VolumeViewSource& source,
+                                                           const ColorBy& colorBy) {
+  if (colorBy.component != FieldComponent{}) return std::nullopt;
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (const VolumeField* step : source.volume->fieldSteps(colorBy.field)) {
+    const auto components = static_cast<std::size_t>(step->components);
+    for (std::size_t k = 0; k + components <= step->values.size(); k += components) {
+      double value = step->values[k];
+      if (components > 1) {
+        double sum = 0;
+        for (std::size_t c = 0; c < components; ++c) sum += double(step->values[k + c]) * step->values[k + c];
+        value = std::sqrt(sum);
+      }
+      if (!std::isfinite(value)) continue;
+      low = std::min(low, value);
+      high = std::max(high, value);
+    }
+  }
+  if (!(low <= high)) return std::nullopt;
+  return std::pair{low, high};
+}
+
 }  // namespace
 
 StepFrames planStepFrames(const SceneDescription& description, const std::vector<Mesh>& meshes,
@@ -56,6 +90,10 @@ StepFrames planStepFrames(const SceneDescription& description, const std::vector
     if (instance.arrows && !instance.arrows->step) views.push_back(instance.arrows->field);
     const std::vector<double> own = stepTimes(meshes[i], views);
     times.insert(times.end(), own.begin(), own.end());
+    if (instance.volumeSource) {
+      const std::vector<double> inside = volumeViewTimes(*instance.volumeSource);
+      times.insert(times.end(), inside.begin(), inside.end());
+    }
     for (const std::string& view : views) {
       const std::vector<const MeshField*> steps = viewSteps(meshes[i], view);
       if (untimed.empty() && steps.size() > 1 && !timedByTags(steps)) untimed = view;
@@ -104,7 +142,7 @@ StepFrames planStepFrames(const SceneDescription& description, const std::vector
   return frames;
 }
 
-StepScenes::StepScenes(SceneDescription description, const std::vector<Mesh>& meshes,
+StepScenes::StepScenes(SceneDescription description, std::vector<Mesh>& meshes,
                        const AnimationSettings& animation, AccelKind accel, int threads)
     : description_(std::move(description)),
       meshes_(meshes),
@@ -114,13 +152,28 @@ StepScenes::StepScenes(SceneDescription description, const std::vector<Mesh>& me
   frames_ = planStepFrames(description_, meshes_, animation_);
   animation_.frames = frameCount();
   if (!animation_.degreesGiven) animation_.degrees = 0;  // the steps move; the camera stays unless asked
-  for (MeshInstance& mesh : description_.meshes)
+  for (MeshInstance& mesh : description_.meshes) {
     if (mesh.colorBy && animation_.perStepRange) mesh.colorBy->perStepRange = true;
+    if (mesh.volumeSource && mesh.colorBy && !mesh.colorBy->range && !mesh.colorBy->perStepRange)
+      mesh.colorBy->range = volumeColourRange(*mesh.volumeSource, *mesh.colorBy);
+  }
   // The camera frames every frame's shape: the union of the deformed bounds over the frames.
   const bool warped = anyWarp(description_);
   for (std::size_t k = 0; k < (warped ? frames_.times.size() : 1); ++k) {
     description_.when = StepSelection{std::nullopt, frames_.times[k], "the animation over steps"};
     framing_.extend(warpedWorldBounds(description_, meshes_));
+  }
+  // Isosurfaces and field lines move inside their volume: its box frames them in every frame.
+  for (const MeshInstance& mesh : description_.meshes) {
+    if (!mesh.volumeSource) continue;
+    const VolumeMesh& volume = *mesh.volumeSource->volume;
+    const InstanceTransform transform(mesh.volumeSource->parent);
+    Aabbd box;
+    for (const Vec3& node : volume.nodes) box.extend(toDouble(node));
+    for (int corner = 0; corner < 8; ++corner)
+      framing_.extend(transform.apply(volume.origin + Vec3d{corner & 1 ? box.upper.x : box.lower.x,
+                                                            corner & 2 ? box.upper.y : box.lower.y,
+                                                            corner & 4 ? box.upper.z : box.lower.z}));
   }
 }
 
@@ -128,19 +181,28 @@ void StepScenes::buildAt(double time) {
   const Stopwatch stopwatch;
   description_.when = StepSelection{std::nullopt, time, "the animation over steps"};
   const bool first = !scene_.has_value();
-  const bool warped = anyWarp(description_);
+  // Isosurfaces and field lines that follow the steps, made again at this time: new faces, as a warp
+  // that collapsed some (the scene and the accelerator are built again).
+  const bool remade = anyVolumeViewMoves(description_);
+  if (remade) {
+    const Stopwatch remaking;
+    for (std::size_t i = 0; i < description_.meshes.size(); ++i)
+      if (const std::shared_ptr<const VolumeViewSource>& source = description_.meshes[i].volumeSource)
+        meshes_[i] = remakeVolumeView(*source, time);
+    rebuildStages_.add("volume views", remaking.seconds());
+  }
+  const bool warped = anyWarp(description_) || remade;
   KdBuildOptions options;
   options.threads = threads_;
   // A build is the frame's peak of memory: the steps a stored file keeps go before it (the next
   // frame reads its steps again, which only the first frame and the rare rebuilds pay).
   const auto forgetKeptSteps = [this] {
     for (const Mesh& mesh : meshes_)
-      for (const MeshField& field : mesh.fields)
-        if (field.isStored()) field.stored->file->forgetKept();
+      for (const MeshField& field : mesh.fields) lancer::forgetKeptSteps(field);
   };
   // A warped step with the same faces: its vertices, normals and colours are written over the
   // previous frame's scene and the tree is refitted (nothing as large as the scene is allocated).
-  if (!first && warped && layout_ && accelerator_) {
+  if (!first && warped && !remade && layout_ && accelerator_) {
     builtTime_.reset();
     bool updated = false;
     try {
@@ -171,7 +233,8 @@ void StepScenes::buildAt(double time) {
   normalsScratch_.release();
   builtTime_.reset();
   SceneLayout layout;
-  const bool keepLayout = warped && !hasArrows(description_);  // arrows are built per step
+  // Arrows are built per step; remade meshes change their faces.
+  const bool keepLayout = warped && !remade && !hasArrows(description_);
   StageTimes unused;
   Scene next = buildSceneAt(description_, meshes_, threads_, first ? &unused : &rebuildStages_,
                             keepLayout ? &layout : nullptr);

@@ -43,9 +43,11 @@ void drawFrameLabel(Image& image, const std::string& text, LabelPosition positio
 // The scenes of an animation over steps, one frame at a time (frames rendered in any order).
 class StepScenes {
  public:
-  // `description.when` is replaced per frame; `meshes` (as read, every step) must outlive this.
-  StepScenes(SceneDescription description, const std::vector<Mesh>& meshes,
-             const AnimationSettings& animation, AccelKind accel, int threads);
+  // `description.when` is replaced per frame; `meshes` (as read, every step) must outlive this. The
+  // meshes of isosurfaces and field lines that follow their field's steps (MeshInstance::volumeSource)
+  // are made again in `meshes` at each frame's time.
+  StepScenes(SceneDescription description, std::vector<Mesh>& meshes, const AnimationSettings& animation,
+             AccelKind accel, int threads);
 
   const StepFrames& frames() const { return frames_; }
   int frameCount() const { return static_cast<int>(frames_.times.size()); }
@@ -85,7 +87,7 @@ class StepScenes {
   void buildAt(double time);
 
   SceneDescription description_;
-  const std::vector<Mesh>& meshes_;
+  std::vector<Mesh>& meshes_;  // isosurfaces and field lines that follow the steps are made again
   AnimationSettings animation_;
   AccelKind accel_;
   int threads_;

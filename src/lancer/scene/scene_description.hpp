@@ -2,6 +2,7 @@
 // render settings, camera, lights, materials and the mesh instances that use them.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -193,6 +194,8 @@ struct MeshInstance {
   std::optional<WarpSettings> warp;
   UndeformedStyle undeformed = UndeformedStyle::None;
   VolumeViews volume;  // slices, isosurfaces (results/volume_view_spec.hpp)
+  // Set on an isosurface's or field lines' mesh that follows the steps of its field.
+  std::shared_ptr<const VolumeViewSource> volumeSource;
 };
 
 // Where `[animation] label` goes in each frame.

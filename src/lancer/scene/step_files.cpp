@@ -4,8 +4,9 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 
-#include "lancer/mesh/msh_reader.hpp"
+#include "lancer/mesh/mesh_file.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/scene/results/volume_views.hpp"
 #include "lancer/scene/scene.hpp"
@@ -124,7 +125,24 @@ Mesh readStepFiles(const std::string& pattern, const std::vector<std::string>& f
   const bool store = stepBytes > 0 && files.size() > budget / stepBytes;
   if (store && !mesh.fields.empty() && !mesh.fields.front().isStored())
     mesh = readMsh(files.front(), threads, 0);
-  for (MeshField& field : mesh.fields) field.step = 0;
+  // A file may hold several steps of a view: the files' steps follow each other, each file's in its
+  // own order (its steps' indices ranked), so that three files of two steps make steps 0 to 5.
+  std::map<std::string, int> firstFreeStep;  // per view
+  const auto numberSteps = [&](std::vector<MeshField>& fields) {
+    std::map<std::string, std::vector<int>> indices;  // each view's step indices in this file
+    for (const MeshField& field : fields) indices[field.name].push_back(field.step);
+    for (auto& [name, own] : indices) {
+      std::sort(own.begin(), own.end());
+      own.erase(std::unique(own.begin(), own.end()), own.end());
+    }
+    for (MeshField& field : fields) {
+      const std::vector<int>& own = indices[field.name];
+      const auto rank = std::lower_bound(own.begin(), own.end(), field.step) - own.begin();
+      field.step = firstFreeStep[field.name] + static_cast<int>(rank);
+    }
+    for (const auto& [name, own] : indices) firstFreeStep[name] += static_cast<int>(own.size());
+  };
+  numberSteps(mesh.fields);
   for (std::size_t k = 1; k < files.size(); ++k) {
     Mesh next = readMsh(files[k], threads, store ? 0 : UINT64_MAX);
     if (const std::string difference = describeMeshDifference(mesh, next); !difference.empty())
@@ -133,10 +151,8 @@ Mesh readStepFiles(const std::string& pattern, const std::vector<std::string>& f
                                    "steps in several files need one mesh; keep only that mesh's "
                                    "results in the pattern",
                                    files[k], k, files.front(), difference));
-    for (MeshField& field : next.fields) {
-      field.step = static_cast<int>(k);
-      mesh.fields.push_back(std::move(field));
-    }
+    numberSteps(next.fields);
+    for (MeshField& field : next.fields) mesh.fields.push_back(std::move(field));
   }
   if (files.size() > 1) mesh.source.path = fmt::format("{} ({} files)", pattern, files.size());
   return mesh;
@@ -169,11 +185,11 @@ Mesh readInstanceMesh(const MeshInstance& instance, int threads, std::shared_ptr
     throw InputError(instance.where, fmt::format("mesh file '{}' does not exist", instance.file));
   Mesh mesh;
   if (volume) {
-    MeshWithVolume read = readMshWithVolume(instance.file, threads);
+    MeshWithVolume read = readMeshFileWithVolume(instance.file, threads);
     mesh = std::move(read.mesh);
     *volume = std::move(read.volume);
   } else {
-    mesh = readMsh(instance.file, threads);
+    mesh = readMeshFile(instance.file, threads);
   }
   addViewFiles(mesh, instance.views);
   if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())

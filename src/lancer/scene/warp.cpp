@@ -51,7 +51,14 @@ ViewValues warpDisplacement(const Mesh& fields, const WarpSettings& warp, const 
                             std::size_t vertexCount) {
   const std::string& file = fields.source.path;
   const std::vector<const MeshField*> steps = viewSteps(fields, warp.field);
-  if (steps.empty())
+  if (steps.empty()) {
+    // A view the reader skipped (a NaN, a bad count) is named with the reader's reason.
+    for (const auto& [skipped, warning] : fields.source.skippedFields)
+      if (skipped == warp.field)
+        throw InputError(
+            warp.where,
+            fmt::format("warp field \"{}\": its section in {} could not be read and was skipped ({})",
+                        warp.field, file, warning));
     throw InputError(warp.where,
                      fields.fields.empty()
                          ? fmt::format("warp field \"{}\": {} has no views ($NodeData); a warp needs a node "
@@ -59,6 +66,7 @@ ViewValues warpDisplacement(const Mesh& fields, const WarpSettings& warp, const 
                                        warp.field, file)
                          : fmt::format("warp field \"{}\" is not in {}{}; it has {}", warp.field, file,
                                        didYouMean(warp.field, viewNames(fields)), describeViews(fields)));
+  }
   const MeshField& first = *steps.front();
   if (first.at == FieldAt::kElement)
     throw InputError(warp.where,

@@ -4,14 +4,13 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstring>
 #include <filesystem>
 #include <string_view>
 
 namespace lancer {
 namespace {
 
-enum class Format { kNone, kGeo, kStlAscii, kStlBinary, kStep, kIges, kBrep, kVtk, kObj };
+enum class Format { kNone, kGeo, kStep, kIges, kBrep, kVtk, kVtu, kOff, kUnv, kInp, kAnsys };
 
 std::string lower(std::string text) {
   for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -88,34 +87,72 @@ bool looksLikeGeo(std::string_view text) {
   return statements > 0;
 }
 
-bool looksLikeObj(std::string_view text) {
-  int vertices = 0, other = 0;
+// The first line that is neither blank nor a comment starting with `comment`.
+std::string_view firstStatement(std::string_view text, std::string_view comment) {
+  std::string_view found;
   forEachLine(text, [&](std::string_view line) {
-    if (line.empty() || line.front() == '#') return;
-    if (line.starts_with("v ") || line.starts_with("vn ") || line.starts_with("vt ")) {
-      ++vertices;
-    } else if (!(line.starts_with("f ") || line.starts_with("o ") || line.starts_with("g ") ||
-                 line.starts_with("s ") || line.starts_with("usemtl ") || line.starts_with("mtllib "))) {
-      ++other;
-    }
+    if (found.empty() && !line.empty() && !(!comment.empty() && line.starts_with(comment))) found = line;
   });
-  return vertices >= 3 && other == 0;
+  return found;
 }
 
-Format byContent(std::string_view text, std::uint64_t fileBytes) {
+// OFF: "OFF" (or a variant: COFF, NOFF, STOFF, 4OFF, ...) alone on the first line.
+bool looksLikeOff(std::string_view text) {
+  std::string_view line = firstStatement(text, "#");
+  line = line.substr(0, line.find_first_of("\r\n#"));
+  while (!line.empty() && static_cast<unsigned char>(line.back()) <= ' ') line.remove_suffix(1);
+  return line.size() >= 3 && line.size() <= 6 && line.ends_with("OFF") &&
+         std::all_of(line.begin(), line.end(),
+                     [](char c) { return std::isupper(static_cast<unsigned char>(c)) || c == '4'; });
+}
+
+// I-deas universal: datasets between lines of "-1", the first one's number on the line after it.
+bool looksLikeUnv(std::string_view text) {
+  int minusOnes = 0;
+  bool datasetFollows = false, dataset = false;
+  forEachLine(text, [&](std::string_view line) {
+    while (!line.empty() && static_cast<unsigned char>(line.back()) <= ' ') line.remove_suffix(1);
+    if (line == "-1") {
+      ++minusOnes, datasetFollows = true;
+      return;
+    }
+    if (datasetFollows && !line.empty() && std::all_of(line.begin(), line.end(), [](char c) {
+          return std::isdigit(static_cast<unsigned char>(c));
+        }))
+      dataset = true;
+    datasetFollows = false;
+  });
+  return minusOnes >= 1 && dataset && firstStatement(text, "").starts_with("-1");
+}
+
+// Abaqus input: keyword lines (*HEADING, *NODE, *PART, ...) and ** comments.
+bool looksLikeInp(std::string_view text) {
+  std::string line(firstStatement(text, "**").substr(0, 16));
+  for (char& c : line) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  for (const std::string_view keyword : {"*HEADING", "*NODE", "*ELEMENT", "*PART", "*PREPRINT", "*INCLUDE"})
+    if (line.starts_with(keyword)) return true;
+  return false;
+}
+
+// ANSYS Fluent mesh: S-expressions such as (1 "comment"), (0 "comment") or (2 3) from the first byte.
+bool looksLikeAnsys(std::string_view text) {
+  if (!text.starts_with("(")) return false;
+  std::size_t digits = 1;
+  while (digits < text.size() && std::isdigit(static_cast<unsigned char>(text[digits]))) ++digits;
+  return digits > 1 && digits < text.size() && (text[digits] == ' ' || text[digits] == '(');
+}
+
+Format byContent(std::string_view text) {
   const std::string_view start = trimmedStart(text);
   if (start.starts_with("ISO-10303-21")) return Format::kStep;
   if (start.starts_with("DBRep_DrawableShape") || start.starts_with("CASCADE Topology")) return Format::kBrep;
-  if (start.starts_with("# vtk DataFile") ||
-      (start.starts_with("<?xml") && text.find("<VTKFile") != text.npos))
-    return Format::kVtk;
-  if (start.starts_with("solid") && text.find("facet") != std::string_view::npos) return Format::kStlAscii;
-  // Binary STL: an 80-byte header, a 32-bit triangle count, 50 bytes per triangle.
-  if (text.size() >= 84) {
-    std::uint32_t triangles;
-    std::memcpy(&triangles, text.data() + 80, 4);
-    if (fileBytes == 84 + 50 * std::uint64_t{triangles} && triangles > 0) return Format::kStlBinary;
-  }
+  if (start.starts_with("# vtk DataFile")) return Format::kVtk;
+  if ((start.starts_with("<?xml") || start.starts_with("<VTKFile")) && text.find("<VTKFile") != text.npos)
+    return Format::kVtu;
+  if (looksLikeAnsys(text)) return Format::kAnsys;
+  if (looksLikeOff(text)) return Format::kOff;
+  if (looksLikeUnv(text)) return Format::kUnv;
+  if (looksLikeInp(text)) return Format::kInp;
   // IGES: 80-column records with the section letter (S, G, ...) in column 73.
   if ((text.size() >= 81 && text[80] == '\n') || (text.size() >= 82 && text[80] == '\r')) {
     if (text[72] == 'S' && std::all_of(text.begin() + 73, text.begin() + 80, [](char c) {
@@ -124,19 +161,20 @@ Format byContent(std::string_view text, std::uint64_t fileBytes) {
       return Format::kIges;
   }
   if (looksLikeGeo(text)) return Format::kGeo;
-  if (looksLikeObj(text)) return Format::kObj;
   return Format::kNone;
 }
 
 Format byExtension(const std::string& path) {
   const std::string extension = lower(std::filesystem::path(path).extension().string());
   if (extension == ".geo") return Format::kGeo;
-  if (extension == ".stl") return Format::kStlAscii;
   if (extension == ".step" || extension == ".stp") return Format::kStep;
   if (extension == ".iges" || extension == ".igs") return Format::kIges;
   if (extension == ".brep") return Format::kBrep;
-  if (extension == ".vtk" || extension == ".vtu") return Format::kVtk;
-  if (extension == ".obj") return Format::kObj;
+  if (extension == ".vtk") return Format::kVtk;
+  if (extension == ".vtu") return Format::kVtu;
+  if (extension == ".off") return Format::kOff;
+  if (extension == ".unv") return Format::kUnv;
+  if (extension == ".inp") return Format::kInp;
   return Format::kNone;
 }
 
@@ -144,9 +182,6 @@ const char* nativeExtension(Format format) {
   switch (format) {
     case Format::kGeo:
       return ".geo";
-    case Format::kStlAscii:
-    case Format::kStlBinary:
-      return ".stl";
     case Format::kStep:
       return ".step";
     case Format::kIges:
@@ -155,12 +190,43 @@ const char* nativeExtension(Format format) {
       return ".brep";
     case Format::kVtk:
       return ".vtk";
-    case Format::kObj:
-      return ".obj";
+    case Format::kVtu:
+      return ".vtu";
+    case Format::kOff:
+      return ".off";
+    case Format::kUnv:
+      return ".unv";
+    case Format::kInp:
+      return ".inp";
+    case Format::kAnsys:
+      return ".msh";
     case Format::kNone:
       break;
   }
   return nullptr;
+}
+
+// Formats gmsh 4.8 does not read (or, for VTK, only its own ASCII files): meshio's command, the
+// reader named (meshio picks one by extension otherwise) and MSH 2.2 written, the one gmsh format
+// meshio 7 writes for meshes of several element types without gmsh's entity data.
+std::string meshioMessage(Format format, const std::string& path, const std::string& out) {
+  struct Kind {
+    Format format;
+    const char* what;
+    const char* reader;
+  };
+  static constexpr Kind kKinds[] = {{Format::kVtk, "a legacy VTK file", "vtk"},
+                                    {Format::kVtu, "a VTK XML file (.vtu)", "vtu"},
+                                    {Format::kOff, "an OFF surface", "off"},
+                                    {Format::kInp, "an Abaqus input file (.inp)", "abaqus"},
+                                    {Format::kAnsys, "an ANSYS Fluent mesh", "ansys"}};
+  const Kind* kind = &kKinds[0];
+  for (const Kind& k : kKinds)
+    if (k.format == format) kind = &k;
+  return fmt::format(
+      "this is {}, not a gmsh mesh: convert it with meshio (Debian's python3-meshio): 'meshio convert {} {} "
+      "--input-format {} --output-format gmsh22'",
+      kind->what, path, out, kind->reader);
 }
 
 // The message for a file of `format` at `path` (renamed to its native extension when `rename` says
@@ -176,11 +242,6 @@ std::string describe(Format format, std::string_view text, const std::string& pa
           "this is a gmsh geometry script (.geo), not a mesh: {}mesh it with 'gmsh {} -{} -o {}'", rename,
           path, volumes ? 3 : 2, out);
     }
-    case Format::kStlAscii:
-    case Format::kStlBinary:
-      return fmt::format(
-          "this is an STL surface ({}), not a gmsh mesh: {}convert it with 'gmsh {} -save -o {}'",
-          format == Format::kStlBinary ? "binary" : "ASCII", rename, path, out);
     case Format::kStep:
       return fmt::format(
           "this is a STEP CAD model, not a mesh: {}mesh it with 'gmsh {} -2 -o {}' (-3 to mesh "
@@ -193,13 +254,15 @@ std::string describe(Format format, std::string_view text, const std::string& pa
       return fmt::format("this is an OpenCASCADE BREP model, not a mesh: {}mesh it with 'gmsh {} -2 -o {}'",
                          rename, path, out);
     case Format::kVtk:
-      return fmt::format("this is a VTK file, not a gmsh mesh: {}convert it with 'gmsh {} -save -o {}'",
-                         rename, path, out);
-    case Format::kObj:
+    case Format::kVtu:
+    case Format::kOff:
+    case Format::kInp:
+    case Format::kAnsys:
+      return meshioMessage(format, path, out);
+    case Format::kUnv:
       return fmt::format(
-          "this is a Wavefront OBJ mesh, which gmsh does not read: convert it, e.g. with "
-          "meshio: 'meshio convert {} {}'",
-          path, out);
+          "this is an I-deas universal file (UNV), not a gmsh mesh: {}convert it with 'gmsh {} -save -o {}'",
+          rename, path, out);
     case Format::kNone:
       break;
   }
@@ -213,20 +276,23 @@ bool looksLikeMsh(std::span<const char> head) {
   return start.starts_with("$MeshFormat") || start.starts_with("$NOD") || start.starts_with("$NOE");
 }
 
-std::string foreignFileMessage(std::span<const char> head, std::uint64_t fileBytes, const std::string& path) {
+std::string foreignFileMessage(std::span<const char> head, const std::string& path) {
   const std::string_view text(head.data(), head.size());
   if (looksLikeMsh(head)) return {};
-  Format format = byContent(text, fileBytes);
+  Format format = byContent(text);
   if (format == Format::kNone) format = byExtension(path);
   if (format == Format::kNone) return {};
   // gmsh picks its reader by extension: a file recognised by content under another name is renamed
-  // first (and an STL named part.msh is not converted onto itself). meshio reads OBJ by content.
-  const std::string extension = lower(std::filesystem::path(path).extension().string());
-  const bool renamed = byExtension(path) != format && format != Format::kObj &&
-                       !(format == Format::kStlBinary && extension == ".stl");
+  // first. meshio is told the format, whatever the name; an ANSYS part.msh is converted to part_gmsh.msh.
+  const bool meshio = format == Format::kVtk || format == Format::kVtu || format == Format::kOff ||
+                      format == Format::kInp || format == Format::kAnsys;
+  const bool renamed = byExtension(path) != format && !meshio;
   const std::string source =
       renamed ? std::filesystem::path(path).replace_extension(nativeExtension(format)).string() : path;
-  const std::string out = std::filesystem::path(path).replace_extension(".msh").string();
+  const bool ontoItself = lower(std::filesystem::path(path).extension().string()) == ".msh";
+  std::filesystem::path outPath(path);
+  if (ontoItself) outPath.replace_filename(outPath.stem().string() + "_gmsh");
+  const std::string out = outPath.replace_extension(".msh").string();
   return describe(format, text, source, out, renamed ? fmt::format("rename it to {}, then ", source) : "");
 }
 

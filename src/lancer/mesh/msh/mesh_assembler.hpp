@@ -20,6 +20,11 @@
 
 namespace lancer {
 
+// Where `node` is among the nodes of a volume face's element, `order` giving the element positions of
+// the face's nodes; kAddedCentre when it is none of them.
+std::uint16_t volumeFaceNodePosition(const MshVolumeFace& face, const std::array<std::uint16_t, 9>& order,
+                                     std::uint32_t node);
+
 class MshMeshAssembler {
  public:
   MshNodeTable nodes;

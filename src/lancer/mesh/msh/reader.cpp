@@ -410,8 +410,8 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteS
     MshCursor cursor(bytes, name);
     if (bytes.empty()) cursor.failFile("the file is empty");
     if (!looksLikeMsh(bytes)) {
-      const std::string foreign = foreignFileMessage(
-          bytes.first(std::min<std::size_t>(bytes.size(), 1 << 20)), byteSource.fileBytes, name);
+      const std::string foreign =
+          foreignFileMessage(bytes.first(std::min<std::size_t>(bytes.size(), 1 << 20)), name);
       if (!foreign.empty()) cursor.failFile(foreign);
     }
     MshMeshAssembler assembler;

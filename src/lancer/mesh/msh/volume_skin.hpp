@@ -30,6 +30,11 @@ using MshFaceKey = std::array<std::uint32_t, 4>;  // sorted corner indices, kNoV
 
 MshFaceKey mshFaceKey(const std::uint32_t* corners, int cornerCount);
 
+// The i-th node of a volume face in the order corner[0..3], mid[0..3], centre.
+inline std::uint32_t volumeFaceNode(const MshVolumeFace& face, int i) {
+  return i < 4 ? face.corner[i] : i < 8 ? face.mid[i - 4] : face.centre;
+}
+
 // The shape of a gmsh volume element type of any order, or nullopt for any other type.
 std::optional<CellShape> mshVolumeShape(int type);
 

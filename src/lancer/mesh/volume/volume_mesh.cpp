@@ -1,7 +1,9 @@
 #include "lancer/mesh/volume/volume_mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace lancer {
 
@@ -58,6 +60,39 @@ VolumeField nodeMeans(const VolumeMesh& volume, const VolumeField& field) {
       for (std::size_t c = 0; c < components; ++c)
         means.values[node * components + c] = static_cast<float>(sum[node * components + c] / count[node]);
   return means;
+}
+
+std::vector<std::pair<double, const VolumeField*>> volumeFieldTimeline(const VolumeMesh& volume,
+                                                                       const std::string& name) {
+  std::vector<const VolumeField*> steps = volume.fieldSteps(name);
+  std::sort(steps.begin(), steps.end(),
+            [](const VolumeField* a, const VolumeField* b) { return a->step < b->step; });
+  bool timed = true;
+  for (std::size_t i = 1; i < steps.size(); ++i)
+    if (!(steps[i]->time > steps[i - 1]->time)) timed = false;
+  std::vector<std::pair<double, const VolumeField*>> timeline;
+  timeline.reserve(steps.size());
+  for (const VolumeField* step : steps) timeline.emplace_back(timed ? step->time : step->step, step);
+  return timeline;
+}
+
+VolumeField volumeFieldAt(const VolumeMesh& volume, const std::string& name, double time) {
+  const std::vector<std::pair<double, const VolumeField*>> timeline = volumeFieldTimeline(volume, name);
+  if (timeline.empty()) throw std::invalid_argument("volumeFieldAt: no field " + name);
+  std::size_t next = 0;
+  while (next < timeline.size() && timeline[next].first < time) ++next;
+  if (next == 0) return *timeline.front().second;
+  if (next == timeline.size()) return *timeline.back().second;
+  const auto& [t0, a] = timeline[next - 1];
+  const auto& [t1, b] = timeline[next];
+  if (t1 == time) return *b;
+  if (a->at != b->at || a->values.size() != b->values.size()) return *a;  // nothing to blend: the step before
+  const auto w = static_cast<float>((time - t0) / (t1 - t0));
+  VolumeField blended = *a;
+  blended.time = time;
+  for (std::size_t k = 0; k < blended.values.size(); ++k)
+    blended.values[k] = a->values[k] + w * (b->values[k] - a->values[k]);
+  return blended;
 }
 
 }  // namespace lancer

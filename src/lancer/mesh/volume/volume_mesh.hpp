@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lancer/math/vec3.hpp"
@@ -73,5 +74,16 @@ struct VolumeMesh {
 // values the cells around each node give it (what ParaView's Cell Data to Point Data does), for what
 // needs one value per node (an isosurface that is watertight and smooth).
 VolumeField nodeMeans(const VolumeMesh& volume, const VolumeField& field);
+
+// The steps of field `name` on their timeline, as the surface's views (mesh/field_steps.hpp): in time
+// order with their times when these increase with the step index, else in step order with the step
+// indices as times (a Newmark scheme's repeated t = 0, eigenmodes' unsorted frequencies).
+std::vector<std::pair<double, const VolumeField*>> volumeFieldTimeline(const VolumeMesh& volume,
+                                                                       const std::string& name);
+// Field `name` at `time` on that timeline: the step there, the two steps around it blended linearly
+// (the step before when their values differ in kind or count), or the first or last step outside
+// them. Throws
+// std::invalid_argument when the volume has no such field.
+VolumeField volumeFieldAt(const VolumeMesh& volume, const std::string& name, double time);
 
 }  // namespace lancer

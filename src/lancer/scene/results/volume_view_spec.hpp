@@ -66,6 +66,9 @@ struct StreamlineSpec {
   SourceLocation where;
 };
 
+// What an isosurface's or field lines' mesh is made from (results/volume_views.hpp).
+struct VolumeViewSource;
+
 struct VolumeViews {
   std::vector<SliceSpec> slices;
   std::optional<IsosurfaceSpec> isosurfaces;

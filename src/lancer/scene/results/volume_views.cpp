@@ -199,6 +199,79 @@ const VolumeField& isosurfaceField(const VolumeMesh& volume, const IsosurfaceSpe
   throw InputError(spec.where, fmt::format("isosurfaces of '{}': it has no step {}", spec.field, step));
 }
 
+// The mesh a source's isosurfaces make of `field` (the step or time shown): each of its values inside
+// the field's range, the others added to `outside` when given.
+Mesh isosurfaceMesh(const VolumeViewSource& source, const VolumeField& field, std::vector<double>* outside) {
+  const VolumeMesh& volume = *source.volume;
+  Mesh parent;
+  parent.physicalGroups = source.groups;
+  parent.source.path = source.path;
+  Mesh surfaces = emptyCutMesh(volume, parent, "isosurfaces");
+  const auto [low, high] = scalarRange(field);
+  // Element and element-node data are cut at their node means: one surface, smooth and closed.
+  const VolumeField atNodes = nodeMeans(volume, field);
+  const CellLevels levels = [&](std::uint32_t cell, float* out) {
+    cellPointValues(volume, atNodes, cell, out);
+  };
+  for (const double value : source.values) {
+    if (!(value >= low && value <= high)) {
+      if (outside) outside->push_back(value);
+      continue;
+    }
+    appendCut(surfaces, cutVolume(volume, levels, static_cast<float>(value), true), volume);
+  }
+  return surfaces;
+}
+
+// The field lines of a source's `field` (the step or time shown) from its seeds.
+std::vector<FieldLine> sourceFieldLines(const VolumeViewSource& source, const VolumeField& field,
+                                        const VolumeLocator& locator, const std::vector<Vec3d>& seeds) {
+  const StreamlineSpec& spec = *source.parent.volume.streamlines;
+  FieldLineSettings settings;
+  settings.forward = spec.forward;
+  settings.backward = spec.backward;
+  if (spec.maxLength) settings.maxLength = *spec.maxLength;
+  // Element and element-node data follow their node means: a field that jumps at every face
+  // (a gradient of P1 elements) turns lines back and forth where its neighbours disagree.
+  return traceFieldLines(*source.volume, locator, nodeMeans(*source.volume, field), seeds, settings);
+}
+
+// The tubes of a source's field lines.
+Mesh sourceTubes(const VolumeViewSource& source, const VolumeLocator& locator,
+                 const std::vector<FieldLine>& lines) {
+  const VolumeMesh& volume = *source.volume;
+  const StreamlineSpec& spec = *source.parent.volume.streamlines;
+  const double radius = spec.radius
+                            ? *spec.radius / std::max(length(source.parent.scale), 1e-300) * std::sqrt(3.0)
+                            : 0.003 * volumeDiagonal(volume);
+  Mesh tubes = fieldLineTubes(volume, locator, lines, radius);
+  tubes.source.path = fmt::format("{} (streamlines)", source.path);
+  return tubes;
+}
+
+}  // namespace
+
+const std::string& VolumeViewSource::field() const {
+  return streamlines ? parent.volume.streamlines->field : parent.volume.isosurfaces->field;
+}
+
+std::vector<double> volumeViewTimes(const VolumeViewSource& source) {
+  std::vector<double> times;
+  for (const auto& [time, step] : volumeFieldTimeline(*source.volume, source.field())) times.push_back(time);
+  return times;
+}
+
+Mesh remakeVolumeView(const VolumeViewSource& source, double time) {
+  const VolumeField field = volumeFieldAt(*source.volume, source.field(), time);
+  if (!source.streamlines) return isosurfaceMesh(source, field, nullptr);
+  const VolumeLocator locator(*source.volume);
+  const std::vector<Vec3d> seeds = streamlineSeeds(*source.parent.volume.streamlines, *source.volume, locator,
+                                                   InstanceTransform(source.parent));
+  return sourceTubes(source, locator, sourceFieldLines(source, field, locator, seeds));
+}
+
+namespace {
+
 // The inline table `key` of a [mesh] for a view of one field, with that field and its step read:
 // nothing when the key is absent. `example` is what the key's error shows; `fieldHint` what the
 // missing field's does.
@@ -453,29 +526,18 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       meshes.push_back(std::move(sections));
     }
 
-    // Isosurfaces: one mesh of every value's surface.
+    // Isosurfaces: one mesh of every value's surface. Their values stay over an animation.
     if (const std::optional<IsosurfaceSpec>& spec = instance.volume.isosurfaces) {
       const VolumeField& field = isosurfaceField(volume, *spec, description.when, instance.file);
       const auto [low, high] = scalarRange(field);
       if (!(low <= high))
         throw InputError(spec->where,
                          fmt::format("isosurfaces of '{}': the field has no finite value", spec->field));
-      std::vector<double> values =
-          spec->values.empty() ? evenIsoValues(low, high, spec->count) : spec->values;
-      Mesh surfaces = emptyCutMesh(volume, parent, "isosurfaces");
+      const auto source = std::make_shared<VolumeViewSource>(
+          VolumeViewSource{volumes[i], instance, parent.physicalGroups, parent.source.path, false,
+                           spec->values.empty() ? evenIsoValues(low, high, spec->count) : spec->values});
       std::vector<double> outside;
-      // Element and element-node data are cut at their node means: one surface, smooth and closed.
-      const VolumeField atNodes = nodeMeans(volume, field);
-      const CellLevels levels = [&](std::uint32_t cell, float* out) {
-        cellPointValues(volume, atNodes, cell, out);
-      };
-      for (const double value : values) {
-        if (value < low || value > high) {
-          outside.push_back(value);
-          continue;
-        }
-        appendCut(surfaces, cutVolume(volume, levels, static_cast<float>(value), true), volume);
-      }
+      Mesh surfaces = isosurfaceMesh(*source, field, &outside);
       if (!outside.empty())
         description.notes.push_back(formatInputWarning(
             spec->where, fmt::format("isosurfaces of '{}': {} outside its range {:.6g} .. {:.6g}, not drawn",
@@ -483,6 +545,7 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       if (!surfaces.faces.empty()) {
         MeshInstance child = colouredChild(instance, spec->color, spec->colorBy.value_or(spec->field),
                                            spec->where, description.materials, "isosurfaces");
+        if (!spec->step && volume.fieldSteps(spec->field).size() > 1) child.volumeSource = source;
         description.meshes.push_back(child);
         meshes.push_back(std::move(surfaces));
       }
@@ -504,16 +567,11 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
                          fmt::format("streamlines of '{}': it has {} component{}, and field lines "
                                      "follow a vector (3 components)",
                                      spec->field, field->components, field->components == 1 ? "" : "s"));
+      const auto source = std::make_shared<VolumeViewSource>(
+          VolumeViewSource{volumes[i], instance, parent.physicalGroups, parent.source.path, true, {}});
       const VolumeLocator locator(volume);
       const std::vector<Vec3d> seeds = streamlineSeeds(*spec, volume, locator, transform);
-      FieldLineSettings settings;
-      settings.forward = spec->forward;
-      settings.backward = spec->backward;
-      if (spec->maxLength) settings.maxLength = *spec->maxLength;
-      // Element and element-node data follow their node means: a field that jumps at every face
-      // (a gradient of P1 elements) turns lines back and forth where its neighbours disagree.
-      const std::vector<FieldLine> lines =
-          traceFieldLines(volume, locator, nodeMeans(volume, *field), seeds, settings);
+      const std::vector<FieldLine> lines = sourceFieldLines(*source, *field, locator, seeds);
       const auto outside = static_cast<std::size_t>(std::count_if(
           lines.begin(), lines.end(), [](const FieldLine& line) { return line.points.empty(); }));
       if (outside == lines.size())
@@ -529,14 +587,12 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
             fmt::format("streamlines of '{}': {} of the {} seeds are outside the volume and start no "
                         "line",
                         spec->field, outside, seeds.size())));
-      const double radius = spec->radius
-                                ? *spec->radius / std::max(length(instance.scale), 1e-300) * std::sqrt(3.0)
-                                : 0.003 * volumeDiagonal(volume);
-      Mesh tubes = fieldLineTubes(volume, locator, lines, radius);
-      tubes.source.path = fmt::format("{} (streamlines)", parent.source.path);
+      Mesh tubes = sourceTubes(*source, locator, lines);
       if (!tubes.faces.empty()) {
-        description.meshes.push_back(colouredChild(instance, spec->color, spec->colorBy.value_or(spec->field),
-                                                   spec->where, description.materials, "streamlines"));
+        MeshInstance child = colouredChild(instance, spec->color, spec->colorBy.value_or(spec->field),
+                                           spec->where, description.materials, "streamlines");
+        if (!spec->step && volume.fieldSteps(spec->field).size() > 1) child.volumeSource = source;
+        description.meshes.push_back(child);
         meshes.push_back(std::move(tubes));
       }
     }

@@ -16,6 +16,26 @@
 
 namespace lancer {
 
+// What an isosurface's or field lines' mesh is made from. Kept on the mesh's instance
+// (MeshInstance::volumeSource) when its field has several steps and the view pins none: an animation
+// over steps makes the mesh again at each frame's time (render/step_animation.cpp), its isosurface
+// values and seeds those of the first frame.
+struct VolumeViewSource {
+  std::shared_ptr<const VolumeMesh> volume;
+  MeshInstance parent;                // the [[mesh]] whose volume it is, its request in parent.volume
+  std::vector<PhysicalGroup> groups;  // the parent mesh's
+  std::string path;                   // the parent mesh's file
+  bool streamlines = false;           // else isosurfaces
+  std::vector<double> values;         // the isosurfaces' values
+
+  const std::string& field() const;  // the field the view follows
+};
+
+// The times of the steps of the source's field (volumeFieldTimeline: their times, or step indices).
+std::vector<double> volumeViewTimes(const VolumeViewSource& source);
+// The source's mesh with its field at `time` (steps blended between theirs).
+Mesh remakeVolumeView(const VolumeViewSource& source, double time);
+
 // A [[mesh.slice]] table: normal (required), point.
 SliceSpec readSlice(const TomlTableReader& slice);
 // The [mesh] keys `skin`, `isosurfaces` and `streamlines`.
