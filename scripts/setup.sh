@@ -10,7 +10,8 @@ cd "$(dirname "$0")/.."
 packages=(g++ cmake ninja-build pkg-config libfmt-dev libpng-dev libgif-dev libfreetype-dev libfontconfig-dev fonts-dejavu-core libtomlplusplus-dev
           libcli11-dev libgtest-dev libbenchmark-dev
           python3-dev pybind11-dev python3-numpy python3-pytest python3-gmsh
-          libopenmpi-dev openmpi-bin libopenexr-dev
+          libopenmpi-dev openmpi-bin libopenexr-dev libjpeg62-turbo-dev libwebp-dev
+          libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
           help2man dpkg-dev python3-venv python3-pip python3-setuptools python3-wheel)
 missing=()
 for package in "${packages[@]}"; do

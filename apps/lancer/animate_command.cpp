@@ -1,5 +1,6 @@
 // `lancer animate SCENE.toml -o turntable.gif`: the camera or a light orbits the scene; one
-// accelerator build serves every frame. Output: an animated GIF, an animated PNG, or numbered frames.
+// accelerator build serves every frame. Output: an animated GIF or PNG, an MP4 or WebM video, or
+// numbered frames.
 // The frames are work items: one process renders them all, the ranks of an MPI job share them, or a
 // job-array task renders its share (--shard) as numbered frames for `lancer assemble`.
 #include <fmt/format.h>
@@ -240,8 +241,9 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
   addSceneViewOptions(*command, options->overrides);
   command
       ->add_option("-o,--output", options->output,
-                   "Output: NAME.gif (animated, looping), NAME.png (animated PNG) or NAME_%04d.png/.bmp/.ppm "
-                   "(one file per frame); default: the input's name as a .gif in the current folder")
+                   "Output: NAME.gif (animated, looping), NAME.png (animated PNG), NAME.mp4 (H.264), NAME.webm "
+                   "(VP9) or NAME_%04d.png/.jpg/.webp/.bmp/.ppm (one file per frame); default: the input's name "
+                   "as a .gif in the current folder")
       ->group(kOutputGroup);
   command->add_option("--frames", options->frames, fmt::format("Number of frames (1 to {})", kMaxFrames))
       ->group(kOutputGroup);

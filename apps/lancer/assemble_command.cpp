@@ -92,6 +92,7 @@ int assembleFrames(const AssembleCommandOptions& options) {
   format.still.curve = first.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
   format.still.alpha = first.alpha ? AlphaChannel::Always : AlphaChannel::Never;
   format.transparentBackground = first.alpha;
+  format.still.metadata = commandProvenance();
   AnimationWriter out(options.output, width, height, format);
   if (!options.quiet && !out.frameRateNote().empty())
     std::fprintf(stderr, "%s\n", out.frameRateNote().c_str());
@@ -121,7 +122,7 @@ int runAssemble(const AssembleCommandOptions& options) {
     throw InputError(
         SourceLocation{"--tiles"},
         "--tiles stitches a still: --frames, --fps, --loop, --dither and --palette do not apply");
-  assembleTileParts(options.inputs, options.output);
+  assembleTileParts(options.inputs, options.output, commandProvenance());
   if (!options.quiet)
     std::fprintf(stderr, "%s: assembled from %zu parts\n", options.output.c_str(), options.inputs.size());
   return kExitOk;
@@ -139,7 +140,7 @@ void addAssembleCommand(CLI::App& app, CommandRunner& runner) {
       ->required();
   command
       ->add_option("-o,--output", options->output,
-                   "Output: NAME.gif or NAME.png (animated); a still with --tiles")
+                   "Output: NAME.gif, NAME.png (animated), NAME.mp4 or NAME.webm; a still with --tiles")
       ->required();
   command->add_flag("--tiles", options->tiles,
                     "Stitch the parts of `lancer render --shard I/N` into the image");

@@ -94,6 +94,7 @@ int main(int argc, char** argv) {
   // warped steps, building a scene per frame, grew by a hundred megabytes of freed memory that way
   // (bench/RESULTS.md, "Animation over 50 warped steps").
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
+  setCommandLine(argc, argv);  // what the pictures record as how they were made
   CLI::App app{
       "lancer: a fast ray tracer for gmsh surface meshes.\n"
       "Exit codes: 0 success, 2 bad input (message names the file and line), 1 internal error."};

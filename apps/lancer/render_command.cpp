@@ -339,6 +339,7 @@ int runRender(const RenderCommandOptions& given) {
   if (options.pixel.empty()) {  // refuse a bad extension, bit depth or layer before rendering
     checkTransparentOutput(options.overrides, output);
     requireBitDepth(output, imageFormatFromPath(output), settings.bitDepth);
+    requireImageSize(output, imageFormatFromPath(output), settings.width, settings.height);
     if (isExr(output) && !exrSupported()) writeExr(output, Image(1, 1));  // says how to get OpenEXR
     aovs = parseAovs(options.aovs, output);
   }

@@ -90,6 +90,9 @@ void applyOutputOverrides(const SceneOverrides& overrides, RenderOverrides& appl
   }
   if (overrides.exposure) applied.exposure = checkExposure(*overrides.exposure, optionName("--exposure"));
   if (overrides.bitDepth) applied.bitDepth = checkBitDepth(*overrides.bitDepth, optionName("--bit-depth"));
+  if (overrides.quality) applied.quality = *overrides.quality;  // checked by applyRenderOverrides
+  if (overrides.lossless) applied.lossless = true;
+  if (overrides.dpi) applied.dpi = *overrides.dpi;
   if (overrides.denoise) applied.denoise = true;
 }
 
@@ -468,6 +471,17 @@ void addSceneOutputOptions(CLI::App& command, SceneOverrides& overrides) {
   command.add_option("--bit-depth", overrides.bitDepth, "Bits per sample: 8 (default) or 16 (PNG only)")
       ->group(kOutputGroup);
   command
+      .add_option(
+          "--quality", overrides.quality,
+          fmt::format("JPEG and WebP quality: 1 (smallest) to 100 (best), default {}", kDefaultImageQuality))
+      ->group(kOutputGroup);
+  command.add_flag("--lossless", overrides.lossless, "WebP: lossless instead of --quality")
+      ->group(kOutputGroup);
+  command
+      .add_option("--dpi", overrides.dpi,
+                  "Print resolution recorded in the file (PNG pHYs, JPEG density, WebP and EXR), e.g. 300")
+      ->group(kOutputGroup);
+  command
       .add_flag("--denoise", overrides.denoise,
                 "Filter the noise with the edge-aware denoiser guided by albedo, normal and depth")
       ->group(kOutputGroup);
@@ -655,10 +669,10 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
 void checkTransparentOutput(const SceneOverrides& overrides, const std::string& output) {
   if (!overrides.transparent) return;
   const std::string extension = lowerCaseExtension(output);
-  if (extension != ".png" && extension != ".exr" && extension != ".gif")
+  if (extension != ".png" && extension != ".exr" && extension != ".gif" && extension != ".webp")
     throw InputError(
         SourceLocation{"--transparent"},
-        fmt::format("{} has no alpha channel for a transparent background: write a .png, .exr or "
+        fmt::format("{} has no alpha channel for a transparent background: write a .png, .webp, .exr or "
                     ".gif",
                     output));
 }
@@ -687,11 +701,33 @@ const std::atomic<bool>& installInterruptHandler() {
 
 bool showProgress(const SceneOverrides& overrides) { return !overrides.quiet && isatty(STDERR_FILENO); }
 
+namespace {
+std::string gCommandLine;  // set once by main, before any thread starts
+}  // namespace
+
+// The program as "lancer", not the path it was started by (which says where it was built or installed).
+void setCommandLine(int argc, const char* const* argv) {
+  std::vector<const char*> words(argv, argv + argc);
+  if (!words.empty()) words[0] = "lancer";
+  gCommandLine = quoteCommandLine(argc, words.data());
+}
+
+ImageMetadata commandProvenance() {
+  ImageMetadata metadata;
+  metadata.software = softwareName();
+  metadata.command = gCommandLine;
+  return metadata;
+}
+
 ImageWriteOptions imageWriteOptions(const RenderSettings& settings) {
   ImageWriteOptions options;
   options.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
   options.bitDepth = settings.bitDepth;
   options.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
+  options.quality = settings.quality;
+  options.lossless = settings.lossless;
+  options.metadata = commandProvenance();
+  options.metadata.dpi = settings.dpi;
   return options;
 }
 

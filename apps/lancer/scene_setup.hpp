@@ -30,6 +30,9 @@ struct SceneOverrides {
   std::string toneMap;  // --tonemap none | filmic | aces
   std::optional<double> exposure;
   std::optional<int> bitDepth;
+  std::optional<int> quality;  // --quality Q: JPEG and lossy WebP, 1 to 100
+  bool lossless = false;       // --lossless: WebP without loss
+  std::optional<double> dpi;   // --dpi N: the resolution the picture's file records
   bool denoise = false;
   bool edges = false;  // draw element edges on every mesh that does not set its own
   std::string up;      // --up: the automatic camera's up axis (x, y, z, -x, -y, -z)
@@ -130,8 +133,13 @@ const std::atomic<bool>& installInterruptHandler();
 // True when progress lines should go to stderr (a terminal, and not --quiet).
 bool showProgress(const SceneOverrides& overrides);
 
-// How the settings want images written: the sRGB curve or linear, alpha with a transparent background.
+// How the settings want images written: the sRGB curve or linear, alpha with a transparent background,
+// JPEG/WebP quality, and the metadata (DPI, lancer's version and the command line of setCommandLine).
 ImageWriteOptions imageWriteOptions(const RenderSettings& settings);
+// The command line the pictures record as how they were made (main calls it once).
+void setCommandLine(int argc, const char* const* argv);
+// lancer's version and that command line, for pictures written without render settings (assemble).
+ImageMetadata commandProvenance();
 
 // A command's render options: its --threads, and Ctrl-C (or SIGTERM) stops the render.
 RenderOptions commandRenderOptions(const SceneOverrides& overrides);

@@ -12,6 +12,7 @@ from ._lancer import (Camera, InputError, LancerWarning, Mesh, Scene, Volume, __
                       read_msh, read_png, read_volume)
 from . import _lancer
 from . import _arrays
+from . import _image
 from ._image import Image
 from ._gmsh import camera_from_gmsh as _camera_from_gmsh, from_gmsh
 
@@ -91,6 +92,7 @@ def render(scene, width=None, height=None, samples=None, shading=None, srgb=None
     the first time a render draws inside it (a Scene.quick_look keeps it for its later renders); a
     Mesh made from arrays or by gmsh has none (InputError).
     """
+    provenance = _image._call_text("lancer.render", render, locals())
     if dtype not in ("uint8", "float32"):
         raise ValueError(f"dtype={dtype!r}: use 'uint8' (encoded, as the image files) or 'float32' (linear)")
     arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
@@ -98,7 +100,7 @@ def render(scene, width=None, height=None, samples=None, shading=None, srgb=None
                            noise, look, _results(color_map, range, log, scale, legend, isolines, bands,
                                                  arrows, clip, slices, skin, isosurfaces, streamlines))
     array, info = _lancer._render(scene, arguments, dtype == "float32")
-    return Image._wrap(array, srgb=info["srgb"], stats=info)
+    return Image._wrap(array, srgb=info["srgb"], stats=info, provenance=provenance)
 
 
 def animate(scene, output, frames=None, fps=None, orbit=None, width=None, height=None, samples=None,
@@ -108,7 +110,8 @@ def animate(scene, output, frames=None, fps=None, orbit=None, width=None, height
             color_map=None, range=None, log=None, scale=None, legend=None, isolines=None, bands=None,
             arrows=None, clip=None, slices=None, skin=None, isosurfaces=None, streamlines=None):
     """Writes an orbit of the camera (orbit="camera") or of light K (orbit="light:K") as `lancer
-    animate` does: an animated .gif, an animated .png, or numbered frames ("frame_%04d.png").
+    animate` does: an animated .gif, an animated .png, an .mp4 (H.264) or .webm (VP9) video, or numbered
+    frames ("frame_%04d.png").
     over="steps": one frame per time step of the views the scene colours or warps by, in time order
     (frames=N: N frames evenly spaced in time, the steps between blended; one frame per step when the
     times repeat or decrease). label="t = {time:.3g} s" writes each frame's time (the time the file
@@ -116,8 +119,10 @@ def animate(scene, output, frames=None, fps=None, orbit=None, width=None, height
     None keeps the scene's value (its [animation] table, else 36 frames at 12 fps, the camera).
     color_map, range, log, scale, legend, isolines, bands, arrows, clip, slices, skin, isosurfaces and
     streamlines: as render's."""
+    provenance = _image._call_text("lancer.animate", animate, locals())
     arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
                            progress, sampler, max_depth, encoding, tonemap, exposure, denoise, integrator,
                            noise, look, _results(color_map, range, log, scale, legend, isolines, bands,
                                                  arrows, clip, slices, skin, isosurfaces, streamlines))
-    _lancer._animate(scene, str(output), arguments, frames, fps, orbit, loop, dither, palette, over, label)
+    _lancer._animate(scene, str(output), arguments, frames, fps, orbit, loop, dither, palette, over, label,
+                     command=provenance)

@@ -22,7 +22,8 @@ void animate(const py::object& target, const std::string& output, const RenderAr
              const std::optional<int>& frames, const std::optional<double>& fps,
              const std::optional<std::string>& orbit, const std::optional<int>& loop,
              const std::optional<std::string>& dither, const std::optional<std::string>& palette,
-             const std::optional<std::string>& over, const std::optional<std::string>& label) {
+             const std::optional<std::string>& over, const std::optional<std::string>& label,
+             const std::string& command) {
   if (over && *over != "orbit" && *over != "steps")
     throw py::value_error(fmt::format("over='{}': use 'orbit' or 'steps'", *over));
   if (frames) checkFrames(*frames, SettingName{SourceLocation{"frames"}, "frames"});
@@ -71,6 +72,8 @@ void animate(const py::object& target, const std::string& output, const RenderAr
   outputOptions.still.curve = settings.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
   outputOptions.still.alpha = settings.transparentBackground ? AlphaChannel::Always : AlphaChannel::Never;
   outputOptions.transparentBackground = settings.transparentBackground;
+  outputOptions.still.metadata.software = softwareName();
+  outputOptions.still.metadata.command = command;
   AnimationWriter writer(output, settings.width, settings.height, outputOptions);
   if (!writer.frameRateNote().empty())
     if (PyErr_WarnEx(PyExc_UserWarning, writer.frameRateNote().c_str(), 1) != 0)
@@ -106,7 +109,7 @@ void animate(const py::object& target, const std::string& output, const RenderAr
 void bindAnimate(py::module_& module) {
   module.def("_animate", &animate, py::arg("target"), py::arg("output"), py::arg("arguments"),
              py::arg("frames"), py::arg("fps"), py::arg("orbit"), py::arg("loop"), py::arg("dither"),
-             py::arg("palette"), py::arg("over"), py::arg("label"));
+             py::arg("palette"), py::arg("over"), py::arg("label"), py::arg("command") = "");
 }
 
 }  // namespace lancer::python

@@ -1,6 +1,8 @@
-// Writing a lancer.Image (the numpy array render returned) to .png, .bmp, .ppm or .gif with the
-// library's writers: the same bytes as the lancer command writes for the same render.
+// Writing a lancer.Image (the numpy array render returned) to .png, .jpg, .webp, .bmp, .ppm, .gif or .exr
+// with the library's writers: the pixels the lancer command writes for the same render.
 #include <pybind11/numpy.h>
+
+#include <pybind11/stl.h>
 
 #include <fmt/format.h>
 
@@ -11,7 +13,17 @@
 namespace lancer::python {
 namespace {
 
-void writeArray(const std::string& path, const py::array& array, bool srgb) {
+void writeArray(const std::string& path, const py::array& array, bool srgb, const std::optional<int>& quality,
+                bool lossless, const std::optional<double>& dpi, const std::string& command) {
+  ImageWriteOptions options;
+  options.curve = srgb ? TransferCurve::Srgb : TransferCurve::Linear;
+  if (quality) requireImageQuality(*quality, SourceLocation{"quality"});
+  if (dpi) requireDpi(*dpi, SourceLocation{"dpi"});
+  options.quality = quality.value_or(kDefaultImageQuality);
+  options.lossless = lossless;
+  options.metadata.dpi = dpi.value_or(0);
+  options.metadata.software = softwareName();
+  options.metadata.command = command;
   if (array.ndim() != 3 || (array.shape(2) != 3 && array.shape(2) != 4) || array.shape(0) < 1 ||
       array.shape(1) < 1)
     throw py::value_error(
@@ -20,11 +32,10 @@ void writeArray(const std::string& path, const py::array& array, bool srgb) {
     throw py::value_error(fmt::format("an image side is at most {} pixels", kMaxImageSide));
   const int height = static_cast<int>(array.shape(0)), width = static_cast<int>(array.shape(1));
   const int channels = static_cast<int>(array.shape(2));
-  const TransferCurve curve = srgb ? TransferCurve::Srgb : TransferCurve::Linear;
   if (array.dtype().is(py::dtype::of<std::uint8_t>())) {
     const auto samples = py::array_t<std::uint8_t, py::array::c_style>::ensure(array);
     const py::gil_scoped_release release;
-    writeImage8(path, width, height, channels, curve, samples.data());
+    writeImage8(path, width, height, channels, samples.data(), options);
     return;
   }
   if (array.dtype().kind() != 'f')
@@ -37,8 +48,6 @@ void writeArray(const std::string& path, const py::array& array, bool srgb) {
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x, v += channels)
       image.at(x, y) = Rgba{v[0], v[1], v[2], channels == 4 ? v[3] : 1.0f};
-  ImageWriteOptions options;
-  options.curve = curve;
   options.alpha = channels == 4 ? AlphaChannel::Auto : AlphaChannel::Never;
   const py::gil_scoped_release release;
   writeImage(path, image, options);
@@ -62,7 +71,9 @@ py::array_t<std::uint8_t> readPngArray(const std::string& path) {
 }
 
 void bindImage(py::module_& module) {
-  module.def("_write_image", &writeArray, py::arg("path"), py::arg("array"), py::arg("srgb"));
+  module.def("_write_image", &writeArray, py::arg("path"), py::arg("array"), py::arg("srgb"),
+             py::arg("quality") = py::none(), py::arg("lossless") = false, py::arg("dpi") = py::none(),
+             py::arg("command") = "");
   module.def("read_png", &readPngArray, py::arg("path"), "A PNG file as an (H, W, 4) uint8 RGBA array");
 }
 

@@ -17,18 +17,19 @@ using test::ScratchFolder;
 TEST(ImageIoBadInput, UnknownExtensionNamesTheFileAndTheSupportedOnes) {
   ScratchFolder folder;
   const Image image(2, 2);
-  const std::string path = folder.file("out.jpg");
+  const std::string path = folder.file("out.tif");
   EXPECT_EQ(
       messageOf([&] { writeImage(path, image); }),
       path +
-          ": error: unknown image format: '.jpg'; the supported extensions are .png, .bmp, .ppm, .gif, .exr");
+          ": error: unknown image format: '.tif'; the supported extensions are .png, .jpg, .jpeg, .webp, "
+          ".bmp, .ppm, .gif, .exr");
   EXPECT_EQ(messageOf([&] { writeImage(folder.file("out"), image); }),
             folder.file("out") +
                 ": error: unknown image format: no extension; the supported extensions are "
-                ".png, .bmp, .ppm, .gif, .exr");
+                ".png, .jpg, .jpeg, .webp, .bmp, .ppm, .gif, .exr");
   EXPECT_EQ(messageOf([] { static_cast<void>(imageFormatFromPath("renders.png/out")); }),
             "renders.png/out: error: unknown image format: no extension; the supported extensions are .png, "
-            ".bmp, .ppm, .gif, .exr");
+            ".jpg, .jpeg, .webp, .bmp, .ppm, .gif, .exr");
   EXPECT_TRUE(folder.entries().empty());
 }
 

@@ -96,7 +96,7 @@ def test_nothing_to_draw():
 def test_bad_output_leaves_no_file(tmp_path):
     image = lancer.render(lancer.Mesh(SQUARE, TRIANGLES), width=8, height=8)
     with pytest.raises(lancer.InputError, match="extension"):
-        image.save(tmp_path / "x.jpg")
+        image.save(tmp_path / "x.tif")
     assert list(tmp_path.iterdir()) == []
 
 

@@ -1,11 +1,11 @@
-"""lancer.render gives the CLI's bytes: for a mesh's quick look, a scene file, with overrides, with
+"""lancer.render gives the CLI's bytes (the record of the call that made them aside): for a mesh's quick look, a scene file, with overrides, with
 sRGB and transparency, and for animate's GIF."""
 
 import numpy as np
 import pytest
 
 import lancer
-from conftest import data, run_cli
+from conftest import data, picture_bytes, run_cli
 
 BRACKET = data("tests", "data", "render", "bracket_coarse.msh")
 
@@ -13,7 +13,7 @@ BRACKET = data("tests", "data", "render", "bracket_coarse.msh")
 def rendered_bytes(tmp_path, image, name="python.png"):
     path = tmp_path / name
     image.save(path)
-    return path.read_bytes()
+    return picture_bytes(path)
 
 
 @pytest.mark.parametrize("extension", [".png", ".bmp", ".ppm"])
@@ -23,7 +23,7 @@ def test_mesh_quick_look_is_the_cli_image(tmp_path, extension):
     image = lancer.render(lancer.read_msh(str(BRACKET)), width=96, height=72)
     assert isinstance(image, lancer.Image) and isinstance(image, np.ndarray)
     assert image.shape == (72, 96, 3) and image.dtype == np.uint8
-    assert rendered_bytes(tmp_path, image, f"python{extension}") == cli_path.read_bytes()
+    assert rendered_bytes(tmp_path, image, f"python{extension}") == picture_bytes(cli_path)
 
 
 def test_scene_file_is_the_cli_image(tmp_path):
@@ -31,7 +31,7 @@ def test_scene_file_is_the_cli_image(tmp_path):
     cli_path = tmp_path / "cli.png"
     run_cli("render", scene_file, "-o", cli_path, "--width", 80, "--height", 60, "--samples", 4, "--quiet")
     image = lancer.render(lancer.Scene.load(str(scene_file)), width=80, height=60, samples=4)
-    assert rendered_bytes(tmp_path, image) == cli_path.read_bytes()
+    assert rendered_bytes(tmp_path, image) == picture_bytes(cli_path)
 
 
 def test_overrides_are_the_cli_options(tmp_path):
@@ -41,7 +41,7 @@ def test_overrides_are_the_cli_options(tmp_path):
     image = lancer.render(lancer.read_msh(str(BRACKET)), width=64, height=48, shading="flat", srgb=True,
                           edges=True, samples=4)
     assert image.srgb
-    assert rendered_bytes(tmp_path, image) == cli_path.read_bytes()
+    assert rendered_bytes(tmp_path, image) == picture_bytes(cli_path)
 
 
 def test_transparent_scene_gives_rgba(tmp_path):
@@ -50,7 +50,7 @@ def test_transparent_scene_gives_rgba(tmp_path):
     run_cli("render", scene_file, "-o", cli_path, "--width", 64, "--height", 48, "--quiet")
     image = lancer.render(lancer.Scene.load(str(scene_file)), width=64, height=48)
     assert image.shape == (48, 64, 4)
-    assert rendered_bytes(tmp_path, image) == cli_path.read_bytes()
+    assert rendered_bytes(tmp_path, image) == picture_bytes(cli_path)
 
 
 def test_linear_float_is_what_the_bytes_encode():
@@ -89,7 +89,7 @@ def test_encoding_tonemap_and_denoise_arguments(tmp_path):
             1, "--denoise", "--quiet")
     image = lancer.render(lancer.read_msh(str(BRACKET)), width=48, height=36, tonemap="aces", exposure=1,
                           denoise=True)
-    assert rendered_bytes(tmp_path, image) == cli_path.read_bytes()
+    assert rendered_bytes(tmp_path, image) == picture_bytes(cli_path)
     with pytest.raises(ValueError, match="tonemap='agx'"):
         lancer.render(lancer.read_msh(str(BRACKET)), width=8, height=8, tonemap="agx")
     with pytest.raises(ValueError, match="encoding='gamma'"):
@@ -118,7 +118,7 @@ def test_animate_is_the_cli_gif(tmp_path):
     run_cli("animate", BRACKET, "-o", cli_path, "--frames", 3, "--width", 48, "--height", 36, "--quiet")
     python_path = tmp_path / "python.gif"
     lancer.animate(lancer.read_msh(str(BRACKET)), python_path, frames=3, width=48, height=36)
-    assert python_path.read_bytes() == cli_path.read_bytes()
+    assert picture_bytes(python_path) == picture_bytes(cli_path)
 
 
 def test_camera_set_from_python_moves_the_view():
@@ -136,7 +136,7 @@ def test_path_integrator_and_look_are_the_cli_image(tmp_path):
             "--noise", 0.05, "--integrator", "path", "--quiet")
     image = lancer.render(lancer.read_msh(str(BRACKET)), width=48, height=36, look="studio", samples=8,
                           noise=0.05, integrator="path")
-    assert rendered_bytes(tmp_path, image) == cli_path.read_bytes()
+    assert rendered_bytes(tmp_path, image) == picture_bytes(cli_path)
 
 
 def test_bad_integrator_and_noise_are_value_errors():

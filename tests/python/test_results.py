@@ -9,7 +9,7 @@ import lancer
 
 import gmsh
 
-from conftest import data, run_cli
+from conftest import data, picture_bytes, run_cli
 
 CANTILEVER = str(data("tests", "data", "results", "cantilever.msh"))
 
@@ -33,7 +33,7 @@ def test_animate_over_steps_matches_the_cli(tmp_path):
     run_cli("animate", CANTILEVER, "--over", "steps", "--frames", 5, "--color-by", "temperature", "--warp",
             "displacement", "--width", 64, "--height", 48, "-q", "-o", tmp_path / "cli_%02d.png")
     for k in range(5):
-        assert (tmp_path / f"py_{k:02d}.png").read_bytes() == (tmp_path / f"cli_{k:02d}.png").read_bytes()
+        assert picture_bytes(tmp_path / f"py_{k:02d}.png") == picture_bytes(tmp_path / f"cli_{k:02d}.png")
     assert not (tmp_path / "py_05.png").exists()
 
 

@@ -47,7 +47,9 @@ TEST(AnimateCliBadInput, OptionsAreClearErrors) {
       {"--loop 2 -o " + quoted(folder.file("f_%04d.png")),
        "--loop: error: --loop applies to an animated .gif or .png, not to numbered frames"},
       {"-o " + quoted(folder.file("t.bmp")),
-       "t.bmp: error: an animation is written as .gif, as an animated .png, or as numbered frames with %04d"},
+       "t.bmp: error: an animation is written as .gif, as an animated .png, as an .mp4 (H.264) or .webm "
+       "(VP9) "
+       "video, or as numbered frames with %04d"},
       {"-o " + quoted(folder.file("f_%x.png")),
        "a frame-sequence name needs one %d or %0Nd (e.g. frame_%04d.png)"},
       {"-o " + quoted(folder.file("f_%04d_%d.png")), "a frame-sequence name may hold only one %d"},

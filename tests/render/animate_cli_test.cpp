@@ -255,14 +255,16 @@ TEST(AnimateCli, NumberedFramesAreBitIdenticalToRenderAtEachAngle) {
     const std::string still = folder.file(fmt::format("view_{}.png", k));
     const test::CommandResult result = runCli("render -q " + quoted(toml) + " -o " + quoted(still));
     ASSERT_EQ(result.exitCode, 0) << result.output;
-    EXPECT_EQ(test::readBytes(still), test::readBytes(folder.file(fmt::format("f_{:04d}.png", k))))
+    EXPECT_EQ(test::readPictureBytes(still),
+              test::readPictureBytes(folder.file(fmt::format("f_{:04d}.png", k))))
         << "frame " << k;
   }
   // Frame 0 is the scene's own view: plain `lancer render` of the same file.
   ASSERT_EQ(runCli("render -q " + quoted(test::kTurntableScene) + " -o " + quoted(folder.file("plain.png")))
                 .exitCode,
             0);
-  EXPECT_EQ(test::readBytes(folder.file("plain.png")), test::readBytes(folder.file("f_0000.png")));
+  EXPECT_EQ(test::readPictureBytes(folder.file("plain.png")),
+            test::readPictureBytes(folder.file("f_0000.png")));
   EXPECT_NE(truth[0], truth[1]);
 }
 

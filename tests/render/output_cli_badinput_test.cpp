@@ -1,5 +1,6 @@
 // Bad output options and keys: an unknown tone curve, an exposure that is no number of stops, a bit
-// depth other than 8 or 16 (or 16 for a format without it), layers for a format that cannot hold them,
+// depth other than 8 or 16 (or 16 for a format without it), a DPI or quality out of range, an unknown
+// extension, --loop for a video, layers for a format that cannot hold them,
 // and a render whose pixels came out non-finite: one line, exit code 2, nothing written.
 #include <gtest/gtest.h>
 
@@ -57,6 +58,23 @@ TEST(OutputCliBadInput, OptionsAreOneLineAndExitTwo) {
        "--bit-depth: error: 16-bit samples are written to numbered PNG frames only (-o frame_%04d.png); GIF "
        "and "
        "animated PNG hold 8 bits"},
+      {"render " + scene + " --dpi 0 -o OUT/a.png",
+       "--dpi: error: 0 is not a resolution in dots per inch: give a number above 0 and at most 65535 (e.g. "
+       "300 "
+       "for print)"},
+      {"render " + scene + " --dpi -72 -o OUT/a.jpg",
+       "--dpi: error: -72 is not a resolution in dots per inch: give a number above 0 and at most 65535"},
+      {"render " + scene + " --quality 0 -o OUT/a.jpg",
+       "--quality: error: quality 0 is out of range: use 1 (smallest file) to 100 (best picture); 90 unless "
+       "given"},
+      {"render " + scene + " --quality 101 -o OUT/a.webp", "--quality: error: quality 101 is out of range"},
+      {"render " + scene + " -o OUT/a.tif",
+       "OUT/a.tif: error: unknown image format: '.tif'; the supported extensions are .png, .jpg, .jpeg, "
+       ".webp, "
+       ".bmp, .ppm, .gif, .exr"},
+      {"animate " + scene + " --frames 2 --loop 1 -o OUT/t.mp4",
+       "--loop: error: --loop applies to an animated .gif or .png; whether a video repeats is its player's "
+       "choice"},
       {"render " + scene + " --shard 0/2 --denoise -o OUT/a.png",
        "--shard: error: a job-array part holds 8-bit rows: --denoise, --bit-depth 16 and .exr need a render "
        "without --shard"},
@@ -87,6 +105,13 @@ TEST(OutputCliBadInput, SceneKeys) {
   test::expectSceneErrorContains("[render]\nexposure = 25.0\n", "render.exposure");
   test::expectSceneErrorContains("[render]\nbit_depth = 12\n",
                                  "scene.toml:2:13: error: render.bit_depth must be 8 or 16, found 12");
+  test::expectSceneErrorContains(
+      "[render]\nquality = 0\n",
+      "scene.toml:2:11: error: quality 0 is out of range: use 1 (smallest file) to 100 (best picture)");
+  test::expectSceneErrorContains("[render]\ndpi = 0\n",
+                                 "scene.toml:2:7: error: 0 is not a resolution in dots per inch");
+  test::expectSceneErrorContains("[render]\ndpi = -1.5\n",
+                                 "scene.toml:2:7: error: -1.5 is not a resolution in dots per inch");
   test::expectSceneErrorContains("[render]\nsrgb = false\nencoding = \"linear\"\n",
                                  "render.encoding and render.srgb both say how the image is encoded");
 }

@@ -45,8 +45,8 @@ TEST(OutputCli, PngIsSrgbByDefaultAndLinearOnRequest) {
       worst = std::max(worst,
                        std::abs(static_cast<double>(srgbFromLinear(raw.at(x, y).g)) - byDefault.at(x, y).g));
   EXPECT_LT(worst * 255, 8.5);  // the sRGB slope near black is 12.92: one linear step is up to 13 sRGB steps
-  EXPECT_EQ(test::readFileBytes(render(folder, "srgb.png", "--srgb")),
-            test::readFileBytes(folder.file("default.png")));
+  EXPECT_EQ(test::readPictureBytes(render(folder, "srgb.png", "--srgb")),
+            test::readPictureBytes(folder.file("default.png")));
   // The scene key does what the flag does.
   const std::vector<char> bytes = test::readFileBytes(kScene);
   std::string scene(bytes.begin(), bytes.end());
@@ -57,7 +57,8 @@ TEST(OutputCli, PngIsSrgbByDefaultAndLinearOnRequest) {
   const test::CommandResult keyed = test::runCli("render " + quoted(folder.file("linear_scene.toml")) +
                                                  " -q -o " + quoted(folder.file("keyed.png")));
   ASSERT_EQ(keyed.exitCode, 0) << keyed.output;
-  EXPECT_EQ(test::readFileBytes(folder.file("keyed.png")), test::readFileBytes(folder.file("linear.png")));
+  EXPECT_EQ(test::readPictureBytes(folder.file("keyed.png")),
+            test::readPictureBytes(folder.file("linear.png")));
 }
 
 TEST(OutputCli, SixteenBitPngHoldsTheSamePicture) {

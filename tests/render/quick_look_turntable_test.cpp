@@ -79,7 +79,7 @@ TEST(QuickLookTurntable, UpOptionOverridesTheGuess) {
     const test::CommandResult result = test::runCli("render -q --width 48 --height 36 " + options + " " +
                                                     mesh + " -o " + test::quoted(folder.file(name)));
     EXPECT_EQ(result.exitCode, 0) << result.output;
-    return test::readBytes(folder.file(name));
+    return test::readPictureBytes(folder.file(name));
   };
   const auto guessed = render("", "guessed.png");
   EXPECT_EQ(render("--up z", "z.png"), guessed);

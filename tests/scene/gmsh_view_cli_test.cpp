@@ -41,7 +41,7 @@ TEST(GmshViewCli, TheViewBeforeOrAfterTheInputGivesOneImage) {
                        after);
   test::expectSameFile(views.render(views.mesh() + " --gmsh-view " + views.view(), "file_after.png"), after);
   // The view was used: without it the quick look's own camera draws something else.
-  EXPECT_NE(test::readBytes(views.render(views.mesh(), "plain.png")), test::readBytes(after));
+  EXPECT_NE(test::readPictureBytes(views.render(views.mesh(), "plain.png")), test::readPictureBytes(after));
 }
 
 TEST(GmshViewCli, AnimateTakesTheViewBeforeTheInputToo) {

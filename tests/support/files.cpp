@@ -60,9 +60,32 @@ void expectOnlyFile(const ScratchFolder& folder, const std::string& name,
   EXPECT_EQ(folder.entries(), std::vector<std::string>{name});
 }
 
+std::vector<std::uint8_t> readPictureBytes(const std::string& path) {
+  std::vector<std::uint8_t> bytes = readBytes(path);
+  static constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (bytes.size() < 8 || !std::equal(kSignature, kSignature + 8, bytes.begin())) return bytes;
+  std::vector<std::uint8_t> kept(bytes.begin(), bytes.begin() + 8);
+  std::size_t at = 8;
+  while (at + 12 <= bytes.size()) {  // length (big-endian), type, data, CRC: PNG 1.2 section 3.2
+    const std::size_t length =
+        static_cast<std::size_t>(bytes[at]) << 24 | bytes[at + 1] << 16 | bytes[at + 2] << 8 | bytes[at + 3];
+    const std::string type(bytes.begin() + static_cast<std::ptrdiff_t>(at + 4),
+                           bytes.begin() + static_cast<std::ptrdiff_t>(at + 8));
+    const std::size_t end = std::min(bytes.size(), at + 12 + length);
+    if (type != "tEXt" && type != "iTXt" && type != "zTXt")
+      kept.insert(kept.end(), bytes.begin() + static_cast<std::ptrdiff_t>(at),
+                  bytes.begin() + static_cast<std::ptrdiff_t>(end));
+    at = end;
+  }
+  kept.insert(kept.end(), bytes.begin() + static_cast<std::ptrdiff_t>(std::min(at, bytes.size())),
+              bytes.end());
+  return kept;
+}
+
 void expectSameFile(const std::string& actual, const std::string& expected) {
   ASSERT_TRUE(std::filesystem::exists(actual)) << actual;
-  EXPECT_TRUE(readBytes(actual) == readBytes(expected)) << actual << " differs from " << expected;
+  EXPECT_TRUE(readPictureBytes(actual) == readPictureBytes(expected))
+      << actual << " differs from " << expected;
 }
 
 std::vector<std::uint8_t> readBytes(const std::string& path) {

@@ -40,7 +40,12 @@ void expectOnlyFile(const ScratchFolder& folder, const std::string& name,
                     const std::vector<std::uint8_t>& bytes);
 
 std::vector<std::uint8_t> readBytes(const std::string& path);
-// Adds gtest failures unless `actual` exists and has exactly the bytes of `expected`.
+// The file's bytes less a PNG's text chunks (tEXt, iTXt, zTXt: lancer's version and the command line
+// that made the picture), which differ between two commands that make the same picture; any other
+// file's bytes as they are.
+std::vector<std::uint8_t> readPictureBytes(const std::string& path);
+// Adds gtest failures unless `actual` exists and has exactly the bytes of `expected`, text chunks of a
+// PNG aside (readPictureBytes).
 void expectSameFile(const std::string& actual, const std::string& expected);
 void writeBytes(const std::string& path, const std::vector<std::uint8_t>& bytes);
 // The whole file as text (or as bytes in a string).

@@ -121,7 +121,8 @@ Image TilePartReader::readItem() {
   return rows;
 }
 
-void assembleTileParts(const std::vector<std::string>& parts, const std::string& output) {
+void assembleTileParts(const std::vector<std::string>& parts, const std::string& output,
+                       const ImageMetadata& metadata) {
   if (parts.empty()) throw InputError(SourceLocation{output}, "no part files to assemble");
   std::map<int, std::unique_ptr<TilePartReader>> readers;  // by shard index
   std::string firstPath;
@@ -157,6 +158,7 @@ void assembleTileParts(const std::vector<std::string>& parts, const std::string&
   ImageWriteOptions options;
   options.curve = header.curve;
   options.alpha = header.alpha ? AlphaChannel::Always : AlphaChannel::Never;
+  options.metadata = metadata;
   const int itemCount = bandItemsOf(header.height, header.bandsPerItem).itemCount;
   const auto nextItem = [&](int item) { return readers.at(item % header.shard.count)->readItem(); };
   if (!ImageRowWriter::streams(imageFormatFromPath(output))) {

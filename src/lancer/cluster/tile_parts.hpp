@@ -65,7 +65,8 @@ class TilePartReader {
 
 // Stitches the parts into `output` (PNG, BMP or PPM streamed band by band; a GIF whole). Every part
 // 0..N-1 must be among `parts` once, all from the same image; InputError naming what is missing or
-// does not match.
-void assembleTileParts(const std::vector<std::string>& parts, const std::string& output);
+// does not match. `metadata`: what the file records of how it was made (image_metadata.hpp).
+void assembleTileParts(const std::vector<std::string>& parts, const std::string& output,
+                       const ImageMetadata& metadata = {});
 
 }  // namespace lancer

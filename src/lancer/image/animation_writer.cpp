@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "lancer/image/atomic_file.hpp"
@@ -26,12 +28,62 @@ void checkGlobalPaletteMemory(int frames, int width, int height) {
                     frames, width, height, bytes / (1 << 30), memory / (1 << 30)));
 }
 
+constexpr const char* kAnimationOutputs =
+    "an animation is written as .gif, as an animated .png, as an .mp4 (H.264) or .webm (VP9) video, or as "
+    "numbered frames with %04d in the name (frame_%04d.png, .jpg, .webp, .bmp, .ppm or .exr)";
+
+// A video: the frames go to the encoder as they come.
+void openVideo(std::optional<VideoWriter>& video, VideoContainer container, const std::string& output,
+               int width, int height, const AnimationOutputOptions& options, bool checkOnly,
+               std::string& note) {
+  if (options.loop)
+    throw InputError(
+        SourceLocation{"--loop"},
+        "--loop applies to an animated .gif or .png; whether a video repeats is its player's choice");
+  if (options.still.bitDepth != 8)
+    throw InputError(SourceLocation{"--bit-depth"}, "a video holds 8-bit samples: leave --bit-depth at 8");
+  if (checkOnly) return;
+  VideoOptions videoOptions;
+  videoOptions.fps = options.fps;
+  videoOptions.curve = options.still.curve;
+  videoOptions.metadata = options.still.metadata;
+  video.emplace(output, container, width, height, videoOptions);  // fails now on a bad folder
+  note = video->note();
+}
+
 }  // namespace
+
+std::optional<VideoContainer> videoContainerFromPath(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return std::nullopt;
+  std::string extension = path.substr(dot);
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".mp4") return VideoContainer::Mp4;
+  if (extension == ".webm") return VideoContainer::Webm;
+  return std::nullopt;
+}
 
 AnimationWriter::AnimationWriter(const std::string& output, int width, int height,
                                  const AnimationOutputOptions& options, bool checkOnly)
     : pattern_(parseFramePattern(output)), still_(options.still) {
-  const ImageFormat format = imageFormatFromPath(pattern_ ? pattern_->name(0) : output);
+  const std::optional<VideoContainer> video = pattern_ ? std::nullopt : videoContainerFromPath(output);
+  if (video && !options.dither.empty())
+    throw InputError(SourceLocation{"--dither"}, "--dither applies to an animated .gif only");
+  if (video && !options.palette.empty())
+    throw InputError(SourceLocation{"--palette"}, "--palette applies to an animated .gif only");
+  if (video) {
+    openVideo(video_, *video, output, width, height, options, checkOnly, frameRateNote_);
+    return;
+  }
+  ImageFormat format = ImageFormat::Png;
+  try {
+    format = imageFormatFromPath(pattern_ ? pattern_->name(0) : output);
+  } catch (const InputError&) {
+    if (pattern_) throw;  // numbered frames: the still formats' message
+    throw InputError(SourceLocation{output}, kAnimationOutputs);
+  }
   const bool animatedGif = !pattern_ && format == ImageFormat::Gif;
   exrFrames_ = pattern_ && format == ImageFormat::Exr;
   if (!animatedGif && !options.dither.empty())
@@ -76,10 +128,7 @@ AnimationWriter::AnimationWriter(const std::string& output, int width, int heigh
     if (checkOnly) return;
     apng_.emplace(output, width, height, options.frames, apngOptions);
   } else {
-    throw InputError(
-        SourceLocation{output},
-        "an animation is written as .gif, as an animated .png, or as numbered frames with %04d in the "
-        "name (frame_%04d.png, .bmp, .ppm or .exr)");
+    throw InputError(SourceLocation{output}, kAnimationOutputs);
   }
 }
 
@@ -88,7 +137,9 @@ void AnimationWriter::addFrame(int frame, const Image& image) {
     gif_->addFrame(image);
   } else if (apng_) {
     apng_->addFrame(image);
-  } else {
+  } else if (video_) {
+    video_->addFrame(image);
+  } else if (pattern_) {
     frames_.write(pattern_->name(frame), image, still_);
   }
 }
@@ -96,6 +147,7 @@ void AnimationWriter::addFrame(int frame, const Image& image) {
 void AnimationWriter::finish() {
   if (gif_) gif_->finish();
   if (apng_) apng_->finish();
+  if (video_) video_->finish();
   if (pattern_) frames_.publish();
 }
 

@@ -1,5 +1,6 @@
 // Where `lancer animate`, `lancer assemble` and lancer.animate in Python put frames: an animated GIF, an
-// animated PNG, or numbered still frames ("turn_%04d.png"), chosen by the output's name. Every kind is
+// animated PNG, an MP4 (H.264) or WebM (VP9) video, or numbered still frames ("turn_%04d.png"), chosen
+// by the output's name. Every kind is
 // published only when finished: an interrupted or failed animation leaves existing files as they were.
 #pragma once
 
@@ -10,6 +11,7 @@
 #include "lancer/image/frame_sequence.hpp"
 #include "lancer/image/gif_writer.hpp"
 #include "lancer/image/image_io.hpp"
+#include "lancer/image/video_writer.hpp"
 
 namespace lancer {
 
@@ -22,6 +24,9 @@ struct AnimationOutputOptions {
   ImageWriteOptions still;  // the curve and alpha of the scene's still images
   bool transparentBackground = false;
 };
+
+// .mp4 or .webm (case-insensitive), else nullopt.
+std::optional<VideoContainer> videoContainerFromPath(const std::string& path);
 
 class AnimationWriter {
  public:
@@ -41,13 +46,15 @@ class AnimationWriter {
   // After the last frame: publishes the file, or every numbered frame at once.
   void finish();
 
-  // What the GIF's whole-1/100-s delays make of the frame rate, when they change it ("" otherwise).
+  // What the writer changes that the user should know, one line each ("" otherwise): what the GIF's
+  // whole-1/100-s delays make of the frame rate, a video's padding to even sides or fallback encoder.
   const std::string& frameRateNote() const { return frameRateNote_; }
 
  private:
   std::optional<FramePattern> pattern_;
   std::optional<GifWriter> gif_;
   std::optional<ApngWriter> apng_;
+  std::optional<VideoWriter> video_;
   StagedFrames frames_;
   ImageWriteOptions still_;
   bool exrFrames_ = false;

@@ -11,6 +11,8 @@
 #include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStandardAttributes.h>
+#include <ImfStringAttribute.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -56,12 +58,18 @@ Imf::Slice floatSlice(const void* base, std::size_t xStride, std::size_t yStride
 
 bool exrSupported() { return true; }
 
-void writeExr(const std::string& path, const Image& image, const ExrLayers& layers) {
+void writeExr(const std::string& path, const Image& image, const ExrLayers& layers,
+              const ImageMetadata& metadata) {
   if (image.empty()) throw InputError(SourceLocation{path}, "cannot write an empty (0-pixel) EXR");
   const int width = image.width(), height = image.height();
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   Imf::Header header(width, height);
   header.compression() = Imf::ZIP_COMPRESSION;
+  // The standard attributes "comments" and "xDensity" (pixels per inch), and a string "software"
+  // (OpenEXR has no standard one; readers show every string attribute).
+  if (!metadata.command.empty()) Imf::addComments(header, metadata.command);
+  if (!metadata.software.empty()) header.insert("software", Imf::StringAttribute(metadata.software));
+  if (metadata.dpi > 0) Imf::addXDensity(header, static_cast<float>(metadata.dpi));
   Imf::FrameBuffer frame;
   const auto* base = reinterpret_cast<const char*>(image.pixels().data());
   const std::size_t row = kRgbaStride * static_cast<std::size_t>(width);
@@ -279,7 +287,9 @@ namespace {
 }  // namespace
 
 bool exrSupported() { return false; }
-void writeExr(const std::string& path, const Image&, const ExrLayers&) { unsupported(path); }
+void writeExr(const std::string& path, const Image&, const ExrLayers&, const ImageMetadata&) {
+  unsupported(path);
+}
 Image readExr(const std::string& path, ExrLayers*) { unsupported(path); }
 
 #endif

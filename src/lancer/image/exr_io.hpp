@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "lancer/image/image.hpp"
+#include "lancer/image/image_metadata.hpp"
 #include "lancer/math/vec3.hpp"
 
 namespace lancer {
@@ -22,9 +23,11 @@ struct ExrLayers {
   std::vector<float> depth;
 };
 
-// R, G, B, A as 32-bit floats (no clamping, no curve), ZIP-compressed, plus the non-empty layers.
+// R, G, B, A as 32-bit floats (no clamping, no curve), ZIP-compressed, plus the non-empty layers; the
+// metadata as header attributes ("comments": the command, "software", "xDensity": the DPI).
 // Throws InputError naming the file on I/O failure or a build without OpenEXR.
-void writeExr(const std::string& path, const Image& image, const ExrLayers& layers = {});
+void writeExr(const std::string& path, const Image& image, const ExrLayers& layers = {},
+              const ImageMetadata& metadata = {});
 
 // Reads R, G, B (and A, else 1) of any scan-line or tiled EXR, or luminance Y alone as grey, and the
 // layers above when present. Throws InputError naming the file for unreadable or non-EXR files, files

@@ -57,11 +57,9 @@ bool completeFrameExists(const std::string& path, int width, int height) {
     case ImageFormat::Bmp:
       return size ==
              54 + ((3 * static_cast<std::uint64_t>(width) + 3) / 4 * 4) * static_cast<std::uint64_t>(height);
-    case ImageFormat::Gif:
-    case ImageFormat::Exr:
-      return false;
+    default:
+      return false;  // no cheap check of completeness: render it again
   }
-  return false;
 }
 
 namespace {

@@ -18,7 +18,7 @@ ImageFormat streamedFormat(const std::string& path, const ImageWriteOptions& opt
     throw InputError(SourceLocation{path},
                      format == ImageFormat::Gif
                          ? "a GIF cannot be written row by row (its palette needs every pixel)"
-                         : "an EXR is written whole, not row by row");
+                         : "this format is written whole, not row by row (PNG, BMP and PPM stream)");
   return format;
 }
 
@@ -46,7 +46,7 @@ ImageRowWriter::ImageRowWriter(const std::string& path, int width, int height,
       encoded_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(channels_) *
                       static_cast<std::size_t>(bitDepth_ / 8));
       png_ = std::make_unique<PngRowEncoder>(file_, width, height, channels_, curve_ == TransferCurve::Srgb,
-                                             bitDepth_);
+                                             bitDepth_, options.metadata);
       break;
     case ImageFormat::Bmp: {
       std::vector<std::uint8_t> header;
@@ -66,8 +66,7 @@ ImageRowWriter::ImageRowWriter(const std::string& path, int width, int height,
       file_.write(header.data(), header.size());
       break;
     }
-    case ImageFormat::Gif:
-    case ImageFormat::Exr:
+    default:
       break;  // refused by streamedFormat
   }
   file_.throwIfFailed();
@@ -103,9 +102,8 @@ void ImageRowWriter::writeRow(std::span<const Rgba> row) {
       encodeRow8(row, curve_, 3, encoded_.data());
       file_.write(encoded_.data(), encoded_.size());
       break;
-    case ImageFormat::Gif:
-    case ImageFormat::Exr:
-      break;
+    default:
+      break;  // refused by streamedFormat
   }
   file_.throwIfFailed();
   ++rowsWritten_;

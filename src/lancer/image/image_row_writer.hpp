@@ -20,8 +20,10 @@ class PngRowEncoder;
 class ImageRowWriter {
  public:
   // True for the formats that can be written row by row: PNG, BMP, PPM (not GIF, whose palette
-  // needs every pixel first, nor EXR, written whole with its layers).
-  static bool streams(ImageFormat format) { return format != ImageFormat::Gif && format != ImageFormat::Exr; }
+  // needs every pixel first, EXR, written whole with its layers, nor JPEG and WebP, encoded whole).
+  static bool streams(ImageFormat format) {
+    return format == ImageFormat::Png || format == ImageFormat::Bmp || format == ImageFormat::Ppm;
+  }
 
   // Creates the temporary file and writes the header now, so a bad path fails before rendering.
   // `options.alpha` must be Always or Never (Auto would need every pixel; std::invalid_argument).

@@ -41,20 +41,46 @@ void onPngWrite(png_structp png, png_bytep data, png_size_t size) {
 }
 void onPngFlush(png_structp) {}
 
-// The header chunks, shared by the whole-image and the row-by-row writers so both give the same bytes.
-// Called between setjmp and the last libpng call.
+// tEXt holds Latin-1; a command line with other bytes (UTF-8 file names) goes into iTXt, which holds UTF-8.
+bool isAscii(const std::string& text) {
+  for (const char c : text)
+    if (static_cast<unsigned char>(c) >= 0x80) return false;
+  return true;
+}
+
+// The header chunks, shared by the whole-image and the row-by-row writers so both give the same bytes:
+// IHDR, the sRGB chunks, pHYs (the DPI as pixels per metre, PNG 1.2 section 4.2.4.3) and the text
+// chunks "Software" and "Comment" (the command; section 4.2.3.1 lists both keywords). Called between
+// setjmp and the last libpng call: `texts` points into `metadata`'s strings.
 void writePngHeader(png_structp png, png_infop info, int width, int height, int channels, bool srgbChunk,
-                    int bitDepth) {
+                    int bitDepth, const ImageMetadata& metadata) {
   png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), bitDepth,
                channels == 4 ? PNG_COLOR_TYPE_RGBA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   if (srgbChunk) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  if (metadata.dpi > 0) {
+    const png_uint_32 perMetre = pixelsPerMetre(metadata.dpi);
+    png_set_pHYs(png, info, perMetre, perMetre, PNG_RESOLUTION_METER);
+  }
+  png_text texts[2] = {};
+  int count = 0;
+  const auto addText = [&](const char* key, const std::string& text) {
+    if (text.empty()) return;
+    texts[count].compression = isAscii(text) ? PNG_TEXT_COMPRESSION_NONE : PNG_ITXT_COMPRESSION_NONE;
+    texts[count].key = const_cast<png_charp>(key);
+    texts[count].text = const_cast<png_charp>(text.c_str());
+    texts[count].text_length = text.size();
+    ++count;
+  };
+  addText("Software", metadata.software);
+  addText("Comment", metadata.command);
+  if (count > 0) png_set_text(png, info, texts, count);
   png_write_info(png, info);
 }
 
 // Returns false with error->text set when libpng fails (a failed write leaves the reason in `file`).
 bool encodePng(AtomicFileWriter* file, int width, int height, int channels, bool srgbChunk, int bitDepth,
-               const std::uint8_t* samples, PngErrorText* error) {
+               const std::uint8_t* samples, const ImageMetadata& metadata, PngErrorText* error) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, error->text, onPngError, onPngWarning);
   if (png == nullptr) return false;
   png_infop info = png_create_info_struct(png);
@@ -67,7 +93,7 @@ bool encodePng(AtomicFileWriter* file, int width, int height, int channels, bool
     return false;
   }
   png_set_write_fn(png, file, onPngWrite, onPngFlush);
-  writePngHeader(png, info, width, height, channels, srgbChunk, bitDepth);
+  writePngHeader(png, info, width, height, channels, srgbChunk, bitDepth, metadata);
   const std::size_t stride = static_cast<std::size_t>(width) * static_cast<std::size_t>(channels) *
                              static_cast<std::size_t>(bitDepth / 8);
   for (int y = 0; y < height; ++y) {
@@ -143,9 +169,9 @@ struct FileCloser {
 }  // namespace
 
 PngRowEncoder::PngRowEncoder(AtomicFileWriter& file, int width, int height, int channels, bool srgbChunk,
-                             int bitDepth)
+                             int bitDepth, const ImageMetadata& metadata)
     : file_(file) {
-  if (!start(width, height, channels, srgbChunk, bitDepth)) {
+  if (!start(width, height, channels, srgbChunk, bitDepth, metadata)) {
     destroy();  // no destructor runs after a throwing constructor
     fail();
   }
@@ -159,14 +185,15 @@ void PngRowEncoder::destroy() noexcept {
   info_ = nullptr;
 }
 
-bool PngRowEncoder::start(int width, int height, int channels, bool srgbChunk, int bitDepth) {
+bool PngRowEncoder::start(int width, int height, int channels, bool srgbChunk, int bitDepth,
+                          const ImageMetadata& metadata) {
   png_ = png_create_write_struct(PNG_LIBPNG_VER_STRING, errorText_, onPngError, onPngWarning);
   if (png_ == nullptr) return false;
   info_ = png_create_info_struct(png_);
   if (info_ == nullptr) return false;
   if (setjmp(png_jmpbuf(png_))) return false;
   png_set_write_fn(png_, &file_, onPngWrite, onPngFlush);
-  writePngHeader(png_, info_, width, height, channels, srgbChunk, bitDepth);
+  writePngHeader(png_, info_, width, height, channels, srgbChunk, bitDepth, metadata);
   return true;
 }
 
@@ -204,25 +231,26 @@ void writePng(const std::string& path, const Image& image, const ImageWriteOptio
   const bool srgb = options.curve == TransferCurve::Srgb;
   if (options.bitDepth == 16) {
     const std::vector<std::uint8_t> samples = encodeImage16(image, options.curve, channels);
-    writePngSamples(path, image.width(), image.height(), channels, srgb, 16, samples.data());
+    writePngSamples(path, image.width(), image.height(), channels, srgb, 16, samples.data(),
+                    options.metadata);
     return;
   }
   const std::vector<std::uint8_t> samples = encodeImage8(image, options.curve, channels);
-  writePng8(path, image.width(), image.height(), channels, srgb, samples.data());
+  writePng8(path, image.width(), image.height(), channels, srgb, samples.data(), options.metadata);
 }
 
 void writePng8(const std::string& path, int width, int height, int channels, bool srgbChunk,
-               const std::uint8_t* samples) {
-  writePngSamples(path, width, height, channels, srgbChunk, 8, samples);
+               const std::uint8_t* samples, const ImageMetadata& metadata) {
+  writePngSamples(path, width, height, channels, srgbChunk, 8, samples, metadata);
 }
 
 void writePngSamples(const std::string& path, int width, int height, int channels, bool srgbChunk,
-                     int bitDepth, const std::uint8_t* samples) {
+                     int bitDepth, const std::uint8_t* samples, const ImageMetadata& metadata) {
   if (width <= 0 || height <= 0)
     throw InputError(SourceLocation{path}, "cannot write an empty (0-pixel) PNG");
   AtomicFileWriter file(path);
   PngErrorText error;
-  const bool ok = encodePng(&file, width, height, channels, srgbChunk, bitDepth, samples, &error);
+  const bool ok = encodePng(&file, width, height, channels, srgbChunk, bitDepth, samples, metadata, &error);
   if (!ok && !file.failed()) {
     file.discard();
     throw InputError(SourceLocation{path}, fmt::format("PNG encoding failed: {}", error.text));

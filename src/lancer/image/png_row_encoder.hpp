@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "lancer/image/image_metadata.hpp"
+
 struct png_struct_def;
 struct png_info_def;
 
@@ -17,11 +19,11 @@ inline constexpr std::size_t kPngErrorTextSize = 256;  // libpng's message, trun
 
 class PngRowEncoder {
  public:
-  // Writes the signature and the header chunks (IHDR; sRGB, gAMA and cHRM when `srgbChunk`) to
-  // `file`. channels is 3 (RGB) or 4 (RGBA), of `bitDepth` 8 or 16 bits each (16: big-endian
-  // samples, as PNG stores them). Throws InputError naming the file.
-  PngRowEncoder(AtomicFileWriter& file, int width, int height, int channels, bool srgbChunk,
-                int bitDepth = 8);
+  // Writes the signature and the header chunks (IHDR; sRGB, gAMA and cHRM when `srgbChunk`; pHYs and
+  // text from `metadata`) to `file`. channels is 3 (RGB) or 4 (RGBA), of `bitDepth` 8 or 16 bits each (16:
+  // big-endian samples, as PNG stores them). Throws InputError naming the file.
+  PngRowEncoder(AtomicFileWriter& file, int width, int height, int channels, bool srgbChunk, int bitDepth = 8,
+                const ImageMetadata& metadata = {});
   ~PngRowEncoder();
   PngRowEncoder(const PngRowEncoder&) = delete;
   PngRowEncoder& operator=(const PngRowEncoder&) = delete;
@@ -35,7 +37,8 @@ class PngRowEncoder {
  private:
   // libpng reports errors by longjmp: these hold the setjmp and only trivially destructible locals,
   // and return false (with errorText_ set) when libpng failed.
-  bool start(int width, int height, int channels, bool srgbChunk, int bitDepth);
+  bool start(int width, int height, int channels, bool srgbChunk, int bitDepth,
+             const ImageMetadata& metadata);
   bool row(const std::uint8_t* samples);
   bool end();
   void destroy() noexcept;

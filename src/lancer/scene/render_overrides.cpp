@@ -156,6 +156,15 @@ void applyRenderOverrides(SceneDescription& description, const RenderOverrides& 
   if (overrides.exposure) settings.exposure = *overrides.exposure;
   if (overrides.bitDepth) settings.bitDepth = *overrides.bitDepth;
   if (overrides.denoise) settings.denoise = *overrides.denoise;
+  if (overrides.quality) {
+    requireImageQuality(*overrides.quality, SourceLocation{overrides.optionPrefix + "quality"});
+    settings.quality = *overrides.quality;
+  }
+  if (overrides.lossless) settings.lossless = *overrides.lossless;
+  if (overrides.dpi) {
+    requireDpi(*overrides.dpi, SourceLocation{overrides.optionPrefix + "dpi"});
+    settings.dpi = *overrides.dpi;
+  }
   if (overrides.transparentBackground) settings.transparentBackground = *overrides.transparentBackground;
   if (overrides.backgroundDisplay) {
     const Vec3 shown = *overrides.backgroundDisplay;

@@ -24,6 +24,9 @@ struct RenderOverrides {
   std::optional<float> exposure;
   std::optional<int> bitDepth;
   std::optional<bool> denoise;
+  std::optional<int> quality;  // checked here: 1 to 100
+  std::optional<bool> lossless;
+  std::optional<double> dpi;  // checked here: above 0
   std::optional<IntegratorKind> integrator;
   std::optional<float> noise;  // checked by the caller: in (0, 1)
   std::optional<Look> look;    // applied last (applyLook); the overrides above win over its defaults

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "lancer/image/image_metadata.hpp"
 #include "lancer/image/tone_map.hpp"
 #include "lancer/math/vec3.hpp"
 #include "lancer/scene/color_by_spec.hpp"
@@ -51,6 +52,10 @@ struct RenderSettings {
   float exposure = 0;
   int bitDepth = 8;
   bool denoise = false;
+  // JPEG and lossy WebP quality (1 to 100); WebP lossless instead; the DPI written into the file (0: none).
+  int quality = kDefaultImageQuality;
+  bool lossless = false;
+  double dpi = 0;
 };
 
 struct CameraSettings {

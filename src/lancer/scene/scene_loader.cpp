@@ -103,7 +103,8 @@ void readBackground(const TomlTableReader& reader, RenderSettings& render) {
   render.background = toFloat(*reader.vector("background", Triple::Rgb, NumberRange::atLeast(0)));
 }
 
-// encoding (or the older srgb = true | false), tonemap, exposure, bit_depth, denoise: docs/output.md.
+// encoding (or the older srgb = true | false), tonemap, exposure, bit_depth, denoise, quality, lossless,
+// dpi: docs/output.md.
 void readOutputKeys(const TomlTableReader& reader, RenderSettings& render) {
   if (auto srgb = reader.boolean("srgb")) render.srgb = *srgb;
   if (auto encoding = reader.choice("encoding", kEncodingNames)) {
@@ -119,6 +120,17 @@ void readOutputKeys(const TomlTableReader& reader, RenderSettings& render) {
   if (auto bits = reader.integer("bit_depth"))
     render.bitDepth = checkBitDepth(*bits, reader.settingName("bit_depth"));
   if (auto denoise = reader.boolean("denoise")) render.denoise = *denoise;
+  // quality, lossless, dpi: how JPEG and WebP are compressed, the resolution every format records.
+  if (auto quality = reader.integer("quality", std::numeric_limits<std::int64_t>::min(),
+                                    std::numeric_limits<std::int64_t>::max())) {
+    requireImageQuality(*quality, reader.location(*reader.find("quality")));
+    render.quality = static_cast<int>(*quality);
+  }
+  if (auto lossless = reader.boolean("lossless")) render.lossless = *lossless;
+  if (auto dpi = reader.number("dpi", NumberRange::any())) {
+    requireDpi(*dpi, reader.location(*reader.find("dpi")));
+    render.dpi = *dpi;
+  }
 }
 
 RenderSettings readRender(const SceneFile& file, const toml::table& table) {
