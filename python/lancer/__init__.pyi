@@ -28,7 +28,9 @@ _Planes = str | dict[str, Any] | Sequence[str | dict[str, Any]]
 class Image(np.ndarray[Any, np.dtype[Any]]):
     srgb: bool
     stats: dict[str, Any]
-    def save(self, path: str | os.PathLike[str]) -> None: ...
+    def save(
+        self, path: str | os.PathLike[str], quality: int | None = None, lossless: bool = False, dpi: int | None = None
+    ) -> None: ...
 
 def from_gmsh(dim: Literal[2, 3] = 2, name: str | None = None) -> Mesh: ...
 def render(

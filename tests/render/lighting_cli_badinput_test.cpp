@@ -6,18 +6,34 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <vector>
 
+#include "lancer/image/exr_io.hpp"
 #include "lancer/image/image_io.hpp"
 #include "support/cli.hpp"
+#include "support/files.hpp"
 
 namespace lancer {
 namespace {
 
 const std::string kMesh = LANCER_TEST_DATA_DIR "/render/bracket_coarse.msh";
 
+// What two renders must agree on: a PNG's bytes less its text chunks (they record the command line),
+// an EXR's pixels and layers as stored (its header records the command line too).
 std::string bytesOf(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
+  const auto raw = [](const auto& values) {
+    return std::string(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(values[0]));
+  };
+  if (path.extension() != ".exr") return raw(test::readPictureBytes(path.string()));
+  ExrLayers layers;
+  const Image image = readExr(path.string(), &layers);
+  std::vector<float> pixels;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const Rgba p = image.at(x, y);
+      pixels.insert(pixels.end(), {p.r, p.g, p.b, p.a});
+    }
+  return raw(pixels) + raw(layers.albedo) + raw(layers.normal) + raw(layers.depth);
 }
 
 TEST(LightingCli, NoiseOutsideZeroToOneIsAnInputError) {
