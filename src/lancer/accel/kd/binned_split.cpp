@@ -238,9 +238,10 @@ void refineInWindow(Split& best, const BinCounts& counts, const Cell& cell, std:
                     });
 }
 
-#if defined(__AVX2__)
 // Candidate planes of exactSmallSplit: each reference's lower and upper bound.
 constexpr std::size_t kSmallCandidates = (2 * kSmallCell + 7) / 8 * 8;
+
+#if defined(__AVX2__)
 
 // One axis of exactSmallSplit: V vectors of 8 candidate planes, their counts kept in registers.
 struct SmallAxis {
