@@ -240,10 +240,11 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
   addInputOption(*command, options->inputs);
   addSceneViewOptions(*command, options->overrides);
   command
-      ->add_option("-o,--output", options->output,
-                   "Output: NAME.gif (animated, looping), NAME.png (animated PNG), NAME.mp4 (H.264), NAME.webm "
-                   "(VP9) or NAME_%04d.png/.jpg/.webp/.bmp/.ppm (one file per frame); default: the input's name "
-                   "as a .gif in the current folder")
+      ->add_option(
+          "-o,--output", options->output,
+          "Output: NAME.gif (animated, looping), NAME.png (animated PNG), NAME.mp4 (H.264), NAME.webm "
+          "(VP9) or NAME_%04d.png/.jpg/.webp/.bmp/.ppm (one file per frame); default: the input's name "
+          "as a .gif in the current folder")
       ->group(kOutputGroup);
   command->add_option("--frames", options->frames, fmt::format("Number of frames (1 to {})", kMaxFrames))
       ->group(kOutputGroup);
