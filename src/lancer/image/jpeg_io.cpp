@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <jpeglib.h>
 
+#include <cmath>
 #include <csetjmp>
 #include <cstdio>
 #include <cstdlib>
@@ -56,7 +57,7 @@ bool encodeJpeg(int width, int height, int channels, const std::uint8_t* samples
   if (dpi > 0) {
     info.write_JFIF_header = TRUE;
     info.density_unit = 1;  // dots per inch (JFIF 1.02)
-    info.X_density = info.Y_density = static_cast<UINT16>(dpi + 0.5);
+    info.X_density = info.Y_density = static_cast<UINT16>(std::lround(dpi));
   }
   jpeg_start_compress(&info, TRUE);
   if (comment != nullptr && !comment->empty())
