@@ -14,6 +14,7 @@
 
 #include "lancer/math/ray.hpp"
 #include "lancer/mesh/mesh.hpp"
+#include "lancer/util/isa.hpp"
 
 namespace lancer {
 
@@ -38,6 +39,10 @@ struct TriangleHit {
   float t;
   float b1, b2;
 };
+
+// The test's functions differ with the instruction set (FMA or not): each copy of the kernels
+// (util/isa.hpp) has its own, so that the linker never gives one copy's to the other.
+inline namespace LANCER_ISA_NS {
 
 namespace triangle_detail {
 
@@ -112,5 +117,7 @@ inline TriangleHit testTriangle(const PackedTriangle& tri, const Ray& ray, float
 inline float intersectTriangle(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
   return testTriangle(tri, ray, tMin, tMax).t;
 }
+
+}  // namespace LANCER_ISA_NS
 
 }  // namespace lancer
