@@ -44,7 +44,9 @@ TEST(Isa, LancerIsaBaselineTurnsTheX86_64_V3KernelsOff) {
 }
 
 TEST(Isa, NoX86_64_V3KernelsWithoutTheirCopy) {
-  if (!isa::kHaveX86_64_V3) EXPECT_FALSE(isa::useX86_64_V3());
+  if (!isa::kHaveX86_64_V3) {
+    EXPECT_FALSE(isa::useX86_64_V3());
+  }
 }
 
 TEST(Isa, BaselineKernelsDrawTheX86_64_V3Picture) {
