@@ -33,11 +33,15 @@ fi
 headers=$(mktemp -d)
 trap 'rm -rf "$headers"' EXIT
 for entry in fmt toml++ CLI freetype2 fontconfig OpenEXR Imath png.h pngconf.h pnglibconf.h zlib.h zconf.h \
-             gif_lib.h gtest gmock; do
+             gif_lib.h gtest gmock jpeglib.h jerror.h jmorecfg.h webp; do
   [ -e "/usr/include/$entry" ] || { echo "check_aarch64: /usr/include/$entry missing: run scripts/setup.sh" >&2; exit 1; }
   ln -s "/usr/include/$entry" "$headers/$entry"
 done
-# CMake's definitions for a build with OpenEXR, without MPI (its headers are per architecture).
+# libjpeg-turbo's configuration header sits in the host's architecture folder; its definitions are
+# the same on ARM64 (8-bit samples, the same API), and nothing is linked.
+ln -s /usr/include/x86_64-linux-gnu/jconfig.h "$headers/jconfig.h"
+# CMake's definitions for a build with OpenEXR, without MPI and FFmpeg (their headers are per
+# architecture; the video writer then builds its refusal).
 flags=(-std=c++20 -Wall -Wextra -Wpedantic -Wshadow -Werror -DLANCER_HAVE_OPENEXR=1
        -DLANCER_VERSION=\"check\" -Isrc -Iapps/lancer -Itests -isystem "$headers" -isystem "$headers/freetype2"
        -isystem "$headers/OpenEXR" -isystem "$headers/Imath"
