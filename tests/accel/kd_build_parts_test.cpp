@@ -50,11 +50,13 @@ std::vector<std::array<Vec3, 3>> clipCases(std::mt19937& rng) {
   return cases;
 }
 
+#if defined(__AVX2__)
 float lane(__m128 v, int k) {
   alignas(16) float f[4];
   _mm_store_ps(f, v);
   return f[k];
 }
+#endif
 
 TEST(KdBuildParts, VectorClipGivesTheScalarBoundsToTheBit) {
 #if defined(__AVX2__)
