@@ -42,7 +42,7 @@ done
 ln -s /usr/include/x86_64-linux-gnu/jconfig.h "$headers/jconfig.h"
 # CMake's definitions for a build with OpenEXR, without MPI and FFmpeg (their headers are per
 # architecture; the video writer then builds its refusal).
-flags=(-std=c++20 -Wall -Wextra -Wpedantic -Wshadow -Werror -DLANCER_HAVE_OPENEXR=1
+flags=(-std=c++20 -Wall -Wextra -Wpedantic -Wshadow -Werror -Wno-psabi -DLANCER_HAVE_OPENEXR=1
        -DLANCER_VERSION=\"check\" -Isrc -Iapps/lancer -Itests -isystem "$headers" -isystem "$headers/freetype2"
        -isystem "$headers/OpenEXR" -isystem "$headers/Imath"
        -DLANCER_TEST_DATA_DIR=\"\" -DLANCER_SOURCE_DIR=\"\" -DLANCER_CLI_PATH=\"\")

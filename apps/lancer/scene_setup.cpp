@@ -379,9 +379,9 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     const Stopwatch read;
     if (!overrides.slices.empty() || !overrides.isosurfaces.empty() || !overrides.streamlines.empty() ||
         (!overrides.clips.empty() && !overrides.colorBy.empty())) {
-      MeshWithVolume read = readMeshFileWithVolume(input, overrides.threads);
-      request.quickLookMesh = std::move(read.mesh);
-      request.quickLookVolume = std::move(read.volume);
+      MeshWithVolume withVolume = readMeshFileWithVolume(input, overrides.threads);
+      request.quickLookMesh = std::move(withVolume.mesh);
+      request.quickLookVolume = std::move(withVolume.volume);
     } else {
       request.quickLookMesh = readMeshFile(input, overrides.threads);
     }

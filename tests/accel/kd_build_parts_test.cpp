@@ -31,7 +31,7 @@ namespace {
 
 // Triangles that straddle planes in every way the clip meets: corners on the plane, edges along
 // an axis, coordinates of both signs and zero, tiny and huge.
-std::vector<std::array<Vec3, 3>> clipCases(std::mt19937& rng) {
+[[maybe_unused]] std::vector<std::array<Vec3, 3>> clipCases(std::mt19937& rng) {
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
   std::uniform_int_distribution<int> grid(-2, 2);
   std::vector<std::array<Vec3, 3>> cases;
