@@ -13,6 +13,7 @@
 #include "support/cli.hpp"
 #include "support/files.hpp"
 #include "support/golden.hpp"
+#include "support/instrumented.hpp"
 #include "support/scoped_env.hpp"
 
 namespace lancer {
@@ -64,6 +65,8 @@ TEST(Isa, BaselineKernelsDrawTheX86_64_V3Picture) {
 TEST(Isa, CliRunsOnACpuWithoutAvx2) {
   if (!kX86_64) GTEST_SKIP() << "not an x86-64 build";
   if (!qemuInstalled()) GTEST_SKIP() << "qemu-x86_64 not installed (Debian: qemu-user)";
+  // A sanitizer's shadow memory does not fit qemu-user's address space; the release build is checked.
+  if (test::kInstrumented) GTEST_SKIP() << "a sanitizer build (qemu cannot run it)";
   const auto version = test::runCli("--version", kOldCpu);
   ASSERT_EQ(version.exitCode, 0) << version.output;  // 132 (SIGILL) before the kernels had two copies
   EXPECT_TRUE(test::contains(version.output, "lancer ")) << version.output;
@@ -81,6 +84,8 @@ TEST(Isa, CliRunsOnACpuWithoutAvx2) {
 TEST(Isa, PythonModuleImportsOnACpuWithoutAvx2) {
   if (!kX86_64) GTEST_SKIP() << "not an x86-64 build";
   if (!qemuInstalled()) GTEST_SKIP() << "qemu-x86_64 not installed (Debian: qemu-user)";
+  // A sanitizer's shadow memory does not fit qemu-user's address space; the release build is checked.
+  if (test::kInstrumented) GTEST_SKIP() << "a sanitizer build (qemu cannot run it)";
   // The interpreter runs under qemu too, so the extension is loaded (its static initialisers run) and
   // used on the old CPU; a kernel crash would kill the interpreter (exit 132).
   const std::string script = "import lancer; m = lancer.read_msh(" +
