@@ -13,6 +13,7 @@
 #include <string>
 
 #include "lancer/scene/camera_placement.hpp"
+#include "lancer/scene/flat_scene.hpp"
 #include "lancer/scene/results/streamline_seeds.hpp"
 #include "lancer/scene/results/volume_views.hpp"
 #include "lancer/scene/scene.hpp"
@@ -92,6 +93,29 @@ TEST(PlanarStreamlines, TubesOfTheRadiusAskedLieOnThePlaneOnTheCamerasSide) {
     EXPECT_NEAR(near, 0.01 * c.radius, 1e-3 * c.radius) << c.camera;
     EXPECT_NEAR(far, 2.01 * c.radius, 1e-3 * c.radius) << c.camera;
   }
+}
+
+TEST(PlanarStreamlines, AFlatSceneStaysFlatAndItsOwnFieldsLinesAreWhite) {
+  const test::ScratchFolder folder;
+  const std::string path = folder.file("scene.toml");
+  // No camera: the automatic one, which sees a flat scene straight on, tubes and all.
+  std::ofstream(path) << sceneOf(square(), "",
+                                 "color_by = { field = \"temperature\" }\nstreamlines = { field = "
+                                 "\"temperature\", count = 4 }");
+  SceneDescription description;
+  const std::vector<Mesh> meshes = viewsOf(path, description);
+  ASSERT_EQ(meshes.size(), 2U);
+  EXPECT_TRUE(applyFlatSceneDefaults(description, meshes, FlatSceneChoices{}));
+  EXPECT_EQ(description.camera.projection, Projection::Orthographic);
+  EXPECT_NEAR(description.camera.viewFrom.z, 1.0, 1e-12);
+  // Over the surface painted by their own field, the tubes are one colour, white.
+  const MeshInstance& tubes = description.meshes[1];
+  EXPECT_FALSE(tubes.colorBy.has_value());
+  const Material& material = description.materials[static_cast<std::size_t>(tubes.material)];
+  EXPECT_EQ(material.kd.x, 1.0F);
+  EXPECT_EQ(material.kd.z, 1.0F);
+  // The tubes lie above z = 0, where the camera is.
+  EXPECT_GT(heightRange(meshes[1]).first, 0.0);
 }
 
 TEST(PlanarStreamlines, APixelIsTheWindowOverTheHeightAtTheTarget) {
