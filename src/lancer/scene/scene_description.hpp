@@ -200,6 +200,9 @@ struct MeshInstance {
   VolumeViews volume;  // slices, isosurfaces (results/volume_view_spec.hpp)
   // Set on an isosurface's or field lines' mesh that follows the steps of its field.
   std::shared_ptr<const VolumeViewSource> volumeSource;
+  // Set on the field lines of a flat 2D mesh: they stand off its plane by their radius, which the
+  // test for a flat scene (flat_scene.hpp) overlooks.
+  bool liesOnPlane = false;
 };
 
 // Where `[animation] label` goes in each frame.
