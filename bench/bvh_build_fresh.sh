@@ -23,14 +23,14 @@ for ((r = 0; r < repetitions; ++r)); do
     for row in bvh embree-medium; do
       [[ $row == embree-medium && $i -gt 0 ]] && continue  # Embree is the same library in both
       for threads in 1 2; do
-        "${binaries[$i]}" --benchmark_filter="^build/$row/$mesh/threads:$threads\$" \
+        "${binaries[$i]}" --benchmark_filter="^build/$row/$mesh/threads:$threads/" \
           --benchmark_out="$results/${i}_${row}_${threads}_$r.json" --benchmark_out_format=json > /dev/null 2>&1
       done
     done
   done
 done
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
-python3 - "$results" "${#binaries[@]}" <<'PY'
+/usr/bin/python3 - "$results" "${#binaries[@]}" <<'PY'
 import glob, json, statistics, sys
 folder, count = sys.argv[1], int(sys.argv[2])
 rows = {}
