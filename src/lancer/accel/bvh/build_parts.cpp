@@ -7,7 +7,7 @@
 #include <utility>
 
 #ifdef __SSE2__
-#include <immintrin.h>
+#include <emmintrin.h>
 #endif
 
 #include "lancer/util/huge_pages.hpp"
