@@ -67,9 +67,9 @@ std::vector<BuildCase> buildCases() {
   };
   BvhBuildOptions bvhSerial;
   bvhSerial.threads = 1;
-  BvhBuildOptions bvhParallelTop;  // the parallel top reaching test-sized ranges
-  bvhParallelTop.threads = 3;
-  bvhParallelTop.parallelTopAbove = 8;
+  BvhBuildOptions bvhSmallClusters;  // many clusters even in test-sized meshes: a deep top over them
+  bvhSmallClusters.threads = 3;
+  bvhSmallClusters.maxClusterReferences = 3;
   BvhBuildOptions bvhDeep = bvhSerial;  // one triangle a leaf nearly everywhere
   bvhDeep.traversalCost = 0.05f;
   BvhBuildOptions bvhWideLeaves = bvhSerial;  // leaves of eight wherever they fit
@@ -109,7 +109,7 @@ std::vector<BuildCase> buildCases() {
   KdBuildOptions bigClipped = binnedDeep;
   bigClipped.clipAboveFraction = 0.5f;
   return {{"bvh", bvh(bvhSerial)},
-          {"bvh-parallel-top", bvh(bvhParallelTop)},
+          {"bvh-small-clusters", bvh(bvhSmallClusters)},
           {"bvh-deep", bvh(bvhDeep)},
           {"bvh-wide-leaves", bvh(bvhWideLeaves)},
           {"sah", sah(serial)},

@@ -1,7 +1,8 @@
 // The default accelerator: a bounding volume hierarchy of 8-wide nodes (Wald, Benthin & Boulos 2008,
-// "Getting rid of packets"; Embree's BVH8), built by binned SAH over the faces, with the children's
-// boxes tested in one AVX2 step and leaves of pre-gathered triangles. Answers equal NaiveAccel's
-// exactly (the shared watertight test, ties to the lower face), so images equal the kd-tree's.
+// "Getting rid of packets"; Embree's BVH8), built by binned SAH over Morton-ordered clusters of faces and
+// inside them, with the children's boxes tested in one AVX2 step and leaves of pre-gathered triangles.
+// Answers equal NaiveAccel's exactly (the shared watertight test, ties to the lower face), so images equal
+// the kd-tree's.
 #pragma once
 
 #include <algorithm>
@@ -29,10 +30,11 @@ struct BvhBuildOptions {
   float intersectionCost = 1.0f;
   // Build threads; 0 uses every hardware thread. The tree does not depend on it.
   int threads = 0;
-  // Ranges of more face references than this are split in the parallel top (binning on every
-  // thread); below, whole subtrees go to the threads. 0 picks faces / (4 threads). Only the schedule
-  // changes with it, never the tree (tests set it low).
-  std::uint32_t parallelTopAbove = 0;
+  // Most face references in a cluster (1 to 512): the build sorts the faces in Morton order, cuts
+  // that order into clusters of nearby faces, builds each cluster's subtree on its own (on every
+  // thread) and the top of the tree over the clusters. Smaller clusters build faster and make a
+  // costlier tree (tests set it low to reach the top's code with few faces).
+  std::uint32_t maxClusterReferences = 512;
 };
 
 class Bvh : public TreeQueries<Bvh> {
@@ -78,7 +80,7 @@ class Bvh : public TreeQueries<Bvh> {
   const AccelStats& stats() const { return stats_; }
   const Aabb& bounds() const { return bounds_; }
 
-  // For tests: the nodes (root at 0, depth first) and the triangles in leaf order.
+  // For tests: the nodes (root at 0, every node before its children) and the triangles in leaf order.
   std::span<const BvhNode> nodes() const { return nodes_; }
   std::span<const PackedTriangle> triangles() const { return triangles_; }
   std::span<const PackedTriangle> slivers() const { return slivers_; }
