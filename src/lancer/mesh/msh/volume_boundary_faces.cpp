@@ -1,0 +1,166 @@
+// The volume elements' boundary (volume_skin.hpp): every face's key is put in the bucket of its
+// smallest node, each bucket is sorted on its own (it fits in cache), and a face whose key no other
+// face shares is skin. A radix partition by the key's first digit, then a comparison sort of small
+// ranges: both cores stream the elements' nodes once per pass, and nothing is grown by copies.
+#include <algorithm>
+#include <bit>
+#include <memory>
+
+#include "lancer/mesh/msh/volume_skin.hpp"
+#include "lancer/util/huge_pages.hpp"
+#include "lancer/util/parallel_for.hpp"
+
+namespace lancer {
+namespace {
+
+// A face's sorted corners in two words, so that comparing keys is two integer comparisons: hi holds
+// the smallest and second smallest node, lo the third and the fourth (kNoVertex for a triangle).
+struct BucketedFace {
+  std::uint64_t hi;
+  std::uint64_t lo;
+  std::uint32_t face;
+  std::uint32_t group;
+};
+
+constexpr std::size_t kElementGrain = 16384;   // elements per chunk of the counting and scatter passes
+constexpr std::size_t kFacesPerBucket = 2048;  // about 48 KiB of keys: a bucket sorts in L2
+
+inline BucketedFace bucketedFace(const int (*table)[4], int local, const std::uint32_t* nodes) {
+  std::uint32_t corner[4];
+  int count = 0;
+  for (; count < 4 && table[local][count] >= 0; ++count) corner[count] = nodes[table[local][count]];
+  const MshFaceKey key = mshFaceKey(corner, count);
+  return {(std::uint64_t{key[0]} << 32) | key[1], (std::uint64_t{key[2]} << 32) | key[3], 0, 0};
+}
+
+// Calls visit(bucketedFace, faceIndex, group) for the faces of elements [begin, end), in face order.
+template <typename Visit>
+void forEachFace(const MshVolumeElements& elements, std::uint64_t begin, std::uint64_t end, Visit&& visit) {
+  for (const MshVolumeElements::Run& run : elements.runs()) {
+    const std::uint64_t runEnd = run.firstElement + elements.elementsIn(run);
+    const std::uint64_t from = std::max(begin, run.firstElement), to = std::min(end, runEnd);
+    if (from >= to) continue;
+    const int(*table)[4] = volumeFaceCornerTable(run.type);
+    const auto faces = static_cast<std::uint64_t>(run.faceCount);
+    std::uint64_t face = run.firstFace + (from - run.firstElement) * faces;
+    for (std::uint64_t e = from; e < to; ++e) {
+      const std::uint32_t* nodes = elements.elementNodes(run, e);
+      for (int local = 0; local < run.faceCount; ++local, ++face)
+        visit(bucketedFace(table, local, nodes), face, run.group);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<VolumeBoundaryFace> findVolumeBoundary(const MshVolumeElements& elements, std::size_t nodeCount,
+                                                   std::span<const std::uint64_t> volumeOfGroup,
+                                                   bool severalVolumes, int threads) {
+  const std::uint64_t faceCount = elements.faceCount();
+  if (faceCount == 0) return {};
+  // Buckets by the smallest node's high bits: about kFacesPerBucket faces each, at most 2^16.
+  const int nodeBits = std::max(1, static_cast<int>(std::bit_width(std::max<std::size_t>(nodeCount, 1) - 1)));
+  const int bucketBits =
+      std::clamp(static_cast<int>(std::bit_width(faceCount / kFacesPerBucket)), 0, std::min(16, nodeBits));
+  const int shift = 32 + nodeBits - bucketBits;  // of hi
+  const std::size_t buckets = std::size_t{1} << bucketBits;
+  const auto bucketOf = [&](const BucketedFace& key) {
+    return static_cast<std::size_t>(std::min<std::uint64_t>(key.hi >> shift, buckets - 1));
+  };
+
+  // Counting pass: how many faces each chunk of elements puts in each bucket.
+  const ChunkPlan chunks(elements.elementCount(), kElementGrain);
+  std::vector<std::uint64_t> at(chunks.chunks * buckets, 0);  // counts, then each chunk's next slot
+  parallelChunks(chunks, threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
+    std::uint64_t* count = at.data() + k * buckets;
+    forEachFace(elements, begin, end,
+                [&](const BucketedFace& key, std::uint64_t, std::uint32_t) { ++count[bucketOf(key)]; });
+  });
+  // Bucket by bucket, chunk by chunk: each bucket holds its faces in face order.
+  std::vector<std::uint64_t> bucketStart(buckets + 1, 0);
+  std::uint64_t next = 0;
+  for (std::size_t b = 0; b < buckets; ++b) {
+    bucketStart[b] = next;
+    for (std::size_t k = 0; k < chunks.chunks; ++k) {
+      const std::uint64_t count = at[k * buckets + b];
+      at[k * buckets + b] = next;
+      next += count;
+    }
+  }
+  bucketStart[buckets] = next;
+
+  // Scatter pass: every face's key to its bucket (fresh memory, advised to huge pages first).
+  const std::unique_ptr<BucketedFace[]> keyed(new BucketedFace[faceCount]);
+  adviseHugePages(keyed.get(), faceCount * sizeof(BucketedFace));
+  parallelChunks(chunks, threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
+    std::uint64_t* slot = at.data() + k * buckets;
+    forEachFace(elements, begin, end, [&](BucketedFace key, std::uint64_t face, std::uint32_t group) {
+      key.face = static_cast<std::uint32_t>(face);
+      key.group = group;
+      keyed[slot[bucketOf(key)]++] = key;
+    });
+  });
+  at = std::vector<std::uint64_t>();
+
+  // Each bucket sorted on its own: a face alone with its key is skin (1), the kept side of an
+  // interface is marked 2 and its outer face listed; every other face is interior.
+  std::vector<std::uint8_t> mark = vectorOnHugePages<std::uint8_t>(faceCount, 0);
+  const ChunkPlan bucketChunks(buckets, 1);
+  std::vector<std::vector<VolumeBoundaryFace>> interfaces(bucketChunks.chunks);
+  parallelChunks(bucketChunks, threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
+    BucketedFace* first = keyed.get() + bucketStart[begin];
+    BucketedFace* last = keyed.get() + bucketStart[end];
+    for (std::size_t b = begin; b < end; ++b) {
+      BucketedFace* from = keyed.get() + bucketStart[b];
+      BucketedFace* to = keyed.get() + bucketStart[b + 1];
+      std::sort(from, to, [](const BucketedFace& x, const BucketedFace& y) {
+        return x.hi != y.hi ? x.hi < y.hi : x.lo < y.lo;
+      });
+    }
+    for (BucketedFace* i = first; i < last;) {
+      BucketedFace* j = i + 1;
+      while (j < last && j->hi == i->hi && j->lo == i->lo) ++j;
+      if (j == i + 1) {
+        mark[i->face] = 1;
+      } else if (severalVolumes && j == i + 2 && i->group != (i + 1)->group) {
+        const std::uint64_t volumeA = volumeOfGroup[i->group], volumeB = volumeOfGroup[(i + 1)->group];
+        if (volumeA != volumeB) {
+          const BucketedFace& kept = volumeA < volumeB ? *i : *(i + 1);
+          const BucketedFace& outer = volumeA < volumeB ? *(i + 1) : *i;
+          mark[kept.face] = 2;
+          interfaces[k].push_back({kept.face, outer.face});
+        }
+      }
+      i = j;
+    }
+  });
+
+  // The interfaces by face, then every marked face in face order (chunks count, then write).
+  std::vector<VolumeBoundaryFace> outer;
+  for (const auto& list : interfaces) outer.insert(outer.end(), list.begin(), list.end());
+  std::sort(outer.begin(), outer.end(),
+            [](const VolumeBoundaryFace& x, const VolumeBoundaryFace& y) { return x.face < y.face; });
+  const ChunkPlan faceChunks(faceCount, 65536);
+  std::vector<std::uint64_t> marked(faceChunks.chunks + 1, 0), interfacesBefore(faceChunks.chunks + 1, 0);
+  parallelChunks(faceChunks, threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      marked[k + 1] += mark[f] != 0;
+      interfacesBefore[k + 1] += mark[f] == 2;
+    }
+  });
+  for (std::size_t k = 0; k < faceChunks.chunks; ++k) {
+    marked[k + 1] += marked[k];
+    interfacesBefore[k + 1] += interfacesBefore[k];
+  }
+  std::vector<VolumeBoundaryFace> boundary(marked.back());
+  parallelChunks(faceChunks, threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
+    std::uint64_t out = marked[k], nextInterface = interfacesBefore[k];
+    for (std::size_t f = begin; f < end; ++f) {
+      if (mark[f] == 1) boundary[out++] = {static_cast<std::uint32_t>(f), kNoVertex};
+      if (mark[f] == 2) boundary[out++] = outer[nextInterface++];
+    }
+  });
+  return boundary;
+}
+
+}  // namespace lancer
