@@ -24,13 +24,26 @@ struct BucketedFace {
 
 constexpr std::size_t kElementGrain = 16384;   // elements per chunk of the counting and scatter passes
 constexpr std::size_t kFacesPerBucket = 2048;  // about 48 KiB of keys: a bucket sorts in L2
+constexpr std::size_t kSliceBytes = std::size_t{96} << 20;  // the keys sorted at a time
+
+// Sorting networks for the corners of a face (the comparisons the compiler turns into min/max).
+inline void order(std::uint32_t& a, std::uint32_t& b) {
+  const std::uint32_t low = std::min(a, b);
+  b = std::max(a, b);
+  a = low;
+}
 
 inline BucketedFace bucketedFace(const int (*table)[4], int local, const std::uint32_t* nodes) {
-  std::uint32_t corner[4];
-  int count = 0;
-  for (; count < 4 && table[local][count] >= 0; ++count) corner[count] = nodes[table[local][count]];
-  const MshFaceKey key = mshFaceKey(corner, count);
-  return {(std::uint64_t{key[0]} << 32) | key[1], (std::uint64_t{key[2]} << 32) | key[3], 0, 0};
+  const int* corners = table[local];
+  std::uint32_t a = nodes[corners[0]], b = nodes[corners[1]], c = nodes[corners[2]];
+  std::uint32_t d = kNoVertex;
+  if (corners[3] >= 0) {
+    d = nodes[corners[3]];
+    order(a, b), order(c, d), order(a, c), order(b, d), order(b, c);
+  } else {
+    order(a, b), order(b, c), order(a, b);
+  }
+  return {(std::uint64_t{a} << 32) | b, (std::uint64_t{c} << 32) | d, 0, 0};
 }
 
 // Calls visit(bucketedFace, faceIndex, group) for the faces of elements [begin, end), in face order.
@@ -89,55 +102,73 @@ std::vector<VolumeBoundaryFace> findVolumeBoundary(const MshVolumeElements& elem
   }
   bucketStart[buckets] = next;
 
-  // Scatter pass: every face's key to its bucket (fresh memory, advised to huge pages first).
-  const std::unique_ptr<BucketedFace[]> keyed(new BucketedFace[faceCount]);
-  adviseHugePages(keyed.get(), faceCount * sizeof(BucketedFace));
-  parallelChunks(chunks, threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
-    std::uint64_t* slot = at.data() + k * buckets;
-    forEachFace(elements, begin, end, [&](BucketedFace key, std::uint64_t face, std::uint32_t group) {
-      key.face = static_cast<std::uint32_t>(face);
-      key.group = group;
-      keyed[slot[bucketOf(key)]++] = key;
-    });
-  });
-  at = std::vector<std::uint64_t>();
-
-  // Each bucket sorted on its own: a face alone with its key is skin (1), the kept side of an
-  // interface is marked 2 and its outer face listed; every other face is interior.
+  // Scatter and sort, a slice of the buckets at a time: the keys of a slice fill one buffer, at most
+  // kSliceBytes, that every slice reuses (fresh memory costs more to fault in on first touch than the
+  // extra passes over the elements take). In a slice's buckets, each sorted on its own, a face alone
+  // with its key is skin (marked 1), the kept side of an interface is marked 2 and its outer face
+  // listed; every other face is interior.
+  const std::uint64_t sliceFaces =
+      std::max<std::uint64_t>(kSliceBytes / sizeof(BucketedFace), kFacesPerBucket);
+  const std::uint64_t bufferFaces = std::min(faceCount, sliceFaces);
+  const std::unique_ptr<BucketedFace[]> keyed(new BucketedFace[bufferFaces]);
+  adviseHugePages(keyed.get(), bufferFaces * sizeof(BucketedFace));
   std::vector<std::uint8_t> mark = vectorOnHugePages<std::uint8_t>(faceCount, 0);
-  const ChunkPlan bucketChunks(buckets, 1);
-  std::vector<std::vector<VolumeBoundaryFace>> interfaces(bucketChunks.chunks);
-  parallelChunks(bucketChunks, threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
-    BucketedFace* first = keyed.get() + bucketStart[begin];
-    BucketedFace* last = keyed.get() + bucketStart[end];
-    for (std::size_t b = begin; b < end; ++b) {
-      BucketedFace* from = keyed.get() + bucketStart[b];
-      BucketedFace* to = keyed.get() + bucketStart[b + 1];
-      std::sort(from, to, [](const BucketedFace& x, const BucketedFace& y) {
-        return x.hi != y.hi ? x.hi < y.hi : x.lo < y.lo;
-      });
+  std::vector<VolumeBoundaryFace> outer;
+  for (std::size_t sliceBegin = 0; sliceBegin < buckets;) {
+    std::size_t sliceEnd = sliceBegin + 1;  // whole buckets, as many as the buffer holds (one at least)
+    while (sliceEnd < buckets && bucketStart[sliceEnd + 1] - bucketStart[sliceBegin] <= bufferFaces)
+      ++sliceEnd;
+    const std::uint64_t base = bucketStart[sliceBegin];
+    // A bucket larger than the buffer (a node in a huge number of faces) gets memory of its own.
+    std::unique_ptr<BucketedFace[]> large;
+    BucketedFace* buffer = keyed.get();
+    if (bucketStart[sliceEnd] - base > bufferFaces) {
+      large.reset(new BucketedFace[bucketStart[sliceEnd] - base]);
+      buffer = large.get();
     }
-    for (BucketedFace* i = first; i < last;) {
-      BucketedFace* j = i + 1;
-      while (j < last && j->hi == i->hi && j->lo == i->lo) ++j;
-      if (j == i + 1) {
-        mark[i->face] = 1;
-      } else if (severalVolumes && j == i + 2 && i->group != (i + 1)->group) {
-        const std::uint64_t volumeA = volumeOfGroup[i->group], volumeB = volumeOfGroup[(i + 1)->group];
-        if (volumeA != volumeB) {
-          const BucketedFace& kept = volumeA < volumeB ? *i : *(i + 1);
-          const BucketedFace& outer = volumeA < volumeB ? *(i + 1) : *i;
-          mark[kept.face] = 2;
-          interfaces[k].push_back({kept.face, outer.face});
+    parallelChunks(chunks, threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
+      std::uint64_t* slot = at.data() + k * buckets;
+      forEachFace(elements, begin, end, [&](BucketedFace key, std::uint64_t face, std::uint32_t group) {
+        const std::size_t bucket = bucketOf(key);
+        if (bucket < sliceBegin || bucket >= sliceEnd) return;
+        key.face = static_cast<std::uint32_t>(face);
+        key.group = group;
+        buffer[slot[bucket]++ - base] = key;
+      });
+    });
+    const ChunkPlan bucketChunks(sliceEnd - sliceBegin, 1);
+    std::vector<std::vector<VolumeBoundaryFace>> interfaces(bucketChunks.chunks);
+    parallelChunks(bucketChunks, threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
+      for (std::size_t b = sliceBegin + begin; b < sliceBegin + end; ++b) {
+        BucketedFace* from = buffer + (bucketStart[b] - base);
+        BucketedFace* to = buffer + (bucketStart[b + 1] - base);
+        std::sort(from, to, [](const BucketedFace& x, const BucketedFace& y) {
+          return x.hi != y.hi ? x.hi < y.hi : x.lo < y.lo;
+        });
+        for (BucketedFace* i = from; i < to;) {
+          BucketedFace* j = i + 1;
+          while (j < to && j->hi == i->hi && j->lo == i->lo) ++j;
+          if (j == i + 1) {
+            mark[i->face] = 1;
+          } else if (severalVolumes && j == i + 2 && i->group != (i + 1)->group) {
+            const std::uint64_t volumeA = volumeOfGroup[i->group], volumeB = volumeOfGroup[(i + 1)->group];
+            if (volumeA != volumeB) {
+              const BucketedFace& kept = volumeA < volumeB ? *i : *(i + 1);
+              const BucketedFace& other = volumeA < volumeB ? *(i + 1) : *i;
+              mark[kept.face] = 2;
+              interfaces[k].push_back({kept.face, other.face});
+            }
+          }
+          i = j;
         }
       }
-      i = j;
-    }
-  });
+    });
+    for (const auto& list : interfaces) outer.insert(outer.end(), list.begin(), list.end());
+    sliceBegin = sliceEnd;
+  }
+  at = std::vector<std::uint64_t>();
 
   // The interfaces by face, then every marked face in face order (chunks count, then write).
-  std::vector<VolumeBoundaryFace> outer;
-  for (const auto& list : interfaces) outer.insert(outer.end(), list.begin(), list.end());
   std::sort(outer.begin(), outer.end(),
             [](const VolumeBoundaryFace& x, const VolumeBoundaryFace& y) { return x.face < y.face; });
   const ChunkPlan faceChunks(faceCount, 65536);
