@@ -24,7 +24,6 @@ struct BucketedFace {
 
 constexpr std::size_t kElementGrain = 16384;   // elements per chunk of the counting and scatter passes
 constexpr std::size_t kFacesPerBucket = 2048;  // about 48 KiB of keys: a bucket sorts in L2
-constexpr std::size_t kSliceBytes = std::size_t{96} << 20;  // the keys sorted at a time
 
 // Sorting networks for the corners of a face (the comparisons the compiler turns into min/max).
 inline void order(std::uint32_t& a, std::uint32_t& b) {
@@ -68,7 +67,7 @@ void forEachFace(const MshVolumeElements& elements, std::uint64_t begin, std::ui
 
 std::vector<VolumeBoundaryFace> findVolumeBoundary(const MshVolumeElements& elements, std::size_t nodeCount,
                                                    std::span<const std::uint64_t> volumeOfGroup,
-                                                   bool severalVolumes, int threads) {
+                                                   bool severalVolumes, int threads, std::size_t sliceBytes) {
   const std::uint64_t faceCount = elements.faceCount();
   if (faceCount == 0) return {};
   // Buckets by the smallest node's high bits: about kFacesPerBucket faces each, at most 2^16.
@@ -103,12 +102,11 @@ std::vector<VolumeBoundaryFace> findVolumeBoundary(const MshVolumeElements& elem
   bucketStart[buckets] = next;
 
   // Scatter and sort, a slice of the buckets at a time: the keys of a slice fill one buffer, at most
-  // kSliceBytes, that every slice reuses (fresh memory costs more to fault in on first touch than the
+  // sliceBytes, that every slice reuses (fresh memory costs more to fault in on first touch than the
   // extra passes over the elements take). In a slice's buckets, each sorted on its own, a face alone
   // with its key is skin (marked 1), the kept side of an interface is marked 2 and its outer face
   // listed; every other face is interior.
-  const std::uint64_t sliceFaces =
-      std::max<std::uint64_t>(kSliceBytes / sizeof(BucketedFace), kFacesPerBucket);
+  const std::uint64_t sliceFaces = std::max<std::uint64_t>(sliceBytes / sizeof(BucketedFace), 1);
   const std::uint64_t bufferFaces = std::min(faceCount, sliceFaces);
   const std::unique_ptr<BucketedFace[]> keyed(new BucketedFace[bufferFaces]);
   adviseHugePages(keyed.get(), bufferFaces * sizeof(BucketedFace));

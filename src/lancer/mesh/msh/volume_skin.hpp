@@ -129,9 +129,12 @@ struct VolumeBoundaryFace {
 // of one volume (then there are no interfaces). Ascending by `face`. The face keys are put in buckets
 // by their smallest node (one counting pass and one scatter, both on `threads` threads), and each
 // bucket, a few thousand keys that stay in cache, is sorted on its own: O(n log(n / buckets)), and
-// the same result for any thread count. `nodeCount`: the node indices are below it.
+// the same result for any thread count. `nodeCount`: the node indices are below it. The keys are
+// sorted a slice of buckets at a time in one buffer of at most `sliceBytes` (tests make it small).
+inline constexpr std::size_t kVolumeBoundarySliceBytes = std::size_t{96} << 20;
 std::vector<VolumeBoundaryFace> findVolumeBoundary(const MshVolumeElements& elements, std::size_t nodeCount,
                                                    std::span<const std::uint64_t> volumeOfGroup,
-                                                   bool severalVolumes, int threads);
+                                                   bool severalVolumes, int threads,
+                                                   std::size_t sliceBytes = kVolumeBoundarySliceBytes);
 
 }  // namespace lancer
