@@ -45,9 +45,19 @@ inline BucketedFace bucketedFace(const int (*table)[4], int local, const std::ui
   return {(std::uint64_t{a} << 32) | b, (std::uint64_t{c} << 32) | d, 0, 0};
 }
 
-// Calls visit(bucketedFace, faceIndex, group) for the faces of elements [begin, end), in face order.
-template <typename Visit>
-void forEachFace(const MshVolumeElements& elements, std::uint64_t begin, std::uint64_t end, Visit&& visit) {
+// The smallest node of face `local`: all the counting pass needs, and what tells the scatter whether
+// a face is in the slice at hand before its key is made.
+inline std::uint32_t smallestCorner(const int (*table)[4], int local, const std::uint32_t* nodes) {
+  const int* corners = table[local];
+  const std::uint32_t least = std::min({nodes[corners[0]], nodes[corners[1]], nodes[corners[2]]});
+  return corners[3] >= 0 ? std::min(least, nodes[corners[3]]) : least;
+}
+
+// For the faces of elements [begin, end), in face order: wants(smallest node) says whether the face
+// is wanted, and visit(bucketedFace, faceIndex, group) gets those that are.
+template <typename Wants, typename Visit>
+void forEachFace(const MshVolumeElements& elements, std::uint64_t begin, std::uint64_t end, Wants&& wants,
+                 Visit&& visit) {
   for (const MshVolumeElements::Run& run : elements.runs()) {
     const std::uint64_t runEnd = run.firstElement + elements.elementsIn(run);
     const std::uint64_t from = std::max(begin, run.firstElement), to = std::min(end, runEnd);
@@ -58,7 +68,8 @@ void forEachFace(const MshVolumeElements& elements, std::uint64_t begin, std::ui
     for (std::uint64_t e = from; e < to; ++e) {
       const std::uint32_t* nodes = elements.elementNodes(run, e);
       for (int local = 0; local < run.faceCount; ++local, ++face)
-        visit(bucketedFace(table, local, nodes), face, run.group);
+        if (wants(smallestCorner(table, local, nodes)))
+          visit(bucketedFace(table, local, nodes), face, run.group);
     }
   }
 }
@@ -76,8 +87,8 @@ std::vector<VolumeBoundaryFace> findVolumeBoundary(const MshVolumeElements& elem
       std::clamp(static_cast<int>(std::bit_width(faceCount / kFacesPerBucket)), 0, std::min(16, nodeBits));
   const int shift = 32 + nodeBits - bucketBits;  // of hi
   const std::size_t buckets = std::size_t{1} << bucketBits;
-  const auto bucketOf = [&](const BucketedFace& key) {
-    return static_cast<std::size_t>(std::min<std::uint64_t>(key.hi >> shift, buckets - 1));
+  const auto bucketOf = [&](std::uint32_t smallest) {
+    return static_cast<std::size_t>(std::min<std::uint64_t>(smallest >> (shift - 32), buckets - 1));
   };
 
   // Counting pass: how many faces each chunk of elements puts in each bucket.
@@ -85,8 +96,13 @@ std::vector<VolumeBoundaryFace> findVolumeBoundary(const MshVolumeElements& elem
   std::vector<std::uint64_t> at(chunks.chunks * buckets, 0);  // counts, then each chunk's next slot
   parallelChunks(chunks, threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
     std::uint64_t* count = at.data() + k * buckets;
-    forEachFace(elements, begin, end,
-                [&](const BucketedFace& key, std::uint64_t, std::uint32_t) { ++count[bucketOf(key)]; });
+    forEachFace(
+        elements, begin, end,
+        [&](std::uint32_t smallest) {
+          ++count[bucketOf(smallest)];
+          return false;
+        },
+        [](const BucketedFace&, std::uint64_t, std::uint32_t) {});
   });
   // Bucket by bucket, chunk by chunk: each bucket holds its faces in face order.
   std::vector<std::uint64_t> bucketStart(buckets + 1, 0);
@@ -126,13 +142,17 @@ std::vector<VolumeBoundaryFace> findVolumeBoundary(const MshVolumeElements& elem
     }
     parallelChunks(chunks, threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
       std::uint64_t* slot = at.data() + k * buckets;
-      forEachFace(elements, begin, end, [&](BucketedFace key, std::uint64_t face, std::uint32_t group) {
-        const std::size_t bucket = bucketOf(key);
-        if (bucket < sliceBegin || bucket >= sliceEnd) return;
-        key.face = static_cast<std::uint32_t>(face);
-        key.group = group;
-        buffer[slot[bucket]++ - base] = key;
-      });
+      forEachFace(
+          elements, begin, end,
+          [&](std::uint32_t smallest) {
+            const std::size_t bucket = bucketOf(smallest);
+            return bucket >= sliceBegin && bucket < sliceEnd;
+          },
+          [&](BucketedFace key, std::uint64_t face, std::uint32_t group) {
+            key.face = static_cast<std::uint32_t>(face);
+            key.group = group;
+            buffer[slot[bucketOf(static_cast<std::uint32_t>(key.hi >> 32))]++ - base] = key;
+          });
     });
     const ChunkPlan bucketChunks(sliceEnd - sliceBegin, 1);
     std::vector<std::vector<VolumeBoundaryFace>> interfaces(bucketChunks.chunks);
