@@ -1,12 +1,12 @@
 // A view set up in gmsh's GUI and saved with its options (tests/data/results/cantilever.msh.opt,
 // written by gmsh through scripts/make_result_fixtures.py): the displacement view drawn as the
 // deformed shape, the stress at its time step on the custom range, the hidden view left out.
-#include "lancer/scene/gmsh_post_options.hpp"
+#include "lancer/scene/results/gmsh_post_options.hpp"
 
 #include <gtest/gtest.h>
 
 #include "lancer/mesh/msh_reader.hpp"
-#include "lancer/scene/isolines.hpp"
+#include "lancer/scene/results/isolines.hpp"
 #include "lancer/scene/scene.hpp"
 #include "support/files.hpp"
 #include "support/input_errors.hpp"

@@ -10,8 +10,8 @@
 
 #include "lancer/image/legend.hpp"
 #include "lancer/scene/flat_scene.hpp"
+#include "lancer/scene/results/step_files.hpp"
 #include "lancer/scene/results/volume_views.hpp"
-#include "lancer/scene/step_files.hpp"
 #include "lancer/util/memory_budget.hpp"
 #include "lancer/util/stopwatch.hpp"
 

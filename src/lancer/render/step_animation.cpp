@@ -10,12 +10,12 @@
 #include "lancer/image/legend.hpp"
 #include "lancer/image/text.hpp"
 #include "lancer/mesh/field_steps.hpp"
-#include "lancer/scene/annotation_builder.hpp"
 #include "lancer/scene/instance_transform.hpp"
-#include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/annotation_builder.hpp"
+#include "lancer/scene/results/result_keys.hpp"
 #include "lancer/scene/results/volume_views.hpp"
+#include "lancer/scene/results/warp.hpp"
 #include "lancer/scene/scene_update.hpp"
-#include "lancer/scene/warp.hpp"
 #include "lancer/util/stopwatch.hpp"
 
 namespace lancer {

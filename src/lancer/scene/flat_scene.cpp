@@ -1,7 +1,7 @@
 #include "lancer/scene/flat_scene.hpp"
 
 #include "lancer/scene/camera_placement.hpp"
-#include "lancer/scene/warp.hpp"
+#include "lancer/scene/results/warp.hpp"
 
 namespace lancer {
 

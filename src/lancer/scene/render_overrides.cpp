@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "lancer/image/pixel_encoding.hpp"
-#include "lancer/scene/color_by.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/results/color_by.hpp"
 #include "lancer/scene/setting_checks.hpp"
 
 namespace lancer {

@@ -11,8 +11,8 @@
 #include "lancer/image/image_metadata.hpp"
 #include "lancer/image/tone_map.hpp"
 #include "lancer/math/vec3.hpp"
-#include "lancer/scene/color_by_spec.hpp"
-#include "lancer/scene/gmsh_view.hpp"
+#include "lancer/scene/results/color_by_spec.hpp"
+#include "lancer/scene/results/gmsh_view.hpp"
 #include "lancer/scene/results/volume_view_spec.hpp"
 #include "lancer/util/input_error.hpp"
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <utility>
 
-#include "lancer/scene/warp.hpp"
+#include "lancer/scene/results/warp.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {

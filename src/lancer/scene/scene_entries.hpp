@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "lancer/mesh/mesh.hpp"
-#include "lancer/scene/color_by.hpp"
+#include "lancer/scene/results/color_by.hpp"
 #include "lancer/scene/scene_description.hpp"
 
 namespace lancer {

@@ -14,12 +14,12 @@
 #include <fmt/format.h>
 
 #include "lancer/scene/animation_keys.hpp"
-#include "lancer/scene/arrows.hpp"
-#include "lancer/scene/color_by.hpp"
-#include "lancer/scene/isolines.hpp"
 #include "lancer/scene/light_loader.hpp"
 #include "lancer/scene/render_limits.hpp"
-#include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/arrows.hpp"
+#include "lancer/scene/results/color_by.hpp"
+#include "lancer/scene/results/isolines.hpp"
+#include "lancer/scene/results/result_keys.hpp"
 #include "lancer/scene/results/volume_views.hpp"
 #include "lancer/scene/scene_from_toml.hpp"
 #include "lancer/scene/suggest.hpp"

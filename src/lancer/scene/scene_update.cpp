@@ -7,10 +7,10 @@
 #include <span>
 #include <vector>
 
-#include "lancer/scene/annotation_builder.hpp"
 #include "lancer/scene/instance_transform.hpp"
+#include "lancer/scene/results/annotation_builder.hpp"
+#include "lancer/scene/results/warp.hpp"
 #include "lancer/scene/scene_entries.hpp"
-#include "lancer/scene/warp.hpp"
 #include "lancer/util/parallel_for.hpp"
 #include "lancer/util/stopwatch.hpp"
 

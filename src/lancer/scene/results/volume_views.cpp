@@ -14,8 +14,8 @@
 #include "lancer/mesh/volume/volume_cut.hpp"
 #include "lancer/mesh/volume/volume_locator.hpp"
 #include "lancer/scene/instance_transform.hpp"
-#include "lancer/scene/isolines.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/results/isolines.hpp"
 #include "lancer/scene/scene_entries.hpp"
 
 namespace lancer {

@@ -1,4 +1,4 @@
-#include "lancer/scene/annotation_builder.hpp"
+#include "lancer/scene/results/annotation_builder.hpp"
 
 #include <fmt/format.h>
 
@@ -7,9 +7,9 @@
 #include <utility>
 
 #include "lancer/image/color_map.hpp"
-#include "lancer/scene/arrows.hpp"
-#include "lancer/scene/color_by.hpp"
-#include "lancer/scene/isolines.hpp"
+#include "lancer/scene/results/arrows.hpp"
+#include "lancer/scene/results/color_by.hpp"
+#include "lancer/scene/results/isolines.hpp"
 
 namespace lancer {
 

@@ -8,8 +8,8 @@
 #include <optional>
 #include <vector>
 
-#include "lancer/scene/color_by.hpp"
-#include "lancer/scene/isolines.hpp"
+#include "lancer/scene/results/color_by.hpp"
+#include "lancer/scene/results/isolines.hpp"
 #include "lancer/scene/scene.hpp"
 
 namespace lancer {

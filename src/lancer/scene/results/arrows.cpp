@@ -1,4 +1,4 @@
-#include "lancer/scene/arrows.hpp"
+#include "lancer/scene/results/arrows.hpp"
 
 #include <fmt/format.h>
 
@@ -9,9 +9,9 @@
 #include <unordered_map>
 
 #include "lancer/mesh/field_steps.hpp"
-#include "lancer/scene/color_by.hpp"
 #include "lancer/scene/face_elements.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/results/color_by.hpp"
 
 namespace lancer {
 namespace {

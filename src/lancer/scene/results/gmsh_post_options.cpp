@@ -1,4 +1,4 @@
-#include "lancer/scene/gmsh_post_options.hpp"
+#include "lancer/scene/results/gmsh_post_options.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
