@@ -129,7 +129,8 @@ bool updateSceneAt(Scene& scene, SceneLayout& layout, const SceneDescription& de
                    CornerNormalsScratch* scratch) {
   StageTimes unused;
   StageTimes& times = timesOrNull ? *timesOrNull : unused;
-  if (layout.entries.empty() || hasArrows(description) || meshes.size() != description.meshes.size())
+  if (layout.entries.empty() || hasAnnotationMeshes(description) ||
+      meshes.size() != description.meshes.size())
     return false;
   auto warped = [&](const SceneEntryLayout& entry) {
     return !entry.undeformedCopy && description.meshes[entry.meshIndex].warp.has_value();

@@ -15,6 +15,7 @@
 #include "lancer/mesh/volume/volume_locator.hpp"
 #include "lancer/scene/instance_transform.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/results/annotation_kinds.hpp"
 #include "lancer/scene/results/isolines.hpp"
 #include "lancer/scene/scene_entries.hpp"
 
@@ -80,7 +81,7 @@ MeshInstance colouredChild(const MeshInstance& parent, const std::optional<Vec3>
                            std::vector<Material>& materials, const char* name) {
   MeshInstance child = cutInstance(parent);
   child.isolines.reset();
-  child.arrows.reset();
+  child.annotations.clear();
   child.groupMaterials.clear();  // one colour, or the field's
   if (color) {
     child.colorBy.reset();
@@ -281,7 +282,7 @@ const SourceLocation& volumeViewsWhere(const VolumeViews& views) {
 }  // namespace
 
 bool needsVolume(const SceneDescription& description, const MeshInstance& instance) {
-  if (instance.volume.any()) return true;
+  if (instance.volume.any() || annotationsSampleVolume(instance)) return true;
   if (!instance.colorBy || !instance.colorBy->paintsSurface) return false;
   const auto capped = [](const std::vector<ClipSettings>& clips) {
     return std::any_of(clips.begin(), clips.end(), [](const ClipSettings& clip) { return clip.cap; });
@@ -345,9 +346,11 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       // left off the sections, with a note, instead of failing the picture.
       MeshInstance child = cutInstance(instance);
       const auto notInVolume = [&](const std::string& field) { return volume.fieldSteps(field).empty(); };
-      for (const std::string* field : {child.colorBy ? &child.colorBy->field : nullptr,
-                                       child.isolines ? &child.isolines->field : nullptr,
-                                       child.arrows ? &child.arrows->field : nullptr}) {
+      std::vector<const std::string*> fields{child.colorBy ? &child.colorBy->field : nullptr,
+                                             child.isolines ? &child.isolines->field : nullptr};
+      for (const AnnotationSpec& annotation : child.annotations)
+        fields.push_back(&annotationField(annotation));
+      for (const std::string* field : fields) {
         if (field && notInVolume(*field))
           description.notes.push_back(formatInputWarning(
               instance.where, fmt::format("'{}' is not given inside the volume of '{}': its slices and cut "
@@ -356,7 +359,9 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       }
       if (child.colorBy && notInVolume(child.colorBy->field)) child.colorBy.reset();
       if (child.isolines && notInVolume(child.isolines->field)) child.isolines.reset();
-      if (child.arrows && notInVolume(child.arrows->field)) child.arrows.reset();
+      std::erase_if(child.annotations, [&](const AnnotationSpec& annotation) {
+        return notInVolume(annotationField(annotation));
+      });
       description.meshes.push_back(child);
       meshes.push_back(std::move(sections));
     }
@@ -432,7 +437,7 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       }
     }
 
-    if (!instance.volume.any()) continue;
+    if (!instance.volume.any() && !annotationsSampleVolume(instance)) continue;
     switch (instance.volume.skin.value_or(SkinStyle::Ghost)) {
       case SkinStyle::Shown:
         break;
