@@ -388,9 +388,9 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     const Stopwatch read;
     if (!overrides.slices.empty() || !overrides.isosurfaces.empty() || !overrides.streamlines.empty() ||
         !overrides.arrowGrid.empty() || (!overrides.clips.empty() && !overrides.colorBy.empty())) {
-      MeshWithVolume read = readMeshFileWithVolume(input, overrides.threads);
-      request.quickLookMesh = std::move(read.mesh);
-      request.quickLookVolume = std::move(read.volume);
+      MeshWithVolume withVolume = readMeshFileWithVolume(input, overrides.threads);
+      request.quickLookMesh = std::move(withVolume.mesh);
+      request.quickLookVolume = std::move(withVolume.volume);
     } else {
       request.quickLookMesh = readMeshFile(input, overrides.threads);
     }
@@ -533,8 +533,9 @@ RenderOptions commandRenderOptions(const SceneOverrides& overrides) {
 
 void addAnimationWriterOptions(CLI::App& command, AnimationOutputOptions& writer) {
   command
-      .add_option("--loop", writer.loop, "Repeats after the first showing: 0 forever (default), -1 play once")
-      ->check(CLI::Range(-1, 65535))
+      .add_option("--loop", writer.loop,
+                  fmt::format("Repeats after the first showing: 0 forever (default), -1 play once, up to {}",
+                              kMaxLoop))
       ->group(kOutputGroup);
   command.add_option("--dither", writer.dither, "GIF dithering: ordered (default), floyd-steinberg or none")
       ->check(CLI::IsMember({"none", "ordered", "floyd-steinberg"}))

@@ -15,6 +15,7 @@
 #include "lancer/accel/naive_accel.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "support/accel_test_geometry.hpp"
+#include "support/instrumented.hpp"
 
 namespace lancer {
 namespace {
@@ -145,7 +146,8 @@ void expectSameAnswers(const Soup& soup, int rayCount, std::uint32_t seed) {
     SCOPED_TRACE(build.name);
     const Built tree = build.build(soup);
     std::mt19937 rng(seed);
-    const std::vector<test::TestRay> rays = test::adversarialRays(soup, *tree.planes, rng, rayCount);
+    const std::vector<test::TestRay> rays =
+        test::adversarialRays(soup, *tree.planes, rng, test::propertyCount(rayCount));
     int failures = 0, hits = 0;
     for (const test::TestRay& r : rays) {
       Hit expected, actual;

@@ -12,13 +12,15 @@
 #include "lancer/accel/hit_filter.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/ray.hpp"
+#include "lancer/util/isa.hpp"
 
 #if defined(__AVX2__) && defined(__FMA__)
 #include <immintrin.h>
 #define LANCER_LEAF_AVX2 1
 #endif
 
-namespace lancer::accel {
+// The copy of the kernels being compiled (util/isa.hpp).
+namespace lancer::accel::inline LANCER_ISA_NS {
 
 // Relative slack of the cell decisions, against the rounding of split distances and triangle hits.
 constexpr float kSlack = 1e-6f;
@@ -191,4 +193,4 @@ inline std::uint32_t sameSignTriangles(const float* const (&tri)[8], std::uint32
 
 #endif  // LANCER_LEAF_AVX2
 
-}  // namespace lancer::accel
+}  // namespace lancer::accel::inline LANCER_ISA_NS

@@ -205,6 +205,9 @@ struct MeshInstance {
   VolumeViews volume;  // slices, isosurfaces (results/volume_view_spec.hpp)
   // Set on an isosurface's or field lines' mesh that follows the steps of its field.
   std::shared_ptr<const VolumeViewSource> volumeSource;
+  // Set on the field lines of a flat 2D mesh: they stand off its plane by their radius, which the
+  // test for a flat scene (flat_scene.hpp) overlooks.
+  bool liesOnPlane = false;
   // The mesh's volume elements, for annotations that sample them (arrows on a grid): set where the
   // volume is read (attachAnnotationVolumes), shared with the slices and caps cut from it.
   std::shared_ptr<const VolumeMesh> annotationVolume;

@@ -5,8 +5,8 @@
 #include <limits>
 #include <utility>
 
-#ifdef __SSE4_1__
-#include <immintrin.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
 #endif
 
 #include "lancer/util/huge_pages.hpp"
@@ -40,9 +40,10 @@ struct Grid {
 
 // Each axis's bins: the box and the triangles of the references whose centroid falls in each.
 struct Bins {
-#ifdef __SSE4_1__
+#ifdef __SSE2__
   // One SSE min and max per reference and axis (Embree's binner): lanes 0-2 the box, lane 3 unused
-  // (it takes the face and triangle words along, never read).
+  // (it takes the face and triangle words along, never read). SSE2 only, which every x86-64 CPU
+  // has, so the one build for every CPU (util/isa.hpp) keeps it.
   alignas(16) float lo[3][kBins][4];
   alignas(16) float hi[3][kBins][4];
   std::uint32_t triangles[3][kBins] = {};
@@ -55,6 +56,13 @@ struct Bins {
       }
     }
   }
+  // std::clamp per lane, in SSE2 (SSE4.1's min and max of 32-bit integers, by compare and select).
+  static __m128i clampBin(__m128i bin, __m128i first, __m128i last) {
+    const __m128i above = _mm_cmpgt_epi32(bin, last);
+    bin = _mm_or_si128(_mm_and_si128(above, last), _mm_andnot_si128(above, bin));
+    const __m128i below = _mm_cmpgt_epi32(first, bin);
+    return _mm_or_si128(_mm_and_si128(below, first), _mm_andnot_si128(below, bin));
+  }
   void add(const PrimRef* refs, std::size_t begin, std::size_t end, const Grid& grid) {
     static_assert(offsetof(PrimRef, face) == 3 * sizeof(float) && offsetof(PrimRef, hi) == 4 * sizeof(float));
     const __m128 origin = _mm_setr_ps(grid.origin[0], grid.origin[1], grid.origin[2], 0.0f);
@@ -64,9 +72,8 @@ struct Bins {
       const PrimRef& r = refs[i];
       const __m128 rlo = _mm_loadu_ps(r.lo), rhi = _mm_loadu_ps(r.hi);
       // Grid::bin, three axes at once: the same subtraction, product and truncation.
-      const __m128i bin = _mm_max_epi32(
-          _mm_min_epi32(_mm_cvttps_epi32(_mm_mul_ps(_mm_sub_ps(_mm_add_ps(rlo, rhi), origin), scale)), last),
-          first);
+      const __m128i bin = clampBin(
+          _mm_cvttps_epi32(_mm_mul_ps(_mm_sub_ps(_mm_add_ps(rlo, rhi), origin), scale)), first, last);
       alignas(16) int b[4];
       _mm_store_si128(reinterpret_cast<__m128i*>(b), bin);
       for (int a = 0; a < 3; ++a) {

@@ -15,6 +15,7 @@
 #include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/aabb.hpp"
 #include "lancer/mesh/mesh.hpp"
+#include "lancer/util/isa.hpp"
 
 namespace lancer {
 
@@ -43,15 +44,24 @@ class Bvh : public TreeQueries<Bvh> {
   // single rays (bvh/traversal.cpp) and packets (bvh/packet_traversal.cpp: the active lanes walk
   // the tree once together, each child box tested for every lane, each leaf triangle for the lanes
   // that reached it).
+  // Each runs the copy of the walk for the CPU (util/isa.hpp: baseline, or x86-64-v3 with AVX2).
   template <typename Filter>
-  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const;
+  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const {
+    return isa::dispatch([&](auto isa) { return closestHitOn<decltype(isa)>(ray, tMin, tMax, keeps, hit); });
+  }
   template <typename Filter>
-  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const;
+  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const {
+    return isa::dispatch([&](auto isa) { return anyHitOn<decltype(isa)>(ray, tMin, tMax, keeps); });
+  }
   template <typename Filter>
   std::uint32_t closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
-                            std::span<Hit, kPacketSize> hits) const;
+                            std::span<Hit, kPacketSize> hits) const {
+    return isa::dispatch([&](auto isa) { return closestHitsOn<decltype(isa)>(packet, active, keeps, hits); });
+  }
   template <typename Filter>
-  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
+  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const {
+    return isa::dispatch([&](auto isa) { return anyHitsOn<decltype(isa)>(packet, active, keeps); });
+  }
 
   // Refit (bvh/refit.cpp): the same faces at new `positions` (a deformed time step: same vertex
   // count, same topology), the tree kept and its boxes recomputed bottom up. Returns false, leaving
@@ -74,6 +84,17 @@ class Bvh : public TreeQueries<Bvh> {
   std::span<const PackedTriangle> slivers() const { return slivers_; }
 
  private:
+  // The walks, one instantiation per copy of the kernels (Isa: an isa:: tag).
+  template <typename Isa, typename Filter>
+  bool closestHitOn(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const;
+  template <typename Isa, typename Filter>
+  bool anyHitOn(const Ray& ray, float tMin, float tMax, const Filter& keeps) const;
+  template <typename Isa, typename Filter>
+  std::uint32_t closestHitsOn(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
+                              std::span<Hit, kPacketSize> hits) const;
+  template <typename Isa, typename Filter>
+  std::uint32_t anyHitsOn(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
+
   friend struct BvhBuilder;
 
   // The SAH cost of the tree as it stands, in the build's units (stats_.sahCost).

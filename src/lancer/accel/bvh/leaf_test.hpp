@@ -8,8 +8,10 @@
 
 #include "lancer/accel/hit_query.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
+#include "lancer/util/isa.hpp"
 
-namespace lancer::bvh {
+// The copy of the kernels being compiled (util/isa.hpp).
+namespace lancer::bvh::inline LANCER_ISA_NS {
 
 // Tests `count` (1..8) triangles; true when the query stops (any hit).
 template <typename Query>
@@ -36,4 +38,4 @@ inline bool testLeaf(const PackedTriangle* tri, std::uint32_t count, const Ray& 
   return false;
 }
 
-}  // namespace lancer::bvh
+}  // namespace lancer::bvh::inline LANCER_ISA_NS

@@ -11,8 +11,10 @@
 #include "lancer/accel/bvh/box_test.hpp"
 #include "lancer/accel/bvh/leaf_test.hpp"
 #include "lancer/accel/bvh/node.hpp"
+#include "lancer/util/isa.hpp"
 
-namespace lancer::bvh {
+// The copy of the kernels being compiled (util/isa.hpp).
+namespace lancer::bvh::inline LANCER_ISA_NS {
 
 struct StackEntry {
   std::uint32_t child;
@@ -94,4 +96,4 @@ bool walkFrom(std::uint32_t start, std::span<const BvhNode> nodes, const PackedT
   }
 }
 
-}  // namespace lancer::bvh
+}  // namespace lancer::bvh::inline LANCER_ISA_NS
