@@ -63,6 +63,7 @@ struct SceneOverrides {
   std::optional<int> isolines;     // --isolines N: lines of the --color-by field
   std::optional<int> bands;        // --bands N
   std::string arrows;              // --arrows FIELD
+  std::string arrowGrid;           // --arrow-grid NX,NY,NZ: the arrows through the volume
   std::vector<std::string> clips;  // --clip AXIS=VALUE or PX,PY,PZ,NX,NY,NZ, any number
   // Inside the volume (docs/volume.md): --slice PLANE (any number), --skin STYLE,
   // --isosurfaces FIELD[:COUNT], --isovalues V1,V2,...

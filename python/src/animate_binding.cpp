@@ -11,7 +11,7 @@
 #include "lancer/render/animation.hpp"
 #include "lancer/render/step_animation.hpp"
 #include "lancer/scene/render_limits.hpp"
-#include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/result_keys.hpp"
 #include "lancer/scene/setting_checks.hpp"
 #include "render_session.hpp"
 

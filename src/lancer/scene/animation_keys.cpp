@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "lancer/scene/render_limits.hpp"
-#include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/result_keys.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
 
 namespace lancer {

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "lancer/scene/camera_placement.hpp"
-#include "lancer/scene/warp.hpp"
+#include "lancer/scene/results/warp.hpp"
 
 namespace lancer {
 namespace {

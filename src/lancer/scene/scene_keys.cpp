@@ -29,7 +29,7 @@ constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only",
 constexpr std::array<std::string_view, 10> kColorByKeys = {"field",     "step",  "map",   "scale", "range",
                                                            "component", "title", "units", "bands", "legend"};
 constexpr std::array<std::string_view, 2> kWarpKeys = {"field", "factor"};
-constexpr std::array<std::string_view, 6> kArrowKeys = {"field", "step",   "max_count",
+constexpr std::array<std::string_view, 7> kArrowKeys = {"field", "step",   "max_count", "grid",
                                                         "scale", "length", "color"};
 constexpr std::array<std::string_view, 7> kIsolineKeys = {"field",  "step",  "component", "count",
                                                           "values", "color", "width"};

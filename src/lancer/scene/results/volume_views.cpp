@@ -15,11 +15,12 @@
 #include "lancer/mesh/volume/volume_locator.hpp"
 #include "lancer/scene/camera_placement.hpp"
 #include "lancer/scene/instance_transform.hpp"
-#include "lancer/scene/isolines.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/results/annotation_kinds.hpp"
+#include "lancer/scene/results/isolines.hpp"
 #include "lancer/scene/results/streamline_seeds.hpp"
+#include "lancer/scene/results/warp.hpp"
 #include "lancer/scene/scene_entries.hpp"
-#include "lancer/scene/warp.hpp"
 
 namespace lancer {
 namespace {
@@ -83,7 +84,7 @@ MeshInstance colouredChild(const MeshInstance& parent, const std::optional<Vec3>
                            std::vector<Material>& materials, const char* name) {
   MeshInstance child = cutInstance(parent);
   child.isolines.reset();
-  child.arrows.reset();
+  child.annotations.clear();
   child.groupMaterials.clear();  // one colour, or the field's
   if (color) {
     child.colorBy.reset();
@@ -291,7 +292,7 @@ double sideSeen(const CameraSettings& camera, const InstanceTransform& transform
 }  // namespace
 
 bool needsVolume(const SceneDescription& description, const MeshInstance& instance) {
-  if (instance.volume.any()) return true;
+  if (instance.volume.any() || annotationsSampleVolume(instance)) return true;
   if (!instance.colorBy || !instance.colorBy->paintsSurface) return false;
   const auto capped = [](const std::vector<ClipSettings>& clips) {
     return std::any_of(clips.begin(), clips.end(), [](const ClipSettings& clip) { return clip.cap; });
@@ -371,9 +372,11 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       // left off the sections, with a note, instead of failing the picture.
       MeshInstance child = cutInstance(instance);
       const auto notInVolume = [&](const std::string& field) { return volume.fieldSteps(field).empty(); };
-      for (const std::string* field : {child.colorBy ? &child.colorBy->field : nullptr,
-                                       child.isolines ? &child.isolines->field : nullptr,
-                                       child.arrows ? &child.arrows->field : nullptr}) {
+      std::vector<const std::string*> fields{child.colorBy ? &child.colorBy->field : nullptr,
+                                             child.isolines ? &child.isolines->field : nullptr};
+      for (const AnnotationSpec& annotation : child.annotations)
+        fields.push_back(&annotationField(annotation));
+      for (const std::string* field : fields) {
         if (field && notInVolume(*field))
           description.notes.push_back(formatInputWarning(
               instance.where, fmt::format("'{}' is not given inside the volume of '{}': its slices and cut "
@@ -382,7 +385,9 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       }
       if (child.colorBy && notInVolume(child.colorBy->field)) child.colorBy.reset();
       if (child.isolines && notInVolume(child.isolines->field)) child.isolines.reset();
-      if (child.arrows && notInVolume(child.arrows->field)) child.arrows.reset();
+      std::erase_if(child.annotations, [&](const AnnotationSpec& annotation) {
+        return notInVolume(annotationField(annotation));
+      });
       description.meshes.push_back(child);
       meshes.push_back(std::move(sections));
     }
@@ -467,7 +472,7 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       }
     }
 
-    if (!instance.volume.any()) continue;
+    if (!instance.volume.any() && !annotationsSampleVolume(instance)) continue;
     // A 2D domain is the picture the lines lie on: shown as it is unless asked otherwise.
     const SkinStyle skin = instance.volume.skin.value_or(planar ? SkinStyle::Shown : SkinStyle::Ghost);
     switch (skin) {

@@ -1,4 +1,4 @@
-#include "lancer/scene/color_by.hpp"
+#include "lancer/scene/results/color_by.hpp"
 
 #include <fmt/format.h>
 
