@@ -14,13 +14,6 @@
 namespace lancer {
 namespace {
 
-std::string fieldNames(const VolumeMesh& volume) {
-  std::vector<std::string> names;
-  for (const VolumeField& field : volume.fields)
-    if (std::find(names.begin(), names.end(), field.name) == names.end()) names.push_back(field.name);
-  return names.empty() ? "none" : fmt::format("{}", fmt::join(names, ", "));
-}
-
 // The steps of the field the arrows follow, checked: a vector field the volume carries.
 std::vector<const VolumeField*> arrowSteps(const ArrowSpec& spec, const VolumeMesh& volume,
                                            const std::string& file) {
@@ -35,7 +28,7 @@ std::vector<const VolumeField*> arrowSteps(const ArrowSpec& spec, const VolumeMe
     throw InputError(spec.where,
                      fmt::format("arrows field \"{}\" is not given inside the volume of '{}' (its "
                                  "fields: {})",
-                                 spec.field, file, fieldNames(volume)));
+                                 spec.field, file, volume.fieldNameList()));
   const VolumeField& first = *steps.front();
   if (first.components != 3)
     throw InputError(
