@@ -23,7 +23,7 @@ std::vector<const VolumeField*> arrowSteps(const ArrowSpec& spec, const VolumeMe
                                  "(tetrahedra, hexahedra, prisms, pyramids); leave out grid to draw "
                                  "them on the surface",
                                  file));
-  const std::vector<const VolumeField*> steps = volume.fieldSteps(spec.field);
+  std::vector<const VolumeField*> steps = volume.fieldSteps(spec.field);
   if (steps.empty())
     throw InputError(spec.where,
                      fmt::format("arrows field \"{}\" is not given inside the volume of '{}' (its "
@@ -47,6 +47,7 @@ VolumeField shownField(const ArrowSpec& spec, const VolumeMesh& volume,
     for (const VolumeField* field : steps)
       if (field->step == *step) return *field;
     std::vector<int> have;
+    have.reserve(steps.size());
     for (const VolumeField* field : steps) have.push_back(field->step);
     throw InputError(
         spec.where,
