@@ -20,7 +20,8 @@
 #endif
 
 // The copy of the kernels being compiled (util/isa.hpp).
-namespace lancer::accel::inline LANCER_ISA_NS {
+namespace lancer::accel {
+inline namespace LANCER_ISA_NS {
 
 // Relative slack of the cell decisions, against the rounding of split distances and triangle hits.
 constexpr float kSlack = 1e-6f;
@@ -193,4 +194,5 @@ inline std::uint32_t sameSignTriangles(const float* const (&tri)[8], std::uint32
 
 #endif  // LANCER_LEAF_AVX2
 
-}  // namespace lancer::accel::inline LANCER_ISA_NS
+}  // namespace LANCER_ISA_NS
+}  // namespace lancer::accel

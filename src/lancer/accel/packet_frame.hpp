@@ -19,7 +19,8 @@
 #endif
 
 // The copy of the kernels being compiled (util/isa.hpp).
-namespace lancer::accel::inline LANCER_ISA_NS {
+namespace lancer::accel {
+inline namespace LANCER_ISA_NS {
 
 #ifdef LANCER_PACKETS_AVX2
 
@@ -284,4 +285,5 @@ struct PacketAnyHit {
 
 #endif  // LANCER_PACKETS_AVX2
 
-}  // namespace lancer::accel::inline LANCER_ISA_NS
+}  // namespace LANCER_ISA_NS
+}  // namespace lancer::accel

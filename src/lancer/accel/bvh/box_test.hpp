@@ -19,7 +19,8 @@
 #endif
 
 // The copy of the kernels being compiled (util/isa.hpp).
-namespace lancer::bvh::inline LANCER_ISA_NS {
+namespace lancer::bvh {
+inline namespace LANCER_ISA_NS {
 
 // A ray as the box test wants it: per axis the origin moved by the band towards the near side
 // (nearEdge) and the far side (farEdge), so (plane - edge) * invDirection is where the ray meets
@@ -99,4 +100,5 @@ inline std::uint32_t hitChildrenScalar(const BvhNode& node, const BoxRay& r, flo
   return mask;
 }
 
-}  // namespace lancer::bvh::inline LANCER_ISA_NS
+}  // namespace LANCER_ISA_NS
+}  // namespace lancer::bvh

@@ -14,7 +14,8 @@
 #include "lancer/util/isa.hpp"
 
 // The copy of the kernels being compiled (util/isa.hpp).
-namespace lancer::bvh::inline LANCER_ISA_NS {
+namespace lancer::bvh {
+inline namespace LANCER_ISA_NS {
 
 struct StackEntry {
   std::uint32_t child;
@@ -96,4 +97,5 @@ bool walkFrom(std::uint32_t start, std::span<const BvhNode> nodes, const PackedT
   }
 }
 
-}  // namespace lancer::bvh::inline LANCER_ISA_NS
+}  // namespace LANCER_ISA_NS
+}  // namespace lancer::bvh

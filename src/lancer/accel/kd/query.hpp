@@ -9,7 +9,8 @@
 #include "lancer/util/isa.hpp"
 
 // The copy of the kernels being compiled (util/isa.hpp).
-namespace lancer::kd::inline LANCER_ISA_NS {
+namespace lancer::kd {
+inline namespace LANCER_ISA_NS {
 
 // Recently tested triangles, direct-mapped by index: neighbouring leaves share triangles (a kd leaf
 // refers to triangles, a BVH leaf holds its own).
@@ -30,4 +31,5 @@ inline std::uint32_t sameSignTriangles(const KdNode* base, const std::uint32_t* 
 
 #endif  // LANCER_LEAF_AVX2
 
-}  // namespace lancer::kd::inline LANCER_ISA_NS
+}  // namespace LANCER_ISA_NS
+}  // namespace lancer::kd
