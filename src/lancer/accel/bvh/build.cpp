@@ -194,6 +194,8 @@ struct BvhBuilder {
         const std::vector<BvhNode>& out = scratch[chunk];
         for (std::size_t c = batch + begin; c < batch + stop; ++c) {
           const ClusterSlot& slot = slots_[c];
+          if (slot.nodeCount == 0)
+            continue;  // a leaf cluster: nothing in the scratch (its data() may be null)
           BvhNode* to = bvh_.nodes_.data() + slot.firstNode;
           std::memcpy(static_cast<void*>(to), out.data() + slot.scratchStart,
                       slot.nodeCount * sizeof(BvhNode));
