@@ -10,6 +10,7 @@
 
 #include "lancer/math/vec3.hpp"
 #include "lancer/util/huge_pages.hpp"
+#include "lancer/util/prefetch.hpp"
 
 namespace lancer {
 
@@ -112,16 +113,6 @@ class PointIndex {
       while (slots_[slot] != kEmpty) slot = (slot + 1) & mask_;
       slots_[slot] = (h & kTagMask) | id;
     }
-  }
-
-  // GCC deletes a __builtin_prefetch (and the loop around it) that comes after a test whose only
-  // other effect is loads: the prefetch is no side effect to it. An asm statement is one.
-  static void prefetchLine(const void* address) {
-#if defined(__x86_64__) || defined(__i386__)
-    asm volatile("prefetcht0 %0" : : "m"(*static_cast<const char*>(address)));
-#else
-    __builtin_prefetch(address);
-#endif
   }
 
   struct Recent {
