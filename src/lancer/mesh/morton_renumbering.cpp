@@ -6,11 +6,15 @@
 #include "lancer/util/huge_pages.hpp"
 #include "lancer/util/morton_order.hpp"
 #include "lancer/util/parallel_for.hpp"
+#include "lancer/util/prefetch.hpp"
 
 namespace lancer {
 namespace {
 
 constexpr std::size_t kGrain = 1 << 15;
+// Gathers in the new order read the old arrays all over: each loop asks for the item it needs this
+// many items ahead, so that the misses overlap (the loops have nothing else to wait for).
+constexpr std::size_t kAhead = 16;
 
 using Order = std::vector<std::uint32_t>;
 
@@ -54,11 +58,61 @@ template <typename T>
 void permute(std::vector<T>& items, const Order& order, std::size_t width, int threads) {
   if (items.size() != order.size() * width) return;
   std::vector<T> permuted = vectorOnHugePages<T>(items.size());
-  parallelFor(order.size(), threads, kGrain, [&](std::size_t i) {
-    const T* from = items.data() + std::size_t(order[i]) * width;
-    std::copy(from, from + width, permuted.data() + i * width);
-  });
+  parallelChunks(ChunkPlan(order.size(), kGrain), threads,
+                 [&](std::size_t, std::size_t begin, std::size_t end) {
+                   for (std::size_t i = begin; i < end; ++i) {
+                     if (i + kAhead < end)
+                       prefetchLine(items.data() + std::size_t(order[i + kAhead]) * width);
+                     const T* from = items.data() + std::size_t(order[i]) * width;
+                     std::copy(from, from + width, permuted.data() + i * width);
+                   }
+                 });
   items.swap(permuted);
+}
+
+// A face array to gather in the new order, when it holds one item a face (optional ones may be empty).
+template <typename T>
+struct FaceArray {
+  std::vector<T>* items;
+  std::vector<T> permuted;
+  FaceArray(std::vector<T>& array, std::size_t faceCount)
+      : items(array.size() == faceCount ? &array : nullptr) {
+    if (items) permuted = vectorOnHugePages<T>(faceCount);
+  }
+  void prefetch(std::uint32_t from) const {
+    if (items) prefetchLine(items->data() + from);
+  }
+  void gather(std::size_t to, std::uint32_t from) {
+    if (items) permuted[to] = (*items)[from];
+  }
+  void finish() {
+    if (items) items->swap(permuted);
+  }
+};
+
+// The faces' tags, edge masks and volume sides in the new order, in one pass: the reads of all of
+// them for one face overlap.
+void permuteFaceArrays(Mesh& mesh, const Order& order, int threads) {
+  const std::size_t n = order.size();
+  FaceArray<std::int32_t> physical(mesh.facePhysicalTag, n), entity(mesh.faceEntityTag, n);
+  FaceArray<std::uint8_t> edges(mesh.faceEdgeMask, n);
+  FaceVolumeSides& sides = mesh.volumeSides;
+  FaceArray<FaceSide> side(sides.side, n);
+  FaceArray<std::int32_t> outerPhysical(sides.outerPhysicalTag, n), outerEntity(sides.outerEntityTag, n);
+  parallelChunks(ChunkPlan(n, kGrain), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      if (f + kAhead < end) {
+        const std::uint32_t ahead = order[f + kAhead];
+        physical.prefetch(ahead), entity.prefetch(ahead), edges.prefetch(ahead);
+        side.prefetch(ahead), outerPhysical.prefetch(ahead), outerEntity.prefetch(ahead);
+      }
+      const std::uint32_t from = order[f];
+      physical.gather(f, from), entity.gather(f, from), edges.gather(f, from);
+      side.gather(f, from), outerPhysical.gather(f, from), outerEntity.gather(f, from);
+    }
+  });
+  physical.finish(), entity.finish(), edges.finish(), side.finish(), outerPhysical.finish(),
+      outerEntity.finish();
 }
 
 // Per corner slot of the renumbered faces, the slot of the faces before that holds its value: a
@@ -119,6 +173,8 @@ MeshRenumbering renumberInMortonOrder(Mesh& mesh, int threads) {
   const std::vector<Vec3>& positions = mesh.positions;
   const std::vector<MeshFace>& faces = mesh.faces;
   std::shared_ptr<Order> faceOrder = mortonOrder(faceCount, threads, [&](std::size_t f) {
+    if (f + kAhead < faceCount)
+      for (int c = 0; c < 3; ++c) prefetchLine(positions.data() + faces[f + kAhead].vertex[c]);
     const MeshFace& face = faces[f];
     Vec3 sum{};
     const int corners = face.cornerCount();
@@ -135,10 +191,19 @@ MeshRenumbering renumberInMortonOrder(Mesh& mesh, int threads) {
               [&](std::size_t v) { newVertex[(*vertexOrder)[v]] = static_cast<std::uint32_t>(v); });
 
   std::vector<MeshFace> newFaces = vectorOnHugePages<MeshFace>(faceCount);
-  parallelFor(faceCount, threads, kGrain, [&](std::size_t f) {
-    const MeshFace& face = faces[(*faceOrder)[f]];
-    MeshFace& renumbered = newFaces[f];
-    for (int c = 0; c < face.cornerCount(); ++c) renumbered.vertex[c] = newVertex[face.vertex[c]];
+  const Order& faceFrom = *faceOrder;
+  parallelChunks(ChunkPlan(faceCount, kGrain), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      // Two steps ahead: the face, then (once it has come) its vertices' new numbers.
+      if (f + 2 * kAhead < end) prefetchLine(faces.data() + faceFrom[f + 2 * kAhead]);
+      if (f + kAhead < end) {
+        const MeshFace& ahead = faces[faceFrom[f + kAhead]];
+        for (int c = 0; c < 3; ++c) prefetchLine(newVertex.data() + ahead.vertex[c]);
+      }
+      const MeshFace& face = faces[faceFrom[f]];
+      MeshFace& renumbered = newFaces[f];
+      for (int c = 0; c < face.cornerCount(); ++c) renumbered.vertex[c] = newVertex[face.vertex[c]];
+    }
   });
   std::shared_ptr<Order> cornerOrder;
   for (const MeshField& field : mesh.fields)
@@ -150,12 +215,7 @@ MeshRenumbering renumberInMortonOrder(Mesh& mesh, int threads) {
   std::vector<MeshFace>().swap(newFaces);
   permute(mesh.positions, *vertexOrder, 1, threads);
 
-  permute(mesh.facePhysicalTag, *faceOrder, 1, threads);
-  permute(mesh.faceEntityTag, *faceOrder, 1, threads);
-  permute(mesh.faceEdgeMask, *faceOrder, 1, threads);
-  permute(mesh.volumeSides.side, *faceOrder, 1, threads);
-  permute(mesh.volumeSides.outerPhysicalTag, *faceOrder, 1, threads);
-  permute(mesh.volumeSides.outerEntityTag, *faceOrder, 1, threads);
+  permuteFaceArrays(mesh, *faceOrder, threads);
   for (MeshField& field : mesh.fields) {
     switch (field.at) {
       case FieldAt::kNode:
