@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # What renumbering a mesh in Morton order (src/lancer/mesh/morton_renumbering.hpp) buys: an older
 # binary (without it) and this one render the same gmsh-made brackets alternately, 800x600, 4 spp,
-# on 1 and 2 threads, and each run's `--timings` stages (renumber, orient, normals, accel build) and
-# summary trace time are kept, and the peak RSS (the table's "peak", MiB); medians per binary, mesh and thread count, and how much the two
-# pictures differ (faces that tie at shared edges and the last bits of smooth normals may).
+# on 1 and 2 threads, and each run's `--timings` stages (renumber, orient, normals, accel build),
+# summary trace time and peak RSS (the table's "peak", MiB) are kept; medians per binary, mesh and
+# thread count, and how much the two pictures differ (faces that tie at shared edges and the last
+# bits of smooth normals may).
 #   bench/renumber_locality.sh OLD_BINARY [build-dir] [mesh files] [rounds]
 #   e.g. bench/renumber_locality.sh /tmp/old/lancer build /tmp/bracket_1m_bin.msh,/tmp/bracket_4m_bin.msh 5
 set -euo pipefail
