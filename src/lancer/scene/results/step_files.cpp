@@ -186,12 +186,13 @@ Mesh readInstanceMesh(const MeshInstance& instance, int threads, std::shared_ptr
   Mesh mesh;
   if (volume) {
     MeshWithVolume read = readMeshFileWithVolume(instance.file, threads);
+    addViewFiles(read, instance.views);
     mesh = std::move(read.mesh);
     *volume = std::move(read.volume);
   } else {
     mesh = readMeshFile(instance.file, threads);
+    addViewFiles(mesh, instance.views);
   }
-  addViewFiles(mesh, instance.views);
   if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
     throw InputError(instance.where, fmt::format("mesh '{}' has nothing to draw: {}", instance.file, reason));
   return mesh;
