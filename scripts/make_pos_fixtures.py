@@ -31,6 +31,12 @@ volume/cube.pos, volume/cube.msh: the unit cube of tetrahedra (gmsh's Python API
     the nodes with two steps (f, then f + 10; gmsh 4.8 writes no TIME list for them, so their times are 0 and 1), "u" = (1, 2, 3) (a uniform vector), so
     that a probe, an isosurface and a field line through the .pos have closed forms; cube.msh is the
     mesh they were computed on (MSH 4.1), to put the views on.
+capacitor/v.pos, capacitor/e.pos, capacitor/capacitor.msh: the capacitor of make_volume_fixtures.sh
+    (scripts/volume_fixtures/capacitor.geo and .pro, GetDP's Lib_Electrostatics_v.pro template),
+    meshed coarser to keep the files small, and GetDP's default output, list-based views of the
+    potential v and the field e on the air's tetrahedra:
+        gmsh capacitor.geo -3 -setnumber h_plate 0.6 -setnumber h_box 2.5 -format msh22 -o capacitor.msh
+        getdp capacitor.pro -msh capacitor.msh -solve Electrostatics_v -pos Electrostatics_v
 Run: /usr/bin/python3 scripts/make_pos_fixtures.py
 """
 import os
@@ -212,6 +218,22 @@ def tet_cube(folder):
     gmsh.model.remove()
 
 
+def getdp_capacitor(folder):
+    sources = os.path.join(os.path.dirname(os.path.abspath(__file__)), "volume_fixtures")
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in ("capacitor.geo", "capacitor.pro"):
+            shutil.copy(os.path.join(sources, name), tmp)
+        shutil.copy(os.path.join(GETDP_EXAMPLES, "templates", "Lib_Electrostatics_v.pro"), tmp)
+        run(["gmsh", "capacitor.geo", "-3", "-setnumber", "h_plate", "0.6", "-setnumber", "h_box", "2.5",
+             "-format", "msh22", "-o", "capacitor.msh"], tmp)
+        run(["getdp", "capacitor.pro", "-msh", "capacitor.msh", "-solve", "Electrostatics_v", "-pos",
+             "Electrostatics_v"], tmp)
+        os.makedirs(folder, exist_ok=True)
+        shutil.copy(os.path.join(tmp, "capacitor.msh"), folder)
+        for name in ("v.pos", "e.pos"):
+            shutil.copy(os.path.join(tmp, "res", name), folder)
+
+
 def main():
     os.makedirs(ROOT, exist_ok=True)
     gmsh.initialize()
@@ -223,6 +245,7 @@ def main():
     gmsh.finalize()
     getdp_magnet(os.path.join(ROOT, "magnet"))
     getdp_heat(os.path.join(ROOT, "heat"))
+    getdp_capacitor(os.path.join(ROOT, "capacitor"))
 
 
 if __name__ == "__main__":

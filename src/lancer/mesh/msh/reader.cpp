@@ -501,11 +501,13 @@ void addViewFiles(Mesh& mesh, const std::vector<std::string>& paths) {
     const PosFile pos = readPosFile(path);
     mesh.source.warnings.insert(mesh.source.warnings.end(), pos.warnings.begin(), pos.warnings.end());
     addPosViews(mesh, pos);
+    mesh.source.viewFiles.push_back(path);
   }
   mesh.source.loadSeconds += stopwatch.seconds();
 }
 
 void addViewFiles(MeshWithVolume& read, const std::vector<std::string>& paths) {
+  if (paths.empty()) return;
   if (!read.volume || read.volume->empty()) return addViewFiles(read.mesh, paths);
   const Stopwatch stopwatch;
   auto volume = std::make_shared<VolumeMesh>(*read.volume);
@@ -514,6 +516,7 @@ void addViewFiles(MeshWithVolume& read, const std::vector<std::string>& paths) {
     read.mesh.source.warnings.insert(read.mesh.source.warnings.end(), pos.warnings.begin(),
                                      pos.warnings.end());
     addPosViews(read.mesh, pos);
+    read.mesh.source.viewFiles.push_back(path);
     addPosViews(*volume, pos);
   }
   read.volume = std::move(volume);
