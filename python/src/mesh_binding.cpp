@@ -491,7 +491,7 @@ void bindMesh(py::module_& module) {
       "view an element-node field");
   module.def("_mesh_from_elements", &meshFromElementBlocks, py::arg("points"), py::arg("blocks"),
              py::arg("group_names"), py::arg("name"), py::arg("node_fields"), py::arg("element_fields"),
-             py::arg("element_node_fields") = py::list());
+             py::arg("element_node_fields") = py::list(), py::arg("keep_volume") = false);
 }
 
 }  // namespace lancer::python

@@ -71,7 +71,8 @@ void expectCornerValues(const VolumeMesh& volume) {
 
 TEST(PosVolume, AViewsTetrahedraAreTheVolumeOfItsMergedPoints) {
   const VolumeMesh& volume = *posCube().volume;
-  const VolumeMesh& fromMsh = *readMshWithVolume(cubeMsh()).volume;
+  const std::shared_ptr<const VolumeMesh> msh = readMshWithVolume(cubeMsh()).volume;
+  const VolumeMesh& fromMsh = *msh;
   EXPECT_EQ(volume.cellCount(), fromMsh.cellCount());
   EXPECT_EQ(volume.nodes.size(), fromMsh.nodes.size());  // coincident corners are one node
   ASSERT_EQ(volume.fieldSteps("f").size(), 2U);
@@ -145,6 +146,25 @@ TEST(PosVolume, GetDPsViewsAreTheSameAloneAndOnTheirMesh) {
   // Between the plates (+1 V above, -1 V below) the field points down.
   const ProbeResult centre = probeVolume(*alone.volume, aloneLocator, {0, 0, 0}, "e", 0, "e.pos");
   EXPECT_LT(centre.values.front().values[2], 0.0F);
+}
+
+// Second-order tetrahedra, hexahedra, prisms and pyramids (tests/data/pos/second_order.pos, values
+// x + 2y + 4z + 16 step + component / 8 at every node) are cut through their corners: a linear
+// field is exact inside each.
+TEST(PosVolume, SecondOrderElementsAreTheirCorners) {
+  const std::shared_ptr<const VolumeMesh> read =
+      readMshWithVolume(test::dataFile("pos/second_order.pos")).volume;
+  const VolumeMesh& volume = *read;
+  ASSERT_EQ(volume.cellCount(), 4U);
+  EXPECT_EQ(volume.fieldNameList(), "scalar2, vector2, tensor2");
+  const VolumeLocator locator(volume);
+  for (const Vec3d& p :
+       {Vec3d{16.2, 0.2, 1.2}, Vec3d{20.3, 0.1, 1.4}, Vec3d{24.2, 0.3, 1.1}, Vec3d{28, 0.1, 1.3}}) {
+    const ProbeResult scalar = probeVolume(volume, locator, p, "scalar2", 1, "second_order.pos");
+    EXPECT_NEAR(scalar.values.front().values[0], p.x + 2 * p.y + 4 * p.z + 16, 1e-4) << p.x;
+    const ProbeResult vector = probeVolume(volume, locator, p, "vector2", 0, "second_order.pos");
+    EXPECT_NEAR(vector.values.front().values[2], p.x + 2 * p.y + 4 * p.z + 0.25, 1e-4) << p.x;
+  }
 }
 
 TEST(PosVolume, AViewOfSurfacesAloneHasNoVolume) {

@@ -46,8 +46,8 @@ def test_a_pos_view_is_a_volume():
     np.testing.assert_allclose(on_mesh.probe(points, "u"), np.tile([1, 2, 3], (40, 1)), atol=1e-6)
     mesh = lancer.read_msh(CUBE_MSH, views=[CUBE_POS])
     np.testing.assert_allclose(mesh.probe(points[:3], "f")[:, 0], linear(points[:3]), atol=4e-6)
-    image = lancer.render(mesh, color_by="f", slices="z=0.3", isosurfaces={"field": "f", "values": [3]},
-                          width=48, height=36, samples=1)
+    image = lancer.render(lancer.Scene.quick_look(mesh, color_by="f"), slices="z=0.3",
+                          isosurfaces={"field": "f", "values": [3]}, width=48, height=36, samples=1)
     assert image.shape == (36, 48, 3)
 
 
@@ -66,12 +66,13 @@ def test_a_mesh_from_arrays_keeps_its_volume(kind):
     # Element data: the value of the cell that holds the point.
     c = mesh.probe([0.1, 0.1, 0.1], "c")[0, 0]
     assert c == int(c) and 0 <= c < len(cells)
-    for keywords in ({"slices": "z=0.5", "color_by": "f"}, {"isosurfaces": "f:2"}, {"streamlines": "u:4"},
+    coloured = lancer.Scene.quick_look(mesh, color_by="f")
+    for keywords in ({"slices": "z=0.5"}, {"isosurfaces": "f:2"}, {"streamlines": "u:4"},
                      {"arrows": {"field": "u", "grid": [2, 2, 2]}}):
-        image = lancer.render(mesh, width=32, height=24, samples=1, **keywords)
+        image = lancer.render(coloured, width=32, height=24, samples=1, **keywords)
         assert image.shape == (24, 32, 3), keywords
     scene = lancer.Scene()
-    scene.add_mesh(mesh, slice=[{"point": [0, 0, 0.5], "normal": [0, 0, 1]}], color_by="f")
+    scene.add_mesh(mesh, slice=[{"point": [0, 0, 0.5], "normal": [0, 0, 1]}], color_by={"field": "f"})
     assert lancer.render(scene, width=32, height=24, samples=1).shape == (24, 32, 3)
     with pytest.raises(lancer.InputError, match="inside no volume element"):
         mesh.probe([1.5, 0.5, 0.5], "f")
