@@ -108,7 +108,7 @@ TEST(PosVolumeViews, TheCliDrawsEveryVolumeViewOfAPosFile) {
        {test::quoted(cubePos()), test::quoted(cubeMsh()) + " " + test::quoted(cubePos())})
     for (const std::string options :
          {"--color-by f --slice z=0.3 --slice x --legend right",  // docs/volume.md's
-          "--color-by f --clip y=0.5 --isosurfaces f:3 --step 1 --streamlines u:5 --arrows u --arrow-grid "
+          "--color-by f --clip y=0.5 --isosurfaces f:3 --streamlines u:5 --arrows u --arrow-grid "
           "3,3,3"}) {
       const test::CommandResult run = test::runCli(
           "render " + input + " " + options + " --width 48 --height 36 -q -o " + test::quoted(out) + " 2>&1");
