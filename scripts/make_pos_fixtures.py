@@ -27,16 +27,24 @@ heat/t.pos, heat/steps.pos, heat/heat.msh: transient heat on a plate of triangle
     t.pos: views "T" (ST, SQ) and "gradT" (VT, VQ) with every step and GetDP's TIME list after the
     elements; steps.pos: one view "T" per step, appended by the time loop (no TIME).
 volume/cube.pos, volume/cube.msh: the unit cube of tetrahedra (gmsh's Python API, mesh size 0.4) and
-    views on its tetrahedra that gmsh writes in the list format (gmsh.view.write to a .pos): "f" = x + 2y + 3z at
-    the nodes with two steps (f, then f + 10; gmsh 4.8 writes no TIME list for them, so their times are 0 and 1), "u" = (1, 2, 3) (a uniform vector), so
-    that a probe, an isosurface and a field line through the .pos have closed forms; cube.msh is the
-    mesh they were computed on (MSH 4.1), to put the views on.
+    views on its tetrahedra that gmsh writes in the list format (gmsh.view.write to a .pos):
+    "f" = x + 2y + 3z at the nodes with two steps (f, then f + 10; gmsh 4.8 writes no TIME list for
+    them, so their times are 0 and 1), "u" = (1, 2, 3) (a uniform vector), so that a probe, an
+    isosurface and a field line through the .pos have closed forms; cube.msh is the mesh they were
+    computed on (MSH 4.1), to put the views on.
 capacitor/v.pos, capacitor/e.pos, capacitor/capacitor.msh: the capacitor of make_volume_fixtures.sh
     (scripts/volume_fixtures/capacitor.geo and .pro, GetDP's Lib_Electrostatics_v.pro template),
     meshed coarser to keep the files small, and GetDP's default output, list-based views of the
     potential v and the field e on the air's tetrahedra:
         gmsh capacitor.geo -3 -setnumber h_plate 0.6 -setnumber h_box 2.5 -format msh22 -o capacitor.msh
         getdp capacitor.pro -msh capacitor.msh -solve Electrostatics_v -pos Electrostatics_v
+layers/v.pos, layers/e.pos, layers/layers.msh: two dielectric layers in a unit cube, a volume mesh
+    of two physical volumes with their interface, top and bottom as physical surfaces (layers/layers.geo,
+    layers/layers.pro, committed; GetDP's template Lib_Electrostatics_v.pro), solved exactly:
+        gmsh layers.geo -3 -format msh22 -o layers.msh
+        getdp layers.pro -msh layers.msh -solve Electrostatics_v -pos Map
+    v.pos: the potential on the tetrahedra (SS); e.pos: the field on the tetrahedra (VS) and on the
+    interface's triangles (VT, the field within them: 0).
 Run: /usr/bin/python3 scripts/make_pos_fixtures.py
 """
 import os
@@ -232,6 +240,16 @@ def getdp_capacitor(folder):
         shutil.copy(os.path.join(tmp, "capacitor.msh"), folder)
         for name in ("v.pos", "e.pos"):
             shutil.copy(os.path.join(tmp, "res", name), folder)
+def getdp_layers(folder):
+    template = os.path.join(GETDP_EXAMPLES, "templates", "Lib_Electrostatics_v.pro")
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in ("layers.geo", "layers.pro"):
+            shutil.copy(os.path.join(folder, name), tmp)
+        shutil.copy(template, tmp)
+        run(["gmsh", "layers.geo", "-3", "-format", "msh22", "-o", "layers.msh"], tmp)
+        run(["getdp", "layers.pro", "-msh", "layers.msh", "-solve", "Electrostatics_v", "-pos", "Map"], tmp)
+        for name in ("v.pos", "e.pos", "layers.msh"):
+            shutil.copy(os.path.join(tmp, name), os.path.join(folder, name))
 
 
 def main():
@@ -246,6 +264,7 @@ def main():
     getdp_magnet(os.path.join(ROOT, "magnet"))
     getdp_heat(os.path.join(ROOT, "heat"))
     getdp_capacitor(os.path.join(ROOT, "capacitor"))
+    getdp_layers(os.path.join(ROOT, "layers"))
 
 
 if __name__ == "__main__":

@@ -128,7 +128,8 @@ int drawnComponents(const PosView& view, const std::string& file) {
 
 void addPosViewSteps(Mesh& mesh, const PosView& view, int components, const PosElementTags& elements,
                      const std::vector<std::uint64_t>& faceElement,
-                     const std::vector<MshCornerNodes>& faceCornerNode, MshVolumeCapture* volume) {
+                     const std::vector<MshCornerNodes>& faceCornerNode, const MshCoveredElements& covered,
+                     MshVolumeCapture* volume) {
   const bool inVolume =
       volume && std::any_of(view.blocks.begin(), view.blocks.end(),
                             [](const PosElementBlock& block) { return block.kind.dimension == 3; });
@@ -142,10 +143,10 @@ void addPosViewSteps(Mesh& mesh, const PosView& view, int components, const PosE
     field.time = view.timesGiven ? view.times[static_cast<std::size_t>(k)] : field.step;
     if (inVolume) volume->addElementNodeField(field, stepRecords(view, k, elements, true));
     if (const auto inPlace = uniformRecords(view, k, elements)) {
-      field.values = mapElementNodeValues(*inPlace, components, faceElement, faceCornerNode);
+      field.values = mapElementNodeValues(*inPlace, components, faceElement, faceCornerNode, covered);
     } else {
-      field.values =
-          mapElementNodeValues(stepRecords(view, k, elements), components, faceElement, faceCornerNode, {});
+      field.values = mapElementNodeValues(stepRecords(view, k, elements), components, faceElement,
+                                          faceCornerNode, {}, covered);
     }
     field.ranges = componentRanges(field.values, components);
     mesh.fields.push_back(std::move(field));

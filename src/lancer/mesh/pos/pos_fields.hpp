@@ -43,10 +43,13 @@ int drawnComponents(const PosView& view, const std::string& file);
 // view's steps, in the order they come (gmsh's "Combine time steps by name", and what a GetDP time
 // loop that appends a view per step means): a step's index follows the mesh's last step of that
 // name, its time is the view's TIME value, or its step index when the view has no TIME list.
-// When `volume` is given, the steps of a view with volume elements go there too, each element's
-// corner values on the cell its tag names (the mesh's volume: slices, isosurfaces, field lines).
+// A face whose element the view gives no values takes those of the volume element it covers
+// (`covered`, may be empty: a skin face that another view's surface element made). When `volume`
+// is given, the steps of a view with volume elements go there too, each element's corner values on
+// the cell its tag names (the mesh's volume: slices, isosurfaces, field lines).
 void addPosViewSteps(Mesh& mesh, const PosView& view, int components, const PosElementTags& elements,
                      const std::vector<std::uint64_t>& faceElement,
-                     const std::vector<MshCornerNodes>& faceCornerNode, MshVolumeCapture* volume = nullptr);
+                     const std::vector<MshCornerNodes>& faceCornerNode,
+                     const MshCoveredElements& covered = {}, MshVolumeCapture* volume = nullptr);
 
 }  // namespace lancer
