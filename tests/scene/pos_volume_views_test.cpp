@@ -132,6 +132,19 @@ TEST(PosVolumeViews, ProbesGiveTheClosedForm) {
       << onMesh.output;
 }
 
+// GetDP's two dielectric layers (tests/data/pos/layers: v = 1.5 z below z = 0.5, 0.75 + 0.5 (z - 0.5)
+// above): its views put on the mesh it solved give the exact potential and the field's jump.
+TEST(PosVolumeViews, GetDPsLayersProbeToTheirClosedForm) {
+  const std::string folder = test::dataFile("pos/layers/");
+  const test::CommandResult run =
+      test::runCli("probe " + test::quoted(folder + "layers.msh") + " " + test::quoted(folder + "v.pos") +
+                   " " + test::quoted(folder + "e.pos") + " --at 0.5,0.5,0.25 --at 0.5,0.5,0.75 2>&1");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  test::expectContainsAll(run.output, {"v at (0.5, 0.5, 0.25), step 0 (t = 0): 0.375\n",
+                                       "v at (0.5, 0.5, 0.75), step 0 (t = 0): 0.875\n",
+                                       "-1.5), magnitude 1.5\n", "-0.5), magnitude 0.5\n"});
+}
+
 TEST(PosVolumeViews, WhatAViewCannotGiveExitsTwo) {
   const test::ScratchFolder folder;
   const std::string out = folder.file("out.png");
