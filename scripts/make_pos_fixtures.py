@@ -26,6 +26,18 @@ heat/t.pos, heat/steps.pos, heat/heat.msh: transient heat on a plate of triangle
         getdp heat.pro -msh heat.msh -solve Transient -pos Map
     t.pos: views "T" (ST, SQ) and "gradT" (VT, VQ) with every step and GetDP's TIME list after the
     elements; steps.pos: one view "T" per step, appended by the time loop (no TIME).
+volume/cube.pos, volume/cube.msh: the unit cube of tetrahedra (gmsh's Python API, mesh size 0.4) and
+    views on its tetrahedra that gmsh writes in the list format (gmsh.view.write to a .pos):
+    "f" = x + 2y + 3z at the nodes with two steps (f, then f + 10; gmsh 4.8 writes no TIME list for
+    them, so their times are 0 and 1), "u" = (1, 2, 3) (a uniform vector), so that a probe, an
+    isosurface and a field line through the .pos have closed forms; cube.msh is the mesh they were
+    computed on (MSH 4.1), to put the views on.
+capacitor/v.pos, capacitor/e.pos, capacitor/capacitor.msh: the capacitor of make_volume_fixtures.sh
+    (scripts/volume_fixtures/capacitor.geo and .pro, GetDP's Lib_Electrostatics_v.pro template),
+    meshed coarser to keep the files small, and GetDP's default output, list-based views of the
+    potential v and the field e on the air's tetrahedra:
+        gmsh capacitor.geo -3 -setnumber h_plate 0.6 -setnumber h_box 2.5 -format msh22 -o capacitor.msh
+        getdp capacitor.pro -msh capacitor.msh -solve Electrostatics_v -pos Electrostatics_v
 layers/v.pos, layers/e.pos, layers/layers.msh: two dielectric layers in a unit cube, a volume mesh
     of two physical volumes with their interface, top and bottom as physical surfaces (layers/layers.geo,
     layers/layers.pro, committed; GetDP's template Lib_Electrostatics_v.pro), solved exactly:
@@ -179,6 +191,55 @@ def getdp_heat(folder):
             shutil.copy(os.path.join(tmp, name), os.path.join(folder, name))
 
 
+def tet_cube(folder):
+    os.makedirs(folder, exist_ok=True)
+    gmsh.model.add("cube")
+    gmsh.model.occ.addBox(0, 0, 0, 1, 1, 1)
+    gmsh.model.occ.synchronize()
+    gmsh.option.setNumber("Mesh.MeshSizeMin", 0.4)
+    gmsh.option.setNumber("Mesh.MeshSizeMax", 0.4)
+    gmsh.option.setNumber("Mesh.RandomSeed", 1)
+    gmsh.model.mesh.generate(3)
+    gmsh.write(os.path.join(folder, "cube.msh"))
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    _, tets = gmsh.model.mesh.getElementsByType(4)
+    # The views on a model of the tetrahedra alone, as a solver prints a field on its volume region
+    # (a view on the whole model would list its points, lines and triangles too).
+    gmsh.model.add("volume")
+    volume = gmsh.model.addDiscreteEntity(3)
+    gmsh.model.mesh.addNodes(3, volume, list(tags), list(coords))
+    gmsh.model.mesh.addElementsByType(volume, 4, [], list(tets))
+    xyz = [coords[3 * i:3 * i + 3] for i in range(len(tags))]
+    f = gmsh.view.add("f")
+    for step, shift in enumerate([0.0, 10.0]):
+        gmsh.view.addModelData(f, step, "volume", "NodeData", list(tags),
+                               [[x + 2 * y + 3 * z + shift] for x, y, z in xyz])
+    u = gmsh.view.add("u")
+    gmsh.view.addModelData(u, 0, "volume", "NodeData", list(tags), [[1.0, 2.0, 3.0] for _ in xyz])
+    path = os.path.join(folder, "cube.pos")
+    gmsh.view.write(f, path)
+    gmsh.view.write(u, path, append=True)
+    gmsh.view.remove(f)
+    gmsh.view.remove(u)
+    gmsh.model.remove()
+    gmsh.model.setCurrent("cube")
+    gmsh.model.remove()
+
+
+def getdp_capacitor(folder):
+    sources = os.path.join(os.path.dirname(os.path.abspath(__file__)), "volume_fixtures")
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in ("capacitor.geo", "capacitor.pro"):
+            shutil.copy(os.path.join(sources, name), tmp)
+        shutil.copy(os.path.join(GETDP_EXAMPLES, "templates", "Lib_Electrostatics_v.pro"), tmp)
+        run(["gmsh", "capacitor.geo", "-3", "-setnumber", "h_plate", "0.6", "-setnumber", "h_box", "2.5",
+             "-format", "msh22", "-o", "capacitor.msh"], tmp)
+        run(["getdp", "capacitor.pro", "-msh", "capacitor.msh", "-solve", "Electrostatics_v", "-pos",
+             "Electrostatics_v"], tmp)
+        os.makedirs(folder, exist_ok=True)
+        shutil.copy(os.path.join(tmp, "capacitor.msh"), folder)
+        for name in ("v.pos", "e.pos"):
+            shutil.copy(os.path.join(tmp, "res", name), folder)
 def getdp_layers(folder):
     template = os.path.join(GETDP_EXAMPLES, "templates", "Lib_Electrostatics_v.pro")
     with tempfile.TemporaryDirectory() as tmp:
@@ -198,9 +259,11 @@ def main():
     gmsh_lists(os.path.join(ROOT, "gmsh_lists.pos"))
     second_order(os.path.join(ROOT, "second_order.pos"))
     old_formats(ROOT)
+    tet_cube(os.path.join(ROOT, "volume"))
     gmsh.finalize()
     getdp_magnet(os.path.join(ROOT, "magnet"))
     getdp_heat(os.path.join(ROOT, "heat"))
+    getdp_capacitor(os.path.join(ROOT, "capacitor"))
     getdp_layers(os.path.join(ROOT, "layers"))
 
 

@@ -65,6 +65,7 @@ std::string valuesText(const ProbeValue& value) {
 void addProbeCommand(CLI::App& app, CommandRunner& runner) {
   struct Options {
     std::string file;
+    std::vector<std::string> views;
     std::vector<std::string> points;
     std::string field;
     std::optional<int> step;
@@ -73,7 +74,11 @@ void addProbeCommand(CLI::App& app, CommandRunner& runner) {
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
       "probe", "The value of a volume's fields at points, interpolated in the element that holds each");
-  command->add_option("FILE", options->file, "the .msh file with volume elements and fields")->required();
+  command->add_option("FILE", options->file, "the .msh or .pos file with volume elements and fields")
+      ->required();
+  command->add_option(
+      "VIEWS", options->views,
+      "list-based .pos views to put on the file's volume (the views a solver computed on it)");
   command->add_option("--at", options->points, "a point X,Y,Z (repeat for several)")
       ->required()
       ->type_name("X,Y,Z");
@@ -85,7 +90,8 @@ void addProbeCommand(CLI::App& app, CommandRunner& runner) {
     runner = [options] {
       std::vector<Vec3d> points;
       for (const std::string& text : options->points) points.push_back(parsePoint(text));
-      const MeshWithVolume read = readMeshFileWithVolume(options->file);
+      MeshWithVolume read = readMeshFileWithVolume(options->file);
+      addViewFiles(read, options->views);
       const VolumeMesh& volume = *read.volume;
       const VolumeLocator locator(volume);
       std::string json = "[";

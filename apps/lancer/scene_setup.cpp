@@ -389,12 +389,13 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     if (!overrides.slices.empty() || !overrides.isosurfaces.empty() || !overrides.streamlines.empty() ||
         !overrides.arrowGrid.empty() || (!overrides.clips.empty() && !overrides.colorBy.empty())) {
       MeshWithVolume withVolume = readMeshFileWithVolume(input, overrides.threads);
+      addViewFiles(withVolume, overrides.views);
       request.quickLookMesh = std::move(withVolume.mesh);
       request.quickLookVolume = std::move(withVolume.volume);
     } else {
       request.quickLookMesh = readMeshFile(input, overrides.threads);
+      addViewFiles(*request.quickLookMesh, overrides.views);
     }
-    addViewFiles(*request.quickLookMesh, overrides.views);
     request.stages.add("read", read.seconds());
     if (const std::string reason = nothingToDrawReason(*request.quickLookMesh); !reason.empty())
       throw InputError(SourceLocation{input}, "nothing to draw: " + reason);

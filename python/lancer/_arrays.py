@@ -284,7 +284,8 @@ def mesh_init(self, points, cells, point_data=None, cell_data=None, *, groups=No
     """points (N, 3) float; cells an (M, 3) or (M, 4) int array of 0-based point indices (a row with
     -1 last is a triangle), meshio's list of (type, array) pairs or CellBlocks, or a dict {type:
     array} (triangles, quads, tetrahedra, hexahedra, prisms, pyramids, first and second order; lines
-    and vertices are skipped; a volume becomes its skin); point_data {name: (N,), (N, 3) or (N, 3, 3)
+    and vertices are skipped; volume cells are drawn by their skin and kept as the mesh's volume, for
+    slices, isosurfaces, field lines, grid arrows and Mesh.probe); point_data {name: (N,), (N, 3) or (N, 3, 3)
     values, or a list or (S, N, ...) array of S steps}; cell_data {name: values per cell, one array
     per cell block (meshio) or one over all cells, S steps likewise}; times: the time of each step
     (default 0, 1, 2, ...); groups (M,) physical tags (0: none); group_names {tag: name} (or meshio's

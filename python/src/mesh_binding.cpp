@@ -210,16 +210,17 @@ void rejectInfinite(const PointArray& values, int components, const std::string&
 }
 
 // _mesh_from_elements(points, blocks, group_names, name, node_fields, element_fields): for
-// lancer.from_gmsh. blocks: [(type, dimension, physical, entity, nodes, tags)], nodes 0-based,
-// nodeCount per element, tags one per element (or None); group_names: {(dimension, tag): name};
-// node_fields: [(name, components, values (N * components,)[, step, time])]; element_fields: [(name,
-// components, tags (R,), values (R * components,)[, step, time])], tags naming the blocks' elements;
-// element_node_fields: [(name, components, tags (R,), node_counts (R,), values (sum(node_counts) *
-// components,)[, step, time])], each record's values in its element's node order.
+// lancer.from_gmsh (keepVolume: also the volume elements, as mesh.volume; lancer.Mesh from arrays). blocks:
+// [(type, dimension, physical, entity, nodes, tags)], nodes 0-based, nodeCount per element, tags one per
+// element (or None); group_names: {(dimension, tag): name}; node_fields: [(name, components, values (N *
+// components,)[, step, time])]; element_fields: [(name, components, tags (R,), values (R * components,)[,
+// step, time])], tags naming the blocks' elements; element_node_fields: [(name, components, tags (R,),
+// node_counts (R,), values (sum(node_counts) * components,)[, step, time])], each record's values in its
+// element's node order.
 std::shared_ptr<Mesh> meshFromElementBlocks(const py::array& pointsIn, const py::list& blockList,
                                             const py::dict& groupNames, const std::string& name,
                                             const py::list& fieldList, const py::list& elementFieldList,
-                                            const py::list& elementNodeFieldList) {
+                                            const py::list& elementNodeFieldList, bool keepVolume = false) {
   const PointArray points = checkedPoints(pointsIn, 0);
   const std::int64_t pointCount = points.shape(0);
   std::vector<std::vector<std::uint32_t>> indices;  // the converted arrays the blocks' spans point into
@@ -335,8 +336,8 @@ std::shared_ptr<Mesh> meshFromElementBlocks(const py::array& pointsIn, const py:
   std::shared_ptr<Mesh> mesh;
   {
     py::gil_scoped_release release;
-    mesh = std::make_shared<Mesh>(
-        meshFromElements(xyz, blocks, std::move(named), name, fields, elementFields, elementNodeFields));
+    mesh = std::make_shared<Mesh>(meshFromElements(xyz, blocks, std::move(named), name, fields, elementFields,
+                                                   elementNodeFields, keepVolume));
   }
   warnUser(mesh->source.warnings, 2);
   return mesh;
@@ -422,8 +423,9 @@ void bindMesh(py::module_& module) {
       .def(py::init([](const ElementBlocksMarker&, const py::array& points, const py::list& blocks,
                        const py::dict& groupNames, const std::string& name, const py::list& nodeFields,
                        const py::list& elementFields) {
+             // Arrays with volume cells keep them: the mesh can be sliced and probed inside.
              return meshFromElementBlocks(points, blocks, groupNames, name, nodeFields, elementFields,
-                                          py::list());
+                                          py::list(), true);
            }),
            py::arg("marker"), py::arg("points"), py::arg("blocks"), py::arg("group_names"), py::arg("name"),
            py::arg("node_fields"), py::arg("element_fields"))
@@ -489,7 +491,7 @@ void bindMesh(py::module_& module) {
       "view an element-node field");
   module.def("_mesh_from_elements", &meshFromElementBlocks, py::arg("points"), py::arg("blocks"),
              py::arg("group_names"), py::arg("name"), py::arg("node_fields"), py::arg("element_fields"),
-             py::arg("element_node_fields") = py::list());
+             py::arg("element_node_fields") = py::list(), py::arg("keep_volume") = false);
 }
 
 }  // namespace lancer::python

@@ -29,13 +29,31 @@ struct PythonVolume {
   std::unique_ptr<VolumeLocator> locator;
 };
 
-std::shared_ptr<PythonVolume> readVolume(const std::string& path, int threads) {
+std::shared_ptr<PythonVolume> readVolume(const std::string& path, int threads,
+                                         const std::vector<std::string>& views) {
   requireThreads(threads);
   py::gil_scoped_release release;
   auto result = std::make_shared<PythonVolume>();
   result->path = path;
-  result->volume = readMeshFileWithVolume(path, threads).volume;
+  MeshWithVolume read = readMeshFileWithVolume(path, threads);
+  addViewFiles(read, views);
+  result->volume = std::move(read.volume);
   result->locator = std::make_unique<VolumeLocator>(*result->volume);
+  return result;
+}
+
+// Mesh.volume: the volume it was made with (arrays), or its file's read again (with the views
+// read_msh put on it); None for a mesh made without volume cells.
+std::shared_ptr<PythonVolume> volumeOfMesh(const Mesh& mesh) {
+  if (!mesh.volume && mesh.source.fileBytes == 0) return nullptr;
+  if (!mesh.volume) return readVolume(mesh.source.path, 0, mesh.source.viewFiles);
+  auto result = std::make_shared<PythonVolume>();
+  result->path = mesh.source.path;
+  result->volume = mesh.volume;
+  {
+    py::gil_scoped_release release;
+    result->locator = std::make_unique<VolumeLocator>(*result->volume);
+  }
   return result;
 }
 
@@ -84,22 +102,25 @@ std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene,
   const MeshInstance& instance = applied.meshes.front();
   if (!needsVolume(applied, instance)) return nullptr;
   const Mesh& mesh = *scene.quickLookMesh;
+  if (mesh.volume) return mesh.volume;  // made from arrays with its volume cells
   if (mesh.source.fileBytes == 0) {
-    // Made from arrays or by gmsh: the faces are all there is. Coloured caps then stay flat; field
-    // lines alone are traced across the faces when they are flat (a 2D model).
+    // Made from arrays of faces or by gmsh: the faces are all there is. Coloured caps then stay
+    // flat; field lines alone are traced across the faces when they are flat (a 2D model).
     if (!instance.volume.any()) return nullptr;
     if (instance.volume.slices.empty() && !instance.volume.isosurfaces)
       return std::make_shared<const VolumeMesh>();
     throw InputError(
         volumeKeyword(overrides),
         fmt::format("'{}' has no volume elements (tetrahedra, hexahedra, prisms, pyramids): a mesh "
-                    "made from arrays or by gmsh is its surface alone; read the .msh file with "
+                    "made from arrays without volume cells, or by gmsh, is its surface alone; give "
+                    "lancer.Mesh its tetrahedra (cells={{'tetra': ...}}) or read the .msh file with "
                     "lancer.read_msh to draw slices, isosurfaces or field lines inside it",
                     mesh.source.path));
   }
   const std::lock_guard<std::mutex> lock(scene.quickLookVolume->mutex);
   if (!scene.quickLookVolume->volume) {
     MeshWithVolume read = readMeshFileWithVolume(mesh.source.path, threads);
+    addViewFiles(read, mesh.source.viewFiles);  // read_msh's views= inside the volume too
     // The volume must be the one under the Mesh's surface.
     if (read.mesh.faces.size() != mesh.faces.size() || read.mesh.positions.size() != mesh.positions.size())
       throw InputError(
@@ -138,8 +159,29 @@ void bindVolume(py::module_& module) {
                            v.volume->nodes.size());
       });
   module.def("read_volume", &readVolume, py::arg("path"), py::arg("threads") = 0,
-             "Reads the volume elements of a gmsh .msh file and the fields inside them, for probes "
-             "(threads: for the assembly, 0: every core)");
+             py::arg("views") = std::vector<std::string>{},
+             "Reads the volume elements of a gmsh .msh file or a list-based .pos view and the fields inside "
+             "them, for probes (threads: for the assembly, 0: every core; views: .pos files put on the "
+             "volume, as read_msh's views=)");
+  auto mesh = py::reinterpret_borrow<py::class_<Mesh, std::shared_ptr<Mesh>>>(module.attr("Mesh"));
+  mesh.def_property_readonly(
+          "volume", &volumeOfMesh,
+          "the volume elements and the fields inside them (a lancer.Volume): those the mesh was made with "
+          "from arrays, or those of the file it was read from (read again at each call); None for a mesh "
+          "made without volume cells")
+      .def(
+          "probe",
+          [](const Mesh& self, const py::object& points, const std::string& field, std::optional<int> step) {
+            const std::shared_ptr<PythonVolume> volume = volumeOfMesh(self);
+            if (!volume)
+              throw InputError(SourceLocation{self.source.path},
+                               "the mesh has no volume elements (tetrahedra, hexahedra, prisms, pyramids) "
+                               "to probe inside: make it with its volume cells");
+            return probe(*volume, points, field, step);
+          },
+          py::arg("points"), py::arg("field"), py::arg("step") = py::none(),
+          "Mesh.volume.probe: the field's values at points ((N, 3) or one point), interpolated in the "
+          "element that holds each, (N, components) float64");
 }
 
 }  // namespace lancer::python

@@ -135,7 +135,7 @@ def test_loads_errors_name_string_and_line():
 def test_a_mesh_in_memory_cannot_draw_inside_a_volume_and_a_quick_look_cannot_change():
     scene = lancer.Scene()
     scene.add_mesh(lancer.read_msh(BRACKET), slice=[{"point": [0, 0, 0], "normal": [0, 0, 1]}])
-    with pytest.raises(lancer.InputError, match="is a mesh in memory, its surface alone"):
+    with pytest.raises(lancer.InputError, match="is a mesh in memory without volume elements"):
         lancer.render(scene, width=16, height=16)
     with pytest.raises(ValueError, match="a quick look is the scene of one mesh"):
         lancer.Scene.quick_look(lancer.read_msh(BRACKET)).add_light(type="point", position=[0, 0, 1])

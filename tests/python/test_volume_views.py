@@ -178,7 +178,8 @@ def test_a_mesh_without_volume_elements_says_so():
         lancer.render(lancer.read_msh(SPHERE_SKIN), streamlines="u", **SIZE)
     arrays = lancer.Mesh(np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]]), np.array([[0, 1, 2]]))
     with pytest.raises(lancer.InputError, match="^isosurfaces: error: '<arrays>' has no volume elements .*a mesh made "
-                                                "from arrays or by gmsh is its surface alone; read the .msh file with "
+                                                "from arrays without volume cells, or by gmsh, is its surface alone; "
+                                                "give lancer.Mesh its tetrahedra .* or read the .msh file with "
                                                 "lancer.read_msh"):
         lancer.render(arrays, isosurfaces="v", **SIZE)
 

@@ -77,7 +77,8 @@ TEST(ReadSceneMeshes, AGivenMeshHasNoVolumeToSlice) {
     readSceneMeshes(description, 1, nullptr, nullptr, meshes);
     FAIL() << "no error";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("is a mesh in memory, its surface alone"), std::string::npos)
+    EXPECT_NE(std::string(error.what()).find("is a mesh in memory without volume elements"),
+              std::string::npos)
         << error.what();
   }
 }

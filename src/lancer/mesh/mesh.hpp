@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +20,8 @@ namespace lancer {
 inline constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;
 
 // A face is a triangle (vertex[3] == kNoVertex) or a quad, vertices in the file's winding order.
+struct VolumeMesh;
+
 struct MeshFace {
   std::uint32_t vertex[4] = {kNoVertex, kNoVertex, kNoVertex, kNoVertex};
 
@@ -101,6 +104,9 @@ struct MeshSourceInfo {
   // Sections read past because drawing needs nothing from them ($Periodic, $InterpolationScheme,
   // $Comments, an unknown one), by name, with how many times each came: `lancer info` lists them.
   std::map<std::string, std::uint32_t> skippedSections;
+  // The list-based .pos files put on the mesh after it was read (addViewFiles), in order: a volume
+  // read again from `path` later gets them too.
+  std::vector<std::string> viewFiles;
   double loadSeconds = 0;
 };
 
@@ -122,6 +128,10 @@ struct Mesh {
   std::vector<ExtraPhysicalGroups> extraPhysicalGroups;  // empty unless an entity has several groups
   std::vector<MeshField> fields;  // $NodeData then $ElementData steps, each in file order
   MeshSourceInfo source;
+  // The volume elements and their fields of a mesh made in memory with them (lancer.Mesh from
+  // arrays of tetrahedra, ...): slices, isosurfaces, field lines and probes draw from it. Null for a
+  // mesh read from a file, whose volume is read from the file when a picture needs it.
+  std::shared_ptr<const VolumeMesh> volume;
 
   std::size_t faceCount() const { return faces.size(); }
   Vec3d worldPosition(std::uint32_t vertex) const { return origin + toDouble(positions[vertex]); }

@@ -2,6 +2,7 @@
 
 #include "lancer/mesh/msh/element_types.hpp"
 #include "lancer/mesh/msh/mesh_assembler.hpp"
+#include "lancer/mesh/msh/volume_capture.hpp"
 #include "lancer/util/huge_pages.hpp"
 #include "lancer/util/stopwatch.hpp"
 
@@ -15,7 +16,7 @@ Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBloc
                       std::vector<PhysicalGroup> namedGroups, const std::string& name,
                       std::span<const NodeFieldInput> nodeFields,
                       std::span<const ElementFieldInput> elementFields,
-                      std::span<const ElementNodeFieldInput> elementNodeFields) {
+                      std::span<const ElementNodeFieldInput> elementNodeFields, bool keepVolume) {
   const Stopwatch stopwatch;
   MshMeshAssembler assembler;
   // Tags 1..N, as gmsh numbers nodes: every node counts as one the caller gave (for node fields).
@@ -37,6 +38,7 @@ Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBloc
   assembler.reserveFaces(faceEstimate);
   // Faces remember their element only when a field needs it (8 bytes a face), as in the reader.
   if (!elementFields.empty() || !elementNodeFields.empty()) assembler.trackElements();
+  if (keepVolume) assembler.keepVolume();
   for (const ElementBlock& block : blocks) {
     const auto nodeCount = static_cast<std::size_t>(elementNodeCount(block.type));
     if (nodeCount == 0) continue;  // the caller checked the types; an unknown one has no nodes to read
@@ -86,6 +88,7 @@ Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBloc
   source.path = name;
   source.nodeCount = points.size();
   Mesh mesh = assembler.finish(std::move(source), std::move(namedGroups));
+  if (keepVolume && !assembler.volumeCapture()->empty()) mesh.volume = assembler.volumeCapture()->take();
   mesh.source.loadSeconds = stopwatch.seconds();
   return mesh;
 }

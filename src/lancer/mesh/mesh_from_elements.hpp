@@ -59,12 +59,14 @@ struct ElementNodeFieldInput {
 };
 
 // The caller has checked the input (finite coordinates, indices below points.size(), known types
-// with whole elements): this trusts it. `name` is the mesh's name in messages.
+// with whole elements): this trusts it. `name` is the mesh's name in messages. keepVolume: the
+// volume elements and the fields' values inside them are kept as mesh.volume too (null when there
+// are none), for slices, isosurfaces, field lines and probes of a mesh made in memory.
 Mesh meshFromElements(std::span<const Vec3d> points, std::span<const ElementBlock> blocks,
                       std::vector<PhysicalGroup> namedGroups, const std::string& name,
                       std::span<const NodeFieldInput> nodeFields = {},
                       std::span<const ElementFieldInput> elementFields = {},
-                      std::span<const ElementNodeFieldInput> elementNodeFields = {});
+                      std::span<const ElementNodeFieldInput> elementNodeFields = {}, bool keepVolume = false);
 
 // Triangles and quads already made, with a physical and an entity tag per face (lancer.Mesh from
 // numpy arrays): the same mesh as the elements would give, without going element by element.

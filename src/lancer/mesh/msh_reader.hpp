@@ -35,8 +35,9 @@ std::uint64_t defaultResidentFieldBytes();
 
 // The mesh and its volume elements with the fields inside them (mesh/volume/volume_mesh.hpp), for
 // slices, isosurfaces, field lines and probes. The volume is empty when the file has no volume
-// elements; a list-based .pos view gives none (its elements are read as the mesh). Every step is
-// kept in memory.
+// elements; a list-based .pos view gives the volume elements of its views, each view with volume
+// elements an element-node field on them (meshFromPos, mesh/pos/pos_mesh.hpp). Every step is kept
+// in memory.
 struct MeshWithVolume {
   Mesh mesh;
   std::shared_ptr<const VolumeMesh> volume;
@@ -54,5 +55,8 @@ bool isViewFile(const std::string& path);
 // element-node field, by matching element coordinates (mesh/pos/pos_on_mesh.hpp). The time it takes
 // is added to mesh.source.loadSeconds.
 void addViewFiles(Mesh& mesh, const std::vector<std::string>& paths);
+// The same on a mesh and its volume: each view with volume elements also becomes a field of the
+// volume, on the cells whose corners are its elements' (mesh/pos/pos_on_volume.hpp).
+void addViewFiles(MeshWithVolume& read, const std::vector<std::string>& paths);
 
 }  // namespace lancer

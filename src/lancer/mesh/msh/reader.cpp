@@ -25,6 +25,7 @@
 #include "lancer/mesh/pos/pos_file_kind.hpp"
 #include "lancer/mesh/pos/pos_mesh.hpp"
 #include "lancer/mesh/pos/pos_on_mesh.hpp"
+#include "lancer/mesh/pos/pos_on_volume.hpp"
 #include "lancer/util/input_error.hpp"
 #include "lancer/util/mapped_file.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -397,7 +398,7 @@ Mesh readBytes(std::span<const char> bytes, const std::string& name, const ByteS
     source.format = "pos";
     source.fileBytes = byteSource.fileBytes;
     const PosFile pos = readPosFromMemory(bytes, name, threads);
-    Mesh mesh = meshFromPos(pos, std::move(source), threads);
+    Mesh mesh = meshFromPos(pos, std::move(source), threads, volume);
     mesh.source.warnings.insert(mesh.source.warnings.begin(), pos.warnings.begin(), pos.warnings.end());
     return mesh;
   }
@@ -501,8 +502,26 @@ void addViewFiles(Mesh& mesh, const std::vector<std::string>& paths) {
     const PosFile pos = readPosFile(path);
     mesh.source.warnings.insert(mesh.source.warnings.end(), pos.warnings.begin(), pos.warnings.end());
     addPosViews(mesh, pos);
+    mesh.source.viewFiles.push_back(path);
   }
   mesh.source.loadSeconds += stopwatch.seconds();
+}
+
+void addViewFiles(MeshWithVolume& read, const std::vector<std::string>& paths) {
+  if (paths.empty()) return;
+  if (!read.volume || read.volume->empty()) return addViewFiles(read.mesh, paths);
+  const Stopwatch stopwatch;
+  auto volume = std::make_shared<VolumeMesh>(*read.volume);
+  for (const std::string& path : paths) {
+    const PosFile pos = readPosFile(path);
+    read.mesh.source.warnings.insert(read.mesh.source.warnings.end(), pos.warnings.begin(),
+                                     pos.warnings.end());
+    addPosViews(read.mesh, pos);
+    read.mesh.source.viewFiles.push_back(path);
+    addPosViews(*volume, pos);
+  }
+  read.volume = std::move(volume);
+  read.mesh.source.loadSeconds += stopwatch.seconds();
 }
 
 }  // namespace lancer

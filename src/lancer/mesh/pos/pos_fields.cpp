@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "lancer/mesh/field_steps.hpp"
+#include "lancer/mesh/msh/volume_capture.hpp"
 
 namespace lancer {
 namespace {
@@ -22,12 +23,17 @@ int nextStepIndex(const std::vector<MeshField>& fields, const std::string& name)
   return next;
 }
 
-// The records of one step: per drawn element with a tag, its values at its nodes in the known order.
-ElementNodeRecords stepRecords(const PosView& view, int step, const PosElementTags& elements) {
+// The records of one step: per drawn element with a tag, its values at its nodes in the known order;
+// only the volume elements' when volumeOnly.
+ElementNodeRecords stepRecords(const PosView& view, int step, const PosElementTags& elements,
+                               bool volumeOnly = false) {
+  const auto kept = [volumeOnly](const PosElementBlock& block) {
+    return drawnBlock(block) && (!volumeOnly || block.kind.dimension == 3);
+  };
   ElementNodeRecords records;
   std::size_t count = 0, values = 0;
   for (const PosElementBlock& block : view.blocks) {
-    if (!drawnBlock(block)) continue;
+    if (!kept(block)) continue;
     count += block.elementCount();
     values += block.elementCount() * static_cast<std::size_t>(block.kind.nodes * block.kind.components);
   }
@@ -37,7 +43,7 @@ ElementNodeRecords stepRecords(const PosView& view, int step, const PosElementTa
   records.values.resize(values);
   std::size_t element = 0, next = 0;
   for (const PosElementBlock& block : view.blocks) {
-    if (!drawnBlock(block)) {
+    if (!kept(block)) {
       element += block.elementCount();
       continue;
     }
@@ -122,7 +128,11 @@ int drawnComponents(const PosView& view, const std::string& file) {
 
 void addPosViewSteps(Mesh& mesh, const PosView& view, int components, const PosElementTags& elements,
                      const std::vector<std::uint64_t>& faceElement,
-                     const std::vector<MshCornerNodes>& faceCornerNode, const MshCoveredElements& covered) {
+                     const std::vector<MshCornerNodes>& faceCornerNode, const MshCoveredElements& covered,
+                     MshVolumeCapture* volume) {
+  const bool inVolume =
+      volume && std::any_of(view.blocks.begin(), view.blocks.end(),
+                            [](const PosElementBlock& block) { return block.kind.dimension == 3; });
   const int firstStep = nextStepIndex(mesh.fields, view.name);
   for (int k = 0; k < view.stepCount; ++k) {
     MeshField field;
@@ -131,6 +141,7 @@ void addPosViewSteps(Mesh& mesh, const PosView& view, int components, const PosE
     field.components = components;
     field.step = firstStep + k;
     field.time = view.timesGiven ? view.times[static_cast<std::size_t>(k)] : field.step;
+    if (inVolume) volume->addElementNodeField(field, stepRecords(view, k, elements, true));
     if (const auto inPlace = uniformRecords(view, k, elements)) {
       field.values = mapElementNodeValues(*inPlace, components, faceElement, faceCornerNode, covered);
     } else {

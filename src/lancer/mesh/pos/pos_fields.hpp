@@ -13,6 +13,8 @@
 
 namespace lancer {
 
+class MshVolumeCapture;
+
 // Where a view's elements stand among the faces' elements: per element of the view (its blocks in
 // order, their elements in order), the tag of the element its faces remember (0: none: a point, a
 // line, or an element no face came from), and, where the element lists its nodes in another order
@@ -42,10 +44,12 @@ int drawnComponents(const PosView& view, const std::string& file);
 // loop that appends a view per step means): a step's index follows the mesh's last step of that
 // name, its time is the view's TIME value, or its step index when the view has no TIME list.
 // A face whose element the view gives no values takes those of the volume element it covers
-// (`covered`, may be empty: a skin face that another view's surface element made).
+// (`covered`, may be empty: a skin face that another view's surface element made). When `volume`
+// is given, the steps of a view with volume elements go there too, each element's corner values on
+// the cell its tag names (the mesh's volume: slices, isosurfaces, field lines).
 void addPosViewSteps(Mesh& mesh, const PosView& view, int components, const PosElementTags& elements,
                      const std::vector<std::uint64_t>& faceElement,
                      const std::vector<MshCornerNodes>& faceCornerNode,
-                     const MshCoveredElements& covered = {});
+                     const MshCoveredElements& covered = {}, MshVolumeCapture* volume = nullptr);
 
 }  // namespace lancer

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "lancer/mesh/msh/mesh_assembler.hpp"
+#include "lancer/mesh/msh/volume_capture.hpp"
 #include "lancer/mesh/pos/point_index.hpp"
 #include "lancer/mesh/pos/pos_fields.hpp"
 
@@ -96,7 +97,8 @@ bool nodeOrder(const std::uint32_t* nodes, const std::uint32_t* kept, int count,
 
 }  // namespace
 
-Mesh meshFromPos(const PosFile& pos, MeshSourceInfo source, int threads) {
+Mesh meshFromPos(const PosFile& pos, MeshSourceInfo source, int threads,
+                 std::shared_ptr<const VolumeMesh>* volume) {
   // A view whose elements are an earlier view's, in the same order at the same coordinates (the
   // views of one GetDP Print region, of one gmsh mesh), takes that view's tags; elements are
   // matched one by one (ElementIndex) only when some view lists other elements than the first.
@@ -119,6 +121,7 @@ Mesh meshFromPos(const PosFile& pos, MeshSourceInfo source, int threads) {
   assembler.setThreads(threads);
   assembler.trackElements();
   assembler.keepFieldMapping();
+  if (volume) assembler.keepVolume();
   assembler.reserveFaces(faceEstimate);
   // A triangle mesh has about a sixth as many nodes as node references: the table grows if not.
   PointIndex<double> points(nodeRefs / 6);
@@ -177,10 +180,12 @@ Mesh meshFromPos(const PosFile& pos, MeshSourceInfo source, int threads) {
   assembler.nodes.coords() = std::move(points.points());
   Mesh mesh = assembler.finish(std::move(source), {});
   const std::shared_ptr<MshFieldMapping> mapping = assembler.takeFieldMapping();
+  const std::shared_ptr<MshVolumeCapture> capture = assembler.volumeCapture();
   for (std::size_t v = 0; v < pos.views.size(); ++v)
     if (components[v] != 0)
       addPosViewSteps(mesh, pos.views[v], components[v], tags[v], mapping->faceElement,
-                      mapping->faceCornerNode, mapping->covered);
+                      mapping->faceCornerNode, mapping->covered, capture.get());
+  if (volume) *volume = capture->take();
   return mesh;
 }
 

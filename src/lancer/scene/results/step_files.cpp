@@ -186,31 +186,38 @@ Mesh readInstanceMesh(const MeshInstance& instance, int threads, std::shared_ptr
   Mesh mesh;
   if (volume) {
     MeshWithVolume read = readMeshFileWithVolume(instance.file, threads);
+    addViewFiles(read, instance.views);
     mesh = std::move(read.mesh);
     *volume = std::move(read.volume);
   } else {
     mesh = readMeshFile(instance.file, threads);
+    addViewFiles(mesh, instance.views);
   }
-  addViewFiles(mesh, instance.views);
   if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
     throw InputError(instance.where, fmt::format("mesh '{}' has nothing to draw: {}", instance.file, reason));
   return mesh;
 }
 
-// A mesh the caller holds in memory, in place of a file: its views added, and no volume (its faces
-// are all there is; coloured caps stay flat, volume views cannot be drawn).
-Mesh givenInstanceMesh(const MeshInstance& instance, const Mesh& given) {
-  if (instance.volume.any())
+// A mesh the caller holds in memory, in place of a file: its views added, and its volume when it
+// was made with one (lancer.Mesh from arrays of tetrahedra, ...); else its faces are all there is
+// (coloured caps stay flat, volume views cannot be drawn).
+Mesh givenInstanceMesh(const MeshInstance& instance, const Mesh& given,
+                       std::shared_ptr<const VolumeMesh>* volume) {
+  const bool hasVolume = given.volume && !given.volume->empty();
+  if (instance.volume.any() && !hasVolume)
     throw InputError(instance.where,
-                     fmt::format("'{}' is a mesh in memory, its surface alone: slices, isosurfaces and "
-                                 "field lines are drawn from a mesh file's volume; give the file instead",
+                     fmt::format("'{}' is a mesh in memory without volume elements: slices, isosurfaces and "
+                                 "field lines are drawn inside volumes; give the mesh file instead, or make "
+                                 "the mesh with its tetrahedra (or hexahedra, prisms, pyramids)",
                                  given.source.path));
-  Mesh mesh = given;
-  addViewFiles(mesh, instance.views);
-  if (const std::string reason = nothingToDrawReason(mesh); !reason.empty())
+  MeshWithVolume read{given, given.volume};
+  addViewFiles(read, instance.views);
+  read.mesh.volume = read.volume;
+  if (volume) *volume = read.volume;
+  if (const std::string reason = nothingToDrawReason(read.mesh); !reason.empty())
     throw InputError(instance.where,
                      fmt::format("mesh '{}' has nothing to draw: {}", given.source.path, reason));
-  return mesh;
+  return std::move(read.mesh);
 }
 
 }  // namespace
@@ -225,7 +232,7 @@ std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threa
   for (std::size_t i = 0; i < description.meshes.size(); ++i) {
     const MeshInstance& instance = description.meshes[i];
     if (i < given.size() && given[i]) {
-      meshes.push_back(givenInstanceMesh(instance, *given[i]));
+      meshes.push_back(givenInstanceMesh(instance, *given[i], volumes ? &(*volumes)[i] : nullptr));
       continue;
     }
     const bool withVolume = volumes && needsVolume(description, instance);
