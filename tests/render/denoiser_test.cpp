@@ -199,3 +199,33 @@ TEST(Denoiser, NoiseIsMeasuredWhereMostOfThePictureIsNoiseless) {
 
 }  // namespace
 }  // namespace lancer
+
+namespace lancer {
+namespace {
+
+TEST(Denoiser, KeepsAConstantImageConstantAtAnySize) {
+  // Rows narrower than the filter's groups of four pixels and its widest taps (64 pixels) included.
+  for (const auto& [width, height] : {std::pair{1, 1}, {3, 5}, {5, 70}, {67, 33}, {130, 6}}) {
+    Image image(width, height);
+    FeatureBuffers features(width, height);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        image.setRgb(x, y, Vec3{0.3f, 0.5f, 0.7f});
+        const std::size_t k = features.index(x, y);
+        features.albedo[k] = Vec3{0.6f, 0.6f, 0.6f};
+        features.normal[k] = x % 7 < 3 ? Vec3{0, 0, 1} : Vec3{0, 1, 0};  // creases everywhere
+        features.depth[k] = y % 5 == 0 ? std::numeric_limits<float>::infinity() : 10.0f + 0.1f * x;
+      }
+    const Image denoised = denoise(image, features);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const Rgba& p = denoised.at(x, y);
+        ASSERT_NEAR(p.r, 0.3f, 1e-6f) << width << "x" << height << " at " << x << "," << y;
+        ASSERT_NEAR(p.g, 0.5f, 1e-6f) << width << "x" << height << " at " << x << "," << y;
+        ASSERT_NEAR(p.b, 0.7f, 1e-6f) << width << "x" << height << " at " << x << "," << y;
+      }
+  }
+}
+
+}  // namespace
+}  // namespace lancer

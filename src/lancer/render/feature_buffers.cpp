@@ -1,6 +1,7 @@
 #include "lancer/render/feature_buffers.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "lancer/render/edge_paint.hpp"
 #include "lancer/render/field_shading.hpp"
@@ -9,15 +10,17 @@
 #include "lancer/render/surface_point.hpp"
 
 namespace lancer {
-namespace {
 
-// The share of the light leaving a point that its colour multiplies: kd for the local part; the
-// reflected and transmitted parts carry what they meet, not kd (Open Image Denoise's convention).
-Vec3 albedoOf(const Vec3& kd, const EnergySplit& split) {
+Vec3 featureAlbedo(const Vec3& kd, const EnergySplit& split) {
   return kd * split.local + split.reflect + Vec3{1, 1, 1} * split.transmit;
 }
 
-}  // namespace
+void FeatureSum::store(FeatureBuffers& buffers, std::size_t k, int samples) const {
+  const float weight = 1.0f / static_cast<float>(samples);
+  buffers.albedo[k] = albedo * weight;
+  buffers.normal[k] = normal * weight;
+  buffers.depth[k] = hits > 0 ? depth / static_cast<float>(hits) : std::numeric_limits<float>::infinity();
+}
 
 SurfaceFeatures surfaceFeatures(const SceneQueries& queries, const EdgePaint& paint, const Ray& ray,
                                 const Vec3& background, bool linearFieldColors) {
@@ -43,7 +46,7 @@ SurfaceFeatures surfaceFeatures(const SceneQueries& queries, const EdgePaint& pa
       break;
     case Sighting::Kind::kCap:
       features.albedo =
-          albedoOf(scene.appearance.materials[seen.capMaterial].kd, queries.splitOf(seen.capMaterial));
+          featureAlbedo(scene.appearance.materials[seen.capMaterial].kd, queries.splitOf(seen.capMaterial));
       features.normal = seen.capPlane->normal;  // the cap faces the removed side, where the ray came from
       break;
     case Sighting::Kind::kSurface: {
@@ -57,7 +60,7 @@ SurfaceFeatures surfaceFeatures(const SceneQueries& queries, const EdgePaint& pa
               isolineCoverage(scene, past, surface, paint.pixelSizeAt(features.depth), isolineColor);
           isoline > 0.0f)
         kd = kd * (1.0f - isoline) + isolineColor * isoline;
-      features.albedo = albedoOf(kd, queries.splitOf(media.shown));
+      features.albedo = featureAlbedo(kd, queries.splitOf(media.shown));
       features.normal = surface.shadingNormal;
       // Drawn edges are paint: their colour is the albedo where they cover the pixel.
       Vec3 edgeColor;

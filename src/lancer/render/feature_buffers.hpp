@@ -1,6 +1,8 @@
 // What the first visible surface of each pixel is, for the denoiser and for EXR layers: its albedo,
-// normal and distance, averaged over the pixel's camera samples. A primary-ray pass of its own, made
-// only when asked for (--denoise, --aovs), so the integrators' loops never carry it.
+// normal and distance, averaged over the pixel's camera samples. The path tracer reports them from the
+// first bounce of its own samples (integrator.hpp, FeatureIntegrator); for the other integrators a
+// primary-ray pass of its own (Renderer::renderFeatures) makes them, only when asked for (--denoise,
+// --aovs).
 #pragma once
 
 #include <cstddef>
@@ -39,8 +41,30 @@ struct SurfaceFeatures {
   bool hit = false;
 };
 
+// The running sum of one pixel's samples' features, and the pixel's value in the buffers.
+struct FeatureSum {
+  Vec3 albedo{0, 0, 0}, normal{0, 0, 0};
+  float depth = 0;
+  int hits = 0;
+  void add(const SurfaceFeatures& seen) {
+    albedo += seen.albedo;
+    normal += seen.normal;
+    if (seen.hit) {
+      depth += seen.depth;
+      ++hits;
+    }
+  }
+  // The mean of `samples` samples into pixel k of `buffers`.
+  void store(FeatureBuffers& buffers, std::size_t k, int samples) const;
+};
+
 class SceneQueries;
 class EdgePaint;
+struct EnergySplit;
+
+// The share of the light leaving a point that its colour multiplies: kd for the local part; the
+// reflected and transmitted parts carry what they meet, not kd (Open Image Denoise's convention).
+Vec3 featureAlbedo(const Vec3& kd, const EnergySplit& split);
 
 // What `ray` sees first, as the integrators see it (cut views, caps, the shadow catcher, field
 // colours, drawn edges), without any light. `background`: the albedo of a miss and of the catcher;

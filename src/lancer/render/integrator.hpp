@@ -9,6 +9,7 @@
 #include "lancer/accel/ray_packet.hpp"
 #include "lancer/math/ray.hpp"
 #include "lancer/math/vec3.hpp"
+#include "lancer/render/feature_buffers.hpp"
 #include "lancer/render/sample_sequence.hpp"
 
 namespace lancer {
@@ -53,6 +54,17 @@ concept PacketIntegrator = DeterministicIntegrator<I> &&
     requires(const I& integrator, std::span<const Ray, kPacketSize> rays, std::uint32_t active,
              std::span<TraceResult, kPacketSize> results, TraceCounters& counters) {
   integrator.liPacket(rays, active, results, counters);
+};
+
+// A Monte Carlo integrator that also says what its camera ray saw first (feature_buffers.hpp) from the
+// same trace, with the same radiance and the same use of the stream as li: `first` receives the
+// features of the first surface, or of the miss. The pixel loop then averages them over the pixel's
+// own samples into the denoiser's buffers, and no separate feature pass is traced.
+template <typename I>
+concept FeatureIntegrator = RayIntegrator<I> &&
+    requires(const I& integrator, const Ray& ray, SampleStream& samples, TraceCounters& counters,
+             SurfaceFeatures* first) {
+  { integrator.li(ray, samples, counters, first) } -> std::same_as<TraceResult>;
 };
 
 }  // namespace lancer

@@ -130,7 +130,8 @@ Vec3 PathIntegrator::shadeShadowCatcher(const Vec3& point, const Vec3& direction
   return missColor(direction) * kept;
 }
 
-TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, TraceCounters& counters) const {
+TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, TraceCounters& counters,
+                               SurfaceFeatures* first) const {
   TraceResult result;
   Vec3 radiance{0, 0, 0}, throughput{1, 1, 1};
   float firstDistance = kInfinity;
@@ -146,20 +147,36 @@ TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, Trac
     paint_.paintOutlines(queries_, cameraRay, distance, seenFirst, counters, nullptr);
     return seenFirst;
   };
+  // The features of what the camera ray sees first, under the paint in front of it (as
+  // surfaceFeatures sees them, feature_buffers.hpp).
+  auto noteFirst = [&](const Vec3& albedo, const Vec3& normal, float depth, bool hit) {
+    if (first == nullptr) return;
+    first->albedo = paint.over(albedo);
+    first->normal = normal;
+    first->depth = depth;
+    first->hit = hit;
+  };
   for (int bounce = 0;; ++bounce) {
     ++counters.rays;
     const Sighting seen = bounce == 0 ? paint_.sightingPastClearFaces(queries_, ray, travelled, paint)
                                       : queries_.firstSighting(ray, nullptr, false);
     const float directionLength = length(ray.direction);
     const Vec3 direction = ray.direction * (1.0f / directionLength);
-    if (bounce == 0 && paint.opaque()) return firstPaint(TraceResult{}, travelled);
+    if (bounce == 0 && paint.opaque()) {
+      noteFirst(background_, Vec3{0, 0, 0}, 0.0f, false);
+      return firstPaint(TraceResult{}, travelled);
+    }
     if (seen.kind == Sighting::Kind::kNothing) {
-      if (bounce == 0) return firstPaint(TraceResult{missColor(direction), 0.0f}, kInfinity);
+      if (bounce == 0) {
+        noteFirst(background_, Vec3{0, 0, 0}, 0.0f, false);
+        return firstPaint(TraceResult{missColor(direction), 0.0f}, kInfinity);
+      }
       radiance += throughput * escaped(ray.origin, direction, previousPdf);
       break;
     }
     const float distance = seen.t * directionLength;
     if (seen.kind == Sighting::Kind::kShadowCatcher) {
+      noteFirst(background_, scene_.shadowCatcher->normal, travelled + distance, true);
       TraceResult caught;
       caught.color = shadeShadowCatcher(ray.at(seen.t), direction, samples, counters, caught.alpha);
       return firstPaint(caught, travelled + distance);
@@ -182,7 +199,10 @@ TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, Trac
       if (bounce == 0) {
         Vec3 edgeColor;
         paint.add(std::min(paint_.coverageAt(ray, seen.hit, travelled, edgeColor), 1.0f), edgeColor);
-        if (paint.opaque()) break;
+        if (paint.opaque()) {
+          noteFirst(Vec3{0, 0, 0}, surface.shadingNormal, firstDistance, true);
+          break;
+        }
       }
       const Vec3 absorption = queries_.absorptionOf(media.from);
       if (maxComponent(absorption) > 0.0f) throughput *= beerLambert(absorption, distance);
@@ -206,6 +226,8 @@ TraceResult PathIntegrator::li(const Ray& cameraRay, SampleStream& samples, Trac
       const float isoline =
           isolineCoverage(scene_, ray, surface, paint_.pixelSizeAt(travelled + distance), isolineColor);
       if (isoline > 0.0f) albedo = albedo * (1.0f - isoline) + isolineColor * isoline;
+      noteFirst(featureAlbedo(albedo, queries_.splitOf(media.shown)),
+                isCap ? seen.capPlane->normal : surface.shadingNormal, firstDistance, true);
     }
     if (unlitFace(scene_, surface.face)) {  // the colour as it is: no light, no bounce
       radiance += throughput * albedo;

@@ -35,7 +35,11 @@ class PathIntegrator {
   PathIntegrator(const Scene& scene, const Accelerator& accelerator, const RenderSettings& settings,
                  const Camera& camera);
 
-  TraceResult li(const Ray& ray, SampleStream& samples, TraceCounters& counters) const;
+  // With `first`, also what the camera ray sees first (FeatureIntegrator, integrator.hpp): the albedo
+  // the radiance was multiplied by there (the field colour, isolines and edges painted on it), the
+  // shading normal and the distance; a miss or the shadow catcher counts the background as albedo.
+  TraceResult li(const Ray& ray, SampleStream& samples, TraceCounters& counters,
+                 SurfaceFeatures* first = nullptr) const;
 
  private:
   // What a camera ray that meets nothing shows: the background, or the environment when visible.

@@ -12,11 +12,12 @@ namespace lancer {
 
 template <RayIntegrator Integrator>
 PixelLoop<Integrator>::PixelLoop(const Integrator& integrator, const Camera& camera,
-                                 const RenderSettings& settings, bool packets)
+                                 const RenderSettings& settings, bool packets, FeatureBuffers* features)
     : integrator_(integrator),
       camera_(camera),
       settings_(settings),
       packets_(packets && PacketIntegrator<Integrator>),
+      features_(FeatureIntegrator<Integrator> ? features : nullptr),
       gridSide_(
           std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(settings.samples)))))) {
   if constexpr (DeterministicIntegrator<Integrator>) {
@@ -133,13 +134,25 @@ Rgba PixelLoop<Integrator>::streamPixel(int x, int y, TraceCounters& counters, s
   Vec3 sum{0, 0, 0};
   float alphaSum = 0;
   double luminanceSum = 0, luminanceSquares = 0;
+  FeatureSum featureSum;
   int n = 0;
   while (n < settings_.samples) {
     SampleStream stream(x, y, static_cast<std::uint32_t>(n));
     float dx, dy;
     stream.next2D(dx, dy);
     const Ray ray = camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy);
-    const TraceResult result = integrator_.li(ray, stream, counters);
+    TraceResult result;
+    if constexpr (FeatureIntegrator<Integrator>) {
+      if (features_ != nullptr) {
+        SurfaceFeatures seen;
+        result = integrator_.li(ray, stream, counters, &seen);
+        featureSum.add(seen);
+      } else {
+        result = integrator_.li(ray, stream, counters);
+      }
+    } else {
+      result = integrator_.li(ray, stream, counters);
+    }
     sum += result.color;
     alphaSum += result.alpha;
     const double luminance = 0.2126 * result.color.x + 0.7152 * result.color.y + 0.0722 * result.color.z;
@@ -153,6 +166,7 @@ Rgba PixelLoop<Integrator>::streamPixel(int x, int y, TraceCounters& counters, s
     }
   }
   samples += static_cast<std::uint64_t>(n);
+  if (features_ != nullptr) featureSum.store(*features_, features_->index(x, y), n);
   const float weight = 1.0f / static_cast<float>(n);
   const float alpha = settings_.transparentBackground ? alphaSum * weight : 1.0f;
   return toRgba(sum * weight, alpha);

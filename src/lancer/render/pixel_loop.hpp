@@ -19,14 +19,17 @@ namespace lancer {
 //   n x n grid (n = round(sqrt(samples))), or adaptive supersampling (adaptive_sampler.hpp); with
 //   packets and a PacketIntegrator, the grid's samples of 4x2-pixel blocks go as one packet each;
 // - a Monte Carlo one at the points of its pixel's sample stream (sample_sequence.hpp): `samples`
-//   of them, or fewer once the pixel's relative error is below `noise`.
+//   of them, or fewer once the pixel's relative error is below `noise`; with feature buffers and a
+//   FeatureIntegrator, each pixel's features are the mean of what its samples saw first.
 // The compiler makes one loop per integrator: no virtual call per ray. One per worker thread (the
 // adaptive sampler's scratch is its own); the integrator, camera and settings must outlive it.
 template <RayIntegrator Integrator>
 class PixelLoop {
  public:
   // `packets`: trace camera rays as packets where the integrator can (the image is the same).
-  PixelLoop(const Integrator& integrator, const Camera& camera, const RenderSettings& settings, bool packets);
+  // `features` (the image's size), for a FeatureIntegrator: receives the features of every pixel rendered.
+  PixelLoop(const Integrator& integrator, const Camera& camera, const RenderSettings& settings, bool packets,
+            FeatureBuffers* features = nullptr);
 
   // Pixels [x0, x1) x [y0, y1) into `band`, whose row 0 is image row bandY0; `samples` counts the
   // camera rays traced.
@@ -58,6 +61,7 @@ class PixelLoop {
   const Camera& camera_;
   const RenderSettings& settings_;
   bool packets_;
+  FeatureBuffers* features_;
   int gridSide_;  // n of the n x n grid
   Adaptive adaptive_;
 };

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <condition_variable>
 #include <exception>
-#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include "lancer/image/tone_map.hpp"
@@ -208,35 +208,29 @@ FeatureBuffers Renderer::renderFeatures(int threads) const {
   FeatureBuffers buffers(settings.width, settings.height);
   const int n = std::clamp(static_cast<int>(std::lround(std::sqrt(static_cast<double>(settings.samples)))), 1,
                            kMaxFeatureGrid);
-  const float weight = 1.0f / static_cast<float>(n * n);
   const EdgePaint paint(queries_.scene(), camera_.pixelFootprint());
   parallelFor(static_cast<std::size_t>(settings.height), threads, 4, [&](std::size_t row) {
     const int y = static_cast<int>(row);
     for (int x = 0; x < settings.width; ++x) {
-      Vec3 albedo{0, 0, 0}, normal{0, 0, 0};
-      float depth = 0;
-      int hits = 0;
+      FeatureSum sum;
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
           float dx = 0.5f, dy = 0.5f;
           gridSampleOffset(settings.sampler, n, i, j, x, y, dx, dy);
-          const SurfaceFeatures seen = surfaceFeatures(
-              queries_, paint, camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy),
-              settings.background, settings.srgb);
-          albedo += seen.albedo;
-          normal += seen.normal;
-          if (seen.hit) {
-            depth += seen.depth;
-            ++hits;
-          }
+          sum.add(surfaceFeatures(queries_, paint,
+                                  camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy),
+                                  settings.background, settings.srgb));
         }
-      const std::size_t k = buffers.index(x, y);
-      buffers.albedo[k] = albedo * weight;
-      buffers.normal[k] = normal * weight;
-      buffers.depth[k] = hits > 0 ? depth / static_cast<float>(hits) : std::numeric_limits<float>::infinity();
+      sum.store(buffers, buffers.index(x, y), n * n);
     }
   });
   return buffers;
+}
+
+bool Renderer::featuresFromSamples() const {
+  return std::visit(
+      [](const auto& integrator) { return FeatureIntegrator<std::decay_t<decltype(integrator)>>; },
+      integrator_);
 }
 
 void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, RenderStats* stats,
@@ -268,7 +262,7 @@ void Renderer::renderBands(const RenderOptions& options, const BandSink& sink, R
 
   // One dispatch on the integrator per worker; inside, the pixel loop of that integrator.
   const auto traceTiles = [&](const auto& integrator) {
-    PixelLoop loop(integrator, camera, settings, options.packets);
+    PixelLoop loop(integrator, camera, settings, options.packets, options.features);
     for (;;) {
       if (cancelled()) break;
       const int tile = nextTile.fetch_add(1, std::memory_order_relaxed);
@@ -366,9 +360,17 @@ Image Renderer::renderFinal(const RenderOptions& options, RenderStats* stats,
                             FeatureBuffers* features) const {
   RenderStats own;
   RenderStats& done = stats != nullptr ? *stats : own;
-  Image image = renderImage(options, &done);
-  if (done.cancelled || (!settings_.denoise && features == nullptr)) return image;
-  FeatureBuffers buffers = renderFeatures(options.threads);
+  const bool wanted = settings_.denoise || features != nullptr;
+  const bool fromSamples = wanted && featuresFromSamples();
+  FeatureBuffers buffers;
+  RenderOptions traced = options;
+  if (fromSamples) {
+    buffers = FeatureBuffers(settings_.width, settings_.height);
+    traced.features = &buffers;
+  }
+  Image image = renderImage(traced, &done);
+  if (done.cancelled || !wanted) return image;
+  if (!fromSamples) buffers = renderFeatures(options.threads);
   if (settings_.denoise) {
     DenoiseOptions denoiseOptions;
     denoiseOptions.threads = options.threads;

@@ -40,6 +40,10 @@ struct RenderOptions {
   // integrator.hpp: the Whitted tracer, with its shadow rays); false traces every ray on its own.
   // The image is the same, to the bit.
   bool packets = true;
+  // When set (the image's size), the integrators that report what their samples see first
+  // (FeatureIntegrator, integrator.hpp: the path tracer) fill it for every pixel they render, from
+  // those samples; Renderer::featuresFromSamples says whether this renderer's integrator does.
+  FeatureBuffers* features = nullptr;
 };
 
 struct RenderStats {
@@ -92,15 +96,18 @@ class Renderer {
   Image renderRows(BandRange range, const RenderOptions& options, RenderStats* stats = nullptr) const;
   // The whole image at once (animations, GIF output, tests): renderBands into one Image.
   Image renderImage(const RenderOptions& options, RenderStats* stats = nullptr) const;
-  // renderImage, then with settings.denoise the feature pass and the denoiser (denoiser.hpp);
-  // `features`, when given, receives the feature buffers (made for it even without denoising).
-  // A cancelled render is returned as it is, not denoised.
+  // renderImage, then with settings.denoise the denoiser (denoiser.hpp), guided by the features of the
+  // render's own samples where the integrator reports them, else of renderFeatures' pass; `features`,
+  // when given, receives the feature buffers (made for it even without denoising). A cancelled render
+  // is returned as it is, not denoised.
   Image renderFinal(const RenderOptions& options, RenderStats* stats = nullptr,
                     FeatureBuffers* features = nullptr) const;
   // The albedo, normal and depth of the first surface of every pixel, averaged over an n x n grid of
   // its camera samples (the render's own grid, at most 4 x 4), rows in parallel: the same buffers
   // for any thread count. Primary rays only, no lighting: a fraction of a render's time.
   FeatureBuffers renderFeatures(int threads) const;
+  // Whether the integrator fills RenderOptions::features from its own samples.
+  bool featuresFromSamples() const;
   // Radiance of one pixel (all its samples), for `--pixel x,y` debugging and for tests.
   Rgba renderPixel(int x, int y, TraceCounters& counters, std::uint64_t& samplesTraced) const;
 

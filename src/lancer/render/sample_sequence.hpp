@@ -38,12 +38,31 @@ inline std::uint32_t owenScramble(std::uint32_t x, std::uint32_t seed) {
   return reverseBits(laineKarras(reverseBits(x), seed));
 }
 
-// Sobol' dimension 0 (van der Corput) and dimension 1 (direction numbers v_i = v_{i-1} ^ v_{i-1} >> 1).
+// Sobol' dimension 1 of the index bits 8b..8b+7 (direction numbers v_i = v_{i-1} ^ v_{i-1} >> 1,
+// v_0 = 2^31): the XOR of the v_i of the set bits, for every byte value. The index is Owen scrambled
+// first, so all 32 of its bits are in play: four lookups rather than a loop over 32 bits.
+struct SobolByteTables {
+  std::uint32_t y[4][256];
+  constexpr SobolByteTables() : y{} {
+    std::uint32_t v[32] = {};
+    v[0] = 0x80000000u;
+    for (int i = 1; i < 32; ++i) v[i] = v[i - 1] ^ (v[i - 1] >> 1);
+    for (int b = 0; b < 4; ++b)
+      for (std::uint32_t value = 0; value < 256; ++value) {
+        std::uint32_t sum = 0;
+        for (int bit = 0; bit < 8; ++bit)
+          if (value >> bit & 1u) sum ^= v[8 * b + bit];
+        y[b][value] = sum;
+      }
+  }
+};
+inline constexpr SobolByteTables kSobolByteTables{};
+
+// Sobol' dimension 0 (van der Corput) and dimension 1.
 inline void sobol2d(std::uint32_t index, std::uint32_t& x, std::uint32_t& y) {
   x = reverseBits(index);
-  y = 0;
-  for (std::uint32_t v = 0x80000000u; index != 0; index >>= 1, v ^= v >> 1)
-    if (index & 1u) y ^= v;
+  const auto& t = kSobolByteTables.y;
+  y = t[0][index & 0xFFu] ^ t[1][index >> 8 & 0xFFu] ^ t[2][index >> 16 & 0xFFu] ^ t[3][index >> 24];
 }
 
 inline float toUnitFloat(std::uint32_t bits) {
