@@ -492,7 +492,9 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
   const double secondsBefore = times.totalSeconds();
   Scene scene;
   const AbandonOnError waitOnError(overlap);  // after `scene`: gone before it
-  GeometryOverlap* early = entries.size() == 1 ? overlap : nullptr;
+  // Not with field colours: annotateScene may change the scene's geometry after it is placed.
+  GeometryOverlap* early =
+      entries.size() == 1 && !entries[0].coloring && !entries[0].colorBy ? overlap : nullptr;
   scene.warnings = std::move(warnings);
   scene.warnings.insert(scene.warnings.begin(), description.notes.begin(), description.notes.end());
   SceneGeometry& geometry = scene.geometry;
