@@ -158,12 +158,14 @@ double runChunked(std::size_t count, int threads, Trace&& trace) {
 namespace lancer::bench {
 
 // The BVH's build options on `threads` threads; LANCER_BENCH_BVH_TRAVERSAL_COST overrides the SAH's
-// node-step cost (for tuning runs).
+// node-step cost and LANCER_BENCH_BVH_CLUSTER_REFERENCES the clusters' size (for tuning runs).
 inline BvhBuildOptions bvhBenchOptions(int threads) {
   BvhBuildOptions options;
   options.threads = threads;
   if (const char* cost = std::getenv("LANCER_BENCH_BVH_TRAVERSAL_COST"))
     options.traversalCost = std::stof(cost);
+  if (const char* size = std::getenv("LANCER_BENCH_BVH_CLUSTER_REFERENCES"))
+    options.maxClusterReferences = static_cast<std::uint32_t>(std::stoul(size));
   return options;
 }
 

@@ -100,9 +100,9 @@ int main(int argc, char** argv) {
     double boxArea = 0;
     int slivers = 0;
     for (const MeshFace& face : slice.surface.faces) {
-      Aabb b;
-      for (int c = 0; c < 3; ++c) b.extend(slice.surface.positions[face.vertex[c]]);
-      const Vec3 e = b.extent();
+      Aabb box;
+      for (int c = 0; c < 3; ++c) box.extend(slice.surface.positions[face.vertex[c]]);
+      const Vec3 e = box.extent();
       boxArea += double(e.x) * e.y;
       const Vec3d a = toDouble(slice.surface.positions[face.vertex[0]]);
       const Vec3d ab = toDouble(slice.surface.positions[face.vertex[1]]) - a,

@@ -11,8 +11,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "lancer/scene/gmsh_post_options.hpp"
-#include "lancer/scene/gmsh_view.hpp"
+#include "lancer/scene/results/gmsh_post_options.hpp"
+#include "lancer/scene/results/gmsh_view.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace {

@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
 # Hardening checks, run by .ci/run after scripts/test.sh:
-#   1. the whole test suite built with AddressSanitizer + UndefinedBehaviorSanitizer (LANCER_SANITIZE);
+#   1. the whole test suite built with AddressSanitizer + UndefinedBehaviorSanitizer (LANCER_SANITIZE),
+#      by clang, with the libFuzzer targets (LANCER_FUZZ) in the same build: the library is compiled
+#      once for the suite, the fuzzers and clang-tidy's compile database;
 #   2. the parallel renderer and image tile tests built with ThreadSanitizer (LANCER_TSAN);
-#   3. every libFuzzer target (LANCER_FUZZ, clang) for FUZZ_SECONDS (default 30) on its committed corpus,
-#      as many at a time as there are cores (each fuzzer is one process on one core);
+#   3. every libFuzzer target for FUZZ_SECONDS (default 30) on its committed corpus, as many at a time
+#      as there are cores (each fuzzer is one process on one core);
 #   4. clang-tidy on src/ with the checks of .clang-tidy (must be clean): the sources changed since
 #      the last whole clean pass (.ci/tidy-baseline) and those that include a header that changed;
 #      `scripts/ci_hardening.sh tidy-baseline` records HEAD as such a pass (after TIDY_FULL=1 passed);
 #   5. clang-format on the sources: every .cpp and .hpp as .clang-format has it (FORMAT_STRICT=0 makes
 #      a difference a warning, for a local run).
-# Installs what is missing with apt-get, like scripts/setup.sh. Build folders: build-hardening-*.
+# Installs what is missing with apt-get, like scripts/setup.sh. Build folders: build-hardening-asan
+# (sanitizers, fuzzers, clang-tidy's database) and build-hardening-tsan.
 # The Python module is left out of these builds (-DLANCER_PYTHON=OFF): an extension built with ASan,
 # TSan or libFuzzer cannot be loaded into the uninstrumented /usr/bin/python3; scripts/test.sh tests it.
 # Skip steps with SKIP="asan tsan fuzz tidy format" (any subset), e.g. for a quick local run.
@@ -60,15 +63,23 @@ export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}
 # (docs/hardening.md).
 sanitizer_build_flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG")
 
+# One clang build for the ASan + UBSan suite, the fuzzers (their coverage instrumentation,
+# fuzzer-no-link, costs the suite little) and clang-tidy (clang's compile database, so that every
+# flag is one clang-tidy understands).
+shared=build-hardening-asan
+configure_shared() {
+  CC=clang CXX=clang++ cmake -S . -B "$shared" -G Ninja "${sanitizer_build_flags[@]}" -DLANCER_SANITIZE=ON \
+        -DLANCER_FUZZ=ON -DLANCER_MPI=OFF -DLANCER_BUILD_BENCH=OFF -DLANCER_PYTHON=OFF >/dev/null
+}
+
 if ! skipped asan; then
-  begin "ASan + UBSan build and the whole test suite"
+  begin "ASan + UBSan build (clang, with the fuzzers) and the whole test suite"
   # Without MPI: LeakSanitizer reports Open MPI's own allocations in MPI_Init (libraries we do not
   # build), so the MPI path is tested by the normal build; this build checks that lancer says so
   # under mpirun instead (mpi_cli_test).
-  cmake -S . -B build-hardening-asan -G Ninja "${sanitizer_build_flags[@]}" -DLANCER_SANITIZE=ON \
-        -DLANCER_MPI=OFF -DLANCER_BUILD_BENCH=OFF -DLANCER_PYTHON=OFF >/dev/null
-  cmake --build build-hardening-asan -j"$jobs"
-  ctest --test-dir build-hardening-asan --output-on-failure -j"$jobs"
+  configure_shared
+  cmake --build "$shared" -j"$jobs"
+  ctest --test-dir "$shared" --output-on-failure -j"$jobs"
   end "ASan + UBSan"
 fi
 
@@ -85,12 +96,11 @@ fi
 
 if ! skipped fuzz; then
   begin "libFuzzer targets, ${FUZZ_SECONDS} s each on the committed corpus, $jobs at a time"
-  CXX=clang++ cmake -S . -B build-hardening-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DLANCER_FUZZ=ON \
-        -DLANCER_BUILD_TESTS=OFF -DLANCER_BUILD_BENCH=OFF -DLANCER_PYTHON=OFF >/dev/null
-  cmake --build build-hardening-fuzz -j"$jobs" --target fuzzers
+  configure_shared
+  cmake --build "$shared" -j"$jobs" --target fuzzers
   # Scratch in memory where possible: the image writer fsyncs every file it writes.
   work=$(mktemp -d -p /dev/shm 2>/dev/null || mktemp -d)
-  mkdir -p build-hardening-fuzz/artifacts
+  mkdir -p "$shared/artifacts"
   trap 'rm -rf "$work"' EXIT
   # One fuzzer: its exit status is the fuzzer's, its output in $work/TARGET.log.
   fuzz() {
@@ -99,8 +109,8 @@ if ! skipped fuzz; then
     if [ -f "fuzz/$target.dict" ]; then dictionary=(-dict="fuzz/$target.dict"); fi
     # New inputs go to the scratch folder (first), the committed corpus is only read. -timeout turns
     # a hang into a failure, -rss_limit_mb an unbounded allocation.
-    TMPDIR="$work" "build-hardening-fuzz/fuzz/fuzz_$target" "${dictionary[@]}" -max_total_time="$FUZZ_SECONDS" \
-      -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="build-hardening-fuzz/artifacts/$target-" \
+    TMPDIR="$work" "$shared/fuzz/fuzz_$target" "${dictionary[@]}" -max_total_time="$FUZZ_SECONDS" \
+      -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$shared/artifacts/$target-" \
       "$work/$target" "fuzz/corpus/$target" 2>"$work/$target.log"
   }
   # As many fuzzers at a time as cores: each still runs FUZZ_SECONDS on a core of its own.
@@ -119,7 +129,7 @@ if ! skipped fuzz; then
         grep -E '^(#[0-9]+[[:space:]]+DONE|stat::number_of_executed_units)' "$work/$target.log" | sed "s/^/$target: /" >&2 || true
       else
         tail -n 60 "$work/$target.log" >&2
-        echo "ci_hardening: fuzz_$target failed; the input is in the log above (artifact build-hardening-fuzz/artifacts/$target-*)" >&2
+        echo "ci_hardening: fuzz_$target failed; the input is in the log above (artifact $shared/artifacts/$target-*)" >&2
         failed=1
       fi
     done
@@ -130,21 +140,18 @@ fi
 
 if ! skipped tidy; then
   begin "clang-tidy on src/ (checks in .clang-tidy)"
-  if [ ! -f build-hardening-fuzz/compile_commands.json ]; then
-    CXX=clang++ cmake -S . -B build-hardening-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DLANCER_FUZZ=ON \
-          -DLANCER_BUILD_TESTS=OFF -DLANCER_BUILD_BENCH=OFF -DLANCER_PYTHON=OFF >/dev/null
-  fi
+  if [ ! -f "$shared/compile_commands.json" ]; then configure_shared; fi
   # clang's compile database, so that every flag is one clang-tidy understands. Sources that did not
   # change since the commit in .ci/tidy-baseline (a tree clang-tidy passed whole, with the clang-tidy
   # version on its second line), and include no header that did, give the same verdict as then: the
   # step checks the others, each whole. A full pass when the baseline is missing or not in this
-  # clone's history, when .clang-tidy or clang-tidy's version changed, when the fuzz build left no
+  # clone's history, when .clang-tidy or clang-tidy's version changed, when the shared build left no
   # dependency records, or with TIDY_FULL=1 (then write HEAD into .ci/tidy-baseline once it passes:
   # scripts/ci_hardening.sh tidy-baseline).
   mapfile -t sources < <(git ls-files 'src/*.cpp')
   baseline=$(sed -n 1p .ci/tidy-baseline 2>/dev/null || true)
   tidyVersion=$(clang-tidy --version | grep -m1 -i version)
-  deps=$(ninja -C build-hardening-fuzz -t deps 2>/dev/null || true)
+  deps=$(ninja -C "$shared" -t deps 2>/dev/null || true)
   if [ "${TIDY_FULL:-0}" != 1 ] && [ -n "$baseline" ] && [ -n "$deps" ] &&
      git cat-file -e "$baseline^{commit}" 2>/dev/null && git diff --quiet "$baseline" -- .clang-tidy &&
      [ "$(sed -n 2p .ci/tidy-baseline)" == "$tidyVersion" ]; then
@@ -163,11 +170,11 @@ if ! skipped tidy; then
     echo "ci_hardening: clang-tidy on every source (${#sources[@]})" >&2
   fi
   if ((${#sources[@]})); then
-    run-clang-tidy -quiet -j "$jobs" -p build-hardening-fuzz "${sources[@]/#/$PWD/}" >"build-hardening-fuzz/tidy.log" 2>&1 || true
+    run-clang-tidy -quiet -j "$jobs" -p "$shared" "${sources[@]/#/$PWD/}" >"$shared/tidy.log" 2>&1 || true
   else
-    : >"build-hardening-fuzz/tidy.log"
+    : >"$shared/tidy.log"
   fi
-  if grep -E '(warning|error): ' build-hardening-fuzz/tidy.log >&2; then
+  if grep -E '(warning|error): ' "$shared/tidy.log" >&2; then
     echo "ci_hardening: clang-tidy found problems (above)" >&2
     exit 1
   fi

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian packages lancer needs (only those missing), then configures build/ (Release,
-# x86-64-v3) and builds what a user runs: build/lancer and the Python module (build/python/lancer, for
+# Installs the Debian packages lancer needs (only those missing), then configures build/ (Release;
+# for any x86-64 CPU, the hot kernels also for x86-64-v3) and builds what a user runs: build/lancer
+# and the Python module (build/python/lancer, for
 # Debian's /usr/bin/python3: see python/CMakeLists.txt), not the tests nor the benchmarks
 # (scripts/test.sh builds those). Pass extra CMake options after the script name, e.g.
 #   scripts/setup.sh -DLANCER_PORTABLE=ON        scripts/setup.sh -DLANCER_PYTHON=OFF
@@ -12,7 +13,8 @@ packages=(g++ cmake ninja-build pkg-config libfmt-dev libpng-dev libgif-dev libf
           python3-dev pybind11-dev python3-numpy python3-pytest python3-gmsh
           libopenmpi-dev openmpi-bin libopenexr-dev libjpeg62-turbo-dev libwebp-dev
           libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
-          help2man dpkg-dev python3-venv python3-pip python3-setuptools python3-wheel)
+          help2man dpkg-dev python3-venv python3-pip python3-setuptools python3-wheel
+          qemu-user)
 missing=()
 for package in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then

@@ -18,7 +18,7 @@
 #include "lancer/render/animation.hpp"
 #include "lancer/render/step_animation.hpp"
 #include "lancer/scene/render_limits.hpp"
-#include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/result_keys.hpp"
 #include "lancer/scene/setting_checks.hpp"
 #include "lancer/util/check.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -95,7 +95,7 @@ int runAnimate(const AnimateCommandOptions& options) {
     animation.frames = checkFrames(*options.frames, SettingName{SourceLocation{"--frames"}, "--frames"});
     animation.framesGiven = true;
   }
-  if (options.fps) animation.fps = *options.fps;
+  if (options.fps) animation.fps = checkFps(*options.fps, SettingName{SourceLocation{"--fps"}, "--fps"});
   if (options.label) {
     formatStepLabel(*options.label, 0.0, 0, SourceLocation{"--label"});  // unknown names: said now
     animation.label = *options.label;
@@ -125,6 +125,7 @@ int runAnimate(const AnimateCommandOptions& options) {
   checkTransparentOutput(options.overrides, output);
   const bool talks = distribution->delivers();  // rank 0 of an MPI job, or a single process
   AnimationOutputOptions format = options.writer;
+  if (format.loop) checkLoop(*format.loop, SettingName{SourceLocation{"--loop"}, "--loop"});
   format.frames = animation.frames;
   format.fps = animation.fps;
   format.still = imageWriteOptions(settings);
@@ -248,8 +249,8 @@ void addAnimateCommand(CLI::App& app, CommandRunner& runner) {
       ->group(kOutputGroup);
   command->add_option("--frames", options->frames, fmt::format("Number of frames (1 to {})", kMaxFrames))
       ->group(kOutputGroup);
-  command->add_option("--fps", options->fps, "Frames per second")
-      ->check(CLI::Range(0.01, 100.0))
+  command
+      ->add_option("--fps", options->fps, fmt::format("Frames per second ({:g} to {:g})", kMinFps, kMaxFps))
       ->group(kOutputGroup);
   command->add_option("--orbit", options->orbit, "What turns: camera or light:K")->group(kCameraGroup);
   command

@@ -13,6 +13,7 @@
 #include "lancer/image/animation_writer.hpp"
 #include "lancer/image/frame_sequence.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/setting_checks.hpp"
 #include "lancer/util/input_error.hpp"
 #include "scene_setup.hpp"
 
@@ -86,7 +87,9 @@ int assembleFrames(const AssembleCommandOptions& options) {
   const int width = frame.width(), height = frame.height();
   AnimationOutputOptions format = options.writer;
   format.frames = count;
-  format.fps = options.fps.value_or(AnimationSettings{}.fps);
+  format.fps = options.fps ? checkFps(*options.fps, SettingName{SourceLocation{"--fps"}, "--fps"})
+                           : AnimationSettings{}.fps;
+  if (format.loop) checkLoop(*format.loop, SettingName{SourceLocation{"--loop"}, "--loop"});
   // The frames' 8-bit values go through unchanged when decoded and encoded with the same curve, so
   // the writer sees what `lancer animate` handed it after encoding.
   format.still.curve = first.srgb ? TransferCurve::Srgb : TransferCurve::Linear;
@@ -146,8 +149,9 @@ void addAssembleCommand(CLI::App& app, CommandRunner& runner) {
                     "Stitch the parts of `lancer render --shard I/N` into the image");
   command->add_option("--frames", options->frames, "Number of frames (default: up to the highest on disk)")
       ->check(CLI::Range(1, kMaxFrames));
-  command->add_option("--fps", options->fps, "Frames per second (default 12, as animate's)")
-      ->check(CLI::Range(0.01, 100.0));
+  command->add_option(
+      "--fps", options->fps,
+      fmt::format("Frames per second ({:g} to {:g}; default 12, as animate's)", kMinFps, kMaxFps));
   addAnimationWriterOptions(*command, options->writer);
   command->add_flag("-q,--quiet", options->quiet, "No summary on stderr");
   command->callback([options, &runner] { runner = [options] { return runAssemble(*options); }; });

@@ -157,6 +157,11 @@ void addSceneViewOptions(CLI::App& command, SceneOverrides& overrides) {
       .add_option("--arrows", overrides.arrows,
                   "Arrows along a vector field (3 components; node, element or element-node data)")
       ->group(kResultsGroup);
+  command
+      .add_option("--arrow-grid", overrides.arrowGrid,
+                  "NX,NY,NZ: the --arrows through the volume, one at each point of a regular grid over its "
+                  "bounds that lies inside an element")
+      ->group(kResultsGroup);
 
   addVolumeOptions(command, overrides);
 }

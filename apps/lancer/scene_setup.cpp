@@ -26,16 +26,17 @@
 #include "lancer/mesh/nothing_to_draw.hpp"
 #include "lancer/render/renderer.hpp"
 #include "lancer/scene/clip_text.hpp"
-#include "lancer/scene/color_by.hpp"
-#include "lancer/scene/gmsh_post_options.hpp"
-#include "lancer/scene/gmsh_view.hpp"
 #include "lancer/scene/looks.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/render_overrides.hpp"
+#include "lancer/scene/results/arrows.hpp"
+#include "lancer/scene/results/color_by.hpp"
+#include "lancer/scene/results/gmsh_post_options.hpp"
+#include "lancer/scene/results/gmsh_view.hpp"
+#include "lancer/scene/results/step_files.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "lancer/scene/setting_checks.hpp"
-#include "lancer/scene/step_files.hpp"
 #include "lancer/scene/suggest.hpp"
 #include "lancer/scene/view_presets.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -199,7 +200,15 @@ void applyAnnotationOptions(const SceneOverrides& overrides, RenderOverrides& ap
   if (overrides.log) applied.scale = ColorScale::Log;
   applied.isolines = overrides.isolines;
   applied.bands = overrides.bands;
-  applied.arrows = overrides.arrows;
+  if (!overrides.arrows.empty()) {
+    ArrowSpec arrows = arrowsOfField(overrides.arrows, SourceLocation{"--arrows"});
+    if (!overrides.arrowGrid.empty()) arrows.grid = arrowGridFromText(overrides.arrowGrid, "--arrow-grid");
+    applied.annotations.push_back(arrows);
+  } else if (!overrides.arrowGrid.empty()) {
+    throw InputError(SourceLocation{"--arrow-grid"},
+                     "--arrow-grid places the arrows of a vector field through the volume: give the field "
+                     "with --arrows FIELD");
+  }
   for (const std::string& clip : overrides.clips)
     applied.clips.push_back(clipFromText(clip, SourceLocation{"--clip"}));
   applyVolumeOptions(overrides, applied);
@@ -378,10 +387,10 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
   } else if (isMeshFile(input)) {
     const Stopwatch read;
     if (!overrides.slices.empty() || !overrides.isosurfaces.empty() || !overrides.streamlines.empty() ||
-        (!overrides.clips.empty() && !overrides.colorBy.empty())) {
-      MeshWithVolume read = readMeshFileWithVolume(input, overrides.threads);
-      request.quickLookMesh = std::move(read.mesh);
-      request.quickLookVolume = std::move(read.volume);
+        !overrides.arrowGrid.empty() || (!overrides.clips.empty() && !overrides.colorBy.empty())) {
+      MeshWithVolume withVolume = readMeshFileWithVolume(input, overrides.threads);
+      request.quickLookMesh = std::move(withVolume.mesh);
+      request.quickLookVolume = std::move(withVolume.volume);
     } else {
       request.quickLookMesh = readMeshFile(input, overrides.threads);
     }
@@ -524,8 +533,9 @@ RenderOptions commandRenderOptions(const SceneOverrides& overrides) {
 
 void addAnimationWriterOptions(CLI::App& command, AnimationOutputOptions& writer) {
   command
-      .add_option("--loop", writer.loop, "Repeats after the first showing: 0 forever (default), -1 play once")
-      ->check(CLI::Range(-1, 65535))
+      .add_option("--loop", writer.loop,
+                  fmt::format("Repeats after the first showing: 0 forever (default), -1 play once, up to {}",
+                              kMaxLoop))
       ->group(kOutputGroup);
   command.add_option("--dither", writer.dither, "GIF dithering: ordered (default), floyd-steinberg or none")
       ->check(CLI::IsMember({"none", "ordered", "floyd-steinberg"}))

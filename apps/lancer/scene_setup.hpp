@@ -63,6 +63,7 @@ struct SceneOverrides {
   std::optional<int> isolines;     // --isolines N: lines of the --color-by field
   std::optional<int> bands;        // --bands N
   std::string arrows;              // --arrows FIELD
+  std::string arrowGrid;           // --arrow-grid NX,NY,NZ: the arrows through the volume
   std::vector<std::string> clips;  // --clip AXIS=VALUE or PX,PY,PZ,NX,NY,NZ, any number
   // Inside the volume (docs/volume.md): --slice PLANE (any number), --skin STYLE,
   // --isosurfaces FIELD[:COUNT], --isovalues V1,V2,...
@@ -70,8 +71,10 @@ struct SceneOverrides {
   std::string skin;
   std::string isosurfaces;
   std::string isovalues;
-  std::string streamlines;  // --streamlines FIELD[:COUNT]
-  std::string seedLine;     // --seed-line X1,Y1,Z1,X2,Y2,Z2
+  std::string streamlines;       // --streamlines FIELD[:COUNT]
+  std::string seedLine;          // --seed-line X1,Y1,Z1,X2,Y2,Z2
+  std::string seedRectangle;     // --seed-rectangle X,Y,Z,UX,UY,UZ,VX,VY,VZ
+  std::string streamlineRadius;  // --streamline-radius R or Npx
   // The inputs after the mesh: list-based .pos views put on it by their elements' coordinates.
   std::vector<std::string> views;
 };

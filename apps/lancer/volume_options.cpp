@@ -35,14 +35,61 @@ std::optional<std::vector<double>> numbersFromText(const std::string& text, std:
   return numbers;
 }
 
-// --streamlines FIELD[:COUNT] and --seed-line X1,Y1,Z1,X2,Y2,Z2.
-void applyStreamlineOptions(const SceneOverrides& overrides, RenderOverrides& applied) {
-  if (overrides.streamlines.empty()) {
-    if (!overrides.seedLine.empty())
-      throw InputError(SourceLocation{"--seed-line"},
-                       "--seed-line gives the seeds of --streamlines FIELD: add --streamlines");
+// --streamline-radius R (model units) or Npx (pixels).
+void applyStreamlineRadius(const std::string& text, StreamlineSpec& spec) {
+  const SourceLocation where{"--streamline-radius"};
+  if (const std::optional<double> pixels = pixelsFromText(text)) {
+    if (!(*pixels > 0) || *pixels > kMaxRadiusPixels)
+      throw InputError(where, fmt::format("'{}': a radius in pixels must be greater than 0 and at most {:g}",
+                                          text, kMaxRadiusPixels));
+    spec.radiusPixels = *pixels;
     return;
   }
+  const std::optional<std::vector<double>> radius = numbersFromText(text, 1, 1);
+  if (!radius || !(radius->front() > 0))
+    throw InputError(where, fmt::format("'{}' is not a radius: give a length in model units greater than 0 "
+                                        "(0.01) or in pixels (2px)",
+                                        text));
+  spec.radius = radius->front();
+}
+
+// --seed-rectangle X,Y,Z,UX,UY,UZ,VX,VY,VZ: a corner and its two edges.
+void applySeedRectangle(const std::string& text, StreamlineSpec& spec) {
+  const SourceLocation where{"--seed-rectangle"};
+  const std::optional<std::vector<double>> n = numbersFromText(text, 9, 9);
+  if (!n)
+    throw InputError(where, fmt::format("'{}' is not a rectangle: give a corner and its two edges, "
+                                        "X,Y,Z,UX,UY,UZ,VX,VY,VZ",
+                                        text));
+  const Vec3d corner{(*n)[0], (*n)[1], (*n)[2]}, u{(*n)[3], (*n)[4], (*n)[5]}, v{(*n)[6], (*n)[7], (*n)[8]};
+  if (!(length(u) > 0) || !(length(v) > 0))
+    throw InputError(where, fmt::format("'{}': the edge {} is 0,0,0; give both edges a length", text,
+                                        length(u) > 0 ? "VX,VY,VZ" : "UX,UY,UZ"));
+  if (!(length(cross(normalize(u), normalize(v))) > 1e-6))
+    throw InputError(where,
+                     fmt::format("'{}': the two edges are parallel, so the rectangle has no area", text));
+  spec.seeds = StreamlineSpec::Seeds::Rectangle;
+  spec.rectangleCorner = corner;
+  spec.rectangleEdgeU = u;
+  spec.rectangleEdgeV = v;
+}
+
+// --streamlines FIELD[:COUNT], --seed-line X1,Y1,Z1,X2,Y2,Z2, --seed-rectangle and
+// --streamline-radius.
+void applyStreamlineOptions(const SceneOverrides& overrides, RenderOverrides& applied) {
+  if (overrides.streamlines.empty()) {
+    for (const auto& [given, option] : {std::pair{&overrides.seedLine, "--seed-line"},
+                                        std::pair{&overrides.seedRectangle, "--seed-rectangle"},
+                                        std::pair{&overrides.streamlineRadius, "--streamline-radius"}})
+      if (!given->empty())
+        throw InputError(
+            SourceLocation{option},
+            fmt::format("{} is about the field lines of --streamlines FIELD: add --streamlines", option));
+    return;
+  }
+  if (!overrides.seedLine.empty() && !overrides.seedRectangle.empty())
+    throw InputError(SourceLocation{"--seed-rectangle"},
+                     "--seed-line and --seed-rectangle both give the seeds of --streamlines: keep one");
   StreamlineSpec spec;
   const auto [field, count] = fieldAndCountFromText(overrides.streamlines, "--streamlines", kMaxStreamlines);
   spec.field = field;
@@ -57,6 +104,8 @@ void applyStreamlineOptions(const SceneOverrides& overrides, RenderOverrides& ap
     spec.seeds = StreamlineSpec::Seeds::Line;
     spec.points = {{n[0], n[1], n[2]}, {n[3], n[4], n[5]}};
   }
+  if (!overrides.seedRectangle.empty()) applySeedRectangle(overrides.seedRectangle, spec);
+  if (!overrides.streamlineRadius.empty()) applyStreamlineRadius(overrides.streamlineRadius, spec);
   applied.streamlines = spec;
 }
 
@@ -89,6 +138,15 @@ void addVolumeOptions(CLI::App& command, SceneOverrides& overrides) {
   command
       .add_option("--seed-line", overrides.seedLine,
                   "The --streamlines seeds: COUNT points evenly along the segment X1,Y1,Z1,X2,Y2,Z2")
+      ->group(kVolumeGroup);
+  command
+      .add_option("--seed-rectangle", overrides.seedRectangle,
+                  "The --streamlines seeds: COUNT points in a grid on the rectangle with corner X,Y,Z and "
+                  "edges UX,UY,UZ and VX,VY,VZ (X,Y,Z,UX,UY,UZ,VX,VY,VZ)")
+      ->group(kVolumeGroup);
+  command
+      .add_option("--streamline-radius", overrides.streamlineRadius,
+                  "The --streamlines tubes' radius: in model units (0.01) or in pixels of the picture (2px)")
       ->group(kVolumeGroup);
 }
 

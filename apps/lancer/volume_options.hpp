@@ -1,5 +1,6 @@
 // The command line's options for the inside of a volume (docs/volume.md): --slice, --skin,
-// --isosurfaces, --isovalues, --streamlines and --seed-line, as the renderer's overrides.
+// --isosurfaces, --isovalues, --streamlines, --seed-line, --seed-rectangle and --streamline-radius,
+// as the renderer's overrides.
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -158,7 +158,7 @@ def _list_views(gmsh, tags):
     return views
 
 
-# The General.* options that make gmsh's view (lancer/scene/gmsh_view.hpp reads the same ones).
+# The General.* options that make gmsh's view (lancer/scene/results/gmsh_view.hpp reads the same ones).
 _VIEW_OPTIONS = ["Trackball", "TrackballQuaternion0", "TrackballQuaternion1", "TrackballQuaternion2",
                  "TrackballQuaternion3", "RotationX", "RotationY", "RotationZ", "TranslationX", "TranslationY",
                  "TranslationZ", "ScaleX", "ScaleY", "ScaleZ", "Orthographic", "ClipFactor",

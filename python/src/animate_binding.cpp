@@ -11,7 +11,7 @@
 #include "lancer/render/animation.hpp"
 #include "lancer/render/step_animation.hpp"
 #include "lancer/scene/render_limits.hpp"
-#include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/result_keys.hpp"
 #include "lancer/scene/setting_checks.hpp"
 #include "render_session.hpp"
 
@@ -27,11 +27,8 @@ void animate(const py::object& target, const std::string& output, const RenderAr
   if (over && *over != "orbit" && *over != "steps")
     throw py::value_error(fmt::format("over='{}': use 'orbit' or 'steps'", *over));
   if (frames) checkFrames(*frames, SettingName{SourceLocation{"frames"}, "frames"});
-  if (fps && !(*fps >= 0.01 && *fps <= 100))
-    throw py::value_error(fmt::format("fps={} is out of range: use 0.01 to 100", *fps));
-  if (loop && (*loop < -1 || *loop > 65535))
-    throw py::value_error(
-        fmt::format("loop={} is out of range: 0 forever, -1 play once, up to 65535 repeats", *loop));
+  if (fps) checkFps(*fps, SettingName{SourceLocation{"fps"}, "fps"});
+  if (loop) checkLoop(*loop, SettingName{SourceLocation{"loop"}, "loop"});
   if (dither && *dither != "ordered" && *dither != "floyd-steinberg" && *dither != "none")
     throw py::value_error(fmt::format("dither='{}': use 'ordered', 'floyd-steinberg' or 'none'", *dither));
   if (palette && *palette != "global" && *palette != "per-frame")

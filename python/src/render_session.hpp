@@ -36,8 +36,8 @@ struct RenderArguments {
   std::optional<std::string> scale;  // "linear" | "log"
   std::optional<std::string> legend;
   std::optional<int> isolines, bands;
-  std::optional<std::string> arrows;
-  py::object clip;  // a plane as text, or a list of them
+  py::object arrows;  // a field's name or a dict of the scene keys
+  py::object clip;    // a plane as text, or a list of them
   // Inside the volume (--slice, --skin, --isosurfaces, --streamlines): planes as text or dicts of a
   // [[mesh.slice]]'s keys; "FIELD", "FIELD:COUNT" or a dict of the scene keys.
   py::object slices, isosurfaces, streamlines;

@@ -19,12 +19,13 @@
 
 #include "bindings.hpp"
 #include "lancer/image/color_map.hpp"
-#include "lancer/scene/arrows.hpp"
 #include "lancer/scene/clip_text.hpp"
-#include "lancer/scene/color_by.hpp"
-#include "lancer/scene/isolines.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/render_overrides.hpp"
+#include "lancer/scene/results/annotation_kinds.hpp"
+#include "lancer/scene/results/arrows.hpp"
+#include "lancer/scene/results/color_by.hpp"
+#include "lancer/scene/results/isolines.hpp"
 #include "lancer/scene/results/volume_view_text.hpp"
 #include "lancer/scene/results/volume_views.hpp"
 #include "render_session.hpp"
@@ -216,9 +217,15 @@ void applyResultArguments(const RenderArguments& arguments, RenderOverrides& ove
   }
   overrides.isolines = arguments.isolines;
   overrides.bands = arguments.bands;
-  if (arguments.arrows) {
-    if (arguments.arrows->empty()) throw py::value_error("arrows='': give the name of a vector field");
-    overrides.arrows = *arguments.arrows;
+  if (arguments.arrows && !arguments.arrows.is_none()) {
+    // A field's name (--arrows), or a dict of the scene keys ({'field': 'e', 'grid': [8, 8, 8]}).
+    if (py::isinstance<py::str>(arguments.arrows) && arguments.arrows.cast<std::string>().empty())
+      throw py::value_error("arrows='': give the name of a vector field");
+    toml::table mesh;
+    mesh.insert("arrows", keyTable(arguments.arrows, "arrows", "{'field': 'e', 'grid': [8, 8, 8]}"));
+    if (std::optional<ArrowSpec> arrows =
+            readArrows("arrows", TomlTableReader(mesh, "", "arrows", SceneTable::Mesh)))
+      overrides.annotations.push_back(std::move(*arrows));
   }
   if (arguments.clip && !arguments.clip.is_none()) {
     // One plane as text, or a list of them, as --clip takes them.
@@ -267,7 +274,7 @@ void applyResultKeywords(MeshInstance& instance, const ResultKeywords& keywords)
   const TomlTableReader reader(mesh, "", kWhere, SceneTable::Mesh);
   if (auto colorBy = readColorBy(kWhere, reader)) instance.colorBy = std::move(colorBy);
   if (auto isolines = readIsolines(kWhere, reader)) instance.isolines = std::move(isolines);
-  if (auto arrows = readArrows(kWhere, reader)) instance.arrows = std::move(arrows);
+  for (AnnotationSpec& annotation : readAnnotations(kWhere, reader)) setAnnotation(instance, annotation);
   if (keywords.legend) {
     const auto* found =
         std::find(kLegendPlacementNames.begin(), kLegendPlacementNames.end(), *keywords.legend);

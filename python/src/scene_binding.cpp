@@ -14,10 +14,10 @@
 
 #include "lancer/image/color_map.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
-#include "lancer/scene/color_by.hpp"
-#include "lancer/scene/gmsh_view.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/results/color_by.hpp"
+#include "lancer/scene/results/gmsh_view.hpp"
 #include "lancer/scene/scene_loader.hpp"
 
 namespace lancer::python {

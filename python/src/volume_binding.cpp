@@ -85,8 +85,11 @@ std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene,
   if (!needsVolume(applied, instance)) return nullptr;
   const Mesh& mesh = *scene.quickLookMesh;
   if (mesh.source.fileBytes == 0) {
-    // Made from arrays or by gmsh: the faces are all there is. Coloured caps then stay flat.
+    // Made from arrays or by gmsh: the faces are all there is. Coloured caps then stay flat; field
+    // lines alone are traced across the faces when they are flat (a 2D model).
     if (!instance.volume.any()) return nullptr;
+    if (instance.volume.slices.empty() && !instance.volume.isosurfaces)
+      return std::make_shared<const VolumeMesh>();
     throw InputError(
         volumeKeyword(overrides),
         fmt::format("'{}' has no volume elements (tetrahedra, hexahedra, prisms, pyramids): a mesh "

@@ -102,12 +102,16 @@ TEST(Bvh, SameTreeByteForByteOnOneToFourThreads) {
     bytes.append(reinterpret_cast<const char*>(bvh.triangles().data()), bvh.triangles().size_bytes());
     return bytes;
   };
-  const std::string one = bytesOf(Bvh::build(soup.positions, soup.faces, onThreads(1)));
-  for (int threads : {1, 2, 3, 4}) {
-    for (std::uint32_t topAbove : {0u, 64u, 1000u}) {
-      SCOPED_TRACE(std::to_string(threads) + " threads, parallel top above " + std::to_string(topAbove));
-      BvhBuildOptions options = onThreads(threads);
-      options.parallelTopAbove = topAbove;
+  // Clusters of 512 (the default) and of 4 (thousands of clusters: several batches of them, a deep
+  // top over them).
+  for (std::uint32_t clusterSize : {512u, 4u}) {
+    BvhBuildOptions serial = onThreads(1);
+    serial.maxClusterReferences = clusterSize;
+    const std::string one = bytesOf(Bvh::build(soup.positions, soup.faces, serial));
+    for (int threads : {2, 3, 4}) {
+      SCOPED_TRACE(std::to_string(threads) + " threads, clusters of " + std::to_string(clusterSize));
+      BvhBuildOptions options = serial;
+      options.threads = threads;
       EXPECT_TRUE(bytesOf(Bvh::build(soup.positions, soup.faces, options)) == one);
     }
   }

@@ -31,7 +31,7 @@ namespace {
 
 // Triangles that straddle planes in every way the clip meets: corners on the plane, edges along
 // an axis, coordinates of both signs and zero, tiny and huge.
-std::vector<std::array<Vec3, 3>> clipCases(std::mt19937& rng) {
+[[maybe_unused]] std::vector<std::array<Vec3, 3>> clipCases(std::mt19937& rng) {
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
   std::uniform_int_distribution<int> grid(-2, 2);
   std::vector<std::array<Vec3, 3>> cases;
@@ -50,11 +50,13 @@ std::vector<std::array<Vec3, 3>> clipCases(std::mt19937& rng) {
   return cases;
 }
 
+#if defined(__AVX2__)
 float lane(__m128 v, int k) {
   alignas(16) float f[4];
   _mm_store_ps(f, v);
   return f[k];
 }
+#endif
 
 TEST(KdBuildParts, VectorClipGivesTheScalarBoundsToTheBit) {
 #if defined(__AVX2__)

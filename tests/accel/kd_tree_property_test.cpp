@@ -15,6 +15,7 @@
 #include "lancer/accel/naive_accel.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "support/accel_test_geometry.hpp"
+#include "support/instrumented.hpp"
 
 namespace lancer {
 namespace {
@@ -66,9 +67,9 @@ std::vector<BuildCase> buildCases() {
   };
   BvhBuildOptions bvhSerial;
   bvhSerial.threads = 1;
-  BvhBuildOptions bvhParallelTop;  // the parallel top reaching test-sized ranges
-  bvhParallelTop.threads = 3;
-  bvhParallelTop.parallelTopAbove = 8;
+  BvhBuildOptions bvhSmallClusters;  // many clusters even in test-sized meshes: a deep top over them
+  bvhSmallClusters.threads = 3;
+  bvhSmallClusters.maxClusterReferences = 3;
   BvhBuildOptions bvhDeep = bvhSerial;  // one triangle a leaf nearly everywhere
   bvhDeep.traversalCost = 0.05f;
   BvhBuildOptions bvhWideLeaves = bvhSerial;  // leaves of eight wherever they fit
@@ -108,7 +109,7 @@ std::vector<BuildCase> buildCases() {
   KdBuildOptions bigClipped = binnedDeep;
   bigClipped.clipAboveFraction = 0.5f;
   return {{"bvh", bvh(bvhSerial)},
-          {"bvh-parallel-top", bvh(bvhParallelTop)},
+          {"bvh-small-clusters", bvh(bvhSmallClusters)},
           {"bvh-deep", bvh(bvhDeep)},
           {"bvh-wide-leaves", bvh(bvhWideLeaves)},
           {"sah", sah(serial)},
@@ -145,7 +146,8 @@ void expectSameAnswers(const Soup& soup, int rayCount, std::uint32_t seed) {
     SCOPED_TRACE(build.name);
     const Built tree = build.build(soup);
     std::mt19937 rng(seed);
-    const std::vector<test::TestRay> rays = test::adversarialRays(soup, *tree.planes, rng, rayCount);
+    const std::vector<test::TestRay> rays =
+        test::adversarialRays(soup, *tree.planes, rng, test::propertyCount(rayCount));
     int failures = 0, hits = 0;
     for (const test::TestRay& r : rays) {
       Hit expected, actual;

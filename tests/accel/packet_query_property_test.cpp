@@ -14,6 +14,7 @@
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/face_clip_sets.hpp"
 #include "support/accel_test_geometry.hpp"
+#include "support/instrumented.hpp"
 
 namespace lancer {
 namespace {
@@ -139,7 +140,7 @@ void expectSameAnswersOf(const Tree& tree, const KdTree& planes, const Soup& sou
                          std::uint32_t seed) {
   SCOPED_TRACE(tree.stats().kind + " depth " + std::to_string(tree.stats().depth));
   std::mt19937 rng(seed);
-  const std::vector<TestRay> rays = test::adversarialRays(soup, planes, rng, rayCount);
+  const std::vector<TestRay> rays = test::adversarialRays(soup, planes, rng, test::propertyCount(rayCount));
   int hits = 0;
   EXPECT_EQ(countDifferences(tree, packetsOf(rays, true), hits), 0) << "coherent packets";
   EXPECT_EQ(countDifferences(tree, packetsOf(rays, false), hits), 0) << "mixed packets";

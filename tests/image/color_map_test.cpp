@@ -77,7 +77,9 @@ TEST(ColorMap, PerceptuallyUniformMapsGetLighterEverywhere) {
     const std::span<const Vec3> colors = map.colors();
     for (std::size_t i = 1; i < colors.size(); ++i) {
       EXPECT_GT(lightness(colors[i]), lightness(colors[i - 1]) - 0.2f) << name << " at " << i;
-      if (i >= 8) EXPECT_GT(lightness(colors[i]), lightness(colors[i - 8])) << name << " at " << i;
+      if (i >= 8) {
+        EXPECT_GT(lightness(colors[i]), lightness(colors[i - 8])) << name << " at " << i;
+      }
     }
   }
   // viridis climbs evenly: its L* over each tenth of the map differs little from the mean climb.

@@ -102,7 +102,9 @@ TEST(PngMetadata, PhysAndTextBeforeThePixels) {
   EXPECT_EQ(texts.at("Comment"), "lancer render part.msh --dpi 300 -o a.png");
   // The pixels are those of a file without metadata.
   EXPECT_EQ(test::differingPixels(readPng(folder.file("a.png")), readPng(folder.file("a.png"))), 0);
-  writeImage(folder.file("plain.png"), picture, ImageWriteOptions{TransferCurve::Srgb});
+  ImageWriteOptions plain;
+  plain.curve = TransferCurve::Srgb;
+  writeImage(folder.file("plain.png"), picture, plain);
   EXPECT_EQ(test::differingPixels(readPng(folder.file("a.png")), readPng(folder.file("plain.png"))), 0);
 }
 

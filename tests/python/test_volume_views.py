@@ -17,6 +17,8 @@ HEXAHEDRA = str(data("tests", "data", "volume", "cube_hex.msh"))
 MIXED = str(data("tests", "data", "volume", "mixed.msh"))
 TETRAHEDRA = str(data("tests", "data", "element_node", "tet_v41_bin.msh"))
 SURFACE = str(data("tests", "data", "fields", "node_xy_v41_bin.msh"))
+SQUARE_VECTOR = str(data("tests", "data", "fields", "node_vector_v41_bin.msh"))
+SPHERE_SKIN = str(data("tests", "data", "msh", "sphere_v41_bin.msh"))
 SIZE = {"width": 96, "height": 64}
 
 
@@ -166,9 +168,14 @@ def test_a_mesh_without_volume_elements_says_so():
     with pytest.raises(lancer.InputError, match=r"^slices: error: '.*node_xy_v41_bin.msh' has no volume elements "
                                                 r"\(tetrahedra, hexahedra, prisms, pyramids\)"):
         lancer.render(surface, slices="z", **SIZE)
-    # Field lines alone name their keyword too.
-    with pytest.raises(lancer.InputError, match="^streamlines: error: .* has no volume elements"):
+    # Field lines alone name their keyword too: across a flat surface, the field must be there; a
+    # surface that is not flat has nothing for them to follow.
+    with pytest.raises(lancer.InputError, match="^streamlines: error: streamlines of 'u': .* has no such field on its "
+                                                "2D domain"):
         lancer.render(surface, streamlines="u", **SIZE)
+    with pytest.raises(lancer.InputError, match="^streamlines: error: .* has no volume elements and its faces are "
+                                                "not in one plane"):
+        lancer.render(lancer.read_msh(SPHERE_SKIN), streamlines="u", **SIZE)
     arrays = lancer.Mesh(np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]]), np.array([[0, 1, 2]]))
     with pytest.raises(lancer.InputError, match="^isosurfaces: error: '<arrays>' has no volume elements .*a mesh made "
                                                 "from arrays or by gmsh is its surface alone; read the .msh file with "
@@ -177,7 +184,32 @@ def test_a_mesh_without_volume_elements_says_so():
 
 
 def test_the_command_line_names_the_option_of_field_lines_without_a_volume(tmp_path):
-    code, stderr = run_cli("render", SURFACE, "--streamlines", "u", "-q", "-o", tmp_path / "no.png", check=False)
+    code, stderr = run_cli("render", SPHERE_SKIN, "--streamlines", "u", "-q", "-o", tmp_path / "no.png", check=False)
     assert code == 2
     assert stderr.startswith("--streamlines: error: ") and "has no volume elements" in stderr, stderr
     assert not (tmp_path / "no.png").exists()
+
+
+def test_streamlines_across_a_2d_mesh_match_the_cli(tmp_path):
+    # A flat mesh's field lines are traced across its faces: seeds on a rectangle, tubes sized in pixels.
+    square = lancer.read_msh(SQUARE_VECTOR)
+    keys = {"field": "temperature", "count": 6, "seed_rectangle": [[0.1, 0.1, 0], [0.8, 0, 0], [0, 0.3, 0]],
+            "radius": "2px"}
+    image = np.asarray(lancer.render(square, streamlines=keys, **SIZE))
+    assert np.array_equal(image, cli_image(tmp_path, SQUARE_VECTOR, "--streamlines", "temperature:6",
+                                           "--seed-rectangle", "0.1,0.1,0,0.8,0,0,0,0.3,0",
+                                           "--streamline-radius", "2px"))
+    assert not np.array_equal(image, np.asarray(lancer.render(square, **SIZE)))
+    # A flat mesh made from arrays: a rotation on a 2 x 2 grid of quads.
+    xy = np.array([[x, y, 0.0] for y in (0, 0.5, 1) for x in (0, 0.5, 1)])
+    quads = np.array([[0, 1, 4, 3], [1, 2, 5, 4], [3, 4, 7, 6], [4, 5, 8, 7]])
+    rotation = np.column_stack([0.5 - xy[:, 1], xy[:, 0] - 0.5, np.zeros(len(xy))])
+    arrays = lancer.Mesh(xy, [("quad", quads)], point_data={"v": rotation})
+    turning = np.asarray(lancer.render(arrays, streamlines={"field": "v", "seed_points": [[0.8, 0.5, 0]]}, **SIZE))
+    assert not np.array_equal(turning, np.asarray(lancer.render(arrays, **SIZE)))
+    with pytest.raises(lancer.InputError, match=r"streamlines.radius must be a length in model units \(0.01\) or in "
+                                                r"pixels greater than 0"):
+        lancer.render(square, streamlines={"field": "temperature", "radius": "-2px"}, **SIZE)
+    with pytest.raises(lancer.InputError, match=r"streamlines.seed_rectangle is a corner and the two edges from it"):
+        lancer.render(square, streamlines={"field": "temperature",
+                                           "seed_rectangle": [[0, 0, 0], [0, 0, 0], [0, 1, 0]]}, **SIZE)

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "lancer/mesh/msh_reader.hpp"
-#include "lancer/scene/isolines.hpp"
+#include "lancer/scene/results/isolines.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "support/files.hpp"
 #include "support/input_errors.hpp"

@@ -9,6 +9,7 @@
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/render/render_preparation.hpp"
 #include "lancer/scene/quick_look.hpp"
+#include "lancer/scene/results/arrows.hpp"
 #include "support/files.hpp"
 
 namespace lancer {
@@ -110,7 +111,7 @@ TEST(LegendFraming, ArrowsOfTheColouringFieldShareItsLegend) {
   overrides.width = 64;
   overrides.height = 48;
   overrides.legend = LegendPlacement::Right;
-  overrides.arrows = "displacement";
+  overrides.annotations.push_back(arrowsOfField("displacement", SourceLocation{"--arrows"}));
   const PreparedRender same = quickLook("results/cantilever.msh", "displacement", overrides);
   ASSERT_EQ(same.scene.fieldColors->legends.size(), 1u);
   EXPECT_EQ(same.scene.fieldColors->legends[0].title, "|displacement|");

@@ -10,7 +10,7 @@
 
 #include "lancer/mesh/msh/stored_steps.hpp"
 #include "lancer/render/step_animation.hpp"
-#include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/result_keys.hpp"
 #include "support/files.hpp"
 #include "support/scoped_env.hpp"
 #include "support/test_images.hpp"

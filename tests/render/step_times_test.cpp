@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "lancer/render/step_animation.hpp"
-#include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/result_keys.hpp"
 
 namespace lancer {
 namespace {

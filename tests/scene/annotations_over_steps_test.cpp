@@ -11,8 +11,8 @@
 #include "lancer/image/legend.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/render/step_animation.hpp"
-#include "lancer/scene/arrows.hpp"
-#include "lancer/scene/isolines.hpp"
+#include "lancer/scene/results/arrows.hpp"
+#include "lancer/scene/results/isolines.hpp"
 #include "lancer/scene/scene.hpp"
 #include "support/files.hpp"
 #include "support/test_scenes.hpp"
@@ -101,7 +101,7 @@ TEST(AnnotationsOverSteps, TheScenesArrowsAreThoseOfItsStep) {
   ArrowSpec spec;
   spec.field = "velocity";
   spec.maxCount = 9;
-  instance.arrows = spec;
+  instance.annotations.push_back(spec);
   description.meshes.push_back(instance);
   std::vector<Mesh> meshes{turningFlow()};
   description.when = atStep(0);
@@ -136,11 +136,11 @@ TEST(AnnotationsOverSteps, ArrowsAloneMakeAnAnimationOverSteps) {
   MeshInstance instance;
   ArrowSpec spec;
   spec.field = "velocity";
-  instance.arrows = spec;
+  instance.annotations.push_back(spec);
   description.meshes.push_back(instance);
   std::vector<Mesh> meshes{turningFlow()};
   EXPECT_EQ(planStepFrames(description, meshes, AnimationSettings{}).times, (std::vector<double>{0, 1}));
-  description.meshes[0].arrows->step = 0;  // pinned: no steps to run through
+  std::get<ArrowSpec>(description.meshes[0].annotations[0]).step = 0;  // pinned: no steps to run through
   EXPECT_THROW(planStepFrames(description, meshes, AnimationSettings{}), InputError);
 }
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "lancer/mesh/msh_reader.hpp"
-#include "lancer/scene/arrows.hpp"
+#include "lancer/scene/results/arrows.hpp"
 #include "lancer/scene/scene.hpp"
 #include "lancer/scene/scene_loader.hpp"
 #include "support/files.hpp"

@@ -1,6 +1,6 @@
 // color_by: reading the scene key and resolving it against a gmsh-made mesh with the field x + 2 y
 // (tests/data/fields/): normalised values, ranges, and the errors for unknown fields and steps.
-#include "lancer/scene/color_by.hpp"
+#include "lancer/scene/results/color_by.hpp"
 
 #include <gtest/gtest.h>
 

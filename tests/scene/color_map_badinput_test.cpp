@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "lancer/mesh/msh_reader.hpp"
-#include "lancer/scene/color_by.hpp"
-#include "lancer/scene/gmsh_post_options.hpp"
+#include "lancer/scene/results/color_by.hpp"
+#include "lancer/scene/results/gmsh_post_options.hpp"
 #include "lancer/scene/scene.hpp"
 #include "support/cli.hpp"
 #include "support/files.hpp"

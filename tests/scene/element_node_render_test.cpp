@@ -8,8 +8,8 @@
 #include <string>
 
 #include "lancer/mesh/msh_reader.hpp"
-#include "lancer/scene/arrows.hpp"
-#include "lancer/scene/warp.hpp"
+#include "lancer/scene/results/arrows.hpp"
+#include "lancer/scene/results/warp.hpp"
 #include "support/cli.hpp"
 #include "support/files.hpp"
 

@@ -1,12 +1,14 @@
 // A view set up in gmsh's GUI and saved with its options (tests/data/results/cantilever.msh.opt,
 // written by gmsh through scripts/make_result_fixtures.py): the displacement view drawn as the
 // deformed shape, the stress at its time step on the custom range, the hidden view left out.
-#include "lancer/scene/gmsh_post_options.hpp"
+#include "lancer/scene/results/gmsh_post_options.hpp"
 
 #include <gtest/gtest.h>
 
+#include <variant>
+
 #include "lancer/mesh/msh_reader.hpp"
-#include "lancer/scene/isolines.hpp"
+#include "lancer/scene/results/isolines.hpp"
 #include "lancer/scene/scene.hpp"
 #include "support/files.hpp"
 #include "support/input_errors.hpp"
@@ -221,7 +223,7 @@ TEST(GmshPostOptions, ExternalViewsArrowsAndWhatIsNotApplied) {
   ASSERT_TRUE(coloured.colorBy);
   EXPECT_EQ(coloured.colorBy->field, "stress");
   EXPECT_EQ(coloured.colorBy->component.kind, FieldComponent::Kind::VonMises);
-  EXPECT_FALSE(coloured.arrows);
+  EXPECT_TRUE(coloured.annotations.empty());
   ASSERT_EQ(description.notes.size(), 1u);
   EXPECT_EQ(description.notes[0],
             folder.file("external.opt") + ": warning: lancer does not draw these gmsh options: View[0].Axes");
@@ -232,8 +234,9 @@ TEST(GmshPostOptions, ExternalViewsArrowsAndWhatIsNotApplied) {
                      folder.file("arrows.opt"));
   const MeshInstance& drawn = withArrows.meshes[0];
   EXPECT_FALSE(drawn.warp);
-  ASSERT_TRUE(drawn.arrows);
-  EXPECT_EQ(drawn.arrows->field, "displacement");
+  ASSERT_EQ(drawn.annotations.size(), 1u);
+  ASSERT_TRUE(std::holds_alternative<ArrowSpec>(drawn.annotations[0]));
+  EXPECT_EQ(std::get<ArrowSpec>(drawn.annotations[0]).field, "displacement");
   ASSERT_TRUE(drawn.colorBy);
   EXPECT_EQ(drawn.colorBy->field, "stress");
   EXPECT_TRUE(withArrows.notes.empty());

@@ -2,7 +2,7 @@
 // against gmsh's own bookkeeping (gmsh saves the trackball quaternion of the Euler angles it shows,
 // so both modes must give the same camera). The pictures are compared with gmsh's own exports in
 // tests/python/test_gmsh_view.py.
-#include "lancer/scene/gmsh_view.hpp"
+#include "lancer/scene/results/gmsh_view.hpp"
 
 #include <gtest/gtest.h>
 

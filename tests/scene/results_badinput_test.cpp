@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "lancer/mesh/msh_reader.hpp"
-#include "lancer/scene/color_by.hpp"
-#include "lancer/scene/result_keys.hpp"
-#include "lancer/scene/step_files.hpp"
-#include "lancer/scene/warp.hpp"
+#include "lancer/scene/results/color_by.hpp"
+#include "lancer/scene/results/result_keys.hpp"
+#include "lancer/scene/results/step_files.hpp"
+#include "lancer/scene/results/warp.hpp"
 #include "support/cli.hpp"
 #include "support/files.hpp"
 #include "support/input_errors.hpp"

@@ -7,10 +7,10 @@
 #include <cmath>
 
 #include "lancer/mesh/msh_reader.hpp"
-#include "lancer/scene/color_by.hpp"
+#include "lancer/scene/results/color_by.hpp"
+#include "lancer/scene/results/step_files.hpp"
+#include "lancer/scene/results/warp.hpp"
 #include "lancer/scene/scene.hpp"
-#include "lancer/scene/step_files.hpp"
-#include "lancer/scene/warp.hpp"
 #include "support/cantilever.hpp"
 #include "support/files.hpp"
 

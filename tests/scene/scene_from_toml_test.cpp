@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "lancer/mesh/msh_reader.hpp"
+#include "lancer/scene/results/step_files.hpp"
 #include "lancer/scene/scene.hpp"
 #include "lancer/scene/scene_from_toml.hpp"
 #include "lancer/scene/scene_loader.hpp"
-#include "lancer/scene/step_files.hpp"
 
 namespace lancer {
 namespace {

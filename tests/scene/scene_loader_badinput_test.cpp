@@ -419,7 +419,8 @@ TEST(SceneLoaderBadInput, AnimationFrames) {
 }
 
 TEST(SceneLoaderBadInput, AnimationFps) {
-  EXPECT_TRUE(failsAt("[animation]\nfps = 0\n", "2:7", "animation.fps must be > 0, found 0"));
+  EXPECT_TRUE(failsAt("[animation]\nfps = 0\n", "2:7",
+                      "animation.fps must be a number of frames per second between 0.01 and 100, found 0"));
 }
 
 TEST(SceneLoaderBadInput, AnimationDegreesNotFinite) {

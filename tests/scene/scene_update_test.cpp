@@ -156,8 +156,9 @@ TEST(SceneUpdate, WhatChangesItsFacesOrIsBuiltPerStepIsLeftToAFullBuild) {
   }
   {
     SceneDescription withArrows = description;
-    withArrows.meshes[0].arrows = ArrowSpec{};
-    withArrows.meshes[0].arrows->field = "displacement";
+    ArrowSpec arrows;
+    arrows.field = "displacement";
+    withArrows.meshes[0].annotations.push_back(arrows);
     SceneLayout layout;
     Scene scene = buildSceneAt(at(withArrows, 0.5), meshes, 1, nullptr, &layout);
     EXPECT_FALSE(updateSceneAt(scene, layout, at(withArrows, 1.0), meshes, 1));

@@ -21,6 +21,9 @@ TEST(SettingChecks, ValuesInRangeComeBack) {
   EXPECT_EQ(checkThreads(0, named("--threads")), 0);
   EXPECT_EQ(checkFrames(10000, named("--frames")), 10000);
   EXPECT_EQ(checkBitDepth(16, named("--bit-depth")), 16);
+  EXPECT_EQ(checkFps(0.01, named("--fps")), 0.01);
+  EXPECT_EQ(checkLoop(-1, named("--loop")), -1);
+  EXPECT_EQ(checkLoop(65535, named("loop")), 65535);
   EXPECT_EQ(checkExposure(-20, named("--exposure")), -20.0f);
   EXPECT_EQ(checkNoise(0.5, named("noise")), 0.5f);
   EXPECT_EQ(checkElevation(90, named("--elevation")), 90);
@@ -48,6 +51,16 @@ TEST(SettingChecks, OneWordingWhoeverNamesTheSetting) {
             "threads: error: threads must be between 0 and 1024 (0: one per usable CPU), found -1");
   EXPECT_EQ(test::messageOf([] { checkFrames(0, named("--frames")); }),
             "--frames: error: --frames must be between 1 and 10000, found 0");
+  EXPECT_EQ(
+      test::messageOf([] {
+        checkFps(1000, {SourceLocation{"scene.toml", 4, 7}, "animation.fps"});
+      }),
+      "scene.toml:4:7: error: animation.fps must be a number of frames per second between 0.01 and 100, "
+      "found 1000");
+  EXPECT_EQ(test::messageOf([] { checkFps(std::numeric_limits<double>::quiet_NaN(), named("fps")); }),
+            "fps: error: fps must be a number of frames per second between 0.01 and 100, found nan");
+  EXPECT_EQ(test::messageOf([] { checkLoop(65536, named("loop")); }),
+            "loop: error: loop must be between -1 and 65535 (0: forever, -1: play once), found 65536");
   EXPECT_EQ(test::messageOf([] { checkBitDepth(12, named("--bit-depth")); }),
             "--bit-depth: error: --bit-depth must be 8 or 16, found 12");
   EXPECT_EQ(

@@ -1,7 +1,7 @@
-// How every accelerator build forks subtrees (bvh/build.cpp, kd/binned_build.cpp, kd/sah_build.cpp,
-// kd/median_build.cpp): at most `threads` build at once, a subtree goes to a thread of its own only
-// when one is free, and a thread that waits for the subtree it forked lends its place meanwhile. The
-// trees never depend on it: only who builds which subtree does.
+// How the kd-tree builds fork subtrees (kd/binned_build.cpp, kd/sah_build.cpp, kd/median_build.cpp):
+// at most `threads` build at once, a subtree goes to a thread of its own only when one is free, and a
+// thread that waits for the subtree it forked lends its place meanwhile. The trees never depend on
+// it: only who builds which subtree does.
 #pragma once
 
 #include <atomic>

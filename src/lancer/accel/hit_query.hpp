@@ -12,13 +12,16 @@
 #include "lancer/accel/hit_filter.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/ray.hpp"
+#include "lancer/util/isa.hpp"
 
 #if defined(__AVX2__) && defined(__FMA__)
 #include <immintrin.h>
 #define LANCER_LEAF_AVX2 1
 #endif
 
+// The copy of the kernels being compiled (util/isa.hpp).
 namespace lancer::accel {
+inline namespace LANCER_ISA_NS {
 
 // Relative slack of the cell decisions, against the rounding of split distances and triangle hits.
 constexpr float kSlack = 1e-6f;
@@ -191,4 +194,5 @@ inline std::uint32_t sameSignTriangles(const float* const (&tri)[8], std::uint32
 
 #endif  // LANCER_LEAF_AVX2
 
+}  // namespace LANCER_ISA_NS
 }  // namespace lancer::accel

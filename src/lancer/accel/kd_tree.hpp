@@ -13,6 +13,7 @@
 #include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/aabb.hpp"
 #include "lancer/mesh/mesh.hpp"
+#include "lancer/util/isa.hpp"
 
 namespace lancer {
 
@@ -76,17 +77,26 @@ class KdTree : public TreeQueries<KdTree> {
 
   // The walks behind TreeQueries' eight queries (tMin >= 0: rays start at their origin),
   // instantiated for KeepEveryHit and HitFilter: single rays (kd/traversal.cpp) and packets
-  // (kd/packet_traversal.cpp: traced together down the tree with 8-wide SIMD where the build has
+  // (kd/packet_traversal.cpp: traced together down the tree with 8-wide SIMD where the CPU has
   // AVX2, one by one otherwise or when the rays run in different directions).
+  // Each runs the copy of the walk for the CPU (util/isa.hpp: baseline, or x86-64-v3 with AVX2).
   template <typename Filter>
-  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const;
+  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const {
+    return isa::dispatch([&](auto isa) { return closestHitOn<decltype(isa)>(ray, tMin, tMax, keeps, hit); });
+  }
   template <typename Filter>
-  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const;
+  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const {
+    return isa::dispatch([&](auto isa) { return anyHitOn<decltype(isa)>(ray, tMin, tMax, keeps); });
+  }
   template <typename Filter>
   std::uint32_t closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
-                            std::span<Hit, kPacketSize> hits) const;
+                            std::span<Hit, kPacketSize> hits) const {
+    return isa::dispatch([&](auto isa) { return closestHitsOn<decltype(isa)>(packet, active, keeps, hits); });
+  }
   template <typename Filter>
-  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
+  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const {
+    return isa::dispatch([&](auto isa) { return anyHitsOn<decltype(isa)>(packet, active, keeps); });
+  }
 
   const AccelStats& stats() const { return stats_; }
   const Aabb& bounds() const { return bounds_; }
@@ -110,6 +120,17 @@ class KdTree : public TreeQueries<KdTree> {
   static_assert(sizeof(PackedTriangle) % sizeof(KdNode) == 0 && alignof(PackedTriangle) <= alignof(KdNode));
 
  private:
+  // The walks, one instantiation per copy of the kernels (Isa: an isa:: tag).
+  template <typename Isa, typename Filter>
+  bool closestHitOn(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const;
+  template <typename Isa, typename Filter>
+  bool anyHitOn(const Ray& ray, float tMin, float tMax, const Filter& keeps) const;
+  template <typename Isa, typename Filter>
+  std::uint32_t closestHitsOn(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
+                              std::span<Hit, kPacketSize> hits) const;
+  template <typename Isa, typename Filter>
+  std::uint32_t anyHitsOn(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
+
   friend class KdTreeAssembler;
 
   // Depth first from the root at 0 (then a pad): each inner node's child pair (16-byte aligned),

@@ -11,13 +11,16 @@
 #include "lancer/accel/ray_packet.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/aabb.hpp"
+#include "lancer/util/isa.hpp"
 
 #if defined(__AVX2__) && defined(__FMA__)
 #include <immintrin.h>
 #define LANCER_PACKETS_AVX2 1
 #endif
 
+// The copy of the kernels being compiled (util/isa.hpp).
 namespace lancer::accel {
+inline namespace LANCER_ISA_NS {
 
 #ifdef LANCER_PACKETS_AVX2
 
@@ -282,4 +285,5 @@ struct PacketAnyHit {
 
 #endif  // LANCER_PACKETS_AVX2
 
+}  // namespace LANCER_ISA_NS
 }  // namespace lancer::accel

@@ -14,6 +14,7 @@
 
 #include "lancer/math/ray.hpp"
 #include "lancer/mesh/mesh.hpp"
+#include "lancer/util/isa.hpp"
 
 namespace lancer {
 
@@ -39,9 +40,15 @@ struct TriangleHit {
   float b1, b2;
 };
 
+// Compiled differently in each copy of the kernels (util/isa.hpp): each has its own, so that the
+// linker never gives one copy's code to the other.
+inline namespace LANCER_ISA_NS {
+
 namespace triangle_detail {
 
-#if defined(__FMA__)
+// std::fma on every CPU: one instruction where there is FMA (the x86-64-v3 copy of the kernels,
+// ARM64), glibc's correctly rounded fmaf otherwise (the baseline copy, NaiveAccel). So every copy
+// and the brute-force reference compute the same bits, and pictures do not depend on the CPU.
 // x - s z rounded once: the FMA computes it exactly before rounding.
 inline float shear(float x, float s, float z) { return std::fma(-s, z, x); }
 // a b - c d within 2 ulps of the exact value (Kahan's algorithm; Jeannerod, Louvet & Muller 2013,
@@ -52,15 +59,6 @@ inline float differenceOfProducts(float a, float b, float c, float d) {
   const float cdError = std::fma(-c, d, cd);
   return std::fma(a, b, -cd) + cdError;
 }
-#else
-// Without FMA: in double, where products of floats are exact, rounded to float at the end.
-inline float shear(float x, float s, float z) {
-  return static_cast<float>(double(x) - double(s) * double(z));
-}
-inline float differenceOfProducts(float a, float b, float c, float d) {
-  return static_cast<float>(double(a) * double(b) - double(c) * double(d));
-}
-#endif
 
 // The hit of a triangle whose edge functions' signs agree, from its sheared corners relative to
 // the ray's origin; one function for the single-ray and the packet tests (kd/packet_traversal.cpp),
@@ -112,5 +110,7 @@ inline TriangleHit testTriangle(const PackedTriangle& tri, const Ray& ray, float
 inline float intersectTriangle(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax) {
   return testTriangle(tri, ray, tMin, tMax).t;
 }
+
+}  // namespace LANCER_ISA_NS
 
 }  // namespace lancer

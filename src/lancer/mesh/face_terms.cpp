@@ -163,7 +163,8 @@ std::array<float, 4> cornerAnglesOfFace(const Vec3* positions, const MeshFace& f
 
 }  // namespace
 
-bool faceTermsOf(std::span<const Vec3> positions, std::span<const MeshFace> faces, Vec3* normals,
+template <typename Isa>
+bool faceTermsOn(std::span<const Vec3> positions, std::span<const MeshFace> faces, Vec3* normals,
                  std::array<float, 4>* angles) {
   bool clear = true;
 #if defined(__AVX2__) && defined(__FMA__)
@@ -180,5 +181,8 @@ bool faceTermsOf(std::span<const Vec3> positions, std::span<const MeshFace> face
 #endif
   return clear;
 }
+
+template bool faceTermsOn<LANCER_ISA_TAG>(std::span<const Vec3>, std::span<const MeshFace>, Vec3*,
+                                          std::array<float, 4>*);
 
 }  // namespace lancer

@@ -11,8 +11,9 @@
 #include "lancer/image/legend.hpp"
 #include "lancer/scene/flat_scene.hpp"
 #include "lancer/scene/geometry_overlap.hpp"
+#include "lancer/scene/results/annotation_builder.hpp"
+#include "lancer/scene/results/step_files.hpp"
 #include "lancer/scene/results/volume_views.hpp"
-#include "lancer/scene/step_files.hpp"
 #include "lancer/util/memory_budget.hpp"
 #include "lancer/util/stopwatch.hpp"
 
@@ -87,6 +88,7 @@ PreparedRender prepareRender(RenderRequest request) {
     meshes = readSceneMeshes(description, request.threads, &stages, &volumes, request.givenMeshes);
   }
   if (request.withMeshes) request.withMeshes(description, meshes);
+  attachAnnotationVolumes(description, volumes);
   addVolumeViews(description, meshes, volumes);
   // A flat scene nobody chose a view for: straight on; a look then lights it from that view.
   const FlatSceneChoices choices{request.overrides.look.has_value(), request.overrides.shading.has_value()};

@@ -10,12 +10,12 @@
 #include "lancer/image/legend.hpp"
 #include "lancer/image/text.hpp"
 #include "lancer/mesh/field_steps.hpp"
-#include "lancer/scene/annotation_builder.hpp"
 #include "lancer/scene/instance_transform.hpp"
-#include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/annotation_builder.hpp"
+#include "lancer/scene/results/result_keys.hpp"
 #include "lancer/scene/results/volume_views.hpp"
+#include "lancer/scene/results/warp.hpp"
 #include "lancer/scene/scene_update.hpp"
-#include "lancer/scene/warp.hpp"
 #include "lancer/util/stopwatch.hpp"
 
 namespace lancer {
@@ -87,7 +87,8 @@ StepFrames planStepFrames(const SceneDescription& description, const std::vector
     if (instance.colorBy && !instance.colorBy->step) views.push_back(instance.colorBy->field);
     if (instance.warp) views.push_back(instance.warp->field);
     if (instance.isolines && !instance.isolines->step) views.push_back(instance.isolines->field);
-    if (instance.arrows && !instance.arrows->step) views.push_back(instance.arrows->field);
+    for (const AnnotationSpec& annotation : instance.annotations)
+      if (!annotationStep(annotation)) views.push_back(annotationField(annotation));
     const std::vector<double> own = stepTimes(meshes[i], views);
     times.insert(times.end(), own.begin(), own.end());
     if (instance.volumeSource) {
@@ -234,7 +235,7 @@ void StepScenes::buildAt(double time) {
   builtTime_.reset();
   SceneLayout layout;
   // Arrows are built per step; remade meshes change their faces.
-  const bool keepLayout = warped && !remade && !hasArrows(description_);
+  const bool keepLayout = warped && !remade && !hasAnnotationMeshes(description_);
   StageTimes unused;
   Scene next = buildSceneAt(description_, meshes_, threads_, first ? &unused : &rebuildStages_,
                             keepLayout ? &layout : nullptr);

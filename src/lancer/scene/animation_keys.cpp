@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "lancer/scene/render_limits.hpp"
-#include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/result_keys.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
 
 namespace lancer {
@@ -52,7 +52,7 @@ AnimationSettings readAnimation(const toml::table& table, const std::string& pat
   AnimationSettings animation;
   if (auto frames = reader.integer("frames"))
     animation.frames = checkFrames(*frames, reader.settingName("frames"));
-  if (auto fps = reader.number("fps", NumberRange::above(0))) animation.fps = *fps;
+  if (auto fps = reader.number("fps")) animation.fps = checkFps(*fps, reader.settingName("fps"));
   if (reader.find("orbit")) animation.orbitLight = readOrbit(reader, lightCount);
   if (auto axis = reader.vector("axis", Triple::Xyz)) {
     if (length(*axis) == 0)

@@ -84,6 +84,20 @@ Vec3d defaultCameraPosition(const Aabbd& worldBounds, const CameraSettings& sett
   return *placeAutomaticCamera(settings, worldBounds, aspect).position;
 }
 
+double pixelSizeAtTarget(const CameraSettings& camera, const Aabbd& worldBounds, int width, int height) {
+  const double aspect = static_cast<double>(width) / height;
+  const CameraSettings placed =
+      placeAutomaticCamera(resolveGmshView(camera, worldBounds, aspect), worldBounds, aspect);
+  const Vec3d centre = worldBounds.empty() ? Vec3d{} : worldBounds.center();
+  if (placed.projection == Projection::Orthographic) {
+    // The window render/camera.cpp makes when none is given.
+    const double radius = std::max(0.5 * length(worldBounds.extent()), 1e-12);
+    return placed.viewHeight.value_or(2.16 * radius / std::min(1.0, aspect)) / height;
+  }
+  const double distance = length(*placed.position - placed.lookAt.value_or(centre));
+  return 2 * std::tan(0.5 * placed.fovDegrees * kDegrees) * distance / height;
+}
+
 bool frameFlatScene(CameraSettings& camera, const Aabbd& worldBounds) {
   if (camera.viewChosen || camera.position || camera.gmshView) return false;
   if (worldBounds.empty()) return false;

@@ -20,6 +20,14 @@ CameraSettings placeAutomaticCamera(const CameraSettings& settings, const Aabbd&
 // Its position alone.
 Vec3d defaultCameraPosition(const Aabbd& worldBounds, const CameraSettings& settings, double aspect);
 
+// The side of one pixel of a `width` x `height` picture, in world units, at the camera's look-at point
+// (the distance its picture is framed at): the orthographic window's height over `height`, or for a
+// perspective camera 2 tan(fov / 2) times the distance to the look-at point over `height`. The
+// camera is taken as the picture places it for `worldBounds` (a gmsh view resolved, the automatic
+// camera placed, the zoom applied). How a size given in pixels (a field line's tube radius)
+// becomes model units.
+double pixelSizeAtTarget(const CameraSettings& camera, const Aabbd& worldBounds, int width, int height);
+
 // When nobody chose the view (camera.viewChosen, a position, a gmsh view) and the scene is flat
 // (planarView: 2D models), turns the automatic camera to see it straight on, orthographic, fitted to
 // its bounding box (as gmsh and ParaView show 2D results), and returns true; else leaves the camera

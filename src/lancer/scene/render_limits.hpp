@@ -19,6 +19,11 @@ inline constexpr int kMaxRenderSide = 32768;
 inline constexpr int kMaxSamples = 1024;
 inline constexpr int kMaxDepth = 64;
 inline constexpr int kMaxFrames = 10000;
+// An animation's frame rate: a frame a hundred seconds to a hundred a second.
+inline constexpr double kMinFps = 0.01;
+inline constexpr double kMaxFps = 100;
+// Repeats of an animated GIF or PNG after the first showing (both formats store 16 bits).
+inline constexpr int kMaxLoop = 65535;
 inline constexpr int kMaxThreads = 1024;
 // render.exposure and --exposure, in stops: 2^20 is a million times brighter or darker.
 inline constexpr double kMaxExposureStops = 20;

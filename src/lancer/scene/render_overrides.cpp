@@ -5,9 +5,10 @@
 #include <cmath>
 
 #include "lancer/image/pixel_encoding.hpp"
-#include "lancer/scene/color_by.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/results/annotation_kinds.hpp"
+#include "lancer/scene/results/color_by.hpp"
 #include "lancer/scene/setting_checks.hpp"
 
 namespace lancer {
@@ -125,13 +126,8 @@ void applyAnnotationOverrides(SceneDescription& description, const RenderOverrid
       mesh->isolines = lines;
     }
   }
-  if (!overrides.arrows.empty())
-    for (MeshInstance& mesh : description.meshes) {
-      ArrowSpec arrows;
-      arrows.field = overrides.arrows;
-      arrows.where = SourceLocation{name("arrows")};
-      mesh.arrows = arrows;
-    }
+  for (const AnnotationSpec& annotation : overrides.annotations)
+    for (MeshInstance& mesh : description.meshes) setAnnotation(mesh, annotation);
   for (ClipSettings clip : overrides.clips) {
     if (!isFinite(clip.point) || !isFinite(clip.normal) || length(clip.normal) == 0)
       throw InputError(SourceLocation{name("clip")},

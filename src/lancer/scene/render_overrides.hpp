@@ -44,7 +44,7 @@ struct RenderOverrides {
   std::optional<std::pair<double, double>> range;
   std::optional<LegendPlacement> legend;
   std::optional<int> isolines, bands;
-  std::string arrows;
+  std::vector<AnnotationSpec> annotations;  // arrows, in place of each mesh's own of the kind
   std::vector<ClipSettings> clips;
   // Inside the volume (docs/volume.md), for every mesh: slices after its own, its skin style, and
   // isosurfaces for a mesh that has none of its own.

@@ -17,16 +17,16 @@
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/feature_edges.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
-#include "lancer/scene/annotation_builder.hpp"
-#include "lancer/scene/color_by.hpp"
 #include "lancer/scene/geometry_overlap.hpp"
 #include "lancer/scene/instance_transform.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/results/annotation_builder.hpp"
+#include "lancer/scene/results/color_by.hpp"
 #include "lancer/scene/results/volume_views.hpp"
+#include "lancer/scene/results/warp.hpp"
 #include "lancer/scene/scene.hpp"
 #include "lancer/scene/scene_entries.hpp"
 #include "lancer/scene/scene_layout.hpp"
-#include "lancer/scene/warp.hpp"
 #include "lancer/util/check.hpp"
 #include "lancer/util/huge_pages.hpp"
 #include "lancer/util/parallel_for.hpp"
@@ -461,6 +461,7 @@ Scene buildScene(const SceneDescription& description, int threads, StageTimes* t
   SceneDescription expanded = description;
   std::vector<std::shared_ptr<const VolumeMesh>> volumes;
   std::vector<Mesh> meshes = readSceneMeshes(expanded, threads, times, &volumes);
+  attachAnnotationVolumes(expanded, volumes);
   addVolumeViews(expanded, meshes, volumes);
   return buildScene(expanded, std::move(meshes), threads, times);
 }
@@ -587,11 +588,11 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
 
 Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads,
                  StageTimes* timesOrNull, GeometryOverlap* overlap) {
-  if (hasArrows(description)) {  // the arrows are meshes of their own, built once here
-    SceneDescription withArrows = description;
-    std::vector<Mesh> arrows = addArrowMeshes(withArrows, meshes);
-    for (Mesh& mesh : arrows) meshes.push_back(std::move(mesh));
-    return buildScene(withArrows, std::move(meshes), threads, timesOrNull, overlap);
+  if (hasAnnotationMeshes(description)) {  // arrows are meshes of their own, built once here
+    SceneDescription annotated = description;
+    std::vector<Mesh> annotations = addAnnotationMeshes(annotated, meshes);
+    for (Mesh& mesh : annotations) meshes.push_back(std::move(mesh));
+    return buildScene(annotated, std::move(meshes), threads, timesOrNull, overlap);
   }
   StageTimes unused;
   StageTimes& times = timesOrNull ? *timesOrNull : unused;
@@ -611,24 +612,23 @@ Scene buildSceneAt(const SceneDescription& description, const std::vector<Mesh>&
   StageTimes& times = timesOrNull ? *timesOrNull : unused;
   // Arrows of the step the scene names: meshes of their own, holding their one field (the meshes as
   // read, with every step, are not copied).
-  SceneDescription withArrows = description;
-  std::vector<Mesh> arrows = addArrowMeshes(withArrows, meshes);
+  SceneDescription annotated = description;
+  std::vector<Mesh> annotations = addAnnotationMeshes(annotated, meshes);
   std::vector<Mesh> geometry;
   std::vector<const Mesh*> fields;
   for (const Mesh& mesh : meshes) {
     geometry.push_back(geometryOf(mesh));
     fields.push_back(&mesh);
   }
-  for (Mesh& mesh : arrows) {
+  for (Mesh& mesh : annotations) {
     geometry.push_back(std::move(mesh));
     fields.push_back(nullptr);  // its own
   }
-  std::vector<Material> materials = withArrows.materials;
+  std::vector<Material> materials = annotated.materials;
   std::vector<std::string> warnings;
-  std::vector<SceneEntry> entries =
-      sceneEntries(withArrows, std::move(geometry), fields, materials, warnings);
+  std::vector<SceneEntry> entries = sceneEntries(annotated, std::move(geometry), fields, materials, warnings);
   if (layout) *layout = SceneLayout{};
-  return assembleScene(withArrows, std::move(entries), std::move(materials), std::move(warnings), threads,
+  return assembleScene(annotated, std::move(entries), std::move(materials), std::move(warnings), threads,
                        times, layout);
 }
 

@@ -11,12 +11,15 @@
 #include "lancer/image/image_metadata.hpp"
 #include "lancer/image/tone_map.hpp"
 #include "lancer/math/vec3.hpp"
-#include "lancer/scene/color_by_spec.hpp"
-#include "lancer/scene/gmsh_view.hpp"
+#include "lancer/scene/results/annotation_spec.hpp"
+#include "lancer/scene/results/color_by_spec.hpp"
+#include "lancer/scene/results/gmsh_view.hpp"
 #include "lancer/scene/results/volume_view_spec.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
+
+struct VolumeMesh;  // mesh/volume/volume_mesh.hpp
 
 enum class Projection { Perspective, Orthographic };
 // flat, gouraud, phong: the lighting model (docs/rendering.md); unlit: the material's diffuse colour
@@ -188,7 +191,9 @@ struct MeshInstance {
   float smoothAngleDegrees = 60;
   std::optional<ColorBy> colorBy;  // colour the surface by a field of the mesh file
   std::optional<IsolineSpec> isolines;
-  std::optional<ArrowSpec> arrows;
+  // Annotations that are meshes of their own (arrows), at most one of each kind
+  // (results/annotation_kinds.hpp).
+  std::vector<AnnotationSpec> annotations;
   Vec3d translate{0, 0, 0};
   Vec3d rotateDegrees{0, 0, 0};  // about x, then y, then z
   Vec3d scale{1, 1, 1};
@@ -200,6 +205,12 @@ struct MeshInstance {
   VolumeViews volume;  // slices, isosurfaces (results/volume_view_spec.hpp)
   // Set on an isosurface's or field lines' mesh that follows the steps of its field.
   std::shared_ptr<const VolumeViewSource> volumeSource;
+  // Set on the field lines of a flat 2D mesh: they stand off its plane by their radius, which the
+  // test for a flat scene (flat_scene.hpp) overlooks.
+  bool liesOnPlane = false;
+  // The mesh's volume elements, for annotations that sample them (arrows on a grid): set where the
+  // volume is read (attachAnnotationVolumes), shared with the slices and caps cut from it.
+  std::shared_ptr<const VolumeMesh> annotationVolume;
 };
 
 // Where `[animation] label` goes in each frame.

@@ -5,7 +5,8 @@
 #include <algorithm>
 #include <utility>
 
-#include "lancer/scene/warp.hpp"
+#include "lancer/scene/results/annotation_kinds.hpp"
+#include "lancer/scene/results/warp.hpp"
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
@@ -14,7 +15,10 @@ MeshInstance backdropInstance(const MeshInstance& instance, bool ghost, std::vec
   copy.warp.reset();
   copy.colorBy.reset();
   copy.isolines.reset();
-  copy.arrows.reset();
+  // What samples the volume (arrows through it) stays: the skin drawn as a backdrop shows them.
+  std::erase_if(copy.annotations, [](const AnnotationSpec& annotation) {
+    return !annotationKind(annotation).samplesVolume(annotation);
+  });
   copy.groupMaterials.clear();
   copy.undeformed = UndeformedStyle::None;
   copy.volume = VolumeViews{};

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "lancer/mesh/mesh.hpp"
-#include "lancer/scene/color_by.hpp"
+#include "lancer/scene/results/color_by.hpp"
 #include "lancer/scene/scene_description.hpp"
 
 namespace lancer {
@@ -39,7 +39,8 @@ SceneColorings resolveSceneColorings(const SceneDescription& description,
 
 // A mesh drawn as the backdrop of what matters (the shape before a warp, the skin around a slice):
 // a faint glass-like copy (ghost), or only its feature edges on a surface that lets everything
-// through; neither coloured, warped nor annotated. Its material is appended to `materials`.
+// through; neither coloured, warped nor annotated, but for arrows through the volume inside it. Its
+// material is appended to `materials`.
 MeshInstance backdropInstance(const MeshInstance& instance, bool ghost, std::vector<Material>& materials);
 
 // Everything of a mesh but its fields: what a step's scene is built from (the fields stay with the

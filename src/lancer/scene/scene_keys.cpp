@@ -29,7 +29,7 @@ constexpr std::array<std::string_view, 4> kEdgeKeys = {"width", "color", "only",
 constexpr std::array<std::string_view, 10> kColorByKeys = {"field",     "step",  "map",   "scale", "range",
                                                            "component", "title", "units", "bands", "legend"};
 constexpr std::array<std::string_view, 2> kWarpKeys = {"field", "factor"};
-constexpr std::array<std::string_view, 6> kArrowKeys = {"field", "step",   "max_count",
+constexpr std::array<std::string_view, 7> kArrowKeys = {"field", "step",   "max_count", "grid",
                                                         "scale", "length", "color"};
 constexpr std::array<std::string_view, 7> kIsolineKeys = {"field",  "step",  "component", "count",
                                                           "values", "color", "width"};
@@ -37,9 +37,9 @@ constexpr std::array<std::string_view, 3> kClipKeys = {"point", "normal", "cap"}
 constexpr std::array<std::string_view, 2> kSliceKeys = {"point", "normal"};
 constexpr std::array<std::string_view, 6> kIsosurfaceKeys = {"field", "step",  "values",
                                                              "count", "color", "color_by"};
-constexpr std::array<std::string_view, 13> kStreamlineKeys = {
-    "field",       "step",   "count",      "seed_line", "seed_points", "seed_center", "seed_normal",
-    "seed_radius", "radius", "max_length", "direction", "color",       "color_by"};
+constexpr std::array<std::string_view, 14> kStreamlineKeys = {
+    "field",       "step",           "count",  "seed_line",  "seed_points", "seed_center", "seed_normal",
+    "seed_radius", "seed_rectangle", "radius", "max_length", "direction",   "color",       "color_by"};
 constexpr std::array<std::string_view, 3> kFloorKeys = {"shadow_catcher", "height", "normal"};
 constexpr std::array<std::string_view, 10> kAnimationKeys = {
     "frames", "fps", "orbit", "axis", "center", "degrees", "over", "range", "label", "label_position"};

@@ -13,11 +13,10 @@
 namespace lancer {
 
 // One mesh as it joined the scene (SceneEntry): a mesh of the description, its undeformed copy, or
-// arrows.
+// an annotation's mesh (arrows).
 struct SceneEntryLayout {
-  std::size_t meshIndex = 0;  // into the description's meshes (arrows: past the meshes read)
+  std::size_t meshIndex = 0;  // into the description's meshes (annotations: past the meshes read)
   bool undeformedCopy = false;
-  bool arrows = false;
   std::uint32_t vertexBase = 0, vertexCount = 0;
   std::uint32_t faceBase = 0, faceCount = 0;
   std::uint32_t normalBase = 0;

@@ -14,12 +14,12 @@
 #include <fmt/format.h>
 
 #include "lancer/scene/animation_keys.hpp"
-#include "lancer/scene/arrows.hpp"
-#include "lancer/scene/color_by.hpp"
-#include "lancer/scene/isolines.hpp"
 #include "lancer/scene/light_loader.hpp"
 #include "lancer/scene/render_limits.hpp"
-#include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/annotation_kinds.hpp"
+#include "lancer/scene/results/color_by.hpp"
+#include "lancer/scene/results/isolines.hpp"
+#include "lancer/scene/results/result_keys.hpp"
 #include "lancer/scene/results/volume_views.hpp"
 #include "lancer/scene/scene_from_toml.hpp"
 #include "lancer/scene/suggest.hpp"
@@ -458,7 +458,7 @@ MeshInstance readMesh(const SceneFile& file, const toml::table& table, std::size
   mesh.colorBy = readColorBy(file.path, reader);
   readWarpKeys(reader, mesh);
   mesh.isolines = readIsolines(file.path, reader);
-  mesh.arrows = readArrows(file.path, reader);
+  mesh.annotations = readAnnotations(file.path, reader);
   const std::string clipName = reader.qualified("clip");
   const std::vector<const toml::table*> clips = tableArray(file, table, "clip", clipName, "mesh.clip");
   for (std::size_t i = 0; i < clips.size(); ++i)

@@ -7,10 +7,10 @@
 #include <span>
 #include <vector>
 
-#include "lancer/scene/annotation_builder.hpp"
 #include "lancer/scene/instance_transform.hpp"
+#include "lancer/scene/results/annotation_builder.hpp"
+#include "lancer/scene/results/warp.hpp"
 #include "lancer/scene/scene_entries.hpp"
-#include "lancer/scene/warp.hpp"
 #include "lancer/util/parallel_for.hpp"
 #include "lancer/util/stopwatch.hpp"
 
@@ -129,7 +129,8 @@ bool updateSceneAt(Scene& scene, SceneLayout& layout, const SceneDescription& de
                    CornerNormalsScratch* scratch) {
   StageTimes unused;
   StageTimes& times = timesOrNull ? *timesOrNull : unused;
-  if (layout.entries.empty() || hasArrows(description) || meshes.size() != description.meshes.size())
+  if (layout.entries.empty() || hasAnnotationMeshes(description) ||
+      meshes.size() != description.meshes.size())
     return false;
   auto warped = [&](const SceneEntryLayout& entry) {
     return !entry.undeformedCopy && description.meshes[entry.meshIndex].warp.has_value();

@@ -45,6 +45,10 @@ int checkFrames(std::int64_t value, const SettingName& name) {
   return checkedInteger(value, 1, kMaxFrames, name);
 }
 
+int checkLoop(std::int64_t value, const SettingName& name) {
+  return checkedInteger(value, -1, kMaxLoop, name, " (0: forever, -1: play once)");
+}
+
 int checkBitDepth(std::int64_t value, const SettingName& name) {
   if (value != 8 && value != 16)
     throw InputError(name.where, fmt::format("{} must be 8 or 16, found {}", name.name, value));
@@ -54,6 +58,10 @@ int checkBitDepth(std::int64_t value, const SettingName& name) {
 float checkExposure(double stops, const SettingName& name) {
   return static_cast<float>(
       checkedNumber(stops, -kMaxExposureStops, kMaxExposureStops, name, "a number of stops"));
+}
+
+double checkFps(double value, const SettingName& name) {
+  return checkedNumber(value, kMinFps, kMaxFps, name, "a number of frames per second");
 }
 
 float checkNoise(double value, const SettingName& name) {

@@ -11,13 +11,16 @@
 #include "lancer/accel/bvh/node.hpp"
 #include "lancer/accel/hit_query.hpp"
 #include "lancer/math/ray.hpp"
+#include "lancer/util/isa.hpp"
 
 #if defined(__AVX2__) && defined(__FMA__)
 #include <immintrin.h>
 #define LANCER_BVH_AVX2 1
 #endif
 
+// The copy of the kernels being compiled (util/isa.hpp).
 namespace lancer::bvh {
+inline namespace LANCER_ISA_NS {
 
 // A ray as the box test wants it: per axis the origin moved by the band towards the near side
 // (nearEdge) and the far side (farEdge), so (plane - edge) * invDirection is where the ray meets
@@ -97,4 +100,5 @@ inline std::uint32_t hitChildrenScalar(const BvhNode& node, const BoxRay& r, flo
   return mask;
 }
 
+}  // namespace LANCER_ISA_NS
 }  // namespace lancer::bvh

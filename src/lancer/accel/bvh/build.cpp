@@ -1,24 +1,24 @@
-// The BVH build: binned SAH over face references (Wald 2007, "On fast construction of SAH-based
-// bounding volume hierarchies"; 32 bins of the centroids per axis), collapsed into 8-wide nodes as it
-// goes (Embree's BVHBuilderBinnedSAH: a node's child of largest area is split until it has eight),
-// then laid out depth first. A quad is one reference, its two triangles kept together in one leaf.
-// Determinism: a range's bins are exact (minima, maxima, integer counts) however its references are
-// chunked, and every partition is serial, so the tree depends on the faces alone; threads only
-// change who builds which subtree (the top ranges bin on every thread, then whole subtrees go to the
-// threads, biggest first).
+// The BVH build, HLBVH's plan with SAH everywhere (Garanzha, Pantaleoni & McAllister 2011): the face
+// references in Morton order, cut into clusters of at most kMaxClusterReferences nearby faces
+// (bvh/morton.hpp); the top of the tree by binned SAH over the clusters (each a box weighted by its
+// triangles), then every cluster's subtree by binned SAH over its faces (Wald 2007, "On fast
+// construction of SAH-based bounding volume hierarchies"), the clusters on every thread. Binary
+// splits are collapsed into 8-wide nodes as they are made (Embree's BVHBuilderBinnedSAH: a node's
+// child of largest area is split until it has eight) and written straight into the final array:
+// the top's nodes first, then each cluster's, depth first, clusters in Morton order. A quad is one
+// reference, its two triangles kept together in one leaf. A cluster's triangles are gathered right
+// after its build, while its references are in cache.
+// Determinism: the Morton sort is stable and every split is serial within its range, so the tree and
+// its layout depend on the faces alone; threads only change who builds which cluster (clusters are
+// built in batches, each batch's nodes appended in cluster order).
 #include <algorithm>
-#include <atomic>
-#include <cmath>
-#include <deque>
-#include <limits>
-#include <mutex>
+#include <cstring>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
-#include "lancer/accel/build_threads.hpp"
 #include "lancer/accel/bvh/build_parts.hpp"
 #include "lancer/accel/bvh/bvh.hpp"
+#include "lancer/accel/bvh/morton.hpp"
 #include "lancer/util/huge_pages.hpp"
 #include "lancer/util/parallel_for.hpp"
 #include "lancer/util/stopwatch.hpp"
@@ -30,112 +30,6 @@ using namespace bvh;
 
 namespace {
 
-// A node of the build: the ranges of its children, and for each inner child its node.
-struct BuildNode {
-  int count = 0;
-  Range child[BvhNode::kWidth];
-  BuildNode* node[BvhNode::kWidth] = {};
-};
-
-// Build nodes for any number of threads; deques keep addresses stable.
-class BuildNodes {
- public:
-  std::deque<BuildNode>& create() {
-    std::lock_guard lock(mutex_);
-    return pools_.emplace_back();
-  }
-
- private:
-  std::mutex mutex_;
-  std::deque<std::deque<BuildNode>> pools_;
-};
-
-// An inner child of the parallel top, built later as a whole subtree on one thread.
-struct Subtree {
-  Range range;
-  BuildNode** slot;
-};
-
-}  // namespace
-
-struct BvhBuilder {
-  BvhBuilder(std::vector<PrimRef>& refs, const BvhBuildOptions& options)
-      : refs_(refs), options_(options), threads_(resolveThreadCount(options.threads)) {
-    const std::size_t n = refs.size();
-    topAbove_ = options.parallelTopAbove > 0
-                    ? options.parallelTopAbove
-                    : std::max<std::size_t>(1 << 14, n / (4 * std::size_t(threads_)));
-    if (threads_ == 1 && options.parallelTopAbove == 0) topAbove_ = n;
-  }
-
-  BuildNode* buildRoot(const Range& all) {
-    Range root = all;
-    decide(root, root.count() > topAbove_);
-    std::deque<BuildNode>& pool = nodes_.create();
-    BuildNode* top = buildNode(root, pool, true);
-    // Biggest subtrees first, each on whichever thread is free.
-    std::stable_sort(subtrees_.begin(), subtrees_.end(),
-                     [](const Subtree& a, const Subtree& b) { return a.range.count() > b.range.count(); });
-    BuildThreads threads(threads_);
-    threads.runEach(std::span<Subtree>(subtrees_), [&](const Subtree& subtree) {
-      *subtree.slot = buildNode(subtree.range, nodes_.create(), false);
-    });
-    return top;
-  }
-
-  // Fills a node from `range` (already decided to split): its child of largest area is split until
-  // it has eight or none can be; inner children become nodes (the top defers small ones).
-  BuildNode* buildNode(const Range& range, std::deque<BuildNode>& pool, bool top) {
-    BuildNode& node = pool.emplace_back();
-    node.child[0] = range;
-    node.count = 1;
-    while (node.count < BvhNode::kWidth) {
-      int pick = -1;
-      float largest = -1.0f;
-      for (int k = 0; k < node.count; ++k) {
-        const float area = node.child[k].bounds.area();
-        if (node.child[k].split.kind != SplitKind::Leaf && area > largest) {
-          largest = area;
-          pick = k;
-        }
-      }
-      if (pick < 0) break;
-      Range left, right;
-      const bool parallel = top && node.child[pick].count() > topAbove_;
-      partition(refs_.data(), node.child[pick], left, right);
-      decide(left, parallel && left.count() > topAbove_);
-      decide(right, parallel && right.count() > topAbove_);
-      node.child[pick] = left;
-      node.child[node.count++] = right;
-    }
-    for (int k = 0; k < node.count; ++k) {
-      const Range& child = node.child[k];
-      if (child.split.kind == SplitKind::Leaf) continue;
-      if (!top) {
-        node.node[k] = buildNode(child, pool, false);
-      } else if (child.count() > topAbove_) {
-        node.node[k] = buildNode(child, pool, true);
-      } else {
-        subtrees_.push_back({child, &node.node[k]});
-      }
-    }
-    return &node;
-  }
-
-  void decide(Range& range, bool parallel) const {
-    range.split = chooseSplit(refs_.data(), range, options_, parallel ? threads_ : 1);
-  }
-
-  std::vector<PrimRef>& refs_;
-  const BvhBuildOptions& options_;
-  int threads_;
-  std::size_t topAbove_ = 0;
-  BuildNodes nodes_;
-  std::vector<Subtree> subtrees_;
-};
-
-namespace {
-
 void setLane(BvhNode& node, int k, const Box& box) {
   for (int a = 0; a < 3; ++a) {
     node.lower[a][k] = box.lo[a];
@@ -143,39 +37,237 @@ void setLane(BvhNode& node, int k, const Box& box) {
   }
 }
 
-// Depth first from the root at 0; a leaf's triangles are its references' (firstTriangle: the
-// prefix of their triangle counts in reference order).
-struct Flattener {
-  std::vector<BvhNode>& nodes;
-  const std::vector<std::uint32_t>& firstTriangle;
-  AccelStats& stats;
-
-  std::uint32_t flatten(const BuildNode& build, std::uint64_t depth) {
-    const auto index = static_cast<std::uint32_t>(nodes.size());
-    nodes.emplace_back().clear();
-    ++stats.nodes;
-    stats.depth = std::max(stats.depth, depth);
-    for (int k = 0; k < build.count; ++k) {
-      const Range& child = build.child[k];
-      std::uint32_t code;
-      if (build.node[k] != nullptr) {
-        code = flatten(*build.node[k], depth + 1);
-      } else {
-        const std::uint32_t first = firstTriangle[child.begin];
-        const std::uint32_t count = firstTriangle[child.end] - first;
-        code = BvhNode::leaf(first, count);
-        ++stats.nodes;
-        ++stats.leaves;
-        stats.triangleReferences += count;
-      }
-      setLane(nodes[index], k, child.bounds);
-      nodes[index].child[k] = code;
-    }
-    return index;
+// What a subtree adds to the statistics (summed in cluster order: the same on any thread count).
+struct TreeCounts {
+  std::uint64_t nodes = 0, leaves = 0, triangleReferences = 0, depth = 0;
+  void add(const TreeCounts& other) {
+    nodes += other.nodes;
+    leaves += other.leaves;
+    triangleReferences += other.triangleReferences;
+    depth = std::max(depth, other.depth);
   }
 };
 
+// A cluster's place in the tree: where the top left it and what its build made.
+struct ClusterSlot {
+  Range range;                 // its references, bounds and first triangle
+  std::uint32_t topDepth = 0;  // wide depth of the lane that holds it
+  std::uint32_t topNode = 0;   // that lane's node and lane (the root's lane 0 when there is no top)
+  int topLane = 0;
+  std::uint32_t code = 0;  // its root: a leaf code, or its first node relative to `firstNode`
+  std::uint32_t nodeCount = 0;
+  std::size_t scratchStart = 0;  // where its nodes lie in its batch chunk's scratch
+  std::uint32_t firstNode = 0;   // in the final array
+  TreeCounts counts;
+};
+
 }  // namespace
+
+struct BvhBuilder {
+  BvhBuilder(std::span<const Vec3> positions, std::span<const MeshFace> faces, std::vector<PrimRef>& refs,
+             const BvhBuildOptions& options, Bvh& bvh)
+      : positions_(positions), faces_(faces), refs_(refs), options_(options), bvh_(bvh) {}
+
+  // Up to eight children of a range decided to split: the child of largest area split until there
+  // are eight or none can be.
+  int collapse(PrimRef* refs, const Range& range, Range (&child)[BvhNode::kWidth], LeafRule rule) const {
+    child[0] = range;
+    int count = 1;
+    while (count < BvhNode::kWidth) {
+      int pick = -1;
+      float largest = -1.0f;
+      for (int k = 0; k < count; ++k) {
+        const float area = child[k].bounds.area();
+        if (child[k].split.kind != SplitKind::Leaf && area > largest) {
+          largest = area;
+          pick = k;
+        }
+      }
+      if (pick < 0) break;
+      Range left, right;
+      partition(refs, child[pick], left, right);
+      left.split = chooseSplit(refs, left, options_, rule);
+      right.split = chooseSplit(refs, right, options_, rule);
+      child[pick] = left;
+      child[count++] = right;
+    }
+    return count;
+  }
+
+  // The top over the clusters (`top`: one reference per cluster, face = its index), depth first
+  // into the final array; each lane holding a single cluster is recorded in its slot.
+  std::uint32_t writeTop(std::vector<PrimRef>& top, const Range& range, std::uint32_t depth) {
+    Range child[BvhNode::kWidth];
+    const int count = collapse(top.data(), range, child, LeafRule::SingleReference);
+    const auto index = static_cast<std::uint32_t>(bvh_.nodes_.size());
+    bvh_.nodes_.emplace_back().clear();
+    ++topCounts_.nodes;
+    topCounts_.depth = std::max<std::uint64_t>(topCounts_.depth, depth);
+    for (int k = 0; k < count; ++k) {
+      setLane(bvh_.nodes_[index], k, child[k].bounds);
+      if (child[k].split.kind == SplitKind::Leaf) {
+        ClusterSlot& slot = slots_[top[child[k].begin].face];
+        slot.range.depth = child[k].depth;
+        slot.topDepth = depth + 1;
+        slot.topNode = index;
+        slot.topLane = k;
+      } else {
+        const std::uint32_t below = writeTop(top, child[k], depth + 1);
+        bvh_.nodes_[index].child[k] = below;
+      }
+    }
+    return index;
+  }
+
+  // A cluster's subtree into `out` (node indices relative to `first`), depth first.
+  std::uint32_t writeNode(const Range& range, std::vector<BvhNode>& out, std::size_t first,
+                          std::uint64_t depth, TreeCounts& counts) const {
+    Range child[BvhNode::kWidth];
+    const int count = collapse(refs_.data(), range, child, LeafRule::BySah);
+    const std::size_t index = out.size();
+    out.emplace_back().clear();
+    ++counts.nodes;
+    counts.depth = std::max(counts.depth, depth);
+    for (int k = 0; k < count; ++k) {
+      setLane(out[index], k, child[k].bounds);
+      std::uint32_t code;
+      if (child[k].split.kind == SplitKind::Leaf) {
+        code = leafOf(child[k], counts);
+      } else {
+        code = writeNode(child[k], out, first, depth + 1, counts);
+      }
+      out[index].child[k] = code;
+    }
+    return static_cast<std::uint32_t>(index - first);
+  }
+
+  static std::uint32_t leafOf(const Range& range, TreeCounts& counts) {
+    ++counts.nodes;
+    ++counts.leaves;
+    counts.triangleReferences += range.triangles;
+    return BvhNode::leaf(range.firstTriangle, range.triangles);
+  }
+
+  // A cluster built into `out`, then its triangles gathered in leaf order.
+  void buildCluster(ClusterSlot& slot, std::vector<BvhNode>& out) const {
+    Range range = slot.range;
+    range.split = chooseSplit(refs_.data(), range, options_, LeafRule::BySah);
+    slot.scratchStart = out.size();
+    if (range.split.kind == SplitKind::Leaf) {
+      slot.code = leafOf(range, slot.counts);
+    } else {
+      slot.code = writeNode(range, out, slot.scratchStart, slot.topDepth, slot.counts);
+    }
+    slot.nodeCount = static_cast<std::uint32_t>(out.size() - slot.scratchStart);
+    PackedTriangle* triangles = bvh_.triangles_.data() + range.firstTriangle;
+    for (std::uint32_t i = range.begin; i < range.end; ++i) {
+      const PrimRef& r = refs_[i];
+      const MeshFace& face = faces_[r.face];
+      const Vec3& a = positions_[face.vertex[0]];
+      *triangles++ = {a, positions_[face.vertex[1]], positions_[face.vertex[2]], r.face};
+      if (face.isQuad()) *triangles++ = {a, positions_[face.vertex[2]], positions_[face.vertex[3]], r.face};
+    }
+  }
+
+  // Every cluster, in batches of consecutive clusters built on every thread, each batch's nodes then
+  // appended to the final array in cluster order (a cluster's child indices moved to where its
+  // nodes land). The scratch arrays are reused from batch to batch, so little fresh memory is touched
+  // twice.
+  void buildClusters(int threads) {
+    constexpr std::size_t kClustersPerChunk = 8, kChunksPerBatch = 64;
+    std::vector<std::vector<BvhNode>> scratch(kChunksPerBatch);
+    for (std::size_t batch = 0; batch < slots_.size(); batch += kClustersPerChunk * kChunksPerBatch) {
+      const std::size_t end = std::min(slots_.size(), batch + kClustersPerChunk * kChunksPerBatch);
+      const ChunkPlan plan(end - batch, kClustersPerChunk);
+      parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t stop) {
+        std::vector<BvhNode>& out = scratch[chunk];
+        out.clear();
+        for (std::size_t c = batch + begin; c < batch + stop; ++c) buildCluster(slots_[c], out);
+      });
+      std::size_t total = bvh_.nodes_.size();
+      for (std::size_t c = batch; c < end; ++c) {
+        slots_[c].firstNode = static_cast<std::uint32_t>(total);
+        total += slots_[c].nodeCount;
+      }
+      bvh_.nodes_.resize(total);
+      parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t stop) {
+        const std::vector<BvhNode>& out = scratch[chunk];
+        for (std::size_t c = batch + begin; c < batch + stop; ++c) {
+          const ClusterSlot& slot = slots_[c];
+          if (slot.nodeCount == 0)
+            continue;  // a leaf cluster: nothing in the scratch (its data() may be null)
+          BvhNode* to = bvh_.nodes_.data() + slot.firstNode;
+          std::memcpy(static_cast<void*>(to), out.data() + slot.scratchStart,
+                      slot.nodeCount * sizeof(BvhNode));
+          for (std::uint32_t n = 0; n < slot.nodeCount; ++n) {
+            for (std::uint32_t& code : to[n].child) {
+              if (code != BvhNode::kEmpty && !BvhNode::isLeaf(code)) code += slot.firstNode;
+            }
+          }
+        }
+      });
+    }
+  }
+  void build(int threads) {
+    const std::vector<Cluster> clusters = mortonClusters(
+        refs_, std::clamp<std::uint32_t>(options_.maxClusterReferences, 1, kMaxClusterReferences), threads);
+    const std::size_t count = clusters.size();
+    slots_.resize(count);
+    parallelFor(count, threads, 64, [&](std::size_t c) {
+      slots_[c].range = rangeOf(refs_.data(), clusters[c].begin, clusters[c].end);
+    });
+    std::uint64_t triangles = 0;
+    for (ClusterSlot& slot : slots_) {
+      slot.range.firstTriangle =
+          static_cast<std::uint32_t>(std::min<std::uint64_t>(triangles, BvhNode::kMaxFirst));
+      triangles += slot.range.triangles;
+    }
+    if (triangles > BvhNode::kMaxFirst) {
+      throw std::length_error("bvh: " + std::to_string(triangles) + " triangles, at most " +
+                              std::to_string(BvhNode::kMaxFirst) + " supported");
+    }
+    bvh_.triangles_ = vectorOnHugePages<PackedTriangle>(triangles);
+    // Room for every node (at most one a reference, and the root), touched only where written.
+    bvh_.nodes_.reserve(refs_.size() + 1);
+    adviseHugePages(bvh_.nodes_);
+    if (count > 1) {
+      std::vector<PrimRef> top(count);
+      for (std::size_t c = 0; c < count; ++c) {
+        const Range& range = slots_[c].range;
+        PrimRef& r = top[c];
+        std::copy(range.bounds.lo, range.bounds.lo + 3, r.lo);
+        std::copy(range.bounds.hi, range.bounds.hi + 3, r.hi);
+        r.face = static_cast<std::uint32_t>(c);
+        r.triangles = range.triangles;
+      }
+      Range all = rangeOf(top.data(), 0, static_cast<std::uint32_t>(count));
+      all.split = chooseSplit(top.data(), all, options_, LeafRule::SingleReference);
+      writeTop(top, all, 0);
+    }
+    buildClusters(threads);
+    if (count == 1 && BvhNode::isLeaf(slots_[0].code)) {
+      // A single leaf: the root holds it.
+      bvh_.nodes_.emplace_back().clear();
+      setLane(bvh_.nodes_[0], 0, slots_[0].range.bounds);
+      ++topCounts_.nodes;
+    }
+    // Each cluster into the lane that holds it (with one cluster of nodes, its root is the tree's).
+    for (ClusterSlot& slot : slots_) {
+      const bool leaf = BvhNode::isLeaf(slot.code);
+      if (count > 1 || leaf)
+        bvh_.nodes_[slot.topNode].child[slot.topLane] = leaf ? slot.code : slot.code + slot.firstNode;
+      topCounts_.add(slot.counts);
+    }
+  }
+
+  std::span<const Vec3> positions_;
+  std::span<const MeshFace> faces_;
+  std::vector<PrimRef>& refs_;
+  const BvhBuildOptions& options_;
+  Bvh& bvh_;
+  std::vector<ClusterSlot> slots_;
+  TreeCounts topCounts_;
+};
 
 Bvh Bvh::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
                const BvhBuildOptions& options) {
@@ -187,46 +279,30 @@ Bvh Bvh::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
   GatheredFaces gathered = gatherFaces(positions, faces, threads);
   bvh.slivers_ = std::move(gathered.slivers);
   std::vector<PrimRef>& refs = gathered.refs;
-  const std::size_t n = refs.size();
-  Range all = rangeOf(refs.data(), 0, static_cast<std::uint32_t>(n));
   bvh.stats_.kind = "bvh";
   bvh.stats_.faces = faces.size();
-  std::vector<std::uint32_t> firstTriangle(n + 1, 0);
-  BvhBuilder builder(refs, options);
-  BuildNode* root = nullptr;
-  if (n > 0) root = builder.buildRoot(all);
-  for (std::size_t i = 0; i < n; ++i) firstTriangle[i + 1] = firstTriangle[i] + refs[i].triangles;
-  if (firstTriangle[n] > BvhNode::kMaxFirst) {
-    throw std::length_error("bvh: " + std::to_string(firstTriangle[n]) + " triangles, at most " +
-                            std::to_string(BvhNode::kMaxFirst) + " supported");
-  }
-  // The triangles in reference order, which is leaf order.
-  bvh.triangles_ = vectorOnHugePages<PackedTriangle>(firstTriangle[n]);
-  parallelFor(n, threads, 1 << 14, [&](std::size_t i) {
-    const MeshFace& face = faces[refs[i].face];
-    PackedTriangle* out = bvh.triangles_.data() + firstTriangle[i];
-    out[0] = {positions[face.vertex[0]], positions[face.vertex[1]], positions[face.vertex[2]], refs[i].face};
-    if (face.isQuad())
-      out[1] = {positions[face.vertex[0]], positions[face.vertex[2]], positions[face.vertex[3]],
-                refs[i].face};
-  });
-  std::vector<PrimRef>().swap(refs);
-  const Aabb box = all.bounds.aabb();
-  Flattener flattener{bvh.nodes_, firstTriangle, bvh.stats_};
-  if (root != nullptr) {
-    bvh.nodes_.reserve(std::max<std::size_t>(1, n / 16));
-    flattener.flatten(*root, 0);
-    bvh.nodes_.shrink_to_fit();
-  } else {
+  Aabb box;
+  if (refs.empty()) {
     bvh.nodes_.emplace_back().clear();
     bvh.stats_.nodes = 1;
+  } else {
+    BvhBuilder builder(positions, faces, refs, options, bvh);
+    builder.build(threads);
+    for (const ClusterSlot& slot : builder.slots_) box.extend(slot.range.bounds.aabb());
+    AccelStats& stats = bvh.stats_;
+    stats.nodes = builder.topCounts_.nodes;
+    stats.leaves = builder.topCounts_.leaves;
+    stats.triangleReferences = builder.topCounts_.triangleReferences;
+    stats.depth = builder.topCounts_.depth;
   }
+  std::vector<PrimRef>().swap(refs);
   bvh.setBounds(box);
   AccelStats& stats = bvh.stats_;
   stats.triangles = bvh.triangles_.size() + bvh.slivers_.size();
   stats.meanTrianglesPerLeaf = stats.leaves ? double(stats.triangleReferences) / double(stats.leaves) : 0.0;
-  stats.bytes = bvh.nodes_.capacity() * sizeof(BvhNode) +
-                (bvh.triangles_.capacity() + bvh.slivers_.capacity()) * sizeof(PackedTriangle);
+  // What the structure holds (the nodes' array keeps untouched room for the worst case).
+  stats.bytes = bvh.nodes_.size() * sizeof(BvhNode) +
+                (bvh.triangles_.size() + bvh.slivers_.size()) * sizeof(PackedTriangle);
   stats.sahCost = bvh.builtSahCost_ = bvh.sahCost();
   stats.buildSeconds = stopwatch.seconds();
   return bvh;

@@ -2,11 +2,12 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <utility>
 
-#ifdef __SSE4_1__
-#include <immintrin.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
 #endif
 
 #include "lancer/util/huge_pages.hpp"
@@ -16,104 +17,147 @@ namespace lancer::bvh {
 
 namespace {
 
-constexpr int kBins = 32;
+constexpr int kMaxBins = 32;
+constexpr float kInf = std::numeric_limits<float>::infinity();
 
-// The bins of each axis over a range's centroids.
+// Four floats (x, y, z and a lane never read): a reference's corner, a box's corner, a bin index
+// per axis. SSE where there is SSE; the same arithmetic lane by lane elsewhere.
+#ifdef __SSE2__
+struct F4 {
+  __m128 v;
+  static F4 load(const float* p) { return {_mm_loadu_ps(p)}; }
+  static F4 set(float x, float y, float z) { return {_mm_setr_ps(x, y, z, 0.0f)}; }
+  static F4 all(float x) { return {_mm_set1_ps(x)}; }
+  friend F4 operator+(F4 a, F4 b) { return {_mm_add_ps(a.v, b.v)}; }
+  friend F4 operator-(F4 a, F4 b) { return {_mm_sub_ps(a.v, b.v)}; }
+  friend F4 operator*(F4 a, F4 b) { return {_mm_mul_ps(a.v, b.v)}; }
+  friend F4 min(F4 a, F4 b) { return {_mm_min_ps(a.v, b.v)}; }
+  friend F4 max(F4 a, F4 b) { return {_mm_max_ps(a.v, b.v)}; }
+  void store(float* p) const { _mm_storeu_ps(p, v); }
+  // Lanes truncated to integers.
+  void truncate(int* out) const { _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_cvttps_epi32(v)); }
+};
+#else
+struct F4 {
+  float v[4];
+  static F4 load(const float* p) { return {{p[0], p[1], p[2], p[3]}}; }
+  static F4 set(float x, float y, float z) { return {{x, y, z, 0.0f}}; }
+  static F4 all(float x) { return {{x, x, x, x}}; }
+  template <typename Op>
+  static F4 each(F4 a, F4 b, Op op) {
+    return {{op(a.v[0], b.v[0]), op(a.v[1], b.v[1]), op(a.v[2], b.v[2]), op(a.v[3], b.v[3])}};
+  }
+  friend F4 operator+(F4 a, F4 b) {
+    return each(a, b, [](float x, float y) { return x + y; });
+  }
+  friend F4 operator-(F4 a, F4 b) {
+    return each(a, b, [](float x, float y) { return x - y; });
+  }
+  friend F4 operator*(F4 a, F4 b) {
+    return each(a, b, [](float x, float y) { return x * y; });
+  }
+  // As minps / maxps: the second operand when the comparison fails.
+  friend F4 min(F4 a, F4 b) {
+    return each(a, b, [](float x, float y) { return x < y ? x : y; });
+  }
+  friend F4 max(F4 a, F4 b) {
+    return each(a, b, [](float x, float y) { return x > y ? x : y; });
+  }
+  void store(float* p) const { std::memcpy(p, v, sizeof v); }
+  void truncate(int* out) const {
+    for (int k = 0; k < 4; ++k) out[k] = static_cast<int>(v[k]);
+  }
+};
+#endif
+
+// A box as two F4 corners, grown by references and other boxes.
+struct Box4 {
+  F4 lo = F4::all(kInf), hi = F4::all(-kInf);
+  void extend(F4 l, F4 h) {
+    lo = min(lo, l);
+    hi = max(hi, h);
+  }
+  void extend(const Box4& b) { extend(b.lo, b.hi); }
+  float area() const {
+    alignas(16) float l[4], h[4];
+    lo.store(l);
+    hi.store(h);
+    if (l[0] > h[0]) return 0.0f;
+    const float x = h[0] - l[0], y = h[1] - l[1], z = h[2] - l[2];
+    return 2.0f * (x * y + y * z + z * x);
+  }
+  Box box() const {
+    alignas(16) float l[4], h[4];
+    lo.store(l);
+    hi.store(h);
+    Box out;
+    for (int a = 0; a < 3; ++a) {
+      out.lo[a] = l[a];
+      out.hi[a] = h[a];
+    }
+    return out;
+  }
+};
+
+// The bins of each axis over a range's centroids; a range of few references gets as many bins as
+// references (at least four): a bin per reference is all a small range can use, and the sweep
+// over the bins is the fixed cost of every split.
 struct Grid {
-  float origin[3] = {0, 0, 0};
-  float scale[3] = {0, 0, 0};
+  int bins = kMaxBins;
+  F4 origin = F4::all(0.0f), scale = F4::all(0.0f), last = F4::all(0.0f);
   bool usable[3] = {false, false, false};
 
   explicit Grid(const Range& range) {
+    bins = static_cast<int>(std::clamp<std::size_t>(range.count(), 4, kMaxBins));
+    float s[3];
     for (int a = 0; a < 3; ++a) {
       const float extent = range.centroids.hi[a] - range.centroids.lo[a];
       usable[a] = extent > 0.0f && std::isfinite(extent);
-      origin[a] = range.centroids.lo[a];
-      scale[a] = usable[a] ? float(kBins) * (1.0f - 1e-5f) / extent : 0.0f;
+      s[a] = usable[a] ? float(bins) * (1.0f - 1e-5f) / extent : 0.0f;
     }
+    origin = F4::set(range.centroids.lo[0], range.centroids.lo[1], range.centroids.lo[2]);
+    scale = F4::set(s[0], s[1], s[2]);
+    last = F4::all(float(bins - 1));
   }
-  int bin(int axis, float centroid) const {
-    const int b = static_cast<int>((centroid - origin[axis]) * scale[axis]);
-    return std::clamp(b, 0, kBins - 1);
+  // The bin of a reference on each axis (its doubled centroid, clamped to the grid).
+  void bin(const PrimRef& r, int* out) const {
+    min(max((F4::load(r.lo) + F4::load(r.hi) - origin) * scale, F4::all(0.0f)), last).truncate(out);
   }
 };
 
 // Each axis's bins: the box and the triangles of the references whose centroid falls in each.
+// Only the grid's bins are set up: a small range pays for few.
 struct Bins {
-#ifdef __SSE4_1__
-  // One SSE min and max per reference and axis (Embree's binner): lanes 0-2 the box, lane 3 unused
-  // (it takes the face and triangle words along, never read).
-  alignas(16) float lo[3][kBins][4];
-  alignas(16) float hi[3][kBins][4];
-  std::uint32_t triangles[3][kBins] = {};
+  F4 lo[3][kMaxBins], hi[3][kMaxBins];
+  std::uint32_t triangles[3][kMaxBins];
 
-  Bins() {
+  Bins(const PrimRef* refs, std::size_t begin, std::size_t end, const Grid& grid) {
+    static_assert(offsetof(PrimRef, face) == 3 * sizeof(float) && offsetof(PrimRef, hi) == 4 * sizeof(float));
     for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < kBins; ++b) {
-        _mm_store_ps(lo[a][b], _mm_set1_ps(std::numeric_limits<float>::infinity()));
-        _mm_store_ps(hi[a][b], _mm_set1_ps(-std::numeric_limits<float>::infinity()));
+      for (int b = 0; b < grid.bins; ++b) {
+        lo[a][b] = F4::all(kInf);
+        hi[a][b] = F4::all(-kInf);
+        triangles[a][b] = 0;
       }
     }
-  }
-  void add(const PrimRef* refs, std::size_t begin, std::size_t end, const Grid& grid) {
-    static_assert(offsetof(PrimRef, face) == 3 * sizeof(float) && offsetof(PrimRef, hi) == 4 * sizeof(float));
-    const __m128 origin = _mm_setr_ps(grid.origin[0], grid.origin[1], grid.origin[2], 0.0f);
-    const __m128 scale = _mm_setr_ps(grid.scale[0], grid.scale[1], grid.scale[2], 0.0f);
-    const __m128i last = _mm_set1_epi32(kBins - 1), first = _mm_setzero_si128();
     for (std::size_t i = begin; i < end; ++i) {
       const PrimRef& r = refs[i];
-      const __m128 rlo = _mm_loadu_ps(r.lo), rhi = _mm_loadu_ps(r.hi);
-      // Grid::bin, three axes at once: the same subtraction, product and truncation.
-      const __m128i bin = _mm_max_epi32(
-          _mm_min_epi32(_mm_cvttps_epi32(_mm_mul_ps(_mm_sub_ps(_mm_add_ps(rlo, rhi), origin), scale)), last),
-          first);
+      const F4 rlo = F4::load(r.lo), rhi = F4::load(r.hi);
       alignas(16) int b[4];
-      _mm_store_si128(reinterpret_cast<__m128i*>(b), bin);
+      grid.bin(r, b);
       for (int a = 0; a < 3; ++a) {
-        _mm_store_ps(lo[a][b[a]], _mm_min_ps(_mm_load_ps(lo[a][b[a]]), rlo));
-        _mm_store_ps(hi[a][b[a]], _mm_max_ps(_mm_load_ps(hi[a][b[a]]), rhi));
+        lo[a][b[a]] = min(lo[a][b[a]], rlo);
+        hi[a][b[a]] = max(hi[a][b[a]], rhi);
         triangles[a][b[a]] += r.triangles;
       }
     }
   }
-  void add(const Bins& other) {
-    for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < kBins; ++b) {
-        _mm_store_ps(lo[a][b], _mm_min_ps(_mm_load_ps(lo[a][b]), _mm_load_ps(other.lo[a][b])));
-        _mm_store_ps(hi[a][b], _mm_max_ps(_mm_load_ps(hi[a][b]), _mm_load_ps(other.hi[a][b])));
-        triangles[a][b] += other.triangles[a][b];
-      }
-    }
-  }
-  Box box(int a, int b) const {
-    Box out;
-    if (triangles[a][b] != 0) out.extend(lo[a][b], hi[a][b]);
+  // The union of bins [first, last) on `axis`.
+  Box4 unite(int axis, int first, int last) const {
+    Box4 out;
+    for (int b = first; b < last; ++b) out.extend(lo[axis][b], hi[axis][b]);
     return out;
   }
-#else
-  Box boxes[3][kBins];
-  std::uint32_t triangles[3][kBins] = {};
-
-  void add(const PrimRef* refs, std::size_t begin, std::size_t end, const Grid& grid) {
-    for (std::size_t i = begin; i < end; ++i) {
-      const PrimRef& r = refs[i];
-      for (int a = 0; a < 3; ++a) {
-        const int b = grid.bin(a, r.lo[a] + r.hi[a]);
-        boxes[a][b].extend(r.lo, r.hi);
-        triangles[a][b] += r.triangles;
-      }
-    }
-  }
-  void add(const Bins& other) {
-    for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < kBins; ++b) {
-        boxes[a][b].extend(other.boxes[a][b]);
-        triangles[a][b] += other.triangles[a][b];
-      }
-    }
-  }
-  Box box(int a, int b) const { return boxes[a][b]; }
-#endif
 };
 
 }  // namespace
@@ -122,66 +166,72 @@ Range rangeOf(const PrimRef* refs, std::uint32_t begin, std::uint32_t end) {
   Range range;
   range.begin = begin;
   range.end = end;
+  Box4 bounds, centroids;
   for (std::uint32_t i = begin; i < end; ++i) {
     const PrimRef& r = refs[i];
-    range.bounds.extend(r.lo, r.hi);
-    const float c[3] = {r.lo[0] + r.hi[0], r.lo[1] + r.hi[1], r.lo[2] + r.hi[2]};
-    range.centroids.extend(c, c);
+    const F4 lo = F4::load(r.lo), hi = F4::load(r.hi);
+    bounds.extend(lo, hi);
+    const F4 c = lo + hi;
+    centroids.extend(c, c);
     range.triangles += r.triangles;
+  }
+  if (begin < end) {
+    range.bounds = bounds.box();
+    range.centroids = centroids.box();
   }
   return range;
 }
 
-Split chooseSplit(const PrimRef* refs, const Range& range, const BvhBuildOptions& options, int threads) {
+Split chooseSplit(const PrimRef* refs, const Range& range, const BvhBuildOptions& options, LeafRule rule) {
   Split split;
   if (range.count() <= 1) return split;
   const Grid grid(range);
-  Bins bins;
-  const ChunkPlan plan(range.count(), 1 << 14);
-  if (threads > 1 && plan.chunks > 1) {
-    std::vector<Bins> chunkBins(plan.chunks);
-    parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
-      chunkBins[chunk].add(refs, range.begin + begin, range.begin + end, grid);
-    });
-    for (const Bins& part : chunkBins) bins.add(part);
-  } else {
-    bins.add(refs, range.begin, range.end, grid);
-  }
+  const Bins bins(refs, range.begin, range.end, grid);
+  const int count = grid.bins;
   // Cheapest boundary: the sum of each side's area times its triangles (the first of equal ones).
-  float best = std::numeric_limits<float>::infinity();
+  float best = kInf;
   for (int a = 0; a < 3; ++a) {
     if (!grid.usable[a]) continue;
-    float rightArea[kBins];
-    std::uint32_t rightCount[kBins];
-    Box right;
-    std::uint32_t count = 0;
-    for (int b = kBins - 1; b > 0; --b) {
-      right.extend(bins.box(a, b));
-      count += bins.triangles[a][b];
+    float rightArea[kMaxBins];
+    std::uint32_t rightCount[kMaxBins];
+    Box4 right;
+    std::uint32_t triangles = 0;
+    for (int b = count - 1; b > 0; --b) {
+      right.extend(bins.lo[a][b], bins.hi[a][b]);
+      triangles += bins.triangles[a][b];
       rightArea[b] = right.area();
-      rightCount[b] = count;
+      rightCount[b] = triangles;
     }
-    Box left;
-    count = 0;
-    for (int b = 1; b < kBins; ++b) {
-      left.extend(bins.box(a, b - 1));
-      count += bins.triangles[a][b - 1];
-      if (count == 0 || rightCount[b] == 0) continue;
-      const float cost = left.area() * float(count) + rightArea[b] * float(rightCount[b]);
+    Box4 left;
+    triangles = 0;
+    for (int b = 1; b < count; ++b) {
+      left.extend(bins.lo[a][b - 1], bins.hi[a][b - 1]);
+      triangles += bins.triangles[a][b - 1];
+      if (triangles == 0 || rightCount[b] == 0) continue;
+      const float cost = left.area() * float(triangles) + rightArea[b] * float(rightCount[b]);
       if (cost < best) {
         best = cost;
         split.axis = a;
         split.bin = b;
+        split.leftTriangles = triangles;
       }
     }
   }
   const float area = range.bounds.area();
   const float leafCost = options.intersectionCost * float(range.triangles);
-  const bool binned = best < std::numeric_limits<float>::infinity();
+  const bool binned = best < kInf;
   split.cost =
       options.traversalCost + (area > 0.0f && binned ? options.intersectionCost * best / area : leafCost);
-  if (range.triangles <= BvhNode::kMaxLeafTriangles && (!binned || leafCost <= split.cost)) return split;
+  const bool leafAllowed =
+      rule == LeafRule::BySah ? range.triangles <= BvhNode::kMaxLeafTriangles : range.count() <= 1;
+  if (leafAllowed && (rule == LeafRule::SingleReference || !binned || leafCost <= split.cost)) return split;
   split.kind = binned && range.depth < kMaxBinnedDepth ? SplitKind::Binned : SplitKind::Median;
+  if (split.kind == SplitKind::Binned) {
+    // Both sides' boxes from the bins: the partition need not gather them again.
+    split.bins = count;
+    split.left = bins.unite(split.axis, 0, split.bin).box();
+    split.right = bins.unite(split.axis, split.bin, count).box();
+  }
   return split;
 }
 
@@ -191,34 +241,45 @@ void partition(PrimRef* refs, const Range& range, Range& left, Range& right) {
     left = rangeOf(refs, range.begin, middle);
     right = rangeOf(refs, middle, range.end);
   } else {
-    // Hoare's partition, each reference added to its side's bounds as it is placed: one pass over
-    // the references instead of a partition and a second pass for the bounds.
+    // Hoare's partition; each side's centroid box gathered as references are placed (their boxes
+    // and triangles come from the bins).
     const Grid grid(range);
     const int axis = range.split.axis, bin = range.split.bin;
-    auto goesLeft = [&](const PrimRef& r) { return grid.bin(axis, r.lo[axis] + r.hi[axis]) < bin; };
-    auto add = [](Range& side, const PrimRef& r) {
-      side.bounds.extend(r.lo, r.hi);
-      const float c[3] = {r.lo[0] + r.hi[0], r.lo[1] + r.hi[1], r.lo[2] + r.hi[2]};
-      side.centroids.extend(c, c);
-      side.triangles += r.triangles;
+    auto goesLeft = [&](const PrimRef& r) {
+      alignas(16) int b[4];
+      grid.bin(r, b);
+      return b[axis] < bin;
     };
     left = Range{};
     right = Range{};
+    Box4 leftCentroids, rightCentroids;
+    auto add = [](Box4& side, const PrimRef& r) {
+      const F4 c = F4::load(r.lo) + F4::load(r.hi);
+      side.extend(c, c);
+    };
     PrimRef* i = refs + range.begin;
     PrimRef* j = refs + range.end;
     while (true) {
-      while (i < j && goesLeft(*i)) add(left, *i++);
-      while (i < j && !goesLeft(*(j - 1))) add(right, *--j);
+      while (i < j && goesLeft(*i)) add(leftCentroids, *i++);
+      while (i < j && !goesLeft(*(j - 1))) add(rightCentroids, *--j);
       if (i >= j) break;
       std::swap(*i, *--j);
-      add(left, *i++);
-      add(right, *j);
+      add(leftCentroids, *i++);
+      add(rightCentroids, *j);
     }
     const auto middle = static_cast<std::uint32_t>(i - refs);
     left.begin = range.begin;
     left.end = right.begin = middle;
     right.end = range.end;
+    left.bounds = range.split.left;
+    right.bounds = range.split.right;
+    left.centroids = leftCentroids.box();
+    right.centroids = rightCentroids.box();
+    left.triangles = range.split.leftTriangles;
+    right.triangles = range.triangles - left.triangles;
   }
+  left.firstTriangle = range.firstTriangle;
+  right.firstTriangle = range.firstTriangle + left.triangles;
   left.depth = right.depth = range.depth + 1;
 }
 

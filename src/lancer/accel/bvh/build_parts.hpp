@@ -1,5 +1,5 @@
 // The parts of the BVH build (bvh/build.cpp): face references, ranges of them with their bounds, the
-// binned SAH split of a range and its partition.
+// binned SAH split of a range (its bins also give both sides' bounds) and its partition.
 #pragma once
 
 #include <algorithm>
@@ -49,9 +49,12 @@ struct Box {
 };
 
 // Binary splits deeper than this take the middle reference (a balanced tree below), so that the
-// traversal's fixed stack always suffices however the centroids fall.
-constexpr std::uint32_t kMaxBinnedDepth = 48;
-static_assert(kMaxBinnedDepth + 32 <= BvhNode::kMaxDepth);
+// traversal's fixed stack always suffices however the centroids fall: below it, middle splits over
+// the clusters (at most 2^28, one a face at the face limit) and then inside a cluster (at most
+// kMaxClusterReferences) halve what is left.
+constexpr std::uint32_t kMaxBinnedDepth = 43;
+constexpr std::uint32_t kMaxClusterReferences = 512;
+static_assert(kMaxBinnedDepth + 28 + 9 <= BvhNode::kMaxDepth);
 
 enum class SplitKind : std::uint8_t { Leaf, Binned, Median };
 
@@ -60,8 +63,12 @@ enum class SplitKind : std::uint8_t { Leaf, Binned, Median };
 struct Split {
   SplitKind kind = SplitKind::Leaf;
   int axis = 0;
-  int bin = 0;  // the left side holds bins [0, bin)
+  int bins = 0;  // of the range's grid (fewer for small ranges)
+  int bin = 0;   // the left side holds bins [0, bin)
   float cost = 0;
+  // A binned split's sides, read from the bins: their boxes and triangles.
+  Box left, right;
+  std::uint32_t leftTriangles = 0;
 };
 
 // References [begin, end) with the union of their boxes, of their centroids (as lo + hi, the
@@ -69,7 +76,8 @@ struct Split {
 struct Range {
   std::uint32_t begin = 0, end = 0;
   std::uint32_t triangles = 0;
-  std::uint32_t depth = 0;  // of the binary split that made it
+  std::uint32_t depth = 0;          // of the binary split that made it
+  std::uint32_t firstTriangle = 0;  // of its first reference, in leaf order
   Box bounds, centroids;
   Split split;
 
@@ -78,10 +86,15 @@ struct Range {
 
 Range rangeOf(const PrimRef* refs, std::uint32_t begin, std::uint32_t end);
 
-// The binned SAH choice for `range` (on `threads` threads; the answer is the same on any number).
-Split chooseSplit(const PrimRef* refs, const Range& range, const BvhBuildOptions& options, int threads);
+// Whether a range may end in a leaf: a range of faces may (its SAH decides), a range of clusters
+// (bvh/build.cpp's top) only when it holds one.
+enum class LeafRule : std::uint8_t { BySah, SingleReference };
 
-// Splits `range` as its split says (references reordered in place), giving both sides' bounds.
+// The binned SAH choice for `range`.
+Split chooseSplit(const PrimRef* refs, const Range& range, const BvhBuildOptions& options, LeafRule rule);
+
+// Splits `range` as its split says (references reordered in place), giving both sides' bounds and
+// where their triangles start.
 void partition(PrimRef* refs, const Range& range, Range& left, Range& right);
 
 struct GatheredFaces {

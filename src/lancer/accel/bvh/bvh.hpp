@@ -1,7 +1,8 @@
 // The default accelerator: a bounding volume hierarchy of 8-wide nodes (Wald, Benthin & Boulos 2008,
-// "Getting rid of packets"; Embree's BVH8), built by binned SAH over the faces, with the children's
-// boxes tested in one AVX2 step and leaves of pre-gathered triangles. Answers equal NaiveAccel's
-// exactly (the shared watertight test, ties to the lower face), so images equal the kd-tree's.
+// "Getting rid of packets"; Embree's BVH8), built by binned SAH over Morton-ordered clusters of faces and
+// inside them, with the children's boxes tested in one AVX2 step and leaves of pre-gathered triangles.
+// Answers equal NaiveAccel's exactly (the shared watertight test, ties to the lower face), so images equal
+// the kd-tree's.
 #pragma once
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include "lancer/accel/triangle_intersect.hpp"
 #include "lancer/math/aabb.hpp"
 #include "lancer/mesh/mesh.hpp"
+#include "lancer/util/isa.hpp"
 
 namespace lancer {
 
@@ -28,10 +30,11 @@ struct BvhBuildOptions {
   float intersectionCost = 1.0f;
   // Build threads; 0 uses every hardware thread. The tree does not depend on it.
   int threads = 0;
-  // Ranges of more face references than this are split in the parallel top (binning on every
-  // thread); below, whole subtrees go to the threads. 0 picks faces / (4 threads). Only the schedule
-  // changes with it, never the tree (tests set it low).
-  std::uint32_t parallelTopAbove = 0;
+  // Most face references in a cluster (1 to 512): the build sorts the faces in Morton order, cuts
+  // that order into clusters of nearby faces, builds each cluster's subtree on its own (on every
+  // thread) and the top of the tree over the clusters. Smaller clusters build faster and make a
+  // costlier tree (tests set it low to reach the top's code with few faces).
+  std::uint32_t maxClusterReferences = 512;
 };
 
 class Bvh : public TreeQueries<Bvh> {
@@ -43,15 +46,24 @@ class Bvh : public TreeQueries<Bvh> {
   // single rays (bvh/traversal.cpp) and packets (bvh/packet_traversal.cpp: the active lanes walk
   // the tree once together, each child box tested for every lane, each leaf triangle for the lanes
   // that reached it).
+  // Each runs the copy of the walk for the CPU (util/isa.hpp: baseline, or x86-64-v3 with AVX2).
   template <typename Filter>
-  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const;
+  bool closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const {
+    return isa::dispatch([&](auto isa) { return closestHitOn<decltype(isa)>(ray, tMin, tMax, keeps, hit); });
+  }
   template <typename Filter>
-  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const;
+  bool anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const {
+    return isa::dispatch([&](auto isa) { return anyHitOn<decltype(isa)>(ray, tMin, tMax, keeps); });
+  }
   template <typename Filter>
   std::uint32_t closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
-                            std::span<Hit, kPacketSize> hits) const;
+                            std::span<Hit, kPacketSize> hits) const {
+    return isa::dispatch([&](auto isa) { return closestHitsOn<decltype(isa)>(packet, active, keeps, hits); });
+  }
   template <typename Filter>
-  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
+  std::uint32_t anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const {
+    return isa::dispatch([&](auto isa) { return anyHitsOn<decltype(isa)>(packet, active, keeps); });
+  }
 
   // Refit (bvh/refit.cpp): the same faces at new `positions` (a deformed time step: same vertex
   // count, same topology), the tree kept and its boxes recomputed bottom up. Returns false, leaving
@@ -68,12 +80,23 @@ class Bvh : public TreeQueries<Bvh> {
   const AccelStats& stats() const { return stats_; }
   const Aabb& bounds() const { return bounds_; }
 
-  // For tests: the nodes (root at 0, depth first) and the triangles in leaf order.
+  // For tests: the nodes (root at 0, every node before its children) and the triangles in leaf order.
   std::span<const BvhNode> nodes() const { return nodes_; }
   std::span<const PackedTriangle> triangles() const { return triangles_; }
   std::span<const PackedTriangle> slivers() const { return slivers_; }
 
  private:
+  // The walks, one instantiation per copy of the kernels (Isa: an isa:: tag).
+  template <typename Isa, typename Filter>
+  bool closestHitOn(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const;
+  template <typename Isa, typename Filter>
+  bool anyHitOn(const Ray& ray, float tMin, float tMax, const Filter& keeps) const;
+  template <typename Isa, typename Filter>
+  std::uint32_t closestHitsOn(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
+                              std::span<Hit, kPacketSize> hits) const;
+  template <typename Isa, typename Filter>
+  std::uint32_t anyHitsOn(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
+
   friend struct BvhBuilder;
 
   // The SAH cost of the tree as it stands, in the build's units (stats_.sahCost).

@@ -8,8 +8,11 @@
 
 #include "lancer/accel/hit_query.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
+#include "lancer/util/isa.hpp"
 
+// The copy of the kernels being compiled (util/isa.hpp).
 namespace lancer::bvh {
+inline namespace LANCER_ISA_NS {
 
 // Tests `count` (1..8) triangles; true when the query stops (any hit).
 template <typename Query>
@@ -36,4 +39,5 @@ inline bool testLeaf(const PackedTriangle* tri, std::uint32_t count, const Ray& 
   return false;
 }
 
+}  // namespace LANCER_ISA_NS
 }  // namespace lancer::bvh

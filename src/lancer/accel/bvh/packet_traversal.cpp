@@ -160,9 +160,9 @@ std::uint32_t walkPacket(std::span<const BvhNode> nodes, const PackedTriangle* t
 
 }  // namespace
 
-template <typename Filter>
-std::uint32_t Bvh::closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
-                               std::span<Hit, kPacketSize> hits) const {
+template <typename Isa, typename Filter>
+std::uint32_t Bvh::closestHitsOn(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
+                                 std::span<Hit, kPacketSize> hits) const {
   active &= kAllLanes;
 #ifdef LANCER_PACKETS_AVX2
   if (std::popcount(active) < 2) return closestHitsOneByOne(packet, active, keeps, hits);
@@ -189,8 +189,8 @@ std::uint32_t Bvh::closestHits(const RayPacket& packet, std::uint32_t active, co
 #endif
 }
 
-template <typename Filter>
-std::uint32_t Bvh::anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const {
+template <typename Isa, typename Filter>
+std::uint32_t Bvh::anyHitsOn(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const {
   active &= kAllLanes;
 #ifdef LANCER_PACKETS_AVX2
   if (std::popcount(active) < 2) return anyHitsOneByOne(packet, active, keeps);
@@ -214,11 +214,14 @@ std::uint32_t Bvh::anyHits(const RayPacket& packet, std::uint32_t active, const 
 #endif
 }
 
-template std::uint32_t Bvh::closestHits(const RayPacket&, std::uint32_t, const KeepEveryHit&,
-                                        std::span<Hit, kPacketSize>) const;
-template std::uint32_t Bvh::closestHits(const RayPacket&, std::uint32_t, const HitFilter&,
-                                        std::span<Hit, kPacketSize>) const;
-template std::uint32_t Bvh::anyHits(const RayPacket&, std::uint32_t, const KeepEveryHit&) const;
-template std::uint32_t Bvh::anyHits(const RayPacket&, std::uint32_t, const HitFilter&) const;
+template std::uint32_t Bvh::closestHitsOn<LANCER_ISA_TAG>(const RayPacket&, std::uint32_t,
+                                                          const KeepEveryHit&,
+                                                          std::span<Hit, kPacketSize>) const;
+template std::uint32_t Bvh::closestHitsOn<LANCER_ISA_TAG>(const RayPacket&, std::uint32_t, const HitFilter&,
+                                                          std::span<Hit, kPacketSize>) const;
+template std::uint32_t Bvh::anyHitsOn<LANCER_ISA_TAG>(const RayPacket&, std::uint32_t,
+                                                      const KeepEveryHit&) const;
+template std::uint32_t Bvh::anyHitsOn<LANCER_ISA_TAG>(const RayPacket&, std::uint32_t,
+                                                      const HitFilter&) const;
 
 }  // namespace lancer

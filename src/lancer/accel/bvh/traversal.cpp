@@ -27,8 +27,8 @@ bool walk(std::span<const BvhNode> nodes, const PackedTriangle* triangles, const
 
 }  // namespace
 
-template <typename Filter>
-bool Bvh::closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const {
+template <typename Isa, typename Filter>
+bool Bvh::closestHitOn(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const {
   ClosestHit<Filter> query{Hit{tMax, Hit{}.face}, tMax, keeps};
   for (const PackedTriangle& tri : slivers_) query.test(tri, ray, tMin, tMax);
   walk(nodes_, triangles_.data(), bounds_, magnitude_, ray, tMin, tMax, query);
@@ -37,8 +37,8 @@ bool Bvh::closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps
   return true;
 }
 
-template <typename Filter>
-bool Bvh::anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const {
+template <typename Isa, typename Filter>
+bool Bvh::anyHitOn(const Ray& ray, float tMin, float tMax, const Filter& keeps) const {
   AnyHit<Filter> query{keeps};
   for (const PackedTriangle& tri : slivers_) {
     if (query.test(tri, ray, tMin, tMax)) return true;
@@ -46,9 +46,9 @@ bool Bvh::anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) co
   return walk(nodes_, triangles_.data(), bounds_, magnitude_, ray, tMin, tMax, query);
 }
 
-template bool Bvh::closestHit(const Ray&, float, float, const KeepEveryHit&, Hit&) const;
-template bool Bvh::closestHit(const Ray&, float, float, const HitFilter&, Hit&) const;
-template bool Bvh::anyHit(const Ray&, float, float, const KeepEveryHit&) const;
-template bool Bvh::anyHit(const Ray&, float, float, const HitFilter&) const;
+template bool Bvh::closestHitOn<LANCER_ISA_TAG>(const Ray&, float, float, const KeepEveryHit&, Hit&) const;
+template bool Bvh::closestHitOn<LANCER_ISA_TAG>(const Ray&, float, float, const HitFilter&, Hit&) const;
+template bool Bvh::anyHitOn<LANCER_ISA_TAG>(const Ray&, float, float, const KeepEveryHit&) const;
+template bool Bvh::anyHitOn<LANCER_ISA_TAG>(const Ray&, float, float, const HitFilter&) const;
 
 }  // namespace lancer

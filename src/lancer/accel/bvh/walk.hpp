@@ -11,8 +11,11 @@
 #include "lancer/accel/bvh/box_test.hpp"
 #include "lancer/accel/bvh/leaf_test.hpp"
 #include "lancer/accel/bvh/node.hpp"
+#include "lancer/util/isa.hpp"
 
+// The copy of the kernels being compiled (util/isa.hpp).
 namespace lancer::bvh {
+inline namespace LANCER_ISA_NS {
 
 struct StackEntry {
   std::uint32_t child;
@@ -94,4 +97,5 @@ bool walkFrom(std::uint32_t start, std::span<const BvhNode> nodes, const PackedT
   }
 }
 
+}  // namespace LANCER_ISA_NS
 }  // namespace lancer::bvh

@@ -9,21 +9,13 @@
 #include "lancer/accel/kd/build.hpp"
 #include "lancer/accel/kd/clip.hpp"
 #include "lancer/accel/kd_tree.hpp"
+#include "lancer/util/prefetch.hpp"
 
 #if defined(__AVX2__)
 #include <immintrin.h>
 #endif
 
 namespace lancer::binned {
-
-// A prefetch the compiler keeps (GCC 12 dropped the __builtin_prefetch calls of the partition loop).
-inline void prefetchLine(const void* at) {
-#if defined(__x86_64__) || defined(__i386__)
-  asm volatile("prefetcht0 %0" : : "m"(*static_cast<const char*>(at)));
-#else
-  __builtin_prefetch(at);
-#endif
-}
 
 // The children's cells, and the bounds of what each side received.
 struct Children {

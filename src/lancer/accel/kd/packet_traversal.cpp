@@ -296,9 +296,9 @@ std::uint32_t walkPacket(std::span<const KdNode> layout, const KdPacketFrame& f,
 
 }  // namespace
 
-template <typename Filter>
-std::uint32_t KdTree::closestHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
-                                  std::span<Hit, kPacketSize> hits) const {
+template <typename Isa, typename Filter>
+std::uint32_t KdTree::closestHitsOn(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
+                                    std::span<Hit, kPacketSize> hits) const {
   active &= kAllLanes;
 #ifdef LANCER_PACKETS_AVX2
   if (std::popcount(active) < 2) return closestHitsOneByOne(packet, active, keeps, hits);
@@ -317,8 +317,8 @@ std::uint32_t KdTree::closestHits(const RayPacket& packet, std::uint32_t active,
 #endif
 }
 
-template <typename Filter>
-std::uint32_t KdTree::anyHits(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const {
+template <typename Isa, typename Filter>
+std::uint32_t KdTree::anyHitsOn(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const {
   active &= kAllLanes;
 #ifdef LANCER_PACKETS_AVX2
   if (std::popcount(active) < 2) return anyHitsOneByOne(packet, active, keeps);
@@ -339,11 +339,15 @@ std::uint32_t KdTree::anyHits(const RayPacket& packet, std::uint32_t active, con
 #endif
 }
 
-template std::uint32_t KdTree::closestHits(const RayPacket&, std::uint32_t, const KeepEveryHit&,
-                                           std::span<Hit, kPacketSize>) const;
-template std::uint32_t KdTree::closestHits(const RayPacket&, std::uint32_t, const HitFilter&,
-                                           std::span<Hit, kPacketSize>) const;
-template std::uint32_t KdTree::anyHits(const RayPacket&, std::uint32_t, const KeepEveryHit&) const;
-template std::uint32_t KdTree::anyHits(const RayPacket&, std::uint32_t, const HitFilter&) const;
+template std::uint32_t KdTree::closestHitsOn<LANCER_ISA_TAG>(const RayPacket&, std::uint32_t,
+                                                             const KeepEveryHit&,
+                                                             std::span<Hit, kPacketSize>) const;
+template std::uint32_t KdTree::closestHitsOn<LANCER_ISA_TAG>(const RayPacket&, std::uint32_t,
+                                                             const HitFilter&,
+                                                             std::span<Hit, kPacketSize>) const;
+template std::uint32_t KdTree::anyHitsOn<LANCER_ISA_TAG>(const RayPacket&, std::uint32_t,
+                                                         const KeepEveryHit&) const;
+template std::uint32_t KdTree::anyHitsOn<LANCER_ISA_TAG>(const RayPacket&, std::uint32_t,
+                                                         const HitFilter&) const;
 
 }  // namespace lancer

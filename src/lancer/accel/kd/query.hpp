@@ -6,8 +6,11 @@
 
 #include "lancer/accel/hit_query.hpp"
 #include "lancer/accel/kd/node.hpp"
+#include "lancer/util/isa.hpp"
 
+// The copy of the kernels being compiled (util/isa.hpp).
 namespace lancer::kd {
+inline namespace LANCER_ISA_NS {
 
 // Recently tested triangles, direct-mapped by index: neighbouring leaves share triangles (a kd leaf
 // refers to triangles, a BVH leaf holds its own).
@@ -28,4 +31,5 @@ inline std::uint32_t sameSignTriangles(const KdNode* base, const std::uint32_t* 
 
 #endif  // LANCER_LEAF_AVX2
 
+}  // namespace LANCER_ISA_NS
 }  // namespace lancer::kd

@@ -15,8 +15,12 @@
 namespace lancer {
 
 #ifdef LANCER_KD_COUNTERS
+#if defined(LANCER_ISA_X86_64_V3)
+extern thread_local KdTraversalCounters kdCounters;  // the baseline copy's (this file is built twice)
+#else
 thread_local KdTraversalCounters kdCounters;
 KdTraversalCounters& kdTraversalCounters() { return kdCounters; }
+#endif
 #define LANCER_KD_COUNT(field) ++kdCounters.field
 #else
 #define LANCER_KD_COUNT(field) ((void)0)
@@ -177,8 +181,8 @@ bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, c
 
 }  // namespace
 
-template <typename Filter>
-bool KdTree::closestHit(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const {
+template <typename Isa, typename Filter>
+bool KdTree::closestHitOn(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const {
   LANCER_KD_COUNT(rays);
   ClosestHit<Filter> query{Hit{tMax, Hit{}.face}, tMax, keeps};
   for (const PackedTriangle& tri : slivers_) query.test(tri, ray, tMin, tMax);
@@ -188,8 +192,8 @@ bool KdTree::closestHit(const Ray& ray, float tMin, float tMax, const Filter& ke
   return true;
 }
 
-template <typename Filter>
-bool KdTree::anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps) const {
+template <typename Isa, typename Filter>
+bool KdTree::anyHitOn(const Ray& ray, float tMin, float tMax, const Filter& keeps) const {
   LANCER_KD_COUNT(rays);
   AnyHit<Filter> query{keeps};
   for (const PackedTriangle& tri : slivers_) {
@@ -198,9 +202,9 @@ bool KdTree::anyHit(const Ray& ray, float tMin, float tMax, const Filter& keeps)
   return walk(layout_, bounds_, magnitude_, ray, tMin, tMax, query);
 }
 
-template bool KdTree::closestHit(const Ray&, float, float, const KeepEveryHit&, Hit&) const;
-template bool KdTree::closestHit(const Ray&, float, float, const HitFilter&, Hit&) const;
-template bool KdTree::anyHit(const Ray&, float, float, const KeepEveryHit&) const;
-template bool KdTree::anyHit(const Ray&, float, float, const HitFilter&) const;
+template bool KdTree::closestHitOn<LANCER_ISA_TAG>(const Ray&, float, float, const KeepEveryHit&, Hit&) const;
+template bool KdTree::closestHitOn<LANCER_ISA_TAG>(const Ray&, float, float, const HitFilter&, Hit&) const;
+template bool KdTree::anyHitOn<LANCER_ISA_TAG>(const Ray&, float, float, const KeepEveryHit&) const;
+template bool KdTree::anyHitOn<LANCER_ISA_TAG>(const Ray&, float, float, const HitFilter&) const;
 
 }  // namespace lancer

@@ -162,9 +162,10 @@ std::vector<float> mapElementNodeValues(ElementNodeRecords records, int componen
 
 std::vector<float> mapElementNodeValues(const UniformElementNodeRecords& records, int componentCount,
                                         const std::vector<std::uint64_t>& faceElement,
-                                        const std::vector<MshCornerNodes>& faceCornerNode) {
+                                        const std::vector<MshCornerNodes>& faceCornerNode,
+                                        const MshCoveredElements& covered) {
   return cornerValues(
-      componentCount, faceElement, faceCornerNode, MshCoveredElements{},
+      componentCount, faceElement, faceCornerNode, covered,
       [&](std::uint64_t tag) -> std::uint32_t {
         return tag < records.firstTag || tag - records.firstTag >= records.count
                    ? kNoRecord

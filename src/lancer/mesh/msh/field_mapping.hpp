@@ -97,7 +97,8 @@ struct UniformElementNodeRecords {
 // The same as above for such records.
 std::vector<float> mapElementNodeValues(const UniformElementNodeRecords& records, int components,
                                         const std::vector<std::uint64_t>& faceElement,
-                                        const std::vector<MshCornerNodes>& faceCornerNode);
+                                        const std::vector<MshCornerNodes>& faceCornerNode,
+                                        const MshCoveredElements& covered = {});
 // Per face, its element's values, else those of the volume element it covers (`covered`, may be
 // empty); NaN where the records have neither. Tags are resolved through the sorted aliases first.
 std::vector<float> mapElementValues(std::vector<std::uint64_t> tags, const std::vector<float>& values,

@@ -246,21 +246,36 @@ void readElementRecords(MshCursor& cursor, const MshFieldSection& section, const
                                   mapping.elementAliases, mapping.covered);
 }
 
-// The records' values per face corner, from the record of the element each face came from.
+// The records' values per face corner, from the record of the element each face came from. gmsh
+// writes a record per element, tagged 1..N in order, all of one node count: while the records go
+// on so, only their values are kept (no tag, offset or count per record: 20 bytes a record written
+// and read back), and the records are found by their offset; the first record that breaks the run
+// turns on the full tables, filled for the records before it.
 void readElementNodeRecords(MshCursor& cursor, const MshFieldSection& section, const MshFieldMapping& mapping,
                             MeshField& field, std::vector<std::string>& warnings) {
   const bool binary = section.binary;
   const auto components = static_cast<std::uint64_t>(field.components);
   ElementNodeRecords records;
-  records.tags.reserve(section.count);
-  records.firstValue.reserve(section.count);
-  records.nodeCount.reserve(section.count);
   // A guess of three nodes a record (a triangle); the count was checked against the file's bytes.
   records.values.reserve(section.count * components * 3);
-  adviseHugePages(records.tags);
-  adviseHugePages(records.firstValue);
-  adviseHugePages(records.nodeCount);
   adviseHugePages(records.values);
+  std::uint64_t firstTag = 0;
+  std::uint32_t runNodes = 0;
+  bool run = true;  // every record so far tagged firstTag + its index, with runNodes nodes
+  const auto startTables = [&](std::uint64_t recordsSoFar) {
+    run = false;
+    records.tags.reserve(section.count);
+    records.firstValue.reserve(section.count);
+    records.nodeCount.reserve(section.count);
+    adviseHugePages(records.tags);
+    adviseHugePages(records.firstValue);
+    adviseHugePages(records.nodeCount);
+    for (std::uint64_t r = 0; r < recordsSoFar; ++r) {
+      records.tags.push_back(firstTag + r);
+      records.firstValue.push_back(r * runNodes * components);
+      records.nodeCount.push_back(runNodes);
+    }
+  };
   DroppedElements dropped;
   for (std::uint64_t i = 0; i < section.count; ++i) {
     const char* recordAt = binary ? cursor.position() : cursor.tokenStart();
@@ -269,17 +284,30 @@ void readElementNodeRecords(MshCursor& cursor, const MshFieldSection& section, c
     const std::uint64_t nodes = readElementNodeCount(cursor, binary);
     cursor.requireBytes(nodes, binary ? 8 * components : components * kMinTextNumberBytes,
                         "the element's node values");
-    records.tags.push_back(tag);
-    records.firstValue.push_back(records.values.size());
-    records.nodeCount.push_back(static_cast<std::uint32_t>(nodes));
+    if (i == 0) firstTag = tag, runNodes = static_cast<std::uint32_t>(nodes);
+    if (run && (tag != firstTag + i || nodes != runNodes)) startTables(i);
+    if (!run) {
+      records.tags.push_back(tag);
+      records.firstValue.push_back(records.values.size());
+      records.nodeCount.push_back(static_cast<std::uint32_t>(nodes));
+    }
     for (std::uint64_t v = 0; v < nodes * components; ++v)
       records.values.push_back(
           readFieldValue(cursor, binary, "$ElementNodeData", field.name, "element", tag));
   }
   dropped.warn(cursor, "$ElementNodeData", field.name, section.count, warnings);
+  // Aliases rename tags, and the volume keeps the records as they are: both take the full tables.
+  if (run && (!mapping.elementAliases.empty() || mapping.volume)) startTables(section.count);
   if (mapping.volume) mapping.volume->addElementNodeField(field, records);
-  field.values = mapElementNodeValues(std::move(records), field.components, mapping.faceElement,
-                                      mapping.faceCornerNode, mapping.elementAliases, mapping.covered);
+  if (run && section.count > 0) {
+    const UniformElementNodeRecords uniform{firstTag, section.count, runNodes, records.values.data(),
+                                            runNodes * components};
+    field.values = mapElementNodeValues(uniform, field.components, mapping.faceElement,
+                                        mapping.faceCornerNode, mapping.covered);
+  } else {
+    field.values = mapElementNodeValues(std::move(records), field.components, mapping.faceElement,
+                                        mapping.faceCornerNode, mapping.elementAliases, mapping.covered);
+  }
 }
 
 }  // namespace

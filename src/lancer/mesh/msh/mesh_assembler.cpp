@@ -176,20 +176,21 @@ void MshMeshAssembler::addVolumeElement(int type, const std::uint32_t* n) {
     if (const std::optional<CellShape> shape = mshVolumeShape(type))
       volumeCapture_->addCell(*shape, n, element_, physical_, entity_);
   }
-  const std::size_t first = volumeFaces_.size();
-  appendVolumeElementFaces(type, n, group_, volumeFaces_);
+  if (volumeElementFaceCount(type) > 0) volumeElements_.add(type, n, group_, element_);
   if (volumeGroups_.empty() || volumeGroups_.back() != group_) volumeGroups_.push_back(group_);
-  if (!trackElements_) return;
-  volumeFaceElement_.resize(volumeFaces_.size(), element_);
-  for (std::size_t f = first; f < volumeFaces_.size(); ++f) {
-    std::array<std::uint16_t, 9> order{};
-    for (int i = 0; i < 9; ++i) {
-      const std::uint32_t node = volumeFaceNode(volumeFaces_[f], i);
-      order[static_cast<std::size_t>(i)] =
-          node == kNoVertex ? kAddedCentre : elementNodePosition(n, elementNodeCount_, node);
-    }
-    volumeFaceNodes_.push_back(order);
+}
+
+std::array<std::uint16_t, 9> MshMeshAssembler::volumeFaceNodeOrder(std::uint32_t volumeFace,
+                                                                   const MshVolumeFace& face) const {
+  int nodeCount = 0;
+  const std::uint32_t* n = volumeElements_.elementNodesOfFace(volumeFace, &nodeCount);
+  std::array<std::uint16_t, 9> order{};
+  for (int i = 0; i < 9; ++i) {
+    const std::uint32_t node = volumeFaceNode(face, i);
+    order[static_cast<std::size_t>(i)] =
+        node == kNoVertex ? kAddedCentre : elementNodePosition(n, nodeCount, node);
   }
+  return order;
 }
 
 // Order 3 and up: the element's flat faces through its nodes (high_order.hpp).
@@ -338,15 +339,17 @@ Mesh MshMeshAssembler::finish(MeshSourceInfo source, std::vector<PhysicalGroup> 
   std::sort(elementAliases_.begin(), elementAliases_.end());
   // Corner order becomes slot order (cornerSlot, mesh.hpp): the orientation of shells turns faces
   // after this, and a slot follows its vertex wherever the winding puts it.
-  std::vector<MshCornerNodes> cornerSlots(faceCornerNode_.size());
-  parallelFor(faceCornerNode_.size(), threads_, kFaceGrain, [&](std::size_t f) {
+  // In place: a second array of 8 bytes a face was as many fresh pages to fault in and clear.
+  std::vector<MshCornerNodes> cornerSlots = std::move(faceCornerNode_);
+  faceCornerNode_ = std::vector<MshCornerNodes>();
+  parallelFor(cornerSlots.size(), threads_, kFaceGrain, [&](std::size_t f) {
     const MeshFace& face = mesh.faces[f];
+    const MshCornerNodes order = cornerSlots[f];
     MshCornerNodes& slots = cornerSlots[f];
     slots.fill(kNoElementNode);
     for (int c = 0; c < face.cornerCount(); ++c)
-      slots[static_cast<std::size_t>(cornerSlot(face, c))] = faceCornerNode_[f][static_cast<std::size_t>(c)];
+      slots[static_cast<std::size_t>(cornerSlot(face, c))] = order[static_cast<std::size_t>(c)];
   });
-  faceCornerNode_ = std::vector<MshCornerNodes>();
   MshCoveredElements covered;
   if (!faceCoveredElement_.empty()) {
     covered.element = std::move(faceCoveredElement_);

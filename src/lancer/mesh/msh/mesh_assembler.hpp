@@ -47,7 +47,10 @@ class MshMeshAssembler {
   // Set before the elements are read when the file has $ElementData or $ElementNodeData (reader.cpp
   // says when): faces then remember their element's tag and where each of their corners is among
   // the element's nodes (16 bytes per face, only for such files).
-  void trackElements() { trackElements_ = true; }
+  void trackElements() {
+    trackElements_ = true;
+    volumeElements_.keepTags();
+  }
   bool tracksElements() const { return trackElements_; }
   // An MSH 2 copy of an element (one per further physical group) that was skipped: $ElementData
   // values given for the copy go to the kept element.
@@ -62,8 +65,22 @@ class MshMeshAssembler {
   std::shared_ptr<MshVolumeCapture> volumeCapture() const { return volumeCapture_; }
   // Threads for finish()'s passes (0: every core); the mesh does not depend on it.
   void setThreads(int threads) { threads_ = threads; }
+  int threads() const { return threads_; }
   // Room for `count` faces (and their elements, when trackElements() came first).
   void reserveFaces(std::size_t count);
+  // Room for `elements` volume elements of `elementNodes` nodes in all (from the block headers).
+  void reserveVolumeElements(std::uint64_t elements, std::uint64_t elementNodes) {
+    volumeElements_.reserve(elements, elementNodes);
+  }
+  // `count` volume elements of one type (mshVolumeShape knows it) in the current group, when no
+  // volume is kept: returns where their node indices go (count x the type's node count, filled by
+  // the caller) and, when tracking, their tags' place (else null).
+  std::uint32_t* addVolumeElements(int type, std::uint64_t count, std::uint64_t** tags) {
+    countByType_[static_cast<std::size_t>(type)] += count;
+    if (volumeGroups_.empty() || volumeGroups_.back() != group_) volumeGroups_.push_back(group_);
+    return volumeElements_.appendNodes(type, group_, count, tags);
+  }
+  bool keepsVolume() const { return volumeCapture_ != nullptr; }
   // The physical and elementary tags of the elements that follow; dimension is the elements'.
   void setGroup(int dimension, std::int32_t physical, std::int32_t entity) {
     if (physical == physical_ && entity == entity_ && dimension == dimension_) return;
@@ -158,8 +175,11 @@ class MshMeshAssembler {
   void recordCoveredElement(const SurfaceElementFaces& element, std::uint32_t volumeFace);
   void moveFace(std::size_t to, std::size_t from);  // every per-face array
   void truncateFaces(std::size_t count);
+  void reserveMoreFaces(std::size_t count);  // room for `count` more faces in every per-face array
   void removeFaces(const std::vector<std::uint8_t>& removed);
   void addVolumeFace(const MshVolumeFace& face);
+  // Where each node of a volume face (MshVolumeFace's order) is among its element's nodes.
+  std::array<std::uint16_t, 9> volumeFaceNodeOrder(std::uint32_t volumeFace, const MshVolumeFace& face) const;
   void appendVolumeBoundary(MeshSourceInfo& source);
   void mapElementFields(Mesh& mesh, const std::vector<MshCornerNodes>& cornerSlots,
                         const MshCoveredElements& covered);
@@ -168,20 +188,17 @@ class MshMeshAssembler {
   std::vector<std::int32_t> facePhysical_;
   std::vector<std::int32_t> faceEntity_;
   std::vector<std::uint8_t> faceEdgeMask_;
-  std::vector<MshVolumeFace> volumeFaces_;
+  MshVolumeElements volumeElements_;  // their faces are the volume faces, numbered as there
   std::vector<std::array<std::uint32_t, 8>> derivedSources_;  // corners and mids of each derived centre
   bool trackElements_ = false;
   std::shared_ptr<MshVolumeCapture> volumeCapture_;                      // set by keepVolume()
   std::uint64_t element_ = 0;                                            // tag of the element being added
   std::vector<std::uint64_t> faceElement_;                               // per face, when tracking
   std::vector<std::pair<std::uint64_t, std::uint64_t>> elementAliases_;  // (copy, kept), when tracking
-  std::vector<std::uint64_t> volumeFaceElement_;                         // per volume face, when tracking
   // When tracking: per face, the position of each corner among its element's nodes (the order of
-  // $ElementNodeData values; kAddedCentre for a centre lancer adds), and per volume face the
-  // positions of its corner, mid and centre nodes (MshVolumeFace's order). While faces are added,
-  // the nodes of the element at hand: elementNodes_ for a surface element, else volumeFaceNodes_.
+  // $ElementNodeData values; kAddedCentre for a centre lancer adds). While faces are added, the
+  // nodes of the element at hand: elementNodes_ for a surface element, else volumeFaceNodeOrder_.
   std::vector<MshCornerNodes> faceCornerNode_;
-  std::vector<std::array<std::uint16_t, 9>> volumeFaceNodes_;
   // When tracking and a surface element covers a volume's skin face, per face: the volume element
   // under it and where the face's corners are among that element's nodes (MshCoveredElements, in
   // corner order until finish()); empty otherwise, 16 bytes a face then.

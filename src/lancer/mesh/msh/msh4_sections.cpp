@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "lancer/mesh/msh/sections.hpp"
+#include "lancer/util/parallel_for.hpp"
 
 namespace lancer {
 namespace {
@@ -90,6 +91,70 @@ void readBinaryElements(MshReadState& state, int type, std::uint64_t count) {
     }
     state.assembler.addElement(type, nodeIndex, record[0]);
   }
+}
+
+// A binary block of volume elements read straight into the assembler's element array: node tags
+// become node indices in parallel chunks, and a missing node is reported at the first element (in
+// file order) that names one, as the element-by-element loop would.
+void readBinaryVolumeElements(MshReadState& state, int type, int nodeCount, std::uint64_t count) {
+  MshMeshAssembler& assembler = state.assembler;
+  const MshNodeTable& nodes = assembler.nodes;
+  const std::uint64_t recordBytes = 8 * (static_cast<std::uint64_t>(nodeCount) + 1);
+  const char* data = state.cursor.advance(count * recordBytes);
+  std::uint64_t* tags = nullptr;
+  std::uint32_t* out = assembler.addVolumeElements(type, count, &tags);
+  const ChunkPlan chunks(count, 32768);
+  std::vector<std::uint64_t> firstMissing(chunks.chunks, UINT64_MAX);
+  parallelChunks(chunks, assembler.threads(), [&](std::size_t k, std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e) {
+      const char* record = data + e * recordBytes;
+      std::uint32_t* index = out + e * static_cast<std::size_t>(nodeCount);
+      if (tags) std::memcpy(&tags[e], record, 8);
+      for (int n = 0; n < nodeCount; ++n) {
+        std::uint64_t tag;
+        std::memcpy(&tag, record + 8 * (n + 1), 8);
+        index[n] = nodes.find(tag);
+        if (index[n] == kNoVertex && firstMissing[k] == UINT64_MAX) firstMissing[k] = e;
+      }
+    }
+  });
+  for (const std::uint64_t e : firstMissing) {
+    if (e == UINT64_MAX) continue;
+    std::uint64_t record[kMaxMshElementNodes + 1];
+    std::memcpy(record, data + e * recordBytes, recordBytes);
+    for (int n = 0; n < nodeCount; ++n)
+      if (nodes.find(record[n + 1]) == kNoVertex)
+        failMissingNode(state, data + e * recordBytes, record[0], type, record[n + 1]);
+  }
+}
+
+// Binary blocks can be measured before they are read: their headers give the room the face and
+// volume element arrays need, so that none grows by copies. Stops quietly at anything odd (the
+// reading loop then says what is wrong); every count is checked against the bytes left first.
+void reserveFromBlockHeaders(MshReadState& state, std::uint64_t blocks) {
+  const char* at = state.cursor.position();
+  const char* end = at + state.cursor.remaining();
+  std::uint64_t faces = 0, volumeElements = 0, volumeNodes = 0;
+  for (std::uint64_t b = 0; b < blocks && end - at >= 20; ++b) {
+    std::int32_t type;
+    std::uint64_t count;
+    std::memcpy(&type, at + 8, 4);
+    std::memcpy(&count, at + 12, 8);
+    at += 20;
+    const MshElementType info = mshElementType(type);
+    if (info.nodeCount == 0) break;
+    const std::uint64_t recordBytes = 8 * (static_cast<std::uint64_t>(info.nodeCount) + 1);
+    if (count > static_cast<std::uint64_t>(end - at) / recordBytes) break;
+    at += count * recordBytes;
+    if (info.role == MshElementRole::kVolume && volumeElementFaceCount(type) > 0) {
+      volumeElements += count;
+      volumeNodes += count * static_cast<std::uint64_t>(info.nodeCount);
+    } else if (info.role == MshElementRole::kSurface) {
+      faces += count * (type == 2 || type == 3 ? 1 : 4);  // second order and up split (in 4 or more)
+    }
+  }
+  state.assembler.reserveFaces(faces);
+  state.assembler.reserveVolumeElements(volumeElements, volumeNodes);
 }
 
 }  // namespace
@@ -233,7 +298,11 @@ void readMsh4Elements(MshReadState& state) {
   values.requireValues(blocks, 20, 4, "$Elements (blocks)");
   values.requireValues(count, 16, 2, "$Elements");
   cursor.requireMemory(count, "$Elements");
-  state.assembler.reserveFaces(count);
+  if (state.binary && state.minor == 1) {
+    reserveFromBlockHeaders(state, blocks);
+  } else {
+    state.assembler.reserveFaces(count);
+  }
   const MshNodeTable& nodes = state.assembler.nodes;
   const auto& entities = state.partitionedEntities.empty() ? state.entities : state.partitionedEntities;
   std::uint32_t nodeIndex[kMaxMshElementNodes];
@@ -271,6 +340,11 @@ void readMsh4Elements(MshReadState& state) {
     }
     if (state.binary && type == 3) {
       readBinaryElements<4>(state, type, inBlock);
+      continue;
+    }
+    if (state.binary && info.role == MshElementRole::kVolume && volumeElementFaceCount(type) > 0 &&
+        !state.assembler.keepsVolume()) {
+      readBinaryVolumeElements(state, type, info.nodeCount, inBlock);
       continue;
     }
     for (std::uint64_t e = 0; e < inBlock; ++e) {

@@ -45,10 +45,11 @@ void MshMeshAssembler::recordCoveredElement(const SurfaceElementFaces& element, 
     faceCoveredCornerNode_.assign(faces_.size(),
                                   {kNoElementNode, kNoElementNode, kNoElementNode, kNoElementNode});
   }
-  const MshVolumeFace& face = volumeFaces_[volumeFace];
-  const std::array<std::uint16_t, 9>& order = volumeFaceNodes_[volumeFace];
+  const MshVolumeFace face = volumeElements_.face(volumeFace);
+  const std::array<std::uint16_t, 9> order = volumeFaceNodeOrder(volumeFace, face);
+  const std::uint64_t tag = volumeElements_.elementTagOfFace(volumeFace);
   for (std::uint32_t f = element.firstFace; f < element.firstFace + element.faceCount; ++f) {
-    faceCoveredElement_[f] = volumeFaceElement_[volumeFace];
+    faceCoveredElement_[f] = tag;
     for (int c = 0; c < faces_[f].cornerCount(); ++c)
       faceCoveredCornerNode_[f][static_cast<std::size_t>(c)] =
           volumeFaceNodePosition(face, order, faces_[f].vertex[c]);
@@ -72,6 +73,27 @@ void MshMeshAssembler::moveFace(std::size_t to, std::size_t from) {
     sides_.side[to] = sides_.side[from];
     sides_.outerPhysicalTag[to] = sides_.outerPhysicalTag[from];
     sides_.outerEntityTag[to] = sides_.outerEntityTag[from];
+  }
+}
+
+void MshMeshAssembler::reserveMoreFaces(std::size_t count) {
+  const std::size_t total = faces_.size() + count;
+  faces_.reserve(total);
+  facePhysical_.reserve(total);
+  faceEntity_.reserve(total);
+  faceEdgeMask_.reserve(total);
+  if (trackElements_) {
+    faceElement_.reserve(total);
+    faceCornerNode_.reserve(total);
+    if (!faceCoveredElement_.empty()) {
+      faceCoveredElement_.reserve(total);
+      faceCoveredCornerNode_.reserve(total);
+    }
+  }
+  if (trackSides_) {
+    sides_.side.reserve(total);
+    sides_.outerPhysicalTag.reserve(total);
+    sides_.outerEntityTag.reserve(total);
   }
 }
 
@@ -122,7 +144,7 @@ void MshMeshAssembler::addVolumeFace(const MshVolumeFace& face) {
 // material), else the volume's face is kept (-save_all writes every surface, in no group); on an
 // interface the volumes' face is kept, so that each side shows its own volume.
 void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
-  if (volumeFaces_.empty()) return;
+  if (volumeElements_.empty()) return;
   // A volume is its physical group, or its elementary entity when it has none.
   std::vector<std::uint64_t> volumeOfGroup(groups_.size());
   for (std::size_t g = 0; g < groups_.size(); ++g) {
@@ -134,7 +156,7 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
     return volumeOfGroup[g] != volumeOfGroup[volumeGroups_.front()];
   });
   const std::vector<VolumeBoundaryFace> boundary =
-      findVolumeBoundary(volumeFaces_, volumeOfGroup, severalVolumes);
+      findVolumeBoundary(volumeElements_, nodes.size(), volumeOfGroup, severalVolumes, threads_);
   const bool anyInterface = std::any_of(boundary.begin(), boundary.end(), [](const VolumeBoundaryFace& face) {
     return face.outer != kNoVertex;
   });
@@ -150,7 +172,7 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
   if (!faces_.empty()) {
     const std::vector<SurfaceElementFaces> surfaces = surfaceElementsByKey();
     for (std::size_t b = 0; b < boundary.size(); ++b) {
-      const MshVolumeFace& volumeFace = volumeFaces_[boundary[b].face];
+      const MshVolumeFace volumeFace = volumeElements_.face(boundary[b].face);
       const int corners = volumeFace.corner[3] == kNoVertex ? 3 : 4;
       SurfaceElementFaces probe{};
       probe.key = mshFaceKey(volumeFace.corner, corners);
@@ -182,19 +204,28 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
   }
   if (!removedSurface.empty()) removeFaces(removedSurface);
 
+  // Room for the faces added below (split in four where second order), so that no array grows by copies.
+  std::size_t added = 0;
+  for (std::size_t b = 0; b < boundary.size(); ++b) added += addBoundaryFace[b];
+  const bool secondOrder = std::any_of(  // the types whose faces addVolumeFace splits
+      volumeElements_.runs().begin(), volumeElements_.runs().end(),
+      [](const MshVolumeElements::Run& run) { return run.type == 11 || run.type == 12 || run.type == 17; });
+  reserveMoreFaces(added * (secondOrder ? 4 : 1));
   for (std::size_t b = 0; b < boundary.size(); ++b) {
     if (!addBoundaryFace[b]) continue;
-    const MshVolumeFace& face = volumeFaces_[boundary[b].face];
+    const MshVolumeFace face = volumeElements_.face(boundary[b].face);
+    std::array<std::uint16_t, 9> order{};
     if (trackElements_) {
-      element_ = volumeFaceElement_[boundary[b].face];
+      element_ = volumeElements_.elementTagOfFace(boundary[b].face);
+      order = volumeFaceNodeOrder(boundary[b].face, face);
       volumeFace_ = &face;
-      volumeFaceNodeOrder_ = &volumeFaceNodes_[boundary[b].face];
+      volumeFaceNodeOrder_ = &order;
     }
     physical_ = groups_[face.group].first;
     entity_ = groups_[face.group].second;
     side_ = boundary[b].outer != kNoVertex ? FaceSide::kInterface : FaceSide::kSkin;
     if (side_ == FaceSide::kInterface) {
-      const MshVolumeFace& outer = volumeFaces_[boundary[b].outer];
+      const MshVolumeFace outer = volumeElements_.face(boundary[b].outer);
       outerPhysical_ = groups_[outer.group].first;
       outerEntity_ = groups_[outer.group].second;
       ++source.interfaceFaces;
@@ -205,8 +236,7 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
     addVolumeFace(face);
   }
   volumeFace_ = nullptr;
-  volumeFaces_ = std::vector<MshVolumeFace>();  // frees it (`= {}` keeps the capacity)
-  volumeFaceNodes_ = std::vector<std::array<std::uint16_t, 9>>();
+  volumeElements_.clear();
 }
 
 }  // namespace lancer

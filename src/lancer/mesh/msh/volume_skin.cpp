@@ -1,7 +1,9 @@
 #include "lancer/mesh/msh/volume_skin.hpp"
 
 #include <algorithm>
-#include <type_traits>
+
+#include "lancer/mesh/msh/element_types.hpp"
+#include "lancer/util/huge_pages.hpp"
 
 namespace lancer {
 namespace {
@@ -24,66 +26,17 @@ constexpr int kPrismFaces[5][4] = {{0, 2, 1, -1}, {3, 4, 5, -1}, {0, 1, 4, 3}, {
 constexpr int kPyramidFaces[5][4] = {
     {0, 3, 2, 1}, {0, 1, 4, -1}, {1, 2, 4, -1}, {2, 3, 4, -1}, {3, 0, 4, -1}};
 
+// The corners of face `local` of a table, kNoVertex for a triangle's fourth.
 template <std::size_t N>
-void appendFaces(const int (&table)[N][4], const std::uint32_t* nodes, std::uint32_t group,
-                 std::vector<MshVolumeFace>& faces) {
-  for (const auto& local : table) {
-    MshVolumeFace face{{kNoVertex, kNoVertex, kNoVertex, kNoVertex},
-                       {kNoVertex, kNoVertex, kNoVertex, kNoVertex},
-                       kNoVertex,
-                       group};
-    for (int c = 0; c < 4 && local[c] >= 0; ++c) face.corner[c] = nodes[local[c]];
-    faces.push_back(face);
-  }
-}
-
-// Sorting the keys brings the two copies of every interior face together. With several volumes the
-// face's group travels with its key (filled in the sequential pass), so telling an interface from an
-// interior face reads no face again at random; with one volume the entry stays 20 bytes.
-struct KeyedFace {
-  MshFaceKey key;
-  std::uint32_t face;
-  bool operator<(const KeyedFace& other) const { return key < other.key; }
-};
-
-struct KeyedGroupedFace {
-  MshFaceKey key;
-  std::uint32_t face;
-  std::uint32_t group;
-  bool operator<(const KeyedGroupedFace& other) const { return key < other.key; }
-};
-
-template <typename Keyed>
-std::vector<VolumeBoundaryFace> boundaryOf(std::span<const MshVolumeFace> faces,
-                                           std::span<const std::uint64_t> volumeOfGroup) {
-  std::vector<Keyed> keyed(faces.size());
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    const int corners = faces[i].corner[3] == kNoVertex ? 3 : 4;
-    keyed[i].key = mshFaceKey(faces[i].corner, corners);
-    keyed[i].face = static_cast<std::uint32_t>(i);
-    if constexpr (std::is_same_v<Keyed, KeyedGroupedFace>) keyed[i].group = faces[i].group;
-  }
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<VolumeBoundaryFace> boundary;
-  for (std::size_t i = 0; i < keyed.size();) {
-    std::size_t j = i + 1;
-    while (j < keyed.size() && keyed[j].key == keyed[i].key) ++j;
-    if (j == i + 1) {
-      boundary.push_back({keyed[i].face, kNoVertex});
-    } else if constexpr (std::is_same_v<Keyed, KeyedGroupedFace>) {
-      const Keyed& a = keyed[i];
-      const Keyed& b = keyed[i + 1];
-      if (j == i + 2 && a.group != b.group) {
-        const std::uint64_t volumeA = volumeOfGroup[a.group], volumeB = volumeOfGroup[b.group];
-        if (volumeA < volumeB) boundary.push_back({a.face, b.face});
-        if (volumeB < volumeA) boundary.push_back({b.face, a.face});
-      }
-    }
-    i = j;
-  }
-  std::sort(boundary.begin(), boundary.end(),
-            [](const VolumeBoundaryFace& x, const VolumeBoundaryFace& y) { return x.face < y.face; });
-  return boundary;
+MshVolumeFace tableFace(const int (&table)[N][4], const std::uint32_t* nodes, int local,
+                        std::uint32_t group) {
+  MshVolumeFace face{{kNoVertex, kNoVertex, kNoVertex, kNoVertex},
+                     {kNoVertex, kNoVertex, kNoVertex, kNoVertex},
+                     kNoVertex,
+                     group};
+  const auto& corners = table[local];
+  for (int c = 0; c < 4 && corners[c] >= 0; ++c) face.corner[c] = nodes[corners[c]];
+  return face;
 }
 
 }  // namespace
@@ -183,44 +136,117 @@ std::optional<CellShape> mshVolumeShape(int type) {
   }
 }
 
-void appendVolumeElementFaces(int type, const std::uint32_t* nodes, std::uint32_t group,
-                              std::vector<MshVolumeFace>& faces) {
+const int (*volumeFaceCornerTable(int type))[4] {
+  switch (*mshVolumeShape(type)) {
+    case CellShape::kTetrahedron:
+      return kTetFaces;
+    case CellShape::kHexahedron:
+      return kHexFaces;
+    case CellShape::kPrism:
+      return kPrismFaces;
+    case CellShape::kPyramid:
+      break;
+  }
+  return kPyramidFaces;
+}
+
+int volumeElementFaceCount(int type) {
   const std::optional<CellShape> shape = mshVolumeShape(type);
-  if (!shape) return;
+  if (!shape) return 0;
   switch (*shape) {
     case CellShape::kTetrahedron:
-      appendFaces(kTetFaces, nodes, group, faces);
-      if (type == 11) {
-        for (int f = 0; f < 4; ++f) {
-          MshVolumeFace& face = faces[faces.size() - 4 + static_cast<std::size_t>(f)];
-          for (int e = 0; e < 3; ++e) face.mid[e] = nodes[kTet10FaceMids[f][e]];
-        }
-      }
-      break;
+      return 4;
     case CellShape::kHexahedron:
-      appendFaces(kHexFaces, nodes, group, faces);
-      if (type == 12 || type == 17) {
-        for (int f = 0; f < 6; ++f) {
-          MshVolumeFace& face = faces[faces.size() - 6 + static_cast<std::size_t>(f)];
-          for (int e = 0; e < 4; ++e) face.mid[e] = nodes[kHex20FaceMids[f][e]];
-          if (type == 12) face.centre = nodes[kHex27FaceCentres[f]];
-        }
-      }
-      break;
+      return 6;
     case CellShape::kPrism:
-      appendFaces(kPrismFaces, nodes, group, faces);
-      break;
     case CellShape::kPyramid:
-      appendFaces(kPyramidFaces, nodes, group, faces);
       break;
+  }
+  return 5;
+}
+
+MshVolumeFace volumeElementFace(int type, const std::uint32_t* nodes, int local, std::uint32_t group) {
+  switch (*mshVolumeShape(type)) {
+    case CellShape::kTetrahedron: {
+      MshVolumeFace face = tableFace(kTetFaces, nodes, local, group);
+      if (type == 11)
+        for (int e = 0; e < 3; ++e) face.mid[e] = nodes[kTet10FaceMids[local][e]];
+      return face;
+    }
+    case CellShape::kHexahedron: {
+      MshVolumeFace face = tableFace(kHexFaces, nodes, local, group);
+      if (type == 12 || type == 17) {
+        for (int e = 0; e < 4; ++e) face.mid[e] = nodes[kHex20FaceMids[local][e]];
+        if (type == 12) face.centre = nodes[kHex27FaceCentres[local]];
+      }
+      return face;
+    }
+    case CellShape::kPrism:
+      return tableFace(kPrismFaces, nodes, local, group);
+    case CellShape::kPyramid:
+      break;
+  }
+  return tableFace(kPyramidFaces, nodes, local, group);
+}
+
+void MshVolumeElements::reserve(std::uint64_t elements, std::uint64_t nodes) {
+  nodes_.reserve(nodes_.size() + nodes);
+  adviseHugePages(nodes_);
+  if (keepTags_) {
+    tags_.reserve(tags_.size() + elements);
+    adviseHugePages(tags_);
   }
 }
 
-std::vector<VolumeBoundaryFace> findVolumeBoundary(std::span<const MshVolumeFace> faces,
-                                                   std::span<const std::uint64_t> volumeOfGroup,
-                                                   bool severalVolumes) {
-  return severalVolumes ? boundaryOf<KeyedGroupedFace>(faces, volumeOfGroup)
-                        : boundaryOf<KeyedFace>(faces, {});
+void MshVolumeElements::newRun(int type, std::uint32_t group) {
+  runs_.push_back(Run{type, mshElementType(type).nodeCount, volumeElementFaceCount(type), group,
+                      elementCount_, faceCount_, nodes_.size()});
+}
+
+std::uint32_t* MshVolumeElements::appendNodes(int type, std::uint32_t group, std::uint64_t count,
+                                              std::uint64_t** tags) {
+  startElements(type, group, count);
+  elementCount_ += count;
+  const std::size_t first = nodes_.size();
+  nodes_.resize(first + count * static_cast<std::uint64_t>(runs_.back().nodeCount));
+  *tags = nullptr;
+  if (keepTags_) {
+    const std::size_t firstTag = tags_.size();
+    tags_.resize(firstTag + count);
+    *tags = tags_.data() + firstTag;
+  }
+  return nodes_.data() + first;
+}
+
+std::uint64_t MshVolumeElements::elementsIn(const Run& run) const {
+  const auto index = static_cast<std::size_t>(&run - runs_.data());
+  return (index + 1 < runs_.size() ? runs_[index + 1].firstElement : elementCount_) - run.firstElement;
+}
+
+const MshVolumeElements::Run& MshVolumeElements::runOfFace(std::uint64_t face) const {
+  const auto after = std::upper_bound(runs_.begin(), runs_.end(), face,
+                                      [](std::uint64_t f, const Run& run) { return f < run.firstFace; });
+  return *(after - 1);
+}
+
+std::uint64_t MshVolumeElements::elementOfFace(const Run& run, std::uint64_t face) {
+  return run.firstElement + (face - run.firstFace) / static_cast<std::uint64_t>(run.faceCount);
+}
+
+MshVolumeFace MshVolumeElements::face(std::uint64_t face) const {
+  const Run& run = runOfFace(face);
+  const auto local = static_cast<int>((face - run.firstFace) % static_cast<std::uint64_t>(run.faceCount));
+  return volumeElementFace(run.type, elementNodes(run, elementOfFace(run, face)), local, run.group);
+}
+
+std::uint64_t MshVolumeElements::elementTagOfFace(std::uint64_t face) const {
+  return tags_[elementOfFace(runOfFace(face), face)];
+}
+
+const std::uint32_t* MshVolumeElements::elementNodesOfFace(std::uint64_t face, int* nodeCount) const {
+  const Run& run = runOfFace(face);
+  *nodeCount = run.nodeCount;
+  return elementNodes(run, elementOfFace(run, face));
 }
 
 }  // namespace lancer

@@ -10,6 +10,7 @@
 
 #include "lancer/math/vec3.hpp"
 #include "lancer/util/huge_pages.hpp"
+#include "lancer/util/prefetch.hpp"
 
 namespace lancer {
 
@@ -29,36 +30,55 @@ class PointIndex {
   // The number of `p`, given to it now when it is new (then points() grows by one).
   std::uint32_t insert(const Vec3T<T>& p) {
     const Vec3T<T> key = canonical(p);
-    const std::size_t h = hash(key);
+    const std::uint64_t h = hash(key);
     // A file lists each node with every element that uses it, and neighbours close together (in
     // mesh order): most points were met a few elements before, and are found in the small table of
     // recent points (in cache) without a miss in the large one.
     Recent& recent = recent_[h & (kRecent - 1)];
     if (recent.id != kNone && recent.point == key) return recent.id;
+    const std::uint64_t tag = h & kTagMask;
     std::size_t slot = h & mask_;
-    std::uint32_t id;
+    std::uint32_t id = kNone;
     for (;; slot = (slot + 1) & mask_) {
-      id = slots_[slot];
-      if (id == kNone || points_[id] == key) break;
+      const std::uint64_t entry = slots_[slot];
+      if (entry == kEmpty) break;
+      // The slot keeps the hash's high bits beside the number: a point is read (a miss in the large
+      // array of points) only when they match, not for every other point its probe passes.
+      if ((entry & kTagMask) == tag && points_[static_cast<std::uint32_t>(entry)] == key) {
+        id = static_cast<std::uint32_t>(entry);
+        break;
+      }
     }
     if (id == kNone) {
       id = static_cast<std::uint32_t>(points_.size());
       points_.push_back(key);
-      slots_[slot] = id;
+      slots_[slot] = tag | id;
       if (points_.size() * 2 > slots_.size()) rehash(slots_.size() * 2);
     }
     recent = {key, id};
     return id;
   }
-  // Asks the cache for where insert(p) will look in the large table: called an element ahead, it
-  // hides the miss that a point met for the first time (or long ago) costs.
-  void prefetch(const Vec3T<T>& p) const { __builtin_prefetch(&slots_[hash(canonical(p)) & mask_]); }
+  // Asks the cache for where insert(p) will look in the large table, unless the small table of
+  // recent points answers it: called a few elements ahead, it hides the miss that a point met for the
+  // first time (or long ago) costs. Only those are prefetched, so that the few outstanding misses
+  // the core can track are not spent on points that are in cache.
+  void prefetch(const Vec3T<T>& p) const {
+    const Vec3T<T> key = canonical(p);
+    const std::uint64_t h = hash(key);
+    const Recent& recent = recent_[h & (kRecent - 1)];
+    if (recent.id != kNone && recent.point == key) return;
+    prefetchLine(&slots_[h & mask_]);
+  }
   // The number of `p`, or kNone when it was never inserted.
   std::uint32_t find(const Vec3T<T>& p) const {
     const Vec3T<T> key = canonical(p);
-    for (std::size_t slot = hash(key) & mask_;; slot = (slot + 1) & mask_) {
-      const std::uint32_t id = slots_[slot];
-      if (id == kNone || points_[id] == key) return id;
+    const std::uint64_t h = hash(key);
+    const std::uint64_t tag = h & kTagMask;
+    for (std::size_t slot = h & mask_;; slot = (slot + 1) & mask_) {
+      const std::uint64_t entry = slots_[slot];
+      if (entry == kEmpty) return kNone;
+      if ((entry & kTagMask) == tag && points_[static_cast<std::uint32_t>(entry)] == key)
+        return static_cast<std::uint32_t>(entry);
     }
   }
   const std::vector<Vec3T<T>>& points() const { return points_; }
@@ -77,20 +97,21 @@ class PointIndex {
   }
   // A multiply-xorshift mix of the three values' bits (the low bits of coordinates that differ in
   // their last digits are what sets points apart).
-  static std::size_t hash(const Vec3T<T>& p) {
+  static std::uint64_t hash(const Vec3T<T>& p) {
     std::uint64_t h = bitsOf(p.x) * 0x9E3779B97F4A7C15ull;
     h = (h ^ (h >> 29) ^ bitsOf(p.y)) * 0xBF58476D1CE4E5B9ull;
     h = (h ^ (h >> 31) ^ bitsOf(p.z)) * 0x94D049BB133111EBull;
-    return static_cast<std::size_t>(h ^ (h >> 32));
+    return h ^ (h >> 32);
   }
   void rehash(std::size_t size) {
     slots_ =
-        vectorOnHugePages(size, kNone);  // TLB misses in a table of 4 KiB pages cost as much as cache misses
+        vectorOnHugePages(size, kEmpty);  // TLB misses in a table of 4 KiB pages cost as much as cache misses
     mask_ = size - 1;
     for (std::uint32_t id = 0; id < points_.size(); ++id) {
-      std::size_t slot = hash(points_[id]) & mask_;
-      while (slots_[slot] != kNone) slot = (slot + 1) & mask_;
-      slots_[slot] = id;
+      const std::uint64_t h = hash(points_[id]);
+      std::size_t slot = h & mask_;
+      while (slots_[slot] != kEmpty) slot = (slot + 1) & mask_;
+      slots_[slot] = (h & kTagMask) | id;
     }
   }
 
@@ -100,7 +121,11 @@ class PointIndex {
   };
   static constexpr std::size_t kRecent = 16384;  // 512 KiB for doubles: in L2
 
-  std::vector<std::uint32_t> slots_;
+  // A slot: the hash's high 32 bits, then the point's number; all ones when empty (no number is
+  // kNone, so no entry is).
+  static constexpr std::uint64_t kTagMask = 0xFFFFFFFF00000000ull;
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  std::vector<std::uint64_t> slots_;
   std::size_t mask_ = 0;
   std::vector<Vec3T<T>> points_;
   std::vector<Recent> recent_ = std::vector<Recent>(kRecent);

@@ -12,6 +12,7 @@ namespace lancer {
 namespace {
 
 constexpr int kMaxNodes = 27;  // a second-order hexahedron
+constexpr std::size_t kPrefetchAhead = 4;
 
 // The distinct elements of views that list different elements: an element is its type and its set
 // of nodes, whatever their order (nothing says two views list one element's nodes alike). An
@@ -143,9 +144,11 @@ Mesh meshFromPos(const PosFile& pos, MeshSourceInfo source, int threads) {
       std::array<std::uint32_t, kMaxNodes> node;
       for (std::size_t e = 0; e < block.elementCount(); ++e) {
         const double* xyz = block.coords.data() + e * 3 * static_cast<std::size_t>(count);
-        if (e + 1 < block.elementCount())
+        // The points of an element a few ahead: a point met for the first time misses in the large
+        // table, and one element's work is too short to hide that miss.
+        if (e + kPrefetchAhead < block.elementCount())
           for (int j = 0; j < count; ++j) {
-            const double* next = xyz + 3 * (count + j);
+            const double* next = xyz + 3 * (kPrefetchAhead * count + j);
             points.prefetch({next[0], next[1], next[2]});
           }
         for (int j = 0; j < count; ++j)

@@ -163,7 +163,9 @@ std::vector<FieldLine> traceFieldLines(const VolumeMesh& volume, const VolumeLoc
   const double diagonal = length(extent);
   const double boxVolume = std::max(extent.x, 1e-12 * diagonal) * std::max(extent.y, 1e-12 * diagonal) *
                            std::max(extent.z, 1e-12 * diagonal);
-  const double cellSize = std::cbrt(boxVolume / static_cast<double>(volume.cellCount()));
+  const double cellSize = settings.cellSize > 0
+                              ? settings.cellSize
+                              : std::cbrt(boxVolume / static_cast<double>(volume.cellCount()));
   const double maxLength = settings.maxLength > 0 ? settings.maxLength : 4 * diagonal;
   // A field below a billionth of its largest magnitude is taken as zero (a stagnation point).
   const double zeroSpeed = 1e-9 * maxSpeed(field);

@@ -19,6 +19,9 @@ struct FieldLineSettings {
   int maxSteps = 2000;   // each way
   // Largest error a step may make, in model units; 0: a thousandth of the mean cell size.
   double tolerance = 0;
+  // The cells' size, which scales the steps; 0: the side of a cube of the bounding box's volume
+  // over the cell count (a planar domain gives its own: its box says nothing of its cells).
+  double cellSize = 0;
   bool forward = true;   // along the field
   bool backward = true;  // against it
   int threads = 0;       // seeds are traced in parallel (0: every core); the lines do not depend on it

@@ -1,5 +1,8 @@
 #include "lancer/mesh/volume/volume_mesh.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -25,6 +28,13 @@ const VolumeField* VolumeMesh::findField(const std::string& name, int step) cons
   for (const VolumeField& field : fields)
     if (field.name == name && field.step == step) return &field;
   return nullptr;
+}
+
+std::string VolumeMesh::fieldNameList() const {
+  std::vector<std::string> names;
+  for (const VolumeField& field : fields)
+    if (std::find(names.begin(), names.end(), field.name) == names.end()) names.push_back(field.name);
+  return names.empty() ? "none" : fmt::format("{}", fmt::join(names, ", "));
 }
 
 std::vector<const VolumeField*> VolumeMesh::fieldSteps(const std::string& name) const {

@@ -68,6 +68,8 @@ struct VolumeMesh {
   const VolumeField* findField(const std::string& name, int step) const;
   // The steps of the field with this name, in file order.
   std::vector<const VolumeField*> fieldSteps(const std::string& name) const;
+  // The fields' names, each once, in file order ("f, u, dipole"; "none"), for messages.
+  std::string fieldNameList() const;
 };
 
 // The field at the nodes: node data as it is; element and element-node data as the mean of the

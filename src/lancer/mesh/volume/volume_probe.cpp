@@ -1,23 +1,10 @@
 #include "lancer/mesh/volume/volume_probe.hpp"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
-
-#include <algorithm>
 
 #include "lancer/util/input_error.hpp"
 
 namespace lancer {
-namespace {
-
-std::string fieldNames(const VolumeMesh& volume) {
-  std::vector<std::string> names;
-  for (const VolumeField& field : volume.fields)
-    if (std::find(names.begin(), names.end(), field.name) == names.end()) names.push_back(field.name);
-  return names.empty() ? "none" : fmt::format("{}", fmt::join(names, ", "));
-}
-
-}  // namespace
 
 ProbeResult probeVolume(const VolumeMesh& volume, const VolumeLocator& locator, const Vec3d& point,
                         const std::string& field, std::optional<int> step, const std::string& file) {
@@ -28,7 +15,7 @@ ProbeResult probeVolume(const VolumeMesh& volume, const VolumeLocator& locator, 
                      "probe inside; probe reads 3D results");
   if (!field.empty() && volume.fieldSteps(field).empty())
     throw InputError(where,
-                     fmt::format("no field '{}' in the file; its fields: {}", field, fieldNames(volume)));
+                     fmt::format("no field '{}' in the file; its fields: {}", field, volume.fieldNameList()));
   if (volume.fields.empty())
     throw InputError(where, "the file has no fields ($NodeData, $ElementData or $ElementNodeData) to probe");
   const Vec3d local = point - volume.origin;

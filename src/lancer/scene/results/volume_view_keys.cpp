@@ -1,5 +1,6 @@
 // The [mesh] keys of volume views: [[mesh.slice]], `skin`, `isosurfaces` and `streamlines`, read into
 // the instance's VolumeViews (results/volume_view_spec.hpp) with their checks and messages.
+#include "lancer/scene/results/volume_view_text.hpp"
 #include "lancer/scene/results/volume_views.hpp"
 
 #include <fmt/format.h>
@@ -112,6 +113,45 @@ std::vector<Vec3d> readPoints(const TomlTableReader& reader, std::string_view ke
   return points;
 }
 
+// `seed_rectangle = [[x, y, z], [ux, uy, uz], [vx, vy, vz]]`: a corner and the two edges from it,
+// neither of zero length nor the two parallel.
+void readSeedRectangle(const TomlTableReader& reader, StreamlineSpec& spec) {
+  const std::vector<Vec3d> given = readPoints(reader, "seed_rectangle", 3, 3);
+  const toml::node& node = *reader.find("seed_rectangle");
+  const std::string name = reader.qualified("seed_rectangle");
+  for (std::size_t k = 1; k < 3; ++k)
+    if (!(length(given[k]) > 0))
+      reader.fail(node,
+                  fmt::format("{} is a corner and the two edges from it, [[x, y, z], [ux, uy, uz], [vx, vy, "
+                              "vz]]: its edge {} is [0, 0, 0]; give it a length",
+                              name, k == 1 ? "u" : "v"));
+  if (!(length(cross(normalize(given[1]), normalize(given[2]))) > 1e-6))
+    reader.fail(node, fmt::format("{}: its two edges are parallel, so the rectangle has no area; give edges "
+                                  "along two directions",
+                                  name));
+  spec.rectangleCorner = given[0];
+  spec.rectangleEdgeU = given[1];
+  spec.rectangleEdgeV = given[2];
+}
+
+// `radius = 0.01` (model units) or `radius = "2px"` (pixels of the picture).
+void readTubeRadius(const TomlTableReader& reader, StreamlineSpec& spec) {
+  const toml::node* node = reader.find("radius");
+  if (!node) return;
+  if (!node->is_string()) {
+    spec.radius = reader.number("radius", NumberRange::above(0));
+    return;
+  }
+  const std::string text = node->value<std::string>().value_or("");
+  const std::optional<double> pixels = pixelsFromText(text);
+  if (!pixels || !(*pixels > 0) || *pixels > kMaxRadiusPixels)
+    reader.fail(*node,
+                fmt::format("{} must be a length in model units (0.01) or in pixels greater than 0 and "
+                            "at most {:g} (\"2px\"), found \"{}\"",
+                            reader.qualified("radius"), kMaxRadiusPixels, text));
+  spec.radiusPixels = *pixels;
+}
+
 }  // namespace
 
 void readStreamlineKeys(const TomlTableReader& mesh, MeshInstance& instance) {
@@ -155,12 +195,17 @@ void readStreamlineKeys(const TomlTableReader& mesh, MeshInstance& instance) {
     }
     ++seedKinds;
   }
+  if (reader.find("seed_rectangle")) {
+    spec.seeds = StreamlineSpec::Seeds::Rectangle;
+    readSeedRectangle(reader, spec);
+    ++seedKinds;
+  }
   if (seedKinds > 1)
-    reader.fail(
-        reader.table(),
-        fmt::format("{} gives seeds more than one way (seed_line, seed_points, a seed disk): keep one",
-                    reader.label()));
-  if (auto radius = reader.number("radius", NumberRange::above(0))) spec.radius = *radius;
+    reader.fail(reader.table(),
+                fmt::format("{} gives seeds more than one way (seed_line, seed_points, a seed disk, "
+                            "seed_rectangle): keep one",
+                            reader.label()));
+  readTubeRadius(reader, spec);
   if (auto length = reader.number("max_length", NumberRange::above(0))) spec.maxLength = *length;
   if (auto direction = reader.choice("direction", kDirections)) {
     spec.forward = *direction != 2;

@@ -31,6 +31,8 @@ inline constexpr std::array<std::string_view, 4> kSkinStyles = {"shown", "ghost"
 // The most isosurfaces, and field lines, one mesh may ask for.
 inline constexpr int kMaxIsosurfaces = 100;
 inline constexpr int kMaxStreamlines = 100000;
+// The largest tube radius in pixels (a tube as wide as a large picture).
+inline constexpr double kMaxRadiusPixels = 10000;
 
 // `isosurfaces = { field = "v", values = [0.2, 0.4] }` (or `count = 5`): the surfaces where a scalar
 // field of the volume takes each value, coloured by `color_by` (another field; default: the field
@@ -47,10 +49,11 @@ struct IsosurfaceSpec {
 
 // `streamlines = { field = "e", count = 100, ... }`: field lines of a vector field of the volume,
 // drawn as tubes. Seeds (scene coordinates): `seed_points`, `count` points evenly along `seed_line`,
-// `count` points on the disk `seed_center`/`seed_normal`/`seed_radius`, or by default `count`
-// points spread evenly through the volume.
+// `count` points on the disk `seed_center`/`seed_normal`/`seed_radius`, `count` points in a grid on
+// the rectangle `seed_rectangle` (a corner and its two edges), or by default `count` points spread
+// evenly through the volume (across a flat 2D mesh).
 struct StreamlineSpec {
-  enum class Seeds { Automatic, Line, Points, Disk };
+  enum class Seeds { Automatic, Line, Points, Disk, Rectangle };
   std::string field;
   std::optional<int> step;  // default: the scene's step
   Seeds seeds = Seeds::Automatic;
@@ -58,7 +61,12 @@ struct StreamlineSpec {
   std::vector<Vec3d> points;  // Points; Line: its two ends
   Vec3d diskCenter{}, diskNormal{0, 0, 1};
   double diskRadius = 0;
-  std::optional<double> radius;     // the tubes', model units; default: 0.3% of the volume's diagonal
+  Vec3d rectangleCorner{}, rectangleEdgeU{}, rectangleEdgeV{};  // Rectangle
+  // The tubes' radius: in model units (`radius = 0.01`), or in pixels of the picture (`radius =
+  // "2px"`, converted at the camera's target: camera_placement.hpp); default: 0.3% of the
+  // volume's diagonal.
+  std::optional<double> radius;
+  std::optional<double> radiusPixels;
   std::optional<double> maxLength;  // each way from the seed; default: 4 diagonals
   bool forward = true, backward = true;
   std::optional<Vec3> color;

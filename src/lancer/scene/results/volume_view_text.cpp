@@ -50,4 +50,14 @@ std::pair<std::string, std::optional<int>> fieldAndCountFromText(const std::stri
   return result;
 }
 
+std::optional<double> pixelsFromText(const std::string& text) {
+  if (text.size() < 3 || text.compare(text.size() - 2, 2, "px") != 0) return std::nullopt;
+  std::string number = text.substr(0, text.size() - 2);
+  while (!number.empty() && number.back() == ' ') number.pop_back();
+  char* end = nullptr;
+  const double value = std::strtod(number.c_str(), &end);
+  if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
 }  // namespace lancer

@@ -20,4 +20,8 @@ SliceSpec sliceFromText(const std::string& text, const SourceLocation& where);
 std::pair<std::string, std::optional<int>> fieldAndCountFromText(const std::string& text,
                                                                  const std::string& option, int most);
 
+// "2px", "0.5 px": a number of pixels (finite; its sign is the caller's to check); nothing for any
+// other text (a plain number is a length in model units).
+std::optional<double> pixelsFromText(const std::string& text);
+
 }  // namespace lancer

@@ -7,15 +7,19 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "lancer/mesh/volume/field_line_tubes.hpp"
 #include "lancer/mesh/volume/field_lines.hpp"
+#include "lancer/mesh/volume/planar_domain.hpp"
 #include "lancer/mesh/volume/volume_cut.hpp"
 #include "lancer/mesh/volume/volume_locator.hpp"
+#include "lancer/scene/camera_placement.hpp"
 #include "lancer/scene/instance_transform.hpp"
-#include "lancer/scene/isolines.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/results/annotation_kinds.hpp"
+#include "lancer/scene/results/isolines.hpp"
+#include "lancer/scene/results/streamline_seeds.hpp"
+#include "lancer/scene/results/warp.hpp"
 #include "lancer/scene/scene_entries.hpp"
 
 namespace lancer {
@@ -80,7 +84,7 @@ MeshInstance colouredChild(const MeshInstance& parent, const std::optional<Vec3>
                            std::vector<Material>& materials, const char* name) {
   MeshInstance child = cutInstance(parent);
   child.isolines.reset();
-  child.arrows.reset();
+  child.annotations.clear();
   child.groupMaterials.clear();  // one colour, or the field's
   if (color) {
     child.colorBy.reset();
@@ -121,39 +125,6 @@ std::string fieldList(const VolumeMesh& volume) {
   for (const VolumeField& field : volume.fields)
     if (std::find(names.begin(), names.end(), field.name) == names.end()) names.push_back(field.name);
   return names.empty() ? "none" : fmt::format("{}", fmt::join(names, ", "));
-}
-
-// The seeds of field lines in the volume's frame.
-std::vector<Vec3d> streamlineSeeds(const StreamlineSpec& spec, const VolumeMesh& volume,
-                                   const VolumeLocator& locator, const InstanceTransform& transform) {
-  const auto local = [&](const Vec3d& p) { return transform.toLocal(p) - volume.origin; };
-  std::vector<Vec3d> seeds;
-  switch (spec.seeds) {
-    case StreamlineSpec::Seeds::Automatic:
-      return automaticSeeds(volume, locator, spec.count);
-    case StreamlineSpec::Seeds::Points:
-      for (const Vec3d& p : spec.points) seeds.push_back(local(p));
-      return seeds;
-    case StreamlineSpec::Seeds::Line: {
-      const Vec3d a = local(spec.points[0]), b = local(spec.points[1]);
-      for (int i = 0; i < spec.count; ++i)
-        seeds.push_back(a + (b - a) * (spec.count == 1 ? 0.5 : static_cast<double>(i) / (spec.count - 1)));
-      return seeds;
-    }
-    case StreamlineSpec::Seeds::Disk:
-      break;
-  }
-  // A disk: the points of a sunflower spiral, evenly spread over its area.
-  const Vec3d n = normalize(transform.normalToLocal(spec.diskNormal));
-  const Vec3d u = normalize(cross(n, std::abs(n.x) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0})), v = cross(n, u);
-  const Vec3d centre = local(spec.diskCenter);
-  const double radius = spec.diskRadius * length(transform.normalToLocal(u)) / std::max(length(u), 1e-300);
-  const double golden = std::numbers::pi * (3 - std::sqrt(5.0));
-  for (int i = 0; i < spec.count; ++i) {
-    const double r = radius * std::sqrt((i + 0.5) / spec.count), angle = i * golden;
-    seeds.push_back(centre + u * (r * std::cos(angle)) + v * (r * std::sin(angle)));
-  }
-  return seeds;
 }
 
 std::pair<double, double> scalarRange(const VolumeField& field) {
@@ -233,17 +204,23 @@ std::vector<FieldLine> sourceFieldLines(const VolumeViewSource& source, const Vo
   if (spec.maxLength) settings.maxLength = *spec.maxLength;
   // Element and element-node data follow their node means: a field that jumps at every face
   // (a gradient of P1 elements) turns lines back and forth where its neighbours disagree.
-  return traceFieldLines(*source.volume, locator, nodeMeans(*source.volume, field), seeds, settings);
+  VolumeField followed = nodeMeans(*source.volume, field);
+  if (source.planar) {
+    projectIntoPlane(followed, source.planar->normal);
+    settings.cellSize = source.planar->cellSize;
+  }
+  return traceFieldLines(*source.volume, locator, followed, seeds, settings);
 }
 
-// The tubes of a source's field lines.
-Mesh sourceTubes(const VolumeViewSource& source, const VolumeLocator& locator,
-                 const std::vector<FieldLine>& lines) {
+// The tubes of a source's field lines; on a planar domain, lying on its plane on the side it is seen
+// from (their lowest point a hundredth of their radius above it).
+Mesh sourceTubes(const VolumeViewSource& source, const VolumeLocator& locator, std::vector<FieldLine> lines) {
   const VolumeMesh& volume = *source.volume;
   const StreamlineSpec& spec = *source.parent.volume.streamlines;
   const double radius = spec.radius
                             ? *spec.radius / std::max(length(source.parent.scale), 1e-300) * std::sqrt(3.0)
                             : 0.003 * volumeDiagonal(volume);
+  if (source.planar) liftOntoPlane(lines, *source.planar, source.planeSide * 1.01 * radius);
   Mesh tubes = fieldLineTubes(volume, locator, lines, radius);
   tubes.source.path = fmt::format("{} (streamlines)", source.path);
   return tubes;
@@ -266,7 +243,7 @@ Mesh remakeVolumeView(const VolumeViewSource& source, double time) {
   if (!source.streamlines) return isosurfaceMesh(source, field, nullptr);
   const VolumeLocator locator(*source.volume);
   const std::vector<Vec3d> seeds = streamlineSeeds(*source.parent.volume.streamlines, *source.volume, locator,
-                                                   InstanceTransform(source.parent));
+                                                   InstanceTransform(source.parent), source.planar.get());
   return sourceTubes(source, locator, sourceFieldLines(source, field, locator, seeds));
 }
 
@@ -278,10 +255,44 @@ const SourceLocation& volumeViewsWhere(const VolumeViews& views) {
   return views.isosurfaces ? views.isosurfaces->where : views.streamlines->where;
 }
 
+// The one-layer volume of a mesh without volume elements whose field lines are asked for; throws
+// InputError when its faces are not in one plane.
+std::shared_ptr<const PlanarDomain> flatDomain(const Mesh& mesh, const MeshInstance& instance) {
+  const SourceLocation& where = instance.volume.streamlines->where;
+  const PlaneFit fit = fitPlane(mesh);
+  if (!(fit.diagonal > 0))
+    throw InputError(where, fmt::format("streamlines of '{}': '{}' has no volume elements and no faces to "
+                                        "trace them across",
+                                        instance.volume.streamlines->field, instance.file));
+  if (!fit.flat()) {
+    const Vec3d p = fit.farthestVertex + mesh.origin;
+    throw InputError(
+        where, fmt::format("streamlines of '{}': '{}' has no volume elements and its faces are not in one "
+                           "plane (the vertex at ({:.6g}, {:.6g}, {:.6g}) is {:.3g} off the plane of the "
+                           "others, more than a millionth of the mesh's size {:.3g}); field lines are "
+                           "traced inside volumes (tetrahedra, hexahedra, prisms, pyramids) or across a "
+                           "flat 2D mesh",
+                           instance.volume.streamlines->field, instance.file, p.x, p.y, p.z, fit.farthest,
+                           fit.diagonal));
+  }
+  return std::make_shared<const PlanarDomain>(planarDomain(mesh, fit));
+}
+
+// The side of a planar domain's plane the camera sees (+1: its normal's), in the mesh's frame: the
+// camera's position, else the automatic camera's direction.
+double sideSeen(const CameraSettings& camera, const InstanceTransform& transform,
+                const PlanarDomain& domain) {
+  const Vec3d origin = domain.volume.origin;
+  const Vec3d towards = camera.position
+                            ? transform.toLocal(*camera.position) - origin - domain.point
+                            : transform.toLocal(camera.viewFrom) - transform.toLocal(Vec3d{0, 0, 0});
+  return dot(towards, domain.normal) < 0 ? -1.0 : 1.0;
+}
+
 }  // namespace
 
 bool needsVolume(const SceneDescription& description, const MeshInstance& instance) {
-  if (instance.volume.any()) return true;
+  if (instance.volume.any() || annotationsSampleVolume(instance)) return true;
   if (!instance.colorBy || !instance.colorBy->paintsSurface) return false;
   const auto capped = [](const std::vector<ClipSettings>& clips) {
     return std::any_of(clips.begin(), clips.end(), [](const ClipSettings& clip) { return clip.cap; });
@@ -293,21 +304,37 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
                     const std::vector<std::shared_ptr<const VolumeMesh>>& volumes) {
   const std::size_t original = std::min(description.meshes.size(), volumes.size());
   std::vector<std::size_t> hidden;
+  // For field lines (radii in pixels, the side of a 2D domain they lie on): the meshes as read and the
+  // camera that sees them (a flat scene's straight on, as the render turns it: flat_scene.hpp).
+  Aabbd readBounds;
+  CameraSettings seenBy = description.camera;
+  if (std::any_of(description.meshes.begin(), description.meshes.end(),
+                  [](const MeshInstance& mesh) { return mesh.volume.streamlines.has_value(); })) {
+    readBounds = warpedWorldBounds(description, meshes);
+    frameFlatScene(seenBy, readBounds);
+  }
   for (std::size_t i = 0; i < original; ++i) {
     if (!volumes[i]) continue;
-    const VolumeMesh& volume = *volumes[i];
+    std::shared_ptr<const VolumeMesh> volumeShared = volumes[i];
     const MeshInstance instance = description.meshes[i];  // a copy: the vector grows below
+    const InstanceTransform transform(instance);
+    // Field lines alone on a mesh without volume elements: across its faces when they are flat.
+    std::shared_ptr<const PlanarDomain> planar;
+    if (instance.volume.any() && volumeShared->empty()) {
+      if (!instance.volume.slices.empty() || instance.volume.isosurfaces)
+        throw InputError(volumeViewsWhere(instance.volume),
+                         fmt::format("'{}' has no volume elements (tetrahedra, hexahedra, prisms, pyramids): "
+                                     "slices and isosurfaces are drawn inside volumes",
+                                     instance.file));
+      planar = flatDomain(meshes[i], instance);
+      volumeShared = std::shared_ptr<const VolumeMesh>(planar, &planar->volume);
+    }
+    const VolumeMesh& volume = *volumeShared;
     // What the cuts take of the mesh, copied before `meshes` grows below (it may move the mesh).
     Mesh parent;
     parent.physicalGroups = meshes[i].physicalGroups;
     parent.source.path = meshes[i].source.path;
-    if (instance.volume.any() && volume.empty())
-      throw InputError(volumeViewsWhere(instance.volume),
-                       fmt::format("'{}' has no volume elements (tetrahedra, hexahedra, prisms, pyramids): "
-                                   "slices, isosurfaces and field lines are drawn inside volumes",
-                                   instance.file));
     if (volume.empty()) continue;
-    const InstanceTransform transform(instance);
 
     // Slices, and caps that show the colour field: one mesh of sections.
     Mesh sections = emptyCutMesh(volume, parent, "slices");
@@ -327,7 +354,7 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       }
       appendCut(sections, cut, volume);
     }
-    if (instance.colorBy && instance.colorBy->paintsSurface &&
+    if (!planar && instance.colorBy && instance.colorBy->paintsSurface &&
         !volume.fieldSteps(instance.colorBy->field).empty()) {
       const double offset = kCapOffset * volumeDiagonal(volume);
       for (const std::vector<ClipSettings>* clips :
@@ -345,9 +372,11 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       // left off the sections, with a note, instead of failing the picture.
       MeshInstance child = cutInstance(instance);
       const auto notInVolume = [&](const std::string& field) { return volume.fieldSteps(field).empty(); };
-      for (const std::string* field : {child.colorBy ? &child.colorBy->field : nullptr,
-                                       child.isolines ? &child.isolines->field : nullptr,
-                                       child.arrows ? &child.arrows->field : nullptr}) {
+      std::vector<const std::string*> fields{child.colorBy ? &child.colorBy->field : nullptr,
+                                             child.isolines ? &child.isolines->field : nullptr};
+      for (const AnnotationSpec& annotation : child.annotations)
+        fields.push_back(&annotationField(annotation));
+      for (const std::string* field : fields) {
         if (field && notInVolume(*field))
           description.notes.push_back(formatInputWarning(
               instance.where, fmt::format("'{}' is not given inside the volume of '{}': its slices and cut "
@@ -356,7 +385,9 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       }
       if (child.colorBy && notInVolume(child.colorBy->field)) child.colorBy.reset();
       if (child.isolines && notInVolume(child.isolines->field)) child.isolines.reset();
-      if (child.arrows && notInVolume(child.arrows->field)) child.arrows.reset();
+      std::erase_if(child.annotations, [&](const AnnotationSpec& annotation) {
+        return notInVolume(annotationField(annotation));
+      });
       description.meshes.push_back(child);
       meshes.push_back(std::move(sections));
     }
@@ -368,9 +399,9 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       if (!(low <= high))
         throw InputError(spec->where,
                          fmt::format("isosurfaces of '{}': the field has no finite value", spec->field));
-      const auto source = std::make_shared<VolumeViewSource>(
-          VolumeViewSource{volumes[i], instance, parent.physicalGroups, parent.source.path, false,
-                           spec->values.empty() ? evenIsoValues(low, high, spec->count) : spec->values});
+      const auto source = std::make_shared<VolumeViewSource>(VolumeViewSource{
+          volumes[i], instance, parent.physicalGroups, parent.source.path, false,
+          spec->values.empty() ? evenIsoValues(low, high, spec->count) : spec->values, nullptr, 1});
       std::vector<double> outside;
       Mesh surfaces = isosurfaceMesh(*source, field, &outside);
       if (!outside.empty())
@@ -392,55 +423,64 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
       if (!field)
         throw InputError(
             spec->where,
-            fmt::format("streamlines of '{}': {} has no {} inside its volume (its fields: "
-                        "{})",
-                        spec->field, instance.file,
+            fmt::format("streamlines of '{}': {} has no {} {} (its fields: {})", spec->field, instance.file,
                         volume.fieldSteps(spec->field).empty() ? "such field" : "such step of it",
-                        fieldList(volume)));
+                        planar ? "on its 2D domain" : "inside its volume", fieldList(volume)));
       if (field->components != 3)
         throw InputError(spec->where,
                          fmt::format("streamlines of '{}': it has {} component{}, and field lines "
                                      "follow a vector (3 components)",
                                      spec->field, field->components, field->components == 1 ? "" : "s"));
-      const auto source = std::make_shared<VolumeViewSource>(
-          VolumeViewSource{volumes[i], instance, parent.physicalGroups, parent.source.path, true, {}});
+      const auto source = std::make_shared<VolumeViewSource>(VolumeViewSource{
+          volumeShared, instance, parent.physicalGroups, parent.source.path, true, {}, planar, 1});
+      if (planar) source->planeSide = sideSeen(seenBy, transform, *planar);
+      if (spec->radiusPixels)
+        source->parent.volume.streamlines->radius =
+            *spec->radiusPixels *
+            pixelSizeAtTarget(seenBy, readBounds, description.render.width, description.render.height);
       const VolumeLocator locator(volume);
-      const std::vector<Vec3d> seeds = streamlineSeeds(*spec, volume, locator, transform);
+      const std::vector<Vec3d> seeds = streamlineSeeds(*spec, volume, locator, transform, planar.get());
       const std::vector<FieldLine> lines = sourceFieldLines(*source, *field, locator, seeds);
       const auto outside = static_cast<std::size_t>(std::count_if(
           lines.begin(), lines.end(), [](const FieldLine& line) { return line.points.empty(); }));
       if (outside == lines.size())
-        throw InputError(
-            spec->where,
-            fmt::format("streamlines of '{}': none of the {} seeds is inside the volume of "
-                        "'{}' (its box: {:.6g} to {:.6g} along x)",
-                        spec->field, seeds.size(), instance.file, locator.bounds().lower.x + volume.origin.x,
-                        locator.bounds().upper.x + volume.origin.x));
+        throw InputError(spec->where,
+                         fmt::format("streamlines of '{}': none of the {} seeds is inside the {} of "
+                                     "'{}' (its box: {:.6g} to {:.6g} along x)",
+                                     spec->field, seeds.size(), planar ? "2D domain" : "volume",
+                                     instance.file, locator.bounds().lower.x + volume.origin.x,
+                                     locator.bounds().upper.x + volume.origin.x));
       if (outside > 0 && spec->seeds != StreamlineSpec::Seeds::Automatic)
         description.notes.push_back(formatInputWarning(
             spec->where,
-            fmt::format("streamlines of '{}': {} of the {} seeds are outside the volume and start no "
+            fmt::format("streamlines of '{}': {} of the {} seeds are outside the {} and start no "
                         "line",
-                        spec->field, outside, seeds.size())));
+                        spec->field, outside, seeds.size(), planar ? "2D domain" : "volume")));
       Mesh tubes = sourceTubes(*source, locator, lines);
       if (!tubes.faces.empty()) {
-        MeshInstance child = colouredChild(instance, spec->color, spec->colorBy.value_or(spec->field),
-                                           spec->where, description.materials, "streamlines");
+        // On a 2D domain painted in the colours they would take, tubes of those colours vanish into
+        // it: they are white instead, lit, unless a colour or another field is asked for.
+        const bool sameColours = planar && !spec->color && !spec->colorBy && instance.colorBy &&
+                                 instance.colorBy->paintsSurface && instance.colorBy->field == spec->field;
+        const std::optional<Vec3> color = sameColours ? std::optional<Vec3>(Vec3{1, 1, 1}) : spec->color;
+        MeshInstance child = colouredChild(instance, color, spec->colorBy.value_or(spec->field), spec->where,
+                                           description.materials, "streamlines");
         if (!spec->step && volume.fieldSteps(spec->field).size() > 1) child.volumeSource = source;
+        child.liesOnPlane = planar != nullptr;
         description.meshes.push_back(child);
         meshes.push_back(std::move(tubes));
       }
     }
 
-    if (!instance.volume.any()) continue;
-    switch (instance.volume.skin.value_or(SkinStyle::Ghost)) {
+    if (!instance.volume.any() && !annotationsSampleVolume(instance)) continue;
+    // A 2D domain is the picture the lines lie on: shown as it is unless asked otherwise.
+    const SkinStyle skin = instance.volume.skin.value_or(planar ? SkinStyle::Shown : SkinStyle::Ghost);
+    switch (skin) {
       case SkinStyle::Shown:
         break;
       case SkinStyle::Ghost:
       case SkinStyle::Edges:
-        description.meshes[i] =
-            backdropInstance(instance, instance.volume.skin.value_or(SkinStyle::Ghost) == SkinStyle::Ghost,
-                             description.materials);
+        description.meshes[i] = backdropInstance(instance, skin == SkinStyle::Ghost, description.materials);
         break;
       case SkinStyle::Hidden:
         hidden.push_back(i);

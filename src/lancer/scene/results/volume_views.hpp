@@ -16,6 +16,8 @@
 
 namespace lancer {
 
+struct PlanarDomain;  // mesh/volume/planar_domain.hpp
+
 // What an isosurface's or field lines' mesh is made from. Kept on the mesh's instance
 // (MeshInstance::volumeSource) when its field has several steps and the view pins none: an animation
 // over steps makes the mesh again at each frame's time (render/step_animation.cpp), its isosurface
@@ -27,6 +29,10 @@ struct VolumeViewSource {
   std::string path;                   // the parent mesh's file
   bool streamlines = false;           // else isosurfaces
   std::vector<double> values;         // the isosurfaces' values
+  // Field lines across a flat 2D mesh: its one-layer volume (`volume` points into it) and the side
+  // of its plane the tubes lie on (+1: along its normal).
+  std::shared_ptr<const PlanarDomain> planar;
+  double planeSide = 1;
 
   const std::string& field() const;  // the field the view follows
 };
@@ -49,7 +55,9 @@ bool needsVolume(const SceneDescription& description, const MeshInstance& instan
 // Appends, for each mesh i whose volumes[i] is set, the meshes that draw its slices, isosurfaces and
 // coloured caps (with their instances), and applies its skin style (a hidden mesh is removed).
 // Throws InputError for a request the volume cannot meet (no volume elements, an isosurface of a
-// vector field or of a field it does not have); a slice that misses the volume is a note.
+// vector field or of a field it does not have); a slice that misses the volume is a note. A mesh
+// without volume elements whose faces lie in one plane (a 2D model) has its field lines traced
+// across its faces (mesh/volume/planar_domain.hpp), drawn on its plane.
 void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
                     const std::vector<std::shared_ptr<const VolumeMesh>>& volumes);
 

@@ -1,4 +1,4 @@
-#include "lancer/scene/gmsh_view.hpp"
+#include "lancer/scene/results/gmsh_view.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "lancer/scene/isolines.hpp"
+#include "lancer/scene/results/isolines.hpp"
 
 #include <fmt/format.h>
 
@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 
-#include "lancer/scene/color_by.hpp"
 #include "lancer/scene/face_elements.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/results/color_by.hpp"
 
 namespace lancer {
 

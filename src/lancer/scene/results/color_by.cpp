@@ -1,4 +1,4 @@
-#include "lancer/scene/color_by.hpp"
+#include "lancer/scene/results/color_by.hpp"
 
 #include <fmt/format.h>
 
@@ -310,9 +310,9 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
     const bool option = !spec.logOption.empty();
     const bool cli = spec.logOption.starts_with("--");
     const std::string log = option ? spec.logOption : "scale = \"log\"";
-    const std::string range = !option ? fmt::format("range = [{:.3g}, {:.3g}]", high * 1e-3, high)
-                              : cli   ? fmt::format("--range {:.3g}:{:.3g}", high * 1e-3, high)
-                                      : fmt::format("range=({:.3g}, {:.3g})", high * 1e-3, high);
+    const std::string advice = !option ? fmt::format("range = [{:.3g}, {:.3g}]", high * 1e-3, high)
+                               : cli   ? fmt::format("--range {:.3g}:{:.3g}", high * 1e-3, high)
+                                       : fmt::format("range=({:.3g}, {:.3g})", high * 1e-3, high);
     const std::string linear = !option ? "scale = \"linear\"" : fmt::format("leave {} out", spec.logOption);
     throw InputError(
         option ? SourceLocation{spec.logOption} : spec.where,
@@ -320,7 +320,7 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
             ? fmt::format("color_by field \"{}\" in {} has values down to {:g} ({}), but {} needs "
                           "values > 0: give a range whose low end is > 0, e.g. {} (values below it are "
                           "drawn at it), or {}",
-                          spec.field, mesh.source.path, low + 0.0, over, log, range, linear)
+                          spec.field, mesh.source.path, low + 0.0, over, log, advice, linear)
             : fmt::format("color_by field \"{}\" in {} has no value above 0 (its greatest is {:g}, {}), so "
                           "{} cannot show it: {}",
                           spec.field, mesh.source.path, high + 0.0, over, log,

@@ -1,4 +1,4 @@
-#include "lancer/scene/annotation_builder.hpp"
+#include "lancer/scene/results/annotation_builder.hpp"
 
 #include <fmt/format.h>
 
@@ -7,9 +7,9 @@
 #include <utility>
 
 #include "lancer/image/color_map.hpp"
-#include "lancer/scene/arrows.hpp"
-#include "lancer/scene/color_by.hpp"
-#include "lancer/scene/isolines.hpp"
+#include "lancer/scene/results/annotation_kinds.hpp"
+#include "lancer/scene/results/color_by.hpp"
+#include "lancer/scene/results/isolines.hpp"
 
 namespace lancer {
 
@@ -248,70 +248,51 @@ void annotateScene(Scene& scene, const StepSelection& when, const std::vector<En
   finishIsolines(scene, std::move(isolines));
 }
 
-bool hasArrows(const SceneDescription& description) {
+bool hasAnnotationMeshes(const SceneDescription& description) {
   return std::any_of(description.meshes.begin(), description.meshes.end(),
-                     [](const MeshInstance& instance) { return instance.arrows.has_value(); });
+                     [](const MeshInstance& instance) { return !instance.annotations.empty(); });
 }
 
-std::vector<Mesh> addArrowMeshes(SceneDescription& description, const std::vector<Mesh>& meshes) {
+std::vector<Mesh> addAnnotationMeshes(SceneDescription& description, const std::vector<Mesh>& meshes) {
   std::vector<Mesh> added;
+  // The volumes an annotation kind has sampled already: a slice or cap cut from a mesh carries the
+  // mesh's annotations, and the arrows through its volume are drawn once.
+  std::vector<std::pair<std::size_t, const VolumeMesh*>> sampled;
   const std::size_t originals = description.meshes.size();
   for (std::size_t i = 0; i < originals; ++i) {
-    if (!description.meshes[i].arrows) continue;
-    const ArrowSpec spec = *description.meshes[i].arrows;
-    description.meshes[i].arrows.reset();
-    const MeshInstance& original = description.meshes[i];
-    Mesh arrows = arrowMesh(spec, meshes[i], description.when, original.warp ? &*original.warp : nullptr);
-    MeshInstance instance = original;
-    instance.file += " (arrows)";
-    instance.groupMaterials.clear();
-    instance.edges.reset();
-    instance.isolines.reset();
-    instance.warp.reset();  // the arrows stand on the warped surface already
-    instance.undeformed = UndeformedStyle::None;
-    instance.shading = ShadingMode::Phong;
-    if (spec.color) {
-      Material material = description.materials[static_cast<std::size_t>(instance.material)];
-      material.name += " (arrows)";
-      material.ka = material.kd = *spec.color;
-      material.transparency = 0;
-      instance.material = static_cast<int>(description.materials.size());
-      description.materials.push_back(material);
-      instance.colorBy.reset();
-    } else {
-      ColorBy colorBy;
-      colorBy.field = arrows.fields.front().name;
-      colorBy.step = 0;
-      if (!spec.step) {  // one colour range over every step, as the mesh's own colours
-        std::pair<double, double> range{INFINITY, -INFINITY};
-        for (const MeshField* step : viewSteps(meshes[i], spec.field)) {
-          const auto [low, high] = componentRange(*step, FieldComponent{});
-          range = {std::min(range.first, low), std::max(range.second, high)};
-        }
-        if (range.first <= range.second) colorBy.range = range;
+    const std::vector<AnnotationSpec> specs = std::exchange(description.meshes[i].annotations, {});
+    for (const AnnotationSpec& spec : specs) {
+      const AnnotationKind& kind = annotationKind(spec);
+      const MeshInstance& owner = description.meshes[i];
+      const VolumeMesh* volume = owner.annotationVolume.get();
+      if (kind.samplesVolume(spec) && volume) {
+        const std::pair<std::size_t, const VolumeMesh*> key{spec.index(), volume};
+        if (std::find(sampled.begin(), sampled.end(), key) != sampled.end()) continue;
+        sampled.push_back(key);
       }
-      colorBy.map = instance.colorBy ? instance.colorBy->map : ColorMap{};  // linear: magnitudes reach 0
-      colorBy.legend = instance.colorBy ? instance.colorBy->legend : std::nullopt;
-      colorBy.where = spec.where;
-      colorBy.title = "|" + spec.field + "|";
-      // Arrows of the field the mesh is coloured by (its magnitude) share its colours, so its one
-      // legend: the same title, units, bands and range (and scale, with the range).
-      const ColorBy* surface = instance.colorBy ? &*instance.colorBy : nullptr;
-      if (surface && surface->field == spec.field && surface->component == FieldComponent{}) {
-        if (surface->title) colorBy.title = surface->title;
-        colorBy.units = surface->units;
-        colorBy.bands = surface->bands;
-        if (surface->range) {  // a log scale needs the range's low end above 0, which the mesh's has
-          colorBy.range = surface->range;
-          colorBy.scale = surface->scale;
-        }
-      }
-      instance.colorBy = colorBy;
+      MeshInstance instance = owner;
+      instance.file += fmt::format(" ({})", kind.key);
+      instance.groupMaterials.clear();
+      instance.edges.reset();
+      instance.isolines.reset();
+      instance.warp.reset();  // what is drawn on the surface stands on its warped shape already
+      instance.undeformed = UndeformedStyle::None;
+      instance.shading = ShadingMode::Phong;
+      instance.annotationVolume.reset();
+      const AnnotationSite site{owner, meshes[i], volume, description.when, description.materials};
+      Mesh mesh = kind.build(spec, site, instance);
+      description.meshes.push_back(std::move(instance));  // `owner` is not used past here
+      added.push_back(std::move(mesh));
     }
-    description.meshes.push_back(std::move(instance));
-    added.push_back(std::move(arrows));
   }
   return added;
+}
+
+void attachAnnotationVolumes(SceneDescription& description,
+                             const std::vector<std::shared_ptr<const VolumeMesh>>& volumes) {
+  for (std::size_t i = 0; i < std::min(description.meshes.size(), volumes.size()); ++i)
+    if (volumes[i] && annotationsSampleVolume(description.meshes[i]))
+      description.meshes[i].annotationVolume = volumes[i];
 }
 
 }  // namespace lancer

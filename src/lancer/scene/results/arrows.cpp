@@ -1,4 +1,4 @@
-#include "lancer/scene/arrows.hpp"
+#include "lancer/scene/results/arrows.hpp"
 
 #include <fmt/format.h>
 
@@ -9,9 +9,9 @@
 #include <unordered_map>
 
 #include "lancer/mesh/field_steps.hpp"
-#include "lancer/scene/color_by.hpp"
 #include "lancer/scene/face_elements.hpp"
 #include "lancer/scene/render_limits.hpp"
+#include "lancer/scene/results/color_by.hpp"
 
 namespace lancer {
 namespace {
@@ -74,37 +74,6 @@ void appendArrow(Mesh& out, std::vector<float>& values, const Vec3d& base, const
 }
 
 }  // namespace
-
-std::optional<ArrowSpec> readArrows(const std::string& file, const TomlTableReader& mesh) {
-  const toml::node* node = mesh.find("arrows");
-  if (!node) return std::nullopt;
-  const auto* table = node->as_table();
-  if (!table)
-    mesh.fail(*node,
-              fmt::format("{} must be a table like {{ field = \"velocity\", max_count = 500 }}, found {}",
-                          mesh.qualified("arrows"), describeValue(*node)));
-  const TomlTableReader reader(*table, mesh.qualified("arrows"), file, SceneTable::MeshArrows);
-  ArrowSpec spec;
-  spec.where = reader.location(*node);
-  const std::optional<std::string> field = reader.nonEmptyString("field");
-  if (!field) reader.failMissing("field", "field = \"velocity\" (a view of 3 components)");
-  spec.field = *field;
-  if (auto step = reader.integer("step", 0, 1'000'000'000)) spec.step = static_cast<int>(*step);
-  if (auto count = reader.integer("max_count", 1, kMaxArrowCount)) spec.maxCount = static_cast<int>(*count);
-  if (const toml::node* scale = reader.find("scale")) {
-    if (!(scale->is_string() && scale->value<std::string>() == "auto")) {
-      if (!scale->is_number())
-        reader.fail(*scale, fmt::format("{} must be \"auto\" or a number > 0, found {}",
-                                        reader.qualified("scale"), describeValue(*scale)));
-      spec.scale = reader.number("scale", NumberRange::above(0));
-    }
-  }
-  constexpr std::array<std::string_view, 2> kLengths = {"magnitude", "fixed"};
-  if (auto length = reader.choice("length", kLengths)) spec.fixedLength = *length == 1;
-  if (auto color = reader.vector("color", Triple::Rgb, NumberRange::between(0, 1)))
-    spec.color = toFloat(*color);
-  return spec;
-}
 
 namespace {
 
@@ -265,17 +234,29 @@ Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh, const StepSelection& whe
     if (step->values.size() == field.values.size())
       for (const std::uint32_t item : sites.items) largest = std::max(largest, length(vectorAt(*step, item)));
   }
-  const double scale = spec.scale ? *spec.scale : (largest > 0 ? 0.9 * sites.cellSize / largest : 0);
+  ArrowVectors arrows;
+  arrows.cellSize = sites.cellSize;
+  arrows.largest = largest;
+  arrows.bases = std::move(sites.bases);
+  for (const std::uint32_t item : sites.items) arrows.vectors.push_back(vectorAt(field, item));
+  return arrowsAlong(spec, arrows, mesh.origin, mesh.source.path, field.time);
+}
+
+Mesh arrowsAlong(const ArrowSpec& spec, const ArrowVectors& arrows, const Vec3d& origin,
+                 const std::string& path, double time) {
+  const double scale =
+      spec.scale ? *spec.scale : (arrows.largest > 0 ? 0.9 * arrows.cellSize / arrows.largest : 0);
   Mesh out;
-  out.origin = mesh.origin;
-  out.source.path = mesh.source.path;
+  out.origin = origin;
+  out.source.path = path;
   std::vector<float> magnitudes;
-  for (std::size_t i = 0; i < sites.items.size(); ++i) {
-    const Vec3d vector = vectorAt(field, sites.items[i]);
+  for (std::size_t i = 0; i < arrows.bases.size(); ++i) {
+    const Vec3d& vector = arrows.vectors[i];
+    if (!usable(vector)) continue;
     const double magnitude = length(vector);
-    const double arrowLength = spec.fixedLength ? 0.8 * sites.cellSize : scale * magnitude;
+    const double arrowLength = spec.fixedLength ? 0.8 * arrows.cellSize : scale * magnitude;
     if (!(arrowLength > 0)) continue;
-    appendArrow(out, magnitudes, sites.bases[i], vector * (1 / magnitude), arrowLength,
+    appendArrow(out, magnitudes, arrows.bases[i], vector * (1 / magnitude), arrowLength,
                 static_cast<float>(magnitude));
   }
   out.facePhysicalTag.assign(out.faces.size(), 0);
@@ -284,7 +265,7 @@ Mesh arrowMesh(const ArrowSpec& spec, const Mesh& mesh, const StepSelection& whe
   MeshField magnitude;
   magnitude.name = spec.field + " magnitude";
   magnitude.step = 0;
-  magnitude.time = field.time;
+  magnitude.time = time;
   magnitude.values = std::move(magnitudes);
   out.fields.push_back(std::move(magnitude));
   return out;

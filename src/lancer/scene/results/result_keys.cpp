@@ -1,4 +1,4 @@
-#include "lancer/scene/result_keys.hpp"
+#include "lancer/scene/results/result_keys.hpp"
 
 #include <fmt/format.h>
 

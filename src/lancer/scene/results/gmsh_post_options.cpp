@@ -1,4 +1,4 @@
-#include "lancer/scene/gmsh_post_options.hpp"
+#include "lancer/scene/results/gmsh_post_options.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -168,11 +168,15 @@ void applyGmshPostViews(SceneDescription& description, const Mesh& mesh,
     else if (!colour)
       colour = &view;
   }
-  if (arrows && !instance.arrows) {
+  const auto hasArrows = [&] {
+    return std::any_of(instance.annotations.begin(), instance.annotations.end(),
+                       [](const AnnotationSpec& spec) { return std::holds_alternative<ArrowSpec>(spec); });
+  };
+  if (arrows && !hasArrows()) {
     ArrowSpec spec;
     spec.field = nameOf(*arrows);
     spec.where = SourceLocation{path, arrows->line, 1};
-    instance.arrows = spec;
+    instance.annotations.push_back(spec);
   }
   // gmsh's way to show stress on a deformed shape: the displacement view coloured by another view,
   // usually hidden itself.

@@ -55,17 +55,4 @@ struct IsolineSpec {
   SourceLocation where;  // the isolines value
 };
 
-// `arrows = { field = "velocity", max_count = 500, scale = "auto" }` on a [[mesh]]: 3D arrows (real
-// triangles: they shade, cast shadows and show in mirrors) along a node vector field, at most
-// maxCount of them, one per cell of a grid over the surface.
-struct ArrowSpec {
-  std::string field;
-  std::optional<int> step;  // pins the arrows to one step; default: the scene's step or time
-  int maxCount = 500;
-  std::optional<double> scale;  // length per unit of magnitude; default ("auto"): the longest is 0.9 cells
-  bool fixedLength = false;     // every arrow 0.8 cells long
-  std::optional<Vec3> color;    // default: coloured by magnitude
-  SourceLocation where;         // the arrows value
-};
-
 }  // namespace lancer

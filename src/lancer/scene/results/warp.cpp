@@ -1,4 +1,4 @@
-#include "lancer/scene/warp.hpp"
+#include "lancer/scene/results/warp.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "lancer/scene/step_files.hpp"
+#include "lancer/scene/results/step_files.hpp"
 
 #include <fmt/format.h>
 

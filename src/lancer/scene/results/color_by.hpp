@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "lancer/mesh/mesh.hpp"
-#include "lancer/scene/color_by_spec.hpp"
+#include "lancer/scene/results/color_by_spec.hpp"
 #include "lancer/scene/toml_table_reader.hpp"
 
 namespace lancer {

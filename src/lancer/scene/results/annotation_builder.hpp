@@ -1,15 +1,17 @@
 // The scene builder's part for what annotates a result (buildScene calls these mesh by mesh): the
 // legends of field-coloured meshes (one per field, with one range shared by its meshes), colour
-// bands and isolines.
+// bands and isolines; and the annotations that are meshes of their own (arrows).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
-#include "lancer/scene/color_by.hpp"
-#include "lancer/scene/isolines.hpp"
+#include "lancer/mesh/volume/volume_mesh.hpp"
+#include "lancer/scene/results/color_by.hpp"
+#include "lancer/scene/results/isolines.hpp"
 #include "lancer/scene/scene.hpp"
 
 namespace lancer {
@@ -53,12 +55,15 @@ struct EntryAnnotation {
 // shown). Replaces those the scene had.
 void annotateScene(Scene& scene, const StepSelection& when, const std::vector<EntryAnnotation>& entries);
 
-// Whether some mesh asks for arrows.
-bool hasArrows(const SceneDescription& description);
-// Turns each mesh's `arrows` into a mesh instance of its own (after the others): the arrows built
-// by arrowMesh at description.when, placed like their mesh (on its warped shape), coloured by
-// magnitude with their mesh's map (or in a new material of `color`). Clears the `arrows` of the
-// originals and returns the arrows' meshes, in the order of their new instances.
-std::vector<Mesh> addArrowMeshes(SceneDescription& description, const std::vector<Mesh>& meshes);
+// Whether some mesh asks for annotations that are meshes of their own (annotation_kinds.hpp).
+bool hasAnnotationMeshes(const SceneDescription& description);
+// Turns each mesh's annotations into mesh instances of their own (after the others), built by their
+// kind at description.when, placed like their mesh (on its warped shape). Clears the annotations of
+// the originals and returns the annotations' meshes, in the order of their new instances.
+std::vector<Mesh> addAnnotationMeshes(SceneDescription& description, const std::vector<Mesh>& meshes);
+// Gives each mesh whose annotations sample its volume the volume read with it (volumes[i], as
+// readSceneMeshes returns them); call before addVolumeViews, which may remove a hidden mesh.
+void attachAnnotationVolumes(SceneDescription& description,
+                             const std::vector<std::shared_ptr<const VolumeMesh>>& volumes);
 
 }  // namespace lancer

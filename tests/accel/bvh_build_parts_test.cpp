@@ -1,0 +1,101 @@
+// The pieces of the BVH build checked on their own: the Morton clusters (every reference once, in
+// Morton order, equal codes in face order, none over the size) and the binned split whose sides'
+// boxes come from the bins (equal, to the bit, to the boxes of the references the partition puts
+// on each side).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "lancer/accel/bvh/build_parts.hpp"
+#include "lancer/accel/bvh/morton.hpp"
+#include "support/accel_test_geometry.hpp"
+
+namespace lancer {
+namespace {
+
+using namespace bvh;
+
+std::vector<PrimRef> referencesOf(const test::Soup& soup) {
+  return gatherFaces(soup.positions, soup.faces, 2).refs;
+}
+
+// A soup with many faces sharing a centroid (a stack of copies), so Morton codes tie.
+test::Soup soupWithTies() {
+  std::mt19937 rng(11);
+  test::Soup soup = test::randomSoup(rng, 3000);
+  for (int copy = 0; copy < 700; ++copy) soup.triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  return soup;
+}
+
+TEST(BvhBuildParts, MortonClustersCoverEveryReferenceInOrder) {
+  const test::Soup soup = soupWithTies();
+  for (std::uint32_t most : {1u, 7u, 64u, kMaxClusterReferences}) {
+    SCOPED_TRACE(most);
+    std::vector<PrimRef> refs = referencesOf(soup);
+    const std::size_t count = refs.size();
+    const std::vector<Cluster> clusters = mortonClusters(refs, most, 2);
+    ASSERT_EQ(refs.size(), count);
+    std::uint32_t next = 0;
+    for (const Cluster& cluster : clusters) {
+      EXPECT_EQ(cluster.begin, next);
+      EXPECT_GT(cluster.end, cluster.begin);
+      EXPECT_LE(cluster.end - cluster.begin, most);
+      next = cluster.end;
+    }
+    EXPECT_EQ(next, count);
+    std::vector<std::uint32_t> faces;
+    for (const PrimRef& r : refs) faces.push_back(r.face);
+    // The copies share one code: the stable sort keeps them in face order.
+    std::vector<std::uint32_t> copies;
+    for (std::uint32_t f : faces)
+      if (f >= 3000) copies.push_back(f);
+    EXPECT_TRUE(std::is_sorted(copies.begin(), copies.end()));
+    std::sort(faces.begin(), faces.end());
+    EXPECT_TRUE(std::adjacent_find(faces.begin(), faces.end()) == faces.end()) << "a face twice";
+    // The same order on one thread as on two.
+    std::vector<PrimRef> serial = referencesOf(soup);
+    const std::vector<Cluster> serialClusters = mortonClusters(serial, most, 1);
+    ASSERT_EQ(serialClusters.size(), clusters.size());
+    for (std::size_t i = 0; i < refs.size(); ++i) ASSERT_EQ(serial[i].face, refs[i].face);
+  }
+}
+
+TEST(BvhBuildParts, SidesFromTheBinsEqualThePartitionsBoxes) {
+  std::mt19937 rng(5);
+  const test::Soup soup = test::randomSoup(rng, 2000);
+  std::vector<PrimRef> refs = referencesOf(soup);
+  const BvhBuildOptions options;
+  int binned = 0;
+  // Ranges of every size from 2 (fewest bins) past 32 (the most).
+  for (std::uint32_t size : {2u, 3u, 5u, 9u, 17u, 31u, 33u, 100u, 2000u}) {
+    for (std::uint32_t begin = 0; begin + size <= refs.size(); begin += 97 * size) {
+      Range range = rangeOf(refs.data(), begin, begin + size);
+      range.split = chooseSplit(refs.data(), range, options, LeafRule::SingleReference);
+      if (range.split.kind != SplitKind::Binned) continue;
+      ++binned;
+      Range left, right;
+      partition(refs.data(), range, left, right);
+      ASSERT_GT(left.count(), 0u);
+      ASSERT_GT(right.count(), 0u);
+      const Range leftRefs = rangeOf(refs.data(), left.begin, left.end);
+      const Range rightRefs = rangeOf(refs.data(), right.begin, right.end);
+      for (const auto& [side, refsSide] : {std::pair{left, leftRefs}, std::pair{right, rightRefs}}) {
+        for (int a = 0; a < 3; ++a) {
+          EXPECT_EQ(side.bounds.lo[a], refsSide.bounds.lo[a]);
+          EXPECT_EQ(side.bounds.hi[a], refsSide.bounds.hi[a]);
+          EXPECT_EQ(side.centroids.lo[a], refsSide.centroids.lo[a]);
+          EXPECT_EQ(side.centroids.hi[a], refsSide.centroids.hi[a]);
+        }
+        EXPECT_EQ(side.triangles, refsSide.triangles);
+      }
+      EXPECT_EQ(right.firstTriangle, range.firstTriangle + left.triangles);
+    }
+  }
+  EXPECT_GT(binned, 20);
+}
+
+}  // namespace
+}  // namespace lancer
