@@ -5,11 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/util/memory_budget.hpp"
+#include "support/files.hpp"
 #include "support/input_errors.hpp"
 #include "support/test_scenes.hpp"
 
@@ -110,6 +113,54 @@ TEST(RenderPreparation, AMeshWoundInwardIsBuiltAgainOverItsTurnedFaces) {
   for (std::size_t f = 0; f < original.faces.size(); ++f)
     ASSERT_EQ(prepared.scene.geometry.faces[f].vertex[1], original.faces[f].vertex[1]) << f;
   expectSameHitsAsASerialBuild(prepared);
+}
+
+// NaN-aware: the arrays hold NaN for "not coloured".
+void expectSameValues(const std::vector<float>& a, const std::vector<float>& b, const char* what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!(std::isnan(a[i]) && std::isnan(b[i]))) ASSERT_EQ(a[i], b[i]) << what << " " << i;
+}
+
+TEST(RenderPreparation, AColouredMeshWithIsolinesIsTheSameSceneWithTheBuildAlongside) {
+  // The annotations are placed by the scene's vertex and face bases, which the build alongside must
+  // not move (it places the mesh's positions and faces in the scene first): the scene matches the
+  // one prepared without it (keepMeshes builds no accelerator alongside).
+  auto prepare = [](bool keepMeshes) {
+    const std::string path = test::dataFile("getdp/magnet_v2_az.pos");
+    RenderRequest request;
+    request.quickLookMesh = readMsh(path);
+    request.description = quickLookScene(path, *request.quickLookMesh);
+    ColorBy colorBy;
+    colorBy.field = "az";
+    request.description.meshes[0].colorBy = colorBy;
+    request.overrides.width = 32;
+    request.overrides.height = 24;
+    request.overrides.isolines = 6;
+    request.keepMeshes = keepMeshes;
+    return prepareRender(std::move(request));
+  };
+  const PreparedRender alongside = prepare(false);
+  const PreparedRender serial = prepare(true);
+  const Scene& a = alongside.scene;
+  const Scene& b = serial.scene;
+  ASSERT_EQ(a.geometry.faces.size(), b.geometry.faces.size());
+  EXPECT_EQ(a.geometry.positions.size(), b.geometry.positions.size());
+  EXPECT_EQ(a.appearance.faceMaterial, b.appearance.faceMaterial);
+  EXPECT_EQ(a.appearance.faceOuterMaterial, b.appearance.faceOuterMaterial);
+  ASSERT_TRUE(a.fieldColors && b.fieldColors);
+  EXPECT_EQ(a.fieldColors->faceColorMap, b.fieldColors->faceColorMap);
+  expectSameValues(a.fieldColors->vertexFieldT, b.fieldColors->vertexFieldT, "vertexFieldT");
+  expectSameValues(a.fieldColors->faceFieldT, b.fieldColors->faceFieldT, "faceFieldT");
+  expectSameValues(a.fieldColors->cornerFieldT, b.fieldColors->cornerFieldT, "cornerFieldT");
+  const std::vector<float>& t =
+      a.fieldColors->vertexFieldT.empty() ? a.fieldColors->cornerFieldT : a.fieldColors->vertexFieldT;
+  EXPECT_TRUE(std::any_of(t.begin(), t.end(), [](float v) { return !std::isnan(v); }));
+  ASSERT_TRUE(a.isolines && b.isolines);
+  EXPECT_EQ(a.isolines->faceStyle, b.isolines->faceStyle);
+  expectSameValues(a.isolines->vertexValue, b.isolines->vertexValue, "isoline vertexValue");
+  expectSameValues(a.isolines->cornerValue, b.isolines->cornerValue, "isoline cornerValue");
+  expectSameHitsAsASerialBuild(alongside);
 }
 
 TEST(RenderPreparation, ImagesRenderedInBandsNeedAFewBandsWhateverTheirHeight) {

@@ -493,9 +493,7 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
   const double secondsBefore = times.totalSeconds();
   Scene scene;
   const AbandonOnError waitOnError(overlap);  // after `scene`: gone before it
-  // Not with field colours: annotateScene may change the scene's geometry after it is placed.
-  GeometryOverlap* early =
-      entries.size() == 1 && !entries[0].coloring && !entries[0].colorBy ? overlap : nullptr;
+  GeometryOverlap* early = entries.size() == 1 ? overlap : nullptr;
   scene.warnings = std::move(warnings);
   scene.warnings.insert(scene.warnings.begin(), description.notes.begin(), description.notes.end());
   SceneGeometry& geometry = scene.geometry;
@@ -523,11 +521,12 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
     scene.warnings.insert(scene.warnings.end(), mesh.source.warnings.begin(), mesh.source.warnings.end());
     const auto groupMaterials = resolveGroupMaterials(instance, mesh);
     SceneEntryLayout* entryLayout = layout ? &layout->entries.emplace_back() : nullptr;
-    PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin, threads, times, entryLayout,
-                                  early, &geometry);
-
+    // Taken before placeMesh: with the build alongside, it places the positions and faces in
+    // `geometry` itself.
     const auto vertexBase = static_cast<std::uint32_t>(geometry.positions.size());
     const std::size_t faceBase = geometry.faces.size();
+    PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin, threads, times, entryLayout,
+                                  early, &geometry);
     if (entryLayout) {
       entryLayout->meshIndex = entries[i].meshIndex;
       entryLayout->undeformedCopy = entries[i].undeformedCopy;
