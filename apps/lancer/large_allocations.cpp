@@ -1,16 +1,12 @@
-// The CLI's C++ allocations of a megabyte and more (a mesh's arrays, the scene's, the accelerator's
-// build buffers and tree) on transparent huge pages (util/huge_page_blocks.hpp says why), through
-// C++'s own mechanism for it: the replacement of the global operator new and delete. Only the
-// executable links this file; the library, its tests and the Python module keep the defaults.
-#include "large_allocations.hpp"
-
-#include <unistd.h>
-
+// The C++ allocations of a megabyte and more (a mesh's arrays, the scene's, the accelerator's build
+// buffers and tree) in the arena of util/huge_page_blocks.hpp (huge pages, blocks kept for reuse),
+// through C++'s own mechanism for it: the replacement of the global operator new and delete. The
+// CLI links this file, and so does the Python module, which keeps the replacement to itself (its
+// linker script exports nothing else: python/exports.map), so that the interpreter and other
+// extensions keep theirs. The library and its tests keep the defaults.
 #include <cstddef>
 #include <cstdlib>
-#include <fstream>
 #include <new>
-#include <string>
 
 #include "lancer/util/huge_page_blocks.hpp"
 
@@ -60,47 +56,7 @@ void* orNull(Allocate allocation) noexcept {
   }
 }
 
-// Says that the run was started by tuneMallocForHugePages, with the user's GLIBC_TUNABLES after
-// the '=' ("-" when it was not set).
-constexpr const char* kTunedMarker = "LANCER_MALLOC_TUNED";
-
-bool transparentHugePagesOff() {
-  std::ifstream in("/sys/kernel/mm/transparent_hugepage/enabled");
-  std::string line;
-  return !std::getline(in, line) || line.find("[never]") != std::string::npos;
-}
-
 }  // namespace
-
-namespace lancer::cli {
-
-void tuneMallocForHugePages(char** argv) {
-  if (const char* marker = std::getenv(kTunedMarker)) {
-    const std::string user = marker;
-    if (user == "-")
-      ::unsetenv("GLIBC_TUNABLES");
-    else
-      ::setenv("GLIBC_TUNABLES", user.c_str(), 1);
-    ::unsetenv(kTunedMarker);
-    return;
-  }
-  const char* given = std::getenv("GLIBC_TUNABLES");
-  const std::string user = given ? given : "";
-  if (user.find("glibc.malloc.hugetlb") != std::string::npos || transparentHugePagesOff()) return;
-  const std::string tuned =
-      (user.empty() ? "" : user + ":") + "glibc.malloc.hugetlb=1:glibc.malloc.top_pad=67108864";
-  ::setenv(kTunedMarker, given ? user.c_str() : "-", 1);
-  ::setenv("GLIBC_TUNABLES", tuned.c_str(), 1);
-  ::execv("/proc/self/exe", argv);
-  // Not run again (no /proc): on as before.
-  ::unsetenv(kTunedMarker);
-  if (given)
-    ::setenv("GLIBC_TUNABLES", user.c_str(), 1);
-  else
-    ::unsetenv("GLIBC_TUNABLES");
-}
-
-}  // namespace lancer::cli
 
 void* operator new(std::size_t bytes) { return allocate(bytes); }
 void* operator new[](std::size_t bytes) { return allocate(bytes); }

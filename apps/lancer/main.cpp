@@ -16,7 +16,6 @@
 #include "lancer/scene/suggest.hpp"
 #include "lancer/util/input_error.hpp"
 #include "lancer/util/memory_budget.hpp"
-#include "large_allocations.hpp"
 #include "scene_setup.hpp"
 
 namespace {
@@ -86,7 +85,6 @@ std::string unknownOptionMessage(CLI::App& app, int argc, char** argv) {
 
 int main(int argc, char** argv) {
   using namespace lancer::cli;
-  tuneMallocForHugePages(argv);  // first: it may run the program again
   // A file-size limit (`ulimit -f`) would otherwise kill lancer with SIGXFSZ mid-write, leaving the
   // temporary file behind; ignored, the write fails with EFBIG and the writer reports it cleanly.
   std::signal(SIGXFSZ, SIG_IGN);

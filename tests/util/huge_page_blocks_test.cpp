@@ -46,16 +46,95 @@ TEST(HugePageBlocks, MallocBlocksAreNotTakenForLargeOnes) {
   for (void* block : blocks) std::free(block);
 }
 
-TEST(HugePageBlocks, AReleasedBlockIsGoneAndAnImpossibleSizeIsRefused) {
+TEST(HugePageBlocks, AReleasedBlockIsNoLongerOneAndAnImpossibleSizeIsRefused) {
   void* first = allocateLargeBlock(kLargeBlockBytes);
   ASSERT_NE(first, nullptr);
   void* second = allocateLargeBlock(kLargeBlockBytes);
   ASSERT_NE(second, nullptr);
   EXPECT_NE(first, second);
   releaseLargeBlock(first);
+  EXPECT_FALSE(isLargeBlock(first));
   EXPECT_TRUE(isLargeBlock(second));
   releaseLargeBlock(second);
   EXPECT_EQ(allocateLargeBlock(SIZE_MAX - 100), nullptr);
+  releaseRetainedLargeBlocks();
+}
+
+TEST(HugePageBlocks, AReleasedBlockIsKeptAndTakenAgainBySameSize) {
+  releaseRetainedLargeBlocks();
+  const LargeBlockStats before = largeBlockStats();
+  EXPECT_EQ(before.retainedBytes, 0u);
+  void* block = allocateLargeBlock(3 * kHugePage);
+  ASSERT_NE(block, nullptr);
+  const std::size_t mapped = largeBlockMappedBytes(block);
+  EXPECT_EQ(mapped, 4 * kHugePage);  // the header needs a page more
+  LargeBlockStats stats = largeBlockStats();
+  EXPECT_EQ(stats.inUseBytes, before.inUseBytes + mapped);
+  EXPECT_EQ(stats.mappedBlocks, before.mappedBlocks + 1);
+  EXPECT_GE(stats.peakMappedBytes, stats.inUseBytes);
+  static_cast<char*>(block)[0] = 42;
+  releaseLargeBlock(block);
+  stats = largeBlockStats();
+  EXPECT_EQ(stats.inUseBytes, before.inUseBytes);
+  EXPECT_EQ(stats.retainedBytes, mapped);
+
+  // The same request takes it again: no block mapped, its bytes as left.
+  void* again = allocateLargeBlock(3 * kHugePage);
+  EXPECT_EQ(again, block);
+  EXPECT_EQ(static_cast<char*>(again)[0], 42);
+  EXPECT_EQ(largeBlockMappedBytes(again), mapped);
+  stats = largeBlockStats();
+  EXPECT_EQ(stats.mappedBlocks, before.mappedBlocks + 1);
+  EXPECT_EQ(stats.reusedBlocks, before.reusedBlocks + 1);
+  EXPECT_EQ(stats.retainedBytes, 0u);
+  EXPECT_EQ(stats.inUseBytes, before.inUseBytes + mapped);
+  releaseLargeBlock(again);
+
+  releaseRetainedLargeBlocks();
+  stats = largeBlockStats();
+  EXPECT_EQ(stats.retainedBytes, 0u);
+  EXPECT_EQ(stats.unmappedBlocks, before.unmappedBlocks + 1);
+}
+
+TEST(HugePageBlocks, AKeptBlockTooLargeIsCutAndOneTooSmallMakesRoom) {
+  releaseRetainedLargeBlocks();
+  const LargeBlockStats before = largeBlockStats();
+  // Kept: two blocks of 2 MiB and one of 16 MiB (each with its header).
+  void* small1 = allocateLargeBlock(kLargeBlockBytes);
+  void* small2 = allocateLargeBlock(kLargeBlockBytes);
+  void* large = allocateLargeBlock(8 * kHugePage - kLargeBlockAlignment);
+  ASSERT_TRUE(small1 && small2 && large);
+  const std::size_t peak = largeBlockStats().peakMappedBytes;
+  releaseLargeBlock(small1);
+  releaseLargeBlock(small2);
+  releaseLargeBlock(large);
+  EXPECT_EQ(largeBlockStats().retainedBytes, 10 * kHugePage);
+
+  // 6 MiB: the 16 MiB block is the one that fits, cut to the request: its end goes back.
+  void* middle = allocateLargeBlock(3 * kHugePage - kLargeBlockAlignment);
+  EXPECT_EQ(middle, large);
+  EXPECT_EQ(largeBlockMappedBytes(middle), 3 * kHugePage);
+  LargeBlockStats stats = largeBlockStats();
+  EXPECT_EQ(stats.mappedBlocks, before.mappedBlocks + 3);
+  EXPECT_EQ(stats.reusedBlocks, before.reusedBlocks + 1);
+  EXPECT_EQ(stats.retainedBytes, 2 * kHugePage);
+  EXPECT_EQ(stats.inUseBytes, before.inUseBytes + 3 * kHugePage);
+
+  // 10 MiB: no kept block fits; they are unmapped before a fresh one is mapped, so the memory
+  // mapped does not pass the earlier peak.
+  void* big = allocateLargeBlock(5 * kHugePage - kLargeBlockAlignment);
+  ASSERT_NE(big, nullptr);
+  stats = largeBlockStats();
+  EXPECT_EQ(stats.mappedBlocks, before.mappedBlocks + 4);
+  EXPECT_EQ(stats.unmappedBlocks, before.unmappedBlocks + 2);
+  EXPECT_EQ(stats.retainedBytes, 0u);
+  EXPECT_EQ(stats.peakMappedBytes, peak);
+  std::memset(middle, 1, 3 * kHugePage - kLargeBlockAlignment);  // still whole
+  releaseLargeBlock(middle);
+  releaseLargeBlock(big);
+  releaseRetainedLargeBlocks();
+  EXPECT_EQ(largeBlockStats().retainedBytes, 0u);
+  EXPECT_EQ(largeBlockStats().inUseBytes, before.inUseBytes);
 }
 
 }  // namespace
