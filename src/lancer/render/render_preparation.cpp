@@ -112,7 +112,8 @@ PreparedRender prepareRender(RenderRequest request) {
     scene = buildSceneAt(description, meshes, request.threads, &stages);
     kept = std::move(meshes);
   } else {
-    scene = buildScene(description, std::move(meshes), request.threads, &stages, &overlap);
+    scene = buildScene(description, std::move(meshes), request.threads, &stages,
+                       request.buildAlongside ? &overlap : nullptr);
   }
   const double loadSeconds = secondsBefore + load.seconds();
 
