@@ -26,6 +26,13 @@ heat/t.pos, heat/steps.pos, heat/heat.msh: transient heat on a plate of triangle
         getdp heat.pro -msh heat.msh -solve Transient -pos Map
     t.pos: views "T" (ST, SQ) and "gradT" (VT, VQ) with every step and GetDP's TIME list after the
     elements; steps.pos: one view "T" per step, appended by the time loop (no TIME).
+layers/v.pos, layers/e.pos, layers/layers.msh: two dielectric layers in a unit cube, a volume mesh
+    of two physical volumes with their interface, top and bottom as physical surfaces (layers/layers.geo,
+    layers/layers.pro, committed; GetDP's template Lib_Electrostatics_v.pro), solved exactly:
+        gmsh layers.geo -3 -format msh22 -o layers.msh
+        getdp layers.pro -msh layers.msh -solve Electrostatics_v -pos Map
+    v.pos: the potential on the tetrahedra (SS); e.pos: the field on the tetrahedra (VS) and on the
+    interface's triangles (VT, the field within them: 0).
 Run: /usr/bin/python3 scripts/make_pos_fixtures.py
 """
 import os
@@ -172,6 +179,18 @@ def getdp_heat(folder):
             shutil.copy(os.path.join(tmp, name), os.path.join(folder, name))
 
 
+def getdp_layers(folder):
+    template = os.path.join(GETDP_EXAMPLES, "templates", "Lib_Electrostatics_v.pro")
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in ("layers.geo", "layers.pro"):
+            shutil.copy(os.path.join(folder, name), tmp)
+        shutil.copy(template, tmp)
+        run(["gmsh", "layers.geo", "-3", "-format", "msh22", "-o", "layers.msh"], tmp)
+        run(["getdp", "layers.pro", "-msh", "layers.msh", "-solve", "Electrostatics_v", "-pos", "Map"], tmp)
+        for name in ("v.pos", "e.pos", "layers.msh"):
+            shutil.copy(os.path.join(tmp, name), os.path.join(folder, name))
+
+
 def main():
     os.makedirs(ROOT, exist_ok=True)
     gmsh.initialize()
@@ -182,6 +201,7 @@ def main():
     gmsh.finalize()
     getdp_magnet(os.path.join(ROOT, "magnet"))
     getdp_heat(os.path.join(ROOT, "heat"))
+    getdp_layers(os.path.join(ROOT, "layers"))
 
 
 if __name__ == "__main__":

@@ -64,6 +64,17 @@ std::string shellDescription(const MeshShell& shell) {
                             std::abs(shell.signedVolume));
 }
 
+// Why a section `lancer info` lists as skipped changes nothing in the picture.
+std::string_view skippedSectionReason(std::string_view name) {
+  if (name == "$Periodic") return "periodic node links; each side is drawn as it is meshed";
+  if (name == "$InterpolationScheme")
+    return "interpolation matrices; fields are drawn from their values at the element corners";
+  if (name == "$Comments") return "comments";
+  if (name == "$GhostElements") return "ghost elements of partitions; each element is drawn once";
+  if (name == "$Parametrizations") return "surface parametrizations; the mesh is drawn as meshed";
+  return "a section lancer does not know; nothing of it is drawn";
+}
+
 void printText(const Mesh& mesh, const MeshStats& stats) {
   const MeshSourceInfo& source = mesh.source;
   fmt::print("file:            {} ({} bytes)\n", source.path, source.fileBytes);
@@ -107,6 +118,11 @@ void printText(const Mesh& mesh, const MeshStats& stats) {
         "copy is kept, in all the groups)\n",
         source.duplicateElementsSkipped);
   for (const std::string& warning : source.warnings) fmt::print("{}\n", warning);
+  if (!source.skippedSections.empty()) {
+    fmt::print("sections skipped:\n");
+    for (const auto& [name, count] : source.skippedSections)
+      fmt::print("  {:>10}  {}: {}\n", count, name, skippedSectionReason(name));
+  }
   fmt::print("physical groups:\n");
   for (const PhysicalGroup& group : mesh.physicalGroups) {
     const auto faces = stats.facesByPhysicalTag.find(group.tag);
@@ -193,6 +209,10 @@ void printJson(const Mesh& mesh, const MeshStats& stats, const std::string& acce
   for (std::size_t i = 0; i < source.warnings.size(); ++i)
     out += fmt::format("{}{}", i ? ", " : "", jsonString(source.warnings[i]));
   out += "],\n";
+  out += "  \"skippedSections\": {";
+  for (const auto& [name, count] : source.skippedSections)
+    out += fmt::format("{}{}: {}", out.back() == '{' ? "" : ", ", jsonString(name), count);
+  out += "},\n";
   out += "  \"physicalGroups\": [";
   for (std::size_t i = 0; i < mesh.physicalGroups.size(); ++i) {
     const PhysicalGroup& group = mesh.physicalGroups[i];

@@ -107,6 +107,9 @@ class Scene:
         isolines: str | dict[str, Any] | None = None,
         arrows: str | dict[str, Any] | None = None,
         legend: Literal["right", "bottom", "none"] | None = None,
+        bands: int | None = None,
+        log: bool | None = None,
+        scale: Literal["linear", "log"] | None = None,
     ) -> Scene: ...
     def add_mesh(self, mesh: Mesh | str | os.PathLike[str], **keys: Any) -> None: ...
     def add_light(self, **keys: Any) -> None: ...

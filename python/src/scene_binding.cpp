@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <map>
 #include "bindings.hpp"
+#include "render_session.hpp"
 
 #include "lancer/image/color_map.hpp"
 #include "lancer/mesh/nothing_to_draw.hpp"
@@ -230,7 +231,9 @@ void bindScene(py::module_& module) {
              const py::object& colorBy, const py::object& colorMap,
              const std::optional<std::pair<double, double>>& colorRange, const std::optional<int>& step,
              const py::object& warp, const std::string& component, const std::string& undeformed,
-             const py::object& isolines, const py::object& arrows, const std::optional<std::string>& legend) {
+             const py::object& isolines, const py::object& arrows, const std::optional<std::string>& legend,
+             const std::optional<int>& bands, const std::optional<bool>& log,
+             const std::optional<std::string>& scale) {
             if (step && *step < 0)
               throw py::value_error(fmt::format("step={}: a field's steps count from 0", *step));
             if (undeformed != "none" && undeformed != "edges" && undeformed != "ghost")
@@ -259,6 +262,14 @@ void bindScene(py::module_& module) {
             keywords.arrows = arrows;
             keywords.legend = legend;
             applyResultKeywords(instance, keywords);
+            // bands= and log= (or scale=) as render() takes them: its checks and its messages.
+            RenderArguments results;
+            results.bands = bands;
+            results.log = log;
+            results.scale = scale;
+            RenderOverrides overrides;
+            applyResultArguments(results, overrides);
+            applyRenderOverrides(scene.description, overrides, scene.quickLookMesh.get());
             if (!warp.is_none()) {
               instance.warp = warpArgument(warp);
               instance.undeformed = undeformed == "edges"   ? UndeformedStyle::Edges
@@ -272,6 +283,7 @@ void bindScene(py::module_& module) {
           py::arg("color_map") = "viridis", py::arg("color_range") = py::none(), py::arg("step") = py::none(),
           py::arg("warp") = py::none(), py::arg("component") = "magnitude", py::arg("undeformed") = "none",
           py::arg("isolines") = py::none(), py::arg("arrows") = py::none(), py::arg("legend") = py::none(),
+          py::arg("bands") = py::none(), py::arg("log") = py::none(), py::arg("scale") = py::none(),
           "The scene `lancer render part.msh` makes of a bare mesh (up: 'x', 'y', 'z', '-x', ...; None: "
           "guessed); color_by names one of mesh.fields to colour it by, as a scene file's color_by "
           "(color_map a matplotlib map's name ('viridis', 'turbo', 'RdBu', 'jet', ...; lancer.color_maps() "
@@ -286,7 +298,8 @@ void bindScene(py::module_& module) {
           "'component': 'von_mises', 'title': 'von Mises stress', 'units': 'MPa', 'bands': 8}); isolines "
           "and arrows a field's name or a dict of their scene keys ({'field': 'T', 'count': 12, 'color': "
           "[0, 0, 0], 'width': 1.5}, {'field': 'velocity', 'max_count': 300}); legend 'right', 'bottom' "
-          "or 'none' draws the colours' legend into the picture")
+          "or 'none' draws the colours' legend into the picture; bands=N shows the colours in N flat bands "
+          "and log=True (or scale='log') maps them on a logarithmic scale, as render()'s bands= and log=")
       .def_property(
           "camera", [](const PythonScene& scene) { return scene.description.camera; },
           [](PythonScene& scene, const CameraSettings& camera) {

@@ -52,6 +52,19 @@ TEST(InfoCli, TextReportOfAClosedSkinAndUnrenderableElements) {
   EXPECT_FALSE(contains(cubic.output, "not rendered:")) << cubic.output;
 }
 
+// Sections the reader reads past are named with why nothing of them is drawn: a file's
+// $InterpolationScheme (which its element data names) is not dropped without a word.
+TEST(InfoCli, NamesTheSectionsItSkipped) {
+  const std::string path = test::quoted(test::mshFixture("elementdata_v41_ascii.msh"));
+  expectInfoSays(path, {"sections skipped:\n",
+                        "           1  $InterpolationScheme: interpolation matrices; fields are drawn from "
+                        "their values at the element corners\n",
+                        "           1  $Periodic: periodic node links"});
+  expectInfoSays("--json " + path, {"\"skippedSections\": {\"$InterpolationScheme\": 1, \"$Periodic\": 1},"});
+  const CommandResult plain = runCli("info " + test::quoted(test::mshFixture("cube_hex8_v22_bin.msh")));
+  EXPECT_FALSE(contains(plain.output, "sections skipped")) << plain.output;
+}
+
 TEST(InfoCli, JsonReport) {
   const CommandResult result = runCli("info --json '" + test::mshFixture("square_quad4_v22_ascii.msh") + "'");
   ASSERT_EQ(result.exitCode, 0) << result.output;

@@ -32,7 +32,8 @@ CommandResult runCliIn(const ScratchFolder& folder, const std::string& arguments
                         arguments + " 2>&1");
 }
 
-// A folder holding GetDP's magnet and heat results and gmsh's saved view under the names the docs use.
+// A folder holding GetDP's magnet, heat and layers results and gmsh's saved view under the names the
+// docs use.
 void copyResults(const ScratchFolder& folder) {
   folder.copy(posFixture("magnet/magnet.msh"), "magnet.msh");
   folder.copy(posFixture("magnet/az.pos"), "az.pos");
@@ -40,6 +41,9 @@ void copyResults(const ScratchFolder& folder) {
   folder.copy(posFixture("heat/heat.msh"), "heat.msh");
   folder.copy(posFixture("heat/t.pos"), "t.pos");
   folder.copy(posFixture("heat/steps.pos"), "steps.pos");
+  folder.copy(posFixture("layers/layers.msh"), "layers.msh");  // a volume mesh, views on its volumes
+  folder.copy(posFixture("layers/v.pos"), "v.pos");
+  folder.copy(posFixture("layers/e.pos"), "e.pos");
   folder.copy(posFixture("gmsh_lists.pos"), "view.pos");  // written by gmsh.view.write, Save View's writer
   std::filesystem::create_directory(folder.path() / "v2");
   folder.copy(test::dataFile("getdp/magnet_v2_az.pos"), "v2/az.pos");
@@ -183,7 +187,7 @@ DocSection readDocSection() {
 
 TEST(PosViewsCli, TheCommandsOfTheDocsSectionRunAsWritten) {
   const DocSection section = readDocSection();
-  ASSERT_GE(section.commands.size(), 8u) << "docs/results.md lost its GetDP section's commands";
+  ASSERT_GE(section.commands.size(), 9u) << "docs/results.md lost its GetDP section's commands";
   ASSERT_FALSE(section.scene.empty());
   ScratchFolder folder;
   copyResults(folder);

@@ -2,9 +2,11 @@
 // surface elements cover: each skin face is its surface element, and takes the values of the volume
 // element under it where the surface element has no record of its own. capacitor.msh (MSH 2.2,
 // GetDP's $ElementNodeData on the tetrahedra; plates and box as Physical Surfaces), cube_hex.msh
-// (MSH 4.1, $ElementData on the hexahedra, the skin as quads), and an interface between two volumes.
+// (MSH 4.1, $ElementData on the hexahedra, the skin as quads), and interfaces between two volumes,
+// where a surface element's own record wins over the volume elements' (layers.msh).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -215,6 +217,101 @@ TEST(SkinElementData, InterfacesTakeTheirInnerVolumesValues) {
     EXPECT_NE(mesh.volumeSides.outerPhysicalTag[f], mesh.facePhysicalTag[f]) << "face " << f;
   }
   EXPECT_EQ(interfaces, 1002u);
+}
+
+// An $ElementNodeData section (MSH 2.2 text) of one scalar: per listed element, its value at each node.
+std::string elementNodeDataSection(const std::string& name,
+                                   const std::map<std::uint64_t, std::vector<double>>& values) {
+  std::ostringstream out;
+  out << "$ElementNodeData\n1\n\"" << name << "\"\n1\n0\n3\n0\n1\n" << values.size() << "\n";
+  for (const auto& [tag, nodes] : values) {
+    out << tag << " " << nodes.size();
+    for (const double value : nodes) out << " " << value;
+    out << "\n";
+  }
+  out << "$EndElementNodeData\n";
+  return out.str();
+}
+
+// layers.msh (GetDP's two dielectric layers, tests/data/pos/layers): two physical volumes (1 and 2)
+// meeting at the interface's triangles (physical surface 13), top and bottom as physical surfaces.
+// Element data on every tetrahedron (its volume's tag) and on the interface's triangles (13): the
+// interface faces show the triangles' own values, every other face its tetrahedron's.
+TEST(SkinElementData, AnInterfacesSurfaceElementKeepsItsOwnRecord) {
+  const std::string path = test::dataFile("pos/layers/layers.msh");
+  std::string text = test::readText(path);
+  const Msh22Text msh = parseMsh22(text);
+  std::map<std::uint64_t, double> perElement;
+  std::map<std::uint64_t, std::vector<double>> perNode;
+  for (const auto& [tag, element] : msh.elements) {
+    if (element.type == 4) {
+      perElement[tag] = element.physical;
+      perNode[tag].assign(4, element.physical);
+    } else if (element.physical == 13) {
+      perElement[tag] = 13;
+      // The triangle's value at its node j is 13 + j: a corner shows where it is in the record.
+      perNode[tag] = {13, 14, 15};
+    }
+  }
+  text += elementDataSection("w", perElement) + elementNodeDataSection("n", perNode);
+  const Mesh mesh = readMshFromMemory(text, path);
+  EXPECT_EQ(mesh.source.interfaceSurfaceElementsMerged, 4u);
+  const MeshField& w = fieldNamed(mesh, "w");
+  const MeshField& n = fieldNamed(mesh, "n");
+  std::size_t interfaces = 0;
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
+    // Which volume a face is on: the interface at z = 0.5, the lower volume below, the upper above.
+    double z = 0;
+    for (int c = 0; c < 3; ++c) z += cornerPoint(mesh, f, c).z / 3;
+    if (mesh.volumeSides.isInterface(f)) {
+      ++interfaces;
+      EXPECT_EQ(w.values[f], 13.0f) << "face " << f;
+      std::vector<std::uint64_t> corners;
+      for (int c = 0; c < 3; ++c) corners.push_back(nodeAt(msh, cornerPoint(mesh, f, c)));
+      const auto triangle = std::find_if(msh.elements.begin(), msh.elements.end(), [&](const auto& entry) {
+        return entry.second.type == 2 &&
+               std::is_permutation(corners.begin(), corners.end(), entry.second.nodes.begin());
+      });
+      ASSERT_NE(triangle, msh.elements.end()) << "face " << f;
+      EXPECT_EQ(triangle->second.physical, 13);
+      for (int c = 0; c < 3; ++c) {
+        const std::vector<std::uint64_t>& nodes = triangle->second.nodes;
+        const auto j =
+            std::find(nodes.begin(), nodes.end(), corners[static_cast<std::size_t>(c)]) - nodes.begin();
+        EXPECT_EQ(cornerValue(n, mesh, f, c), static_cast<float>(13 + j)) << "face " << f << " corner " << c;
+      }
+    } else {
+      const float volume = z < 0.5 ? 1.0f : 2.0f;
+      EXPECT_EQ(w.values[f], volume) << "face " << f;
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(cornerValue(n, mesh, f, c), volume) << "face " << f;
+    }
+  }
+  EXPECT_EQ(interfaces, 4u);
+}
+
+// The same records less the triangles': the interface faces fall back on their inner volume's
+// tetrahedra (the volume facePhysicalTag names), as faces with no surface element do.
+TEST(SkinElementData, AnInterfaceWithoutRecordsOfItsOwnShowsItsInnerVolume) {
+  const std::string path = test::dataFile("pos/layers/layers.msh");
+  std::string text = test::readText(path);
+  const Msh22Text msh = parseMsh22(text);
+  std::map<std::uint64_t, double> perElement;
+  std::map<std::uint64_t, std::vector<double>> perNode;
+  for (const auto& [tag, element] : msh.elements)
+    if (element.type == 4) perElement[tag] = element.physical, perNode[tag].assign(4, element.physical);
+  text += elementDataSection("w", perElement) + elementNodeDataSection("n", perNode);
+  const Mesh mesh = readMshFromMemory(text, path);
+  const MeshField& w = fieldNamed(mesh, "w");
+  const MeshField& n = fieldNamed(mesh, "n");
+  std::size_t interfaces = 0;
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
+    if (!mesh.volumeSides.isInterface(f)) continue;
+    ++interfaces;
+    EXPECT_EQ(w.values[f], static_cast<float>(mesh.facePhysicalTag[f])) << "face " << f;
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ(cornerValue(n, mesh, f, c), static_cast<float>(mesh.facePhysicalTag[f])) << "face " << f;
+  }
+  EXPECT_EQ(interfaces, 4u);
 }
 
 }  // namespace

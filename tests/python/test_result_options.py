@@ -83,3 +83,46 @@ def test_result_keywords_bad_input():
         lancer.render(coloured, range="0:1", **SIZE)
     with pytest.raises(ValueError, match="legend='left'"):
         lancer.animate(coloured, "x.gif", legend="left", frames=2, **SIZE)
+
+
+def test_quick_look_bands_and_log_are_renders(tmp_path):
+    mesh = lancer.read_msh(SQUARE)
+    scene = lancer.Scene.quick_look(mesh, color_by="temperature", color_range=(0.03, 3), bands=6, log=True)
+    image = np.asarray(lancer.render(scene, **SIZE))
+    plain = lancer.Scene.quick_look(mesh, color_by="temperature", color_range=(0.03, 3))
+    assert np.array_equal(image, np.asarray(lancer.render(plain, bands=6, log=True, **SIZE)))
+    assert np.array_equal(image, cli_image(tmp_path, SQUARE, "--color-by", "temperature", "--range", "0.03:3",
+                                           "--log", "--bands", 6))
+    assert np.array_equal(image, np.asarray(lancer.render(
+        lancer.Scene.quick_look(mesh, color_by="temperature", color_range=(0.03, 3), bands=6, scale="log"), **SIZE)))
+    assert not np.array_equal(image, np.asarray(lancer.render(plain, **SIZE)))
+    # Each on its own changes the picture.
+    banded = np.asarray(lancer.render(lancer.Scene.quick_look(mesh, color_by="temperature", bands=4), **SIZE))
+    assert np.array_equal(banded, np.asarray(lancer.render(
+        lancer.Scene.quick_look(mesh, color_by="temperature"), bands=4, **SIZE)))
+
+
+def test_quick_look_bands_and_log_bad_input():
+    mesh = lancer.read_msh(SQUARE)
+    with pytest.raises(lancer.InputError, match="^bands: error: bands 0 is not a number of colour bands from 1 to"):
+        lancer.Scene.quick_look(mesh, color_by="temperature", bands=0)
+    with pytest.raises(lancer.InputError, match="bands goes with a field's colours, and no mesh is coloured"):
+        lancer.Scene.quick_look(mesh, bands=4)
+    with pytest.raises(lancer.InputError, match="log goes with a field's colours"):
+        lancer.Scene.quick_look(mesh, log=True)
+    with pytest.raises(ValueError, match="scale='ln': use 'linear' or 'log'"):
+        lancer.Scene.quick_look(mesh, color_by="temperature", scale="ln")
+    with pytest.raises(ValueError, match="log and scale disagree"):
+        lancer.Scene.quick_look(mesh, color_by="temperature", log=True, scale="linear")
+    # Values down to 0 on a log scale: refused when the picture is made, as render(log=True) is.
+    scene = lancer.Scene.quick_look(mesh, color_by="temperature", log=True)
+    with pytest.raises(lancer.InputError, match=r"^log: error: color_by field \"temperature\" in .* has values down "
+                                                r"to 0 .*but log needs values > 0"):
+        lancer.render(scene, **SIZE)
+    # The same message as render(log=True) gives the same scene.
+    ranged = {"color_by": "temperature", "color_range": (0, 3)}
+    with pytest.raises(lancer.InputError) as from_quick_look:
+        lancer.render(lancer.Scene.quick_look(mesh, log=True, **ranged), **SIZE)
+    with pytest.raises(lancer.InputError) as from_render:
+        lancer.render(lancer.Scene.quick_look(mesh, **ranged), log=True, **SIZE)
+    assert str(from_quick_look.value) == str(from_render.value)

@@ -98,6 +98,9 @@ struct MeshSourceInfo {
   std::vector<std::string> warnings;
   // Fields in sections the reader skipped (see warnings): name and the warning, for color_by.
   std::vector<std::pair<std::string, std::string>> skippedFields;
+  // Sections read past because drawing needs nothing from them ($Periodic, $InterpolationScheme,
+  // $Comments, an unknown one), by name, with how many times each came: `lancer info` lists them.
+  std::map<std::string, std::uint32_t> skippedSections;
   double loadSeconds = 0;
 };
 

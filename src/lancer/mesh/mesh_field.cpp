@@ -1,5 +1,6 @@
 #include "lancer/mesh/mesh_field.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "lancer/mesh/field_steps.hpp"
@@ -24,6 +25,13 @@ const std::vector<float>& fieldValues(const MeshField& field,
                                       std::shared_ptr<const std::vector<float>>& keep) {
   if (!field.stored) return field.values;
   keep = field.stored->file->load(field.stored->section);
+  if (const std::vector<std::uint32_t>* order = field.stored->order.get()) {
+    const auto width = static_cast<std::size_t>(field.components);
+    auto renumbered = std::make_shared<std::vector<float>>(keep->size());
+    for (std::size_t i = 0; i < order->size(); ++i)
+      std::copy_n(keep->data() + std::size_t((*order)[i]) * width, width, renumbered->data() + i * width);
+    keep = std::move(renumbered);
+  }
   return *keep;
 }
 

@@ -24,6 +24,9 @@ struct StoredFieldValues {
   std::shared_ptr<const StoredFieldSteps> file;
   std::size_t section = 0;  // which of the file's field sections
   std::size_t items = 0;    // vertices, faces or face corner slots
+  // Set when the mesh was renumbered after reading (morton_renumbering.hpp): item i is the item
+  // order[i] of the file's mesh order.
+  std::shared_ptr<const std::vector<std::uint32_t>> order = nullptr;
 };
 
 // Where a field's values sit on the mesh.

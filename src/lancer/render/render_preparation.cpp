@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lancer/image/legend.hpp"
+#include "lancer/mesh/morton_renumbering.hpp"
 #include "lancer/scene/flat_scene.hpp"
 #include "lancer/scene/geometry_overlap.hpp"
 #include "lancer/scene/results/annotation_builder.hpp"
@@ -86,6 +87,11 @@ PreparedRender prepareRender(RenderRequest request) {
     volumes.push_back(request.quickLookVolume);
   } else {
     meshes = readSceneMeshes(description, request.threads, &stages, &volumes, request.givenMeshes);
+  }
+  {
+    const Stopwatch renumber;  // locality for every pass that follows (mesh/morton_renumbering.hpp)
+    if (renumberLargeMeshesInMortonOrder(meshes, request.threads) > 0)
+      stages.add("renumber", renumber.seconds());
   }
   if (request.withMeshes) request.withMeshes(description, meshes);
   attachAnnotationVolumes(description, volumes);

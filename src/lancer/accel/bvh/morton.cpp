@@ -1,30 +1,15 @@
 #include "lancer/accel/bvh/morton.hpp"
 
 #include <algorithm>
-#include <array>
 #include <bit>
-#include <cmath>
 
 #include "lancer/util/huge_pages.hpp"
+#include "lancer/util/morton_order.hpp"
 #include "lancer/util/parallel_for.hpp"
 
 namespace lancer::bvh {
 
 namespace {
-
-constexpr int kBitsPerAxis = 10;
-constexpr int kDigitBits = 10;  // three passes of the radix sort over the 30-bit code
-constexpr std::size_t kDigits = std::size_t(1) << kDigitBits;
-
-// x's low 10 bits spread to every third bit.
-std::uint32_t spread(std::uint32_t x) {
-  x &= 0x3FFu;
-  x = (x | (x << 16)) & 0x030000FFu;
-  x = (x | (x << 8)) & 0x0300F00Fu;
-  x = (x | (x << 4)) & 0x030C30C3u;
-  x = (x | (x << 2)) & 0x09249249u;
-  return x;
-}
 
 // The centroids' box (doubled centroids, as the build bins them).
 Box centroidBox(const std::vector<PrimRef>& refs, int threads) {
@@ -42,35 +27,6 @@ Box centroidBox(const std::vector<PrimRef>& refs, int threads) {
   Box all;
   for (const Box& box : boxes) all.extend(box);
   return all;
-}
-
-// Keys code << 32 | index sorted by code, stable: least significant digit first, each pass a
-// histogram per chunk, the chunks' offsets in chunk order, and a scatter per chunk.
-void radixSort(std::vector<std::uint64_t>& keys, int threads) {
-  std::vector<std::uint64_t> other = vectorOnHugePages<std::uint64_t>(keys.size());
-  const ChunkPlan plan(keys.size(), 1 << 15);
-  std::vector<std::array<std::uint32_t, kDigits>> offsets(plan.chunks);
-  for (int shift = 32; shift < 32 + 3 * kBitsPerAxis; shift += kDigitBits) {
-    auto digit = [shift](std::uint64_t key) { return (key >> shift) & (kDigits - 1); };
-    parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
-      std::array<std::uint32_t, kDigits>& count = offsets[chunk];
-      count.fill(0);
-      for (std::size_t i = begin; i < end; ++i) ++count[digit(keys[i])];
-    });
-    std::uint32_t sum = 0;
-    for (std::size_t d = 0; d < kDigits; ++d) {
-      for (std::size_t c = 0; c < plan.chunks; ++c) {
-        const std::uint32_t count = offsets[c][d];
-        offsets[c][d] = sum;
-        sum += count;
-      }
-    }
-    parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
-      std::array<std::uint32_t, kDigits>& next = offsets[chunk];
-      for (std::size_t i = begin; i < end; ++i) other[next[digit(keys[i])]++] = keys[i];
-    });
-    keys.swap(other);
-  }
 }
 
 // Cuts sorted keys [begin, end) at the highest bit where their codes differ until each piece holds
@@ -103,25 +59,14 @@ std::vector<Cluster> mortonClusters(std::vector<PrimRef>& refs, std::uint32_t ma
   const auto n = static_cast<std::uint32_t>(refs.size());
   if (n == 0) return clusters;
   const Box box = centroidBox(refs, threads);
-  float origin[3], scale[3];
-  constexpr float kCells = float(1u << kBitsPerAxis);
-  for (int a = 0; a < 3; ++a) {
-    const float extent = box.hi[a] - box.lo[a];
-    origin[a] = box.lo[a];
-    scale[a] = extent > 0.0f && std::isfinite(extent) ? kCells * (1.0f - 1e-5f) / extent : 0.0f;
-  }
+  const MortonGrid grid(box.lo, box.hi);
   std::vector<std::uint64_t> keys = vectorOnHugePages<std::uint64_t>(n);
   parallelFor(n, threads, 1 << 15, [&](std::size_t i) {
     const PrimRef& r = refs[i];
-    std::uint32_t code = 0;
-    for (int a = 0; a < 3; ++a) {
-      float cell = (r.lo[a] + r.hi[a] - origin[a]) * scale[a];
-      cell = cell > 0.0f ? std::min(cell, kCells - 1.0f) : 0.0f;  // NaN to 0 too
-      code |= spread(static_cast<std::uint32_t>(cell)) << a;
-    }
-    keys[i] = std::uint64_t(code) << 32 | i;
+    const float centroid[3] = {r.lo[0] + r.hi[0], r.lo[1] + r.hi[1], r.lo[2] + r.hi[2]};
+    keys[i] = std::uint64_t(grid.code(centroid)) << 32 | i;
   });
-  radixSort(keys, threads);
+  sortMortonKeys(keys, threads);
   {
     std::vector<PrimRef> sorted = vectorOnHugePages<PrimRef>(n);
     parallelFor(n, threads, 1 << 15, [&](std::size_t i) { sorted[i] = refs[keys[i] & 0xFFFFFFFFu]; });

@@ -173,6 +173,19 @@ class MshMeshAssembler {
   void alignWinding(const SurfaceElementFaces& element, const MshVolumeFace& volumeFace);
   // The faces of a surface element that covers volume face `volumeFace` remember its element.
   void recordCoveredElement(const SurfaceElementFaces& element, std::uint32_t volumeFace);
+  // A surface element merged into an interface (when tracking): its tag, and where each of its
+  // faces' nodes is among its nodes (up to 9: a 9-node quad's), for the interface faces made after.
+  struct MergedSurfaceElement {
+    std::uint64_t element = 0;
+    std::array<std::uint32_t, 9> node{};
+    std::array<std::uint16_t, 9> position{};
+    int count = 0;
+  };
+  static constexpr std::uint32_t kNoMergedSurface = 0xFFFFFFFFu;
+  MergedSurfaceElement mergedSurfaceElement(const SurfaceElementFaces& element) const;
+  // The interface faces from firstFace on show the merged surface element's records first, and
+  // their volume element's (now the covered one) where it has none.
+  void showMergedSurfaceFirst(const MergedSurfaceElement& merged, std::size_t firstFace);
   void moveFace(std::size_t to, std::size_t from);  // every per-face array
   void truncateFaces(std::size_t count);
   void reserveMoreFaces(std::size_t count);  // room for `count` more faces in every per-face array

@@ -248,8 +248,9 @@ bool readSections(MshReadState& state) {
       releaseReadPages(state);
     } else {
       // Every other section is skipped to its end marker: $Comments, $Periodic, $GhostElements,
-      // $Parametrizations, $InterpolationScheme and any unknown one.
+      // $Parametrizations, $InterpolationScheme and any unknown one; `lancer info` names them.
       skipSection(cursor, name, start);
+      ++state.source.skippedSections[std::string(name.substr(0, 40))];
     }
     if (meshSection)
       state.meshSections.emplace(std::string(name), std::string_view(start, cursor.position()));

@@ -56,6 +56,42 @@ void MshMeshAssembler::recordCoveredElement(const SurfaceElementFaces& element, 
   }
 }
 
+MshMeshAssembler::MergedSurfaceElement MshMeshAssembler::mergedSurfaceElement(
+    const SurfaceElementFaces& element) const {
+  MergedSurfaceElement merged;
+  merged.element = faceElement_[element.firstFace];
+  for (std::uint32_t f = element.firstFace; f < element.firstFace + element.faceCount; ++f)
+    for (int c = 0; c < faces_[f].cornerCount(); ++c) {
+      const std::uint32_t node = faces_[f].vertex[c];
+      if (std::find(merged.node.begin(), merged.node.begin() + merged.count, node) !=
+          merged.node.begin() + merged.count)
+        continue;
+      merged.node[merged.count] = node;
+      merged.position[merged.count++] = faceCornerNode_[f][static_cast<std::size_t>(c)];
+    }
+  return merged;
+}
+
+void MshMeshAssembler::showMergedSurfaceFirst(const MergedSurfaceElement& merged, std::size_t firstFace) {
+  if (faceCoveredElement_.empty()) {
+    faceCoveredElement_.assign(faces_.size(), kNoCoveredElement);
+    faceCoveredCornerNode_.assign(faces_.size(),
+                                  {kNoElementNode, kNoElementNode, kNoElementNode, kNoElementNode});
+  }
+  for (std::size_t f = firstFace; f < faces_.size(); ++f) {
+    faceCoveredElement_[f] = faceElement_[f];
+    faceCoveredCornerNode_[f] = faceCornerNode_[f];
+    faceElement_[f] = merged.element;
+    for (int c = 0; c < faces_[f].cornerCount(); ++c) {
+      const auto at = std::find(merged.node.begin(), merged.node.begin() + merged.count, faces_[f].vertex[c]);
+      faceCornerNode_[f][static_cast<std::size_t>(c)] =
+          at != merged.node.begin() + merged.count
+              ? merged.position[static_cast<std::size_t>(at - merged.node.begin())]
+              : kAddedCentre;
+    }
+  }
+}
+
 void MshMeshAssembler::moveFace(std::size_t to, std::size_t from) {
   faces_[to] = faces_[from];
   facePhysical_[to] = facePhysical_[from];
@@ -169,6 +205,10 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
 
   std::vector<std::uint8_t> addBoundaryFace(boundary.size(), 1);
   std::vector<std::uint8_t> removedSurface;  // sized at the first surface element merged away
+  // When tracking: the surface elements merged into interfaces, whose own records the interface
+  // faces show first (a view on the interface), the inner volume element's after them.
+  std::vector<std::uint32_t> interfaceSurfaceOf;  // per boundary face; sized at the first one
+  std::vector<MergedSurfaceElement> interfaceSurfaces;
   if (!faces_.empty()) {
     const std::vector<SurfaceElementFaces> surfaces = surfaceElementsByKey();
     for (std::size_t b = 0; b < boundary.size(); ++b) {
@@ -183,6 +223,11 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
           begin, end, [&](const SurfaceElementFaces& e) { return facePhysical_[e.firstFace] != 0; });
       const bool volumeGrouped = groups_[volumeFace.group].first != 0;
       if (interface || (!surfaceGrouped && volumeGrouped)) {
+        if (interface && trackElements_) {
+          if (interfaceSurfaceOf.empty()) interfaceSurfaceOf.assign(boundary.size(), kNoMergedSurface);
+          interfaceSurfaceOf[b] = static_cast<std::uint32_t>(interfaceSurfaces.size());
+          interfaceSurfaces.push_back(mergedSurfaceElement(*begin));
+        }
         if (removedSurface.empty()) removedSurface.assign(faces_.size(), 0);
         for (auto e = begin; e != end; ++e)
           std::fill_n(removedSurface.begin() + e->firstFace, e->faceCount, 1);
@@ -233,7 +278,10 @@ void MshMeshAssembler::appendVolumeBoundary(MeshSourceInfo& source) {
       outerPhysical_ = outerEntity_ = 0;
     }
     ++source.skinFaces;
+    const std::size_t firstFace = faces_.size();
     addVolumeFace(face);
+    if (!interfaceSurfaceOf.empty() && interfaceSurfaceOf[b] != kNoMergedSurface)
+      showMergedSurfaceFirst(interfaceSurfaces[interfaceSurfaceOf[b]], firstFace);
   }
   volumeFace_ = nullptr;
   volumeElements_.clear();

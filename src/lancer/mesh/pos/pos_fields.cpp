@@ -122,7 +122,7 @@ int drawnComponents(const PosView& view, const std::string& file) {
 
 void addPosViewSteps(Mesh& mesh, const PosView& view, int components, const PosElementTags& elements,
                      const std::vector<std::uint64_t>& faceElement,
-                     const std::vector<MshCornerNodes>& faceCornerNode) {
+                     const std::vector<MshCornerNodes>& faceCornerNode, const MshCoveredElements& covered) {
   const int firstStep = nextStepIndex(mesh.fields, view.name);
   for (int k = 0; k < view.stepCount; ++k) {
     MeshField field;
@@ -132,10 +132,10 @@ void addPosViewSteps(Mesh& mesh, const PosView& view, int components, const PosE
     field.step = firstStep + k;
     field.time = view.timesGiven ? view.times[static_cast<std::size_t>(k)] : field.step;
     if (const auto inPlace = uniformRecords(view, k, elements)) {
-      field.values = mapElementNodeValues(*inPlace, components, faceElement, faceCornerNode);
+      field.values = mapElementNodeValues(*inPlace, components, faceElement, faceCornerNode, covered);
     } else {
-      field.values =
-          mapElementNodeValues(stepRecords(view, k, elements), components, faceElement, faceCornerNode, {});
+      field.values = mapElementNodeValues(stepRecords(view, k, elements), components, faceElement,
+                                          faceCornerNode, {}, covered);
     }
     field.ranges = componentRanges(field.values, components);
     mesh.fields.push_back(std::move(field));

@@ -41,8 +41,11 @@ int drawnComponents(const PosView& view, const std::string& file);
 // view's steps, in the order they come (gmsh's "Combine time steps by name", and what a GetDP time
 // loop that appends a view per step means): a step's index follows the mesh's last step of that
 // name, its time is the view's TIME value, or its step index when the view has no TIME list.
+// A face whose element the view gives no values takes those of the volume element it covers
+// (`covered`, may be empty: a skin face that another view's surface element made).
 void addPosViewSteps(Mesh& mesh, const PosView& view, int components, const PosElementTags& elements,
                      const std::vector<std::uint64_t>& faceElement,
-                     const std::vector<MshCornerNodes>& faceCornerNode);
+                     const std::vector<MshCornerNodes>& faceCornerNode,
+                     const MshCoveredElements& covered = {});
 
 }  // namespace lancer

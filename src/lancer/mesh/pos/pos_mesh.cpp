@@ -180,7 +180,7 @@ Mesh meshFromPos(const PosFile& pos, MeshSourceInfo source, int threads) {
   for (std::size_t v = 0; v < pos.views.size(); ++v)
     if (components[v] != 0)
       addPosViewSteps(mesh, pos.views[v], components[v], tags[v], mapping->faceElement,
-                      mapping->faceCornerNode);
+                      mapping->faceCornerNode, mapping->covered);
   return mesh;
 }
 

@@ -26,9 +26,11 @@ class ViewElementsByNode {
       if (drawnBlock(block)) refs += block.elementCount() * static_cast<std::size_t>(block.kind.nodes);
     nodes_ = PointIndex<float>(refs / 6);
     elementNode_.reserve(refs);
+    isVolume_.reserve(view.elementCount());
     for (const PosElementBlock& block : view.blocks) {
       const std::size_t count = drawnBlock(block) ? static_cast<std::size_t>(block.kind.nodes) : 0;
       for (std::size_t e = 0; e < block.elementCount(); ++e) {
+        isVolume_.push_back(block.kind.dimension == 3);
         const double* xyz = block.coords.data() + e * 3 * static_cast<std::size_t>(block.kind.nodes);
         for (std::size_t j = 0; j < count; ++j)
           elementNode_.push_back(
@@ -48,14 +50,20 @@ class ViewElementsByNode {
                                              static_cast<std::uint16_t>(i - elementStart_[e])};
   }
 
-  // The first element holding every corner of `face` among its nodes: its number (from 1), and
-  // where each corner's slot (cornerSlot) is among its nodes; 0 when no element does.
-  std::uint64_t match(const Mesh& mesh, const MeshFace& face, MshCornerNodes& slots) const {
+  // The element whose values `face` takes, among those holding every corner of the face among
+  // their nodes: a surface element (the face itself, a view on a boundary or an interface) before
+  // any volume element; between the two volume elements of an interface face, the one behind it
+  // (the face is wound out of its inner volume, whose values the .msh path gives it too); else the
+  // first in the view. Returns its number (from 1) and where each corner's slot (cornerSlot) is
+  // among its nodes; 0 when no element holds the face.
+  std::uint64_t match(const Mesh& mesh, const MeshFace& face, bool interface, MshCornerNodes& slots) const {
     std::uint32_t node[4];
     for (int c = 0; c < face.cornerCount(); ++c) {
       node[c] = nodes_.find(mesh.positions[face.vertex[c]]);
       if (node[c] == PointIndex<float>::kNone) return 0;
     }
+    std::uint32_t chosen = kNoElement;
+    std::uint16_t chosenLocal[4] = {};
     for (std::size_t h = nodeStart_[node[0]]; h < nodeStart_[node[0] + 1]; ++h) {
       const Holder holder = holders_[h];
       const std::uint32_t* first = elementNode_.data() + elementStart_[holder.element];
@@ -68,12 +76,18 @@ class ViewElementsByNode {
         local[c] = static_cast<std::uint16_t>(at - first);
       }
       if (!holdsAll) continue;
-      slots.fill(kNoElementNode);
-      for (int c = 0; c < face.cornerCount(); ++c)
-        slots[static_cast<std::size_t>(cornerSlot(face, c))] = local[c];
-      return holder.element + std::uint64_t{1};
+      const bool surface = !isVolume_[holder.element];
+      if (surface || chosen == kNoElement || (interface && behind(mesh, face, holder.element))) {
+        chosen = holder.element;
+        std::copy_n(local, 4, chosenLocal);
+      }
+      if (surface) break;
     }
-    return 0;
+    if (chosen == kNoElement) return 0;
+    slots.fill(kNoElementNode);
+    for (int c = 0; c < face.cornerCount(); ++c)
+      slots[static_cast<std::size_t>(cornerSlot(face, c))] = chosenLocal[c];
+    return chosen + std::uint64_t{1};
   }
 
  private:
@@ -81,11 +95,25 @@ class ViewElementsByNode {
     std::uint32_t element;
     std::uint16_t local;
   };
+  static constexpr std::uint32_t kNoElement = 0xFFFFFFFFu;
+
+  // Whether the element's centroid lies behind the face (against the normal its winding gives).
+  bool behind(const Mesh& mesh, const MeshFace& face, std::uint32_t element) const {
+    Vec3 centroid{};
+    for (std::size_t i = elementStart_[element]; i < elementStart_[element + 1]; ++i)
+      centroid += nodes_.points()[elementNode_[i]];
+    centroid = centroid / static_cast<float>(elementStart_[element + 1] - elementStart_[element]);
+    const Vec3& a = mesh.positions[face.vertex[0]];
+    const Vec3 normal = cross(mesh.positions[face.vertex[1]] - a, mesh.positions[face.vertex[2]] - a);
+    return dot(centroid - a, normal) < 0;
+  }
+
   PointIndex<float> nodes_;
   std::vector<std::uint32_t> elementNode_;  // per element (every block's, in order), its nodes
   std::vector<std::size_t> elementStart_;
   std::vector<std::size_t> nodeStart_;
   std::vector<Holder> holders_;
+  std::vector<std::uint8_t> isVolume_;  // per element: a volume element (else a surface element)
 };
 
 std::string describeBox(const Aabbd& box) {
@@ -134,15 +162,16 @@ void addPosViews(Mesh& mesh, const PosFile& pos) {
       faceElement.assign(mesh.faces.size(), 0);
       faceCornerNode.assign(mesh.faces.size(), MshCornerNodes{});
       std::atomic<std::size_t> covered{0};
-      parallelChunks(ChunkPlan(mesh.faces.size(), kFaceGrain), 0,
-                     [&](std::size_t, std::size_t begin, std::size_t end) {
-                       std::size_t count = 0;
-                       for (std::size_t f = begin; f < end; ++f) {
-                         faceElement[f] = elements.match(mesh, mesh.faces[f], faceCornerNode[f]);
-                         count += faceElement[f] != 0;
-                       }
-                       covered += count;
-                     });
+      parallelChunks(
+          ChunkPlan(mesh.faces.size(), kFaceGrain), 0, [&](std::size_t, std::size_t begin, std::size_t end) {
+            std::size_t count = 0;
+            for (std::size_t f = begin; f < end; ++f) {
+              faceElement[f] =
+                  elements.match(mesh, mesh.faces[f], mesh.volumeSides.isInterface(f), faceCornerNode[f]);
+              count += faceElement[f] != 0;
+            }
+            covered += count;
+          });
       if (covered == 0) failNoFaceMatched(mesh, view, pos.file);
       matched = &view;
     }
