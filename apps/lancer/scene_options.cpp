@@ -244,6 +244,11 @@ void addSceneOutputOptions(CLI::App& command, SceneOverrides& overrides) {
       .add_option("--threads", overrides.threads,
                   fmt::format("Worker threads, 0 to {} (default 0: one per usable CPU)", kMaxThreads))
       ->group(kQualityGroup);
+  command
+      .add_flag("--build-alongside", overrides.buildAlongside,
+                "Build the accelerator of a scene of one mesh alongside its orientation and normals: the "
+                "first ray sooner, for more memory at the peak")
+      ->group(kQualityGroup);
 }
 
 }  // namespace lancer::cli

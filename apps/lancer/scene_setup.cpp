@@ -450,6 +450,7 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
   request.threads = overrides.threads;
   request.imageBuffer = imageBuffer;
   request.keepMeshes = keepMeshes;
+  request.buildAlongside = overrides.buildAlongside;
   applyResultOverrides(description, overrides);
   PreparedRender prepared = prepareRender(std::move(request));
   if (!overrides.quiet)

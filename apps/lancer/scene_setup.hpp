@@ -45,7 +45,8 @@ struct SceneOverrides {
   // --gmsh-view [FILE]: the camera of a gmsh options file; "" for the mesh's own MESH.msh.opt.
   std::optional<std::string> gmshView;
   bool quiet = false;
-  bool timings = false;  // --timings: the preparation's stages on stderr
+  bool timings = false;         // --timings: the preparation's stages on stderr
+  bool buildAlongside = false;  // --build-alongside (RenderRequest::buildAlongside)
   // Results (docs/results.md): --step K, --warp FIELD[:FACTOR], --color-by FIELD[:COMPONENT],
   // --color-map NAME, --undeformed edges|ghost, applied to every mesh.
   std::optional<int> step;

@@ -9,7 +9,7 @@ No display is needed (no X, no GL). The C++ library does the work; this package 
 """
 
 from ._lancer import (Camera, InputError, LancerWarning, Mesh, Scene, Volume, __version__, color_map, color_maps,
-                      read_msh, read_png, read_volume)
+                      read_msh, read_png, read_volume, release_memory)
 from . import _lancer
 from . import _arrays
 from . import _image
@@ -17,7 +17,8 @@ from ._image import Image
 from ._gmsh import camera_from_gmsh as _camera_from_gmsh, from_gmsh
 
 __all__ = ["Camera", "Image", "InputError", "LancerWarning", "Mesh", "Scene", "Volume", "__version__", "animate",
-           "color_map", "color_maps", "from_gmsh", "read_msh", "read_png", "read_volume", "render"]
+           "color_map", "color_maps", "from_gmsh", "read_msh", "read_png", "read_volume", "release_memory",
+           "render"]
 
 Camera.from_gmsh = staticmethod(_camera_from_gmsh)
 # Mesh(points, cells, point_data, cell_data, ...): meshio's arguments, read in Python (_arrays.py).

@@ -15,12 +15,14 @@ from ._lancer import Volume as Volume
 from ._lancer import __version__ as __version__
 from ._lancer import color_map as color_map
 from ._lancer import color_maps as color_maps
+from ._lancer import release_memory as release_memory
 from ._lancer import read_msh as read_msh
 from ._lancer import read_png as read_png
 from ._lancer import read_volume as read_volume
 
 __all__ = ["Camera", "Image", "InputError", "LancerWarning", "Mesh", "Scene", "Volume", "__version__", "animate",
-           "color_map", "color_maps", "from_gmsh", "read_msh", "read_png", "read_volume", "render"]
+           "color_map", "color_maps", "from_gmsh", "read_msh", "read_png", "read_volume", "release_memory",
+           "render"]
 
 _ColorMap = str | Sequence[str | Sequence[float]]
 _Planes = str | dict[str, Any] | Sequence[str | dict[str, Any]]

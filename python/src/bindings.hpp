@@ -96,5 +96,6 @@ void bindAnimate(py::module_& module);
 void bindImage(py::module_& module);
 void bindVolume(py::module_& module);
 void bindListViews(py::module_& module);
+void bindMemory(py::module_& module);
 
 }  // namespace lancer::python

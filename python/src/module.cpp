@@ -12,4 +12,5 @@ PYBIND11_MODULE(_lancer, module) {
   lancer::python::bindImage(module);
   lancer::python::bindVolume(module);
   lancer::python::bindListViews(module);
+  lancer::python::bindMemory(module);
 }

@@ -5,11 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/util/memory_budget.hpp"
+#include "support/files.hpp"
 #include "support/input_errors.hpp"
 #include "support/test_scenes.hpp"
 
@@ -57,6 +60,107 @@ TEST(RenderPreparation, TheAcceleratorIsAStepOfItsOwn) {
   ASSERT_TRUE(again.intersect(ray, 0, kFar, b));
   EXPECT_EQ(a.face, b.face);
   EXPECT_EQ(a.t, b.t);
+}
+
+// Rays through a grid of pixels hit the same faces at the same distances, with the same
+// barycentrics (relative to the faces' winding), on `prepared`'s accelerator and on a reference
+// built afterwards over the prepared scene's faces.
+void expectSameHitsAsASerialBuild(const PreparedRender& prepared) {
+  const Accelerator serial = buildAccelerator(prepared.scene, AccelKind::Naive, 1);
+  constexpr float kFar = std::numeric_limits<float>::infinity();
+  int hits = 0;
+  for (int y = 0; y < prepared.settings().height; y += 3)
+    for (int x = 0; x < prepared.settings().width; x += 3) {
+      const Ray ray = prepared.camera.generateRay(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+      Hit a, b;
+      const bool hitA = prepared.accelerator.intersect(ray, 0, kFar, a);
+      ASSERT_EQ(hitA, serial.intersect(ray, 0, kFar, b)) << x << ", " << y;
+      if (!hitA) continue;
+      ++hits;
+      EXPECT_EQ(a.face, b.face) << x << ", " << y;
+      EXPECT_EQ(a.t, b.t) << x << ", " << y;
+      EXPECT_EQ(a.b1, b.b1) << x << ", " << y;
+      EXPECT_EQ(a.b2, b.b2) << x << ", " << y;
+    }
+  EXPECT_GT(hits, 20);
+}
+
+TEST(RenderPreparation, TheAcceleratorBuiltAlongsideTheSceneIsTheOneASerialBuildGives) {
+  RenderRequest request = quickLookRequest();
+  request.overrides.width = 64;
+  request.overrides.height = 48;
+  request.threads = 2;
+  request.buildAlongside = true;
+  const PreparedRender prepared = prepareRender(std::move(request));
+  expectSameHitsAsASerialBuild(prepared);
+  // The stage is the build's own time; what it adds to the load is no more.
+  EXPECT_GE(prepared.stages.stages.back().seconds, 0.0);
+  EXPECT_GE(prepared.buildSeconds, 0.0);
+}
+
+TEST(RenderPreparation, AMeshWoundInwardIsBuiltAgainOverItsTurnedFaces) {
+  // Every face wound the other way: orientation turns them all back after the early build
+  // started over them, whose triangles then hold the wrong corner order.
+  RenderRequest request = quickLookRequest();
+  for (MeshFace& face : request.quickLookMesh->faces) std::swap(face.vertex[1], face.vertex[2]);
+  request.buildAlongside = true;
+  request.overrides.width = 64;
+  request.overrides.height = 48;
+  const PreparedRender prepared = prepareRender(std::move(request));
+  const Mesh original = readMsh(kBracket);
+  ASSERT_EQ(prepared.scene.geometry.faces.size(), original.faces.size());
+  for (std::size_t f = 0; f < original.faces.size(); ++f)
+    ASSERT_EQ(prepared.scene.geometry.faces[f].vertex[1], original.faces[f].vertex[1]) << f;
+  expectSameHitsAsASerialBuild(prepared);
+}
+
+// NaN-aware: the arrays hold NaN for "not coloured".
+void expectSameValues(const std::vector<float>& a, const std::vector<float>& b, const char* what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!(std::isnan(a[i]) && std::isnan(b[i]))) ASSERT_EQ(a[i], b[i]) << what << " " << i;
+}
+
+TEST(RenderPreparation, AColouredMeshWithIsolinesIsTheSameSceneWithTheBuildAlongside) {
+  // The annotations are placed by the scene's vertex and face bases, which the build alongside must
+  // not move (it places the mesh's positions and faces in the scene first): the scene matches the
+  // one prepared without it (keepMeshes builds no accelerator alongside).
+  auto prepare = [](bool keepMeshes) {
+    const std::string path = test::dataFile("getdp/magnet_v2_az.pos");
+    RenderRequest request;
+    request.quickLookMesh = readMsh(path);
+    request.description = quickLookScene(path, *request.quickLookMesh);
+    ColorBy colorBy;
+    colorBy.field = "az";
+    request.description.meshes[0].colorBy = colorBy;
+    request.overrides.width = 32;
+    request.overrides.height = 24;
+    request.overrides.isolines = 6;
+    request.keepMeshes = keepMeshes;
+    request.buildAlongside = !keepMeshes;
+    return prepareRender(std::move(request));
+  };
+  const PreparedRender alongside = prepare(false);
+  const PreparedRender serial = prepare(true);
+  const Scene& a = alongside.scene;
+  const Scene& b = serial.scene;
+  ASSERT_EQ(a.geometry.faces.size(), b.geometry.faces.size());
+  EXPECT_EQ(a.geometry.positions.size(), b.geometry.positions.size());
+  EXPECT_EQ(a.appearance.faceMaterial, b.appearance.faceMaterial);
+  EXPECT_EQ(a.appearance.faceOuterMaterial, b.appearance.faceOuterMaterial);
+  ASSERT_TRUE(a.fieldColors && b.fieldColors);
+  EXPECT_EQ(a.fieldColors->faceColorMap, b.fieldColors->faceColorMap);
+  expectSameValues(a.fieldColors->vertexFieldT, b.fieldColors->vertexFieldT, "vertexFieldT");
+  expectSameValues(a.fieldColors->faceFieldT, b.fieldColors->faceFieldT, "faceFieldT");
+  expectSameValues(a.fieldColors->cornerFieldT, b.fieldColors->cornerFieldT, "cornerFieldT");
+  const std::vector<float>& t =
+      a.fieldColors->vertexFieldT.empty() ? a.fieldColors->cornerFieldT : a.fieldColors->vertexFieldT;
+  EXPECT_TRUE(std::any_of(t.begin(), t.end(), [](float v) { return !std::isnan(v); }));
+  ASSERT_TRUE(a.isolines && b.isolines);
+  EXPECT_EQ(a.isolines->faceStyle, b.isolines->faceStyle);
+  expectSameValues(a.isolines->vertexValue, b.isolines->vertexValue, "isoline vertexValue");
+  expectSameValues(a.isolines->cornerValue, b.isolines->cornerValue, "isoline cornerValue");
+  expectSameHitsAsASerialBuild(alongside);
 }
 
 TEST(RenderPreparation, ImagesRenderedInBandsNeedAFewBandsWhateverTheirHeight) {

@@ -1,5 +1,6 @@
 // `lancer render --timings` and `lancer animate --timings`: one line naming every preparation stage
-// in the order it ran (read, orient, normals, scene, accel build) with its seconds; nothing without it.
+// in the order it ran (read, orient, normals, scene, accel build) with its seconds; nothing without it;
+// with --build-alongside too, and the same picture.
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -39,6 +40,21 @@ TEST(TimingsCli, AnimatePrintsThemOnceAndNothingWithoutTheFlag) {
       test::runCli("render " + scene + " -q --width 32 --height 24 -o " + quoted(folder.file("b.png")));
   ASSERT_EQ(plain.exitCode, 0) << plain.output;
   EXPECT_FALSE(test::contains(plain.output, "timings:")) << plain.output;
+}
+
+TEST(TimingsCli, TheBuildAlongsideGivesTheSamePictureAndNamesEveryStage) {
+  const test::ScratchFolder folder;
+  const std::string mesh = quoted(std::string(LANCER_SOURCE_DIR) + "/examples/meshes/bracket.msh");
+  const test::CommandResult alongside =
+      test::runCli("render " + mesh + " -q --timings --build-alongside --width 32 --height 24 -o " +
+                   quoted(folder.file("alongside.ppm")));
+  ASSERT_EQ(alongside.exitCode, 0) << alongside.output;
+  EXPECT_TRUE(std::regex_search(alongside.output, kTimingsLine)) << alongside.output;
+  const test::CommandResult serial =
+      test::runCli("render " + mesh + " -q --width 32 --height 24 -o " + quoted(folder.file("serial.ppm")));
+  ASSERT_EQ(serial.exitCode, 0) << serial.output;
+  EXPECT_EQ(test::readFileBytes(folder.file("alongside.ppm")),
+            test::readFileBytes(folder.file("serial.ppm")));
 }
 
 }  // namespace

@@ -43,6 +43,11 @@ struct RenderRequest {
   // over steps builds each frame's scene and accelerator from them (render/step_animation.hpp), so
   // no accelerator is built here (PreparedRender::accelerator is empty).
   bool keepMeshes = false;
+  // A scene of one mesh has its accelerator built alongside its orientation and normals
+  // (scene/geometry_overlap.hpp): 0-13% sooner to the first ray on two cores, but the build's
+  // buffers then live beside the mesh as read and the orientation's and normals' own, 35-40% more
+  // peak memory (bench/RESULTS.md, "Time to first pixel"), so it is asked for.
+  bool buildAlongside = false;
   // Stages the caller already spent on this render (the CLI's read of a bare mesh), continued here
   // and counted as load time.
   StageTimes stages;

@@ -23,6 +23,7 @@
 namespace lancer {
 
 struct SceneLayout;
+class GeometryOverlap;
 
 // A light in scene space. Every light has a `position` the Whitted model lights with (a point light's
 // own, an area light's centre, a point far towards the sun); the path tracer samples its shape.
@@ -193,9 +194,10 @@ ShadowCatcher shadowCatcherOf(const FloorSettings& floor, const SceneGeometry& g
 // The preparation runs on `threads` threads (0: every core), with the same result for any number.
 // `times`, when given, gets the stages' wall seconds (read, orient, normals, scene).
 Scene buildScene(const SceneDescription& description, int threads = 0, StageTimes* times = nullptr);
-// Same, with the meshes already read: meshes[i] belongs to description.meshes[i].
+// Same, with the meshes already read: meshes[i] belongs to description.meshes[i]. With `overlap`,
+// a scene of one mesh starts it as soon as its positions are placed (geometry_overlap.hpp).
 Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads = 0,
-                 StageTimes* times = nullptr);
+                 StageTimes* times = nullptr, GeometryOverlap* overlap = nullptr);
 // The meshes of the description as buildScene reads them (a `file` pattern: one step per file).
 // With `volumes`, volumes[i] is mesh i's volume when needsVolume says it is needed
 // (results/volume_views.hpp: slices, isosurfaces, coloured caps), else null.

@@ -5,6 +5,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <map>
 #include <span>
@@ -16,6 +17,7 @@
 #include "lancer/mesh/face_geometry.hpp"
 #include "lancer/mesh/feature_edges.hpp"
 #include "lancer/mesh/shell_orientation.hpp"
+#include "lancer/scene/geometry_overlap.hpp"
 #include "lancer/scene/instance_transform.hpp"
 #include "lancer/scene/render_limits.hpp"
 #include "lancer/scene/results/annotation_builder.hpp"
@@ -92,14 +94,21 @@ struct PlacedMesh {
   std::vector<Vec3> faceNormals;  // unit, per face (computeCornerNormals made them on the way)
 };
 
+// `early`, for the one mesh of a scene whose accelerator is built alongside (geometry_overlap.hpp):
+// the positions are placed straight into the scene's `geometry`, and the faces copied there as the
+// file winds them, before the build starts over both; `geometry` outlives an error here, and
+// assembleScene waits for the build before it goes.
 PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTransform& transform,
-                     const Vec3d& origin, int threads, StageTimes& times, SceneEntryLayout* layout) {
+                     const Vec3d& origin, int threads, StageTimes& times, SceneEntryLayout* layout,
+                     GeometryOverlap* early = nullptr, SceneGeometry* geometry = nullptr) {
   const Stopwatch orient;
   PlacedMesh placed;
-  placed.positions.resize(mesh.positions.size());
-  parallelFor(placed.positions.size(), threads, kFacesPerChunk, [&](std::size_t v) {
-    placed.positions[v] =
-        toFloat(transform.apply(mesh.worldPosition(static_cast<std::uint32_t>(v))) - origin);
+  std::vector<Vec3>& positions = early ? geometry->positions : placed.positions;
+  positions.reserve(mesh.positions.size());
+  adviseHugePages(positions);
+  positions.resize(mesh.positions.size());
+  parallelFor(positions.size(), threads, kFacesPerChunk, [&](std::size_t v) {
+    positions[v] = toFloat(transform.apply(mesh.worldPosition(static_cast<std::uint32_t>(v))) - origin);
   });
   placed.edgeMasks = mesh.faceEdgeMask;
   placed.edgeMasks.resize(mesh.faces.size(), kAllEdges);
@@ -109,11 +118,25 @@ PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTra
   if (mirrored) {
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) reverseWinding(mesh.faces[f], placed.edgeMasks[f]);
   }
+  if (early) {
+    geometry->faces.reserve(mesh.faces.size());
+    adviseHugePages(geometry->faces);  // one fault per 2 MiB copied (64 MB at 4M faces)
+    geometry->faces.assign(mesh.faces.begin(), mesh.faces.end());
+    early->start(geometry->positions, geometry->faces);
+  }
   // Refraction and caps tell entering from leaving by the side a ray hits, so solids must face out
   // of their material (cavity walls into the cavity).
   placed.orientation =
-      orientClosedShellsOutward(placed.positions, mesh.faces, placed.edgeMasks, mesh.facePhysicalTag,
+      orientClosedShellsOutward(positions, mesh.faces, placed.edgeMasks, mesh.facePhysicalTag,
                                 mesh.volumeSides.side, threads, layout ? &layout->shells : nullptr);
+  if (early && placed.orientation.flippedFaces > 0) {
+    // The build's faces are no longer the scene's: it keeps its own until it is over.
+    early->facesChanged(std::move(geometry->faces));
+    geometry->faces = std::vector<MeshFace>();
+    geometry->faces.reserve(mesh.faces.size());
+    adviseHugePages(geometry->faces);
+    geometry->faces.assign(mesh.faces.begin(), mesh.faces.end());
+  }
   for (const std::uint32_t f : placed.orientation.reversedInterfaces) {
     std::swap(mesh.facePhysicalTag[f], mesh.volumeSides.outerPhysicalTag[f]);
     std::swap(mesh.faceEntityTag[f], mesh.volumeSides.outerEntityTag[f]);
@@ -121,8 +144,8 @@ PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTra
   times.add("orient", orient.seconds());  // shells, orientation, nesting, interfaces
   const Stopwatch normals;
   placed.normals =
-      computeCornerNormals(placed.positions, mesh.faces, mesh.facePhysicalTag, instance.smoothAngleDegrees,
-                           threads, &placed.faceNormals, layout ? &layout->walks : nullptr);
+      computeCornerNormals(positions, mesh.faces, mesh.facePhysicalTag, instance.smoothAngleDegrees, threads,
+                           &placed.faceNormals, layout ? &layout->walks : nullptr);
   times.add("normals", normals.seconds());
   return placed;
 }
@@ -130,9 +153,19 @@ PlacedMesh placeMesh(const MeshInstance& instance, Mesh& mesh, const InstanceTra
 // The mesh's vertices, faces and normals, renumbered after those already in the scene. The first
 // mesh's arrays are moved in, not copied (nothing to renumber; at 4M triangles the copies and the
 // fresh pages they fault in cost more than the renumbering loop).
+// `placedEarly`: placeMesh put the positions and faces in `geometry` already (the scene's one mesh,
+// its accelerator built alongside).
 void appendGeometry(SceneGeometry& geometry, const std::vector<MeshFace>& faces, PlacedMesh& placed,
-                    int threads) {
+                    int threads, bool placedEarly = false) {
   LANCER_DCHECK(placed.faceNormals.size(), ==, faces.size());
+  if (placedEarly) {
+    for (const Vec3& p : geometry.positions) geometry.bounds.extend(p);
+    geometry.cornerNormals.normals = std::move(placed.normals.normals);
+    geometry.cornerNormals.faceCorner = std::move(placed.normals.faceCorner);
+    geometry.faceNormals = std::move(placed.faceNormals);
+    geometry.faceBoundsSolid = placed.orientation.faceBoundsSolid;
+    return;
+  }
   for (const Vec3& p : placed.positions) geometry.bounds.extend(p);
   if (geometry.faces.empty() && geometry.positions.empty() && geometry.cornerNormals.normals.empty()) {
     geometry.positions = std::move(placed.positions);
@@ -435,12 +468,32 @@ Scene buildScene(const SceneDescription& description, int threads, StageTimes* t
 
 namespace {
 
+// Waits for the accelerator built alongside when the scene's preparation fails: it reads the
+// scene's positions and faces, which go as the error unwinds.
+class AbandonOnError {
+ public:
+  explicit AbandonOnError(GeometryOverlap* overlap) : overlap_(overlap) {}
+  ~AbandonOnError() {
+    if (overlap_ && std::uncaught_exceptions() > exceptions_) overlap_->abandon();
+  }
+  AbandonOnError(const AbandonOnError&) = delete;
+  AbandonOnError& operator=(const AbandonOnError&) = delete;
+
+ private:
+  GeometryOverlap* overlap_;
+  int exceptions_ = std::uncaught_exceptions();
+};
+
+// `overlap`: with a scene of one mesh, its accelerator's build is started there as soon as the
+// positions are placed (geometry_overlap.hpp).
 Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry> entries,
                     std::vector<Material> materials, std::vector<std::string> warnings, int threads,
-                    StageTimes& times, SceneLayout* layout = nullptr) {
+                    StageTimes& times, SceneLayout* layout = nullptr, GeometryOverlap* overlap = nullptr) {
   const Stopwatch whole;
   const double secondsBefore = times.totalSeconds();
   Scene scene;
+  const AbandonOnError waitOnError(overlap);  // after `scene`: gone before it
+  GeometryOverlap* early = entries.size() == 1 ? overlap : nullptr;
   scene.warnings = std::move(warnings);
   scene.warnings.insert(scene.warnings.begin(), description.notes.begin(), description.notes.end());
   SceneGeometry& geometry = scene.geometry;
@@ -468,16 +521,17 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
     scene.warnings.insert(scene.warnings.end(), mesh.source.warnings.begin(), mesh.source.warnings.end());
     const auto groupMaterials = resolveGroupMaterials(instance, mesh);
     SceneEntryLayout* entryLayout = layout ? &layout->entries.emplace_back() : nullptr;
-    PlacedMesh placed =
-        placeMesh(instance, mesh, transforms[i], geometry.origin, threads, times, entryLayout);
-
+    // Taken before placeMesh: with the build alongside, it places the positions and faces in
+    // `geometry` itself.
     const auto vertexBase = static_cast<std::uint32_t>(geometry.positions.size());
     const std::size_t faceBase = geometry.faces.size();
+    PlacedMesh placed = placeMesh(instance, mesh, transforms[i], geometry.origin, threads, times, entryLayout,
+                                  early, &geometry);
     if (entryLayout) {
       entryLayout->meshIndex = entries[i].meshIndex;
       entryLayout->undeformedCopy = entries[i].undeformedCopy;
       entryLayout->vertexBase = vertexBase;
-      entryLayout->vertexCount = static_cast<std::uint32_t>(placed.positions.size());
+      entryLayout->vertexCount = static_cast<std::uint32_t>(mesh.positions.size());
       entryLayout->faceBase = static_cast<std::uint32_t>(faceBase);
       entryLayout->faceCount = static_cast<std::uint32_t>(mesh.faces.size());
       entryLayout->normalBase = static_cast<std::uint32_t>(geometry.cornerNormals.normals.size());
@@ -485,7 +539,7 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
       entryLayout->reversedInterfaces = placed.orientation.reversedInterfaces;
       entryLayout->featureEdges = instance.edges && instance.edges->featuresOnly;
     }
-    appendGeometry(geometry, mesh.faces, placed, threads);
+    appendGeometry(geometry, mesh.faces, placed, threads, early != nullptr);
     appendAppearance(appearance, faceBase, instance, mesh, placed.orientation, groupMaterials,
                      instance.shading.value_or(description.render.shading));
     appendEdges(overlay, instance, mesh, placed.edgeMasks);
@@ -532,12 +586,12 @@ Scene assembleScene(const SceneDescription& description, std::vector<SceneEntry>
 }  // namespace
 
 Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, int threads,
-                 StageTimes* timesOrNull) {
+                 StageTimes* timesOrNull, GeometryOverlap* overlap) {
   if (hasAnnotationMeshes(description)) {  // arrows are meshes of their own, built once here
     SceneDescription annotated = description;
     std::vector<Mesh> annotations = addAnnotationMeshes(annotated, meshes);
     for (Mesh& mesh : annotations) meshes.push_back(std::move(mesh));
-    return buildScene(annotated, std::move(meshes), threads, timesOrNull);
+    return buildScene(annotated, std::move(meshes), threads, timesOrNull, overlap);
   }
   StageTimes unused;
   StageTimes& times = timesOrNull ? *timesOrNull : unused;
@@ -548,7 +602,7 @@ Scene buildScene(const SceneDescription& description, std::vector<Mesh> meshes, 
   std::vector<std::string> warnings;
   std::vector<SceneEntry> entries = sceneEntries(description, std::move(meshes), fields, materials, warnings);
   return assembleScene(description, std::move(entries), std::move(materials), std::move(warnings), threads,
-                       times);
+                       times, nullptr, overlap);
 }
 
 Scene buildSceneAt(const SceneDescription& description, const std::vector<Mesh>& meshes, int threads,
