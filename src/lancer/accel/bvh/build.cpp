@@ -11,6 +11,8 @@
 // Determinism: the Morton sort is stable and every split is serial within its range, so the tree and
 // its layout depend on the faces alone; threads only change who builds which cluster (clusters are
 // built in batches, each batch's nodes appended in cluster order).
+#include <sys/mman.h>
+
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
@@ -209,9 +211,9 @@ struct BvhBuilder {
   // Every cluster, in batches of consecutive clusters built on every thread, each batch's nodes then
   // appended to the final array in cluster order (a cluster's child indices moved to where its
   // nodes land). The scratch arrays are reused from batch to batch, so little fresh memory is touched
-  // twice.
+  // twice; batches of 128 clusters keep them small.
   void buildClusters(int threads) {
-    constexpr std::size_t kClustersPerChunk = 8, kChunksPerBatch = 64;
+    constexpr std::size_t kClustersPerChunk = 8, kChunksPerBatch = 16;
     std::vector<ClusterScratch> scratch(kChunksPerBatch);
     for (std::size_t batch = 0; batch < slots_.size(); batch += kClustersPerChunk * kChunksPerBatch) {
       const std::size_t end = std::min(slots_.size(), batch + kClustersPerChunk * kChunksPerBatch);
@@ -233,6 +235,9 @@ struct BvhBuilder {
         throw std::length_error("bvh: " + std::to_string(8 * words) + " bytes of leaves, at most " +
                                 std::to_string(8 * std::uint64_t(BvhNode::kMaxFirst)) + " supported");
       }
+      // The batch's references are no longer read: their pages go back to the system as the leaves
+      // that replace them are written, so that the two are never held whole.
+      releaseReferencesBefore(slots_[end - 1].range.end);
       bvh_.nodes_.resize(total);
       bvh_.leaves_.resize(words);
       parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t stop) {
@@ -256,9 +261,20 @@ struct BvhBuilder {
       });
     }
   }
-  void build(int threads) {
-    const std::vector<Cluster> clusters = mortonClusters(
-        refs_, std::clamp<std::uint32_t>(options_.maxClusterReferences, 1, kMaxClusterReferences), threads);
+  // Gives the pages wholly below reference `end` back to the system (they read as zeros after).
+  void releaseReferencesBefore(std::uint32_t end) {
+    constexpr std::uintptr_t kPage = 4096;
+    const auto begin = reinterpret_cast<std::uintptr_t>(refs_.data());
+    const std::uintptr_t first = (begin + kPage - 1) & ~(kPage - 1);
+    const std::uintptr_t last = (begin + std::uintptr_t(end) * sizeof(PrimRef)) & ~(kPage - 1);
+    if (last > released_ && last > first) {
+      const std::uintptr_t from = std::max(first, released_);
+      ::madvise(reinterpret_cast<void*>(from), last - from, MADV_DONTNEED);
+      released_ = last;
+    }
+  }
+
+  void build(const std::vector<Cluster>& clusters, int threads) {
     const std::size_t count = clusters.size();
     slots_.resize(count);
     parallelFor(count, threads, 64, [&](std::size_t c) {
@@ -313,6 +329,7 @@ struct BvhBuilder {
   Bvh& bvh_;
   std::vector<ClusterSlot> slots_;
   TreeCounts topCounts_;
+  std::uintptr_t released_ = 0;  // the references' pages below this address are given back
 };
 
 Bvh Bvh::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
@@ -322,7 +339,9 @@ Bvh Bvh::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
   bvh.traversalCost_ = options.traversalCost;
   bvh.intersectionCost_ = options.intersectionCost;
   const int threads = resolveThreadCount(options.threads);
-  GatheredFaces gathered = gatherFaces(positions, faces, threads);
+  MortonFaces gathered = gatherMortonFaces(
+      positions, faces, std::clamp<std::uint32_t>(options.maxClusterReferences, 1, kMaxClusterReferences),
+      threads);
   bvh.slivers_ = std::move(gathered.slivers);
   std::vector<PrimRef>& refs = gathered.refs;
   bvh.stats_.kind = "bvh";
@@ -333,7 +352,7 @@ Bvh Bvh::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
     bvh.stats_.nodes = 1;
   } else {
     BvhBuilder builder(positions, faces, refs, options, bvh);
-    builder.build(threads);
+    builder.build(gathered.clusters, threads);
     for (const ClusterSlot& slot : builder.slots_) box.extend(slot.range.bounds.aabb());
     AccelStats& stats = bvh.stats_;
     stats.nodes = builder.topCounts_.nodes;
