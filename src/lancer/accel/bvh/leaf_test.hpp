@@ -61,6 +61,11 @@ inline bool testLeaf(const BvhLeaf& leaf, const Ray& ray, float tMin, float tMax
   const std::uint32_t count = leaf.count();
 #ifdef LANCER_LEAF_AVX2
   if (count >= accel::kMinSimdLeaf) {
+    // The rows past the first line start where the vertex count, in the first, says: their lines
+    // are asked for now rather than after that load.
+    const auto* at = reinterpret_cast<const char*>(leaf.corners());
+    _mm_prefetch(at + 64, _MM_HINT_T0);
+    _mm_prefetch(at + 128, _MM_HINT_T0);
     __m256 coordinate[9];
     leafCoordinates(leaf, coordinate);
     accel::LeafCorners c;
