@@ -4,6 +4,7 @@
 // rebuild, and the rule for when a rebuild pays.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -49,42 +50,67 @@ TEST(Bvh, EmptyMeshHasNoHitsAndOneTriangleIsFound) {
   EXPECT_EQ(one.stats().triangles, 1u);
 }
 
-// Every tree triangle in exactly one leaf of at most eight; a quad's halves side by side in one leaf,
-// (0,1,2) first; children's boxes hold their triangles.
+// Every tree face in exactly one leaf of at most eight triangles; a quad's halves side by side in one
+// leaf, (0,1,2) first; each triangle's corners the face's own positions, every leaf vertex used and
+// listed once; children's boxes hold their triangles; leaves lie in their array one after another.
 TEST(Bvh, LayoutInvariants) {
-  const Soup soup = fixture("accel/quad_box.msh");
-  const Bvh bvh = Bvh::build(soup.positions, soup.faces, onThreads(2));
-  const auto triangles = bvh.triangles();
-  std::vector<int> seen(triangles.size(), 0);
-  for (const BvhNode& node : bvh.nodes()) {
-    for (int k = 0; k < BvhNode::kWidth; ++k) {
-      const std::uint32_t child = node.child[k];
-      if (child == BvhNode::kEmpty || !BvhNode::isLeaf(child)) continue;
-      const std::uint32_t first = BvhNode::leafFirst(child), count = BvhNode::leafCount(child);
-      ASSERT_LE(count, BvhNode::kMaxLeafTriangles);
-      ASSERT_LE(first + count, triangles.size());
-      for (std::uint32_t i = first; i < first + count; ++i) {
-        ++seen[i];
-        for (const Vec3& p : {triangles[i].v0, triangles[i].v1, triangles[i].v2}) {
-          for (int a = 0; a < 3; ++a) {
-            EXPECT_GE(p[a], node.lower[a][k]);
-            EXPECT_LE(p[a], node.upper[a][k]);
+  for (const char* name : {"accel/quad_box.msh", "accel/gmsh_tutorial_t5.msh"}) {
+    SCOPED_TRACE(name);
+    const Soup soup = fixture(name);
+    const Bvh bvh = Bvh::build(soup.positions, soup.faces, onThreads(2));
+    std::vector<int> seen(soup.faces.size(), 0);
+    std::size_t triangles = 0, words = 0;
+    for (const BvhNode& node : bvh.nodes()) {
+      for (int k = 0; k < BvhNode::kWidth; ++k) {
+        const std::uint32_t child = node.child[k];
+        if (child == BvhNode::kEmpty || !BvhNode::isLeaf(child)) continue;
+        const bvh::BvhLeaf leaf = bvh.leaf(child);
+        const std::uint32_t count = leaf.count();
+        ASSERT_LE(count, BvhNode::kMaxLeafTriangles);
+        ASSERT_LE(leaf.vertexCount(), 3 * count);
+        ASSERT_LE(BvhNode::leafFirst(child) + bvh::BvhLeaf::words(count, leaf.vertexCount()),
+                  bvh.leafWords().size());
+        triangles += count;
+        words += bvh::BvhLeaf::words(count, leaf.vertexCount());
+        std::vector<int> used(leaf.vertexCount(), 0);
+        for (std::uint32_t i = 0; i < count; ++i) {
+          const PackedTriangle tri = leaf.triangle(i);
+          for (int c = 0; c < 3; ++c) ++used[leaf.corner(i, c)];
+          for (const Vec3& p : {tri.v0, tri.v1, tri.v2}) {
+            for (int a = 0; a < 3; ++a) {
+              EXPECT_GE(p[a], node.lower[a][k]);
+              EXPECT_LE(p[a], node.upper[a][k]);
+            }
+          }
+          ASSERT_LT(tri.face, soup.faces.size());
+          const MeshFace& face = soup.faces[tri.face];
+          const bool second = i > 0 && leaf.face(i - 1) == tri.face;
+          if (!second) ++seen[tri.face];
+          if (face.isQuad() && !second) {
+            ASSERT_LT(i + 1, count) << "a quad's halves share a leaf";
+            EXPECT_EQ(leaf.face(i + 1), tri.face);
+          }
+          const int h = second ? 1 : 0;
+          EXPECT_EQ(tri.v0, soup.positions[face.vertex[0]]);
+          EXPECT_EQ(tri.v1, soup.positions[face.vertex[1 + h]]);
+          EXPECT_EQ(tri.v2, soup.positions[face.vertex[2 + h]]);
+        }
+        for (int n : used) EXPECT_GT(n, 0) << "a leaf vertex no corner uses";
+        for (std::uint32_t v = 0; v < leaf.vertexCount(); ++v) {
+          for (std::uint32_t w = v + 1; w < leaf.vertexCount(); ++w) {
+            const Vec3 a = leaf.vertex(v), b = leaf.vertex(w);
+            // Two leaf vertices may only share a position as two mesh vertices do.
+            if (a == b) {
+              EXPECT_TRUE(std::count(soup.positions.begin(), soup.positions.end(), a) > 1);
+            }
           }
         }
-        const MeshFace& face = soup.faces[triangles[i].face];
-        if (!face.isQuad()) continue;
-        const bool second = i > 0 && triangles[i - 1].face == triangles[i].face;
-        if (!second) {
-          ASSERT_LT(i + 1, first + count) << "a quad's halves share a leaf";
-          EXPECT_EQ(triangles[i + 1].face, triangles[i].face);
-        }
-        const Vec3 expectedV1 = soup.positions[face.vertex[second ? 2 : 1]];
-        EXPECT_EQ(triangles[i].v1, expectedV1);
       }
     }
+    for (int count : seen) EXPECT_EQ(count, 1);
+    EXPECT_EQ(bvh.stats().triangleReferences, triangles);
+    EXPECT_EQ(words + bvh::kLeafTailWords, bvh.leafWords().size()) << "leaves packed one after another";
   }
-  for (int count : seen) EXPECT_EQ(count, 1);
-  EXPECT_EQ(bvh.stats().triangleReferences, triangles.size());
 }
 
 TEST(Bvh, SameTreeByteForByteOnOneToFourThreads) {
@@ -99,7 +125,7 @@ TEST(Bvh, SameTreeByteForByteOnOneToFourThreads) {
   }
   auto bytesOf = [](const Bvh& bvh) {
     std::string bytes(reinterpret_cast<const char*>(bvh.nodes().data()), bvh.nodes().size_bytes());
-    bytes.append(reinterpret_cast<const char*>(bvh.triangles().data()), bvh.triangles().size_bytes());
+    bytes.append(reinterpret_cast<const char*>(bvh.leafWords().data()), bvh.leafWords().size_bytes());
     return bytes;
   };
   // Clusters of 512 (the default) and of 4 (thousands of clusters: several batches of them, a deep

@@ -65,12 +65,13 @@ struct ClosestHit {
     takeIfCloser(testTriangle(tri, ray, tMin, upper), tri.face, ray, tMax, keeps, best, upper);
     return false;
   }
-  // The rest of test, for a triangle whose sheared corners passed the float half (traversal.cpp).
-  bool finish(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax, float ax, float ay, float az,
+  // The rest of test, for a triangle of `face` whose sheared corners passed the float half (the
+  // leaves' eight-triangle tests).
+  bool finish(std::uint32_t face, const Ray& ray, float tMin, float tMax, float ax, float ay, float az,
               float bx, float by, float bz, float cx, float cy, float cz) {
     const TriangleHit h =
         triangle_detail::finishHit(ax, ay, az, bx, by, bz, cx, cy, cz, ray.shearZ, tMin, upper);
-    takeIfCloser(h, tri.face, ray, tMax, keeps, best, upper);
+    takeIfCloser(h, face, ray, tMax, keeps, best, upper);
     return false;
   }
   float bound(float) const { return best.t; }
@@ -85,10 +86,10 @@ struct AnyHit {
     const float t = intersectTriangle(tri, ray, tMin, tMax);
     return t >= 0.0f && keeps(ray, tri.face, t);
   }
-  bool finish(const PackedTriangle& tri, const Ray& ray, float tMin, float tMax, float ax, float ay, float az,
+  bool finish(std::uint32_t face, const Ray& ray, float tMin, float tMax, float ax, float ay, float az,
               float bx, float by, float bz, float cx, float cy, float cz) const {
     const float t = triangle_detail::finishHit(ax, ay, az, bx, by, bz, cx, cy, cz, ray.shearZ, tMin, tMax).t;
-    return t >= 0.0f && keeps(ray, tri.face, t);
+    return t >= 0.0f && keeps(ray, face, t);
   }
   float bound(float tMax) const { return tMax; }
 };
@@ -144,6 +145,29 @@ inline std::uint32_t keepSameSignLanes(__m256 u, __m256 v, __m256 w, std::uint32
   return passed;
 }
 
+// The float half of testTriangle for `count` (1..8) triangles given as one register per corner
+// coordinate (coordinate[3 c + axis]: corner c's `axis` of lane i's triangle), against one ray.
+inline std::uint32_t sameSignCorners(const __m256 (&coordinate)[9], std::uint32_t count, const Ray& ray,
+                                     LeafCorners& out) {
+  const float origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+  // Corner c's coordinate along `axis`, minus the origin's (testTriangle's da, db, dc).
+  auto corner = [&](int c, int axis) {
+    return _mm256_sub_ps(coordinate[3 * c + axis], _mm256_set1_ps(origin[axis]));
+  };
+  const __m256 shearX = _mm256_set1_ps(ray.shearX), shearY = _mm256_set1_ps(ray.shearY);
+  const __m256 az = corner(0, ray.kz), bz = corner(1, ray.kz), cz = corner(2, ray.kz);
+  const __m256 ax = _mm256_fnmadd_ps(shearX, az, corner(0, ray.kx));
+  const __m256 ay = _mm256_fnmadd_ps(shearY, az, corner(0, ray.ky));
+  const __m256 bx = _mm256_fnmadd_ps(shearX, bz, corner(1, ray.kx));
+  const __m256 by = _mm256_fnmadd_ps(shearY, bz, corner(1, ray.ky));
+  const __m256 cx = _mm256_fnmadd_ps(shearX, cz, corner(2, ray.kx));
+  const __m256 cy = _mm256_fnmadd_ps(shearY, cz, corner(2, ray.ky));
+  const __m256 u = differenceOfProducts8(cx, by, cy, bx);
+  const __m256 v = differenceOfProducts8(ax, cy, ay, cx);
+  const __m256 w = differenceOfProducts8(bx, ay, by, ax);
+  return keepSameSignLanes(u, v, w, (1u << count) - 1u, ax, ay, az, bx, by, bz, cx, cy, cz, out);
+}
+
 // The float half of testTriangle for `count` (1..8) triangles `tri` (each a PackedTriangle's first
 // float; all eight readable, the ones past `count` repeats), against one ray: the lanes whose ray line
 // meets the triangle. Shared by the kd-tree's and the BVH's leaves.
@@ -173,23 +197,7 @@ inline std::uint32_t sameSignTriangles(const float* const (&tri)[8], std::uint32
   }
   coordinate[8] =
       _mm256_set_ps(tri[7][8], tri[6][8], tri[5][8], tri[4][8], tri[3][8], tri[2][8], tri[1][8], tri[0][8]);
-  const float origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
-  // Corner c's coordinate along `axis`, minus the origin's (testTriangle's da, db, dc).
-  auto corner = [&](int c, int axis) {
-    return _mm256_sub_ps(coordinate[3 * c + axis], _mm256_set1_ps(origin[axis]));
-  };
-  const __m256 shearX = _mm256_set1_ps(ray.shearX), shearY = _mm256_set1_ps(ray.shearY);
-  const __m256 az = corner(0, ray.kz), bz = corner(1, ray.kz), cz = corner(2, ray.kz);
-  const __m256 ax = _mm256_fnmadd_ps(shearX, az, corner(0, ray.kx));
-  const __m256 ay = _mm256_fnmadd_ps(shearY, az, corner(0, ray.ky));
-  const __m256 bx = _mm256_fnmadd_ps(shearX, bz, corner(1, ray.kx));
-  const __m256 by = _mm256_fnmadd_ps(shearY, bz, corner(1, ray.ky));
-  const __m256 cx = _mm256_fnmadd_ps(shearX, cz, corner(2, ray.kx));
-  const __m256 cy = _mm256_fnmadd_ps(shearY, cz, corner(2, ray.ky));
-  const __m256 u = differenceOfProducts8(cx, by, cy, bx);
-  const __m256 v = differenceOfProducts8(ax, cy, ay, cx);
-  const __m256 w = differenceOfProducts8(bx, ay, by, ax);
-  return keepSameSignLanes(u, v, w, (1u << count) - 1u, ax, ay, az, bx, by, bz, cx, cy, cz, out);
+  return sameSignCorners(coordinate, count, ray, out);
 }
 
 #endif  // LANCER_LEAF_AVX2

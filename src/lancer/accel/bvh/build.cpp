@@ -11,6 +11,8 @@
 // Determinism: the Morton sort is stable and every split is serial within its range, so the tree and
 // its layout depend on the faces alone; threads only change who builds which cluster (clusters are
 // built in batches, each batch's nodes appended in cluster order).
+#include <sys/mman.h>
+
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
@@ -58,8 +60,22 @@ struct ClusterSlot {
   std::uint32_t nodeCount = 0;
   std::size_t scratchStart = 0;  // where its nodes lie in its batch chunk's scratch
   std::uint32_t firstNode = 0;   // in the final array
+  std::size_t leafStart = 0;     // where its leaves' words lie in the scratch (codes relative to it)
+  std::size_t leafWords = 0;
+  std::size_t firstLeafWord = 0;  // in the final array
   TreeCounts counts;
 };
+
+// A batch chunk's nodes and leaves, reused from batch to batch.
+struct ClusterScratch {
+  std::vector<BvhNode> nodes;
+  std::vector<std::uint64_t> leaves;
+};
+
+// A leaf code moved by `offset` words (its first word is below kMaxFirst: the build checks the total).
+std::uint32_t movedLeaf(std::uint32_t code, std::size_t offset) {
+  return code + static_cast<std::uint32_t>(offset);
+}
 
 }  // namespace
 
@@ -119,9 +135,11 @@ struct BvhBuilder {
     return index;
   }
 
-  // A cluster's subtree into `out` (node indices relative to `first`), depth first.
-  std::uint32_t writeNode(const Range& range, std::vector<BvhNode>& out, std::size_t first,
-                          std::uint64_t depth, TreeCounts& counts) const {
+  // A cluster's subtree into `scratch` (node indices relative to `first`, leaf words to `leafStart`),
+  // depth first.
+  std::uint32_t writeNode(const Range& range, ClusterScratch& scratch, std::size_t first,
+                          std::size_t leafStart, std::uint64_t depth, TreeCounts& counts) const {
+    std::vector<BvhNode>& out = scratch.nodes;
     Range child[BvhNode::kWidth];
     const int count = collapse(refs_.data(), range, child, LeafRule::BySah);
     const std::size_t index = out.size();
@@ -132,104 +150,145 @@ struct BvhBuilder {
       setLane(out[index], k, child[k].bounds);
       std::uint32_t code;
       if (child[k].split.kind == SplitKind::Leaf) {
-        code = leafOf(child[k], counts);
+        code = leafOf(child[k], scratch.leaves, leafStart, counts);
       } else {
-        code = writeNode(child[k], out, first, depth + 1, counts);
+        code = writeNode(child[k], scratch, first, leafStart, depth + 1, counts);
       }
       out[index].child[k] = code;
     }
     return static_cast<std::uint32_t>(index - first);
   }
 
-  static std::uint32_t leafOf(const Range& range, TreeCounts& counts) {
+  // The leaf of `range`'s faces appended to `leaves` (bvh/leaf.hpp), while its references are in
+  // cache; its code's first word relative to `leafStart`.
+  std::uint32_t leafOf(const Range& range, std::vector<std::uint64_t>& leaves, std::size_t leafStart,
+                       TreeCounts& counts) const {
     ++counts.nodes;
     ++counts.leaves;
     counts.triangleReferences += range.triangles;
-    return BvhNode::leaf(range.firstTriangle, range.triangles);
-  }
-
-  // A cluster built into `out`, then its triangles gathered in leaf order.
-  void buildCluster(ClusterSlot& slot, std::vector<BvhNode>& out) const {
-    Range range = slot.range;
-    range.split = chooseSplit(refs_.data(), range, options_, LeafRule::BySah);
-    slot.scratchStart = out.size();
-    if (range.split.kind == SplitKind::Leaf) {
-      slot.code = leafOf(range, slot.counts);
-    } else {
-      slot.code = writeNode(range, out, slot.scratchStart, slot.topDepth, slot.counts);
-    }
-    slot.nodeCount = static_cast<std::uint32_t>(out.size() - slot.scratchStart);
-    PackedTriangle* triangles = bvh_.triangles_.data() + range.firstTriangle;
+    std::uint32_t face[BvhNode::kMaxLeafTriangles], vertexOf[3 * BvhNode::kMaxLeafTriangles];
+    Vec3 position[3 * BvhNode::kMaxLeafTriangles];
+    std::uint32_t count = 0;
+    auto add = [&](std::uint32_t id, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+      face[count] = id;
+      const std::uint32_t corner[3] = {a, b, c};
+      for (int k = 0; k < 3; ++k) {
+        vertexOf[3 * count + k] = corner[k];
+        position[3 * count + k] = positions_[corner[k]];
+      }
+      ++count;
+    };
     for (std::uint32_t i = range.begin; i < range.end; ++i) {
       const PrimRef& r = refs_[i];
-      const MeshFace& face = faces_[r.face];
-      const Vec3& a = positions_[face.vertex[0]];
-      *triangles++ = {a, positions_[face.vertex[1]], positions_[face.vertex[2]], r.face};
-      if (face.isQuad()) *triangles++ = {a, positions_[face.vertex[2]], positions_[face.vertex[3]], r.face};
+      const MeshFace& f = faces_[r.face];
+      add(r.face, f.vertex[0], f.vertex[1], f.vertex[2]);
+      if (f.isQuad()) add(r.face, f.vertex[0], f.vertex[2], f.vertex[3]);
     }
+    std::uint8_t local[3 * BvhNode::kMaxLeafTriangles];
+    const std::uint32_t vertexCount = numberLeafVertices(vertexOf, 3 * count, local);
+    const std::size_t at = leaves.size();
+    leaves.resize(at + BvhLeaf::words(count, vertexCount), 0);
+    writeLeaf(leaves.data() + at, count, face, position, vertexCount, local);
+    return BvhNode::leaf(
+        static_cast<std::uint32_t>(std::min<std::size_t>(at - leafStart, BvhNode::kMaxFirst)), count);
+  }
+
+  // A cluster built into `scratch`: its nodes and its leaves.
+  void buildCluster(ClusterSlot& slot, ClusterScratch& scratch) const {
+    Range range = slot.range;
+    range.split = chooseSplit(refs_.data(), range, options_, LeafRule::BySah);
+    slot.scratchStart = scratch.nodes.size();
+    slot.leafStart = scratch.leaves.size();
+    if (range.split.kind == SplitKind::Leaf) {
+      slot.code = leafOf(range, scratch.leaves, slot.leafStart, slot.counts);
+    } else {
+      slot.code = writeNode(range, scratch, slot.scratchStart, slot.leafStart, slot.topDepth, slot.counts);
+    }
+    slot.nodeCount = static_cast<std::uint32_t>(scratch.nodes.size() - slot.scratchStart);
+    slot.leafWords = scratch.leaves.size() - slot.leafStart;
   }
 
   // Every cluster, in batches of consecutive clusters built on every thread, each batch's nodes then
   // appended to the final array in cluster order (a cluster's child indices moved to where its
   // nodes land). The scratch arrays are reused from batch to batch, so little fresh memory is touched
-  // twice.
+  // twice; batches of 128 clusters keep them small.
   void buildClusters(int threads) {
-    constexpr std::size_t kClustersPerChunk = 8, kChunksPerBatch = 64;
-    std::vector<std::vector<BvhNode>> scratch(kChunksPerBatch);
+    constexpr std::size_t kClustersPerChunk = 8, kChunksPerBatch = 16;
+    std::vector<ClusterScratch> scratch(kChunksPerBatch);
     for (std::size_t batch = 0; batch < slots_.size(); batch += kClustersPerChunk * kChunksPerBatch) {
       const std::size_t end = std::min(slots_.size(), batch + kClustersPerChunk * kChunksPerBatch);
       const ChunkPlan plan(end - batch, kClustersPerChunk);
       parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t stop) {
-        std::vector<BvhNode>& out = scratch[chunk];
-        out.clear();
+        ClusterScratch& out = scratch[chunk];
+        out.nodes.clear();
+        out.leaves.clear();
         for (std::size_t c = batch + begin; c < batch + stop; ++c) buildCluster(slots_[c], out);
       });
-      std::size_t total = bvh_.nodes_.size();
+      std::size_t total = bvh_.nodes_.size(), words = bvh_.leaves_.size();
       for (std::size_t c = batch; c < end; ++c) {
         slots_[c].firstNode = static_cast<std::uint32_t>(total);
         total += slots_[c].nodeCount;
+        slots_[c].firstLeafWord = words;
+        words += slots_[c].leafWords;
       }
+      if (words > BvhNode::kMaxFirst) {
+        throw std::length_error("bvh: " + std::to_string(8 * words) + " bytes of leaves, at most " +
+                                std::to_string(8 * std::uint64_t(BvhNode::kMaxFirst)) + " supported");
+      }
+      // The batch's references are no longer read: their pages go back to the system as the leaves
+      // that replace them are written, so that the two are never held whole.
+      releaseReferencesBefore(slots_[end - 1].range.end);
       bvh_.nodes_.resize(total);
+      bvh_.leaves_.resize(words);
       parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t stop) {
-        const std::vector<BvhNode>& out = scratch[chunk];
+        const ClusterScratch& out = scratch[chunk];
         for (std::size_t c = batch + begin; c < batch + stop; ++c) {
           const ClusterSlot& slot = slots_[c];
+          std::memcpy(bvh_.leaves_.data() + slot.firstLeafWord, out.leaves.data() + slot.leafStart,
+                      slot.leafWords * sizeof(std::uint64_t));
           if (slot.nodeCount == 0)
-            continue;  // a leaf cluster: nothing in the scratch (its data() may be null)
+            continue;  // a leaf cluster: no nodes in the scratch (its data() may be null)
           BvhNode* to = bvh_.nodes_.data() + slot.firstNode;
-          std::memcpy(static_cast<void*>(to), out.data() + slot.scratchStart,
+          std::memcpy(static_cast<void*>(to), out.nodes.data() + slot.scratchStart,
                       slot.nodeCount * sizeof(BvhNode));
           for (std::uint32_t n = 0; n < slot.nodeCount; ++n) {
             for (std::uint32_t& code : to[n].child) {
-              if (code != BvhNode::kEmpty && !BvhNode::isLeaf(code)) code += slot.firstNode;
+              if (code == BvhNode::kEmpty) continue;
+              code = BvhNode::isLeaf(code) ? movedLeaf(code, slot.firstLeafWord) : code + slot.firstNode;
             }
           }
         }
       });
     }
   }
-  void build(int threads) {
-    const std::vector<Cluster> clusters = mortonClusters(
-        refs_, std::clamp<std::uint32_t>(options_.maxClusterReferences, 1, kMaxClusterReferences), threads);
+  // Gives the pages wholly below reference `end` back to the system (they read as zeros after).
+  void releaseReferencesBefore(std::uint32_t end) {
+    constexpr std::uintptr_t kPage = 4096;
+    const auto begin = reinterpret_cast<std::uintptr_t>(refs_.data());
+    const std::uintptr_t first = (begin + kPage - 1) & ~(kPage - 1);
+    const std::uintptr_t last = (begin + std::uintptr_t(end) * sizeof(PrimRef)) & ~(kPage - 1);
+    if (last > released_ && last > first) {
+      const std::uintptr_t from = std::max(first, released_);
+      ::madvise(reinterpret_cast<void*>(from), last - from, MADV_DONTNEED);
+      released_ = last;
+    }
+  }
+
+  void build(const std::vector<Cluster>& clusters, int threads) {
     const std::size_t count = clusters.size();
     slots_.resize(count);
     parallelFor(count, threads, 64, [&](std::size_t c) {
       slots_[c].range = rangeOf(refs_.data(), clusters[c].begin, clusters[c].end);
     });
     std::uint64_t triangles = 0;
-    for (ClusterSlot& slot : slots_) {
-      slot.range.firstTriangle =
-          static_cast<std::uint32_t>(std::min<std::uint64_t>(triangles, BvhNode::kMaxFirst));
-      triangles += slot.range.triangles;
-    }
-    if (triangles > BvhNode::kMaxFirst) {
-      throw std::length_error("bvh: " + std::to_string(triangles) + " triangles, at most " +
-                              std::to_string(BvhNode::kMaxFirst) + " supported");
-    }
-    bvh_.triangles_ = vectorOnHugePages<PackedTriangle>(triangles);
-    // Room for every node (at most one a reference, and the root), touched only where written.
+    for (const ClusterSlot& slot : slots_) triangles += slot.range.triangles;
+    // Room for every node (at most one a reference, and the root) and the largest leaves (three
+    // vertices of their own a triangle: BvhLeaf::words of one triangle is at most 14 + 43 bytes),
+    // touched only where written.
     bvh_.nodes_.reserve(refs_.size() + 1);
     adviseHugePages(bvh_.nodes_);
+    bvh_.leaves_.reserve((14 * refs_.size() + 43 * triangles) / 8 + 1 + kLeafTailWords);
+    adviseHugePages(bvh_.leaves_);
     if (count > 1) {
       std::vector<PrimRef> top(count);
       for (std::size_t c = 0; c < count; ++c) {
@@ -254,10 +313,13 @@ struct BvhBuilder {
     // Each cluster into the lane that holds it (with one cluster of nodes, its root is the tree's).
     for (ClusterSlot& slot : slots_) {
       const bool leaf = BvhNode::isLeaf(slot.code);
-      if (count > 1 || leaf)
-        bvh_.nodes_[slot.topNode].child[slot.topLane] = leaf ? slot.code : slot.code + slot.firstNode;
+      if (count > 1 || leaf) {
+        bvh_.nodes_[slot.topNode].child[slot.topLane] =
+            leaf ? movedLeaf(slot.code, slot.firstLeafWord) : slot.code + slot.firstNode;
+      }
       topCounts_.add(slot.counts);
     }
+    bvh_.leaves_.resize(bvh_.leaves_.size() + kLeafTailWords, 0);
   }
 
   std::span<const Vec3> positions_;
@@ -267,6 +329,7 @@ struct BvhBuilder {
   Bvh& bvh_;
   std::vector<ClusterSlot> slots_;
   TreeCounts topCounts_;
+  std::uintptr_t released_ = 0;  // the references' pages below this address are given back
 };
 
 Bvh Bvh::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
@@ -276,7 +339,9 @@ Bvh Bvh::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
   bvh.traversalCost_ = options.traversalCost;
   bvh.intersectionCost_ = options.intersectionCost;
   const int threads = resolveThreadCount(options.threads);
-  GatheredFaces gathered = gatherFaces(positions, faces, threads);
+  MortonFaces gathered = gatherMortonFaces(
+      positions, faces, std::clamp<std::uint32_t>(options.maxClusterReferences, 1, kMaxClusterReferences),
+      threads);
   bvh.slivers_ = std::move(gathered.slivers);
   std::vector<PrimRef>& refs = gathered.refs;
   bvh.stats_.kind = "bvh";
@@ -287,7 +352,7 @@ Bvh Bvh::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
     bvh.stats_.nodes = 1;
   } else {
     BvhBuilder builder(positions, faces, refs, options, bvh);
-    builder.build(threads);
+    builder.build(gathered.clusters, threads);
     for (const ClusterSlot& slot : builder.slots_) box.extend(slot.range.bounds.aabb());
     AccelStats& stats = bvh.stats_;
     stats.nodes = builder.topCounts_.nodes;
@@ -298,11 +363,11 @@ Bvh Bvh::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
   std::vector<PrimRef>().swap(refs);
   bvh.setBounds(box);
   AccelStats& stats = bvh.stats_;
-  stats.triangles = bvh.triangles_.size() + bvh.slivers_.size();
+  stats.triangles = stats.triangleReferences + bvh.slivers_.size();
   stats.meanTrianglesPerLeaf = stats.leaves ? double(stats.triangleReferences) / double(stats.leaves) : 0.0;
   // What the structure holds (the nodes' array keeps untouched room for the worst case).
-  stats.bytes = bvh.nodes_.size() * sizeof(BvhNode) +
-                (bvh.triangles_.size() + bvh.slivers_.size()) * sizeof(PackedTriangle);
+  stats.bytes = bvh.nodes_.size() * sizeof(BvhNode) + bvh.leaves_.size() * sizeof(std::uint64_t) +
+                bvh.slivers_.size() * sizeof(PackedTriangle);
   stats.sahCost = bvh.builtSahCost_ = bvh.sahCost();
   stats.buildSeconds = stopwatch.seconds();
   return bvh;

@@ -283,12 +283,37 @@ void partition(PrimRef* refs, const Range& range, Range& left, Range& right) {
   left.depth = right.depth = range.depth + 1;
 }
 
+bool isSliverFace(std::span<const Vec3> positions, const MeshFace& face) {
+  const Vec3& a = positions[face.vertex[0]];
+  if (isSliverTriangle(a, positions[face.vertex[1]], positions[face.vertex[2]])) return true;
+  return face.isQuad() && isSliverTriangle(a, positions[face.vertex[2]], positions[face.vertex[3]]);
+}
+
+PrimRef faceReference(std::span<const Vec3> positions, const MeshFace& face, std::uint32_t id) {
+  PrimRef r;
+  r.face = id;
+  r.triangles = face.isQuad() ? 2 : 1;
+  for (int a = 0; a < 3; ++a) {
+    // + 0.0f turns -0 into +0, so equal positions compare (and bin) alike.
+    r.lo[a] = r.hi[a] = positions[face.vertex[0]][a] + 0.0f;
+    for (int k = 1; k < face.cornerCount(); ++k) {
+      const float p = positions[face.vertex[k]][a] + 0.0f;
+      r.lo[a] = std::min(r.lo[a], p);
+      r.hi[a] = std::max(r.hi[a], p);
+    }
+  }
+  return r;
+}
+
+void gatherSlivers(std::span<const Vec3> positions, const MeshFace& face, std::uint32_t id,
+                   PackedTriangle* out) {
+  const Vec3& a = positions[face.vertex[0]];
+  out[0] = {a, positions[face.vertex[1]], positions[face.vertex[2]], id};
+  if (face.isQuad()) out[1] = {a, positions[face.vertex[2]], positions[face.vertex[3]], id};
+}
+
 GatheredFaces gatherFaces(std::span<const Vec3> positions, std::span<const MeshFace> faces, int threads) {
-  auto isSliverFace = [&](const MeshFace& face) {
-    const Vec3& a = positions[face.vertex[0]];
-    if (isSliverTriangle(a, positions[face.vertex[1]], positions[face.vertex[2]])) return true;
-    return face.isQuad() && isSliverTriangle(a, positions[face.vertex[2]], positions[face.vertex[3]]);
-  };
+  auto isSliver = [&](const MeshFace& face) { return isSliverFace(positions, face); };
   // A first pass counts each chunk's tree faces and sliver triangles, a second writes them where the
   // counts before them put them, in face order.
   const ChunkPlan plan(faces.size(), 1 << 14);
@@ -296,7 +321,7 @@ GatheredFaces gatherFaces(std::span<const Vec3> positions, std::span<const MeshF
   parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     std::size_t tree = 0, slivers = 0;
     for (std::size_t f = begin; f < end; ++f) {
-      if (isSliverFace(faces[f])) {
+      if (isSliver(faces[f])) {
         slivers += faces[f].isQuad() ? 2 : 1;
       } else {
         ++tree;
@@ -317,25 +342,12 @@ GatheredFaces gatherFaces(std::span<const Vec3> positions, std::span<const MeshF
     for (std::size_t f = begin; f < end; ++f) {
       const MeshFace& face = faces[f];
       const auto id = static_cast<std::uint32_t>(f);
-      if (isSliverFace(face)) {
-        const Vec3& a = positions[face.vertex[0]];
-        out.slivers[sliver++] = {a, positions[face.vertex[1]], positions[face.vertex[2]], id};
-        if (face.isQuad())
-          out.slivers[sliver++] = {a, positions[face.vertex[2]], positions[face.vertex[3]], id};
+      if (isSliver(face)) {
+        gatherSlivers(positions, face, id, out.slivers.data() + sliver);
+        sliver += face.isQuad() ? 2 : 1;
         continue;
       }
-      PrimRef& r = out.refs[tree++];
-      r.face = id;
-      r.triangles = face.isQuad() ? 2 : 1;
-      for (int a = 0; a < 3; ++a) {
-        // + 0.0f turns -0 into +0, so equal positions compare (and bin) alike.
-        r.lo[a] = r.hi[a] = positions[face.vertex[0]][a] + 0.0f;
-        for (int k = 1; k < face.cornerCount(); ++k) {
-          const float p = positions[face.vertex[k]][a] + 0.0f;
-          r.lo[a] = std::min(r.lo[a], p);
-          r.hi[a] = std::max(r.hi[a], p);
-        }
-      }
+      out.refs[tree++] = faceReference(positions, face, id);
     }
   });
   return out;

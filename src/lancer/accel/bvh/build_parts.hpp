@@ -103,4 +103,11 @@ struct GatheredFaces {
 };
 GatheredFaces gatherFaces(std::span<const Vec3> positions, std::span<const MeshFace> faces, int threads);
 
+// What gatherFaces does for one face: whether it has a sliver half (isSliverTriangle; tested for every
+// ray, outside the tree), its reference, its triangles (one, or a quad's two) into `out`.
+bool isSliverFace(std::span<const Vec3> positions, const MeshFace& face);
+PrimRef faceReference(std::span<const Vec3> positions, const MeshFace& face, std::uint32_t id);
+void gatherSlivers(std::span<const Vec3> positions, const MeshFace& face, std::uint32_t id,
+                   PackedTriangle* out);
+
 }  // namespace lancer::bvh

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "lancer/accel/accel_stats.hpp"
+#include "lancer/accel/bvh/leaf.hpp"
 #include "lancer/accel/bvh/node.hpp"
 #include "lancer/accel/tree_queries.hpp"
 #include "lancer/accel/triangle_intersect.hpp"
@@ -80,9 +81,13 @@ class Bvh : public TreeQueries<Bvh> {
   const AccelStats& stats() const { return stats_; }
   const Aabb& bounds() const { return bounds_; }
 
-  // For tests: the nodes (root at 0, every node before its children) and the triangles in leaf order.
+  // For tests: the nodes (root at 0, every node before its children), the leaves' words (bvh/leaf.hpp)
+  // and the leaf a leaf code names.
   std::span<const BvhNode> nodes() const { return nodes_; }
-  std::span<const PackedTriangle> triangles() const { return triangles_; }
+  std::span<const std::uint64_t> leafWords() const { return leaves_; }
+  bvh::BvhLeaf leaf(std::uint32_t code) const {
+    return {leaves_.data() + BvhNode::leafFirst(code), BvhNode::leafCount(code)};
+  }
   std::span<const PackedTriangle> slivers() const { return slivers_; }
 
  private:
@@ -108,9 +113,10 @@ class Bvh : public TreeQueries<Bvh> {
   }
 
   std::vector<BvhNode> nodes_;
-  // In leaf order: a leaf is a run [first, first + count); a quad's two halves are neighbours in one
-  // leaf, (0,1,2) first, so every traversal order tests them as brute force does.
-  std::vector<PackedTriangle> triangles_;
+  // The leaves (bvh/leaf.hpp), each at its code's first word, in the order the build wrote them; a
+  // quad's two halves are neighbours in one leaf, (0,1,2) first, so every traversal order tests them
+  // as brute force does. kLeafTailWords more at the end.
+  std::vector<std::uint64_t> leaves_;
   // Faces with a near-degenerate half, tested for every ray (see isSliverTriangle); in face order.
   std::vector<PackedTriangle> slivers_;
   Aabb bounds_;          // of the tree's triangles, padded

@@ -76,4 +76,67 @@ std::vector<Cluster> mortonClusters(std::vector<PrimRef>& refs, std::uint32_t ma
   return clusters;
 }
 
+MortonFaces gatherMortonFaces(std::span<const Vec3> positions, std::span<const MeshFace> faces,
+                              std::uint32_t maxReferences, int threads) {
+  // A first pass counts each chunk's tree faces and sliver triangles and bounds the centroids; a
+  // second writes the slivers and one key a tree face (its code, its face), in face order; the keys
+  // sorted, the references are made in their order.
+  const ChunkPlan plan(faces.size(), 1 << 14);
+  std::vector<std::size_t> kept(plan.chunks + 1, 0), dropped(plan.chunks + 1, 0);
+  std::vector<Box> boxes(plan.chunks);
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    std::size_t tree = 0, slivers = 0;
+    Box box;
+    for (std::size_t f = begin; f < end; ++f) {
+      const MeshFace& face = faces[f];
+      if (isSliverFace(positions, face)) {
+        slivers += face.isQuad() ? 2 : 1;
+        continue;
+      }
+      ++tree;
+      const PrimRef r = faceReference(positions, face, static_cast<std::uint32_t>(f));
+      const float c[3] = {r.lo[0] + r.hi[0], r.lo[1] + r.hi[1], r.lo[2] + r.hi[2]};
+      box.extend(c, c);
+    }
+    kept[chunk + 1] = tree;
+    dropped[chunk + 1] = slivers;
+    boxes[chunk] = box;
+  });
+  Box all;
+  for (std::size_t c = 0; c < plan.chunks; ++c) {
+    kept[c + 1] += kept[c];
+    dropped[c + 1] += dropped[c];
+    all.extend(boxes[c]);
+  }
+  const MortonGrid grid(all.lo, all.hi);
+  MortonFaces out;
+  out.slivers.resize(dropped.back());
+  std::vector<std::uint64_t> keys = vectorOnHugePages<std::uint64_t>(kept.back());
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    std::size_t tree = kept[chunk], sliver = dropped[chunk];
+    for (std::size_t f = begin; f < end; ++f) {
+      const MeshFace& face = faces[f];
+      const auto id = static_cast<std::uint32_t>(f);
+      if (isSliverFace(positions, face)) {
+        gatherSlivers(positions, face, id, out.slivers.data() + sliver);
+        sliver += face.isQuad() ? 2 : 1;
+        continue;
+      }
+      const PrimRef r = faceReference(positions, face, id);
+      const float centroid[3] = {r.lo[0] + r.hi[0], r.lo[1] + r.hi[1], r.lo[2] + r.hi[2]};
+      keys[tree++] = std::uint64_t(grid.code(centroid)) << 32 | id;
+    }
+  });
+  const auto n = static_cast<std::uint32_t>(keys.size());
+  if (n == 0) return out;
+  sortMortonKeys(keys, threads);
+  out.refs = vectorOnHugePages<PrimRef>(n);
+  parallelFor(n, threads, 1 << 15, [&](std::size_t i) {
+    const auto id = static_cast<std::uint32_t>(keys[i] & 0xFFFFFFFFu);
+    out.refs[i] = faceReference(positions, faces[id], id);
+  });
+  cut(keys, 0, n, std::max<std::uint32_t>(1, maxReferences), out.clusters);
+  return out;
+}
+
 }  // namespace lancer::bvh

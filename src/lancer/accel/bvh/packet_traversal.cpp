@@ -75,9 +75,8 @@ struct alignas(32) PacketStackEntry {
 // for one ray instead of eight lanes for one, as the kd-tree's packets do; alone(child, lane) says
 // whether the lane is done. Returns the lanes that are done.
 template <typename Query, typename Alone>
-std::uint32_t walkPacket(std::span<const BvhNode> nodes, const PackedTriangle* triangles,
-                         const PacketFrame& f, const PacketBoxes& boxes, std::uint32_t active, Query& query,
-                         const Alone& alone) {
+std::uint32_t walkPacket(std::span<const BvhNode> nodes, const std::uint64_t* leaves, const PacketFrame& f,
+                         const PacketBoxes& boxes, std::uint32_t active, Query& query, const Alone& alone) {
   PacketStackEntry stack[BvhNode::kMaxDepth * (BvhNode::kWidth - 1) + 1];
   int top = 0;
   std::uint32_t done = 0, lanes = active, child = 0;
@@ -135,10 +134,10 @@ std::uint32_t walkPacket(std::span<const BvhNode> nodes, const PackedTriangle* t
         continue;
       }
     } else {
-      const PackedTriangle* tri = triangles + BvhNode::leafFirst(child);
+      const BvhLeaf leaf(leaves + BvhNode::leafFirst(child), BvhNode::leafCount(child));
       std::uint32_t testLanes = lanes;
-      for (std::uint32_t i = 0, count = BvhNode::leafCount(child); i < count && testLanes != 0; ++i) {
-        const std::uint32_t finished = query.test(tri[i], testLanes);
+      for (std::uint32_t i = 0, count = leaf.count(); i < count && testLanes != 0; ++i) {
+        const std::uint32_t finished = query.test(leaf.triangle(i), testLanes);
         done |= finished;
         testLanes &= ~finished;
       }
@@ -175,14 +174,14 @@ std::uint32_t Bvh::closestHitsOn(const RayPacket& packet, std::uint32_t active, 
   setUpBoxes(packet, inBox, bounds_, magnitude_, boxes);
   auto alone = [&](std::uint32_t start, int i) {
     ClosestHit<Filter> single{query.best[i], query.upper[i], keeps};
-    walkFrom(start, nodes_, triangles_.data(), BoxRay(packet.ray[i], magnitude_), boxes.laneEps[i],
+    walkFrom(start, nodes_, leaves_.data(), BoxRay(packet.ray[i], magnitude_), boxes.laneEps[i],
              packet.ray[i], packet.tMin[i], packet.tMax[i], single);
     query.best[i] = single.best;
     query.upper[i] = single.upper;
     query.bestT[i] = single.best.t;
     return false;
   };
-  if (inBox != 0) walkPacket(nodes_, triangles_.data(), frame, boxes, inBox, query, alone);
+  if (inBox != 0) walkPacket(nodes_, leaves_.data(), frame, boxes, inBox, query, alone);
   return query.answer(active, hits);
 #else
   return closestHitsOneByOne(packet, active, keeps, hits);
@@ -205,10 +204,10 @@ std::uint32_t Bvh::anyHitsOn(const RayPacket& packet, std::uint32_t active, cons
   query.start(inBox);
   auto alone = [&](std::uint32_t start, int i) {
     AnyHit<Filter> single{keeps};
-    return walkFrom(start, nodes_, triangles_.data(), BoxRay(packet.ray[i], magnitude_), boxes.laneEps[i],
+    return walkFrom(start, nodes_, leaves_.data(), BoxRay(packet.ray[i], magnitude_), boxes.laneEps[i],
                     packet.ray[i], packet.tMin[i], packet.tMax[i], single);
   };
-  return blocked | walkPacket(nodes_, triangles_.data(), frame, boxes, inBox, query, alone);
+  return blocked | walkPacket(nodes_, leaves_.data(), frame, boxes, inBox, query, alone);
 #else
   return anyHitsOneByOne(packet, active, keeps);
 #endif

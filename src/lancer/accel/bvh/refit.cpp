@@ -1,11 +1,12 @@
 // Refit: the tree of one time step kept for the next, whose vertices moved (a deformed shape, same
-// faces): the leaves' triangles are gathered again from the new positions and every box recomputed
+// faces): the leaves' vertices are gathered again from the new positions and every box recomputed
 // bottom up (children lie after their parents in the depth-first layout, so one backward pass
 // suffices). Answers stay exact as long as no triangle turned into a sliver; the SAH cost of the
 // kept tree says when a rebuild pays.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "lancer/accel/bvh/bvh.hpp"
@@ -49,6 +50,49 @@ bool regather(PackedTriangle* triangles, std::size_t count, std::span<const Vec3
   return true;
 }
 
+// Rewrites the vertices of the leaf at `words` (`count` triangles; a quad's halves neighbours, (0,1,2)
+// first: a triangle of the same face as the one before it is the second half) from `positions`,
+// giving its box; false when a face is out of range, its corners no longer match the leaf's shared
+// vertices (other faces), or a triangle is now a sliver.
+bool regatherLeaf(std::uint64_t* words, std::uint32_t count, std::span<const Vec3> positions,
+                  std::span<const MeshFace> faces, Aabb& box) {
+  const bvh::BvhLeaf leaf(words, count);
+  const std::uint32_t vertexCount = leaf.vertexCount();
+  std::uint32_t global[bvh::kMaxLeafVertices];
+  std::fill(global, global + vertexCount, 0xFFFFFFFFu);
+  std::uint32_t previous = 0xFFFFFFFFu;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const std::uint32_t id = leaf.face(i);
+    const bool half = id == previous;
+    previous = id;
+    if (id >= faces.size() || !validFace(faces[id], positions.size()) || (half && !faces[id].isQuad()))
+      return false;
+    const MeshFace& face = faces[id];
+    const std::uint32_t corner[3] = {face.vertex[0], face.vertex[1 + half], face.vertex[2 + half]};
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t v = leaf.corner(i, c);
+      if (v >= vertexCount || (global[v] != 0xFFFFFFFFu && global[v] != corner[c])) return false;
+      global[v] = corner[c];
+    }
+  }
+  // Rows x, y, z of the vertices, as the build wrote them (bvh/leaf.hpp).
+  auto* rows = reinterpret_cast<unsigned char*>(words) + bvh::BvhLeaf::coordinateOffset(count);
+  for (std::uint32_t v = 0; v < vertexCount; ++v) {
+    if (global[v] == 0xFFFFFFFFu) return false;
+    const Vec3& p = positions[global[v]];
+    for (int a = 0; a < 3; ++a) {
+      const float coordinate = p[a];
+      std::memcpy(rows + 4 * (a * std::size_t(vertexCount) + v), &coordinate, 4);
+    }
+    box.extend(p);
+  }
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const PackedTriangle tri = leaf.triangle(i);
+    if (isSliverTriangle(tri.v0, tri.v1, tri.v2)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool Bvh::refit(std::span<const Vec3> positions, std::span<const MeshFace> faces, int threads) {
@@ -61,8 +105,8 @@ bool Bvh::refit(std::span<const Vec3> positions, std::span<const MeshFace> faces
       const std::uint32_t child = node.child[k];
       if (child == BvhNode::kEmpty || !BvhNode::isLeaf(child)) continue;
       Aabb box;
-      if (!regather(triangles_.data() + BvhNode::leafFirst(child), BvhNode::leafCount(child), positions,
-                    faces, true, box))
+      if (!regatherLeaf(leaves_.data() + BvhNode::leafFirst(child), BvhNode::leafCount(child), positions,
+                        faces, box))
         ok = false;
       for (int a = 0; a < 3; ++a) {
         node.lower[a][k] = box.lower[a] + 0.0f;

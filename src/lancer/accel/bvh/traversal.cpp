@@ -17,12 +17,12 @@ using namespace accel;
 
 // The whole tree for one ray: its span in the scene box sets the slack of the pruning.
 template <typename Query>
-bool walk(std::span<const BvhNode> nodes, const PackedTriangle* triangles, const Aabb& bounds,
-          float magnitude, const Ray& ray, float tMin, float tMax, Query& query) {
+bool walk(std::span<const BvhNode> nodes, const std::uint64_t* leaves, const Aabb& bounds, float magnitude,
+          const Ray& ray, float tMin, float tMax, Query& query) {
   float tEnter, tExit;
   if (!intersectAabb(bounds, ray, tMin, tMax, tEnter, tExit)) return false;
   const float eps = kSlack * std::max(std::abs(tEnter), std::abs(tExit));
-  return walkFrom(0, nodes, triangles, BoxRay(ray, magnitude), eps, ray, tMin, tMax, query);
+  return walkFrom(0, nodes, leaves, BoxRay(ray, magnitude), eps, ray, tMin, tMax, query);
 }
 
 }  // namespace
@@ -31,7 +31,7 @@ template <typename Isa, typename Filter>
 bool Bvh::closestHitOn(const Ray& ray, float tMin, float tMax, const Filter& keeps, Hit& hit) const {
   ClosestHit<Filter> query{Hit{tMax, Hit{}.face}, tMax, keeps};
   for (const PackedTriangle& tri : slivers_) query.test(tri, ray, tMin, tMax);
-  walk(nodes_, triangles_.data(), bounds_, magnitude_, ray, tMin, tMax, query);
+  walk(nodes_, leaves_.data(), bounds_, magnitude_, ray, tMin, tMax, query);
   if (!query.best.valid()) return false;
   hit = query.best;
   return true;
@@ -43,7 +43,7 @@ bool Bvh::anyHitOn(const Ray& ray, float tMin, float tMax, const Filter& keeps) 
   for (const PackedTriangle& tri : slivers_) {
     if (query.test(tri, ray, tMin, tMax)) return true;
   }
-  return walk(nodes_, triangles_.data(), bounds_, magnitude_, ray, tMin, tMax, query);
+  return walk(nodes_, leaves_.data(), bounds_, magnitude_, ray, tMin, tMax, query);
 }
 
 template bool Bvh::closestHitOn<LANCER_ISA_TAG>(const Ray&, float, float, const KeepEveryHit&, Hit&) const;

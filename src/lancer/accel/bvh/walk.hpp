@@ -55,7 +55,7 @@ std::uint32_t pushChildren(const BvhNode& node, std::uint32_t mask, const float*
 // to stop (any hit), Query::bound is the current pruning distance (the closest hit so far, or tMax
 // for any-hit); `eps` the slack of the pruning (kSlack times the ray's span in the scene box).
 template <typename Query>
-bool walkFrom(std::uint32_t start, std::span<const BvhNode> nodes, const PackedTriangle* triangles,
+bool walkFrom(std::uint32_t start, std::span<const BvhNode> nodes, const std::uint64_t* leaves,
               const BoxRay& boxRay, float eps, const Ray& ray, float tMin, float tMax, Query& query) {
 #ifdef LANCER_BVH_AVX2
   const BoxRay8 boxRay8(boxRay);
@@ -84,8 +84,8 @@ bool walkFrom(std::uint32_t start, std::span<const BvhNode> nodes, const PackedT
         }
         continue;
       }
-    } else if (testLeaf(triangles + BvhNode::leafFirst(child), BvhNode::leafCount(child), ray, tMin, tMax,
-                        query)) {
+    } else if (testLeaf(BvhLeaf(leaves + BvhNode::leafFirst(child), BvhNode::leafCount(child)), ray, tMin,
+                        tMax, query)) {
       return true;
     }
     // The next child on the stack still entered before the bound.

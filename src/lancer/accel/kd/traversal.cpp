@@ -146,9 +146,9 @@ bool walk(std::span<const KdNode> layout, const Aabb& bounds, float magnitude, c
         for (std::uint32_t passed = sameSignTriangles(base, pending, n, ray, c); passed != 0;
              passed &= passed - 1) {
           const int lane = std::countr_zero(passed);
-          if (query.finish(*reinterpret_cast<const PackedTriangle*>(base + pending[lane]), ray, tMin, tMax,
-                           c.ax[lane], c.ay[lane], c.az[lane], c.bx[lane], c.by[lane], c.bz[lane], c.cx[lane],
-                           c.cy[lane], c.cz[lane]))
+          if (query.finish(reinterpret_cast<const PackedTriangle*>(base + pending[lane])->face, ray, tMin,
+                           tMax, c.ax[lane], c.ay[lane], c.az[lane], c.bx[lane], c.by[lane], c.bz[lane],
+                           c.cx[lane], c.cy[lane], c.cz[lane]))
             return true;
         }
       }
