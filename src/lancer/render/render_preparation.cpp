@@ -1,6 +1,7 @@
 #include "lancer/render/render_preparation.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <type_traits>
 
 #include <fmt/format.h>
@@ -88,28 +89,49 @@ PreparedRender prepareRender(RenderRequest request) {
   }
   if (request.withMeshes) request.withMeshes(description, meshes);
   attachAnnotationVolumes(description, volumes);
-  addVolumeViews(description, meshes, volumes);
-  // A flat scene nobody chose a view for: straight on; a look then lights it from that view.
-  const FlatSceneChoices choices{request.overrides.look.has_value(), request.overrides.shading.has_value()};
-  if (applyFlatSceneDefaults(description, meshes, choices) && request.overrides.look)
-    applyLookOverride(description, request.overrides);
+  // Field lines' tubes sized in pixels are sized for the camera that frames the model beside its
+  // legends, which the built scene's legends decide (the tubes' radius changes no legend): when the
+  // legends take a side, the scene is built again from the meshes as read, that side known.
+  std::optional<std::pair<SceneDescription, std::vector<Mesh>>> unbuilt;
+  if (std::any_of(description.meshes.begin(), description.meshes.end(), [](const MeshInstance& mesh) {
+        return mesh.volume.streamlines && mesh.volume.streamlines->radiusPixels;
+      }))
+    unbuilt.emplace(description, meshes);
   Scene scene;
   std::vector<Mesh> kept;
-  if (request.keepMeshes) {
-    scene = buildSceneAt(description, meshes, request.threads, &stages);
-    kept = std::move(meshes);
-  } else {
-    scene = buildScene(description, std::move(meshes), request.threads, &stages);
+  const auto build = [&] {
+    addVolumeViews(description, meshes, volumes);
+    // A flat scene nobody chose a view for: straight on; a look then lights it from that view.
+    const FlatSceneChoices choices{request.overrides.look.has_value(), request.overrides.shading.has_value()};
+    if (applyFlatSceneDefaults(description, meshes, choices) && request.overrides.look)
+      applyLookOverride(description, request.overrides);
+    if (request.keepMeshes) {
+      scene = buildSceneAt(description, meshes, request.threads, &stages);
+      kept = std::move(meshes);
+    } else {
+      scene = buildScene(description, std::move(meshes), request.threads, &stages);
+    }
+    frameBesideLegends(description, scene);
+  };
+  build();
+  const CameraSettings& framed = description.camera;
+  if (unbuilt && (framed.legendShareRight != 0 || framed.legendShareBottom != 0)) {
+    const double right = framed.legendShareRight, bottom = framed.legendShareBottom;
+    description = std::move(unbuilt->first);
+    meshes = std::move(unbuilt->second);
+    unbuilt.reset();
+    description.camera.legendShareRight = right;
+    description.camera.legendShareBottom = bottom;
+    build();
   }
   const double loadSeconds = secondsBefore + load.seconds();
 
-  const Stopwatch build;
+  const Stopwatch accelBuild;
   Accelerator accelerator = request.keepMeshes ? Accelerator::build({}, {}, request.accel)
                                                : buildAccelerator(scene, request.accel, request.threads);
-  const double buildSeconds = build.seconds();
+  const double buildSeconds = accelBuild.seconds();
   stages.add("accel build", buildSeconds);
 
-  frameBesideLegends(description, scene);
   Camera camera = makeCamera(description.camera, scene, description.render);
   return PreparedRender{std::move(description), std::move(scene), std::move(accelerator), camera,
                         std::move(stages),      loadSeconds,      buildSeconds,           std::move(kept)};
