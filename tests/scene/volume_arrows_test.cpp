@@ -174,6 +174,16 @@ TEST(VolumeArrows, DrawnOnceFromASceneWithItsSkinAndSlices) {
   EXPECT_EQ(faces(arrows), faces("") + arrowFaces);
   // Two slices carry the mesh's arrows: still one set.
   EXPECT_EQ(faces(arrows + slices), faces(slices) + arrowFaces);
+  // Solid inside the see-through skin (they took the ghost's material, washed out to grey).
+  for (const std::string skin : {"ghost", "edges"}) {
+    const Scene scene =
+        buildScene(parseScene("[[mesh]]\nfile = \"cube_hex.msh\"\nskin = \"" + skin + "\"\n" + arrows,
+                              test::dataFile("volume/scene.toml")));
+    const std::vector<std::uint32_t>& material = scene.appearance.faceMaterial;
+    ASSERT_GE(material.size(), arrowFaces);
+    for (std::size_t f = material.size() - arrowFaces; f < material.size(); ++f)
+      ASSERT_EQ(scene.appearance.materials[material[f]].transparency, 0.0f) << skin << " face " << f;
+  }
 }
 
 TEST(AnnotationKinds, EachRowReadsItsOwnKindUnderAKeyOfTheMeshTable) {
