@@ -152,9 +152,10 @@ void applyResultOverrides(SceneDescription& description, const SceneOverrides& o
     }
   }
   // With --gmsh-view the view may colour the mesh: the map is applied again once it has.
-  // Isosurfaces and field lines take the map when no mesh is coloured (render_overrides.hpp).
+  // Isosurfaces, field lines and arrows take the map when no mesh is coloured (render_overrides.hpp).
   applyColorMap(description, overrides.colorMap,
-                !overrides.gmshView && overrides.isosurfaces.empty() && overrides.streamlines.empty());
+                !overrides.gmshView && overrides.isosurfaces.empty() && overrides.streamlines.empty() &&
+                    overrides.arrows.empty());
   if (!overrides.undeformed.empty()) {
     const UndeformedStyle style = overrides.undeformed == "edges"   ? UndeformedStyle::Edges
                                   : overrides.undeformed == "ghost" ? UndeformedStyle::Ghost
@@ -212,8 +213,9 @@ void applyAnnotationOptions(const SceneOverrides& overrides, RenderOverrides& ap
   for (const std::string& clip : overrides.clips)
     applied.clips.push_back(clipFromText(clip, SourceLocation{"--clip"}));
   applyVolumeOptions(overrides, applied);
-  // Isosurfaces and field lines take the map when no mesh is coloured (render_overrides.cpp).
-  if (!overrides.colorMap.empty() && (!overrides.isosurfaces.empty() || !overrides.streamlines.empty()))
+  // Isosurfaces, field lines and arrows take the map when no mesh is coloured (render_overrides.cpp).
+  if (!overrides.colorMap.empty() &&
+      (!overrides.isosurfaces.empty() || !overrides.streamlines.empty() || !overrides.arrows.empty()))
     applied.colorMap = colorMapFromText(overrides.colorMap, SourceLocation{"--color-map"});
 }
 

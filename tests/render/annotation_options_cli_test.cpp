@@ -66,6 +66,17 @@ TEST(AnnotationOptionsCli, ArrowsStandOnTheModel) {
   EXPECT_GT(test::differingPixels(arrows, plain), 500);
 }
 
+TEST(AnnotationOptionsCli, ArrowsAloneTakeTheLegendAndTheMap) {
+  // The mesh is not coloured: --legend and --color-map go to its arrows (they were refused).
+  const std::string vectors = test::dataFile("fields/node_vector_v41_bin.msh");
+  const test::ScratchFolder folder;
+  const Image legend =
+      rendered(folder, quoted(vectors) + kSize + " --arrows temperature --legend right --color-map plasma",
+               "legend.png");
+  const Image plain = rendered(folder, quoted(vectors) + kSize + " --arrows temperature", "plain.png");
+  EXPECT_GT(test::differingPixels(legend, plain), 500);
+}
+
 TEST(AnnotationOptionsCli, LogIsTheSceneKey) {
   const std::string square = test::dataFile("fields/node_xy_v41_bin.msh");
   const test::ScratchFolder folder;

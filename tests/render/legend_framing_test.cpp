@@ -10,6 +10,7 @@
 #include "lancer/render/render_preparation.hpp"
 #include "lancer/scene/quick_look.hpp"
 #include "lancer/scene/results/arrows.hpp"
+#include "lancer/scene/scene_loader.hpp"
 #include "support/files.hpp"
 
 namespace lancer {
@@ -23,10 +24,12 @@ PreparedRender quickLook(const std::string& file, const std::string& field, Rend
   const Mesh mesh = readMsh(path);
   RenderRequest request;
   request.description = quickLookScene(path, mesh);
-  ColorBy colorBy;
-  colorBy.field = field;
-  colorBy.component = component;
-  request.description.meshes[0].colorBy = colorBy;
+  if (!field.empty()) {  // else not coloured
+    ColorBy colorBy;
+    colorBy.field = field;
+    colorBy.component = component;
+    request.description.meshes[0].colorBy = colorBy;
+  }
   request.quickLookMesh = mesh;
   request.overrides = std::move(overrides);
   return prepareRender(std::move(request));
@@ -126,6 +129,58 @@ TEST(LegendFraming, ArrowsOfTheColouringFieldShareItsLegend) {
                                          FieldComponent{FieldComponent::Kind::VonMises, 0});
   ASSERT_EQ(other.scene.fieldColors->legends.size(), 2u);
   EXPECT_EQ(other.scene.fieldColors->legends[1].title, "|displacement|");
+}
+
+// A scene of the hexahedral cube (tests/data/volume/cube_hex.msh, the vector field u at its nodes)
+// with `keys` in its [[mesh]], through the same preparation.
+PreparedRender cubeScene(const std::string& keys, RenderOverrides overrides) {
+  RenderRequest request;
+  request.description =
+      parseScene("[[mesh]]\nfile = \"cube_hex.msh\"\n" + keys, test::dataFile("volume/scene.toml"));
+  request.overrides = std::move(overrides);
+  return prepareRender(std::move(request));
+}
+
+TEST(LegendFraming, ArrowsAloneCarryTheLegend) {
+  RenderOverrides overrides;
+  overrides.width = 64;
+  overrides.height = 48;
+  overrides.legend = LegendPlacement::Right;
+  overrides.annotations.push_back(arrowsOfField("displacement", SourceLocation{"--arrows"}));
+  // A mesh that is not coloured, its arrows coloured by magnitude: their legend, where --legend says.
+  const PreparedRender alone = quickLook("results/cantilever.msh", "", overrides);
+  ASSERT_TRUE(alone.scene.fieldColors.has_value());
+  ASSERT_EQ(alone.scene.fieldColors->legends.size(), 1u);
+  EXPECT_EQ(alone.scene.fieldColors->legends[0].title, "|displacement|");
+  EXPECT_EQ(alone.scene.fieldColors->legendPlacement, LegendPlacement::Right);
+  // --range and --color-map reach them as they reach isosurfaces and field lines.
+  overrides.range = std::pair{0.0, 2.0};
+  overrides.colorMap = *ColorMap::named("coolwarm");
+  const PreparedRender ranged = quickLook("results/cantilever.msh", "", overrides);
+  ASSERT_EQ(ranged.scene.fieldColors->legends.size(), 1u);
+  EXPECT_EQ(ranged.scene.fieldColors->legends[0].high, 2.0);
+  EXPECT_EQ(ranged.scene.fieldColors->legends[0].map, *ColorMap::named("coolwarm"));
+
+  // Arrows through the volume, the skin a ghost around them: uncoloured or coloured by their field,
+  // one legend, the arrows' (the ghost paints nothing).
+  RenderOverrides legend;
+  legend.width = 64;
+  legend.height = 48;
+  legend.legend = LegendPlacement::Right;
+  const std::string arrows = "arrows = { field = \"u\", grid = [2, 2, 2] }\n";
+  for (const std::string& colours : {std::string(), std::string("color_by = { field = \"u\" }\n")}) {
+    const PreparedRender grid = cubeScene(colours + arrows, legend);
+    ASSERT_TRUE(grid.scene.fieldColors.has_value()) << colours;
+    ASSERT_EQ(grid.scene.fieldColors->legends.size(), 1u) << colours;
+    EXPECT_EQ(grid.scene.fieldColors->legends[0].title, "|u|") << colours;
+    EXPECT_EQ(grid.scene.fieldColors->legendPlacement, LegendPlacement::Right) << colours;
+  }
+  // The scene's own legend, without --legend.
+  legend.legend.reset();
+  const PreparedRender own =
+      cubeScene("color_by = { field = \"u\", legend = \"bottom\" }\n" + arrows, legend);
+  ASSERT_EQ(own.scene.fieldColors->legends.size(), 1u);
+  EXPECT_EQ(own.scene.fieldColors->legendPlacement, LegendPlacement::Bottom);
 }
 
 }  // namespace

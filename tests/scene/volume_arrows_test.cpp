@@ -4,6 +4,7 @@
 // the annotation kinds' table: each row reads its own kind.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <variant>
@@ -44,7 +45,9 @@ ArrowSpec gridArrows(const std::string& field, std::array<int, 3> grid) {
 TEST(VolumeArrows, OnTheGridOfTheCubeAlongTheUniformField) {
   // cube_hex.msh: the unit cube of 6 x 6 x 6 hexahedra, u = (1, 2, 3) at every node.
   const MeshWithVolume read = readMshWithVolume(test::dataFile("volume/cube_hex.msh"));
-  const Mesh arrows = volumeArrowMesh(gridArrows("u", {2, 2, 4}), *read.volume, {}, "cube_hex.msh");
+  ArrowSpec spec = gridArrows("u", {2, 2, 4});
+  spec.fixedLength = false;  // lengths that follow the magnitude
+  const Mesh arrows = volumeArrowMesh(spec, *read.volume, {}, "cube_hex.msh");
   ASSERT_EQ(arrows.positions.size(), 16 * kArrowVertices);
   EXPECT_EQ(arrows.faces.size(), 16u * 6 * kArrowSides);
   const Vec3d u{1, 2, 3};
@@ -65,6 +68,45 @@ TEST(VolumeArrows, OnTheGridOfTheCubeAlongTheUniformField) {
   const auto [low, high] = volumeMagnitudeRange(*read.volume, "u", std::nullopt);
   EXPECT_NEAR(low, std::sqrt(14.0), 1e-5);
   EXPECT_NEAR(high, std::sqrt(14.0), 1e-5);
+}
+
+TEST(VolumeArrows, AFieldConcentratedNearItsSourcesReadsByDefault) {
+  // The capacitor's field: strongest at the plates' edges, weak through most of the air box. Arrows
+  // following the magnitude leave most of them a few hundredths of a cell long (below a pixel): by
+  // default a grid's arrows are all 0.8 of the cell's least side, the magnitude in their colour.
+  const MeshWithVolume read = readMshWithVolume(test::dataFile("volume/capacitor.msh"));
+  const VolumeMesh& volume = *read.volume;
+  Aabbd box;
+  for (const Vec3& node : volume.nodes) box.extend(toDouble(node));
+  const std::array<int, 3> grid{6, 6, 5};
+  const Vec3d extent = box.extent();
+  const double cell = std::min({extent.x / grid[0], extent.y / grid[1], extent.z / grid[2]});
+  const auto lengths = [&](const ArrowSpec& spec) {
+    std::vector<double> drawn;
+    for (const DrawnArrow& arrow : drawnArrows(volumeArrowMesh(spec, volume, {}, "capacitor.msh")))
+      drawn.push_back(length(arrow.tip - arrow.base) / cell);
+    std::sort(drawn.begin(), drawn.end());
+    return drawn;
+  };
+  const std::vector<double> fixed = lengths(gridArrows("e", grid));
+  ASSERT_GT(fixed.size(), 100u);
+  EXPECT_NEAR(fixed.front(), 0.8, 1e-4);
+  EXPECT_NEAR(fixed.back(), 0.8, 1e-4);
+  ArrowSpec following = gridArrows("e", grid);
+  following.fixedLength = false;
+  const std::vector<double> proportional = lengths(following);
+  EXPECT_NEAR(proportional.back(), 0.9, 1e-4);
+  EXPECT_LT(proportional[proportional.size() / 2], 0.1);  // the median: the reason for the default
+  // A scale given asks for lengths that follow the magnitude.
+  following.fixedLength.reset();
+  following.scale = 0.01;
+  const std::vector<double> scaled = lengths(following);
+  ASSERT_EQ(scaled.size(), proportional.size());
+  EXPECT_NEAR(scaled.front() / scaled.back(), proportional.front() / proportional.back(), 1e-4);
+  // On a surface the lengths follow the magnitude unless asked otherwise.
+  ArrowSpec surface;
+  surface.field = "e";
+  EXPECT_FALSE(surface.drawsFixedLength());
 }
 
 // One tetrahedron, (0,0,0), (1,0,0), (0,1,0), (0,0,1), with the node field v(p) = (1 + p.x, p.y, 2 p.z)
@@ -110,8 +152,9 @@ TEST(VolumeArrows, PointsOutsideTheMeshDrawNone) {
   ASSERT_EQ(fixed.size(), 1u);
   EXPECT_NEAR(length(fixed[0].tip - fixed[0].base), 0.1 * length(v), 1e-6);
   // Element data: the cell's vector.
-  const std::vector<DrawnArrow> element =
-      drawnArrows(volumeArrowMesh(gridArrows("w", {2, 2, 2}), volume, {}, "tet.msh"));
+  ArrowSpec elementArrows = gridArrows("w", {2, 2, 2});
+  elementArrows.fixedLength = false;  // the longest (the only one) 0.9 cells long
+  const std::vector<DrawnArrow> element = drawnArrows(volumeArrowMesh(elementArrows, volume, {}, "tet.msh"));
   ASSERT_EQ(element.size(), 1u);
   const Vec3d up = element[0].tip - element[0].base;
   EXPECT_NEAR(up.x, 0, 1e-9);
@@ -131,6 +174,16 @@ TEST(VolumeArrows, DrawnOnceFromASceneWithItsSkinAndSlices) {
   EXPECT_EQ(faces(arrows), faces("") + arrowFaces);
   // Two slices carry the mesh's arrows: still one set.
   EXPECT_EQ(faces(arrows + slices), faces(slices) + arrowFaces);
+  // Solid inside the see-through skin (they took the ghost's material, washed out to grey).
+  for (const std::string skin : {"ghost", "edges"}) {
+    const Scene scene =
+        buildScene(parseScene("[[mesh]]\nfile = \"cube_hex.msh\"\nskin = \"" + skin + "\"\n" + arrows,
+                              test::dataFile("volume/scene.toml")));
+    const std::vector<std::uint32_t>& material = scene.appearance.faceMaterial;
+    ASSERT_GE(material.size(), arrowFaces);
+    for (std::size_t f = material.size() - arrowFaces; f < material.size(); ++f)
+      ASSERT_EQ(scene.appearance.materials[material[f]].transparency, 0.0f) << skin << " face " << f;
+  }
 }
 
 TEST(AnnotationKinds, EachRowReadsItsOwnKindUnderAKeyOfTheMeshTable) {

@@ -1,6 +1,7 @@
 #include "lancer/render/render_preparation.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <type_traits>
 
 #include <fmt/format.h>
@@ -95,16 +96,19 @@ PreparedRender prepareRender(RenderRequest request) {
   }
   if (request.withMeshes) request.withMeshes(description, meshes);
   attachAnnotationVolumes(description, volumes);
-  addVolumeViews(description, meshes, volumes);
-  // A flat scene nobody chose a view for: straight on; a look then lights it from that view.
-  const FlatSceneChoices choices{request.overrides.look.has_value(), request.overrides.shading.has_value()};
-  if (applyFlatSceneDefaults(description, meshes, choices) && request.overrides.look)
-    applyLookOverride(description, request.overrides);
+  // Field lines' tubes sized in pixels are sized for the camera that frames the model beside its
+  // legends, which the built scene's legends decide (the tubes' radius changes no legend): when the
+  // legends take a side, the scene is built again from the meshes as read, that side known.
+  std::optional<std::pair<SceneDescription, std::vector<Mesh>>> unbuilt;
+  if (std::any_of(description.meshes.begin(), description.meshes.end(), [](const MeshInstance& mesh) {
+        return mesh.volume.streamlines && mesh.volume.streamlines->radiusPixels;
+      }))
+    unbuilt.emplace(description, meshes);
   Scene scene;
   std::vector<Mesh> kept;
   // A scene of one mesh has its accelerator built alongside its orientation and normals
-  // (scene/geometry_overlap.hpp); declared after `scene`, whose arrays it reads, so that it is
-  // waited for before they go.
+  // (scene/geometry_overlap.hpp) when asked; declared after `scene`, whose arrays it reads, so that
+  // it is waited for before they go. Not with a second build below (its first scene is dropped).
   std::optional<Accelerator> early;
   double earlySeconds = 0;
   GeometryOverlap overlap([&](std::span<const Vec3> positions, std::span<const MeshFace> faces) {
@@ -114,27 +118,45 @@ PreparedRender prepareRender(RenderRequest request) {
     early = Accelerator::build(positions, faces, request.accel, options);
     earlySeconds = build.seconds();
   });
-  if (request.keepMeshes) {
-    scene = buildSceneAt(description, meshes, request.threads, &stages);
-    kept = std::move(meshes);
-  } else {
-    scene = buildScene(description, std::move(meshes), request.threads, &stages,
-                       request.buildAlongside ? &overlap : nullptr);
+  const auto build = [&](bool alongside) {
+    addVolumeViews(description, meshes, volumes);
+    // A flat scene nobody chose a view for: straight on; a look then lights it from that view.
+    const FlatSceneChoices choices{request.overrides.look.has_value(), request.overrides.shading.has_value()};
+    if (applyFlatSceneDefaults(description, meshes, choices) && request.overrides.look)
+      applyLookOverride(description, request.overrides);
+    if (request.keepMeshes) {
+      scene = buildSceneAt(description, meshes, request.threads, &stages);
+      kept = std::move(meshes);
+    } else {
+      scene = buildScene(description, std::move(meshes), request.threads, &stages,
+                         alongside ? &overlap : nullptr);
+    }
+    frameBesideLegends(description, scene);
+  };
+  build(request.buildAlongside && !unbuilt);
+  const CameraSettings& framed = description.camera;
+  if (unbuilt && (framed.legendShareRight != 0 || framed.legendShareBottom != 0)) {
+    const double right = framed.legendShareRight, bottom = framed.legendShareBottom;
+    description = std::move(unbuilt->first);
+    meshes = std::move(unbuilt->second);
+    unbuilt.reset();
+    description.camera.legendShareRight = right;
+    description.camera.legendShareBottom = bottom;
+    build(false);
   }
   const double loadSeconds = secondsBefore + load.seconds();
 
   // buildSeconds: what the build adds to the load, the time to the first ray after the scene is
   // ready; the "accel build" stage: the build's own time (alongside the load when it was early).
-  const Stopwatch build;
+  const Stopwatch accelBuild;
   const bool builtEarly = overlap.finish();
   Accelerator accelerator = request.keepMeshes ? Accelerator::build({}, {}, request.accel)
                             : builtEarly       ? std::move(*early)
                                                : buildAccelerator(scene, request.accel, request.threads);
   early.reset();
-  const double buildSeconds = build.seconds();
+  const double buildSeconds = accelBuild.seconds();
   stages.add("accel build", builtEarly ? earlySeconds : buildSeconds);
 
-  frameBesideLegends(description, scene);
   Camera camera = makeCamera(description.camera, scene, description.render);
   return PreparedRender{std::move(description), std::move(scene), std::move(accelerator), camera,
                         std::move(stages),      loadSeconds,      buildSeconds,           std::move(kept)};

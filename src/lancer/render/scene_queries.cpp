@@ -1,6 +1,7 @@
 #include "lancer/render/scene_queries.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "lancer/render/optics.hpp"
@@ -49,6 +50,7 @@ SceneQueries::SceneQueries(const Scene& scene, const Accelerator& accelerator)
                        transmissionTint(material) == Vec3{1, 1, 1};
     clear_.push_back(clear ? 1 : 0);
   }
+  if (!scene.geometry.bounds.empty()) onPlaneTolerance_ = 1e-6f * length(scene.geometry.bounds.extent());
 }
 
 MediumCrossing SceneQueries::crossingAt(std::uint32_t face, bool entering) const {
@@ -73,6 +75,11 @@ bool SceneQueries::shadowQuery(const Vec3& from, const Vec3& lightPosition, Ray&
   if (kept.empty() || (!anyTransparent_ && kept.enter >= 1.0f)) return false;
   tMin = kept.enter;
   tMax = std::min(kept.exit, 1.0f);
+  // A way out through a plane stops short of it by the on-plane tolerance: a face lying in the plane
+  // (a model's flat side where the cut passes) would block the light or not by rounding, speckling
+  // the shadows it casts from the part cut away.
+  if (kept.exit <= 1.0f && kept.exitRate > 0.0f)
+    tMax = std::max(tMin, tMax - onPlaneTolerance_ / kept.exitRate);
   return true;
 }
 
@@ -189,6 +196,31 @@ const ClipPlane* SceneQueries::capPlane(const Ray& ray, const ClipInterval& kept
   return &scene_.clipping.planes[static_cast<std::size_t>(kept.enterPlane)];
 }
 
+bool SceneQueries::liesOn(std::uint32_t face, const ClipPlane& plane) const {
+  const MeshFace& corners = scene_.geometry.faces[face];
+  for (const std::uint32_t v : corners.vertex) {
+    if (v == kNoVertex) break;
+    if (std::abs(dot(scene_.geometry.positions[v] - plane.point, plane.normal)) > onPlaneTolerance_)
+      return false;
+  }
+  return true;
+}
+
+bool SceneQueries::nearestHitOffPlane(const Ray& ray, const ClipInterval& kept, const ClipPlane& plane,
+                                      Hit& hit) const {
+  struct Context {
+    const SceneQueries* queries;
+    const ClipPlane* plane;
+  } context{this, &plane};
+  const HitFilter offPlane{&context, [](const void* c, const Ray& r, std::uint32_t face, float t) {
+                             const Context& own = *static_cast<const Context*>(c);
+                             if (own.queries->anyMeshClips_ && !own.queries->meshClipFilter_(r, face, t))
+                               return false;
+                             return !own.queries->liesOn(face, *own.plane);
+                           }};
+  return accelerator_.intersect(ray, kept.enter, kept.exit, offPlane, hit);
+}
+
 Sighting SceneQueries::firstSighting(const Ray& ray, const KnownHit* known, bool withCatcher) const {
   Sighting seen;
   // Cut views: only the part of the ray on the kept side of every scene clip plane can hit
@@ -200,6 +232,14 @@ Sighting SceneQueries::firstSighting(const Ray& ray, const KnownHit* known, bool
     if (hitMesh) seen.hit = known->first;
   } else {
     hitMesh = !kept.empty() && nearestHit(ray, kept.enter, kept.exit, seen.hit);
+  }
+  // A face lying in the plane the ray enters the kept part by (a model's flat side where the cut
+  // passes) is met or missed by the rounding of two ways to the same t: met from behind it made a
+  // cap of no thickness, speckles over whatever lies beyond. It is never met: the ray goes on as if
+  // it had missed it, to what is past it, or into the solid behind it and out to its cap.
+  if (hitMesh && kept.enterPlane >= 0) {
+    const ClipPlane& plane = scene_.clipping.planes[static_cast<std::size_t>(kept.enterPlane)];
+    if (liesOn(seen.hit.face, plane)) hitMesh = nearestHitOffPlane(ray, kept, plane, seen.hit);
   }
   if (hitMesh) {
     seen.kind = Sighting::Kind::kSurface;

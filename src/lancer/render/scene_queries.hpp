@@ -151,6 +151,10 @@ class SceneQueries {
   // and the mesh's own), with the crossing in `tCap`; nullptr when it started inside that region or
   // entered by an uncapped plane. `kept`: the ray's interval for the scene's planes.
   const ClipPlane* capPlane(const Ray& ray, const ClipInterval& kept, std::uint32_t face, float& tCap) const;
+  // Whether every corner of `face` lies on `plane` (within onPlaneTolerance_).
+  bool liesOn(std::uint32_t face, const ClipPlane& plane) const;
+  // The nearest hit on `ray` in the kept interval past the faces that lie on `plane`.
+  bool nearestHitOffPlane(const Ray& ray, const ClipInterval& kept, const ClipPlane& plane, Hit& hit) const;
   // The transparent faces on `ray` in (tMin, tMax), in order, from one any-hit walk; false when the
   // light is blocked (an opaque face on the way, or too many faces).
   bool transparentCrossings(const Ray& ray, float tMin, float tMax, ShadowCrossings& crossings) const;
@@ -166,6 +170,7 @@ class SceneQueries {
   HitFilter meshClipFilter_;         // the hits those planes keep (FaceClipSets::keeps)
   std::vector<EnergySplit> splits_;  // per material
   std::vector<std::uint8_t> clear_;  // per material: clearFace
+  float onPlaneTolerance_ = 0;       // a millionth of the scene's diagonal
 };
 
 }  // namespace lancer

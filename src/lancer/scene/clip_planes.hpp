@@ -22,6 +22,7 @@ struct ClipInterval {
   float enter = 0;
   float exit = std::numeric_limits<float>::infinity();
   int enterPlane = -1;
+  float exitRate = 0;  // the exit plane's dot(direction, normal) (> 0); 0 when no plane ends the ray
   bool empty() const { return !(enter <= exit); }
 };
 
@@ -45,6 +46,7 @@ inline ClipInterval clipRay(const Ray& ray, std::span<const ClipPlane> planes) {
       }
     } else if (crossing < interval.exit) {  // going up out of it: kept until the crossing
       interval.exit = crossing;
+      interval.exitRate = rate;
     }
   }
   return interval;

@@ -66,9 +66,11 @@ void applyAnnotationOverrides(SceneDescription& description, const RenderOverrid
       mesh.volume.streamlines->where = SourceLocation{name("streamlines")};
     }
   }
-  // Isosurfaces and field lines in a field's colours on a mesh that is not coloured itself: the
-  // field's range and legend are the mesh's (not painted on it), so that --range, --legend, --bands
-  // and --isolines reach them.
+  for (const AnnotationSpec& annotation : overrides.annotations)
+    for (MeshInstance& mesh : description.meshes) setAnnotation(mesh, annotation);
+  // Isosurfaces, field lines and arrows in a field's colours on a mesh that is not coloured itself:
+  // the field's range and legend are the mesh's (not painted on it), so that --range, --legend,
+  // --bands and --isolines reach them. Arrows alone draw their legend over their own range.
   for (MeshInstance& mesh : description.meshes) {
     if (mesh.colorBy) continue;
     std::optional<std::string> field;
@@ -76,8 +78,16 @@ void applyAnnotationOverrides(SceneDescription& description, const RenderOverrid
       field = iso->colorBy.value_or(iso->field);
     if (const auto& lines = mesh.volume.streamlines; !field && lines && !lines->color)
       field = lines->colorBy.value_or(lines->field);
-    if (!field) continue;
     ColorBy colors;
+    if (!field) {
+      for (const AnnotationSpec& annotation : mesh.annotations)
+        if (const ArrowSpec* arrows = std::get_if<ArrowSpec>(&annotation); arrows && !arrows->color) {
+          field = arrows->field;
+          colors.ownLegend = false;
+          break;
+        }
+    }
+    if (!field) continue;
     colors.field = *field;
     colors.paintsSurface = false;
     mesh.colorBy = colors;
@@ -126,8 +136,6 @@ void applyAnnotationOverrides(SceneDescription& description, const RenderOverrid
       mesh->isolines = lines;
     }
   }
-  for (const AnnotationSpec& annotation : overrides.annotations)
-    for (MeshInstance& mesh : description.meshes) setAnnotation(mesh, annotation);
   for (ClipSettings clip : overrides.clips) {
     if (!isFinite(clip.point) || !isFinite(clip.normal) || length(clip.normal) == 0)
       throw InputError(SourceLocation{name("clip")},

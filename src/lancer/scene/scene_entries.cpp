@@ -13,12 +13,18 @@ namespace lancer {
 MeshInstance backdropInstance(const MeshInstance& instance, bool ghost, std::vector<Material>& materials) {
   MeshInstance copy = instance;
   copy.warp.reset();
-  copy.colorBy.reset();
   copy.isolines.reset();
-  // What samples the volume (arrows through it) stays: the skin drawn as a backdrop shows them.
+  // What samples the volume (arrows through it) stays: the skin drawn as a backdrop shows them,
+  // in the colours (map, range, legend) the mesh was given, which it no longer paints.
   std::erase_if(copy.annotations, [](const AnnotationSpec& annotation) {
     return !annotationKind(annotation).samplesVolume(annotation);
   });
+  if (copy.colorBy && !copy.annotations.empty()) {
+    copy.colorBy->paintsSurface = false;
+    copy.colorBy->ownLegend = false;
+  } else {
+    copy.colorBy.reset();
+  }
   copy.groupMaterials.clear();
   copy.undeformed = UndeformedStyle::None;
   copy.volume = VolumeViews{};
@@ -68,14 +74,17 @@ SceneColorings resolveSceneColorings(const SceneDescription& description,
   colorings.resize(sources.size());
   for (std::size_t i = 0; i < sources.size(); ++i) {
     specs[i] = description.meshes[i].colorBy;
-    if (specs[i]) colorings[i] = resolveColorBy(*specs[i], *sources[i], description.when);
+    // A mesh that only carries its arrows' colours paints nothing and shows no legend: nothing to
+    // resolve (its field may be given only inside the volume).
+    if (specs[i] && specs[i]->ownLegend)
+      colorings[i] = resolveColorBy(*specs[i], *sources[i], description.when);
   }
   for (std::size_t i = 0; i < sources.size(); ++i) {
-    if (!specs[i] || specs[i]->range || specs[i]->perStepRange) continue;
+    if (!specs[i] || specs[i]->range || specs[i]->perStepRange || !specs[i]->ownLegend) continue;
     std::pair<double, double> range{colorings[i]->low, colorings[i]->high};
     for (std::size_t j = 0; j < sources.size(); ++j)
-      if (specs[j] && !specs[j]->range && !specs[j]->perStepRange && specs[j]->field == specs[i]->field &&
-          specs[j]->map == specs[i]->map) {
+      if (specs[j] && !specs[j]->range && !specs[j]->perStepRange && specs[j]->ownLegend &&
+          specs[j]->field == specs[i]->field && specs[j]->map == specs[i]->map) {
         range.first = std::min(range.first, colorings[j]->low);
         range.second = std::max(range.second, colorings[j]->high);
       }

@@ -120,6 +120,7 @@ void finishFieldColors(Scene& scene, std::optional<FieldColors> fields) {
 
 void appendLegendAndBands(FieldColors& fields, const ColorBy& spec, const FieldColoring& coloring,
                           std::size_t faceBase, std::size_t faceEnd) {
+  if (!spec.ownLegend) return;
   const std::string title = spec.title.value_or(fieldTitle(spec.field, spec.component, coloring.components));
   auto same = [&](const LegendSpec& legend) {
     return legend.map == coloring.map && legend.low == coloring.low && legend.high == coloring.high &&

@@ -41,6 +41,16 @@ Mesh buildArrowAnnotation(const AnnotationSpec& annotation, const AnnotationSite
     instance.colorBy.reset();
     return arrows;
   }
+  // Solid whatever they stand on: grid arrows inside a skin drawn as a ghost or in outline took its
+  // see-through material, washed out to grey (or clear).
+  if (const Material& own = site.materials[static_cast<std::size_t>(instance.material)];
+      own.transparency > 0) {
+    Material material = own;
+    material.name += " (arrows)";
+    material.transparency = 0;
+    instance.material = static_cast<int>(site.materials.size());
+    site.materials.push_back(material);
+  }
   ColorBy colorBy;
   colorBy.field = arrows.fields.front().name;
   colorBy.step = 0;

@@ -21,9 +21,14 @@ struct ArrowSpec {
   int maxCount = 500;
   std::optional<std::array<int, 3>> grid;  // through the volume: that many points along x, y and z
   std::optional<double> scale;  // length per unit of magnitude; default ("auto"): the longest is 0.9 cells
-  bool fixedLength = false;     // every arrow 0.8 cells long
-  std::optional<Vec3> color;    // default: coloured by magnitude
-  SourceLocation where;         // the arrows value
+  // Every arrow 0.8 cells long (`length = "fixed"`), or lengths that follow the magnitude (`length =
+  // "magnitude"`). Default: fixed on a grid through the volume unless a `scale` is given (a field
+  // concentrated near a point, as most are inside a volume, would leave most arrows below a pixel:
+  // the magnitude shows in their colour, as ParaView's Glyph draws them), the magnitude on a surface.
+  std::optional<bool> fixedLength;
+  bool drawsFixedLength() const { return fixedLength.value_or(grid.has_value() && !scale.has_value()); }
+  std::optional<Vec3> color;  // default: coloured by magnitude
+  SourceLocation where;       // the arrows value
 };
 
 }  // namespace lancer

@@ -254,7 +254,7 @@ Mesh arrowsAlong(const ArrowSpec& spec, const ArrowVectors& arrows, const Vec3d&
     const Vec3d& vector = arrows.vectors[i];
     if (!usable(vector)) continue;
     const double magnitude = length(vector);
-    const double arrowLength = spec.fixedLength ? 0.8 * arrows.cellSize : scale * magnitude;
+    const double arrowLength = spec.drawsFixedLength() ? 0.8 * arrows.cellSize : scale * magnitude;
     if (!(arrowLength > 0)) continue;
     appendArrow(out, magnitudes, arrows.bases[i], vector * (1 / magnitude), arrowLength,
                 static_cast<float>(magnitude));

@@ -34,6 +34,11 @@ struct ColorBy {
   // False for gmsh's iso-values view (View.IntervalsType = 1, --gmsh-view): the range and legend
   // hold, the surface keeps its material, and the isolines take the map's colours.
   bool paintsSurface = true;
+  // False on a mesh that paints nothing and carries the colours' options (map, range, legend) for
+  // the arrows of a field it is not coloured by (a skin drawn as a ghost, an uncoloured mesh given
+  // --legend): the arrows draw the legend, over their own range; the mesh adds none and its range
+  // is not merged with others'.
+  bool ownLegend = true;
 };
 
 // `isolines = { field = "T", count = 10 }` (or `values = [...]`) on a [[mesh]]: the curves where a
