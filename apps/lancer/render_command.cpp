@@ -180,22 +180,28 @@ bool renderToFile(const PreparedRender& prepared, const Renderer& renderer, cons
 // --progressive: passes of 1, 2, 4, ... samples per pixel up to the scene's, each a whole image of
 // its own (per-pixel sample streams: the last pass is the image a plain render gives), written
 // (atomically) whenever `seconds` have passed since the last write, and at the end, each through
-// the plain render's pipeline: the denoiser with the final render's feature buffers (made once),
+// the plain render's pipeline: the denoiser with the pass's feature buffers (as a plain render's),
 // the legends, the tone curve and encoding, or the EXR with its layers. False when interrupted;
 // the file then holds the last pass written, whose samples per pixel go to `writtenSamples` (0: none).
 bool renderProgressive(const PreparedRender& prepared, const Renderer& finalRenderer,
                        const std::string& output, double seconds, const ExrLayerChoice& aovs,
                        const RenderOptions& renderOptions, RenderStats& stats, int& writtenSamples) {
   const RenderSettings& settings = prepared.description.render;
+  // The features come from each pass's own samples where the integrator reports them (the last
+  // pass's are then the plain render's), else from one primary-ray pass made before the first.
+  const bool wanted = settings.denoise || aovs.any();
+  const bool fromSamples = wanted && finalRenderer.featuresFromSamples();
   std::optional<FeatureBuffers> features;
-  if (settings.denoise || aovs.any()) features = finalRenderer.renderFeatures(renderOptions.threads);
+  if (wanted && !fromSamples) features = finalRenderer.renderFeatures(renderOptions.threads);
   RenderSettings pass = settings;
   Stopwatch sinceWrite;
   for (int samples = 1;; samples = std::min(2 * samples, settings.samples)) {
     pass.samples = samples;
     const Renderer renderer(prepared.scene, prepared.accelerator, prepared.camera, pass);
     RenderStats passStats;
-    Image image = renderer.renderImage(renderOptions, &passStats);
+    RenderOptions passOptions = renderOptions;
+    if (fromSamples) passOptions.features = &features.emplace(settings.width, settings.height);
+    Image image = renderer.renderImage(passOptions, &passStats);
     stats.rays += passStats.rays;
     stats.seconds += passStats.seconds;
     stats.samplesPerPixel = passStats.samplesPerPixel;

@@ -118,7 +118,9 @@ TEST(RenderPreparation, AMeshWoundInwardIsBuiltAgainOverItsTurnedFaces) {
 void expectSameValues(const std::vector<float>& a, const std::vector<float>& b, const char* what) {
   ASSERT_EQ(a.size(), b.size()) << what;
   for (std::size_t i = 0; i < a.size(); ++i)
-    if (!(std::isnan(a[i]) && std::isnan(b[i]))) ASSERT_EQ(a[i], b[i]) << what << " " << i;
+    if (!(std::isnan(a[i]) && std::isnan(b[i]))) {
+      ASSERT_EQ(a[i], b[i]) << what << " " << i;
+    }
 }
 
 TEST(RenderPreparation, AColouredMeshWithIsolinesIsTheSameSceneWithTheBuildAlongside) {
