@@ -10,6 +10,18 @@
 
 #include "lancer/util/huge_page_blocks.hpp"
 
+// Sanitizer builds keep the sanitizers' own operator new: their leak checker scans only memory
+// it allocated for pointers, so small blocks referenced from the arena's would be reported as
+// leaked, and their bounds checks do not see inside the arena's blocks.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define LANCER_KEEP_SANITIZER_ALLOCATOR 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define LANCER_KEEP_SANITIZER_ALLOCATOR 1
+#endif
+#endif
+
+#ifndef LANCER_KEEP_SANITIZER_ALLOCATOR
 namespace {
 
 using lancer::kLargeBlockAlignment;
@@ -91,3 +103,4 @@ void operator delete(void* pointer, std::size_t, std::align_val_t) noexcept { re
 void operator delete[](void* pointer, std::size_t, std::align_val_t) noexcept { release(pointer); }
 void operator delete(void* pointer, std::align_val_t, const std::nothrow_t&) noexcept { release(pointer); }
 void operator delete[](void* pointer, std::align_val_t, const std::nothrow_t&) noexcept { release(pointer); }
+#endif  // LANCER_KEEP_SANITIZER_ALLOCATOR
