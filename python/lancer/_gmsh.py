@@ -100,7 +100,9 @@ def from_gmsh(dim=2, name=None):
     reader makes one of $NodeData, $ElementData and $ElementNodeData. List-based views (a merged .pos,
     gmsh.view.addListData) are put on the mesh by their elements' coordinates as `lancer render
     mesh.msh view.pos` puts a file's, each step an element-node field (their steps timed 0, 1, ...:
-    gmsh's API gives no list view's times). Call it after gmsh.model.mesh.generate(dim)."""
+    gmsh's API gives no list view's times). With dim=3 the volume elements stay as mesh.volume, with
+    the model-based views' fields, for slices, isosurfaces, field lines and probes (list-based views
+    colour the skin only). Call it after gmsh.model.mesh.generate(dim)."""
     if dim not in (2, 3):
         raise ValueError(f"dim={dim!r}: use 2 (surfaces) or 3 (surfaces and volumes)")
     gmsh = _gmsh()
@@ -140,7 +142,8 @@ def _from_gmsh(gmsh, dim, name):
     node_fields, element_fields, element_node_fields, list_views = _view_fields(gmsh, tag_to_index,
                                                                                  len(node_tags))
     mesh = _lancer._mesh_from_elements(points, blocks, group_names, name or f"gmsh:{gmsh.model.getCurrent()}",
-                                       node_fields, element_fields, element_node_fields)
+                                       node_fields, element_fields, element_node_fields,
+                                       keep_volume=(dim == 3))
     if list_views:
         _lancer._add_list_views(mesh, _list_views(gmsh, list_views), f"gmsh:{gmsh.model.getCurrent()} views")
     return mesh

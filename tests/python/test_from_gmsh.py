@@ -82,6 +82,19 @@ def surface_tag_data(dim):
     return view
 
 
+def test_a_volume_model_keeps_its_volume_and_its_node_fields(session):
+    make_box(3)
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    view = gmsh.view.add("height")
+    gmsh.view.addModelData(view, 0, "box", "NodeData", list(tags), [[z] for z in coords[2::3]])
+    mesh = lancer.from_gmsh(dim=3)
+    assert mesh.volume is not None and mesh.volume.cells > 0
+    inside = np.array([[0.5, 1.0, 1.5], [0.2, 0.3, 2.9], [0.9, 1.9, 0.1]])
+    np.testing.assert_allclose(mesh.probe(inside, "height")[:, 0], inside[:, 2], atol=1e-5)
+    with pytest.raises(lancer.InputError, match="inside no volume element"):
+        mesh.probe([2.0, 1.0, 1.0], "height")
+
+
 def test_view_element_data_becomes_a_face_field(session):
     make_box(2)
     surface_tag_data(2)
