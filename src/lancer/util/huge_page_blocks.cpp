@@ -36,9 +36,9 @@ Header* headerOf(const void* pointer) {
   return header->magic == (kMagic ^ (address - kHeaderBytes)) ? header : nullptr;
 }
 
-// A fresh mapping of `mapped` bytes (whole huge pages), 2 MiB-aligned and advised; nullptr when the
-// system has no memory for it.
-Header* mapBlock(std::size_t mapped) {
+// A fresh mapping of `mapped` bytes (whole huge pages), 2 MiB-aligned and advised where `used` bytes
+// fill its pages; nullptr when the system has no memory for it.
+Header* mapBlock(std::size_t mapped, std::size_t used) {
   // One huge page more than needed, so that a 2 MiB boundary lies in it; the ends are given back.
   const std::size_t reserved = mapped + kHugePage;
   void* raw = ::mmap(nullptr, reserved, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -48,9 +48,13 @@ Header* mapBlock(std::size_t mapped) {
   if (aligned > begin) ::munmap(raw, aligned - begin);
   const std::uintptr_t end = begin + reserved;
   if (end > aligned + mapped) ::munmap(reinterpret_cast<void*>(aligned + mapped), end - (aligned + mapped));
-  // Advice only: where THP is off, the pages stay 4 KiB and nothing else changes. The last huge
-  // page too: partly filled, it costs less than up to 511 faults of 4 KiB.
-  ::madvise(reinterpret_cast<void*>(aligned), mapped, MADV_HUGEPAGE);
+  // Advice only: where THP is off, the pages stay 4 KiB and nothing else changes. The whole huge
+  // pages the block fills, and its last one when at least half of it is used (fewer faults than
+  // 4 KiB pages); a last page holding a few bytes (a vector of exactly 4 MiB, and the header) would
+  // take 2 MiB of memory for them, 4 KiB pages only the bytes touched.
+  std::size_t advised = used / kHugePage * kHugePage;
+  if (used - advised >= kHugePage / 2) advised = mapped;
+  if (advised > 0) ::madvise(reinterpret_cast<void*>(aligned), advised, MADV_HUGEPAGE);
   auto* header = reinterpret_cast<Header*>(aligned);
   header->mappedBytes = mapped;
   return header;
@@ -60,7 +64,7 @@ Header* mapBlock(std::size_t mapped) {
 // tens). A fixed table, so that the allocator allocates nothing itself.
 class Arena {
  public:
-  Header* take(std::size_t mapped) {
+  Header* take(std::size_t mapped, std::size_t used) {
     const std::lock_guard lock(mutex_);
     // The smallest kept block that fits, cut to the request (its end goes back to the system): so
     // the bytes in use are what they would be with nothing kept.
@@ -91,7 +95,7 @@ class Arena {
           kept_.begin());
       freed += unmapKept(largest);
     }
-    Header* header = mapBlock(mapped);
+    Header* header = mapBlock(mapped, used);
     if (header == nullptr) return nullptr;
     ++stats_.mappedBlocks;
     stats_.inUseBytes += mapped;
@@ -151,7 +155,7 @@ Arena& arena() {
 
 void* allocateLargeBlock(std::size_t bytes) noexcept {
   if (bytes > SIZE_MAX / 2 - 2 * kHugePage) return nullptr;
-  Header* header = arena().take(roundUp(bytes + kHeaderBytes, kHugePage));
+  Header* header = arena().take(roundUp(bytes + kHeaderBytes, kHugePage), bytes + kHeaderBytes);
   if (header == nullptr) return nullptr;
   header->magic = kMagic ^ reinterpret_cast<std::uintptr_t>(header);
   return reinterpret_cast<char*>(header) + kHeaderBytes;
