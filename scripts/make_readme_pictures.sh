@@ -27,6 +27,6 @@ done
   -o "$out/results_beam.gif" --quiet
 "$lancer" render examples/results/flow.toml -o "$out/results_flow.png" --quiet
 # docs/volume.md's arrows through the volume: a grid of the capacitor's field, 0.8 cells long by
-# default, coloured by magnitude, with its legend.
+# default, coloured by magnitude on a log scale (the field spans two decades), with its legend.
 "$lancer" render tests/data/volume/capacitor.msh --arrows e --arrow-grid 10,10,8 --legend right \
-  --width 480 --height 360 --samples 4 -o "$out/volume_arrows.png" --quiet
+  --log --range 0.05:8 --width 480 --height 360 --samples 4 -o "$out/volume_arrows.png" --quiet

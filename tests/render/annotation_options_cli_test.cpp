@@ -77,6 +77,23 @@ TEST(AnnotationOptionsCli, ArrowsAloneTakeTheLegendAndTheMap) {
   EXPECT_GT(test::differingPixels(legend, plain), 500);
 }
 
+TEST(AnnotationOptionsCli, ArrowsAloneTakeTheLogScaleOrSayWhyNot) {
+  // Grid arrows' magnitudes reach 0 where the field vanishes: --log alone is refused as the mesh's
+  // colours refuse it (it was dropped for a linear legend), and with a range it is drawn.
+  const std::string capacitor = test::dataFile("volume/capacitor.msh");
+  const test::ScratchFolder folder;
+  const std::string arrows = quoted(capacitor) + kSize + " --arrows e --arrow-grid 6,6,5 --legend right";
+  const test::CommandResult refused =
+      test::runCli("render " + arrows + " --log -o " + quoted(folder.file("refused.png")) + " 2>&1");
+  EXPECT_EQ(refused.exitCode, 2) << refused.output;
+  EXPECT_TRUE(test::contains(refused.output, "--log: error: arrows of \"e\"")) << refused.output;
+  EXPECT_TRUE(test::contains(refused.output, "e.g. --range ")) << refused.output;
+  EXPECT_FALSE(std::filesystem::exists(folder.file("refused.png")));
+  const Image log = rendered(folder, arrows + " --log --range 0.1:8", "log.png");
+  const Image linear = rendered(folder, arrows + " --range 0.1:8", "linear.png");
+  EXPECT_GT(test::differingPixels(log, linear), 300);
+}
+
 TEST(AnnotationOptionsCli, LogIsTheSceneKey) {
   const std::string square = test::dataFile("fields/node_xy_v41_bin.msh");
   const test::ScratchFolder folder;

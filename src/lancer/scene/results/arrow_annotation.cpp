@@ -4,11 +4,42 @@
 #include <cmath>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "lancer/mesh/field_steps.hpp"
 #include "lancer/scene/results/arrows.hpp"
 #include "lancer/scene/results/volume_arrows.hpp"
+#include "lancer/util/input_error.hpp"
 
 namespace lancer {
+
+namespace {
+
+// The error of a log scale over arrows whose magnitudes reach 0 (or never leave it), in the words of
+// the option or key that asked for it, with a range that would do.
+InputError logScaleNeedsARange(const ArrowSpec& spec, const ColorBy& asked, const std::string& file,
+                               std::pair<double, double> range) {
+  const double high = range.second > 0 ? range.second : 0.0;
+  const bool option = !asked.logOption.empty();
+  const bool cli = asked.logOption.starts_with("--");
+  const std::string log = option ? asked.logOption : "scale = \"log\"";
+  const std::string advice = !option ? fmt::format("range = [{:.3g}, {:.3g}]", high * 1e-3, high)
+                             : cli   ? fmt::format("--range {:.3g}:{:.3g}", high * 1e-3, high)
+                                     : fmt::format("range=({:.3g}, {:.3g})", high * 1e-3, high);
+  const std::string linear = !option ? "scale = \"linear\"" : fmt::format("leave {} out", asked.logOption);
+  const SourceLocation where = option ? SourceLocation{asked.logOption} : asked.where;
+  if (!(high > 0))
+    return InputError(where,
+                      fmt::format("arrows of \"{}\" in {} have no magnitude above 0, so {} cannot show "
+                                  "them: {}",
+                                  spec.field, file, log, option ? linear : "use " + linear));
+  return InputError(where, fmt::format("arrows of \"{}\" in {} have magnitudes down to {:g}, but {} needs "
+                                       "values > 0: give a range whose low end is > 0, e.g. {} (values below "
+                                       "it are drawn at it), or {}",
+                                       spec.field, file, std::max(range.first, 0.0), log, advice, linear));
+}
+
+}  // namespace
 
 bool arrowsSampleVolume(const AnnotationSpec& spec) { return std::get<ArrowSpec>(spec).grid.has_value(); }
 
@@ -70,6 +101,11 @@ Mesh buildArrowAnnotation(const AnnotationSpec& annotation, const AnnotationSite
     if (surface->range) {  // a log scale needs the range's low end above 0, which the mesh's has
       colorBy.range = surface->range;
       colorBy.scale = surface->scale;
+    } else if (surface->scale == ColorScale::Log) {
+      // Over the arrows' own magnitudes, which reach 0 wherever the field vanishes: refused as the
+      // mesh's colours refuse it, never a linear legend instead of the log one asked for.
+      if (!(range.first > 0)) throw logScaleNeedsARange(spec, *surface, owner.file, range);
+      colorBy.scale = ColorScale::Log;
     }
   }
   instance.colorBy = colorBy;
