@@ -8,6 +8,7 @@
 
 #include "lancer/mesh/field_steps.hpp"
 #include "lancer/scene/results/arrows.hpp"
+#include "lancer/scene/results/color_by.hpp"
 #include "lancer/scene/results/volume_arrows.hpp"
 #include "lancer/util/input_error.hpp"
 
@@ -21,13 +22,7 @@ InputError logScaleNeedsARange(const ArrowSpec& spec, const ColorBy& asked, cons
                                std::pair<double, double> range) {
   const double high = range.second > 0 ? range.second : 0.0;
   const bool option = !asked.logOption.empty();
-  const bool cli = asked.logOption.starts_with("--");
-  const std::string log = option ? asked.logOption : "scale = \"log\"";
-  const std::string advice = !option ? fmt::format("range = [{:.3g}, {:.3g}]", high * 1e-3, high)
-                             : cli   ? fmt::format("--range {:.3g}:{:.3g}", high * 1e-3, high)
-                                     : fmt::format("range=({:.3g}, {:.3g})", high * 1e-3, high);
-  const std::string linear = !option ? "scale = \"linear\"" : fmt::format("leave {} out", asked.logOption);
-  const SourceLocation where = option ? SourceLocation{asked.logOption} : asked.where;
+  const auto [where, log, advice, linear] = logScaleWords(asked, high);
   if (!(high > 0))
     return InputError(where,
                       fmt::format("arrows of \"{}\" in {} have no magnitude above 0, so {} cannot show "

@@ -254,6 +254,19 @@ MeshField meshFieldAt(std::string_view key, const std::string& name, std::option
   return std::move(*found);
 }
 
+LogScaleWords logScaleWords(const ColorBy& spec, double high) {
+  const bool option = !spec.logOption.empty();
+  const bool cli = spec.logOption.starts_with("--");
+  LogScaleWords words;
+  words.where = option ? SourceLocation{spec.logOption} : spec.where;
+  words.log = option ? spec.logOption : "scale = \"log\"";
+  words.advice = !option ? fmt::format("range = [{:.3g}, {:.3g}]", high * 1e-3, high)
+                 : cli   ? fmt::format("--range {:.3g}:{:.3g}", high * 1e-3, high)
+                         : fmt::format("range=({:.3g}, {:.3g})", high * 1e-3, high);
+  words.linear = !option ? "scale = \"linear\"" : fmt::format("leave {} out", spec.logOption);
+  return words;
+}
+
 FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSelection& scene) {
   const std::vector<const MeshField*> steps = viewSteps(mesh, spec.field);
   if (steps.empty()) {
@@ -306,16 +319,10 @@ FieldColoring resolveColorBy(const ColorBy& spec, const Mesh& mesh, const StepSe
   const auto [low, high] = range;
   if (spec.scale == ColorScale::Log && !(low > 0)) {
     const std::string over = spec.perStepRange || spec.step ? "at the step shown" : "over every step";
-    // The scene key's words, or the option's that asked for the log scale.
     const bool option = !spec.logOption.empty();
-    const bool cli = spec.logOption.starts_with("--");
-    const std::string log = option ? spec.logOption : "scale = \"log\"";
-    const std::string advice = !option ? fmt::format("range = [{:.3g}, {:.3g}]", high * 1e-3, high)
-                               : cli   ? fmt::format("--range {:.3g}:{:.3g}", high * 1e-3, high)
-                                       : fmt::format("range=({:.3g}, {:.3g})", high * 1e-3, high);
-    const std::string linear = !option ? "scale = \"linear\"" : fmt::format("leave {} out", spec.logOption);
+    const auto [where, log, advice, linear] = logScaleWords(spec, high);
     throw InputError(
-        option ? SourceLocation{spec.logOption} : spec.where,
+        where,
         high > 0
             ? fmt::format("color_by field \"{}\" in {} has values down to {:g} ({}), but {} needs "
                           "values > 0: give a range whose low end is > 0, e.g. {} (values below it are "

@@ -31,6 +31,15 @@ std::string colorRangeProblem(std::string_view name, double low, double high,
 // picture says it: "T" for a scalar, "|b|" for a magnitude, "sigma (von Mises)", "u (x)", "sigma (xy)".
 std::string fieldTitle(const std::string& name, const FieldComponent& component, int components);
 
+// How an error about a log scale over values down to 0 names what asked for it and what to do, in
+// the words of the option that asked (spec.logOption: "--log", Python's "log") or of the scene key:
+// where, the scale's name, a range up to `high` that would do, and how to go back to linear.
+struct LogScaleWords {
+  SourceLocation where;
+  std::string log, advice, linear;
+};
+LogScaleWords logScaleWords(const ColorBy& spec, double high);
+
 // A field mapped for display: t = (scalar - low) / (high - low), clamped to [0, 1]; on a log scale
 // the scalar itself, placed on the map after interpolation (FieldMap, MapPosition). Vector fields
 // show spec.component (their magnitude by default). NaN where the file gives no value (not coloured).
