@@ -5,7 +5,8 @@
 # with the first, so before/after and Embree share the machine's swings in one run.
 #   bench/bvh_build_fresh.sh [mesh] [repetitions] [binary] [other-binary]
 #   e.g. bench/bvh_build_fresh.sh 1m 5 build/bench/embree_compare_bench /tmp/old_embree_compare_bench
-# Prints medians: first build (fresh) and warm build wall seconds, lancer's SAH cost, ratios to MEDIUM.
+# Prints medians: first build (fresh) and warm build wall seconds, lancer's SAH cost, the structure's
+# bytes a triangle, ratios to MEDIUM.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 mesh=${1:-1m}
@@ -37,14 +38,16 @@ rows = {}
 for path in glob.glob(folder + "/*.json"):
     binary, row, threads, _ = path.rsplit("/", 1)[1][:-5].split("_")
     runs = [b for b in json.load(open(path))["benchmarks"] if b.get("run_type") == "iteration"]
-    entry = rows.setdefault((binary, row, threads), {"fresh": [], "warm": [], "sah": []})
+    entry = rows.setdefault((binary, row, threads), {"fresh": [], "warm": [], "sah": [], "bytes": []})
     entry["fresh"].append(runs[0]["real_time"] / 1e3)
     entry["warm"] += [b["real_time"] / 1e3 for b in runs[1:]]
     if "sah_cost" in runs[0]:
         entry["sah"].append(runs[0]["sah_cost"])
+    if "bytes_per_tri" in runs[0]:
+        entry["bytes"].append(runs[0]["bytes_per_tri"])
 med = lambda v: statistics.median(v) if v else None
-print("| binary | accel | threads | fresh build s | warm build s | SAH cost | MEDIUM/lancer fresh | MEDIUM/lancer warm |")
-print("|---|---|---|---|---|---|---|---|")
+print("| binary | accel | threads | fresh build s | warm build s | SAH cost | bytes/tri | MEDIUM/lancer fresh | MEDIUM/lancer warm |")
+print("|---|---|---|---|---|---|---|---|---|")
 for binary in map(str, range(count)):
     for row in ("bvh", "embree-medium"):
         for threads in ("1", "2"):
@@ -53,7 +56,8 @@ for binary in map(str, range(count)):
             m = rows.get(("0", "embree-medium", threads))
             rf = med(m["fresh"]) / med(e["fresh"]) if m and row == "bvh" else None
             rw = med(m["warm"]) / med(e["warm"]) if m and row == "bvh" else None
-            sah = med(e["sah"])
+            sah, size = med(e["sah"]), med(e["bytes"])
             print(f"| {binary} | {row} | {threads} | {med(e['fresh']):.3f} | {med(e['warm']):.3f} | "
-                  f"{'-' if sah is None else f'{sah:.2f}'} | {'-' if rf is None else f'{rf:.2f}'} | {'-' if rw is None else f'{rw:.2f}'} |")
+                  f"{'-' if sah is None else f'{sah:.2f}'} | {'-' if size is None else f'{size:.1f}'} | "
+                  f"{'-' if rf is None else f'{rf:.2f}'} | {'-' if rw is None else f'{rw:.2f}'} |")
 PY

@@ -3,6 +3,9 @@
 # (and MSH 2.2). Makes the meshes in bench/data/ from bench/geo/big_sphere.geo the first time
 # (about a minute of gmsh meshing), then prints the best of several runs and the ratios.
 #   usage: bench/msh_load_vs_gmsh.sh [BUILD_DIR]      (default: build; needs lancer and msh_load_bench)
+# RUNS (default 5) sets the runs of each; LANCER_BENCH_DATA another folder for the meshes (msh_load_bench
+# reads it too) and SPHERE_SIZE another element size for the sphere made there, e.g. a quick check on
+# about 11K triangles: SPHERE_SIZE=0.054 LANCER_BENCH_DATA=bench/data/small bench/msh_load_vs_gmsh.sh
 # gmsh is timed with `gmsh FILE -parse_and_exit -v 0`, the cheapest command that reads a whole
 # mesh file; its start-up time is measured on an empty .geo and shown separately. lancer is timed by
 # `lancer info --json` (loadSeconds: one cold-process load, mmap included; wall) and by the
@@ -21,12 +24,12 @@ for tool in "$build/lancer" "$build/bench/msh_load_bench"; do
   [[ -x $tool ]] || { echo "msh_load_vs_gmsh: $tool is missing: cmake --build $build" >&2; exit 1; }
 done
 
-data=bench/data
+data=${LANCER_BENCH_DATA:-bench/data}
 mkdir -p "$data"
 base=$data/big_sphere_v41_bin.msh
 if [[ ! -f $base ]]; then
   echo "making $base (about a minute)..."
-  gmsh bench/geo/big_sphere.geo -2 -format msh41 -bin -o "$base" >/dev/null
+  gmsh bench/geo/big_sphere.geo -2 ${SPHERE_SIZE:+-setnumber size "$SPHERE_SIZE"} -format msh41 -bin -o "$base" >/dev/null
 fi
 convert() {  # convert FORMAT BINARY OUTPUT: re-save the same mesh with gmsh
   [[ -f $3 ]] || gmsh "$base" -save -format "$1" -setnumber Mesh.Binary "$2" -o "$3" >/dev/null

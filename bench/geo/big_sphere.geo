@@ -3,6 +3,9 @@
 SetFactory("OpenCASCADE");
 Sphere(1) = {0, 0, 0, 1};
 Mesh.Algorithm = 5;  // Delaunay: the fastest 2D mesher for a mesh this size
-Mesh.MeshSizeMin = 0.0054;
-Mesh.MeshSizeMax = 0.0054;
+If (!Exists(size))  // gmsh -setnumber size S makes a coarser sphere for a quick check
+  size = 0.0054;
+EndIf
+Mesh.MeshSizeMin = size;
+Mesh.MeshSizeMax = size;
 Physical Surface("sphere") = {1};
