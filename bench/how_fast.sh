@@ -10,7 +10,7 @@
 #                      -DLANCER_BUILD_BENCH=ON; Embree from libembree-dev, Google Benchmark from
 #                      libbenchmark-dev)
 #     --quick          the whole pipeline on small meshes (10K and 100K triangles, a sphere of about
-#                      11K for the reader, 6 animation frames, one repetition): a minute or two, to
+#                      12K for the reader, 6 animation frames, one repetition): a minute or two, to
 #                      check the script, not figures to publish
 #     --only ROWS      some rows only, e.g. --only povray,memory (demo, povray, reader, rays, refit,
 #                      memory, animate, first_pixel, build; memory takes Embree's bytes from build)
@@ -78,7 +78,7 @@ if ((quick)); then
   refit_mesh=100k
   repetitions=1
   frames=6
-  reader_env=(RUNS=1 SPHERE_SIZE=0.054 "LANCER_BENCH_DATA=$data/quick")  # a sphere of about 11K triangles
+  reader_env=(RUNS=1 SPHERE_SIZE=0.054 "LANCER_BENCH_DATA=$data/quick")  # a sphere of about 12K triangles
 else
   meshes=1m,4m
   refit_mesh=1m
@@ -170,6 +170,9 @@ row_povray() {
   local version ratios=() m r
   version=$(povray --version 2>&1 | sed -nE 's/^POV-Ray ([0-9]+\.[0-9]+).*/\1/p' | head -1)
   what[povray]="\`lancer render\` end to end against POV-Ray ${version:-3.7} (800x600, 4 samples, one light with shadows, $threads threads)"
+  if command -v povray > /dev/null; then
+    bench_tool pov_scene_writer > /dev/null || { cell[povray]=$(missing "pov_scene_writer not built"); return 0; }
+  fi
   logged povray "$here/povray_compare.sh" "$build" "$meshes" 800x600 || return 1
   if grep -q 'povray not installed' "$work/povray.out"; then
     cell[povray]="not measured: POV-Ray is not installed (apt-get install povray)"
@@ -297,10 +300,10 @@ row_memory() {
   done
   local list="${values[*]}"
   cell[memory]="${list// / and } bytes per triangle"
-  if ((${#embree[@]})); then
-    local unique
-    unique=$(printf '%s\n' "${embree[@]}" | sort -un | paste -sd' ')
-    cell[memory]+=" (Embree's BVH alone: ${unique// / and })"
+  if ((${#embree[@]})); then  # one figure when the meshes agree, else one a mesh
+    local sizes="${embree[*]}"
+    [[ $(printf '%s\n' "${embree[@]}" | sort -u | wc -l) == 1 ]] && sizes=${embree[0]}
+    cell[memory]+=" (Embree's BVH alone: ${sizes// / and })"
   fi
 }
 

@@ -5,7 +5,7 @@
 #   usage: bench/msh_load_vs_gmsh.sh [BUILD_DIR]      (default: build; needs lancer and msh_load_bench)
 # RUNS (default 5) sets the runs of each; LANCER_BENCH_DATA another folder for the meshes (msh_load_bench
 # reads it too) and SPHERE_SIZE another element size for the sphere made there, e.g. a quick check on
-# about 11K triangles: SPHERE_SIZE=0.054 LANCER_BENCH_DATA=bench/data/small bench/msh_load_vs_gmsh.sh
+# about 12K triangles: SPHERE_SIZE=0.054 LANCER_BENCH_DATA=bench/data/small bench/msh_load_vs_gmsh.sh
 # gmsh is timed with `gmsh FILE -parse_and_exit -v 0`, the cheapest command that reads a whole
 # mesh file; its start-up time is measured on an empty .geo and shown separately. lancer is timed by
 # `lancer info --json` (loadSeconds: one cold-process load, mmap included; wall) and by the
