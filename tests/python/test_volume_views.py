@@ -92,17 +92,39 @@ def test_streamlines_match_the_cli(tmp_path):
     assert not np.array_equal(image, line)
 
 
-def test_a_quick_look_keeps_its_volume(tmp_path):
-    # The volume is read once, from the file read_msh read, and kept by the Scene: a copy of the
-    # file removed after the first render still renders.
+def test_a_mesh_keeps_its_volume(tmp_path):
+    # The volume is read once, from the file read_msh read, and kept with the Mesh: a copy of the
+    # file removed after the first render still renders, from the Scene and from new quick looks.
     copy = tmp_path / "capacitor.msh"
     shutil.copy(CAPACITOR, copy)
     scene = lancer.Scene.quick_look(lancer.read_msh(str(copy)), color_by="v")
     first = np.asarray(lancer.render(scene, slices="z", **SIZE))
     copy.unlink()
     assert np.array_equal(first, np.asarray(lancer.render(scene, slices="z", **SIZE)))
-    with pytest.raises(lancer.InputError, match="capacitor.msh"):
-        lancer.render(scene.mesh, slices="z", **SIZE)  # a new quick look reads the file again
+    mesh = scene.mesh
+    assert np.array_equal(np.asarray(lancer.render(lancer.Scene.quick_look(mesh, color_by="v"), slices="z", **SIZE)),
+                          first)
+    assert mesh.probe([0, 0, 0], "v").shape == (1, 1)  # probes share it
+
+
+def test_probes_read_the_file_once(tmp_path):
+    copy = tmp_path / "cube.msh"
+    shutil.copy(HEXAHEDRA, copy)
+    mesh = lancer.read_msh(str(copy))
+    point = [0.3, 0.4, 0.5]
+    first = mesh.probe(point, "f")
+    copy.unlink()
+    assert np.array_equal(mesh.probe(point, "f"), first)
+    assert mesh.volume is mesh.volume and mesh.volume.cells == 216
+    assert np.allclose(first, 0.3 + 2 * 0.4 + 3 * 0.5, atol=1e-5)
+    # A render of the mesh draws inside the volume its probes read.
+    lancer.render(mesh, slices="z", **SIZE)
+    # Another Mesh of the same file reads it again: gone, it says so.
+    shutil.copy(HEXAHEDRA, copy)
+    again = lancer.read_msh(str(copy))
+    copy.unlink()
+    with pytest.raises(lancer.InputError, match="cube.msh"):
+        again.probe(point, "f")
 
 
 def test_animate_draws_what_render_draws_inside_the_volume(tmp_path):
