@@ -154,6 +154,26 @@ def test_animate_draws_what_render_draws_inside_the_volume(tmp_path):
     assert not (tmp_path / "bad.gif").exists()
 
 
+def test_pixel_tubes_beside_a_legend_over_steps_match_the_render_of_the_step(tmp_path):
+    # Field lines 3 px thick beside a right legend: the single render frames the model beside the
+    # legend and sizes the tubes for that framing. An animation over steps colours them over every
+    # step (|w| over the moving cube's three steps): its frame is the render of the step with that
+    # range, the model framed beside that legend, not beside the one step's.
+    moving = lancer.read_msh(str(data("tests", "data", "volume", "moving.msh")))
+    keywords = {"streamlines": {"field": "w", "count": 3, "radius": "3px",
+                                "seed_line": [[0.2, 0.3, 0.3], [0.2, 0.7, 0.7]]},
+                "legend": "right", "width": 160, "height": 96}
+    lancer.animate(moving, tmp_path / "steps_%02d.png", over="steps", **keywords)
+    frame = np.asarray(lancer.read_png(str(tmp_path / "steps_00.png")))[..., :3]
+    magnitudes = [np.sqrt((moving.field("w", k).astype(np.float64) ** 2).sum(axis=1)) for k in range(3)]
+    over_steps = (min(m.min() for m in magnitudes), max(m.max() for m in magnitudes))
+    single = np.asarray(lancer.render(lancer.Scene.quick_look(moving, step=0), range=over_steps, **keywords))
+    assert np.array_equal(frame, single)
+    without = np.asarray(lancer.render(lancer.Scene.quick_look(moving, step=0),
+                                       **{**keywords, "legend": "none", "range": over_steps}))
+    assert not np.array_equal(single, without)
+
+
 def test_volume_keywords_bad_input():
     mesh = lancer.read_msh(CAPACITOR)
     with pytest.raises(lancer.InputError, match=r"^slices: error: 'w' is not a plane: use AXIS \(x, y or z: through "
