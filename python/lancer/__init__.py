@@ -90,8 +90,9 @@ def render(scene, width=None, height=None, samples=None, shading=None, srgb=None
     isosurfaces="v" or "v:4" or a dict of the scene keys ({"field": "v", "values": [-0.5, 0.5],
     "color_by": "e"}), streamlines="e" or "e:40" or a dict ({"field": "e", "count": 40, "seed_line":
     [[x1, y1, z1], [x2, y2, z2]]}). A Mesh lancer.read_msh read has its volume read from the same file
-    the first time a render draws inside it (a Scene.quick_look keeps it for its later renders); a
-    Mesh made from arrays or by gmsh has none (InputError).
+    the first time a render or a probe draws inside it, then kept with the Mesh for its later renders
+    and probes; a Mesh made from arrays without volume cells, or by from_gmsh without dim=3, has none
+    (InputError).
     """
     provenance = _image._call_text("lancer.render", render, locals())
     if dtype not in ("uint8", "float32"):

@@ -24,20 +24,29 @@ namespace lancer::python {
 
 namespace py = pybind11;
 
-// The volume of a quick look's mesh, read from the mesh's file the first time a render draws inside
-// it (slices, isosurfaces, field lines, coloured caps), then kept for the Scene's later renders.
-struct QuickLookVolume {
-  std::mutex mutex;  // renders release the GIL
+struct PythonVolume;  // lancer.Volume (volume_binding.cpp)
+
+// What a Mesh keeps of its volume: the volume of a Mesh lancer.read_msh read, read from its file the
+// first time a probe or a render draws inside it, then kept for the Mesh's later probes and renders
+// and its quick looks' (a Mesh does not change once made); and the lancer.Volume its probes use, with
+// its point locator, built once.
+struct MeshVolume {
+  std::mutex mutex;  // renders and probes release the GIL
   std::shared_ptr<const VolumeMesh> volume;
+  std::shared_ptr<PythonVolume> probed;
 };
+
+// The MeshVolume of `mesh`, shared by its Python object and every Scene made from it, held as long
+// as one of them lives (volume_binding.cpp). Call with the GIL held.
+std::shared_ptr<MeshVolume> meshVolumeOf(const std::shared_ptr<const Mesh>& mesh);
 
 // lancer.Scene: what a scene file or the quick look says, before any mesh is loaded. A quick look
 // keeps its mesh (the Python Mesh it was made from), which every render reuses instead of a file,
-// and its volume once read (shared by the Scene's copies).
+// and what the mesh keeps of its volume (shared with the Mesh and the Scene's copies).
 struct PythonScene {
   SceneDescription description;
   std::shared_ptr<const Mesh> quickLookMesh;
-  std::shared_ptr<QuickLookVolume> quickLookVolume = std::make_shared<QuickLookVolume>();
+  std::shared_ptr<MeshVolume> quickLookVolume = std::make_shared<MeshVolume>();
   // A scene file's TOML, or one built in code (Scene(), add_mesh, ...): the scene loader reads it
   // again after each change (scene_building_binding.cpp). Null for a quick look. Shared by copies of
   // the Scene until one changes it (each change makes a new table).
@@ -51,7 +60,8 @@ struct PythonScene {
 
 // The volume a render of `scene` with `overrides` draws from: none when it draws nothing inside
 // (or for a scene file, whose meshes are read with their volumes when the scene is built); else the
-// quick look's mesh's volume, read from the file lancer.read_msh read it from (volume_binding.cpp).
+// quick look's mesh's volume: the one it was made with, else the one read from the file
+// lancer.read_msh read it from, once for the Mesh (volume_binding.cpp).
 // An InputError for a mesh made from arrays or by gmsh, which has no volume elements.
 std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene,
                                                      const RenderOverrides& overrides, int threads);

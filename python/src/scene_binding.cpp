@@ -124,6 +124,7 @@ PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh, std::optional<UpAxis> 
     throw InputError(SourceLocation{mesh->source.path}, "nothing to draw: " + reason);
   PythonScene scene;
   scene.description = quickLookScene(mesh->source.path, *mesh, up);
+  scene.quickLookVolume = meshVolumeOf(mesh);
   scene.quickLookMesh = std::move(mesh);
   return scene;
 }

@@ -1,6 +1,7 @@
 // lancer.Volume (read_volume): the volume elements of a .msh file and the fields inside them, and
 // Volume.probe, a field's values at points, interpolated in the element that holds each; and the
-// volume a quick look's render draws slices, isosurfaces and field lines from.
+// volume a Mesh keeps, read once from its file, for its probes and its renders' slices, isosurfaces
+// and field lines.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -11,6 +12,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bindings.hpp"
@@ -20,7 +22,6 @@
 #include "lancer/scene/results/volume_views.hpp"
 
 namespace lancer::python {
-namespace {
 
 // The volume and its point locator, built once.
 struct PythonVolume {
@@ -29,32 +30,54 @@ struct PythonVolume {
   std::unique_ptr<VolumeLocator> locator;
 };
 
-std::shared_ptr<PythonVolume> readVolume(const std::string& path, int threads,
-                                         const std::vector<std::string>& views) {
-  requireThreads(threads);
-  py::gil_scoped_release release;
+namespace {
+
+std::shared_ptr<PythonVolume> probeable(std::string path, std::shared_ptr<const VolumeMesh> volume) {
   auto result = std::make_shared<PythonVolume>();
-  result->path = path;
-  MeshWithVolume read = readMeshFileWithVolume(path, threads);
-  addViewFiles(read, views);
-  result->volume = std::move(read.volume);
+  result->path = std::move(path);
+  result->volume = std::move(volume);
   result->locator = std::make_unique<VolumeLocator>(*result->volume);
   return result;
 }
 
-// Mesh.volume: the volume it was made with (arrays), or its file's read again (with the views
-// read_msh put on it); None for a mesh made without volume cells.
-std::shared_ptr<PythonVolume> volumeOfMesh(const Mesh& mesh) {
-  if (!mesh.volume && mesh.source.fileBytes == 0) return nullptr;
-  if (!mesh.volume) return readVolume(mesh.source.path, 0, mesh.source.viewFiles);
-  auto result = std::make_shared<PythonVolume>();
-  result->path = mesh.source.path;
-  result->volume = mesh.volume;
-  {
-    py::gil_scoped_release release;
-    result->locator = std::make_unique<VolumeLocator>(*result->volume);
+std::shared_ptr<PythonVolume> readVolume(const std::string& path, int threads,
+                                         const std::vector<std::string>& views) {
+  requireThreads(threads);
+  py::gil_scoped_release release;
+  MeshWithVolume read = readMeshFileWithVolume(path, threads);
+  addViewFiles(read, views);
+  return probeable(path, std::move(read.volume));
+}
+
+// The volume under a Mesh lancer.read_msh read: its file's, with the views read_msh put on it, read
+// the first time only. Called without the GIL.
+std::shared_ptr<const VolumeMesh> fileVolumeOf(const Mesh& mesh, MeshVolume& kept, int threads) {
+  const std::lock_guard<std::mutex> lock(kept.mutex);
+  if (!kept.volume) {
+    MeshWithVolume read = readMeshFileWithVolume(mesh.source.path, threads);
+    addViewFiles(read, mesh.source.viewFiles);  // read_msh's views= inside the volume too
+    // The volume must be the one under the Mesh's surface.
+    if (read.mesh.faces.size() != mesh.faces.size() || read.mesh.positions.size() != mesh.positions.size())
+      throw InputError(
+          SourceLocation{mesh.source.path},
+          fmt::format("the file has changed since lancer.read_msh read it ({} faces then, {} now): "
+                      "read it again to draw or probe inside its volume",
+                      mesh.faces.size(), read.mesh.faces.size()));
+    kept.volume = std::move(read.volume);
   }
-  return result;
+  return kept.volume;
+}
+
+// Mesh.volume: the volume it was made with (arrays), or its file's, read once; None for a mesh made
+// without volume cells.
+std::shared_ptr<PythonVolume> volumeOfMesh(const std::shared_ptr<Mesh>& mesh) {
+  if (!mesh->volume && mesh->source.fileBytes == 0) return nullptr;
+  const std::shared_ptr<MeshVolume> kept = meshVolumeOf(mesh);
+  py::gil_scoped_release release;
+  std::shared_ptr<const VolumeMesh> volume = mesh->volume ? mesh->volume : fileVolumeOf(*mesh, *kept, 0);
+  const std::lock_guard<std::mutex> lock(kept->mutex);
+  if (!kept->probed) kept->probed = probeable(mesh->source.path, std::move(volume));
+  return kept->probed;
 }
 
 py::array_t<double> probe(const PythonVolume& volume, const py::object& points, const std::string& field,
@@ -117,20 +140,30 @@ std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene,
                     "lancer.read_msh to draw slices, isosurfaces or field lines inside it",
                     mesh.source.path));
   }
-  const std::lock_guard<std::mutex> lock(scene.quickLookVolume->mutex);
-  if (!scene.quickLookVolume->volume) {
-    MeshWithVolume read = readMeshFileWithVolume(mesh.source.path, threads);
-    addViewFiles(read, mesh.source.viewFiles);  // read_msh's views= inside the volume too
-    // The volume must be the one under the Mesh's surface.
-    if (read.mesh.faces.size() != mesh.faces.size() || read.mesh.positions.size() != mesh.positions.size())
-      throw InputError(
-          SourceLocation{mesh.source.path},
-          fmt::format("the file has changed since lancer.read_msh read it ({} faces then, {} now): "
-                      "read it again to draw inside its volume",
-                      mesh.faces.size(), read.mesh.faces.size()));
-    scene.quickLookVolume->volume = std::move(read.volume);
+  return fileVolumeOf(mesh, *scene.quickLookVolume, threads);
+}
+
+std::shared_ptr<MeshVolume> meshVolumeOf(const std::shared_ptr<const Mesh>& mesh) {
+  // By the mesh, weakly: every Python object and Scene of the same Mesh finds the one its holders
+  // keep. A live entry's mesh is alive (each holder holds it too), so its address names it alone.
+  static auto* const byMesh = new std::vector<std::pair<const Mesh*, std::weak_ptr<MeshVolume>>>();
+  // By the Python object, strongly, for as long as it lives: a Mesh's probes between renders.
+  // Both leaked on purpose: the interpreter may outlive the module's static destructors.
+  static auto* const byObject = new py::object(py::module_::import("weakref").attr("WeakKeyDictionary")());
+  std::erase_if(*byMesh, [](const auto& entry) { return entry.second.expired(); });
+  std::shared_ptr<MeshVolume> kept;
+  for (const auto& [owner, volume] : *byMesh)
+    if (owner == mesh.get()) kept = volume.lock();
+  if (!kept) {
+    kept = std::make_shared<MeshVolume>();
+    byMesh->emplace_back(mesh.get(), kept);
   }
-  return scene.quickLookVolume->volume;
+  const py::object self = py::cast(std::const_pointer_cast<Mesh>(mesh));
+  if (byObject->attr("get")(self).is_none())
+    byObject->attr("__setitem__")(self, py::capsule(new std::shared_ptr<MeshVolume>(kept), [](void* held) {
+                                    delete static_cast<std::shared_ptr<MeshVolume>*>(held);
+                                  }));
+  return kept;
 }
 
 void bindVolume(py::module_& module) {
@@ -167,14 +200,16 @@ void bindVolume(py::module_& module) {
   mesh.def_property_readonly(
           "volume", &volumeOfMesh,
           "the volume elements and the fields inside them (a lancer.Volume): those the mesh was made with "
-          "from arrays, or those of the file it was read from (read again at each call); None for a mesh "
-          "made without volume cells")
+          "from arrays, or those of the file it was read from (read once, then kept with the mesh); None for "
+          "a "
+          "mesh made without volume cells")
       .def(
           "probe",
-          [](const Mesh& self, const py::object& points, const std::string& field, std::optional<int> step) {
+          [](const std::shared_ptr<Mesh>& self, const py::object& points, const std::string& field,
+             std::optional<int> step) {
             const std::shared_ptr<PythonVolume> volume = volumeOfMesh(self);
             if (!volume)
-              throw InputError(SourceLocation{self.source.path},
+              throw InputError(SourceLocation{self->source.path},
                                "the mesh has no volume elements (tetrahedra, hexahedra, prisms, pyramids) "
                                "to probe inside: make it with its volume cells");
             return probe(*volume, points, field, step);

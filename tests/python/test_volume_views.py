@@ -92,24 +92,86 @@ def test_streamlines_match_the_cli(tmp_path):
     assert not np.array_equal(image, line)
 
 
-def test_a_quick_look_keeps_its_volume(tmp_path):
-    # The volume is read once, from the file read_msh read, and kept by the Scene: a copy of the
-    # file removed after the first render still renders.
+def test_a_mesh_keeps_its_volume(tmp_path):
+    # The volume is read once, from the file read_msh read, and kept with the Mesh: a copy of the
+    # file removed after the first render still renders, from the Scene and from new quick looks.
     copy = tmp_path / "capacitor.msh"
     shutil.copy(CAPACITOR, copy)
     scene = lancer.Scene.quick_look(lancer.read_msh(str(copy)), color_by="v")
     first = np.asarray(lancer.render(scene, slices="z", **SIZE))
     copy.unlink()
     assert np.array_equal(first, np.asarray(lancer.render(scene, slices="z", **SIZE)))
-    with pytest.raises(lancer.InputError, match="capacitor.msh"):
-        lancer.render(scene.mesh, slices="z", **SIZE)  # a new quick look reads the file again
+    mesh = scene.mesh
+    assert np.array_equal(np.asarray(lancer.render(lancer.Scene.quick_look(mesh, color_by="v"), slices="z", **SIZE)),
+                          first)
+    assert mesh.probe([0, 0, 0], "v").shape == (1, 1)  # probes share it
 
 
-def test_animate_takes_the_volume_keywords(tmp_path):
-    output = tmp_path / "turn.gif"
-    lancer.animate(lancer.read_msh(CAPACITOR), str(output), frames=2, fps=10, slices="y", isosurfaces="v:2", width=32,
-                   height=32)
-    assert output.stat().st_size > 0
+def test_probes_read_the_file_once(tmp_path):
+    copy = tmp_path / "cube.msh"
+    shutil.copy(HEXAHEDRA, copy)
+    mesh = lancer.read_msh(str(copy))
+    point = [0.3, 0.4, 0.5]
+    first = mesh.probe(point, "f")
+    copy.unlink()
+    assert np.array_equal(mesh.probe(point, "f"), first)
+    assert mesh.volume is mesh.volume and mesh.volume.cells == 216
+    assert np.allclose(first, 0.3 + 2 * 0.4 + 3 * 0.5, atol=1e-5)
+    # A render of the mesh draws inside the volume its probes read.
+    lancer.render(mesh, slices="z", **SIZE)
+    # Another Mesh of the same file reads it again: gone, it says so.
+    shutil.copy(HEXAHEDRA, copy)
+    again = lancer.read_msh(str(copy))
+    copy.unlink()
+    with pytest.raises(lancer.InputError, match="cube.msh"):
+        again.probe(point, "f")
+
+
+def test_animate_draws_what_render_draws_inside_the_volume(tmp_path):
+    # An orbit's first frame is the render from the scene's camera: each volume keyword draws the same.
+    scene = lancer.Scene.quick_look(lancer.read_msh(CAPACITOR), color_by="v")
+    for keywords in ({"slices": "y", "skin": "edges"}, {"isosurfaces": {"field": "v", "values": [-0.5, 0.5]}},
+                     {"streamlines": {"field": "e", "count": 6, "radius": "3px"}, "legend": "right"},
+                     {"arrows": {"field": "e", "grid": [3, 3, 3]}}, {"clip": "y=0"}):
+        lancer.animate(scene, tmp_path / "turn_%02d.png", frames=2, **keywords, **SIZE)
+        frame = np.asarray(lancer.read_png(str(tmp_path / "turn_00.png")))[..., :3]
+        assert np.array_equal(frame, np.asarray(lancer.render(scene, **keywords, **SIZE))), keywords
+    # Over steps, a frame is that step's render: a slice through the moving cube at step 1.
+    moving = lancer.read_msh(str(data("tests", "data", "volume", "moving.msh")))
+    lancer.animate(lancer.Scene.quick_look(moving, color_by="s", color_range=(-1, 1)), tmp_path / "step_%02d.png",
+                   over="steps", slices="y", skin="hidden", **SIZE)
+    frame = np.asarray(lancer.read_png(str(tmp_path / "step_01.png")))[..., :3]
+    step = lancer.render(lancer.Scene.quick_look(moving, color_by="s", color_range=(-1, 1), step=1), slices="y",
+                         skin="hidden", **SIZE)
+    assert np.array_equal(frame, np.asarray(step))
+    # Refused with render's messages, before anything is written.
+    with pytest.raises(lancer.InputError, match=r"^slices: error: 'w' is not a plane"):
+        lancer.animate(scene, tmp_path / "bad.gif", slices="w", **SIZE)
+    with pytest.raises(TypeError, match="isosurfaces= takes 'FIELD', 'FIELD:COUNT' or a dict"):
+        lancer.animate(scene, tmp_path / "bad.gif", isosurfaces=3, **SIZE)
+    with pytest.raises(lancer.InputError, match=r"streamlines of 'v': it has 1 component"):
+        lancer.animate(scene, tmp_path / "bad.gif", streamlines="v", **SIZE)
+    assert not (tmp_path / "bad.gif").exists()
+
+
+def test_pixel_tubes_beside_a_legend_over_steps_match_the_render_of_the_step(tmp_path):
+    # Field lines 3 px thick beside a right legend: the single render frames the model beside the
+    # legend and sizes the tubes for that framing. An animation over steps colours them over every
+    # step (|w| over the moving cube's three steps): its frame is the render of the step with that
+    # range, the model framed beside that legend, not beside the one step's.
+    moving = lancer.read_msh(str(data("tests", "data", "volume", "moving.msh")))
+    keywords = {"streamlines": {"field": "w", "count": 3, "radius": "3px",
+                                "seed_line": [[0.2, 0.3, 0.3], [0.2, 0.7, 0.7]]},
+                "legend": "right", "width": 160, "height": 96}
+    lancer.animate(moving, tmp_path / "steps_%02d.png", over="steps", **keywords)
+    frame = np.asarray(lancer.read_png(str(tmp_path / "steps_00.png")))[..., :3]
+    magnitudes = [np.sqrt((moving.field("w", k).astype(np.float64) ** 2).sum(axis=1)) for k in range(3)]
+    over_steps = (min(m.min() for m in magnitudes), max(m.max() for m in magnitudes))
+    single = np.asarray(lancer.render(lancer.Scene.quick_look(moving, step=0), range=over_steps, **keywords))
+    assert np.array_equal(frame, single)
+    without = np.asarray(lancer.render(lancer.Scene.quick_look(moving, step=0),
+                                       **{**keywords, "legend": "none", "range": over_steps}))
+    assert not np.array_equal(single, without)
 
 
 def test_volume_keywords_bad_input():

@@ -8,15 +8,11 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
-#include "lancer/image/color_map.hpp"
-#include "lancer/image/image_io.hpp"
-#include "lancer/render/render_preparation.hpp"
-#include "lancer/scene/scene_loader.hpp"
 #include "support/cli.hpp"
 #include "support/files.hpp"
+#include "support/slice_colours.hpp"
 
 namespace lancer {
 namespace {
@@ -26,77 +22,22 @@ constexpr int kSide = 64;
 std::string cubePos() { return test::dataFile("pos/volume/cube.pos"); }
 std::string cubeMsh() { return test::dataFile("pos/volume/cube.msh"); }
 
-// Straight down at the slice z = 0.3 of the unit cube, orthographic, unlit, f on viridis over [0, 6];
+// Straight down at the slice z = 0.3 of the unit cube, the skin hidden (support/slice_colours.hpp);
 // `files` is the [[mesh]]'s file (and views) keys.
 std::string topViewScene(const std::string& files) {
-  return fmt::format(R"([render]
-width = {0}
-height = {0}
-shading = "unlit"
-
-[camera]
-projection = "orthographic"
-position = [0.5, 0.5, 5]
-look_at = [0.5, 0.5, 0.3]
-up = [0, 1, 0]
-view_height = 1.2
-
-[[light]]
-position = [0.5, 0.5, 10]
-
-[[mesh]]
-{1}
-color_by = {{ field = "f", range = [0, 6] }}
-skin = "hidden"
-
-[[mesh.slice]]
-point = [0, 0, 0.3]
-normal = [0, 0, 1]
-)",
-                     kSide, files);
-}
-
-// Renders the scene with the CLI and checks every pixel that sees the square z = 0.3 inside the
-// cube against viridis at f there; returns the pixels checked.
-int expectSliceColours(const test::ScratchFolder& folder, const std::string& scene) {
-  const std::string path = folder.file("scene.toml");
-  std::ofstream(path) << scene;
-  const std::string out = folder.file("out.png");
-  const test::CommandResult run =
-      test::runCli("render " + test::quoted(path) + " -q -o " + test::quoted(out) + " 2>&1");
-  EXPECT_EQ(run.exitCode, 0) << run.output;
-  if (run.exitCode != 0) return 0;
-  const Image image = readPng(out);
-  RenderRequest request;
-  request.description = loadScene(path);
-  const PreparedRender prepared = prepareRender(std::move(request));
-  int checked = 0;
-  double worst = 0;
-  for (int y = 0; y < kSide; ++y)
-    for (int x = 0; x < kSide; ++x) {
-      const Ray ray = prepared.camera.generateRay(x + 0.5f, y + 0.5f);
-      const Vec3d origin = prepared.scene.geometry.origin + toDouble(ray.origin);
-      const Vec3d direction = toDouble(ray.direction);
-      const Vec3d p = origin + direction * ((0.3 - origin.z) / direction.z);
-      if (p.x < 0.01 || p.x > 0.99 || p.y < 0.01 || p.y > 0.99) continue;
-      const double f = p.x + 2 * p.y + 0.9;
-      const Vec3 expected = colorMapLookup(ColorMapKind::Viridis, static_cast<float>(f / 6));
-      worst = std::max(worst, 255.0 * maxComponent(abs(image.at(x, y).rgb() - expected)));
-      ++checked;
-    }
-  EXPECT_LE(worst, 1.0);
-  return checked;
+  return test::topViewSliceScene(
+      kSide, files, "skin = \"hidden\"\n\n[[mesh.slice]]\npoint = [0, 0, 0.3]\nnormal = [0, 0, 1]\n");
 }
 
 TEST(PosVolumeViews, ASliceOfAViewShowsTheFieldAtEveryPixel) {
   const test::ScratchFolder folder;
-  EXPECT_GT(expectSliceColours(folder, topViewScene(fmt::format("file = \"{}\"", cubePos()))),
+  EXPECT_GT(test::expectSliceColours(folder, topViewScene(fmt::format("file = \"{}\"", cubePos()))),
             kSide * kSide / 2);
 }
 
 TEST(PosVolumeViews, ASliceOfAViewOnItsMeshShowsTheFieldAtEveryPixel) {
   const test::ScratchFolder folder;
-  EXPECT_GT(expectSliceColours(
+  EXPECT_GT(test::expectSliceColours(
                 folder, topViewScene(fmt::format("file = \"{}\"\nviews = [\"{}\"]", cubeMsh(), cubePos()))),
             kSide * kSide / 2);
 }

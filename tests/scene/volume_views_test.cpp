@@ -6,17 +6,13 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
-#include "lancer/image/color_map.hpp"
-#include "lancer/image/image_io.hpp"
-#include "lancer/render/render_preparation.hpp"
-#include "lancer/scene/scene_loader.hpp"
 #include "support/cli.hpp"
 #include "support/files.hpp"
+#include "support/slice_colours.hpp"
 
 namespace lancer {
 namespace {
@@ -25,68 +21,15 @@ constexpr int kSide = 96;
 
 std::string cube() { return test::dataFile("element_node/tet_v41_bin.msh"); }
 
-// A scene looking straight down at z = 0.3 from above the unit cube, orthographic, unlit, f on
-// viridis over [0, 6]; `mesh` holds the rest of the [[mesh]] table and what follows it.
+// Straight down at z = 0.3 of the unit cube (support/slice_colours.hpp); `mesh` holds the rest of
+// the [[mesh]] table and what follows it.
 std::string topViewScene(const std::string& mesh) {
-  return fmt::format(R"([render]
-width = {0}
-height = {0}
-shading = "unlit"
-
-[camera]
-projection = "orthographic"
-position = [0.5, 0.5, 5]
-look_at = [0.5, 0.5, 0.3]
-up = [0, 1, 0]
-view_height = 1.2
-
-[[light]]
-position = [0.5, 0.5, 10]
-
-[[mesh]]
-file = "{1}"
-color_by = {{ field = "f", range = [0, 6] }}
-{2}
-)",
-                     kSide, cube(), mesh);
-}
-
-// Renders the scene with the CLI and checks every pixel that sees the unit square at z = 0.3
-// against viridis at f there; returns the pixels checked.
-int expectSliceColours(const test::ScratchFolder& folder, const std::string& scene) {
-  const std::string path = folder.file("scene.toml");
-  std::ofstream(path) << scene;
-  const std::string out = folder.file("out.png");
-  const test::CommandResult run =
-      test::runCli("render " + test::quoted(path) + " -q -o " + test::quoted(out) + " 2>&1");
-  EXPECT_EQ(run.exitCode, 0) << run.output;
-  const Image image = readPng(out);
-  RenderRequest request;
-  request.description = loadScene(path);
-  const PreparedRender prepared = prepareRender(std::move(request));
-  int checked = 0;
-  double worst = 0;
-  for (int y = 0; y < kSide; ++y)
-    for (int x = 0; x < kSide; ++x) {
-      const Ray ray = prepared.camera.generateRay(x + 0.5f, y + 0.5f);
-      const Vec3d origin = prepared.scene.geometry.origin + toDouble(ray.origin);
-      const Vec3d direction = toDouble(ray.direction);
-      const double t = (0.3 - origin.z) / direction.z;
-      const Vec3d p = origin + direction * t;
-      // Away from the square's border, where a pixel may see the background too.
-      if (p.x < 0.01 || p.x > 0.99 || p.y < 0.01 || p.y > 0.99) continue;
-      const double f = p.x + 2 * p.y + 0.9;
-      const Vec3 expected = colorMapLookup(ColorMapKind::Viridis, static_cast<float>(f / 6));
-      worst = std::max(worst, 255.0 * maxComponent(abs(image.at(x, y).rgb() - expected)));
-      ++checked;
-    }
-  EXPECT_LE(worst, 1.0);
-  return checked;
+  return test::topViewSliceScene(kSide, fmt::format("file = \"{}\"", cube()), mesh);
 }
 
 TEST(VolumeViews, ASliceSeenStraightOnShowsTheFieldAtEveryPixel) {
   const test::ScratchFolder folder;
-  const int checked = expectSliceColours(
+  const int checked = test::expectSliceColours(
       folder, topViewScene("skin = \"hidden\"\n\n[[mesh.slice]]\npoint = [0, 0, 0.3]\nnormal = [0, 0, 1]\n"));
   EXPECT_GT(checked, kSide * kSide / 2);
 }
@@ -95,7 +38,7 @@ TEST(VolumeViews, ACutCapOfAColouredVolumeShowsTheField) {
   // The top of the cube cut away at z = 0.3: the cap is the slice there.
   const test::ScratchFolder folder;
   const int checked =
-      expectSliceColours(folder, topViewScene("\n[[clip]]\npoint = [0, 0, 0.3]\nnormal = [0, 0, 1]\n"));
+      test::expectSliceColours(folder, topViewScene("\n[[clip]]\npoint = [0, 0, 0.3]\nnormal = [0, 0, 1]\n"));
   EXPECT_GT(checked, kSide * kSide / 2);
 }
 

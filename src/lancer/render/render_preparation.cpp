@@ -11,6 +11,7 @@
 
 #include "lancer/image/legend.hpp"
 #include "lancer/mesh/morton_renumbering.hpp"
+#include "lancer/render/step_animation.hpp"
 #include "lancer/scene/flat_scene.hpp"
 #include "lancer/scene/geometry_overlap.hpp"
 #include "lancer/scene/results/annotation_builder.hpp"
@@ -120,6 +121,10 @@ PreparedRender prepareRender(RenderRequest request) {
   });
   const auto build = [&](bool alongside) {
     addVolumeViews(description, meshes, volumes);
+    // For an animation over steps, the frames' colour ranges: the legends that frame the model
+    // beside them below, and size its tubes in pixels, are then the frames' own.
+    if (request.keepMeshes)
+      holdStepColourRanges(description, description.animation && description.animation->perStepRange);
     // A flat scene nobody chose a view for: straight on; a look then lights it from that view.
     const FlatSceneChoices choices{request.overrides.look.has_value(), request.overrides.shading.has_value()};
     if (applyFlatSceneDefaults(description, meshes, choices) && request.overrides.look)

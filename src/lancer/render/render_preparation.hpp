@@ -41,7 +41,8 @@ struct RenderRequest {
   std::function<void(SceneDescription&, const std::vector<Mesh>&)> withMeshes;
   // Keep the meshes as read (every step of their views) in PreparedRender::meshes: an animation
   // over steps builds each frame's scene and accelerator from them (render/step_animation.hpp), so
-  // no accelerator is built here (PreparedRender::accelerator is empty).
+  // no accelerator is built here (PreparedRender::accelerator is empty). The scene is built with
+  // the colour ranges the frames hold (holdStepColourRanges), so its legends are theirs.
   bool keepMeshes = false;
   // A scene of one mesh has its accelerator built alongside its orientation and normals
   // (scene/geometry_overlap.hpp): 0-13% sooner to the first ray on two cores, but the build's

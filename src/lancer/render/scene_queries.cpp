@@ -18,6 +18,45 @@ Vec3 transmissionTint(const Material& material) {
   return brightest > 0.0f ? material.kd * (1.0f / brightest) : Vec3{1, 1, 1};
 }
 
+// A millionth of the scene's diagonal: a face whose corners are all this near a clip plane lies in it.
+float onPlaneTolerance(const Scene& scene) {
+  return scene.geometry.bounds.empty() ? 0.0f : 1e-6f * length(scene.geometry.bounds.extent());
+}
+
+bool liesOnPlane(const Scene& scene, std::uint32_t face, const ClipPlane& plane, float tolerance) {
+  for (const std::uint32_t v : scene.geometry.faces[face].vertex) {
+    if (v == kNoVertex) break;
+    if (std::abs(dot(scene.geometry.positions[v] - plane.point, plane.normal)) > tolerance) return false;
+  }
+  return true;
+}
+
+// The hit filters of per-mesh planes (context: the Scene). A mesh's own planes treat a face lying in
+// one of them as the scene's planes do (SceneQueries::firstSighting, shadowQuery): a ray never meets
+// it in the plane it enters the mesh's kept region by, and a shadow ray stops the on-plane tolerance
+// short of the plane it leaves that region by. Otherwise FaceClipSets::keeps.
+bool keepsOnOwnPlanes(const void* context, const Ray& ray, std::uint32_t face, float t) {
+  const Scene& scene = *static_cast<const Scene*>(context);
+  const FaceClipSets& clips = scene.clipping.perMesh;
+  const FaceClipRange* range = clips.rangeOf(face);
+  if (!range) return true;
+  const ClipInterval kept = clipRay(ray, clips.planesOf(*range));
+  if (!(t > kept.enter && t < kept.exit)) return false;
+  if (kept.enterPlane < 0) return true;
+  const ClipPlane& entered = clips.planes[range->planeBegin + static_cast<std::size_t>(kept.enterPlane)];
+  return !liesOnPlane(scene, face, entered, onPlaneTolerance(scene));
+}
+
+bool keepsOnOwnPlanesForLight(const void* context, const Ray& ray, std::uint32_t face, float t) {
+  const Scene& scene = *static_cast<const Scene*>(context);
+  const FaceClipSets& clips = scene.clipping.perMesh;
+  const FaceClipRange* range = clips.rangeOf(face);
+  if (!range) return true;
+  const ClipInterval kept = clipRay(ray, clips.planesOf(*range));
+  if (!(t > kept.enter && t < kept.exit)) return false;
+  return !(kept.exitRate > 0.0f && t >= kept.exit - onPlaneTolerance(scene) / kept.exitRate);
+}
+
 }  // namespace
 
 EnergySplit energySplit(const Material& material) {
@@ -38,10 +77,8 @@ SceneQueries::SceneQueries(const Scene& scene, const Accelerator& accelerator)
     : scene_(scene),
       accelerator_(accelerator),
       anyMeshClips_(!scene.clipping.perMesh.empty()),
-      meshClipFilter_{&scene.clipping.perMesh,
-                      [](const void* clips, const Ray& ray, std::uint32_t face, float t) {
-                        return static_cast<const FaceClipSets*>(clips)->keeps(ray, face, t);
-                      }} {
+      meshClipFilter_{&scene, &keepsOnOwnPlanes},
+      meshShadowClipFilter_{&scene, &keepsOnOwnPlanesForLight} {
   for (const Material& material : scene.appearance.materials) {
     anyTransparent_ = anyTransparent_ || material.transparency > 0;
     splits_.push_back(energySplit(material));
@@ -50,7 +87,7 @@ SceneQueries::SceneQueries(const Scene& scene, const Accelerator& accelerator)
                        transmissionTint(material) == Vec3{1, 1, 1};
     clear_.push_back(clear ? 1 : 0);
   }
-  if (!scene.geometry.bounds.empty()) onPlaneTolerance_ = 1e-6f * length(scene.geometry.bounds.extent());
+  onPlaneTolerance_ = onPlaneTolerance(scene);
 }
 
 MediumCrossing SceneQueries::crossingAt(std::uint32_t face, bool entering) const {
@@ -86,7 +123,7 @@ bool SceneQueries::shadowQuery(const Vec3& from, const Vec3& lightPosition, Ray&
 bool SceneQueries::notesTransparent(const void* context, const Ray& ray, std::uint32_t face, float t) {
   const CrossingNotes& notes = *static_cast<const CrossingNotes*>(context);
   const SceneQueries& queries = *notes.queries;
-  if (queries.anyMeshClips_ && !queries.meshClipFilter_(ray, face, t)) return false;
+  if (queries.anyMeshClips_ && !queries.meshShadowClipFilter_(ray, face, t)) return false;
   const bool leaving = dot(queries.scene_.geometry.faceNormals[face], ray.direction) > 0;
   if (queries.scene_.appearance.materials[queries.crossingAt(face, !leaving).shown].transparency <= 0.0f)
     return true;
@@ -197,13 +234,7 @@ const ClipPlane* SceneQueries::capPlane(const Ray& ray, const ClipInterval& kept
 }
 
 bool SceneQueries::liesOn(std::uint32_t face, const ClipPlane& plane) const {
-  const MeshFace& corners = scene_.geometry.faces[face];
-  for (const std::uint32_t v : corners.vertex) {
-    if (v == kNoVertex) break;
-    if (std::abs(dot(scene_.geometry.positions[v] - plane.point, plane.normal)) > onPlaneTolerance_)
-      return false;
-  }
-  return true;
+  return liesOnPlane(scene_, face, plane, onPlaneTolerance_);
 }
 
 bool SceneQueries::nearestHitOffPlane(const Ray& ray, const ClipInterval& kept, const ClipPlane& plane,

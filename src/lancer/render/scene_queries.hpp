@@ -80,7 +80,9 @@ class SceneQueries {
   const Accelerator& accelerator() const { return accelerator_; }
   bool anyTransparent() const { return anyTransparent_; }
   bool anyMeshClips() const { return anyMeshClips_; }
+  // The hits per-mesh clip planes keep: for rays that look (meshClipFilter) and for shadow rays.
   const HitFilter& meshClipFilter() const { return meshClipFilter_; }
+  const HitFilter& meshShadowClipFilter() const { return meshShadowClipFilter_; }
   const EnergySplit& splitOf(std::uint32_t material) const { return splits_[material]; }
   // Whether `face` lets every ray through unbent and untinted (transparency 1, ior 1, no absorption:
   // the surface the undeformed shape's edges are drawn on), so an integrator passes it as if it
@@ -97,7 +99,7 @@ class SceneQueries {
   }
   [[gnu::always_inline]] bool blocked(const Ray& ray, float tMin, float tMax) const {
     if (!anyMeshClips_) return accelerator_.occluded(ray, tMin, tMax);
-    return accelerator_.occluded(ray, tMin, tMax, meshClipFilter_);
+    return accelerator_.occluded(ray, tMin, tMax, meshShadowClipFilter_);
   }
 
   // What `ray` sees first; `known`: its first query, already answered. Without `withCatcher` the
@@ -166,8 +168,10 @@ class SceneQueries {
   const Scene& scene_;
   const Accelerator& accelerator_;
   bool anyTransparent_ = false;
-  bool anyMeshClips_ = false;        // some mesh has planes of its own: use the clipped queries
-  HitFilter meshClipFilter_;         // the hits those planes keep (FaceClipSets::keeps)
+  bool anyMeshClips_ = false;  // some mesh has planes of its own: use the clipped queries
+  // The hits those planes keep (FaceClipSets::keeps), past a face lying in the plane a ray enters
+  // its mesh's kept region by; for shadow rays, short of the plane they leave it by.
+  HitFilter meshClipFilter_, meshShadowClipFilter_;
   std::vector<EnergySplit> splits_;  // per material
   std::vector<std::uint8_t> clear_;  // per material: clearFace
   float onPlaneTolerance_ = 0;       // a millionth of the scene's diagonal

@@ -143,6 +143,14 @@ StepFrames planStepFrames(const SceneDescription& description, const std::vector
   return frames;
 }
 
+void holdStepColourRanges(SceneDescription& description, bool perStepRange) {
+  for (MeshInstance& mesh : description.meshes) {
+    if (mesh.colorBy && perStepRange) mesh.colorBy->perStepRange = true;
+    if (mesh.volumeSource && mesh.colorBy && !mesh.colorBy->range && !mesh.colorBy->perStepRange)
+      mesh.colorBy->range = volumeColourRange(*mesh.volumeSource, *mesh.colorBy);
+  }
+}
+
 StepScenes::StepScenes(SceneDescription description, std::vector<Mesh>& meshes,
                        const AnimationSettings& animation, AccelKind accel, int threads)
     : description_(std::move(description)),
@@ -153,11 +161,7 @@ StepScenes::StepScenes(SceneDescription description, std::vector<Mesh>& meshes,
   frames_ = planStepFrames(description_, meshes_, animation_);
   animation_.frames = frameCount();
   if (!animation_.degreesGiven) animation_.degrees = 0;  // the steps move; the camera stays unless asked
-  for (MeshInstance& mesh : description_.meshes) {
-    if (mesh.colorBy && animation_.perStepRange) mesh.colorBy->perStepRange = true;
-    if (mesh.volumeSource && mesh.colorBy && !mesh.colorBy->range && !mesh.colorBy->perStepRange)
-      mesh.colorBy->range = volumeColourRange(*mesh.volumeSource, *mesh.colorBy);
-  }
+  holdStepColourRanges(description_, animation_.perStepRange);
   // The camera frames every frame's shape: the union of the deformed bounds over the frames.
   const bool warped = anyWarp(description_);
   for (std::size_t k = 0; k < (warped ? frames_.times.size() : 1); ++k) {

@@ -36,6 +36,14 @@ struct StepFrames {
 StepFrames planStepFrames(const SceneDescription& description, const std::vector<Mesh>& meshes,
                           const AnimationSettings& animation);
 
+// The colour ranges an animation over steps holds fixed: every coloured mesh's per step with
+// `perStepRange` (range = "step"); else a coloured isosurface's or field line's the colouring field's
+// over every step in the whole volume, so that a colour means the same value in every frame as they
+// move. StepScenes applies it; prepareRender (render_preparation.hpp) applies it first to a scene it
+// prepares for steps, so that the legends it frames the model beside (and sizes tubes in pixels for)
+// are the frames' own.
+void holdStepColourRanges(SceneDescription& description, bool perStepRange);
+
 // Draws `text` into a corner of the frame (DejaVu Sans, dark with a white halo, a twentieth of the
 // frame's height).
 void drawFrameLabel(Image& image, const std::string& text, LabelPosition position);

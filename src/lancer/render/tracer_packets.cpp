@@ -106,7 +106,7 @@ void traceAhead(const SceneQueries& queries, std::span<const Ray, kPacketSize> r
     SceneQueries::ShadowCrossings notes[kPacketSize];
     std::uint32_t blocked;
     if (!queries.anyTransparent()) {
-      blocked = queries.anyMeshClips() ? accelerator.occluded(shadow, traced, queries.meshClipFilter())
+      blocked = queries.anyMeshClips() ? accelerator.occluded(shadow, traced, queries.meshShadowClipFilter())
                                        : accelerator.occluded(shadow, traced);
     } else {
       for (std::uint32_t lanes = traced; lanes != 0; lanes &= lanes - 1)
