@@ -144,7 +144,7 @@ void sumVertexNormals(std::span<const MeshFace> faces, std::size_t vertexCount, 
 // Appends the normals of a vertex with faces to `normals`: one, its sum, when the vertex is smooth
 // (returns true: every corner takes it), else one per set of corners smoothed together, each corner
 // of `row` (its corners, face << 2 | corner; needed when it must walk or its faces cancel) told its
-// normal's index by setCorner(code, index) (returns false).
+// normal's index by setCorner(slot in row, index) (returns false).
 template <typename SetCorner>
 bool appendVertexNormals(const VertexSum& at, std::span<const std::uint32_t> row, const FaceTerms& terms,
                          std::vector<Vec3>& normals, SetCorner&& setCorner) {
@@ -200,7 +200,7 @@ bool appendVertexNormals(const VertexSum& at, std::span<const std::uint32_t> row
       }
     }
     if (index == normals.size()) normals.push_back(normal);
-    setCorner(row[slot], index);
+    setCorner(slot, index);
   }
   return false;
 }
@@ -258,8 +258,10 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
                                   .subspan(rowStart[v], rowStart[v + 1] - rowStart[v]);
   };
 
-  CornerNormals result;
-  result.faceCorner = vectorOnHugePages<std::array<std::uint32_t, 4>>(faceCount, {0, 0, 0, 0});
+  // The walked vertices' corners' normals, in step with vertexCorners.corner (chunk-local indices
+  // until the lists are concatenated): the faces' corners are allocated only once the sums and
+  // weights are given back.
+  std::vector<std::uint32_t> cornerNormal(vertexCorners.corner.size());
   // Per vertex: the index of its one normal, or kPerCorner when its corners were given theirs.
   constexpr std::uint32_t kPerCorner = 0xFFFFFFFFu;
   std::vector<std::uint32_t> vertexNormal(vertexCount, kPerCorner);
@@ -268,16 +270,26 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
   const ChunkPlan plan(vertexCount, kGrain);
   std::vector<std::vector<Vec3>> chunkNormals(plan.chunks);
   parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t firstVertex, std::size_t endVertex) {
+    // Room for the most a chunk can append (one normal per vertex, one per corner of a walked
+    // vertex): a list that outgrew a guess would hold its old and new capacity at once.
+    std::size_t most = 0;
+    for (std::size_t v = firstVertex; v < endVertex; ++v) most += walks[v] ? rowOf(v).size() : 1;
     std::vector<Vec3>& normals = chunkNormals[chunk];
-    normals.reserve(endVertex - firstVertex);
+    normals.reserve(most);
     for (auto v = static_cast<std::uint32_t>(firstVertex); v < endVertex; ++v) {
       if (vertexSum[v].faces == 0) continue;
       const bool one = appendVertexNormals(
           vertexSum[v], walks[v] ? rowOf(v) : std::span<const std::uint32_t>{}, terms, normals,
-          [&](std::uint32_t code, std::uint32_t index) { result.faceCorner[code >> 2][code & 3u] = index; });
+          [&](std::uint32_t slot, std::uint32_t index) { cornerNormal[rowStart[v] + slot] = index; });
       if (one) vertexNormal[v] = static_cast<std::uint32_t>(normals.size() - 1);
     }
   });
+  // The sums and weights are done with: given back before the faces' corners and the whole list are
+  // allocated, which then take their pages (util/huge_page_blocks.hpp) instead of adding to the peak.
+  std::vector<VertexSum>().swap(vertexSum);
+  std::vector<std::array<float, 4>>().swap(cornerWeight);
+  CornerNormals result;
+  result.faceCorner = vectorOnHugePages<std::array<std::uint32_t, 4>>(faceCount, {0, 0, 0, 0});
   // Concatenate, and turn each chunk's local indices into indices into the whole list.
   std::vector<std::uint32_t> chunkBase(plan.chunks + 1, 0);
   for (std::size_t k = 0; k < plan.chunks; ++k)
@@ -291,8 +303,11 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
         vertexNormal[v] += chunkBase[chunk];
         continue;
       }
-      if (chunkBase[chunk] == 0 || vertexSum[v].faces == 0) continue;
-      for (const std::uint32_t code : rowOf(v)) result.faceCorner[code >> 2][code & 3u] += chunkBase[chunk];
+      if (!walks[v]) continue;
+      const std::span<const std::uint32_t> row = rowOf(v);
+      for (std::size_t slot = 0; slot < row.size(); ++slot)
+        result.faceCorner[row[slot] >> 2][row[slot] & 3u] =
+            cornerNormal[rowStart[v] + slot] + chunkBase[chunk];
     }
   });
   // The corners of smooth vertices, in face order.
@@ -447,7 +462,8 @@ NormalsUpdate updateCornerNormals(std::span<const Vec3> positions, const CornerN
         const auto [low, high] = heldIndices(row);
         own.clear();
         bool same = low == next;
-        appendVertexNormals(walkedSum(row), row, terms, own, [&](std::uint32_t code, std::uint32_t index) {
+        appendVertexNormals(walkedSum(row), row, terms, own, [&](std::uint32_t slot, std::uint32_t index) {
+          const std::uint32_t code = row[slot];
           same = same && faceCorner[code >> 2][code & 3u] - mesh.normalBase == next + index;
         });
         if (!same || own.size() != high - low + 1) {  // (one normal: own.size() is 1)

@@ -2,6 +2,7 @@
 // render settings, camera, lights, materials and the mesh instances that use them.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,7 +25,8 @@ struct VolumeMesh;  // mesh/volume/volume_mesh.hpp
 enum class Projection { Perspective, Orthographic };
 // flat, gouraud, phong: the lighting model (docs/rendering.md); unlit: the material's diffuse colour
 // or the field's colour as it is, no lights, no shadows (a colour map that reads as its legend).
-enum class ShadingMode { Flat, Gouraud, Phong, Unlit };
+// One byte: the scene keeps one per face (Scene::appearance.faceShading).
+enum class ShadingMode : std::uint8_t { Flat, Gouraud, Phong, Unlit };
 enum class SamplerKind { Regular, Stratified, Adaptive };
 // How light is carried (docs/lighting.md): the classic Whitted model, unidirectional path tracing,
 // or ambient occlusion.
