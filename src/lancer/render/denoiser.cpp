@@ -281,6 +281,21 @@ float estimateNoiseOf(const std::vector<Vec3>& light, const std::vector<Guide>& 
   return *middle / 0.6745f;  // the median absolute deviation of a normal distribution
 }
 
+// The root mean of the pixels' own variances where their samples spread (0 where none is known). A
+// path tracer's noise has heavy tails: the median above finds the typical pixel's deviation, well
+// below the mean square that the colour weights must accept (on the studio look at 8 samples, 0.034
+// against 0.080, and 0.0094 against 0.0047 display RMSE after filtering).
+float rootMeanVariance(const std::vector<float>& variance) {
+  double sum = 0;
+  std::size_t count = 0;
+  for (const float v : variance)
+    if (v > 0.0f) {
+      sum += v;
+      ++count;
+    }
+  return count > 0 ? static_cast<float>(std::sqrt(sum / static_cast<double>(count))) : 0.0f;
+}
+
 // Demodulated radiance and the albedo it was divided by (1 where the albedo is too dark).
 void demodulate(const Image& image, const FeatureBuffers& f, std::vector<Vec3>& light,
                 std::vector<Vec3>& divisor) {
@@ -319,7 +334,8 @@ Image denoise(const Image& noisy, const FeatureBuffers& features, const DenoiseO
   radiance.reserve(light.size());
   for (const Rgba& c : noisy.pixels()) radiance.push_back(c.rgb());
   // A floor keeps the colour weight finite on a noiseless image (it then keeps equal colours only).
-  const float noise = std::max(estimateNoiseOf(radiance, guides, width, height), 1e-5f);
+  const float noise = std::max(
+      {estimateNoiseOf(radiance, guides, width, height), rootMeanVariance(features.variance), 1e-5f});
 
   const GuidePlanes planes(guides, options);
   // Per pixel: the noise level squared over the pixel's own (its samples' spread, where it is known
