@@ -6,12 +6,16 @@
 // reference's own noise estimated from the two references (nested Sobol' prefixes: the difference of
 // the n/4- and n-sample means has variance 3 sigma^2 / n) and subtracted.
 //   build/bench/look_reference MESH CANDIDATE.exr[,MORE.exr] LOOK WIDTH HEIGHT BANDS SAMPLES THREADS
+// LOOK_REFERENCE_CACHE=DIR keeps the references rendered (an EXR per band and sample count) for
+// the next run.
 //   e.g. look_reference bench/data/bracket_1m.msh studio.exr studio 1920 1080 8,17,25 1024 2
 #include <fmt/format.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -86,12 +90,24 @@ int run(int argc, char** argv) {
   for (const int band : bands) {
     std::vector<Image> references;
     for (const int n : {samples / 4, samples}) {
+      // LOOK_REFERENCE_CACHE=DIR keeps each band's reference as an EXR there, for the next candidates.
+      const char* cache = std::getenv("LOOK_REFERENCE_CACHE");
+      const std::string cached = cache == nullptr
+                                     ? std::string()
+                                     : fmt::format("{}/{}-{}-{}x{}-band{}-{}.exr", cache,
+                                                   std::filesystem::path(meshPath).stem().string(), lookName,
+                                                   width, height, band, n);
+      if (!cached.empty() && std::filesystem::exists(cached)) {
+        references.push_back(readExr(cached));
+        continue;
+      }
       RenderSettings settings = prepared.settings();
       settings.samples = n;
       settings.noise = 0;
       settings.denoise = false;
       references.push_back(Renderer(prepared.scene, prepared.accelerator, prepared.camera, settings)
                                .renderRows(BandRange{band, 1}, options));
+      if (!cached.empty()) writeExr(cached, references.back());
     }
     const Image& reference = references[1];
     for (int y = 0; y < reference.height(); ++y)

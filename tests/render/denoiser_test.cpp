@@ -111,6 +111,36 @@ TEST(Denoiser, LeavesACleanImageAlmostAsItIs) {
   EXPECT_LT(rootMeanSquareDifference(denoise(clean, features), clean), 1e-3);
 }
 
+// A plane with noise of deviation 0.04 and, every 8 pixels, a firefly: one sample of 40 among 8,
+// a pixel at 5 whose samples spread as much (the variance the path tracer reports), the others'
+// variance that of their noise. Returns the largest error at a firefly after denoising.
+float worstFireflyError(bool varianceKnown) {
+  Image clean;
+  FeatureBuffers features;
+  makeScene(Side{}, Side{}, clean, features);
+  Image noisy = test::withSeededNoise(clean, 0.04f);
+  constexpr float kFirefly = 5.0f;
+  for (int y = 4; y < kSize; y += 8)
+    for (int x = 4; x < kSize; x += 8) noisy.setRgb(x, y, Vec3{1, 1, 1} * kFirefly);
+  if (varianceKnown)
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x)
+        features.variance[features.index(x, y)] =
+            noisy.at(x, y).r == kFirefly ? kFirefly * kFirefly * 7 / 8 : 0.04f * 0.04f;
+  const Image denoised = denoise(noisy, features);
+  float worst = 0;
+  for (int y = 4; y < kSize; y += 8)
+    for (int x = 4; x < kSize; x += 8) worst = std::max(worst, std::abs(denoised.at(x, y).r - 0.5f));
+  return worst;
+}
+
+TEST(Denoiser, TakesInAFireflyWhoseSamplesSpreadWide) {
+  // Its own variance lets the pixel take its neighbours in; without it (no variance from the
+  // samples), a firefly is a colour edge far above the noise and stays.
+  EXPECT_LT(worstFireflyError(true), 0.1f);
+  EXPECT_GT(worstFireflyError(false), 1.0f);
+}
+
 // A render of two squares, the upper one shadowing the lower, in two colours: the clean render's
 // own feature buffers guide the denoiser of its noisy copy.
 struct RenderedScene {

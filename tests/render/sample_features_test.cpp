@@ -104,6 +104,27 @@ TEST(SampleFeatures, LeaveTheRadianceAsItIsAndTheSameForAnyThreadCount) {
   EXPECT_EQ(one.albedo, two.albedo);
   EXPECT_EQ(one.normal, two.normal);
   EXPECT_EQ(one.depth, two.depth);
+  EXPECT_EQ(one.variance, two.variance);
+}
+
+TEST(SampleFeatures, CarryEachPixelsVarianceWhereTheSamplesKnowIt) {
+  const TwoSquares scene(IntegratorKind::Path);
+  const Renderer renderer = scene.renderer();
+  FeatureBuffers fromSamples(48, 48);
+  renderWithFeatures(renderer, fromSamples, 0);
+  const FeatureBuffers pass = renderer.renderFeatures(0);
+  // The background is one colour for every sample: no spread. The lit squares' soft shadows and
+  // sampled lights spread their samples: some variance, within reason for values below a few units.
+  EXPECT_EQ(fromSamples.variance[fromSamples.index(0, 0)], 0.0f);
+  int spread = 0;
+  for (const float v : fromSamples.variance) {
+    EXPECT_GE(v, 0.0f);
+    EXPECT_LT(v, 1.0f);
+    spread += v > 0.0f;
+  }
+  EXPECT_GT(spread, 48 * 48 / 4);
+  // The primary-ray pass has no samples' spread to give: unknown everywhere.
+  for (const float v : pass.variance) EXPECT_LT(v, 0.0f);
 }
 
 TEST(SampleFeatures, TheFinalRenderDenoisesWithTheSamplesFeatures) {

@@ -153,7 +153,8 @@ struct Lanes {
 // background. Taps are taken row by row of the kernel, for four of the row's pixels at a time (SSE2,
 // the x86-64 baseline); the normal power other than the default 128 takes a pow per lane.
 void filterRow(int y, int width, int height, int step, float colorScale, const GuidePlanes& g,
-               const LightPlanes& in, const LightPlanes& scale, RowSums& sums, LightPlanes& out) {
+               const LightPlanes& in, const LightPlanes& scale, const float* pixelScale, RowSums& sums,
+               LightPlanes& out) {
   const float albedoScale = g.albedoScale, normalPower = g.normalPower;
   const bool power128 = g.power128;
   float* sumR = sums.r.data();
@@ -201,9 +202,10 @@ void filterRow(int y, int width, int height, int step, float colorScale, const G
             _mm_add_ps(_mm_add_ps(_mm_mul_ps(slopeX.at(p), dx), _mm_mul_ps(slopeY.at(p), dy)), floor.at(p)),
             _mm_set1_ps(1e-30f));
         const __m128 depthGap = _mm_andnot_ps(signBits, _mm_sub_ps(depth.at(p), depth.at(q)));
-        const __m128 exponent = _mm_add_ps(_mm_add_ps(_mm_mul_ps(colour, _mm_set1_ps(colorScale)),
-                                                      _mm_mul_ps(albedo, _mm_set1_ps(albedoScale))),
-                                           _mm_div_ps(depthGap, expected));
+        const __m128 exponent = _mm_add_ps(
+            _mm_add_ps(_mm_mul_ps(_mm_mul_ps(colour, _mm_loadu_ps(pixelScale + p)), _mm_set1_ps(colorScale)),
+                       _mm_mul_ps(albedo, _mm_set1_ps(albedoScale))),
+            _mm_div_ps(depthGap, expected));
         const __m128 cosine = _mm_max_ps(
             zero, _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx.at(p), nx.at(q)), _mm_mul_ps(ny.at(p), ny.at(q))),
                              _mm_mul_ps(nz.at(p), nz.at(q))));
@@ -279,6 +281,21 @@ float estimateNoiseOf(const std::vector<Vec3>& light, const std::vector<Guide>& 
   return *middle / 0.6745f;  // the median absolute deviation of a normal distribution
 }
 
+// The root mean of the pixels' own variances where their samples spread (0 where none is known). A
+// path tracer's noise has heavy tails: the median above finds the typical pixel's deviation, well
+// below the mean square that the colour weights must accept (on the studio look at 8 samples, 0.034
+// against 0.080, and 0.0094 against 0.0047 display RMSE after filtering).
+float rootMeanVariance(const std::vector<float>& variance) {
+  double sum = 0;
+  std::size_t count = 0;
+  for (const float v : variance)
+    if (v > 0.0f) {
+      sum += v;
+      ++count;
+    }
+  return count > 0 ? static_cast<float>(std::sqrt(sum / static_cast<double>(count))) : 0.0f;
+}
+
 // Demodulated radiance and the albedo it was divided by (1 where the albedo is too dark).
 void demodulate(const Image& image, const FeatureBuffers& f, std::vector<Vec3>& light,
                 std::vector<Vec3>& divisor) {
@@ -317,9 +334,16 @@ Image denoise(const Image& noisy, const FeatureBuffers& features, const DenoiseO
   radiance.reserve(light.size());
   for (const Rgba& c : noisy.pixels()) radiance.push_back(c.rgb());
   // A floor keeps the colour weight finite on a noiseless image (it then keeps equal colours only).
-  const float noise = std::max(estimateNoiseOf(radiance, guides, width, height), 1e-5f);
+  const float noise = std::max(
+      {estimateNoiseOf(radiance, guides, width, height), rootMeanVariance(features.variance), 1e-5f});
 
   const GuidePlanes planes(guides, options);
+  // Per pixel: the noise level squared over the pixel's own (its samples' spread, where it is known
+  // and larger): a pixel far noisier than the picture (a firefly) then takes its neighbours in.
+  std::vector<float> pixelScale(light.size() + kPadding, 1.0f);
+  if (!features.variance.empty())
+    for (std::size_t k = 0; k < light.size(); ++k)
+      if (features.variance[k] > noise * noise) pixelScale[k] = noise * noise / features.variance[k];
   LightPlanes current(light), next(light.size());
   const LightPlanes scale(divisor);
   for (int pass = 0; pass < options.passes; ++pass) {
@@ -331,7 +355,7 @@ Image denoise(const Image& noisy, const FeatureBuffers& features, const DenoiseO
                      RowSums sums(width);
                      for (std::size_t row = begin; row < end; ++row)
                        filterRow(static_cast<int>(row), width, height, step, colorScale, planes, current,
-                                 scale, sums, next);
+                                 scale, pixelScale.data(), sums, next);
                    });
     std::swap(current, next);
   }

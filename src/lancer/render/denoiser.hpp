@@ -9,6 +9,10 @@
 // from the centre's (at the centre's albedo): colour differences are measured against the image's noise
 // level, estimated robustly (median absolute deviation of the finest wavelet detail, Donoho and
 // Johnstone 1994), so a shadow edge far above the noise stays sharp and a clean image barely changes.
+// Where the features carry each pixel's own variance (the path tracer's samples) and it exceeds that
+// level, the pixel's colour differences are measured against its own deviation instead (as SVGF's
+// luminance weight, section 4.3): a firefly, a colour edge far above the picture's noise but not
+// above its own samples' spread, takes its neighbours in instead of staying.
 #pragma once
 
 #include "lancer/image/image.hpp"

@@ -20,6 +20,9 @@ struct FeatureBuffers {
   std::vector<Vec3> albedo;  // the colour the surface multiplies light by (kd, the field colour, edges)
   std::vector<Vec3> normal;  // world space, towards the viewer; not renormalised after averaging
   std::vector<float> depth;  // world units from the eye along the ray (orthographic: from the view plane)
+  // The variance of the pixel's mean luminance, from the spread of its samples (the path tracer's);
+  // negative where the pass that made the features did not know it.
+  std::vector<float> variance;
 
   FeatureBuffers() = default;
   FeatureBuffers(int w, int h)
@@ -27,11 +30,20 @@ struct FeatureBuffers {
         height(h),
         albedo(static_cast<std::size_t>(w) * static_cast<std::size_t>(h)),
         normal(albedo.size()),
-        depth(albedo.size()) {}
+        depth(albedo.size()),
+        variance(albedo.size(), -1.0f) {}
   std::size_t index(int x, int y) const {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
   }
 };
+
+// The variance of the mean of `samples` values from their sum and the sum of their squares; negative
+// (unknown) for a single sample.
+inline float varianceOfMean(int samples, double sum, double squares) {
+  if (samples < 2) return -1.0f;
+  const double spread = squares - sum * sum / samples;
+  return static_cast<float>((spread > 0 ? spread : 0.0) / (static_cast<double>(samples) * (samples - 1)));
+}
 
 // One camera sample's view of the first surface.
 struct SurfaceFeatures {

@@ -166,7 +166,11 @@ Rgba PixelLoop<Integrator>::streamPixel(int x, int y, TraceCounters& counters, s
     }
   }
   samples += static_cast<std::uint64_t>(n);
-  if (features_ != nullptr) featureSum.store(*features_, features_->index(x, y), n);
+  if (features_ != nullptr) {
+    const std::size_t k = features_->index(x, y);
+    featureSum.store(*features_, k, n);
+    features_->variance[k] = varianceOfMean(n, luminanceSum, luminanceSquares);
+  }
   const float weight = 1.0f / static_cast<float>(n);
   const float alpha = settings_.transparentBackground ? alphaSum * weight : 1.0f;
   return toRgba(sum * weight, alpha);
