@@ -78,8 +78,8 @@ TEST(Bvh, LayoutInvariants) {
           for (int c = 0; c < 3; ++c) ++used[leaf.corner(i, c)];
           for (const Vec3& p : {tri.v0, tri.v1, tri.v2}) {
             for (int a = 0; a < 3; ++a) {
-              EXPECT_GE(p[a], node.lowerPlane(a, k));
-              EXPECT_LE(p[a], node.upperPlane(a, k));
+              EXPECT_GE(p[a], node.lower[a][k]);
+              EXPECT_LE(p[a], node.upper[a][k]);
             }
           }
           ASSERT_LT(tri.face, soup.faces.size());
@@ -187,19 +187,13 @@ TEST(Bvh, RefitAnswersAsARebuildAndBruteForce) {
 }
 
 // The boxes of every child of every node (the BVH's planes, as the kd-tree's split planes are the
-// kd-tree's), and every leaf's exact box.
+// kd-tree's).
 std::vector<Aabb> childBoxes(const Bvh& bvh) {
   std::vector<Aabb> boxes;
   for (const BvhNode& node : bvh.nodes()) {
     for (int k = 0; k < BvhNode::kWidth && node.child[k] != BvhNode::kEmpty; ++k) {
-      boxes.push_back(node.box(k));
-      // A leaf's exact box too: the quantized one holds it, and rays grazing it must still hit.
-      if (BvhNode::isLeaf(node.child[k])) {
-        const bvh::BvhLeaf leaf = bvh.leaf(node.child[k]);
-        Aabb exact;
-        for (std::uint32_t v = 0; v < leaf.vertexCount(); ++v) exact.extend(leaf.vertex(v));
-        boxes.push_back(exact);
-      }
+      boxes.push_back({{node.lower[0][k], node.lower[1][k], node.lower[2][k]},
+                       {node.upper[0][k], node.upper[1][k], node.upper[2][k]}});
     }
   }
   return boxes;

@@ -59,13 +59,6 @@ struct BoxRay8 {
   }
 };
 
-// Eight bytes of planes as floats (BvhNode::plane: a multiply, then an add).
-inline __m256 planes(const std::uint8_t* q, float origin, float scale) {
-  const __m256 bytes =
-      _mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(q))));
-  return _mm256_add_ps(_mm256_set1_ps(origin), _mm256_mul_ps(bytes, _mm256_set1_ps(scale)));
-}
-
 // The children whose grown box the ray meets within [tMin, tFar], with where it enters each. A NaN
 // (0 * inf: a ray parallel to a slab, on its plane) never narrows the span (maxps and minps return
 // their second operand then).
@@ -73,18 +66,16 @@ inline std::uint32_t hitChildren(const BvhNode& node, const BoxRay8& r, __m256 t
                                  __m256& tNear) {
   __m256 enter = tMin, exit = tFar;
   for (int a = 0; a < 3; ++a) {
-    const std::uint8_t* nearPlane = r.nearIsUpper[a] ? node.upper[a] : node.lower[a];
-    const std::uint8_t* farPlane = r.nearIsUpper[a] ? node.lower[a] : node.upper[a];
-    const __m256 t0 = _mm256_mul_ps(
-        _mm256_sub_ps(planes(nearPlane, node.origin[a], node.scale[a]), r.nearEdge[a]), r.invDirection[a]);
-    const __m256 t1 = _mm256_mul_ps(
-        _mm256_sub_ps(planes(farPlane, node.origin[a], node.scale[a]), r.farEdge[a]), r.invDirection[a]);
+    const float* nearPlane = r.nearIsUpper[a] ? node.upper[a] : node.lower[a];
+    const float* farPlane = r.nearIsUpper[a] ? node.lower[a] : node.upper[a];
+    const __m256 t0 =
+        _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(nearPlane), r.nearEdge[a]), r.invDirection[a]);
+    const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(farPlane), r.farEdge[a]), r.invDirection[a]);
     enter = _mm256_max_ps(t0, enter);
     exit = _mm256_min_ps(t1, exit);
   }
   tNear = enter;
-  return static_cast<std::uint32_t>(_mm256_movemask_ps(_mm256_cmp_ps(enter, exit, _CMP_LE_OQ))) &
-         node.usedMask();
+  return static_cast<std::uint32_t>(_mm256_movemask_ps(_mm256_cmp_ps(enter, exit, _CMP_LE_OQ)));
 }
 
 #endif
@@ -93,11 +84,11 @@ inline std::uint32_t hitChildren(const BvhNode& node, const BoxRay8& r, __m256 t
 inline std::uint32_t hitChildrenScalar(const BvhNode& node, const BoxRay& r, float tMin, float tFar,
                                        float* tNear) {
   std::uint32_t mask = 0;
-  for (int k = 0; k < int(node.used); ++k) {
+  for (int k = 0; k < BvhNode::kWidth; ++k) {
     float enter = tMin, exit = tFar;
     for (int a = 0; a < 3; ++a) {
-      const float nearPlane = r.towardsMinus[a] ? node.upperPlane(a, k) : node.lowerPlane(a, k);
-      const float farPlane = r.towardsMinus[a] ? node.lowerPlane(a, k) : node.upperPlane(a, k);
+      const float nearPlane = r.towardsMinus[a] ? node.upper[a][k] : node.lower[a][k];
+      const float farPlane = r.towardsMinus[a] ? node.lower[a][k] : node.upper[a][k];
       const float t0 = (nearPlane - r.nearEdge[a]) * r.invDirection[a];
       const float t1 = (farPlane - r.farEdge[a]) * r.invDirection[a];
       enter = t0 > enter ? t0 : enter;

@@ -32,11 +32,11 @@ using namespace bvh;
 
 namespace {
 
-// A new node's children's boxes (BvhNode::setBoxes quantizes them against their union).
-void setBoxes(BvhNode& node, const Range* child, int count) {
-  Aabb boxes[BvhNode::kWidth];
-  for (int k = 0; k < count; ++k) boxes[k] = child[k].bounds.aabb();
-  node.setBoxes(boxes, count);
+void setLane(BvhNode& node, int k, const Box& box) {
+  for (int a = 0; a < 3; ++a) {
+    node.lower[a][k] = box.lo[a];
+    node.upper[a][k] = box.hi[a];
+  }
 }
 
 // What a subtree adds to the statistics (summed in cluster order: the same on any thread count).
@@ -116,10 +116,11 @@ struct BvhBuilder {
     Range child[BvhNode::kWidth];
     const int count = collapse(top.data(), range, child, LeafRule::SingleReference);
     const auto index = static_cast<std::uint32_t>(bvh_.nodes_.size());
-    setBoxes(bvh_.nodes_.emplace_back(), child, count);
+    bvh_.nodes_.emplace_back().clear();
     ++topCounts_.nodes;
     topCounts_.depth = std::max<std::uint64_t>(topCounts_.depth, depth);
     for (int k = 0; k < count; ++k) {
+      setLane(bvh_.nodes_[index], k, child[k].bounds);
       if (child[k].split.kind == SplitKind::Leaf) {
         ClusterSlot& slot = slots_[top[child[k].begin].face];
         slot.range.depth = child[k].depth;
@@ -142,10 +143,11 @@ struct BvhBuilder {
     Range child[BvhNode::kWidth];
     const int count = collapse(refs_.data(), range, child, LeafRule::BySah);
     const std::size_t index = out.size();
-    setBoxes(out.emplace_back(), child, count);
+    out.emplace_back().clear();
     ++counts.nodes;
     counts.depth = std::max(counts.depth, depth);
     for (int k = 0; k < count; ++k) {
+      setLane(out[index], k, child[k].bounds);
       std::uint32_t code;
       if (child[k].split.kind == SplitKind::Leaf) {
         code = leafOf(child[k], scratch.leaves, leafStart, counts);
@@ -304,7 +306,8 @@ struct BvhBuilder {
     buildClusters(threads);
     if (count == 1 && BvhNode::isLeaf(slots_[0].code)) {
       // A single leaf: the root holds it.
-      setBoxes(bvh_.nodes_.emplace_back(), &slots_[0].range, 1);
+      bvh_.nodes_.emplace_back().clear();
+      setLane(bvh_.nodes_[0], 0, slots_[0].range.bounds);
       ++topCounts_.nodes;
     }
     // Each cluster into the lane that holds it (with one cluster of nodes, its root is the tree's).

@@ -96,10 +96,10 @@ std::uint32_t walkPacket(std::span<const BvhNode> nodes, const std::uint64_t* le
       for (int k = 0; k < BvhNode::kWidth && node.child[k] != BvhNode::kEmpty; ++k) {
         __m256 enter = boxes.tMin, exit = limit;
         for (int a = 0; a < 3; ++a) {
-          const __m256 t0 = _mm256_mul_ps(
-              _mm256_sub_ps(_mm256_set1_ps(node.lowerPlane(a, k)), boxes.lowEdge[a]), f.invDirection[a]);
-          const __m256 t1 = _mm256_mul_ps(
-              _mm256_sub_ps(_mm256_set1_ps(node.upperPlane(a, k)), boxes.highEdge[a]), f.invDirection[a]);
+          const __m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(node.lower[a][k]), boxes.lowEdge[a]),
+                                          f.invDirection[a]);
+          const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(node.upper[a][k]), boxes.highEdge[a]),
+                                          f.invDirection[a]);
           enter = _mm256_max_ps(_mm256_min_ps(t0, t1), enter);
           exit = _mm256_min_ps(_mm256_max_ps(t0, t1), exit);
         }

@@ -96,11 +96,11 @@ bool regatherLeaf(std::uint64_t* words, std::uint32_t count, std::span<const Vec
 }  // namespace
 
 bool Bvh::refit(std::span<const Vec3> positions, std::span<const MeshFace> faces, int threads) {
-  // Leaf by leaf on every thread: the triangles gathered again; then every node's boxes, backwards,
-  // from its leaves' vertices and its inner children's exact boxes (`nodeBox`), quantized once.
+  // Leaf by leaf on every thread: the triangles gathered again and the leaf's box from them while
+  // they are at hand; then the inner children, backwards.
   std::atomic<bool> ok{true};
   parallelFor(nodes_.size(), threads, 256, [&](std::size_t n) {
-    const BvhNode& node = nodes_[n];
+    BvhNode& node = nodes_[n];
     for (int k = 0; k < BvhNode::kWidth; ++k) {
       const std::uint32_t child = node.child[k];
       if (child == BvhNode::kEmpty || !BvhNode::isLeaf(child)) continue;
@@ -108,34 +108,41 @@ bool Bvh::refit(std::span<const Vec3> positions, std::span<const MeshFace> faces
       if (!regatherLeaf(leaves_.data() + BvhNode::leafFirst(child), BvhNode::leafCount(child), positions,
                         faces, box))
         ok = false;
+      for (int a = 0; a < 3; ++a) {
+        node.lower[a][k] = box.lower[a] + 0.0f;
+        node.upper[a][k] = box.upper[a] + 0.0f;
+      }
     }
   });
   Aabb sliverBox;
   if (!ok || !regather(slivers_.data(), slivers_.size(), positions, faces, false, sliverBox)) return false;
-  std::vector<Aabb> nodeBox(nodes_.size());
   for (std::size_t n = nodes_.size(); n-- > 0;) {
     BvhNode& node = nodes_[n];
-    Aabb boxes[BvhNode::kWidth];
-    std::uint32_t children[BvhNode::kWidth];
-    std::copy(node.child, node.child + BvhNode::kWidth, children);
-    const int count = static_cast<int>(node.used);
-    for (int k = 0; k < count; ++k) {
-      const std::uint32_t child = children[k];
-      if (BvhNode::isLeaf(child)) {
-        const bvh::BvhLeaf leaf = this->leaf(child);
-        for (std::uint32_t v = 0; v < leaf.vertexCount(); ++v) boxes[k].extend(leaf.vertex(v));
-      } else {
-        boxes[k] = nodeBox[child];
+    for (int k = 0; k < BvhNode::kWidth; ++k) {
+      const std::uint32_t child = node.child[k];
+      if (child == BvhNode::kEmpty || BvhNode::isLeaf(child)) continue;
+      const BvhNode& below = nodes_[child];
+      for (int a = 0; a < 3; ++a) {
+        float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+        for (int c = 0; c < BvhNode::kWidth; ++c) {
+          lo = std::min(lo, below.lower[a][c]);
+          hi = std::max(hi, below.upper[a][c]);
+        }
+        node.lower[a][k] = lo;
+        node.upper[a][k] = hi;
       }
-      nodeBox[n].extend(boxes[k]);
     }
-    if (count == 0) continue;
-    node.setBoxes(boxes, count);
-    std::copy(children, children + BvhNode::kWidth, node.child);
   }
-  // The root's box holds every leaf's triangles (the build's bounds: the slivers, tested for every
-  // ray, are not in it).
-  setBounds(nodes_.empty() || nodes_[0].used == 0 ? Aabb{} : nodeBox[0]);
+  // The root's children hold the boxes of every leaf's triangles (the build's bounds: the slivers,
+  // tested for every ray, are not in them).
+  Aabb box;
+  if (!nodes_.empty())
+    for (int k = 0; k < BvhNode::kWidth; ++k)
+      if (nodes_[0].child[k] != BvhNode::kEmpty) {
+        box.extend(Vec3{nodes_[0].lower[0][k], nodes_[0].lower[1][k], nodes_[0].lower[2][k]});
+        box.extend(Vec3{nodes_[0].upper[0][k], nodes_[0].upper[1][k], nodes_[0].upper[2][k]});
+      }
+  setBounds(box);
   stats_.sahCost = sahCost();
   return true;
 }
@@ -143,8 +150,8 @@ bool Bvh::refit(std::span<const Vec3> positions, std::span<const MeshFace> faces
 double Bvh::sahCost() const {
   if (nodes_.empty()) return 0.0;
   auto area = [](const BvhNode& node, int k) {
-    const Aabb box = node.box(k);
-    const float x = box.upper.x - box.lower.x, y = box.upper.y - box.lower.y, z = box.upper.z - box.lower.z;
+    const float x = node.upper[0][k] - node.lower[0][k], y = node.upper[1][k] - node.lower[1][k],
+                z = node.upper[2][k] - node.lower[2][k];
     return x < 0 ? 0.0 : 2.0 * (double(x) * y + double(y) * z + double(z) * x);
   };
   // Each node's area is the union of its children's boxes, which its parent holds.
@@ -154,7 +161,8 @@ double Bvh::sahCost() const {
     const BvhNode& node = nodes_[0];
     for (int k = 0; k < BvhNode::kWidth; ++k) {
       if (node.child[k] == BvhNode::kEmpty) continue;
-      root.extend(node.box(k));
+      root.extend(Vec3{node.lower[0][k], node.lower[1][k], node.lower[2][k]});
+      root.extend(Vec3{node.upper[0][k], node.upper[1][k], node.upper[2][k]});
     }
     nodeArea[0] = root.empty() ? 0.0 : double(root.surfaceArea());
   }
