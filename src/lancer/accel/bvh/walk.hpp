@@ -53,8 +53,9 @@ std::uint32_t pushChildren(const BvhNode& node, std::uint32_t mask, const float*
   }
 }
 
-// Asks for the first lines of every child the ray meets: the walk will visit most of them, and their
-// misses then overlap instead of following one another.
+// Asks for the first lines of every child the ray meets (the walks with several rays in flight,
+// bvh/batch_traversal.cpp): the walk will visit most of them, and their misses then overlap the other
+// rays' work. The single-ray walk does not: there it measured 6% slower on incoherent rays at 1M.
 inline void prefetchChildren(const BvhNode& node, std::uint32_t mask, std::span<const BvhNode> nodes,
                              const std::uint64_t* leaves) {
   for (; mask != 0; mask &= mask - 1) {
@@ -95,7 +96,6 @@ bool walkFrom(std::uint32_t start, std::span<const BvhNode> nodes, const std::ui
         if ((mask & (mask - 1)) == 0) {
           child = node.child[std::countr_zero(mask)];
         } else {
-          prefetchChildren(node, mask, nodes, leaves);
           child = pushChildren<!Query::kAnyHit>(node, mask, tNear, stack, top);
         }
         continue;
