@@ -357,6 +357,51 @@ inline void registerLancerPackets(const std::string& kind, const std::string& me
   });
 }
 
+// The BVH's closest hits of independent rays with several in flight (Bvh::intersect of a span of rays),
+// as "trace/bvh-inflight/<mesh>/<rays>/threads:N": the same rays as the trace rows, chunk by chunk.
+inline void registerLancerInFlight(const std::string& mesh) {
+  for (const char* rayKind : {"primary", "incoherent"}) {
+    for (int threads : {1, 2}) {
+      const std::string rk = rayKind;
+      benchmark::RegisterBenchmark(
+          ("trace/bvh-inflight/" + mesh + "/" + rk + "/threads:" + std::to_string(threads)).c_str(),
+          [=](benchmark::State& state) {
+            MeshContext& ctx = meshContext(mesh);
+            const RaySet& set = ctx.rays(rk);
+            const Bvh* tree = nullptr;
+            ctx.withTree("bvh", [&](const auto& t) {
+              if constexpr (std::is_same_v<std::decay_t<decltype(t)>, Bvh>) tree = &t;
+            });
+            {
+              const Bvh& bvh = *tree;
+              double seconds = 0;
+              std::atomic<std::uint64_t> hits{0};
+              for (auto _ : state) {
+                hits = 0;
+                const double s =
+                    runChunked(set.rays.size(), threads, [&](std::size_t begin, std::size_t end) {
+                      std::vector<Hit> found(end - begin);
+                      hits +=
+                          bvh.intersect(std::span(set.rays).subspan(begin, end - begin), set.tMin,
+                                        std::span(set.tMax).subspan(begin, end - begin), std::span(found));
+                    });
+                state.SetIterationTime(s);
+                seconds += s;
+              }
+              const double rays = double(set.rays.size()) * double(state.iterations());
+              state.counters["Mrays_per_s"] = rays / seconds * 1e-6;
+              state.counters["hit_fraction"] = double(hits) / double(set.rays.size());
+              state.counters["rays"] = double(set.rays.size());
+            }
+          })
+          ->UseManualTime()
+          ->Iterations(1)
+          ->Repetitions(3)
+          ->Unit(benchmark::kMillisecond);
+    }
+  }
+}
+
 // Build statistics of `kind` on `threads` threads.
 inline AccelStats buildStats(const std::string& kind, const Mesh& mesh, int threads) {
   if (kind == "bvh") return Bvh::build(mesh.positions, mesh.faces, bvhBenchOptions(threads)).stats();

@@ -220,6 +220,7 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   for (const std::string& mesh : lancer::bench::meshNames()) {
     lancer::bench::registerLancer("bvh", mesh);
+    lancer::bench::registerLancerInFlight(mesh);
     lancer::bench::registerLancer("kdtree-sah", mesh);
     lancer::bench::registerEmbree(mesh);
     lancer::bench::registerLancerPackets("bvh", mesh);

@@ -1,7 +1,7 @@
 // The BVH's own guarantees (its answers against brute force on rays aimed at kd split planes are in
 // kd_tree_property_test.cpp and packet_query_property_test.cpp, with every accelerator): rays aimed
 // at its own boxes, the layout's invariants, the same tree on any thread count, refit answering as a
-// rebuild, and the rule for when a rebuild pays.
+// rebuild, the rule for when a rebuild pays, and rays walked several in flight answering as single rays.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -328,6 +328,56 @@ TEST(Bvh, AcceleratorUpdateRefitsTheBvhAndRebuildsTheRest) {
     ASSERT_EQ(naive.intersect(ray, 0.0f, 1e30f, expected), kd.intersect(ray, 0.0f, 1e30f, b));
     EXPECT_EQ(a.face, expected.face);
     EXPECT_EQ(b.face, expected.face);
+  }
+}
+
+// Rays in flight: each answer is the single ray's to the bit, with and without a filter, for batches
+// shorter than, equal to and longer than the rays in flight, rays that miss the scene box among them,
+// and per-ray ends of the interval (some before the first hit).
+TEST(Bvh, RaysInFlightAnswerAsSingleRays) {
+  std::mt19937 rng(11);
+  Soup soup = test::randomSoup(rng, 3000);
+  const Soup quads = fixture("accel/quad_box.msh");
+  const auto base = static_cast<std::uint32_t>(soup.positions.size());
+  soup.positions.insert(soup.positions.end(), quads.positions.begin(), quads.positions.end());
+  for (MeshFace face : quads.faces) {
+    for (int c = 0; c < face.cornerCount(); ++c) face.vertex[c] += base;
+    soup.faces.push_back(face);
+  }
+  const Bvh bvh = Bvh::build(soup.positions, soup.faces, onThreads(2));
+  std::vector<Ray> rays;
+  std::vector<float> tMax;
+  std::uniform_real_distribution<float> length(0.0f, 2.0f);
+  for (int i = 0; i < 600; ++i) {
+    // Every fifth ray from outside the scene, most of those aimed away from it.
+    const bool outside = i % 5 == 0;
+    rays.emplace_back(test::randomPoint(rng, outside ? Vec3{2, 2, 2} : Vec3{0, 0, 0},
+                                        outside ? Vec3{3, 3, 3} : Vec3{1, 1, 1}),
+                      test::randomDirection(rng));
+    tMax.push_back(i % 3 == 0 ? length(rng) : std::numeric_limits<float>::infinity());
+  }
+  const HitFilter oddFaces{nullptr,
+                           [](const void*, const Ray&, std::uint32_t face, float) { return face % 2 == 1; }};
+  for (std::size_t count : {std::size_t(0), std::size_t(1), std::size_t(3), std::size_t(Bvh::kRaysInFlight),
+                            std::size_t(7), rays.size()}) {
+    SCOPED_TRACE(count);
+    for (bool filtered : {false, true}) {
+      std::vector<Hit> hits(count, Hit{1.0f, 7, 0.5f, 0.5f});
+      const std::span<const Ray> some(rays.data(), count);
+      const std::span<const float> ends(tMax.data(), count);
+      const std::size_t hitCount = filtered ? bvh.intersect(some, 0.0f, ends, oddFaces, std::span(hits))
+                                            : bvh.intersect(some, 0.0f, ends, std::span(hits));
+      std::size_t expected = 0;
+      for (std::size_t i = 0; i < count; ++i) {
+        Hit single;
+        const bool found = filtered ? bvh.intersect(rays[i], 0.0f, tMax[i], oddFaces, single)
+                                    : bvh.intersect(rays[i], 0.0f, tMax[i], single);
+        expected += found ? 1 : 0;
+        EXPECT_TRUE(test::sameBits(hits[i], found ? single : Hit{})) << "ray " << i;
+      }
+      EXPECT_EQ(hitCount, expected);
+      if (count == rays.size()) EXPECT_GT(expected, count / 4);
+    }
   }
 }
 

@@ -66,6 +66,21 @@ class Bvh : public TreeQueries<Bvh> {
     return isa::dispatch([&](auto isa) { return anyHitsOn<decltype(isa)>(packet, active, keeps); });
   }
 
+  // Closest hits of independent rays (any origins and directions, unlike a packet's: a path tracer's
+  // bounces), kRaysInFlight of them walked at once, a node or leaf of each in turn, so that one ray's
+  // cache misses overlap the others' work (bvh/batch_traversal.cpp). hits[i] is what
+  // intersect(rays[i], tMin, tMax[i], ...) gives, Hit{} for a miss; returns how many hit.
+  static constexpr int kRaysInFlight = 4;
+  std::size_t intersect(std::span<const Ray> rays, float tMin, std::span<const float> tMax,
+                        std::span<Hit> hits) const {
+    return closestHitsInFlight(rays, tMin, tMax, KeepEveryHit{}, hits);
+  }
+  std::size_t intersect(std::span<const Ray> rays, float tMin, std::span<const float> tMax,
+                        const HitFilter& filter, std::span<Hit> hits) const {
+    return closestHitsInFlight(rays, tMin, tMax, filter, hits);
+  }
+  using TreeQueries<Bvh>::intersect;
+
   // Refit (bvh/refit.cpp): the same faces at new `positions` (a deformed time step: same vertex
   // count, same topology), the tree kept and its boxes recomputed bottom up. Returns false, leaving
   // the tree unusable, when it cannot keep the answers exact (a face turned into a sliver, or the
@@ -99,6 +114,15 @@ class Bvh : public TreeQueries<Bvh> {
   template <typename Isa, typename Filter>
   std::uint32_t closestHitsOn(const RayPacket& packet, std::uint32_t active, const Filter& keeps,
                               std::span<Hit, kPacketSize> hits) const;
+  template <typename Filter>
+  std::size_t closestHitsInFlight(std::span<const Ray> rays, float tMin, std::span<const float> tMax,
+                                  const Filter& keeps, std::span<Hit> hits) const {
+    return isa::dispatch(
+        [&](auto isa) { return closestHitsInFlightOn<decltype(isa)>(rays, tMin, tMax, keeps, hits); });
+  }
+  template <typename Isa, typename Filter>
+  std::size_t closestHitsInFlightOn(std::span<const Ray> rays, float tMin, std::span<const float> tMax,
+                                    const Filter& keeps, std::span<Hit> hits) const;
   template <typename Isa, typename Filter>
   std::uint32_t anyHitsOn(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
 
