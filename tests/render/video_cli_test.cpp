@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "lancer/image/image_io.hpp"
 #include "lancer/image/pixel_encoding.hpp"
@@ -12,6 +13,12 @@
 #include "support/cli.hpp"
 #include "support/files.hpp"
 #include "support/test_images.hpp"
+
+#if LANCER_TEST_FFMPEG
+extern "C" {
+#include <libavutil/version.h>
+}
+#endif
 
 namespace lancer {
 namespace {
@@ -55,6 +62,23 @@ void checkVideo(const char* extension, const char* codec) {
 
 TEST(VideoCli, Mp4MatchesTheRenderedFrames) { checkVideo("mp4", "h264"); }
 TEST(VideoCli, WebmMatchesTheRenderedFrames) { checkVideo("webm", "vp9"); }
+
+#if LANCER_TEST_FFMPEG
+// FFmpeg is loaded when a video is first written: a library that cannot be loaded (here a broken
+// libavutil found first on LD_LIBRARY_PATH) is a one-line error naming the video, and no file.
+TEST(VideoCli, FfmpegThatCannotBeLoadedIsAClearError) {
+  const test::ScratchFolder folder;
+  const std::string library = "libavutil.so." AV_STRINGIFY(LIBAVUTIL_VERSION_MAJOR);
+  folder.write(library, "not a library");
+  const std::string video = folder.file("turn.mp4");
+  const test::CommandResult result =
+      test::runCli("animate -q " + quoted(test::kTurntableScene) + " -o " + quoted(video),
+                   "env LD_LIBRARY_PATH=" + quoted(folder.path().string()));
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  test::expectContainsAll(result.output, {video, "cannot load FFmpeg", "libavcodec"});
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{library});  // no video, no temporary file
+}
+#endif
 
 TEST(StillCli, PngAndJpegRecordTheDpiAndTheCommandLine) {
   const test::ScratchFolder folder;

@@ -5,14 +5,6 @@
 #include "lancer/util/input_error.hpp"
 
 #if LANCER_HAVE_FFMPEG
-extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-#include <libavutil/error.h>
-#include <libavutil/opt.h>
-#include <libswscale/swscale.h>
-}
-
 #include <algorithm>
 #include <cstdarg>
 #include <cstdio>
@@ -22,6 +14,7 @@ extern "C" {
 #include <vector>
 
 #include "lancer/image/atomic_file.hpp"
+#include "lancer/image/ffmpeg_api.hpp"
 #endif
 
 namespace lancer {
@@ -29,9 +22,9 @@ namespace lancer {
 #if LANCER_HAVE_FFMPEG
 namespace {
 
-std::string avError(int code) {
+std::string avError(const FfmpegApi& av, int code) {
   char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
+  av.av_strerror(code, text, sizeof text);
   return text;
 }
 
@@ -41,21 +34,26 @@ constexpr int kIoBufferSize = 1 << 16;
 // for the message of a failure.
 std::mutex gLogMutex;
 char gLastLogError[512] = {};
+const FfmpegApi* gLogApi = nullptr;  // set before the callback is
 
 void onAvLog(void* context, int level, const char* format, va_list arguments) {
   if (level > AV_LOG_ERROR) return;
+  const FfmpegApi& av = *gLogApi;
   char line[512];
   int prefix = 1;
-  av_log_format_line2(context, level, format, arguments, line, sizeof line, &prefix);
+  av.av_log_format_line2(context, level, format, arguments, line, sizeof line, &prefix);
   const std::lock_guard lock(gLogMutex);
   std::snprintf(gLastLogError, sizeof gLastLogError, "%s", line);
   const std::size_t length = std::strlen(gLastLogError);
   if (length > 0 && gLastLogError[length - 1] == '\n') gLastLogError[length - 1] = 0;
 }
 
-void silenceFfmpeg() {
+void silenceFfmpeg(const FfmpegApi& av) {
   static std::once_flag once;
-  std::call_once(once, [] { av_log_set_callback(onAvLog); });
+  std::call_once(once, [&av] {
+    gLogApi = &av;
+    av.av_log_set_callback(onAvLog);
+  });
 }
 
 std::string lastLogError() {
@@ -67,23 +65,24 @@ std::string lastLogError() {
 
 // Everything FFmpeg allocates, freed in the destructor whatever step failed.
 struct VideoWriter::State {
-  explicit State(const std::string& path) : file(path) {}
+  State(const std::string& path, const FfmpegApi& api) : av(api), file(path) {}
   ~State() {
-    sws_freeContext(sws);
-    av_frame_free(&frame);
-    av_packet_free(&packet);
-    avcodec_free_context(&codec);
-    if (format != nullptr) avformat_free_context(format);
-    if (io != nullptr) av_freep(&io->buffer);
-    avio_context_free(&io);
+    av.sws_freeContext(sws);
+    av.av_frame_free(&frame);
+    av.av_packet_free(&packet);
+    av.avcodec_free_context(&codec);
+    if (format != nullptr) av.avformat_free_context(format);
+    if (io != nullptr) av.av_freep(&io->buffer);
+    av.avio_context_free(&io);
   }
 
   [[noreturn]] void fail(const std::string& what, int code) {
     file.throwIfFailed();  // a failed write, with its reason
     file.discard();
     const std::string detail = lastLogError();
-    throw InputError(SourceLocation{file.targetPath()},
-                     fmt::format("{}: {}{}", what, avError(code), detail.empty() ? "" : " (" + detail + ")"));
+    throw InputError(
+        SourceLocation{file.targetPath()},
+        fmt::format("{}: {}{}", what, avError(av, code), detail.empty() ? "" : " (" + detail + ")"));
   }
 
   // libavformat's output: every write goes where the muxer's position is (the MP4 muxer seeks back
@@ -119,19 +118,20 @@ struct VideoWriter::State {
 
   // Sends `input` (nullptr: the end) and writes every packet the encoder has ready.
   void encode(const AVFrame* input) {
-    int code = avcodec_send_frame(codec, input);
+    int code = av.avcodec_send_frame(codec, input);
     if (code < 0) fail("video encoding failed", code);
     for (;;) {
-      code = avcodec_receive_packet(codec, packet);
+      code = av.avcodec_receive_packet(codec, packet);
       if (code == AVERROR(EAGAIN) || code == AVERROR_EOF) return;
       if (code < 0) fail("video encoding failed", code);
-      av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
+      av.av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
       packet->stream_index = stream->index;
-      code = av_interleaved_write_frame(format, packet);  // takes the packet's data
+      code = av.av_interleaved_write_frame(format, packet);  // takes the packet's data
       if (code < 0) fail("writing the video failed", code);
     }
   }
 
+  const FfmpegApi& av;
   AtomicFileWriter file;
   std::uint64_t position = 0, size = 0;
   AVFormatContext* format = nullptr;
@@ -153,19 +153,20 @@ bool videoSupported() { return true; }
 namespace {
 
 // The encoder for the container, and a note when it is not the one users expect.
-const AVCodec* chooseEncoder(VideoContainer container, const std::string& path, std::string& note) {
+const AVCodec* chooseEncoder(const FfmpegApi& av, VideoContainer container, const std::string& path,
+                             std::string& note) {
   if (container == VideoContainer::Webm) {
-    if (const AVCodec* vp9 = avcodec_find_encoder_by_name("libvpx-vp9")) return vp9;
+    if (const AVCodec* vp9 = av.avcodec_find_encoder_by_name("libvpx-vp9")) return vp9;
     throw InputError(SourceLocation{path},
                      "this FFmpeg has no VP9 encoder (libvpx-vp9) for WebM: write .mp4 or .gif instead");
   }
-  if (const AVCodec* x264 = avcodec_find_encoder_by_name("libx264")) return x264;
-  if (const AVCodec* h264 = avcodec_find_encoder(AV_CODEC_ID_H264)) {
+  if (const AVCodec* x264 = av.avcodec_find_encoder_by_name("libx264")) return x264;
+  if (const AVCodec* h264 = av.avcodec_find_encoder(AV_CODEC_ID_H264)) {
     note = fmt::format("lancer: {}: libx264 is missing from this FFmpeg; H.264 comes from its '{}' encoder",
                        path, h264->name);
     return h264;
   }
-  if (const AVCodec* mpeg4 = avcodec_find_encoder(AV_CODEC_ID_MPEG4)) {
+  if (const AVCodec* mpeg4 = av.avcodec_find_encoder(AV_CODEC_ID_MPEG4)) {
     note = fmt::format(
         "lancer: {}: this FFmpeg has no H.264 encoder (libx264); the MP4 holds MPEG-4 part 2 "
         "video, which fewer slide programs play: write .webm, or install an FFmpeg with libx264",
@@ -177,19 +178,19 @@ const AVCodec* chooseEncoder(VideoContainer container, const std::string& path, 
 
 // Quality settings: visually lossless for figures (x264's CRF 18; VP9's constant quality 31, the level
 // its documentation suggests for 480p-720p) at a moderate speed.
-void setEncoderOptions(const AVCodec* encoder, AVDictionary** options) {
+void setEncoderOptions(const FfmpegApi& av, const AVCodec* encoder, AVDictionary** options) {
   const std::string name = encoder->name;
   if (name == "libx264") {
-    av_dict_set(options, "preset", "medium", 0);
-    av_dict_set(options, "crf", "18", 0);
+    av.av_dict_set(options, "preset", "medium", 0);
+    av.av_dict_set(options, "crf", "18", 0);
   } else if (name == "libvpx-vp9") {
-    av_dict_set(options, "crf", "31", 0);
-    av_dict_set(options, "b", "0", 0);  // constant quality, no bitrate target
-    av_dict_set(options, "deadline", "good", 0);
-    av_dict_set(options, "cpu-used", "4", 0);
-    av_dict_set(options, "row-mt", "1", 0);
+    av.av_dict_set(options, "crf", "31", 0);
+    av.av_dict_set(options, "b", "0", 0);  // constant quality, no bitrate target
+    av.av_dict_set(options, "deadline", "good", 0);
+    av.av_dict_set(options, "cpu-used", "4", 0);
+    av.av_dict_set(options, "row-mt", "1", 0);
   } else {
-    av_dict_set(options, "q", "3", 0);  // MPEG-4 part 2 and other encoders: a fixed, high quality
+    av.av_dict_set(options, "q", "3", 0);  // MPEG-4 part 2 and other encoders: a fixed, high quality
   }
 }
 
@@ -201,9 +202,10 @@ VideoWriter::VideoWriter(const std::string& path, VideoContainer container, int 
     throw InputError(SourceLocation{path},
                      fmt::format("a video of {}x{} pixels cannot be written", width, height));
   if (!(options.fps > 0)) throw InputError(SourceLocation{path}, "a video needs a frame rate above 0");
-  silenceFfmpeg();
-  const AVCodec* encoder = chooseEncoder(container, path, note_);
-  state_ = std::make_unique<State>(path);  // the temporary file: a bad folder fails here
+  const FfmpegApi& av = ffmpegApi(path);
+  silenceFfmpeg(av);
+  const AVCodec* encoder = chooseEncoder(av, container, path, note_);
+  state_ = std::make_unique<State>(path, av);  // the temporary file: a bad folder fails here
   State& s = *state_;
   s.width = width;
   s.height = height;
@@ -222,12 +224,12 @@ VideoWriter::VideoWriter(const std::string& path, VideoContainer container, int 
     note_ = note_.empty() ? padding : note_ + "\n" + padding;
   }
 
-  int code = avformat_alloc_output_context2(&s.format, nullptr,
-                                            container == VideoContainer::Mp4 ? "mp4" : "webm", nullptr);
+  int code = av.avformat_alloc_output_context2(&s.format, nullptr,
+                                               container == VideoContainer::Mp4 ? "mp4" : "webm", nullptr);
   if (code < 0 || s.format == nullptr) s.fail("cannot set up the video container", code);
-  s.codec = avcodec_alloc_context3(encoder);
+  s.codec = av.avcodec_alloc_context3(encoder);
   if (s.codec == nullptr) s.fail("cannot set up the video encoder", AVERROR(ENOMEM));
-  const AVRational frameRate = av_d2q(options.fps, 1'000'000);
+  const AVRational frameRate = av.av_d2q(options.fps, 1'000'000);
   s.codec->width = codedWidth;
   s.codec->height = codedHeight;
   s.codec->pix_fmt = AV_PIX_FMT_YUV420P;
@@ -241,50 +243,50 @@ VideoWriter::VideoWriter(const std::string& path, VideoContainer container, int 
   s.codec->color_range = AVCOL_RANGE_MPEG;
   if ((s.format->oformat->flags & AVFMT_GLOBALHEADER) != 0) s.codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   AVDictionary* encoderOptions = nullptr;
-  setEncoderOptions(encoder, &encoderOptions);
-  code = avcodec_open2(s.codec, encoder, &encoderOptions);
-  av_dict_free(&encoderOptions);
+  setEncoderOptions(av, encoder, &encoderOptions);
+  code = av.avcodec_open2(s.codec, encoder, &encoderOptions);
+  av.av_dict_free(&encoderOptions);
   if (code < 0) s.fail(fmt::format("cannot open the {} encoder", encoder->name), code);
 
-  s.stream = avformat_new_stream(s.format, nullptr);
+  s.stream = av.avformat_new_stream(s.format, nullptr);
   if (s.stream == nullptr) s.fail("cannot set up the video stream", AVERROR(ENOMEM));
   s.stream->time_base = s.codec->time_base;
   s.stream->avg_frame_rate = frameRate;
-  code = avcodec_parameters_from_context(s.stream->codecpar, s.codec);
+  code = av.avcodec_parameters_from_context(s.stream->codecpar, s.codec);
   if (code < 0) s.fail("cannot set up the video stream", code);
   std::string comment = options.metadata.software;
   if (!options.metadata.command.empty()) comment += (comment.empty() ? "" : ": ") + options.metadata.command;
-  if (!comment.empty()) av_dict_set(&s.format->metadata, "comment", comment.c_str(), 0);
+  if (!comment.empty()) av.av_dict_set(&s.format->metadata, "comment", comment.c_str(), 0);
 
-  auto* buffer = static_cast<unsigned char*>(av_malloc(kIoBufferSize));
+  auto* buffer = static_cast<unsigned char*>(av.av_malloc(kIoBufferSize));
   if (buffer == nullptr) s.fail("cannot set up the video output", AVERROR(ENOMEM));
-  s.io = avio_alloc_context(buffer, kIoBufferSize, 1, &s, nullptr, &State::write, &State::seek);
+  s.io = av.avio_alloc_context(buffer, kIoBufferSize, 1, &s, nullptr, &State::write, &State::seek);
   if (s.io == nullptr) {
-    av_free(buffer);
+    av.av_free(buffer);
     s.fail("cannot set up the video output", AVERROR(ENOMEM));
   }
   s.format->pb = s.io;
   s.format->flags |= AVFMT_FLAG_CUSTOM_IO;
-  code = avformat_write_header(s.format, nullptr);
+  code = av.avformat_write_header(s.format, nullptr);
   if (code < 0) s.fail("cannot write the video header", code);
 
-  s.frame = av_frame_alloc();
-  s.packet = av_packet_alloc();
+  s.frame = av.av_frame_alloc();
+  s.packet = av.av_packet_alloc();
   if (s.frame == nullptr || s.packet == nullptr) s.fail("cannot set up the video frames", AVERROR(ENOMEM));
   s.frame->format = AV_PIX_FMT_YUV420P;
   s.frame->width = codedWidth;
   s.frame->height = codedHeight;
   s.frame->colorspace = AVCOL_SPC_BT709;
   s.frame->color_range = AVCOL_RANGE_MPEG;
-  code = av_frame_get_buffer(s.frame, 0);
+  code = av.av_frame_get_buffer(s.frame, 0);
   if (code < 0) s.fail("cannot set up the video frames", code);
-  s.sws =
-      sws_getContext(codedWidth, codedHeight, AV_PIX_FMT_RGB24, codedWidth, codedHeight, AV_PIX_FMT_YUV420P,
-                     SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr, nullptr);
+  s.sws = av.sws_getContext(codedWidth, codedHeight, AV_PIX_FMT_RGB24, codedWidth, codedHeight,
+                            AV_PIX_FMT_YUV420P, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr,
+                            nullptr, nullptr);
   if (s.sws == nullptr) s.fail("cannot set up the colour conversion", AVERROR(EINVAL));
   // Full-range RGB in, BT.709 limited-range YUV out, as tagged above.
-  sws_setColorspaceDetails(s.sws, sws_getCoefficients(SWS_CS_DEFAULT), 1, sws_getCoefficients(SWS_CS_ITU709),
-                           0, 0, 1 << 16, 1 << 16);
+  av.sws_setColorspaceDetails(s.sws, av.sws_getCoefficients(SWS_CS_DEFAULT), 1,
+                              av.sws_getCoefficients(SWS_CS_ITU709), 0, 0, 1 << 16, 1 << 16);
   s.rgb.resize(static_cast<std::size_t>(codedWidth) * static_cast<std::size_t>(codedHeight) * 3);
   s.file.throwIfFailed();
 }
@@ -293,6 +295,7 @@ VideoWriter::~VideoWriter() = default;
 
 void VideoWriter::addFrame(const Image& image) {
   State& s = *state_;
+  const FfmpegApi& av = s.av;
   if (image.width() != s.width || image.height() != s.height)
     throw std::invalid_argument(fmt::format("VideoWriter: a {}x{} frame for a {}x{} video", image.width(),
                                             image.height(), s.width, s.height));
@@ -308,11 +311,11 @@ void VideoWriter::addFrame(const Image& image) {
       std::memcpy(out, out - stride, stride);  // the last row, again
     }
   }
-  int code = av_frame_make_writable(s.frame);
+  int code = av.av_frame_make_writable(s.frame);
   if (code < 0) s.fail("video encoding failed", code);
   const std::uint8_t* source[1] = {s.rgb.data()};
   const int sourceStride[1] = {static_cast<int>(stride)};
-  sws_scale(s.sws, source, sourceStride, 0, codedHeight, s.frame->data, s.frame->linesize);
+  av.sws_scale(s.sws, source, sourceStride, 0, codedHeight, s.frame->data, s.frame->linesize);
   s.frame->pts = s.nextPts++;
   s.encode(s.frame);
   s.file.throwIfFailed();
@@ -320,10 +323,11 @@ void VideoWriter::addFrame(const Image& image) {
 
 void VideoWriter::finish() {
   State& s = *state_;
+  const FfmpegApi& av = s.av;
   s.encode(nullptr);
-  const int code = av_write_trailer(s.format);
+  const int code = av.av_write_trailer(s.format);
   if (code < 0) s.fail("writing the video failed", code);
-  avio_flush(s.io);
+  av.avio_flush(s.io);
   s.file.commit();
 }
 

@@ -81,6 +81,21 @@ class MshMeshAssembler {
     return volumeElements_.appendNodes(type, group_, count, tags);
   }
   bool keepsVolume() const { return volumeCapture_ != nullptr; }
+  // Whether addTriangles() may take a block of 3-node triangles: when no element or side is tracked,
+  // a triangle needs nothing but its corners and its group.
+  bool takesTriangleBlocks() const { return !trackElements_ && !trackSides_; }
+  // `count` 3-node triangles of the current group, as addElement(2, ...) would add them one by one:
+  // returns where their corners go (filled by the caller, from any thread); their other per-face
+  // arrays are filled here. Only where takesTriangleBlocks().
+  MeshFace* addTriangles(std::size_t count) {
+    countByType_[2] += count;
+    const std::size_t first = faces_.size();
+    faces_.resize(first + count);
+    facePhysical_.resize(first + count, physical_);
+    faceEntity_.resize(first + count, entity_);
+    faceEdgeMask_.resize(first + count, 0b111);
+    return faces_.data() + first;
+  }
   // The physical and elementary tags of the elements that follow; dimension is the elements'.
   void setGroup(int dimension, std::int32_t physical, std::int32_t entity) {
     if (physical == physical_ && entity == entity_ && dimension == dimension_) return;

@@ -93,6 +93,39 @@ void readBinaryElements(MshReadState& state, int type, std::uint64_t count) {
   }
 }
 
+// A binary block of 3-node triangles read straight into the assembler's faces (when it tracks no
+// element or side): node tags become node indices in parallel chunks, and a missing node is reported
+// at the first element (in file order) that names one, as the element-by-element loop would.
+void readBinaryTriangles(MshReadState& state, std::uint64_t count) {
+  MshMeshAssembler& assembler = state.assembler;
+  const MshNodeTable& nodes = assembler.nodes;
+  constexpr std::size_t kRecordBytes = 8 * 4;
+  const char* data = state.cursor.advance(count * kRecordBytes);
+  MeshFace* faces = assembler.addTriangles(count);
+  const ChunkPlan chunks(count, 32768);
+  std::vector<std::uint64_t> firstMissing(chunks.chunks, UINT64_MAX);
+  parallelChunks(chunks, assembler.threads(), [&](std::size_t k, std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e) {
+      std::uint64_t record[4];
+      std::memcpy(record, data + e * kRecordBytes, kRecordBytes);
+      MeshFace& face = faces[e];
+      for (int n = 0; n < 3; ++n) face.vertex[n] = nodes.find(record[n + 1]);
+      face.vertex[3] = kNoVertex;
+      if ((face.vertex[0] == kNoVertex || face.vertex[1] == kNoVertex || face.vertex[2] == kNoVertex) &&
+          firstMissing[k] == UINT64_MAX)
+        firstMissing[k] = e;
+    }
+  });
+  for (const std::uint64_t e : firstMissing) {
+    if (e == UINT64_MAX) continue;
+    std::uint64_t record[4];
+    std::memcpy(record, data + e * kRecordBytes, kRecordBytes);
+    for (int n = 0; n < 3; ++n)
+      if (nodes.find(record[n + 1]) == kNoVertex)
+        failMissingNode(state, data + e * kRecordBytes, record[0], 2, record[n + 1]);
+  }
+}
+
 // A binary block of volume elements read straight into the assembler's element array: node tags
 // become node indices in parallel chunks, and a missing node is reported at the first element (in
 // file order) that names one, as the element-by-element loop would.
@@ -335,7 +368,10 @@ void readMsh4Elements(MshReadState& state) {
       continue;
     }
     if (state.binary && type == 2) {
-      readBinaryElements<3>(state, type, inBlock);
+      if (state.assembler.takesTriangleBlocks())
+        readBinaryTriangles(state, inBlock);
+      else
+        readBinaryElements<3>(state, type, inBlock);
       continue;
     }
     if (state.binary && type == 3) {
