@@ -66,6 +66,13 @@ deb)
   for needed in libc6 libstdc++6 libpng16-16 libfreetype6 fonts-dejavu-core; do
     grep -qxF "$needed" <<<"$depends_names" || fail "Depends lacks $needed: $depends"
   done
+  # FFmpeg's libraries are loaded with dlopen when a video is written: Recommends names them.
+  if grep -q '^LANCER_FFMPEG:BOOL=ON' "$build/CMakeCache.txt"; then
+    recommends=$(dpkg-deb -f "$deb" Recommends)
+    for needed in libavcodec libavformat libavutil libswscale; do
+      grep -qE "(^|, )$needed[0-9]+(,|$)" <<<"$recommends" || fail "Recommends lacks $needed: '$recommends'"
+    done
+  fi
   root=$work/root
   dpkg-deb -x "$deb" "$root"
   [ -z "$(find "$root" -mindepth 1 -maxdepth 1 ! -name usr)" ] || fail "the package installs outside /usr: $(ls "$root")"
