@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -52,5 +53,9 @@ class MortonGrid {
 // Keys code << 32 | index sorted by their 30-bit code, equal codes in their order before (so the
 // order depends on the items alone, not on the thread count): a radix sort on `threads` threads.
 void sortMortonKeys(std::vector<std::uint64_t>& keys, int threads);
+
+// The same sort of `count` keys with `scratch` (as many, not initialised) for the passes; returns
+// the array the sorted keys end in (`keys` or `scratch`; the other then holds nothing of use).
+std::uint64_t* sortMortonKeys(std::uint64_t* keys, std::uint64_t* scratch, std::size_t count, int threads);
 
 }  // namespace lancer

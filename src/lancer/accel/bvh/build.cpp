@@ -80,7 +80,7 @@ std::uint32_t movedLeaf(std::uint32_t code, std::size_t offset) {
 }  // namespace
 
 struct BvhBuilder {
-  BvhBuilder(std::span<const Vec3> positions, std::span<const MeshFace> faces, std::vector<PrimRef>& refs,
+  BvhBuilder(std::span<const Vec3> positions, std::span<const MeshFace> faces, HugePageArray<PrimRef>& refs,
              const BvhBuildOptions& options, Bvh& bvh)
       : positions_(positions), faces_(faces), refs_(refs), options_(options), bvh_(bvh) {}
 
@@ -324,7 +324,7 @@ struct BvhBuilder {
 
   std::span<const Vec3> positions_;
   std::span<const MeshFace> faces_;
-  std::vector<PrimRef>& refs_;
+  HugePageArray<PrimRef>& refs_;
   const BvhBuildOptions& options_;
   Bvh& bvh_;
   std::vector<ClusterSlot> slots_;
@@ -343,7 +343,7 @@ Bvh Bvh::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
       positions, faces, std::clamp<std::uint32_t>(options.maxClusterReferences, 1, kMaxClusterReferences),
       threads);
   bvh.slivers_ = std::move(gathered.slivers);
-  std::vector<PrimRef>& refs = gathered.refs;
+  HugePageArray<PrimRef>& refs = gathered.refs;
   bvh.stats_.kind = "bvh";
   bvh.stats_.faces = faces.size();
   Aabb box;
@@ -360,7 +360,7 @@ Bvh Bvh::build(std::span<const Vec3> positions, std::span<const MeshFace> faces,
     stats.triangleReferences = builder.topCounts_.triangleReferences;
     stats.depth = builder.topCounts_.depth;
   }
-  std::vector<PrimRef>().swap(refs);
+  refs.reset();
   bvh.setBounds(box);
   AccelStats& stats = bvh.stats_;
   stats.triangles = stats.triangleReferences + bvh.slivers_.size();

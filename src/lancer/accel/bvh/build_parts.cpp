@@ -8,6 +8,7 @@
 
 #ifdef __SSE2__
 #include <emmintrin.h>
+#include <xmmintrin.h>
 #endif
 
 #include "lancer/util/huge_pages.hpp"
@@ -99,6 +100,26 @@ struct Box4 {
   }
 };
 
+// The surface areas of three boxes (axis a's box lo[a], hi[a]) in lanes 0-2, as Box4::area computes
+// each of a box that is not empty (x * y + y * z + z * x, doubled: the same floats).
+F4 areasOf(const F4 (&lo)[3], const F4 (&hi)[3]) {
+#ifdef __SSE2__
+  __m128 x = (hi[0] - lo[0]).v, y = (hi[1] - lo[1]).v, z = (hi[2] - lo[2]).v, w = _mm_setzero_ps();
+  _MM_TRANSPOSE4_PS(x, y, z, w);  // now x holds every box's x extent, y its y, z its z
+  const F4 dx{x}, dy{y}, dz{z};
+#else
+  F4 dx, dy, dz;
+  for (int a = 0; a < 3; ++a) {
+    const F4 d = hi[a] - lo[a];
+    dx.v[a] = d.v[0];
+    dy.v[a] = d.v[1];
+    dz.v[a] = d.v[2];
+  }
+  dx.v[3] = dy.v[3] = dz.v[3] = 0.0f;
+#endif
+  return F4::all(2.0f) * (dx * dy + dy * dz + dz * dx);
+}
+
 // The bins of each axis over a range's centroids; a range of few references gets as many bins as
 // references (at least four): a bin per reference is all a small range can use, and the sweep
 // over the bins is the fixed cost of every split.
@@ -188,32 +209,48 @@ Split chooseSplit(const PrimRef* refs, const Range& range, const BvhBuildOptions
   const Grid grid(range);
   const Bins bins(refs, range.begin, range.end, grid);
   const int count = grid.bins;
-  // Cheapest boundary: the sum of each side's area times its triangles (the first of equal ones).
+  // Cheapest boundary: the sum of each side's area times its triangles (the first of equal ones, axis
+  // by axis). Both sweeps grow the three axes' boxes at once and take their areas together.
+  alignas(16) float rightArea[kMaxBins][4], leftArea[kMaxBins][4];
+  std::uint32_t rightCount[3][kMaxBins], leftCount[3][kMaxBins];
+  {
+    F4 lo[3] = {F4::all(kInf), F4::all(kInf), F4::all(kInf)};
+    F4 hi[3] = {F4::all(-kInf), F4::all(-kInf), F4::all(-kInf)};
+    std::uint32_t triangles[3] = {0, 0, 0};
+    for (int b = count - 1; b > 0; --b) {
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = min(lo[a], bins.lo[a][b]);
+        hi[a] = max(hi[a], bins.hi[a][b]);
+        rightCount[a][b] = triangles[a] += bins.triangles[a][b];
+      }
+      areasOf(lo, hi).store(rightArea[b]);
+    }
+  }
+  {
+    F4 lo[3] = {F4::all(kInf), F4::all(kInf), F4::all(kInf)};
+    F4 hi[3] = {F4::all(-kInf), F4::all(-kInf), F4::all(-kInf)};
+    std::uint32_t triangles[3] = {0, 0, 0};
+    for (int b = 1; b < count; ++b) {
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = min(lo[a], bins.lo[a][b - 1]);
+        hi[a] = max(hi[a], bins.hi[a][b - 1]);
+        leftCount[a][b] = triangles[a] += bins.triangles[a][b - 1];
+      }
+      areasOf(lo, hi).store(leftArea[b]);
+    }
+  }
   float best = kInf;
   for (int a = 0; a < 3; ++a) {
     if (!grid.usable[a]) continue;
-    float rightArea[kMaxBins];
-    std::uint32_t rightCount[kMaxBins];
-    Box4 right;
-    std::uint32_t triangles = 0;
-    for (int b = count - 1; b > 0; --b) {
-      right.extend(bins.lo[a][b], bins.hi[a][b]);
-      triangles += bins.triangles[a][b];
-      rightArea[b] = right.area();
-      rightCount[b] = triangles;
-    }
-    Box4 left;
-    triangles = 0;
     for (int b = 1; b < count; ++b) {
-      left.extend(bins.lo[a][b - 1], bins.hi[a][b - 1]);
-      triangles += bins.triangles[a][b - 1];
-      if (triangles == 0 || rightCount[b] == 0) continue;
-      const float cost = left.area() * float(triangles) + rightArea[b] * float(rightCount[b]);
+      // An empty side's area is never read (its box's lanes are infinite).
+      if (leftCount[a][b] == 0 || rightCount[a][b] == 0) continue;
+      const float cost = leftArea[b][a] * float(leftCount[a][b]) + rightArea[b][a] * float(rightCount[a][b]);
       if (cost < best) {
         best = cost;
         split.axis = a;
         split.bin = b;
-        split.leftTriangles = triangles;
+        split.leftTriangles = leftCount[a][b];
       }
     }
   }

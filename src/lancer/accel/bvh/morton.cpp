@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 
+#include "lancer/util/huge_page_array.hpp"
 #include "lancer/util/huge_pages.hpp"
 #include "lancer/util/morton_order.hpp"
 #include "lancer/util/parallel_for.hpp"
@@ -31,7 +32,7 @@ Box centroidBox(const std::vector<PrimRef>& refs, int threads) {
 
 // Cuts sorted keys [begin, end) at the highest bit where their codes differ until each piece holds
 // at most `most` keys.
-void cut(const std::vector<std::uint64_t>& keys, std::uint32_t begin, std::uint32_t end, std::uint32_t most,
+void cut(const std::uint64_t* keys, std::uint32_t begin, std::uint32_t end, std::uint32_t most,
          std::vector<Cluster>& out) {
   if (end - begin <= most) {
     out.push_back({begin, end});
@@ -44,10 +45,9 @@ void cut(const std::vector<std::uint64_t>& keys, std::uint32_t begin, std::uint3
     return;
   }
   const int bit = 31 - std::countl_zero(differ);
-  const auto middle =
-      std::partition_point(keys.begin() + begin, keys.begin() + end,
-                           [bit](std::uint64_t key) { return ((key >> 32 >> bit) & 1u) == 0; });
-  const auto split = static_cast<std::uint32_t>(middle - keys.begin());
+  const std::uint64_t* middle = std::partition_point(
+      keys + begin, keys + end, [bit](std::uint64_t key) { return ((key >> 32 >> bit) & 1u) == 0; });
+  const auto split = static_cast<std::uint32_t>(middle - keys);
   cut(keys, begin, split, most, out);
   cut(keys, split, end, most, out);
 }
@@ -72,7 +72,7 @@ std::vector<Cluster> mortonClusters(std::vector<PrimRef>& refs, std::uint32_t ma
     parallelFor(n, threads, 1 << 15, [&](std::size_t i) { sorted[i] = refs[keys[i] & 0xFFFFFFFFu]; });
     refs.swap(sorted);
   }
-  cut(keys, 0, n, std::max<std::uint32_t>(1, maxReferences), clusters);
+  cut(keys.data(), 0, n, std::max<std::uint32_t>(1, maxReferences), clusters);
   return clusters;
 }
 
@@ -111,7 +111,10 @@ MortonFaces gatherMortonFaces(std::span<const Vec3> positions, std::span<const M
   const MortonGrid grid(all.lo, all.hi);
   MortonFaces out;
   out.slivers.resize(dropped.back());
-  std::vector<std::uint64_t> keys = vectorOnHugePages<std::uint64_t>(kept.back());
+  const std::size_t n = kept.back();
+  if (n == 0) return out;
+  // The keys and the sort's scratch unwritten until the passes below fill them, on every thread.
+  HugePageArray<std::uint64_t> keys(n), scratch(n);
   parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     std::size_t tree = kept[chunk], sliver = dropped[chunk];
     for (std::size_t f = begin; f < end; ++f) {
@@ -127,15 +130,14 @@ MortonFaces gatherMortonFaces(std::span<const Vec3> positions, std::span<const M
       keys[tree++] = std::uint64_t(grid.code(centroid)) << 32 | id;
     }
   });
-  const auto n = static_cast<std::uint32_t>(keys.size());
-  if (n == 0) return out;
-  sortMortonKeys(keys, threads);
-  out.refs = vectorOnHugePages<PrimRef>(n);
+  const std::uint64_t* sorted = sortMortonKeys(keys.data(), scratch.data(), n, threads);
+  (sorted == keys.data() ? scratch : keys).reset();
+  cut(sorted, 0, static_cast<std::uint32_t>(n), std::max<std::uint32_t>(1, maxReferences), out.clusters);
+  out.refs = HugePageArray<PrimRef>(n);
   parallelFor(n, threads, 1 << 15, [&](std::size_t i) {
-    const auto id = static_cast<std::uint32_t>(keys[i] & 0xFFFFFFFFu);
+    const auto id = static_cast<std::uint32_t>(sorted[i] & 0xFFFFFFFFu);
     out.refs[i] = faceReference(positions, faces[id], id);
   });
-  cut(keys, 0, n, std::max<std::uint32_t>(1, maxReferences), out.clusters);
   return out;
 }
 

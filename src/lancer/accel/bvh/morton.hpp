@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lancer/accel/bvh/build_parts.hpp"
+#include "lancer/util/huge_page_array.hpp"
 
 namespace lancer::bvh {
 
@@ -27,7 +28,7 @@ std::vector<Cluster> mortonClusters(std::vector<PrimRef>& refs, std::uint32_t ma
 // holds 16 bytes a face while it sorts and 40 after, not the 72 of both orders of references and
 // the keys.
 struct MortonFaces {
-  std::vector<PrimRef> refs;
+  HugePageArray<PrimRef> refs;
   std::vector<PackedTriangle> slivers;
   std::vector<Cluster> clusters;
 };
