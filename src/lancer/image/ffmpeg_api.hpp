@@ -60,7 +60,9 @@ namespace lancer {
   X(avformat, avio_flush)
 
 struct FfmpegApi {
-#define LANCER_FFMPEG_POINTER(library, function) decltype(&::function) function = nullptr;
+// (`function` names a declaration: it cannot be put in parentheses.)
+#define LANCER_FFMPEG_POINTER(library, function) \
+  decltype(&::function) function = nullptr;  // NOLINT(bugprone-macro-parentheses)
   LANCER_FFMPEG_FUNCTIONS(LANCER_FFMPEG_POINTER)
 #undef LANCER_FFMPEG_POINTER
 };

@@ -14,8 +14,10 @@ namespace lancer::bvh {
 inline namespace LANCER_ISA_NS {
 
 // One ray's walk from the root, resumable: step() does what one turn of walkFrom's loop does.
+// (Members in the order the constructor fills them; the padding tidy reports is a few bytes beside
+// the 4.5 KB stack.)
 template <typename Filter>
-struct RayWalk {
+struct RayWalk {  // NOLINT(clang-analyzer-optin.performance.Padding)
   const Ray& ray;
   float tMin, tMax, eps = 0;
   BoxRay boxRay;
@@ -113,7 +115,7 @@ std::size_t Bvh::closestHitsInFlightOn(std::span<const Ray> rays, float tMin, st
     }
   };
   for (int w = 0; w < kRaysInFlight; ++w) start(w);
-  while (live > 0) {
+  while (live > 0) {  // NOLINT(bugprone-infinite-loop): finish() and start() change `live`
     for (int w = 0; w < kRaysInFlight; ++w) {
       if (walk[w] && !walk[w]->step(nodes_, leaves_.data())) {
         finish(w);
