@@ -66,7 +66,7 @@ lancer_load() {  # best loadSeconds (wall, one cold-process load, mmap included)
 csv=$(mktemp)
 empty=$(mktemp --suffix=.geo)
 trap 'rm -f "$empty" "$csv"' EXIT
-"$build/bench/msh_load_bench" --benchmark_out="$csv" --benchmark_out_format=csv >/dev/null 2>&1
+LANCER_BENCH_DATA=$data "$build/bench/msh_load_bench" --benchmark_out="$csv" --benchmark_out_format=csv >/dev/null 2>&1
 lancer_cpu() {  # lancer_cpu v41_binary: seconds
   awk -F, -v name="\"loadMsh/$1/min_time:2.000\"" '$1 == name { print $4 / 1000 }' "$csv"
 }
