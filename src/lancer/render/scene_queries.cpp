@@ -35,24 +35,31 @@ bool liesOnPlane(const Scene& scene, std::uint32_t face, const ClipPlane& plane,
 // one of them as the scene's planes do (SceneQueries::firstSighting, shadowQuery): a ray never meets
 // it in the plane it enters the mesh's kept region by, and a shadow ray stops the on-plane tolerance
 // short of the plane it leaves that region by. Otherwise FaceClipSets::keeps.
-bool keepsOnOwnPlanes(const void* context, const Ray& ray, std::uint32_t face, float t) {
-  const Scene& scene = *static_cast<const Scene*>(context);
+// The part of `ray` that the own planes of `face`'s mesh keep (`kept`); null when that mesh has none.
+const FaceClipRange* keptByOwnPlanes(const Scene& scene, const Ray& ray, std::uint32_t face,
+                                     ClipInterval& kept) {
   const FaceClipSets& clips = scene.clipping.perMesh;
   const FaceClipRange* range = clips.rangeOf(face);
+  if (range) kept = clipRay(ray, clips.planesOf(*range));
+  return range;
+}
+
+bool keepsOnOwnPlanes(const void* context, const Ray& ray, std::uint32_t face, float t) {
+  const Scene& scene = *static_cast<const Scene*>(context);
+  ClipInterval kept;
+  const FaceClipRange* range = keptByOwnPlanes(scene, ray, face, kept);
   if (!range) return true;
-  const ClipInterval kept = clipRay(ray, clips.planesOf(*range));
   if (!(t > kept.enter && t < kept.exit)) return false;
   if (kept.enterPlane < 0) return true;
-  const ClipPlane& entered = clips.planes[range->planeBegin + static_cast<std::size_t>(kept.enterPlane)];
+  const ClipPlane& entered =
+      scene.clipping.perMesh.planes[range->planeBegin + static_cast<std::size_t>(kept.enterPlane)];
   return !liesOnPlane(scene, face, entered, onPlaneTolerance(scene));
 }
 
 bool keepsOnOwnPlanesForLight(const void* context, const Ray& ray, std::uint32_t face, float t) {
   const Scene& scene = *static_cast<const Scene*>(context);
-  const FaceClipSets& clips = scene.clipping.perMesh;
-  const FaceClipRange* range = clips.rangeOf(face);
-  if (!range) return true;
-  const ClipInterval kept = clipRay(ray, clips.planesOf(*range));
+  ClipInterval kept;
+  if (!keptByOwnPlanes(scene, ray, face, kept)) return true;
   if (!(t > kept.enter && t < kept.exit)) return false;
   return !(kept.exitRate > 0.0f && t >= kept.exit - onPlaneTolerance(scene) / kept.exitRate);
 }
