@@ -98,5 +98,66 @@ TEST(FaceShells, ShellsAreNumberedInOrderOfTheirFirstFace) {
   }
 }
 
+TEST(FaceShells, InterleavedAgreeingShellsAreComponentsOnAnyThreadCount) {
+  // Agreeing closed shells (every edge of two faces, traversed both ways) are found on every thread
+  // at once: their faces interleaved, in chunks of edges that start mid-shell, numbered as the
+  // components of the face graph in order of their first face, no face to flip.
+  std::vector<test::Soup> spheres;
+  for (int s = 0; s < 6; ++s) spheres.push_back(test::sphere(90 + s, 100, {3.0f * s, 0, 0}));
+  std::vector<MeshFace> faces;
+  std::vector<std::uint32_t> offset(spheres.size(), 0);
+  for (std::size_t s = 1; s < spheres.size(); ++s)
+    offset[s] = offset[s - 1] + static_cast<std::uint32_t>(spheres[s - 1].positions.size());
+  for (std::size_t f = 0;; ++f) {
+    bool any = false;
+    for (std::size_t k = spheres.size(); k-- > 0;) {  // the last sphere's faces first
+      if (f >= spheres[k].faces.size()) continue;
+      any = true;
+      if (k % 2 == 1 && f % 3 == 0) continue;
+      MeshFace face = spheres[k].faces[f];
+      for (int c = 0; c < face.cornerCount(); ++c) face.vertex[c] += offset[k];
+      faces.push_back(face);
+    }
+    if (!any) break;
+  }
+  for (std::size_t k = 1; k < spheres.size(); k += 2)  // the faces skipped above, at the end
+    for (std::size_t f = 0; f < spheres[k].faces.size(); f += 3) {
+      MeshFace face = spheres[k].faces[f];
+      for (int c = 0; c < face.cornerCount(); ++c) face.vertex[c] += offset[k];
+      faces.push_back(face);
+    }
+  ASSERT_TRUE(agrees(faces));
+  ASSERT_GT(3 * faces.size(), 2u * 65536);  // several chunks of edges
+  // Expected: the sphere of each face, numbered by first appearance.
+  std::vector<std::uint32_t> sphereOf(faces.size()), number(spheres.size(), 0xFFFFFFFFu);
+  std::uint32_t next = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    std::size_t k = spheres.size() - 1;
+    while (faces[f].vertex[0] < offset[k]) --k;
+    if (number[k] == 0xFFFFFFFFu) number[k] = next++;
+    sphereOf[f] = number[k];
+  }
+  for (const int threads : {1, 2, 5}) {
+    const FaceShells shells = findFaceShells(faces, threads);
+    ASSERT_EQ(shells.shellCount(), spheres.size());
+    EXPECT_EQ(shells.shellOfFace, sphereOf);
+    for (std::size_t s = 0; s < spheres.size(); ++s) {
+      EXPECT_TRUE(shells.closed[s] && shells.consistent[s] && shells.orientable[s]);
+      EXPECT_FALSE(shells.bordered[s] || shells.branched[s]);
+    }
+    EXPECT_EQ(std::count(shells.flip.begin(), shells.flip.end(), 0), static_cast<long>(faces.size()));
+  }
+  // One face turned: the shells are walked with their parities, the turned face to flip.
+  std::uint8_t unusedMask = kAllEdges;
+  reverseWinding(faces[1000], unusedMask);
+  for (const int threads : {1, 2}) {
+    const FaceShells shells = findFaceShells(faces, threads);
+    EXPECT_EQ(shells.shellOfFace, sphereOf);
+    EXPECT_FALSE(shells.consistent[sphereOf[1000]]);
+    EXPECT_TRUE(shells.orientable[sphereOf[1000]]);
+    for (std::size_t f = 0; f < faces.size(); ++f) ASSERT_EQ(shells.flip[f], f == 1000 ? 1 : 0) << f;
+  }
+}
+
 }  // namespace
 }  // namespace lancer

@@ -1,13 +1,14 @@
 #include "lancer/mesh/face_shells.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 #include <utility>
 
 #include "lancer/mesh/parity_disjoint_sets.hpp"
 #include "lancer/mesh/vertex_corners.hpp"
 #include "lancer/mesh/vertex_ranges.hpp"
-#include "lancer/util/huge_pages.hpp"
+#include "lancer/util/huge_page_array.hpp"
 #include "lancer/util/parallel_for.hpp"
 
 namespace lancer {
@@ -15,13 +16,16 @@ namespace {
 
 // Vertices per chunk of the parallel loops.
 constexpr std::size_t kGrain = 16384;
+// Edges per chunk of the concurrent pairing, faces per chunk of the numbering.
+constexpr std::size_t kEdgeGrain = 65536;
+constexpr std::size_t kFaceGrain = 65536;
 
 // Every face's edges grouped by key, in key order, and in face order among equal keys: a counting
 // sort on the smaller vertex (one pass to count, one to scatter, in face order, each shared out by
 // vertex ranges: vertex_ranges.hpp), then each vertex's few edges ordered by the larger vertex.
 // Two passes over the edges where a radix sort on the 64-bit key took eight (Manifold pairs its
 // half-edges the same way). The same table for any thread count.
-std::vector<FaceEdge> sortedFaceEdges(std::span<const MeshFace> faces, int threads) {
+HugePageArray<FaceEdge> sortedFaceEdges(std::span<const MeshFace> faces, int threads) {
   const std::size_t vertexCount = vertexCountOf(faces, threads);
   std::vector<std::uint32_t> bucketStart(vertexCount + 1, 0);
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
@@ -34,7 +38,8 @@ std::vector<FaceEdge> sortedFaceEdges(std::span<const MeshFace> faces, int threa
     }
   });
   for (std::size_t v = 0; v < vertexCount; ++v) bucketStart[v + 1] += bucketStart[v];
-  std::vector<FaceEdge> edges = vectorOnHugePages<FaceEdge>(bucketStart.back());  // 48 bytes per face
+  // 48 bytes per face, every one written below: no value-initialising pass before.
+  HugePageArray<FaceEdge> edges(bucketStart.back());
   std::vector<std::uint32_t> fill(bucketStart.begin(), bucketStart.end() - 1);
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
     for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -68,19 +73,133 @@ std::vector<FaceEdge> sortedFaceEdges(std::span<const MeshFace> faces, int threa
   return edges;
 }
 
+// Union-find over faces that several threads join at once (lock-free: a root is linked below a
+// smaller root by compare-and-swap, retried when another thread linked it first; finds halve their
+// paths). Each parent is at most its element, so a set's root is its smallest face, as in
+// ParityDisjointSets: the sets, and so the shells, do not depend on the order of the unions.
+class ConcurrentDisjointSets {
+ public:
+  explicit ConcurrentDisjointSets(std::size_t count) : parent_(count) {}
+  // Each chunk of elements its own sets (the first touch of the array, on every thread).
+  void reset(std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) parent_[i] = static_cast<std::uint32_t>(i);
+  }
+  std::uint32_t find(std::uint32_t x) {
+    for (;;) {
+      const std::uint32_t up = load(x);
+      if (up == x) return x;
+      const std::uint32_t upper = load(up);
+      // Halving: x skips to its grandparent (a failed exchange means another thread moved it).
+      if (upper != up) {
+        std::uint32_t expected = up;
+        ref(x).compare_exchange_weak(expected, upper, std::memory_order_relaxed);
+      }
+      x = upper;
+    }
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    for (;;) {
+      a = find(a), b = find(b);
+      if (a == b) return;
+      if (a > b) std::swap(a, b);
+      std::uint32_t expected = b;
+      if (ref(b).compare_exchange_strong(expected, a, std::memory_order_acq_rel)) return;
+    }
+  }
+  // Once the unions are over: x pointed straight at its root.
+  std::uint32_t flatten(std::uint32_t x) {
+    const std::uint32_t root = find(x);
+    parent_[x] = root;
+    return root;
+  }
+  std::uint32_t parent(std::uint32_t x) const { return parent_[x]; }
+
+ private:
+  std::atomic_ref<std::uint32_t> ref(std::uint32_t x) { return std::atomic_ref<std::uint32_t>(parent_[x]); }
+  std::uint32_t load(std::uint32_t x) { return ref(x).load(std::memory_order_acquire); }
+  HugePageArray<std::uint32_t> parent_;
+};
+
+// The common case, a closed surface already wound consistently (the mesher's output: every edge
+// shared by exactly two faces that traverse it in opposite directions): then every parity
+// constraint says "turn both the same way", no set is broken and every flip bit is 0, and the
+// shells are the connected components, found here on every thread at once. Returns false, with
+// `result` untouched, as soon as an edge says otherwise (findFaceShells then takes the one-thread
+// parity walk); the same shells as that walk otherwise.
+bool findConsistentShells(std::span<const MeshFace> faces, const HugePageArray<FaceEdge>& edges, int threads,
+                          FaceShells& result) {
+  const std::size_t faceCount = faces.size();
+  const std::size_t edgeCount = edges.size();
+  ConcurrentDisjointSets sets(faceCount);
+  parallelChunks(ChunkPlan(faceCount, kFaceGrain), threads,
+                 [&](std::size_t, std::size_t begin, std::size_t end) { sets.reset(begin, end); });
+  std::atomic<bool> irregular{false};
+  // A chunk takes the edges whose key starts in its range (a key's edges are never cut apart).
+  auto groupStart = [&](std::size_t i) {
+    while (i > 0 && i < edgeCount && edges[i].key == edges[i - 1].key) ++i;
+    return i;
+  };
+  parallelChunks(ChunkPlan(edgeCount, kEdgeGrain), threads,
+                 [&](std::size_t, std::size_t begin, std::size_t end) {
+                   const std::size_t last = groupStart(end);
+                   for (std::size_t i = groupStart(begin); i < last; i += 2) {
+                     if (i + 1 >= edgeCount || edges[i + 1].key != edges[i].key ||
+                         edges[i].forward == edges[i + 1].forward ||
+                         (i + 2 < edgeCount && edges[i + 2].key == edges[i].key) ||
+                         irregular.load(std::memory_order_relaxed)) {
+                       irregular = true;
+                       return;
+                     }
+                     if (edges[i].face != edges[i + 1].face) sets.unite(edges[i].face, edges[i + 1].face);
+                   }
+                 });
+  if (irregular) return false;
+  // Shells numbered in order of their first face, their root: each chunk counts its roots, then
+  // numbers them from its offset, then its other faces take their root's number.
+  const ChunkPlan plan(faceCount, kFaceGrain);
+  std::vector<std::uint32_t> chunkRoots(plan.chunks + 1, 0);
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    std::uint32_t roots = 0;
+    for (std::size_t f = begin; f < end; ++f) roots += sets.flatten(static_cast<std::uint32_t>(f)) == f;
+    chunkRoots[chunk + 1] = roots;
+  });
+  for (std::size_t k = 0; k < plan.chunks; ++k) chunkRoots[k + 1] += chunkRoots[k];
+  result.shellOfFace.resize(faceCount);
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    std::uint32_t next = chunkRoots[chunk];
+    for (std::size_t f = begin; f < end; ++f)
+      if (sets.parent(static_cast<std::uint32_t>(f)) == f) result.shellOfFace[f] = next++;
+  });
+  parallelChunks(plan, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      const std::uint32_t root = sets.parent(static_cast<std::uint32_t>(f));
+      if (root != f) result.shellOfFace[f] = result.shellOfFace[root];
+    }
+  });
+  const std::size_t shellCount = chunkRoots[plan.chunks];
+  result.closed.assign(shellCount, 1);
+  result.consistent.assign(shellCount, 1);
+  result.orientable.assign(shellCount, 1);
+  result.bordered.assign(shellCount, 0);
+  result.branched.assign(shellCount, 0);
+  result.flip.assign(faceCount, 0);
+  return true;
+}
+
 }  // namespace
 
 FaceShells findFaceShells(std::span<const MeshFace> faces, int threads) {
   FaceShells result;
   const std::size_t faceCount = faces.size();
   result.edges = sortedFaceEdges(faces, threads);
+  if (faceCount >= ParityDisjointSets::kMaxCount)
+    throw std::length_error("findFaceShells: more than 2^31 faces in one mesh");
+  if (findConsistentShells(faces, result.edges, threads, result)) return result;
 
   // Faces sharing an edge belong to one shell; an edge decides closedness and orientation. Two
   // faces on a manifold edge that traverse it the same way must be turned opposite ways for the
   // shell to agree (one parity constraint); at other edges the shell is open and no such bit holds.
-  const std::vector<FaceEdge>& edges = result.edges;
-  if (faceCount >= ParityDisjointSets::kMaxCount)
-    throw std::length_error("findFaceShells: more than 2^31 faces in one mesh");
+  const HugePageArray<FaceEdge>& edges = result.edges;
   ParityDisjointSets sets(faceCount);
   // Per face, what its edges told about its shell (one byte for the four, written rarely).
   enum : std::uint8_t { kOpen = 1, kMisoriented = 2, kBorder = 4, kBranch = 8 };

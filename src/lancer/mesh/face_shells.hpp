@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "lancer/mesh/mesh.hpp"
+#include "lancer/util/huge_page_array.hpp"
 
 namespace lancer {
 
@@ -22,7 +23,7 @@ struct FaceEdge {
 // (shell_orientation.hpp), cavity finding (shell_nesting.hpp) and the regions of non-manifold shells
 // (shell_regions.hpp), which need the same edge table.
 struct FaceShells {
-  std::vector<FaceEdge> edges;             // every face's edges, sorted by key
+  HugePageArray<FaceEdge> edges;           // every face's edges, sorted by key
   std::vector<std::uint32_t> shellOfFace;  // shells numbered in order of their first face
   std::vector<std::uint8_t> closed;        // per shell: every edge shared by exactly two faces
   std::vector<std::uint8_t> consistent;    // per shell: shared edges traversed in opposite directions

@@ -18,7 +18,7 @@ Vec3d cornerOf(std::span<const Vec3> positions, const MeshFace& face, int c) {
 ShellRegions findShellRegions(std::span<const Vec3> positions, const std::vector<MeshFace>& faces,
                               const FaceShells& shells) {
   ShellRegions result;
-  const std::vector<FaceEdge>& edges = shells.edges;
+  const HugePageArray<FaceEdge>& edges = shells.edges;
   // Shells with an edge of three or more faces and none of one.
   std::vector<std::uint8_t> candidate(shells.shellCount(), 0);
   bool any = false;

@@ -12,6 +12,7 @@
 #include "lancer/mesh/prefetch_corners.hpp"
 #include "lancer/mesh/vertex_corners.hpp"
 #include "lancer/mesh/vertex_ranges.hpp"
+#include "lancer/util/huge_page_array.hpp"
 #include "lancer/util/huge_pages.hpp"
 #include "lancer/util/parallel_for.hpp"
 
@@ -227,7 +228,7 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
   // Per face, in face order (sequential reads, shared out by chunks of faces): its unit normal and
   // the weights of its corners.
   std::vector<Vec3> unitFaceNormal = vectorOnHugePages<Vec3>(faceCount);
-  std::vector<std::array<float, 4>> cornerWeight = vectorOnHugePages<std::array<float, 4>>(faceCount);
+  HugePageArray<std::array<float, 4>> cornerWeight(faceCount);  // written whole by the loop below
   parallelChunks(ChunkPlan(faceCount, kGrain), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
     faceTermsOf(positions, faces.subspan(begin, end - begin), unitFaceNormal.data() + begin,
                 cornerWeight.data() + begin);
@@ -287,7 +288,7 @@ CornerNormals computeCornerNormals(std::span<const Vec3> positions, std::span<co
   // The sums and weights are done with: given back before the faces' corners and the whole list are
   // allocated, which then take their pages (util/huge_page_blocks.hpp) instead of adding to the peak.
   std::vector<VertexSum>().swap(vertexSum);
-  std::vector<std::array<float, 4>>().swap(cornerWeight);
+  cornerWeight.reset();
   CornerNormals result;
   result.faceCorner = vectorOnHugePages<std::array<std::uint32_t, 4>>(faceCount, {0, 0, 0, 0});
   // Concatenate, and turn each chunk's local indices into indices into the whole list.
