@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "lancer/util/check.hpp"
+#include "lancer/util/huge_page_array.hpp"
 #include "lancer/util/huge_pages.hpp"
 #include "lancer/util/morton_order.hpp"
 #include "lancer/util/parallel_for.hpp"
@@ -43,12 +44,13 @@ void positionBox(const std::vector<Vec3>& positions, int threads, float lo[3], f
 // The order of the items whose codes code(i) gives: order[new] = old.
 template <typename Code>
 std::shared_ptr<Order> mortonOrder(std::size_t count, int threads, Code&& code) {
-  std::vector<std::uint64_t> keys = vectorOnHugePages<std::uint64_t>(count);
+  // The keys and the sort's scratch are written whole before they are read: not initialised.
+  HugePageArray<std::uint64_t> keys(count), scratch(count);
   parallelFor(count, threads, kGrain, [&](std::size_t i) { keys[i] = std::uint64_t(code(i)) << 32 | i; });
-  sortMortonKeys(keys, threads);
+  const std::uint64_t* sorted = sortMortonKeys(keys.data(), scratch.data(), count, threads);
   auto order = std::make_shared<Order>(vectorOnHugePages<std::uint32_t>(count));
   parallelFor(count, threads, kGrain,
-              [&](std::size_t i) { (*order)[i] = static_cast<std::uint32_t>(keys[i]); });
+              [&](std::size_t i) { (*order)[i] = static_cast<std::uint32_t>(sorted[i]); });
   return order;
 }
 
@@ -186,7 +188,7 @@ MeshRenumbering renumberInMortonOrder(Mesh& mesh, int threads) {
     const float p[3] = {positions[v].x, positions[v].y, positions[v].z};
     return grid.code(p);
   });
-  Order newVertex = vectorOnHugePages<std::uint32_t>(vertexCount);
+  HugePageArray<std::uint32_t> newVertex(vertexCount);  // every entry written below
   parallelFor(vertexCount, threads, kGrain,
               [&](std::size_t v) { newVertex[(*vertexOrder)[v]] = static_cast<std::uint32_t>(v); });
 
