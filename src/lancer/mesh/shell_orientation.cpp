@@ -149,7 +149,9 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
   ShellNesting nesting =
       findShellNesting(positions, faces, shells, facePhysicalTag, solidShell, findEnclosing);
   std::vector<std::uint8_t>& cavity = nesting.cavity;
-  if (findEnclosing) {
+  // (Nothing to learn when no shell lies in another: the passes over the faces are skipped.)
+  if (findEnclosing && std::any_of(nesting.enclosing.begin(), nesting.enclosing.end(),
+                                   [](std::uint32_t around) { return around != kNoShell; })) {
     std::vector<std::uint32_t> firstFace(shells.shellCount(), kNoShell);
     for (std::size_t f = faceCount; f-- > 0;)
       firstFace[shells.shellOfFace[f]] = static_cast<std::uint32_t>(f);
@@ -168,22 +170,34 @@ ShellOrientationReport orientClosedShellsOutward(std::span<const Vec3> positions
   for (std::size_t s = 0; s < interfaceShell.size(); ++s)
     if (interfaceShell[s]) cavity[s] = 0;
 
-  std::uint8_t unusedMask = kAllEdges;
   if (faceSide.empty()) orientShellRegions(positions, faces, edgeMasks, facePhysicalTag, shells, report);
-  for (std::size_t f = 0; f < faceCount; ++f) {
-    const std::uint32_t shell = shells.shellOfFace[f];
-    if (!solidShell[shell]) {
-      if (!faceSide.empty() && faceSide[f] != FaceSide::kSurface) report.faceBoundsSolid[f] = 1;
-      continue;
+  // Each face turned on its own, by chunks of faces; the reversed interfaces concatenated in chunk
+  // order (face order, as one pass gives them).
+  std::vector<std::uint8_t> reverseShell(shells.shellCount(), 0);
+  for (std::size_t s = 0; s < shells.shellCount(); ++s)
+    reverseShell[s] = (volume6[s] < 0.0) != (cavity[s] != 0);
+  std::vector<std::uint64_t> chunkFlipped(plan.chunks, 0);
+  std::vector<std::vector<std::uint32_t>> chunkInterfaces(plan.chunks);
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    std::uint8_t unusedMask = kAllEdges;
+    for (std::size_t f = begin; f < end; ++f) {
+      const std::uint32_t shell = shells.shellOfFace[f];
+      if (!solidShell[shell]) {
+        if (!faceSide.empty() && faceSide[f] != FaceSide::kSurface) report.faceBoundsSolid[f] = 1;
+        continue;
+      }
+      report.faceBoundsSolid[f] = 1;
+      if ((flip[f] != 0) == (reverseShell[shell] != 0)) continue;
+      reverseWinding(faces[f], edgeMasks.empty() ? unusedMask : edgeMasks[f]);
+      ++chunkFlipped[chunk];
+      if (!faceSide.empty() && faceSide[f] == FaceSide::kInterface)
+        chunkInterfaces[chunk].push_back(static_cast<std::uint32_t>(f));
     }
-    report.faceBoundsSolid[f] = 1;
-    const bool reverseShell = (volume6[shell] < 0.0) != (cavity[shell] != 0);
-    const bool reverse = (flip[f] != 0) != reverseShell;
-    if (!reverse) continue;
-    reverseWinding(faces[f], edgeMasks.empty() ? unusedMask : edgeMasks[f]);
-    ++report.flippedFaces;
-    if (!faceSide.empty() && faceSide[f] == FaceSide::kInterface)
-      report.reversedInterfaces.push_back(static_cast<std::uint32_t>(f));
+  });
+  for (std::size_t k = 0; k < plan.chunks; ++k) {
+    report.flippedFaces += chunkFlipped[k];
+    report.reversedInterfaces.insert(report.reversedInterfaces.end(), chunkInterfaces[k].begin(),
+                                     chunkInterfaces[k].end());
   }
   if (oriented) keepOrientedShells(shells, solidShell, cavity, faceSide.empty(), *oriented);
   for (std::size_t s = 0; s < shells.shellCount(); ++s) {
