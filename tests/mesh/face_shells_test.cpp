@@ -100,7 +100,7 @@ TEST(FaceShells, ShellsAreNumberedInOrderOfTheirFirstFace) {
 
 TEST(FaceShells, InterleavedAgreeingShellsAreComponentsOnAnyThreadCount) {
   // Agreeing closed shells (every edge of two faces, traversed both ways) are found on every thread
-  // at once: their faces interleaved, in chunks of edges that start mid-shell, numbered as the
+  // at once: their faces interleaved, in chunks of vertices that start mid-shell, numbered as the
   // components of the face graph in order of their first face, no face to flip.
   std::vector<test::Soup> spheres;
   for (int s = 0; s < 6; ++s) spheres.push_back(test::sphere(90 + s, 100, {3.0f * s, 0, 0}));
@@ -127,7 +127,7 @@ TEST(FaceShells, InterleavedAgreeingShellsAreComponentsOnAnyThreadCount) {
       faces.push_back(face);
     }
   ASSERT_TRUE(agrees(faces));
-  ASSERT_GT(3 * faces.size(), 2u * 65536);  // several chunks of edges
+  ASSERT_GT(faces.size(), 2u * 16384);  // several chunks of vertices
   // Expected: the sphere of each face, numbered by first appearance.
   std::vector<std::uint32_t> sphereOf(faces.size()), number(spheres.size(), 0xFFFFFFFFu);
   std::uint32_t next = 0;
@@ -146,6 +146,7 @@ TEST(FaceShells, InterleavedAgreeingShellsAreComponentsOnAnyThreadCount) {
       EXPECT_FALSE(shells.bordered[s] || shells.branched[s]);
     }
     EXPECT_EQ(std::count(shells.flip.begin(), shells.flip.end(), 0), static_cast<long>(faces.size()));
+    EXPECT_TRUE(shells.edges.empty());  // found without the sorted table
   }
   // One face turned: the shells are walked with their parities, the turned face to flip.
   std::uint8_t unusedMask = kAllEdges;
@@ -155,6 +156,9 @@ TEST(FaceShells, InterleavedAgreeingShellsAreComponentsOnAnyThreadCount) {
     EXPECT_EQ(shells.shellOfFace, sphereOf);
     EXPECT_FALSE(shells.consistent[sphereOf[1000]]);
     EXPECT_TRUE(shells.orientable[sphereOf[1000]]);
+    std::size_t corners = 0;
+    for (const MeshFace& face : faces) corners += static_cast<std::size_t>(face.cornerCount());
+    EXPECT_EQ(shells.edges.size(), corners);  // walked over the sorted table
     for (std::size_t f = 0; f < faces.size(); ++f) ASSERT_EQ(shells.flip[f], f == 1000 ? 1 : 0) << f;
   }
 }

@@ -16,18 +16,23 @@ namespace {
 
 // Vertices per chunk of the parallel loops.
 constexpr std::size_t kGrain = 16384;
-// Edges per chunk of the concurrent pairing, faces per chunk of the numbering.
-constexpr std::size_t kEdgeGrain = 65536;
+// Faces per chunk of the shells' numbering.
 constexpr std::size_t kFaceGrain = 65536;
 
-// Every face's edges grouped by key, in key order, and in face order among equal keys: a counting
-// sort on the smaller vertex (one pass to count, one to scatter, in face order, each shared out by
-// vertex ranges: vertex_ranges.hpp), then each vertex's few edges ordered by the larger vertex.
-// Two passes over the edges where a radix sort on the 64-bit key took eight (Manifold pairs its
-// half-edges the same way). The same table for any thread count.
-HugePageArray<FaceEdge> sortedFaceEdges(std::span<const MeshFace> faces, int threads) {
+// Every face's edges bucketed by their smaller vertex, in face order within a bucket: a counting sort
+// (one pass to count, one to scatter, in face order, each shared out by vertex ranges:
+// vertex_ranges.hpp). The same table for any thread count.
+struct EdgeBuckets {
+  HugePageArray<FaceEdge> edges;
+  std::vector<std::uint32_t> start;  // vertex v's edges: [start[v], start[v + 1])
+  std::size_t vertexCount() const { return start.size() - 1; }
+};
+
+EdgeBuckets bucketFaceEdges(std::span<const MeshFace> faces, int threads) {
   const std::size_t vertexCount = vertexCountOf(faces, threads);
-  std::vector<std::uint32_t> bucketStart(vertexCount + 1, 0);
+  EdgeBuckets buckets;
+  std::vector<std::uint32_t>& bucketStart = buckets.start;
+  bucketStart.assign(vertexCount + 1, 0);
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
     for (const MeshFace& face : faces) {
       const int n = face.cornerCount();
@@ -39,7 +44,8 @@ HugePageArray<FaceEdge> sortedFaceEdges(std::span<const MeshFace> faces, int thr
   });
   for (std::size_t v = 0; v < vertexCount; ++v) bucketStart[v + 1] += bucketStart[v];
   // 48 bytes per face, every one written below: no value-initialising pass before.
-  HugePageArray<FaceEdge> edges(bucketStart.back());
+  buckets.edges = HugePageArray<FaceEdge>(bucketStart.back());
+  FaceEdge* edges = buckets.edges.data();
   std::vector<std::uint32_t> fill(bucketStart.begin(), bucketStart.end() - 1);
   forEachVertexRange(vertexCount, threads, [&](std::size_t firstVertex, std::size_t endVertex) {
     for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -54,11 +60,17 @@ HugePageArray<FaceEdge> sortedFaceEdges(std::span<const MeshFace> faces, int thr
       }
     }
   });
-  // Within a bucket: stable insertion sort by key (a vertex has a handful of edges; a fan centre
-  // with hundreds takes the library's stable sort).
-  parallelFor(vertexCount, threads, kGrain, [&](std::size_t v) {
-    FaceEdge* first = edges.data() + bucketStart[v];
-    FaceEdge* last = edges.data() + bucketStart[v + 1];
+  return buckets;
+}
+
+// Each bucket ordered by key, equal keys in face order: then the table is grouped by key, in key
+// order, as a stable sort of every edge would leave it. A vertex has a handful of edges (insertion
+// sort); a fan centre with hundreds takes the library's stable sort. Two passes over the edges in
+// all where a radix sort on the 64-bit key took eight (Manifold pairs its half-edges the same way).
+void sortBuckets(EdgeBuckets& buckets, int threads) {
+  parallelFor(buckets.vertexCount(), threads, kGrain, [&](std::size_t v) {
+    FaceEdge* first = buckets.edges.data() + buckets.start[v];
+    FaceEdge* last = buckets.edges.data() + buckets.start[v + 1];
     if (last - first > 32) {
       std::stable_sort(first, last);
       return;
@@ -70,7 +82,6 @@ HugePageArray<FaceEdge> sortedFaceEdges(std::span<const MeshFace> faces, int thr
       *j = e;
     }
   });
-  return edges;
 }
 
 // Union-find over faces that several threads join at once (lock-free: a root is linked below a
@@ -123,34 +134,51 @@ class ConcurrentDisjointSets {
 // The common case, a closed surface already wound consistently (the mesher's output: every edge
 // shared by exactly two faces that traverse it in opposite directions): then every parity
 // constraint says "turn both the same way", no set is broken and every flip bit is 0, and the
-// shells are the connected components, found here on every thread at once. Returns false, with
-// `result` untouched, as soon as an edge says otherwise (findFaceShells then takes the one-thread
-// parity walk); the same shells as that walk otherwise.
-bool findConsistentShells(std::span<const MeshFace> faces, const HugePageArray<FaceEdge>& edges, int threads,
-                          FaceShells& result) {
-  const std::size_t faceCount = faces.size();
-  const std::size_t edgeCount = edges.size();
+// shells are the connected components, found here on every thread at once, straight from the
+// unsorted buckets (a bucket's two edges of one key found by comparing its few edges pairwise).
+// Returns false, with `result` untouched, as soon as an edge says otherwise (findFaceShells then
+// sorts the buckets and takes the one-thread parity walk); the same shells as that walk otherwise.
+bool findConsistentShells(std::size_t faceCount, EdgeBuckets& buckets, int threads, FaceShells& result) {
   ConcurrentDisjointSets sets(faceCount);
   parallelChunks(ChunkPlan(faceCount, kFaceGrain), threads,
                  [&](std::size_t, std::size_t begin, std::size_t end) { sets.reset(begin, end); });
   std::atomic<bool> irregular{false};
-  // A chunk takes the edges whose key starts in its range (a key's edges are never cut apart).
-  auto groupStart = [&](std::size_t i) {
-    while (i > 0 && i < edgeCount && edges[i].key == edges[i - 1].key) ++i;
-    return i;
+  // The edges of one bucket, [first, last), in any order: each key on exactly two of them, one each
+  // way. Bit i of `paired`: edge i found its partner already.
+  auto pairBucket = [&](FaceEdge* first, FaceEdge* last) {
+    const auto count = static_cast<std::size_t>(last - first);
+    std::uint32_t paired = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (paired >> i & 1u) continue;
+      std::size_t partner = count;
+      for (std::size_t j = i + 1; j < count; ++j) {
+        if (first[j].key != first[i].key) continue;
+        if (partner != count) return false;  // three or more faces on the edge
+        partner = j;
+      }
+      if (partner == count || first[partner].forward == first[i].forward) return false;
+      paired |= 1u << partner;
+      if (first[i].face != first[partner].face) sets.unite(first[i].face, first[partner].face);
+    }
+    return true;
   };
-  parallelChunks(ChunkPlan(edgeCount, kEdgeGrain), threads,
+  parallelChunks(ChunkPlan(buckets.vertexCount(), kGrain), threads,
                  [&](std::size_t, std::size_t begin, std::size_t end) {
-                   const std::size_t last = groupStart(end);
-                   for (std::size_t i = groupStart(begin); i < last; i += 2) {
-                     if (i + 1 >= edgeCount || edges[i + 1].key != edges[i].key ||
-                         edges[i].forward == edges[i + 1].forward ||
-                         (i + 2 < edgeCount && edges[i + 2].key == edges[i].key) ||
-                         irregular.load(std::memory_order_relaxed)) {
+                   for (std::size_t v = begin; v < end; ++v) {
+                     if (irregular.load(std::memory_order_relaxed)) return;
+                     FaceEdge* first = buckets.edges.data() + buckets.start[v];
+                     FaceEdge* last = buckets.edges.data() + buckets.start[v + 1];
+                     if (last - first > 32) {  // a fan centre: sorted, its pairs side by side
+                       std::stable_sort(first, last);
+                       for (FaceEdge* e = first; e < last; e += 2)
+                         if (!pairBucket(e, std::min(e + 2, last))) {
+                           irregular = true;
+                           return;
+                         }
+                     } else if (!pairBucket(first, last)) {
                        irregular = true;
                        return;
                      }
-                     if (edges[i].face != edges[i + 1].face) sets.unite(edges[i].face, edges[i + 1].face);
                    }
                  });
   if (irregular) return false;
@@ -191,10 +219,12 @@ bool findConsistentShells(std::span<const MeshFace> faces, const HugePageArray<F
 FaceShells findFaceShells(std::span<const MeshFace> faces, int threads) {
   FaceShells result;
   const std::size_t faceCount = faces.size();
-  result.edges = sortedFaceEdges(faces, threads);
   if (faceCount >= ParityDisjointSets::kMaxCount)
     throw std::length_error("findFaceShells: more than 2^31 faces in one mesh");
-  if (findConsistentShells(faces, result.edges, threads, result)) return result;
+  EdgeBuckets buckets = bucketFaceEdges(faces, threads);
+  if (findConsistentShells(faceCount, buckets, threads, result)) return result;  // no edge table kept
+  sortBuckets(buckets, threads);
+  result.edges = std::move(buckets.edges);
 
   // Faces sharing an edge belong to one shell; an edge decides closedness and orientation. Two
   // faces on a manifold edge that traverse it the same way must be turned opposite ways for the

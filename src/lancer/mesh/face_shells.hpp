@@ -23,7 +23,9 @@ struct FaceEdge {
 // (shell_orientation.hpp), cavity finding (shell_nesting.hpp) and the regions of non-manifold shells
 // (shell_regions.hpp), which need the same edge table.
 struct FaceShells {
-  HugePageArray<FaceEdge> edges;           // every face's edges, sorted by key
+  // Every face's edges, sorted by key; empty when every shell is closed and agrees (every edge of
+  // two faces traversed both ways), which is found without sorting them and needs nothing more.
+  HugePageArray<FaceEdge> edges;
   std::vector<std::uint32_t> shellOfFace;  // shells numbered in order of their first face
   std::vector<std::uint8_t> closed;        // per shell: every edge shared by exactly two faces
   std::vector<std::uint8_t> consistent;    // per shell: shared edges traversed in opposite directions
