@@ -117,10 +117,11 @@ class ConcurrentDisjointSets {
       if (ref(b).compare_exchange_strong(expected, a, std::memory_order_acq_rel)) return;
     }
   }
-  // Once the unions are over: x pointed straight at its root.
+  // Once the unions are over: x pointed straight at its root (atomically: other threads' finds may
+  // be reading x's parent at the time).
   std::uint32_t flatten(std::uint32_t x) {
     const std::uint32_t root = find(x);
-    parent_[x] = root;
+    ref(x).store(root, std::memory_order_relaxed);
     return root;
   }
   std::uint32_t parent(std::uint32_t x) const { return parent_[x]; }
