@@ -358,9 +358,10 @@ inline void registerLancerPackets(const std::string& kind, const std::string& me
 }
 
 // The BVH's closest hits of independent rays with several in flight (Bvh::intersect of a span of rays),
-// as "trace/bvh-inflight/<mesh>/<rays>/threads:N": the same rays as the trace rows, chunk by chunk.
+// as "trace/bvh-inflight/<mesh>/<rays>/threads:N": the same rays as the trace rows, chunk by chunk
+// (shadow rays: the any-hit query, Bvh::occluded of a span).
 inline void registerLancerInFlight(const std::string& mesh) {
-  for (const char* rayKind : {"primary", "incoherent"}) {
+  for (const char* rayKind : {"primary", "shadow", "incoherent"}) {
     for (int threads : {1, 2}) {
       const std::string rk = rayKind;
       benchmark::RegisterBenchmark(
@@ -380,10 +381,15 @@ inline void registerLancerInFlight(const std::string& mesh) {
                 hits = 0;
                 const double s =
                     runChunked(set.rays.size(), threads, [&](std::size_t begin, std::size_t end) {
-                      std::vector<Hit> found(end - begin);
-                      hits +=
-                          bvh.intersect(std::span(set.rays).subspan(begin, end - begin), set.tMin,
-                                        std::span(set.tMax).subspan(begin, end - begin), std::span(found));
+                      const auto rays = std::span(set.rays).subspan(begin, end - begin);
+                      const auto ends = std::span(set.tMax).subspan(begin, end - begin);
+                      if (set.anyHit) {
+                        std::vector<std::uint8_t> blocked(end - begin);
+                        hits += bvh.occluded(rays, set.tMin, ends, std::span(blocked));
+                      } else {
+                        std::vector<Hit> found(end - begin);
+                        hits += bvh.intersect(rays, set.tMin, ends, std::span(found));
+                      }
                     });
                 state.SetIterationTime(s);
                 seconds += s;
