@@ -33,7 +33,8 @@ Material paintedMaterial(const std::string& name, const Vec3& colour) {
 
 }  // namespace
 
-SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh, std::optional<UpAxis> up) {
+SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh, std::optional<UpAxis> up,
+                                int threads) {
   SceneDescription scene;
   scene.path = meshPath;
   scene.render.shading = ShadingMode::Phong;
@@ -77,17 +78,17 @@ SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh, s
   if (up) {
     applyUpAxis(scene.camera, *up);
   } else {
-    const UpGuess guess = guessUpAxis(mesh);
+    const UpGuess guess = guessUpAxis(mesh, threads);
     scene.camera.up = guess.frame.up;
     scene.camera.viewFrom = guess.frame.toViewer;
   }
   scene.lightsFollowCamera = true;
-  placeQuickLookLights(scene, mesh);
+  placeQuickLookLights(scene, mesh, threads);
   return scene;
 }
 
-void placeQuickLookLights(SceneDescription& scene, const Mesh& mesh) {
-  const Aabb bounds = faceBounds(mesh);
+void placeQuickLookLights(SceneDescription& scene, const Mesh& mesh, int threads) {
+  const Aabb bounds = faceBoundsOnThreads(mesh, threads);
   const Aabbd world = bounds.empty()
                           ? Aabbd{mesh.origin, mesh.origin}
                           : Aabbd{mesh.origin + toDouble(bounds.lower), mesh.origin + toDouble(bounds.upper)};
