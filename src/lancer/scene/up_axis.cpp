@@ -108,7 +108,10 @@ Aabb faceBoundsOnThreads(const Mesh& mesh, int threads) {
 }
 
 UpGuess guessUpAxis(const Mesh& mesh, int threads) {
-  const Aabb bounds = faceBoundsOnThreads(mesh, threads);
+  return guessUpAxis(mesh, faceBoundsOnThreads(mesh, threads), threads);
+}
+
+UpGuess guessUpAxis(const Mesh& mesh, const Aabb& bounds, int threads) {
   const Vec3d extent = toDouble(bounds.extent());
   const double largest = std::max({extent.x, extent.y, extent.z});
   UpGuess guess;
