@@ -358,41 +358,59 @@ inline void registerLancerPackets(const std::string& kind, const std::string& me
 }
 
 // The BVH's closest hits of independent rays with several in flight (Bvh::intersect of a span of rays),
-// as "trace/bvh-inflight/<mesh>/<rays>/threads:N": the same rays as the trace rows, chunk by chunk.
+// as "trace/bvh-inflight/<mesh>/<rays>/threads:N": the same rays as the trace rows, chunk by chunk
+// (shadow rays: the any-hit query, Bvh::occluded of a span). "occluded/bvh(-inflight)/<mesh>/
+// incoherent/threads:N": the any-hit queries, single and in flight, of the incoherent rays (as a path
+// tracer's shadow rays from its bounces would be).
 inline void registerLancerInFlight(const std::string& mesh) {
-  for (const char* rayKind : {"primary", "incoherent"}) {
+  struct Row {
+    std::string name, rays;
+    bool anyHit, inFlight;
+  };
+  const Row rows[] = {{"trace/bvh-inflight", "primary", false, true},
+                      {"trace/bvh-inflight", "shadow", true, true},
+                      {"trace/bvh-inflight", "incoherent", false, true},
+                      {"occluded/bvh", "incoherent", true, false},
+                      {"occluded/bvh-inflight", "incoherent", true, true}};
+  for (const Row& row : rows) {
     for (int threads : {1, 2}) {
-      const std::string rk = rayKind;
       benchmark::RegisterBenchmark(
-          ("trace/bvh-inflight/" + mesh + "/" + rk + "/threads:" + std::to_string(threads)).c_str(),
+          (row.name + "/" + mesh + "/" + row.rays + "/threads:" + std::to_string(threads)).c_str(),
           [=](benchmark::State& state) {
             MeshContext& ctx = meshContext(mesh);
-            const RaySet& set = ctx.rays(rk);
+            const RaySet& set = ctx.rays(row.rays);
             const Bvh* tree = nullptr;
             ctx.withTree("bvh", [&](const auto& t) {
               if constexpr (std::is_same_v<std::decay_t<decltype(t)>, Bvh>) tree = &t;
             });
-            {
-              const Bvh& bvh = *tree;
-              double seconds = 0;
-              std::atomic<std::uint64_t> hits{0};
-              for (auto _ : state) {
-                hits = 0;
-                const double s =
-                    runChunked(set.rays.size(), threads, [&](std::size_t begin, std::size_t end) {
-                      std::vector<Hit> found(end - begin);
-                      hits +=
-                          bvh.intersect(std::span(set.rays).subspan(begin, end - begin), set.tMin,
-                                        std::span(set.tMax).subspan(begin, end - begin), std::span(found));
-                    });
-                state.SetIterationTime(s);
-                seconds += s;
-              }
-              const double rays = double(set.rays.size()) * double(state.iterations());
-              state.counters["Mrays_per_s"] = rays / seconds * 1e-6;
-              state.counters["hit_fraction"] = double(hits) / double(set.rays.size());
-              state.counters["rays"] = double(set.rays.size());
+            const Bvh& bvh = *tree;
+            double seconds = 0;
+            std::atomic<std::uint64_t> hits{0};
+            for (auto _ : state) {
+              hits = 0;
+              const double s = runChunked(set.rays.size(), threads, [&](std::size_t begin, std::size_t end) {
+                const auto rays = std::span(set.rays).subspan(begin, end - begin);
+                const auto ends = std::span(set.tMax).subspan(begin, end - begin);
+                if (!row.inFlight) {
+                  std::uint64_t blocked = 0;
+                  for (std::size_t i = 0; i < rays.size(); ++i)
+                    blocked += bvh.occluded(rays[i], set.tMin, ends[i]) ? 1 : 0;
+                  hits += blocked;
+                } else if (row.anyHit) {
+                  std::vector<std::uint8_t> blocked(end - begin);
+                  hits += bvh.occluded(rays, set.tMin, ends, std::span(blocked));
+                } else {
+                  std::vector<Hit> found(end - begin);
+                  hits += bvh.intersect(rays, set.tMin, ends, std::span(found));
+                }
+              });
+              state.SetIterationTime(s);
+              seconds += s;
             }
+            const double rays = double(set.rays.size()) * double(state.iterations());
+            state.counters["Mrays_per_s"] = rays / seconds * 1e-6;
+            state.counters["hit_fraction"] = double(hits) / double(set.rays.size());
+            state.counters["rays"] = double(set.rays.size());
           })
           ->UseManualTime()
           ->Iterations(1)

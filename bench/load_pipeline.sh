@@ -55,14 +55,15 @@ def parse(line):
     wall, user, system, faults, rss = line.split("time ")[1].split()[:5]
     row["wall"], row["cpu"], row["faults"], row["peak MB"] = float(wall), float(user) + float(system), int(faults), int(rss) / 1024
     return row
-columns = ["faults", "wall", "cpu", "first pixel", "load", "build", "trace", "read", "orient", "normals", "scene", "accel build", "peak MB"]
+columns = ["faults", "wall", "cpu", "first pixel", "load", "build", "trace", "read", "setup", "renumber", "orient", "normals", "scene", "accel build", "peak MB"]
 print("| mesh | build | " + " | ".join(columns) + " | orient + normals |")
 print("|---|---|" + "---|" * (len(columns) + 1))
 medians = {}
 for mesh in meshes:
     for which in names:
         rows = [parse(line) for line in open(f"{folder}/{mesh}-{which}") if line.strip()]
-        med = {c: statistics.median(r[c] for r in rows) for c in columns}
+        # A stage a build does not time (older builds have no "setup") counts 0.
+        med = {c: statistics.median(r.get(c, 0.0) for r in rows) for c in columns}
         med["orient + normals"] = statistics.median(r["orient"] + r["normals"] for r in rows)
         medians[(mesh, which)] = med
         cells = [f"{med[c]:.0f}" if c in ("faults", "peak MB") else f"{med[c]:.3f}" for c in columns]

@@ -383,9 +383,11 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
                                           overrides.threads, SourceLocation{input});
     addViewFiles(*request.quickLookMesh, overrides.views);
     request.stages.add("read", read.seconds());
-    description = quickLookScene(input, *request.quickLookMesh, up);
-    if (applyCameraOptions(description, overrides))
-      placeQuickLookLights(description, *request.quickLookMesh);  // the lights follow the camera
+    const Stopwatch setup;  // colours, up axis and lights: passes over every face
+    description = quickLookScene(input, *request.quickLookMesh, up, overrides.threads);
+    if (applyCameraOptions(description, overrides))  // the lights follow the camera
+      placeQuickLookLights(description, *request.quickLookMesh, overrides.threads);
+    request.stages.add("setup", setup.seconds());
   } else if (isMeshFile(input)) {
     const Stopwatch read;
     if (!overrides.slices.empty() || !overrides.isosurfaces.empty() || !overrides.streamlines.empty() ||
@@ -401,9 +403,11 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
     request.stages.add("read", read.seconds());
     if (const std::string reason = nothingToDrawReason(*request.quickLookMesh); !reason.empty())
       throw InputError(SourceLocation{input}, "nothing to draw: " + reason);
-    description = quickLookScene(input, *request.quickLookMesh, up);
-    if (applyCameraOptions(description, overrides))
-      placeQuickLookLights(description, *request.quickLookMesh);  // the lights follow the camera
+    const Stopwatch setup;  // colours, up axis and lights: passes over every face
+    description = quickLookScene(input, *request.quickLookMesh, up, overrides.threads);
+    if (applyCameraOptions(description, overrides))  // the lights follow the camera
+      placeQuickLookLights(description, *request.quickLookMesh, overrides.threads);
+    request.stages.add("setup", setup.seconds());
   } else {
     if (!overrides.views.empty())
       throw InputError(SourceLocation{overrides.views.front()},
@@ -426,7 +430,8 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
       if (!meshes.empty()) applyGmshPostViews(scene, meshes.front(), views, path);
       applyColorMap(scene, colorMap, true);
     };
-    if (request.quickLookMesh) placeQuickLookLights(description, *request.quickLookMesh);  // from gmsh's side
+    if (request.quickLookMesh)  // from gmsh's side
+      placeQuickLookLights(description, *request.quickLookMesh, overrides.threads);
   }
   RenderOverrides& applied = request.overrides;
   applied.width = overrides.width;

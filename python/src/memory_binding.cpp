@@ -23,6 +23,7 @@ void bindMemory(py::module_& module) {
     out["mapped_blocks"] = stats.mappedBlocks;
     out["reused_blocks"] = stats.reusedBlocks;
     out["unmapped_blocks"] = stats.unmappedBlocks;
+    out["moved_blocks"] = stats.movedBlocks;
     return out;
   });
 }

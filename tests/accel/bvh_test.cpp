@@ -331,9 +331,9 @@ TEST(Bvh, AcceleratorUpdateRefitsTheBvhAndRebuildsTheRest) {
   }
 }
 
-// Rays in flight: each answer is the single ray's to the bit, with and without a filter, for batches
-// shorter than, equal to and longer than the rays in flight, rays that miss the scene box among them,
-// and per-ray ends of the interval (some before the first hit).
+// Rays in flight: each answer is the single ray's, to the bit for closest hits, with and without a
+// filter, for batches shorter than, equal to and longer than the rays in flight, rays that miss the
+// scene box among them, and per-ray ends of the interval (some before the first hit).
 TEST(Bvh, RaysInFlightAnswerAsSingleRays) {
   std::mt19937 rng(11);
   Soup soup = test::randomSoup(rng, 3000);
@@ -377,6 +377,20 @@ TEST(Bvh, RaysInFlightAnswerAsSingleRays) {
       }
       EXPECT_EQ(hitCount, expected);
       if (count == rays.size()) EXPECT_GT(expected, count / 4);
+
+      // The any-hit query of the same span: blocked where the single ray is occluded.
+      std::vector<std::uint8_t> blocked(count, 7);
+      const std::size_t blockedCount = filtered ? bvh.occluded(some, 0.0f, ends, oddFaces, std::span(blocked))
+                                                : bvh.occluded(some, 0.0f, ends, std::span(blocked));
+      std::size_t expectedBlocked = 0;
+      for (std::size_t i = 0; i < count; ++i) {
+        const bool single =
+            filtered ? bvh.occluded(rays[i], 0.0f, tMax[i], oddFaces) : bvh.occluded(rays[i], 0.0f, tMax[i]);
+        expectedBlocked += single ? 1 : 0;
+        EXPECT_EQ(blocked[i], single ? 1 : 0) << "ray " << i;
+      }
+      EXPECT_EQ(blockedCount, expectedBlocked);
+      if (count == rays.size()) EXPECT_GT(expectedBlocked, count / 4);
     }
   }
 }

@@ -1,6 +1,6 @@
 // `lancer render --timings` and `lancer animate --timings`: one line naming every preparation stage
-// in the order it ran (read, orient, normals, scene, accel build) with its seconds; nothing without it;
-// with --build-alongside too, and the same picture.
+// in the order it ran (a mesh: read, setup, orient, normals, scene, accel build; a scene file: setup
+// first) with its seconds; nothing without it; with --build-alongside too, and the same picture.
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -15,7 +15,8 @@ namespace {
 using test::quoted;
 
 const std::regex kTimingsLine(
-    R"(timings: read [0-9.]+ s, orient [0-9.]+ s, normals [0-9.]+ s, scene [0-9.]+ s, accel build [0-9.]+ s)");
+    R"(timings: (setup [0-9.]+ s, read [0-9.]+ s|read [0-9.]+ s, setup [0-9.]+ s), orient [0-9.]+ s, )"
+    R"(normals [0-9.]+ s, scene [0-9.]+ s, accel build [0-9.]+ s)");
 
 TEST(TimingsCli, RenderOfAMeshAndOfASceneNameEveryStage) {
   const test::ScratchFolder folder;

@@ -1,5 +1,6 @@
 // The quick look's up axis: the documented guess on gmsh-made meshes (planar XY, a y-up and a z-up
-// bracket, a terrain, a sphere), the frames each axis gives, and --up's override.
+// bracket, a terrain, a sphere), the frames each axis gives, --up's override, and the same guess and
+// bounds on any number of threads.
 #include "lancer/scene/up_axis.hpp"
 
 #include <gtest/gtest.h>
@@ -19,6 +20,32 @@ void expectAxis(const Vec3d& v, double x, double y, double z) {
   EXPECT_EQ(v.x, x);
   EXPECT_EQ(v.y, y);
   EXPECT_EQ(v.z, z);
+}
+
+TEST(UpAxis, TheGuessAndTheBoundsAreTheSameOnAnyNumberOfThreads) {
+  // A slab wider in x and z than in y, lying on its side in y: the base area picks y. Faces of
+  // random vertices and a few quads, over enough faces for several chunks.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> across(-10, 10), height(-1, 1);
+  Mesh mesh;
+  for (int v = 0; v < 20000; ++v) mesh.positions.push_back({across(random), height(random), across(random)});
+  std::uniform_int_distribution<std::uint32_t> vertex(0, 19999);
+  for (int f = 0; f < 70000; ++f) {
+    MeshFace face;
+    for (int c = 0; c < (f % 7 == 0 ? 4 : 3); ++c) face.vertex[c] = vertex(random);
+    mesh.faces.push_back(face);
+  }
+  const Aabb serial = faceBounds(mesh);
+  for (const int threads : {1, 2, 5}) {
+    const Aabb bounds = faceBoundsOnThreads(mesh, threads);
+    EXPECT_EQ(bounds.lower, serial.lower) << threads;
+    EXPECT_EQ(bounds.upper, serial.upper) << threads;
+  }
+  const UpGuess one = guessUpAxis(mesh, 1);
+  const UpGuess three = guessUpAxis(mesh, 3);
+  EXPECT_EQ(one.up, three.up);
+  EXPECT_EQ(one.reason, three.reason);
+  expectAxis(three.frame.toViewer, one.frame.toViewer.x, one.frame.toViewer.y, one.frame.toViewer.z);
 }
 
 TEST(UpAxis, NamesParseToTheSixSignedAxes) {

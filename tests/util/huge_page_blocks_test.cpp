@@ -120,13 +120,14 @@ TEST(HugePageBlocks, AKeptBlockTooLargeIsCutAndOneTooSmallMakesRoom) {
   EXPECT_EQ(stats.retainedBytes, 2 * kHugePage);
   EXPECT_EQ(stats.inUseBytes, before.inUseBytes + 3 * kHugePage);
 
-  // 10 MiB: no kept block fits; they are unmapped before a fresh one is mapped, so the memory
-  // mapped does not pass the earlier peak.
+  // 10 MiB: no kept block fits; both are moved into it before any page is mapped fresh, so the
+  // memory mapped does not pass the earlier peak.
   void* big = allocateLargeBlock(5 * kHugePage - kLargeBlockAlignment);
   ASSERT_NE(big, nullptr);
   stats = largeBlockStats();
   EXPECT_EQ(stats.mappedBlocks, before.mappedBlocks + 4);
-  EXPECT_EQ(stats.unmappedBlocks, before.unmappedBlocks + 2);
+  EXPECT_EQ(stats.movedBlocks, before.movedBlocks + 2);
+  EXPECT_EQ(stats.unmappedBlocks, before.unmappedBlocks);
   EXPECT_EQ(stats.retainedBytes, 0u);
   EXPECT_EQ(stats.peakMappedBytes, peak);
   std::memset(middle, 1, 3 * kHugePage - kLargeBlockAlignment);  // still whole
@@ -134,6 +135,59 @@ TEST(HugePageBlocks, AKeptBlockTooLargeIsCutAndOneTooSmallMakesRoom) {
   releaseLargeBlock(big);
   releaseRetainedLargeBlocks();
   EXPECT_EQ(largeBlockStats().retainedBytes, 0u);
+  EXPECT_EQ(largeBlockStats().inUseBytes, before.inUseBytes);
+}
+
+// Marks each 2 MiB page of a block (past its header) with `mark` plus the page's number.
+void markPages(void* block, std::size_t pages, unsigned char mark) {
+  auto* base = static_cast<unsigned char*>(block) - kLargeBlockAlignment;
+  for (std::size_t page = 0; page < pages; ++page) base[page * kHugePage + 100] = mark + page;
+}
+
+TEST(HugePageBlocks, ARequestNoKeptBlockFitsIsMadeOfKeptPagesMovedNotCleared) {
+  releaseRetainedLargeBlocks();
+  const LargeBlockStats before = largeBlockStats();
+  // Kept: 6 MiB and 4 MiB, each page marked.
+  void* six = allocateLargeBlock(3 * kHugePage - kLargeBlockAlignment);
+  void* four = allocateLargeBlock(2 * kHugePage - kLargeBlockAlignment);
+  ASSERT_TRUE(six && four);
+  markPages(six, 3, 10);
+  markPages(four, 2, 20);
+  const std::size_t peak = largeBlockStats().peakMappedBytes;
+  releaseLargeBlock(six);
+  releaseLargeBlock(four);
+
+  // 8 MiB: the 6 MiB block's pages first (the largest), then the 4 MiB one's first page; its
+  // second goes back to the system. No page is mapped fresh, none cleared.
+  void* eight = allocateLargeBlock(4 * kHugePage - kLargeBlockAlignment);
+  ASSERT_NE(eight, nullptr);
+  EXPECT_TRUE(isLargeBlock(eight));
+  EXPECT_EQ(largeBlockMappedBytes(eight), 4 * kHugePage);
+  const auto* base = static_cast<const unsigned char*>(eight) - kLargeBlockAlignment;
+  EXPECT_EQ(base[0 * kHugePage + 100], 10);
+  EXPECT_EQ(base[1 * kHugePage + 100], 11);
+  EXPECT_EQ(base[2 * kHugePage + 100], 12);
+  EXPECT_EQ(base[3 * kHugePage + 100], 20);
+  LargeBlockStats stats = largeBlockStats();
+  EXPECT_EQ(stats.mappedBlocks, before.mappedBlocks + 2);  // six and four only
+  EXPECT_EQ(stats.movedBlocks, before.movedBlocks + 2);
+  EXPECT_EQ(stats.retainedBytes, 0u);
+  EXPECT_EQ(stats.inUseBytes, before.inUseBytes + 4 * kHugePage);
+  EXPECT_EQ(stats.peakMappedBytes, peak);
+  std::memset(eight, 3, 4 * kHugePage - kLargeBlockAlignment);  // every byte writable
+
+  // Taken again whole by the same size, and a block past it moves it and maps the rest fresh.
+  releaseLargeBlock(eight);
+  void* twelve = allocateLargeBlock(6 * kHugePage - kLargeBlockAlignment);
+  ASSERT_NE(twelve, nullptr);
+  EXPECT_EQ(static_cast<const unsigned char*>(twelve)[0], 3);
+  EXPECT_EQ(static_cast<const unsigned char*>(twelve)[4 * kHugePage - kLargeBlockAlignment - 1], 3);
+  stats = largeBlockStats();
+  EXPECT_EQ(stats.mappedBlocks, before.mappedBlocks + 3);
+  EXPECT_EQ(stats.movedBlocks, before.movedBlocks + 3);
+  std::memset(twelve, 4, 6 * kHugePage - kLargeBlockAlignment);
+  releaseLargeBlock(twelve);
+  releaseRetainedLargeBlocks();
   EXPECT_EQ(largeBlockStats().inUseBytes, before.inUseBytes);
 }
 

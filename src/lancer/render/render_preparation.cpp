@@ -73,15 +73,17 @@ void frameBesideLegends(SceneDescription& description, const Scene& scene) {
 
 PreparedRender prepareRender(RenderRequest request) {
   const Stopwatch load;
+  StageTimes stages = std::move(request.stages);
+  const double secondsBefore = stages.totalSeconds();
   SceneDescription& description = request.description;
   const Mesh* quickLookMesh = request.quickLookMesh ? &*request.quickLookMesh : nullptr;
-  applyRenderOverrides(description, request.overrides, quickLookMesh);
+  applyRenderOverrides(description, request.overrides, quickLookMesh, request.threads);
   const ImageBuffer buffer =
       request.imageBuffer ? request.imageBuffer(description.render) : ImageBuffer::Whole;
   requireImageMemory(description.render, request.threads, buffer, description.path);
+  // A quick look's lights placed again for the image's size pass over every face.
+  stages.add("setup", load.seconds());
 
-  StageTimes stages = std::move(request.stages);
-  const double secondsBefore = stages.totalSeconds();
   std::vector<Mesh> meshes;
   std::vector<std::shared_ptr<const VolumeMesh>> volumes;
   if (request.quickLookMesh) {

@@ -45,12 +45,12 @@ struct RenderRequest {
   // the colour ranges the frames hold (holdStepColourRanges), so its legends are theirs.
   bool keepMeshes = false;
   // A scene of one mesh has its accelerator built alongside its orientation and normals
-  // (scene/geometry_overlap.hpp): 0-13% sooner to the first ray on two cores, but the build's
-  // buffers then live beside the mesh as read and the orientation's and normals' own, 35-40% more
+  // (scene/geometry_overlap.hpp): on two cores, -2% to +1.5% to the first ray, but the build's
+  // buffers then live beside the mesh as read and the orientation's and normals' own, 40-50% more
   // peak memory (bench/RESULTS.md, "Time to first pixel"), so it is asked for.
   bool buildAlongside = false;
-  // Stages the caller already spent on this render (the CLI's read of a bare mesh), continued here
-  // and counted as load time.
+  // Stages the caller already spent on this render (the CLI's read of a bare mesh and its quick look's
+  // setup), continued here and counted as load time.
   StageTimes stages;
 };
 
@@ -62,7 +62,7 @@ struct PreparedRender {
   Scene scene;                   // scene.warnings: the mesh readers' warnings, for the caller to show
   Accelerator accelerator;
   Camera camera;             // the description's camera for the settings' image size
-  StageTimes stages;         // read, orient, normals, scene, accel build
+  StageTimes stages;         // read, setup, renumber, orient, normals, scene, accel build
   double loadSeconds = 0;    // everything before the accelerator build
   double buildSeconds = 0;   // the accelerator build
   std::vector<Mesh> meshes;  // RenderRequest::keepMeshes: the meshes as read

@@ -31,9 +31,16 @@ Material paintedMaterial(const std::string& name, const Vec3& colour) {
   return material;
 }
 
+// The mesh's face bounds (faceBounds) in world space; the mesh's origin where it has no faces.
+Aabbd worldBounds(const Mesh& mesh, const Aabb& bounds) {
+  return bounds.empty() ? Aabbd{mesh.origin, mesh.origin}
+                        : Aabbd{mesh.origin + toDouble(bounds.lower), mesh.origin + toDouble(bounds.upper)};
+}
+
 }  // namespace
 
-SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh, std::optional<UpAxis> up) {
+SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh, std::optional<UpAxis> up,
+                                int threads) {
   SceneDescription scene;
   scene.path = meshPath;
   scene.render.shading = ShadingMode::Phong;
@@ -50,9 +57,10 @@ SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh, s
   // interfaces, so a multi-material part looks the same from outside; groups met only inside it, on
   // interfaces (balls inside a block), take the next colours.
   std::set<std::int32_t> outside, inside;
+  std::optional<std::int32_t> lastOutside;  // faces come in runs of one group: one look-up a run
   for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
     if (!mesh.volumeSides.isInterface(f)) {
-      outside.insert(mesh.facePhysicalTag[f]);
+      if (mesh.facePhysicalTag[f] != lastOutside) outside.insert(*(lastOutside = mesh.facePhysicalTag[f]));
       continue;
     }
     inside.insert(mesh.facePhysicalTag[f]);
@@ -74,23 +82,24 @@ SceneDescription quickLookScene(const std::string& meshPath, const Mesh& mesh, s
     if (tag != 0) paint(tag);
   scene.meshes.push_back(instance);
 
+  // One pass for the up axis and the lights (placed again for another image size from these).
+  const Aabb bounds = faceBoundsOnThreads(mesh, threads);
+  scene.quickLookBounds = worldBounds(mesh, bounds);
   if (up) {
     applyUpAxis(scene.camera, *up);
   } else {
-    const UpGuess guess = guessUpAxis(mesh);
+    const UpGuess guess = guessUpAxis(mesh, bounds, threads);
     scene.camera.up = guess.frame.up;
     scene.camera.viewFrom = guess.frame.toViewer;
   }
   scene.lightsFollowCamera = true;
-  placeQuickLookLights(scene, mesh);
+  placeQuickLookLights(scene, mesh, threads);
   return scene;
 }
 
-void placeQuickLookLights(SceneDescription& scene, const Mesh& mesh) {
-  const Aabb bounds = faceBounds(mesh);
-  const Aabbd world = bounds.empty()
-                          ? Aabbd{mesh.origin, mesh.origin}
-                          : Aabbd{mesh.origin + toDouble(bounds.lower), mesh.origin + toDouble(bounds.upper)};
+void placeQuickLookLights(SceneDescription& scene, const Mesh& mesh, int threads) {
+  if (!scene.quickLookBounds) scene.quickLookBounds = worldBounds(mesh, faceBoundsOnThreads(mesh, threads));
+  const Aabbd world = *scene.quickLookBounds;
   const Vec3d centre = world.center();
   const double radius = std::max(0.5 * length(world.extent()), 1e-12);
   // A camera placed by the user (a position, a gmsh view) takes the lights along: its frame, its eye.

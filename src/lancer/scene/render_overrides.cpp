@@ -150,7 +150,7 @@ void applyAnnotationOverrides(SceneDescription& description, const RenderOverrid
 }  // namespace
 
 void applyRenderOverrides(SceneDescription& description, const RenderOverrides& overrides,
-                          const Mesh* quickLookMesh) {
+                          const Mesh* quickLookMesh, int threads) {
   RenderSettings& settings = description.render;
   if (overrides.width) settings.width = *overrides.width;
   if (overrides.height) settings.height = *overrides.height;
@@ -180,7 +180,7 @@ void applyRenderOverrides(SceneDescription& description, const RenderOverrides& 
   if (overrides.samples) settings.samples = *overrides.samples;
   // The quick look's fill sits at the automatic camera, whose distance depends on the image's aspect.
   if (quickLookMesh && (overrides.width || overrides.height))
-    placeQuickLookLights(description, *quickLookMesh);
+    placeQuickLookLights(description, *quickLookMesh, threads);
   if (overrides.integrator) settings.integrator = *overrides.integrator;
   if (overrides.noise) settings.noise = *overrides.noise;
   if (overrides.edges)

@@ -59,11 +59,11 @@ struct RenderOverrides {
 };
 
 // Applies `overrides` to `description`. `quickLookMesh`: the mesh of a quick-look scene
-// (quickLookScene), whose lights are placed again when the image size changes. Throws InputError for
-// a sample count the sampler cannot use, and for an annotation that is out of range or has no
-// field-coloured mesh to go on, at the option's name.
+// (quickLookScene), whose lights are placed again when the image size changes (on `threads` threads,
+// 0: every core). Throws InputError for a sample count the sampler cannot use, and for an annotation
+// that is out of range or has no field-coloured mesh to go on, at the option's name.
 void applyRenderOverrides(SceneDescription& description, const RenderOverrides& overrides,
-                          const Mesh* quickLookMesh = nullptr);
+                          const Mesh* quickLookMesh = nullptr, int threads = 0);
 
 // The look of `overrides` (if any) over the description, with the samples, noise and integrator the
 // caller gave winning over its defaults: applied again when the automatic camera turns after the

@@ -262,6 +262,9 @@ struct SceneDescription {
   // The quick look's key and fill are placed for the automatic camera: an animation turns them with
   // the camera, so every frame is lit the same way.
   bool lightsFollowCamera = false;
+  // The quick look's mesh's face bounds in world space, which its lights are placed from: kept, so
+  // that placing them again (another image size, a placed camera) needs no pass over the faces.
+  std::optional<Aabbd> quickLookBounds;
   // For the user, with the meshes' warnings (Scene::warnings): what a front end read and does not
   // apply, as "file:line: warning: ...".
   std::vector<std::string> notes;

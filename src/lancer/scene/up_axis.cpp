@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "lancer/mesh/face_geometry.hpp"
+#include "lancer/util/parallel_for.hpp"
 
 namespace lancer {
 namespace {
@@ -17,6 +19,8 @@ constexpr double kOnSide = 0.05;  // of the largest extent: a face on (or near: 
 constexpr double kNearTie = 0.02;
 // A base is at least this share of the surface: a sphere's flat pole facets are not a base.
 constexpr double kMinBaseShare = 0.02;
+// Faces per chunk of the passes over a mesh's faces.
+constexpr std::size_t kFacesPerChunk = 16384;
 // Preference on near ties: z, then y, then x.
 constexpr int kPreference[3] = {2, 1, 0};
 
@@ -87,8 +91,27 @@ std::optional<PlanarView> planarView(const Vec3d& extent) {
   return std::nullopt;
 }
 
-UpGuess guessUpAxis(const Mesh& mesh) {
-  const Aabb bounds = faceBounds(mesh);
+Aabb faceBoundsOnThreads(const Mesh& mesh, int threads) {
+  const ChunkPlan plan(mesh.faces.size(), kFacesPerChunk);
+  std::vector<Aabb> boxes(plan.chunks);
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    Aabb box;
+    for (std::size_t f = begin; f < end; ++f) {
+      const MeshFace& face = mesh.faces[f];
+      for (int c = 0; c < face.cornerCount(); ++c) box.extend(mesh.positions[face.vertex[c]]);
+    }
+    boxes[chunk] = box;
+  });
+  Aabb bounds;
+  for (const Aabb& box : boxes) bounds.extend(box);
+  return bounds;
+}
+
+UpGuess guessUpAxis(const Mesh& mesh, int threads) {
+  return guessUpAxis(mesh, faceBoundsOnThreads(mesh, threads), threads);
+}
+
+UpGuess guessUpAxis(const Mesh& mesh, const Aabb& bounds, int threads) {
   const Vec3d extent = toDouble(bounds.extent());
   const double largest = std::max({extent.x, extent.y, extent.z});
   UpGuess guess;
@@ -111,20 +134,36 @@ UpGuess guessUpAxis(const Mesh& mesh) {
     return guess;
   }
   // 2. Base area: faces lying flat on the box's sides across each axis.
+  // Summed chunk by chunk, the chunks' sums added in order: the same areas on any number of threads.
+  struct Areas {
+    double base[3] = {0, 0, 0};
+    double total = 0;
+  };
+  const double onSide = kOnSide * largest;
+  const ChunkPlan plan(mesh.faces.size(), kFacesPerChunk);
+  std::vector<Areas> chunkAreas(plan.chunks);
+  parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    Areas areas;
+    for (std::size_t f = begin; f < end; ++f) {
+      const MeshFace& face = mesh.faces[f];
+      Vec3d normal;
+      const double area = areaAndNormal(mesh, face, normal);
+      areas.total += area;
+      for (int axis = 0; axis < 3; ++axis) {
+        if (std::abs(normal[axis]) < kFlatCosine) continue;
+        const double position = mesh.positions[face.vertex[0]][axis];
+        if (std::abs(position - bounds.lower[axis]) <= onSide ||
+            std::abs(position - bounds.upper[axis]) <= onSide)
+          areas.base[axis] += area;
+      }
+    }
+    chunkAreas[chunk] = areas;
+  });
   double base[3] = {0, 0, 0};
   double total = 0;
-  const double onSide = kOnSide * largest;
-  for (const MeshFace& face : mesh.faces) {
-    Vec3d normal;
-    const double area = areaAndNormal(mesh, face, normal);
-    total += area;
-    for (int axis = 0; axis < 3; ++axis) {
-      if (std::abs(normal[axis]) < kFlatCosine) continue;
-      const double position = mesh.positions[face.vertex[0]][axis];
-      if (std::abs(position - bounds.lower[axis]) <= onSide ||
-          std::abs(position - bounds.upper[axis]) <= onSide)
-        base[axis] += area;
-    }
+  for (const Areas& areas : chunkAreas) {
+    for (int axis = 0; axis < 3; ++axis) base[axis] += areas.base[axis];
+    total += areas.total;
   }
   for (double& area : base)
     if (area < kMinBaseShare * total) area = 0;

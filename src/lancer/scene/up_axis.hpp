@@ -61,6 +61,14 @@ struct UpGuess {
   bool planar = false;    // straight-on view along frame.toViewer rather than a 3/4 view
   std::string reason;     // for messages and tests: "planar in z", "base area", "smallest extent"
 };
-UpGuess guessUpAxis(const Mesh& mesh);
+// On `threads` threads (0: every core); the same guess on any number. `bounds`: the mesh's
+// faceBounds, when the caller has them.
+UpGuess guessUpAxis(const Mesh& mesh, int threads = 0);
+UpGuess guessUpAxis(const Mesh& mesh, const Aabb& bounds, int threads);
+
+// The box of the corners of the mesh's faces (faceBounds), on `threads` threads (0: every core):
+// the quick look's framing and lights, a pass over every face of a mesh of millions before its
+// render can start.
+Aabb faceBoundsOnThreads(const Mesh& mesh, int threads);
 
 }  // namespace lancer

@@ -36,9 +36,36 @@ Header* headerOf(const void* pointer) {
   return header->magic == (kMagic ^ (address - kHeaderBytes)) ? header : nullptr;
 }
 
+// Moves the pages of [from, from + bytes) to [to, to + bytes), over what was mapped there, without
+// copying or clearing them (the page tables move; a 2 MiB page moves as one entry). Both ends
+// 2 MiB-aligned. The range may span several mappings (a kept block's advised pages and its last
+// one), which mremap moves one at a time on kernels before 6.17: then the 2 MiB pieces go one by
+// one, each within one mapping. A piece that cannot move is unmapped and its place mapped fresh.
+void movePages(char* from, char* to, std::size_t bytes) {
+  if (::mremap(from, bytes, bytes, MREMAP_MAYMOVE | MREMAP_FIXED, to) != MAP_FAILED) return;
+  for (std::size_t offset = 0; offset < bytes; offset += kHugePage) {
+    if (::mremap(from + offset, kHugePage, kHugePage, MREMAP_MAYMOVE | MREMAP_FIXED, to + offset) !=
+        MAP_FAILED)
+      continue;
+    // A failed move may already have unmapped its destination: map it again, blank.
+    ::munmap(from + offset, kHugePage);
+    ::mmap(to + offset, kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1, 0);
+  }
+}
+
+// The whole huge pages of a block of `mapped` bytes that hold `used` bytes, and its last one when at
+// least half of it is used (fewer faults than 4 KiB pages); a last page holding a few bytes (a vector
+// of exactly 4 MiB, and the header) would take 2 MiB of memory for them, 4 KiB pages only the bytes
+// touched.
+std::size_t advisedBytes(std::size_t mapped, std::size_t used) {
+  std::size_t advised = used / kHugePage * kHugePage;
+  if (used - advised >= kHugePage / 2) advised = mapped;
+  return advised;
+}
+
 // A fresh mapping of `mapped` bytes (whole huge pages), 2 MiB-aligned and advised where `used` bytes
-// fill its pages; nullptr when the system has no memory for it.
-Header* mapBlock(std::size_t mapped, std::size_t used) {
+// fill its pages, none of them touched yet; nullptr when the system has no memory for it.
+char* mapBlock(std::size_t mapped, std::size_t used) {
   // One huge page more than needed, so that a 2 MiB boundary lies in it; the ends are given back.
   const std::size_t reserved = mapped + kHugePage;
   void* raw = ::mmap(nullptr, reserved, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -48,16 +75,10 @@ Header* mapBlock(std::size_t mapped, std::size_t used) {
   if (aligned > begin) ::munmap(raw, aligned - begin);
   const std::uintptr_t end = begin + reserved;
   if (end > aligned + mapped) ::munmap(reinterpret_cast<void*>(aligned + mapped), end - (aligned + mapped));
-  // Advice only: where THP is off, the pages stay 4 KiB and nothing else changes. The whole huge
-  // pages the block fills, and its last one when at least half of it is used (fewer faults than
-  // 4 KiB pages); a last page holding a few bytes (a vector of exactly 4 MiB, and the header) would
-  // take 2 MiB of memory for them, 4 KiB pages only the bytes touched.
-  std::size_t advised = used / kHugePage * kHugePage;
-  if (used - advised >= kHugePage / 2) advised = mapped;
+  // Advice only: where THP is off, the pages stay 4 KiB and nothing else changes.
+  const std::size_t advised = advisedBytes(mapped, used);
   if (advised > 0) ::madvise(reinterpret_cast<void*>(aligned), advised, MADV_HUGEPAGE);
-  auto* header = reinterpret_cast<Header*>(aligned);
-  header->mappedBytes = mapped;
-  return header;
+  return reinterpret_cast<char*>(aligned);
 }
 
 // The kept blocks and the accounting, under one lock (large blocks are few: a render asks for some
@@ -85,19 +106,39 @@ class Arena {
       ++stats_.reusedBlocks;
       return header;
     }
-    // None fits (every kept block is smaller): as many kept bytes unmapped as are mapped fresh (the
-    // largest first), so that in use + kept grows past what it was only to what is in use.
-    std::size_t freed = 0;
-    while (freed < mapped && count_ > 0) {
+    // None fits (every kept block is smaller): the block is made of kept ones, their pages moved
+    // side by side (the largest first; the last cut to what is left), and fresh pages only past
+    // them. A fresh page costs the kernel a clear of its bytes on first touch (a sixth of a 1M
+    // render's CPU time went to it); a moved one costs nothing and holds what its last user wrote.
+    // Every kept byte is taken before any is mapped fresh, so in use + kept grows past what it was
+    // only to what is in use.
+    char* block = mapBlock(mapped, used);
+    if (block == nullptr) return nullptr;
+    std::size_t filled = 0;
+    while (filled < mapped && count_ > 0) {
       const std::size_t largest = static_cast<std::size_t>(
           std::max_element(kept_.begin(), kept_.begin() + count_,
                            [](const Header* a, const Header* b) { return a->mappedBytes < b->mappedBytes; }) -
           kept_.begin());
-      freed += unmapKept(largest);
+      Header* kept = kept_[largest];
+      const std::size_t size = kept->mappedBytes;
+      const std::size_t moved = std::min(size, mapped - filled);
+      removeKept(largest);
+      stats_.retainedBytes -= size;
+      auto* from = reinterpret_cast<char*>(kept);
+      if (moved < size) ::munmap(from + moved, size - moved);
+      movePages(from, block + filled, moved);
+      filled += moved;
+      ++stats_.movedBlocks;
     }
-    Header* header = mapBlock(mapped, used);
-    if (header == nullptr) return nullptr;
-    ++stats_.mappedBlocks;
+    // The moved pages take the advice of the block they now belong to.
+    if (filled > 0) {
+      const std::size_t advised = advisedBytes(mapped, used);
+      if (advised > 0) ::madvise(block, advised, MADV_HUGEPAGE);
+    }
+    if (filled < mapped) ++stats_.mappedBlocks;
+    auto* header = reinterpret_cast<Header*>(block);  // written once the pages are in place
+    header->mappedBytes = mapped;
     stats_.inUseBytes += mapped;
     stats_.peakMappedBytes = std::max(stats_.peakMappedBytes, stats_.inUseBytes + stats_.retainedBytes);
     return header;

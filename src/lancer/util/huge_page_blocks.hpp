@@ -10,9 +10,12 @@
 //
 // A released block is kept, its pages still faulted in, for the next request it fits (the frames of
 // an animation, the renders of a Python session ask for the same sizes again): taken again, it costs
-// no fault at all (a larger block is cut to the request: its end goes back to the system). What is
-// kept does not raise the peak: a request that no kept block fits first unmaps kept blocks, as many
-// bytes as it maps, so that in use + kept grows past what it was only to what is in use.
+// no fault at all (a larger block is cut to the request: its end goes back to the system). A request
+// that no kept block fits is made of kept blocks, their pages moved side by side (mremap: no copy,
+// no clear), and fresh pages only for the rest, so that the stages of a render reuse what the ones
+// before them gave back (the mesh as read, the orientation's and the normals' working arrays). What
+// is kept does not raise the peak: every kept byte is taken before any is mapped fresh, so that in
+// use + kept grows past what it was only to what is in use.
 // releaseRetainedLargeBlocks gives them all back.
 #pragma once
 
@@ -51,6 +54,7 @@ struct LargeBlockStats {
   std::uint64_t mappedBlocks = 0;    // blocks mapped fresh
   std::uint64_t reusedBlocks = 0;    // requests served by a kept block
   std::uint64_t unmappedBlocks = 0;  // blocks given back to the system
+  std::uint64_t movedBlocks = 0;     // kept blocks moved into a larger request
 };
 LargeBlockStats largeBlockStats() noexcept;
 

@@ -80,6 +80,18 @@ class Bvh : public TreeQueries<Bvh> {
     return closestHitsInFlight(rays, tMin, tMax, filter, hits);
   }
   using TreeQueries<Bvh>::intersect;
+  // Any hits of independent rays (a path tracer's shadow rays), in flight the same way, children in
+  // slot order: blocked[i] is 1 where occluded(rays[i], tMin, tMax[i], ...) is true, 0 elsewhere;
+  // returns how many are blocked.
+  std::size_t occluded(std::span<const Ray> rays, float tMin, std::span<const float> tMax,
+                       std::span<std::uint8_t> blocked) const {
+    return anyHitsInFlight(rays, tMin, tMax, KeepEveryHit{}, blocked);
+  }
+  std::size_t occluded(std::span<const Ray> rays, float tMin, std::span<const float> tMax,
+                       const HitFilter& filter, std::span<std::uint8_t> blocked) const {
+    return anyHitsInFlight(rays, tMin, tMax, filter, blocked);
+  }
+  using TreeQueries<Bvh>::occluded;
 
   // Refit (bvh/refit.cpp): the same faces at new `positions` (a deformed time step: same vertex
   // count, same topology), the tree kept and its boxes recomputed bottom up. Returns false, leaving
@@ -123,6 +135,15 @@ class Bvh : public TreeQueries<Bvh> {
   template <typename Isa, typename Filter>
   std::size_t closestHitsInFlightOn(std::span<const Ray> rays, float tMin, std::span<const float> tMax,
                                     const Filter& keeps, std::span<Hit> hits) const;
+  template <typename Filter>
+  std::size_t anyHitsInFlight(std::span<const Ray> rays, float tMin, std::span<const float> tMax,
+                              const Filter& keeps, std::span<std::uint8_t> blocked) const {
+    return isa::dispatch(
+        [&](auto isa) { return anyHitsInFlightOn<decltype(isa)>(rays, tMin, tMax, keeps, blocked); });
+  }
+  template <typename Isa, typename Filter>
+  std::size_t anyHitsInFlightOn(std::span<const Ray> rays, float tMin, std::span<const float> tMax,
+                                const Filter& keeps, std::span<std::uint8_t> blocked) const;
   template <typename Isa, typename Filter>
   std::uint32_t anyHitsOn(const RayPacket& packet, std::uint32_t active, const Filter& keeps) const;
 

@@ -8,8 +8,6 @@
 #include <cstdint>
 #include <span>
 
-#include <xmmintrin.h>
-
 #include "lancer/accel/bvh/box_test.hpp"
 #include "lancer/accel/bvh/leaf_test.hpp"
 #include "lancer/accel/bvh/node.hpp"
@@ -50,20 +48,6 @@ std::uint32_t pushChildren(const BvhNode& node, std::uint32_t mask, const float*
       stack[at] = entry;
     }
     return stack[--top].child;
-  }
-}
-
-// Asks for the first lines of every child the ray meets (the walks with several rays in flight,
-// bvh/batch_traversal.cpp): the walk will visit most of them, and their misses then overlap the other
-// rays' work. The single-ray walk does not: there it measured 6% slower on incoherent rays at 1M.
-inline void prefetchChildren(const BvhNode& node, std::uint32_t mask, std::span<const BvhNode> nodes,
-                             const std::uint64_t* leaves) {
-  for (; mask != 0; mask &= mask - 1) {
-    const std::uint32_t c = node.child[std::countr_zero(mask)];
-    const char* at = BvhNode::isLeaf(c) ? reinterpret_cast<const char*>(leaves + BvhNode::leafFirst(c))
-                                        : reinterpret_cast<const char*>(nodes.data() + c);
-    const int lines = BvhNode::isLeaf(c) ? 2 : int((sizeof(BvhNode) + 63) / 64);
-    for (int line = 0; line < lines; ++line) _mm_prefetch(at + 64 * line, _MM_HINT_T0);
   }
 }
 
