@@ -214,16 +214,16 @@ struct Grid {
 // Each axis's bins: the box and the triangles of the references whose centroid falls in each.
 // Only the grid's bins are set up: a small range pays for few.
 struct Bins {
-  F4 lo[3][kMaxBins], hi[3][kMaxBins];
+  struct Entry {
+    F4 lo, hi;
+  };
+  Entry box[3][kMaxBins];
   std::uint32_t triangles[kMaxBins][4];  // bin b's triangles on axis a at [b][a] (lane 3 unused)
 
   Bins(const PrimRef* refs, std::size_t begin, std::size_t end, const Grid& grid) {
     static_assert(offsetof(PrimRef, face) == 3 * sizeof(float) && offsetof(PrimRef, hi) == 4 * sizeof(float));
     for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < grid.bins; ++b) {
-        lo[a][b] = F4::all(kInf);
-        hi[a][b] = F4::all(-kInf);
-      }
+      for (int b = 0; b < grid.bins; ++b) box[a][b] = {F4::all(kInf), F4::all(-kInf)};
     }
     for (int b = 0; b < grid.bins; ++b) I4::all(0).store(triangles[b]);
     for (std::size_t i = begin; i < end; ++i) {
@@ -232,16 +232,19 @@ struct Bins {
       alignas(16) int b[4];
       grid.bin(r, b);
       for (int a = 0; a < 3; ++a) {
-        lo[a][b[a]] = min(lo[a][b[a]], rlo);
-        hi[a][b[a]] = max(hi[a][b[a]], rhi);
+        Entry& e = box[a][b[a]];
+        e.lo = min(e.lo, rlo);
+        e.hi = max(e.hi, rhi);
         triangles[b[a]][a] += r.triangles;
       }
     }
   }
+  const F4& lo(int axis, int b) const { return box[axis][b].lo; }
+  const F4& hi(int axis, int b) const { return box[axis][b].hi; }
   // The union of bins [first, last) on `axis`.
   Box4 unite(int axis, int first, int last) const {
     Box4 out;
-    for (int b = first; b < last; ++b) out.extend(lo[axis][b], hi[axis][b]);
+    for (int b = first; b < last; ++b) out.extend(box[axis][b].lo, box[axis][b].hi);
     return out;
   }
 };
@@ -287,8 +290,8 @@ Split chooseSplit(const PrimRef* refs, const Range& range, const BvhBuildOptions
     I4 triangles = I4::all(0);
     for (int b = count - 1; b > 0; --b) {
       for (int a = 0; a < 3; ++a) {
-        lo[a] = min(lo[a], bins.lo[a][b]);
-        hi[a] = max(hi[a], bins.hi[a][b]);
+        lo[a] = min(lo[a], bins.lo(a, b));
+        hi[a] = max(hi[a], bins.hi(a, b));
       }
       triangles = triangles + I4::load(bins.triangles[b]);
       triangles.store(rightCount[b]);
@@ -304,8 +307,8 @@ Split chooseSplit(const PrimRef* refs, const Range& range, const BvhBuildOptions
     I4 triangles = I4::all(0);
     for (int b = 1; b < count; ++b) {
       for (int a = 0; a < 3; ++a) {
-        lo[a] = min(lo[a], bins.lo[a][b - 1]);
-        hi[a] = max(hi[a], bins.hi[a][b - 1]);
+        lo[a] = min(lo[a], bins.lo(a, b - 1));
+        hi[a] = max(hi[a], bins.hi(a, b - 1));
       }
       triangles = triangles + I4::load(bins.triangles[b - 1]);
       const I4 right = I4::load(rightCount[b]);
