@@ -50,6 +50,23 @@ TEST(Bvh, EmptyMeshHasNoHitsAndOneTriangleIsFound) {
   EXPECT_EQ(one.stats().triangles, 1u);
 }
 
+// A mesh of slivers only has no tree: its triangles are all kept beside it, as they are.
+TEST(Bvh, AMeshOfSliversOnlyKeepsThemAll) {
+  Soup soup;
+  soup.triangle({0, 0, 0}, {1, 0, 0}, {2, 0, 0});
+  soup.triangle({0, 1, 0}, {0, 2, 0}, {0, 3, 0});
+  const Bvh bvh = Bvh::build(soup.positions, soup.faces, onThreads(2));
+  ASSERT_EQ(bvh.slivers().size(), 2u);
+  for (std::uint32_t f = 0; f < 2; ++f) {
+    const PackedTriangle& t = bvh.slivers()[f];
+    EXPECT_EQ(t.face, f);
+    EXPECT_EQ(t.v0, soup.positions[soup.faces[f].vertex[0]]);
+    EXPECT_EQ(t.v1, soup.positions[soup.faces[f].vertex[1]]);
+    EXPECT_EQ(t.v2, soup.positions[soup.faces[f].vertex[2]]);
+  }
+  EXPECT_EQ(bvh.stats().triangles, 2u);
+}
+
 // Every tree face in exactly one leaf of at most eight triangles; a quad's halves side by side in one
 // leaf, (0,1,2) first; each triangle's corners the face's own positions, every leaf vertex used and
 // listed once; children's boxes hold their triangles; leaves lie in their array one after another.

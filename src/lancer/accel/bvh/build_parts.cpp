@@ -38,6 +38,33 @@ struct F4 {
   // Lanes truncated to integers.
   void truncate(int* out) const { _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_cvttps_epi32(v)); }
 };
+// Four 32-bit integers (a count per axis) and lane masks (all bits set where true), for the SAH
+// sweep's three axes at once.
+struct I4 {
+  __m128i v;
+  static I4 load(const std::uint32_t* p) { return {_mm_loadu_si128(reinterpret_cast<const __m128i*>(p))}; }
+  static I4 all(std::uint32_t x) { return {_mm_set1_epi32(static_cast<int>(x))}; }
+  friend I4 operator+(I4 a, I4 b) { return {_mm_add_epi32(a.v, b.v)}; }
+  void store(std::uint32_t* p) const { _mm_storeu_si128(reinterpret_cast<__m128i*>(p), v); }
+  // The counts as floats (exact below 2^24; rounded as a conversion of each count alone above).
+  F4 toFloat() const { return {_mm_cvtepi32_ps(v)}; }
+  // Lanes not zero, as a mask.
+  F4 nonZero() const {
+    return {_mm_castsi128_ps(_mm_xor_si128(_mm_cmpeq_epi32(v, _mm_setzero_si128()), _mm_set1_epi32(-1)))};
+  }
+};
+inline F4 operator&(F4 a, F4 b) { return {_mm_and_ps(a.v, b.v)}; }
+inline F4 lessThan(F4 a, F4 b) { return {_mm_cmplt_ps(a.v, b.v)}; }
+inline F4 select(F4 mask, F4 a, F4 b) {
+  return {_mm_or_ps(_mm_and_ps(mask.v, a.v), _mm_andnot_ps(mask.v, b.v))};
+}
+inline I4 select(F4 mask, I4 a, I4 b) {
+  const __m128i m = _mm_castps_si128(mask.v);
+  return {_mm_or_si128(_mm_and_si128(m, a.v), _mm_andnot_si128(m, b.v))};
+}
+inline F4 maskOf(bool x, bool y, bool z) {
+  return {_mm_castsi128_ps(_mm_setr_epi32(-int(x), -int(y), -int(z), 0))};
+}
 #else
 struct F4 {
   float v[4];
@@ -69,6 +96,42 @@ struct F4 {
     for (int k = 0; k < 4; ++k) out[k] = static_cast<int>(v[k]);
   }
 };
+// Lane masks are F4s whose lanes are 1 (true) or 0 (false) here.
+struct I4 {
+  std::uint32_t v[4];
+  static I4 load(const std::uint32_t* p) { return {{p[0], p[1], p[2], p[3]}}; }
+  static I4 all(std::uint32_t x) { return {{x, x, x, x}}; }
+  friend I4 operator+(I4 a, I4 b) {
+    return {{a.v[0] + b.v[0], a.v[1] + b.v[1], a.v[2] + b.v[2], a.v[3] + b.v[3]}};
+  }
+  void store(std::uint32_t* p) const { std::memcpy(p, v, sizeof v); }
+  F4 toFloat() const {
+    return {{float(std::int32_t(v[0])), float(std::int32_t(v[1])), float(std::int32_t(v[2])),
+             float(std::int32_t(v[3]))}};
+  }
+  F4 nonZero() const {
+    return {{v[0] ? 1.0f : 0.0f, v[1] ? 1.0f : 0.0f, v[2] ? 1.0f : 0.0f, v[3] ? 1.0f : 0.0f}};
+  }
+};
+inline F4 operator&(F4 a, F4 b) {
+  return F4::each(a, b, [](float x, float y) { return x != 0.0f && y != 0.0f ? 1.0f : 0.0f; });
+}
+inline F4 lessThan(F4 a, F4 b) {
+  return F4::each(a, b, [](float x, float y) { return x < y ? 1.0f : 0.0f; });
+}
+inline F4 select(F4 mask, F4 a, F4 b) {
+  F4 out;
+  for (int k = 0; k < 4; ++k) out.v[k] = mask.v[k] != 0.0f ? a.v[k] : b.v[k];
+  return out;
+}
+inline I4 select(F4 mask, I4 a, I4 b) {
+  I4 out;
+  for (int k = 0; k < 4; ++k) out.v[k] = mask.v[k] != 0.0f ? a.v[k] : b.v[k];
+  return out;
+}
+inline F4 maskOf(bool x, bool y, bool z) {
+  return {{x ? 1.0f : 0.0f, y ? 1.0f : 0.0f, z ? 1.0f : 0.0f, 0.0f}};
+}
 #endif
 
 // A box as two F4 corners, grown by references and other boxes.
@@ -127,6 +190,7 @@ struct Grid {
   int bins = kMaxBins;
   F4 origin = F4::all(0.0f), scale = F4::all(0.0f), last = F4::all(0.0f);
   bool usable[3] = {false, false, false};
+  float axisScale[3] = {0.0f, 0.0f, 0.0f};
 
   explicit Grid(const Range& range) {
     bins = static_cast<int>(std::clamp<std::size_t>(range.count(), 4, kMaxBins));
@@ -138,6 +202,7 @@ struct Grid {
     }
     origin = F4::set(range.centroids.lo[0], range.centroids.lo[1], range.centroids.lo[2]);
     scale = F4::set(s[0], s[1], s[2]);
+    std::copy(s, s + 3, axisScale);
     last = F4::all(float(bins - 1));
   }
   // The bin of a reference on each axis (its doubled centroid, clamped to the grid).
@@ -149,34 +214,37 @@ struct Grid {
 // Each axis's bins: the box and the triangles of the references whose centroid falls in each.
 // Only the grid's bins are set up: a small range pays for few.
 struct Bins {
-  F4 lo[3][kMaxBins], hi[3][kMaxBins];
-  std::uint32_t triangles[3][kMaxBins];
+  struct Entry {
+    F4 lo, hi;
+  };
+  Entry box[3][kMaxBins];
+  std::uint32_t triangles[kMaxBins][4];  // bin b's triangles on axis a at [b][a] (lane 3 unused)
 
   Bins(const PrimRef* refs, std::size_t begin, std::size_t end, const Grid& grid) {
     static_assert(offsetof(PrimRef, face) == 3 * sizeof(float) && offsetof(PrimRef, hi) == 4 * sizeof(float));
     for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < grid.bins; ++b) {
-        lo[a][b] = F4::all(kInf);
-        hi[a][b] = F4::all(-kInf);
-        triangles[a][b] = 0;
-      }
+      for (int b = 0; b < grid.bins; ++b) box[a][b] = {F4::all(kInf), F4::all(-kInf)};
     }
+    for (int b = 0; b < grid.bins; ++b) I4::all(0).store(triangles[b]);
     for (std::size_t i = begin; i < end; ++i) {
       const PrimRef& r = refs[i];
       const F4 rlo = F4::load(r.lo), rhi = F4::load(r.hi);
       alignas(16) int b[4];
       grid.bin(r, b);
       for (int a = 0; a < 3; ++a) {
-        lo[a][b[a]] = min(lo[a][b[a]], rlo);
-        hi[a][b[a]] = max(hi[a][b[a]], rhi);
-        triangles[a][b[a]] += r.triangles;
+        Entry& e = box[a][b[a]];
+        e.lo = min(e.lo, rlo);
+        e.hi = max(e.hi, rhi);
+        triangles[b[a]][a] += r.triangles;
       }
     }
   }
+  const F4& lo(int axis, int b) const { return box[axis][b].lo; }
+  const F4& hi(int axis, int b) const { return box[axis][b].hi; }
   // The union of bins [first, last) on `axis`.
   Box4 unite(int axis, int first, int last) const {
     Box4 out;
-    for (int b = first; b < last; ++b) out.extend(lo[axis][b], hi[axis][b]);
+    for (int b = first; b < last; ++b) out.extend(box[axis][b].lo, box[axis][b].hi);
     return out;
   }
 };
@@ -210,48 +278,60 @@ Split chooseSplit(const PrimRef* refs, const Range& range, const BvhBuildOptions
   const Bins bins(refs, range.begin, range.end, grid);
   const int count = grid.bins;
   // Cheapest boundary: the sum of each side's area times its triangles (the first of equal ones, axis
-  // by axis). Both sweeps grow the three axes' boxes at once and take their areas together.
-  alignas(16) float rightArea[kMaxBins][4], leftArea[kMaxBins][4];
-  std::uint32_t rightCount[3][kMaxBins], leftCount[3][kMaxBins];
+  // by axis). The right sweep grows the three axes' boxes at once and takes their areas together; the
+  // left sweep does the same and costs each boundary on the three axes at once, keeping each axis's
+  // cheapest (the first of equal ones), then the cheapest axis (the first of equal ones): the same
+  // choice, from the same floats, as costing every boundary axis by axis.
+  alignas(16) float rightArea[kMaxBins][4];
+  alignas(16) std::uint32_t rightCount[kMaxBins][4];
   {
     F4 lo[3] = {F4::all(kInf), F4::all(kInf), F4::all(kInf)};
     F4 hi[3] = {F4::all(-kInf), F4::all(-kInf), F4::all(-kInf)};
-    std::uint32_t triangles[3] = {0, 0, 0};
+    I4 triangles = I4::all(0);
     for (int b = count - 1; b > 0; --b) {
       for (int a = 0; a < 3; ++a) {
-        lo[a] = min(lo[a], bins.lo[a][b]);
-        hi[a] = max(hi[a], bins.hi[a][b]);
-        rightCount[a][b] = triangles[a] += bins.triangles[a][b];
+        lo[a] = min(lo[a], bins.lo(a, b));
+        hi[a] = max(hi[a], bins.hi(a, b));
       }
+      triangles = triangles + I4::load(bins.triangles[b]);
+      triangles.store(rightCount[b]);
       areasOf(lo, hi).store(rightArea[b]);
     }
   }
+  F4 bestCost = F4::all(kInf);
+  I4 bestBin = I4::all(0), bestLeft = I4::all(0);
   {
+    const F4 usable = maskOf(grid.usable[0], grid.usable[1], grid.usable[2]);
     F4 lo[3] = {F4::all(kInf), F4::all(kInf), F4::all(kInf)};
     F4 hi[3] = {F4::all(-kInf), F4::all(-kInf), F4::all(-kInf)};
-    std::uint32_t triangles[3] = {0, 0, 0};
+    I4 triangles = I4::all(0);
     for (int b = 1; b < count; ++b) {
       for (int a = 0; a < 3; ++a) {
-        lo[a] = min(lo[a], bins.lo[a][b - 1]);
-        hi[a] = max(hi[a], bins.hi[a][b - 1]);
-        leftCount[a][b] = triangles[a] += bins.triangles[a][b - 1];
+        lo[a] = min(lo[a], bins.lo(a, b - 1));
+        hi[a] = max(hi[a], bins.hi(a, b - 1));
       }
-      areasOf(lo, hi).store(leftArea[b]);
+      triangles = triangles + I4::load(bins.triangles[b - 1]);
+      const I4 right = I4::load(rightCount[b]);
+      const F4 cost = areasOf(lo, hi) * triangles.toFloat() + F4::load(rightArea[b]) * right.toFloat();
+      // An empty side's area is never used (its box's lanes are infinite).
+      const F4 better = usable & triangles.nonZero() & right.nonZero() & lessThan(cost, bestCost);
+      bestCost = select(better, cost, bestCost);
+      bestBin = select(better, I4::all(static_cast<std::uint32_t>(b)), bestBin);
+      bestLeft = select(better, triangles, bestLeft);
     }
   }
+  alignas(16) float laneCost[4];
+  alignas(16) std::uint32_t laneBin[4], laneLeft[4];
+  bestCost.store(laneCost);
+  bestBin.store(laneBin);
+  bestLeft.store(laneLeft);
   float best = kInf;
   for (int a = 0; a < 3; ++a) {
-    if (!grid.usable[a]) continue;
-    for (int b = 1; b < count; ++b) {
-      // An empty side's area is never read (its box's lanes are infinite).
-      if (leftCount[a][b] == 0 || rightCount[a][b] == 0) continue;
-      const float cost = leftArea[b][a] * float(leftCount[a][b]) + rightArea[b][a] * float(rightCount[a][b]);
-      if (cost < best) {
-        best = cost;
-        split.axis = a;
-        split.bin = b;
-        split.leftTriangles = leftCount[a][b];
-      }
+    if (laneCost[a] < best) {
+      best = laneCost[a];
+      split.axis = a;
+      split.bin = static_cast<int>(laneBin[a]);
+      split.leftTriangles = laneLeft[a];
     }
   }
   const float area = range.bounds.area();
@@ -266,6 +346,9 @@ Split chooseSplit(const PrimRef* refs, const Range& range, const BvhBuildOptions
   if (split.kind == SplitKind::Binned) {
     // Both sides' boxes from the bins: the partition need not gather them again.
     split.bins = count;
+    split.origin = range.centroids.lo[split.axis];
+    split.scale = grid.axisScale[split.axis];
+    split.lastBin = float(count - 1);
     split.left = bins.unite(split.axis, 0, split.bin).box();
     split.right = bins.unite(split.axis, split.bin, count).box();
   }
@@ -280,12 +363,15 @@ void partition(PrimRef* refs, const Range& range, Range& left, Range& right) {
   } else {
     // Hoare's partition; each side's centroid box gathered as references are placed (their boxes
     // and triangles come from the bins).
-    const Grid grid(range);
+    // A reference's bin on the split's axis, as Grid::bin finds it lane by lane (maxps, minps and a
+    // truncation: the same floats).
     const int axis = range.split.axis, bin = range.split.bin;
+    const float origin = range.split.origin, scale = range.split.scale, last = range.split.lastBin;
     auto goesLeft = [&](const PrimRef& r) {
-      alignas(16) int b[4];
-      grid.bin(r, b);
-      return b[axis] < bin;
+      float x = (r.lo[axis] + r.hi[axis] - origin) * scale;
+      x = x > 0.0f ? x : 0.0f;
+      x = x < last ? x : last;
+      return static_cast<int>(x) < bin;
     };
     left = Range{};
     right = Range{};

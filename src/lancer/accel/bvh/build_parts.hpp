@@ -65,6 +65,9 @@ struct Split {
   int axis = 0;
   int bins = 0;  // of the range's grid (fewer for small ranges)
   int bin = 0;   // the left side holds bins [0, bin)
+  // The grid along `axis` (Grid's origin, scale and last bin there), so that the partition bins a
+  // reference on that axis alone, in the same float operations.
+  float origin = 0, scale = 0, lastBin = 0;
   float cost = 0;
   // A binned split's sides, read from the bins: their boxes and triangles.
   Box left, right;

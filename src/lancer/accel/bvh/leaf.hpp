@@ -15,6 +15,10 @@
 #include <cstdint>
 #include <cstring>
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 #include "lancer/accel/triangle_intersect.hpp"
 
 namespace lancer::bvh {
@@ -93,9 +97,32 @@ inline void writeLeaf(std::uint64_t* out, std::uint32_t count, const std::uint32
 }
 
 // The local index of each corner: vertices numbered in order of first appearance among the corners
-// `vertexOf[0 .. 3 count)`. Returns how many there are.
+// `vertexOf[0 .. 3 count)`. Returns how many there are. Each corner is looked for among the
+// vertices seen so far four at a time (SSE2), the first match taken: the numbering of a search one
+// by one.
 inline std::uint32_t numberLeafVertices(const std::uint32_t* vertexOf, std::uint32_t corners,
                                         std::uint8_t* local) {
+#ifdef __SSE2__
+  alignas(16) std::uint32_t seen[kMaxLeafVertices] = {};
+  std::uint32_t vertexCount = 0;
+  for (std::uint32_t k = 0; k < corners; ++k) {
+    const __m128i key = _mm_set1_epi32(static_cast<int>(vertexOf[k]));
+    std::uint32_t v = vertexCount;
+    for (std::uint32_t at = 0; at < vertexCount; at += 4) {
+      // Lanes past vertexCount hold stale or unset values: only matches below it count.
+      const auto bits = static_cast<std::uint32_t>(_mm_movemask_ps(_mm_castsi128_ps(
+          _mm_cmpeq_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(seen + at)), key))));
+      if (bits != 0) {
+        const std::uint32_t found = at + static_cast<std::uint32_t>(__builtin_ctz(bits));
+        if (found < vertexCount) v = found;
+        break;
+      }
+    }
+    if (v == vertexCount) seen[vertexCount++] = vertexOf[k];
+    local[k] = static_cast<std::uint8_t>(v);
+  }
+  return vertexCount;
+#else
   std::uint32_t seen[kMaxLeafVertices];
   std::uint32_t vertexCount = 0;
   for (std::uint32_t k = 0; k < corners; ++k) {
@@ -105,6 +132,7 @@ inline std::uint32_t numberLeafVertices(const std::uint32_t* vertexOf, std::uint
     local[k] = static_cast<std::uint8_t>(v);
   }
   return vertexCount;
+#endif
 }
 
 }  // namespace lancer::bvh

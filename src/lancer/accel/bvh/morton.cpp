@@ -81,15 +81,21 @@ MortonFaces gatherMortonFaces(std::span<const Vec3> positions, std::span<const M
   // A first pass counts each chunk's tree faces and sliver triangles and bounds the centroids; a
   // second writes the slivers and one key a tree face (its code, its face), in face order; the keys
   // sorted, the references are made in their order.
+  // The first pass also keeps a bit a face, set for a sliver face, so that the second does not test
+  // again (each chunk its own words: none is shared between threads).
   const ChunkPlan plan(faces.size(), 1 << 14);
   std::vector<std::size_t> kept(plan.chunks + 1, 0), dropped(plan.chunks + 1, 0);
   std::vector<Box> boxes(plan.chunks);
+  std::vector<std::vector<std::uint64_t>> sliverBits(plan.chunks);
   parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     std::size_t tree = 0, slivers = 0;
     Box box;
+    std::vector<std::uint64_t>& bits = sliverBits[chunk];
+    bits.assign((end - begin + 63) / 64, 0);
     for (std::size_t f = begin; f < end; ++f) {
       const MeshFace& face = faces[f];
       if (isSliverFace(positions, face)) {
+        bits[(f - begin) / 64] |= std::uint64_t(1) << ((f - begin) % 64);
         slivers += face.isQuad() ? 2 : 1;
         continue;
       }
@@ -112,15 +118,26 @@ MortonFaces gatherMortonFaces(std::span<const Vec3> positions, std::span<const M
   MortonFaces out;
   out.slivers.resize(dropped.back());
   const std::size_t n = kept.back();
-  if (n == 0) return out;
+  if (n == 0) {
+    // Every face a sliver: only the slivers to write.
+    parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+      std::size_t sliver = dropped[chunk];
+      for (std::size_t f = begin; f < end; ++f) {
+        gatherSlivers(positions, faces[f], static_cast<std::uint32_t>(f), out.slivers.data() + sliver);
+        sliver += faces[f].isQuad() ? 2 : 1;
+      }
+    });
+    return out;
+  }
   // The keys and the sort's scratch unwritten until the passes below fill them, on every thread.
   HugePageArray<std::uint64_t> keys(n), scratch(n);
   parallelChunks(plan, threads, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     std::size_t tree = kept[chunk], sliver = dropped[chunk];
+    const std::vector<std::uint64_t>& bits = sliverBits[chunk];
     for (std::size_t f = begin; f < end; ++f) {
       const MeshFace& face = faces[f];
       const auto id = static_cast<std::uint32_t>(f);
-      if (isSliverFace(positions, face)) {
+      if ((bits[(f - begin) / 64] >> ((f - begin) % 64)) & 1u) {
         gatherSlivers(positions, face, id, out.slivers.data() + sliver);
         sliver += face.isQuad() ? 2 : 1;
         continue;
