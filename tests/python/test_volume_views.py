@@ -10,7 +10,7 @@ import pytest
 
 import lancer
 
-from conftest import data, run_cli
+from conftest import cli_image, data, run_cli
 
 CAPACITOR = str(data("tests", "data", "volume", "capacitor.msh"))
 HEXAHEDRA = str(data("tests", "data", "volume", "cube_hex.msh"))
@@ -20,11 +20,6 @@ SURFACE = str(data("tests", "data", "fields", "node_xy_v41_bin.msh"))
 SQUARE_VECTOR = str(data("tests", "data", "fields", "node_vector_v41_bin.msh"))
 SPHERE_SKIN = str(data("tests", "data", "msh", "sphere_v41_bin.msh"))
 SIZE = {"width": 96, "height": 64}
-
-
-def cli_image(tmp_path, *arguments):
-    run_cli("render", *arguments, "--width", 96, "--height", 64, "-q", "-o", tmp_path / "cli.png")
-    return np.asarray(lancer.read_png(str(tmp_path / "cli.png")))[..., :3]
 
 
 def test_slices_match_the_cli(tmp_path):
