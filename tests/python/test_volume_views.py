@@ -102,6 +102,32 @@ def test_a_mesh_keeps_its_volume(tmp_path):
     assert mesh.probe([0, 0, 0], "v").shape == (1, 1)  # probes share it
 
 
+def test_a_scene_draws_inside_a_read_mesh_as_inside_its_file(tmp_path):
+    # Scene.add_mesh(lancer.read_msh(path)) draws the slices, isosurfaces, field lines and coloured
+    # caps that add_mesh(path) draws, from the volume the Mesh keeps: read once, then kept.
+    copy = tmp_path / "capacitor.msh"
+    shutil.copy(CAPACITOR, copy)
+    mesh = lancer.read_msh(str(copy))
+    keys = {"color_by": {"field": "v"}, "slice": [{"point": [0, 0, 0.1], "normal": [0, 0, 1]}],
+            "isosurfaces": {"field": "v", "values": [0.5]}, "streamlines": {"field": "e", "count": 6}}
+    by_path, by_mesh = lancer.Scene(), lancer.Scene()
+    by_path.add_mesh(str(copy), **keys)
+    by_mesh.add_mesh(mesh, **keys)
+    # render's keywords, and a coloured cap, on scenes of the path and of the Mesh.
+    plain_path, plain_mesh = lancer.Scene(), lancer.Scene()
+    plain_path.add_mesh(str(copy), color_by={"field": "v"})
+    plain_mesh.add_mesh(mesh, color_by={"field": "v"})
+    expected = [np.asarray(lancer.render(by_path, **SIZE))]
+    expected += [np.asarray(lancer.render(plain_path, **keywords, **SIZE)) for keywords in ({"slices": "z"}, {"clip": "y=0"})]
+    for kept in (False, True):  # the file there, then gone
+        if kept:
+            copy.unlink()
+        assert np.array_equal(np.asarray(lancer.render(by_mesh, **SIZE)), expected[0])
+        assert np.array_equal(np.asarray(lancer.render(plain_mesh, slices="z", **SIZE)), expected[1])
+        assert np.array_equal(np.asarray(lancer.render(plain_mesh, clip="y=0", **SIZE)), expected[2])
+    assert mesh.volume.cells > 0  # the probes' volume is the one the renders read
+
+
 def test_probes_read_the_file_once(tmp_path):
     copy = tmp_path / "cube.msh"
     shutil.copy(HEXAHEDRA, copy)
