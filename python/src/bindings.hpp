@@ -54,6 +54,9 @@ struct PythonScene {
   std::string folder;  // relative paths in the document resolve against this
   // givenMeshes[i]: the lancer.Mesh that [[mesh]] i stands for, in memory, or null (read from its file).
   std::vector<std::shared_ptr<const Mesh>> givenMeshes;
+  // givenVolumes[i]: what givenMeshes[i] keeps of its file's volume (meshVolumeOf), shared with its
+  // Python Mesh; null for a mesh made with its volume or without a file.
+  std::vector<std::shared_ptr<MeshVolume>> givenVolumes;
   // A Camera set in Python (scene.camera = ...), which the document's [camera] cannot say (a gmsh view).
   std::optional<CameraSettings> camera;
 };
@@ -65,6 +68,13 @@ struct PythonScene {
 // An InputError for a mesh made from arrays or by gmsh, which has no volume elements.
 std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene,
                                                      const RenderOverrides& overrides, int threads);
+
+// The volumes of the scene's meshes in memory (Scene.add_mesh) that a render with `overrides` draws
+// inside, for RenderRequest::givenVolumes: the file's volume of a Mesh lancer.read_msh read, read once
+// for the Mesh as for its quick look, where the [[mesh]] needs one (needsVolume); else null (a mesh
+// made with its volume carries it). Call without the GIL.
+std::vector<std::shared_ptr<const VolumeMesh>> givenVolumesFor(const PythonScene& scene,
+                                                               const RenderOverrides& overrides, int threads);
 
 // The quick look of a mesh, as `lancer render part.msh` makes it.
 PythonScene quickLookOf(std::shared_ptr<const Mesh> mesh);

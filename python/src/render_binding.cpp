@@ -133,7 +133,9 @@ PreparedRender prepareRender(PythonScene scene, const RenderOverrides& overrides
   PreparedRender prepared = [&] {
     const py::gil_scoped_release release;
     RenderRequest request;
-    request.quickLookVolume = quickLookVolumeFor(scene, overrides, threads);  // before the move below
+    // Before the move below: both read the description.
+    request.quickLookVolume = quickLookVolumeFor(scene, overrides, threads);
+    request.givenVolumes = givenVolumesFor(scene, overrides, threads);
     request.description = std::move(scene.description);
     if (scene.quickLookMesh) request.quickLookMesh = *scene.quickLookMesh;
     request.givenMeshes = scene.givenMeshes;

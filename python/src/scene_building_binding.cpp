@@ -116,8 +116,15 @@ void addMesh(PythonScene& scene, const py::object& mesh, const py::kwargs& keys)
   std::vector<std::shared_ptr<const Mesh>> givenMeshes = scene.givenMeshes;
   givenMeshes.resize(index);
   givenMeshes.push_back(given);
+  // A Mesh lancer.read_msh read draws inside its file's volume as the file's path does: the volume
+  // it keeps, read the first time a render needs it (givenVolumesFor).
+  std::vector<std::shared_ptr<MeshVolume>> givenVolumes = scene.givenVolumes;
+  givenVolumes.resize(index);
+  givenVolumes.push_back(given && !given->volume && given->source.fileBytes > 0 ? meshVolumeOf(given)
+                                                                                : nullptr);
   commit(scene, std::move(document), "add_mesh");
   scene.givenMeshes = std::move(givenMeshes);
+  scene.givenVolumes = std::move(givenVolumes);
 }
 
 void addToArray(PythonScene& scene, const char* key, const char* call, const py::kwargs& keys) {

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -141,6 +142,25 @@ std::shared_ptr<const VolumeMesh> quickLookVolumeFor(const PythonScene& scene,
                     mesh.source.path));
   }
   return fileVolumeOf(mesh, *scene.quickLookVolume, threads);
+}
+
+std::vector<std::shared_ptr<const VolumeMesh>> givenVolumesFor(const PythonScene& scene,
+                                                               const RenderOverrides& overrides,
+                                                               int threads) {
+  std::vector<std::shared_ptr<const VolumeMesh>> volumes(scene.givenMeshes.size());
+  if (std::all_of(scene.givenVolumes.begin(), scene.givenVolumes.end(),
+                  [](const auto& kept) { return !kept; }))
+    return volumes;
+  // The overrides on a copy of the description say what the render draws, as the scene's own keys do.
+  SceneDescription applied = scene.description;
+  applyRenderOverrides(applied, overrides, nullptr);
+  for (std::size_t i = 0; i < volumes.size() && i < scene.givenVolumes.size() && i < applied.meshes.size();
+       ++i) {
+    const std::shared_ptr<const Mesh>& mesh = scene.givenMeshes[i];
+    if (mesh && scene.givenVolumes[i] && needsVolume(applied, applied.meshes[i]))
+      volumes[i] = fileVolumeOf(*mesh, *scene.givenVolumes[i], threads);
+  }
+  return volumes;
 }
 
 std::shared_ptr<MeshVolume> meshVolumeOf(const std::shared_ptr<const Mesh>& mesh) {

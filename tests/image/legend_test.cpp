@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,34 @@ TEST(NiceTicks, NarrowRangesStillGetTwoTicksAndConstantFieldsOne) {
   EXPECT_GE(niceTicks(3.31, 3.38).values.size(), 2u);
   EXPECT_EQ(niceTicks(2.5, 2.5).values, (std::vector<double>{2.5}));
   EXPECT_EQ(niceTicks(2.5, 2.5).step, 0);
+}
+
+TEST(NiceTicks, ARangeOfFloatRoundingIsOneCleanValue) {
+  // |w| of unit vectors stored as floats: 0.99999994..1 is a constant field, not eight decimals.
+  const double below = std::nextafter(1.0f, 0.0f);
+  EXPECT_TRUE(rangeIsOneValue(below, 1.0));
+  EXPECT_EQ(tickLabels(niceTicks(below, 1.0)), (std::vector<std::string>{"1"}));
+  EXPECT_EQ(tickLabels(niceTicks(-1.0, -0.9999995)), (std::vector<std::string>{"\u22121"}));
+  EXPECT_EQ(logTickLabels(logTicks(below, 1.0)), (std::vector<std::string>{"1"}));
+  // The map's middle colour for every value, as for low == high.
+  const MapPosition position(below, 1.0);
+  EXPECT_EQ(position(below), 0.5f);
+  EXPECT_EQ(position(1.0), 0.5f);
+  // A range the floats do hold is spread and labelled as before.
+  EXPECT_FALSE(rangeIsOneValue(0.99999, 1.0));
+  EXPECT_GE(niceTicks(0.99999, 1.0).values.size(), 3u);
+  EXPECT_EQ(MapPosition(0.99999, 1.0)(0.99999), 0.0f);
+  EXPECT_FALSE(rangeIsOneValue(-1e-9, 1e-9));  // around zero there is no scale to round against
+  EXPECT_FALSE(rangeIsOneValue(0, std::numeric_limits<double>::infinity()));
+  // Its legend is the constant field's: one label, at the middle of a bar of the middle colour.
+  const LegendSpec rounded{ColorMapKind::Viridis, below, 1.0, "|w|", "", 0};
+  const LegendSpec constant{ColorMapKind::Viridis, 1.0, 1.0, "|w|", "", 0};
+  const Image a = legendImage(rounded, false, 120, 14, false),
+              b = legendImage(constant, false, 120, 14, false);
+  ASSERT_EQ(a.width(), b.width());
+  ASSERT_EQ(a.height(), b.height());
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x) ASSERT_TRUE(a.at(x, y) == b.at(x, y)) << x << "," << y;
 }
 
 TEST(TickLabels, OneNotationWithTheDigitsTheStepNeeds) {

@@ -1,12 +1,16 @@
 """Shared helpers for the Python tests: where the CLI and the fixtures are (CTest sets
-LANCER_CLI and LANCER_SOURCE_DIR; PYTHONPATH points at build/python), and a CLI runner."""
+LANCER_CLI and LANCER_SOURCE_DIR; PYTHONPATH points at build/python), a CLI runner and
+the CLI's picture as an array, for renders that must equal it."""
 
 import os
 import pathlib
 import struct
 import subprocess
 
+import numpy as np
 import pytest
+
+import lancer
 
 SOURCE_DIR = pathlib.Path(os.environ.get("LANCER_SOURCE_DIR", pathlib.Path(__file__).parents[2])).resolve()
 CLI = os.environ.get("LANCER_CLI", str(SOURCE_DIR / "build" / "lancer"))
@@ -22,6 +26,13 @@ def run_cli(*arguments, check=True):
     if check and result.returncode != 0:
         raise AssertionError(f"lancer {' '.join(map(str, arguments))} failed ({result.returncode}): {result.stderr}")
     return result.returncode, result.stderr
+
+
+def cli_image(tmp_path, *arguments, width=96, height=64):
+    """The RGB pixels `lancer render ARGUMENTS` draws at width x height, as a numpy array: what a
+    Python render of the same picture must equal."""
+    run_cli("render", *arguments, "--width", width, "--height", height, "-q", "-o", tmp_path / "cli.png")
+    return np.asarray(lancer.read_png(str(tmp_path / "cli.png")))[..., :3]
 
 
 def png_chunks(path):

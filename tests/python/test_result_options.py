@@ -7,16 +7,11 @@ import pytest
 
 import lancer
 
-from conftest import data, run_cli
+from conftest import cli_image, data
 
 SQUARE = str(data("tests", "data", "fields", "node_xy_v41_bin.msh"))
 VECTORS = str(data("tests", "data", "fields", "element_vector_v41_bin.msh"))
 SIZE = {"width": 96, "height": 64}
-
-
-def cli_image(tmp_path, *arguments):
-    run_cli("render", *arguments, "--width", 96, "--height", 64, "-q", "-o", tmp_path / "cli.png")
-    return np.asarray(lancer.read_png(str(tmp_path / "cli.png")))[..., :3]
 
 
 def test_result_keywords_match_the_cli(tmp_path):

@@ -133,8 +133,16 @@ def test_loads_errors_name_string_and_line():
 
 
 def test_a_mesh_in_memory_cannot_draw_inside_a_volume_and_a_quick_look_cannot_change():
+    # A Mesh read from a file of faces alone says what its path says; one made from arrays of faces
+    # has no file to turn to.
+    plane = [{"point": [0, 0, 0], "normal": [0, 0, 1]}]
+    for mesh in (BRACKET, lancer.read_msh(BRACKET)):
+        scene = lancer.Scene()
+        scene.add_mesh(mesh, slice=plane)
+        with pytest.raises(lancer.InputError, match=r"bracket_coarse.msh' has no volume elements \(tetrahedra"):
+            lancer.render(scene, width=16, height=16)
     scene = lancer.Scene()
-    scene.add_mesh(lancer.read_msh(BRACKET), slice=[{"point": [0, 0, 0], "normal": [0, 0, 1]}])
+    scene.add_mesh(lancer.Mesh(np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]]), np.array([[0, 1, 2]])), slice=plane)
     with pytest.raises(lancer.InputError, match="is a mesh in memory without volume elements"):
         lancer.render(scene, width=16, height=16)
     with pytest.raises(ValueError, match="a quick look is the scene of one mesh"):

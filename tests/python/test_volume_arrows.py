@@ -7,20 +7,15 @@ import pytest
 
 import lancer
 
-from conftest import data, run_cli
+from conftest import cli_image, data
 
 HEXAHEDRA = str(data("tests", "data", "volume", "cube_hex.msh"))
 SIZE = {"width": 64, "height": 64}
 
 
-def cli_image(tmp_path, *arguments):
-    run_cli("render", *arguments, "--width", 64, "--height", 64, "-q", "-o", tmp_path / "cli.png")
-    return np.asarray(lancer.read_png(str(tmp_path / "cli.png")))[..., :3]
-
-
 def test_grid_arrows_match_the_cli(tmp_path):
     mesh = lancer.read_msh(HEXAHEDRA)
-    expected = cli_image(tmp_path, HEXAHEDRA, "--arrows", "u", "--arrow-grid", "3,3,2")
+    expected = cli_image(tmp_path, HEXAHEDRA, "--arrows", "u", "--arrow-grid", "3,3,2", **SIZE)
     arrows = {"field": "u", "grid": [3, 3, 2]}
     rendered = np.asarray(lancer.render(lancer.Scene.quick_look(mesh), arrows=arrows, **SIZE))
     assert np.array_equal(rendered, expected)

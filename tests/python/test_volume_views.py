@@ -10,7 +10,7 @@ import pytest
 
 import lancer
 
-from conftest import data, run_cli
+from conftest import cli_image, data, run_cli
 
 CAPACITOR = str(data("tests", "data", "volume", "capacitor.msh"))
 HEXAHEDRA = str(data("tests", "data", "volume", "cube_hex.msh"))
@@ -20,11 +20,6 @@ SURFACE = str(data("tests", "data", "fields", "node_xy_v41_bin.msh"))
 SQUARE_VECTOR = str(data("tests", "data", "fields", "node_vector_v41_bin.msh"))
 SPHERE_SKIN = str(data("tests", "data", "msh", "sphere_v41_bin.msh"))
 SIZE = {"width": 96, "height": 64}
-
-
-def cli_image(tmp_path, *arguments):
-    run_cli("render", *arguments, "--width", 96, "--height", 64, "-q", "-o", tmp_path / "cli.png")
-    return np.asarray(lancer.read_png(str(tmp_path / "cli.png")))[..., :3]
 
 
 def test_slices_match_the_cli(tmp_path):
@@ -105,6 +100,32 @@ def test_a_mesh_keeps_its_volume(tmp_path):
     assert np.array_equal(np.asarray(lancer.render(lancer.Scene.quick_look(mesh, color_by="v"), slices="z", **SIZE)),
                           first)
     assert mesh.probe([0, 0, 0], "v").shape == (1, 1)  # probes share it
+
+
+def test_a_scene_draws_inside_a_read_mesh_as_inside_its_file(tmp_path):
+    # Scene.add_mesh(lancer.read_msh(path)) draws the slices, isosurfaces, field lines and coloured
+    # caps that add_mesh(path) draws, from the volume the Mesh keeps: read once, then kept.
+    copy = tmp_path / "capacitor.msh"
+    shutil.copy(CAPACITOR, copy)
+    mesh = lancer.read_msh(str(copy))
+    keys = {"color_by": {"field": "v"}, "slice": [{"point": [0, 0, 0.1], "normal": [0, 0, 1]}],
+            "isosurfaces": {"field": "v", "values": [0.5]}, "streamlines": {"field": "e", "count": 6}}
+    by_path, by_mesh = lancer.Scene(), lancer.Scene()
+    by_path.add_mesh(str(copy), **keys)
+    by_mesh.add_mesh(mesh, **keys)
+    # render's keywords, and a coloured cap, on scenes of the path and of the Mesh.
+    plain_path, plain_mesh = lancer.Scene(), lancer.Scene()
+    plain_path.add_mesh(str(copy), color_by={"field": "v"})
+    plain_mesh.add_mesh(mesh, color_by={"field": "v"})
+    expected = [np.asarray(lancer.render(by_path, **SIZE))]
+    expected += [np.asarray(lancer.render(plain_path, **keywords, **SIZE)) for keywords in ({"slices": "z"}, {"clip": "y=0"})]
+    for kept in (False, True):  # the file there, then gone
+        if kept:
+            copy.unlink()
+        assert np.array_equal(np.asarray(lancer.render(by_mesh, **SIZE)), expected[0])
+        assert np.array_equal(np.asarray(lancer.render(plain_mesh, slices="z", **SIZE)), expected[1])
+        assert np.array_equal(np.asarray(lancer.render(plain_mesh, clip="y=0", **SIZE)), expected[2])
+    assert mesh.volume.cells > 0  # the probes' volume is the one the renders read
 
 
 def test_probes_read_the_file_once(tmp_path):

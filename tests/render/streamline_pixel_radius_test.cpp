@@ -1,6 +1,7 @@
 // Field lines' tubes sized in pixels (`radius = "4px"`) are 4 pixels in the picture as it is framed:
-// legends beside the model make the automatic camera frame it in a smaller part of the image, and
-// the radius follows that camera, not the one without legends.
+// legends beside the model make the automatic camera frame it in a smaller part of the image, and a
+// hidden skin makes it frame the tubes alone; the radius follows that camera, not the one that
+// frames the meshes as read.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,13 +18,14 @@ namespace {
 // The hexahedral cube (u = (1, 2, 3) at every node), its one field line through the centre sized 4
 // pixels, seen square to the line (every point of it at the target's depth) with the line upright.
 // The line stops 0.3 from the centre each way, its tube inside the cube: the picture frames the cube.
-PreparedRender cubeWithLine(std::optional<LegendPlacement> legend) {
+PreparedRender cubeWithLine(std::optional<LegendPlacement> legend, const std::string& skin = "edges") {
   RenderRequest request;
-  request.description = parseScene(
-      "[[mesh]]\nfile = \"cube_hex.msh\"\nskin = \"edges\"\n"
-      "streamlines = { field = \"u\", seed_points = [[0.5, 0.5, 0.5]], radius = \"4px\", "
-      "max_length = 0.3 }\n",
-      test::dataFile("volume/scene.toml"));
+  request.description =
+      parseScene("[[mesh]]\nfile = \"cube_hex.msh\"\nskin = \"" + skin +
+                     "\"\n"
+                     "streamlines = { field = \"u\", seed_points = [[0.5, 0.5, 0.5]], radius = \"4px\", "
+                     "max_length = 0.3 }\n",
+                 test::dataFile("volume/scene.toml"));
   request.description.camera.viewFrom = Vec3d{2, -1, 0};
   request.description.camera.up = normalize(Vec3d{1, 2, 3});
   request.overrides.width = 160;
@@ -64,6 +66,18 @@ TEST(StreamlinePixelRadius, FourPixelsWithAndWithoutLegends) {
     // The legends took their side: the model is framed smaller, the tube still 4 pixels.
     EXPECT_GT(beside.description.camera.legendShareRight + beside.description.camera.legendShareBottom, 0.1);
     EXPECT_NEAR(tubeRadiusInPixels(beside), 4.0, 0.05);
+  }
+}
+
+TEST(StreamlinePixelRadius, FourPixelsOfThePictureTheTubesAreFramedIn) {
+  // The skin hidden, the picture frames the line alone, not the cube the meshes as read span: its
+  // pixel is the one the tube is sized in (its bounds, the tube's own radius included, frame it).
+  for (const std::optional<LegendPlacement> legend :
+       {std::optional<LegendPlacement>(), std::optional(LegendPlacement::Right)}) {
+    const PreparedRender alone = cubeWithLine(legend, "hidden");
+    const Aabb& bounds = alone.scene.geometry.bounds;
+    EXPECT_LT(length(toDouble(bounds.extent())), 1.0);  // the line's 0.6, not the cube's 1.7
+    EXPECT_NEAR(tubeRadiusInPixels(alone), 4.0, 0.05);
   }
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "lancer/mesh/mesh_file.hpp"
 #include "lancer/mesh/msh_reader.hpp"
 #include "lancer/scene/results/step_files.hpp"
 #include "lancer/scene/scene.hpp"
@@ -16,6 +17,7 @@ namespace lancer {
 namespace {
 
 const std::string kBracket = LANCER_TEST_DATA_DIR "/render/bracket_coarse.msh";
+const std::string kCapacitor = LANCER_TEST_DATA_DIR "/volume/capacitor.msh";
 
 std::string messageOf(const toml::table& document, const std::string& where) {
   try {
@@ -81,6 +83,24 @@ TEST(ReadSceneMeshes, AGivenMeshHasNoVolumeToSlice) {
               std::string::npos)
         << error.what();
   }
+}
+
+TEST(ReadSceneMeshes, AGivenMeshDrawsInsideTheVolumeItsFileHolds) {
+  // A mesh read from its file without its volume (Python's lancer.read_msh), given with the volume
+  // the caller read for it: its slice is drawn inside that volume, as from the file's path.
+  toml::table slice{{"point", toml::array{0, 0, 0}}, {"normal", toml::array{0, 0, 1}}};
+  toml::table entry{{"file", "<arrays>"}, {"slice", toml::array{slice}}};
+  const SceneDescription description =
+      sceneFromToml(toml::table{{"mesh", toml::array{entry}}}, "add_mesh", "");
+  MeshWithVolume file = readMeshFileWithVolume(kCapacitor, 1);
+  ASSERT_TRUE(file.volume && !file.volume->empty());
+  const std::vector<std::shared_ptr<const Mesh>> meshes = {std::make_shared<const Mesh>(file.mesh)};
+  const std::vector<std::shared_ptr<const VolumeMesh>> fileVolumes = {file.volume};
+  std::vector<std::shared_ptr<const VolumeMesh>> volumes;
+  const std::vector<Mesh> read = readSceneMeshes(description, 1, nullptr, &volumes, meshes, fileVolumes);
+  ASSERT_EQ(volumes.size(), 1u);
+  EXPECT_EQ(volumes[0], file.volume);
+  EXPECT_EQ(read[0].volume, file.volume);
 }
 
 }  // namespace

@@ -69,15 +69,26 @@ std::vector<std::string_view> colorNames();
 // negative ones included, are drawn at it).
 enum class ColorScale { Linear, Log };
 
+// Whether a field's range [low, high] is one value: low == high, or no wider than the rounding of
+// its 32-bit float values (about 8 units in their last place, relative 1e-6): the length of unit
+// vectors computed from rounded components spans 0.99999994..1, which is a constant field, not a
+// range to spread a colour map over or to label with eight decimals.
+inline bool rangeIsOneValue(double low, double high) {
+  constexpr double kFloatRounding = 1e-6;
+  if (!(high > low)) return true;
+  const double width = high - low;
+  return std::isfinite(width) && width <= kFloatRounding * std::max(std::abs(low), std::abs(high));
+}
+
 // Where a value lies on a colour map spanning [low, high]: (value - low) / (high - low), or
 // (log value - log low) / (log high - log low), clamped to [0, 1]; the middle of the map when the
-// range is one value (a constant field), NaN for NaN.
+// range is one value (a constant field: rangeIsOneValue), NaN for NaN.
 class MapPosition {
  public:
   MapPosition(double low, double high, ColorScale scale = ColorScale::Linear)
       : log_(scale == ColorScale::Log && low > 0),
         low_(log_ ? std::log(low) : low),
-        scale_(high > low ? 1.0 / ((log_ ? std::log(high) : high) - low_) : 0.0) {}
+        scale_(rangeIsOneValue(low, high) ? 0.0 : 1.0 / ((log_ ? std::log(high) : high) - low_)) {}
   float operator()(double value) const {
     if (std::isnan(value)) return NAN;
     if (scale_ == 0) return 0.5f;

@@ -70,7 +70,7 @@ Layout layoutFor(float textHeight, bool hasTitle) {
 }
 
 Vec3 barColour(const LegendSpec& spec, float t, bool linearize) {
-  if (spec.low == spec.high) t = 0.5f;  // a constant field shows the map's middle colour
+  if (rangeIsOneValue(spec.low, spec.high)) t = 0.5f;  // a constant field shows the map's middle colour
   if (spec.bands > 0)
     t = (std::min(std::floor(t * static_cast<float>(spec.bands)), static_cast<float>(spec.bands - 1)) +
          0.5f) /
@@ -81,7 +81,8 @@ Vec3 barColour(const LegendSpec& spec, float t, bool linearize) {
 }
 
 bool onLogScale(const LegendSpec& spec) {
-  return spec.scale == ColorScale::Log && spec.low > 0 && spec.high > spec.low && std::isfinite(spec.high);
+  return spec.scale == ColorScale::Log && spec.low > 0 && !rangeIsOneValue(spec.low, spec.high) &&
+         std::isfinite(spec.high);
 }
 
 Image legendPanel(const LegendSpec& spec, bool horizontal, int barLength, float textHeight, bool linearize,
@@ -158,8 +159,12 @@ Image legendPanel(const LegendSpec& spec, bool horizontal, int barLength, float 
 
 NiceTicks niceTicks(double low, double high, int targetCount) {
   NiceTicks ticks;
-  if (!(high > low) || !std::isfinite(low) || !std::isfinite(high)) {
+  if (!std::isfinite(low) || !std::isfinite(high)) {
     ticks.values = {low};
+    return ticks;
+  }
+  if (rangeIsOneValue(low, high)) {  // a constant field, up to float rounding: its one value
+    ticks.values = {low + (high - low) / 2};
     return ticks;
   }
   targetCount = std::max(targetCount, 2);
@@ -183,7 +188,8 @@ NiceTicks niceTicks(double low, double high, int targetCount) {
 }
 
 NiceTicks logTicks(double low, double high, int targetCount) {
-  if (!(low > 0) || !(high > low) || !std::isfinite(high)) return niceTicks(low, high, targetCount);
+  if (!(low > 0) || rangeIsOneValue(low, high) || !std::isfinite(high))
+    return niceTicks(low, high, targetCount);
   targetCount = std::max(targetCount, 2);
   constexpr double kSlack = 1e-9;
   const int first = static_cast<int>(std::ceil(std::log10(low) - kSlack));

@@ -15,9 +15,10 @@ namespace lancer {
 // bars) or along the bottom edge (horizontal bars).
 enum class LegendPlacement { None, Right, Bottom };
 
-// One colour bar: the map from low to high (a constant field has low == high and shows the map's
-// middle colour), `bands` > 0 draws it in that many discrete bands as the surface shows them; on a
-// log scale the bar is the map along log(value) and its ticks are decades.
+// One colour bar: the map from low to high (a constant field, whose range is one value up to float
+// rounding (rangeIsOneValue), shows the map's middle colour and one label), `bands` > 0 draws it in that many
+// discrete bands as the surface shows them; on a log scale the bar is the map along log(value) and its ticks
+// are decades.
 struct LegendSpec {
   ColorMap map;
   double low = 0;
@@ -30,8 +31,8 @@ struct LegendSpec {
 
 // Round tick values inside [low, high]: multiples of a step 1, 2 or 5 times a power of ten, chosen
 // as in Heckbert's "Nice numbers for graph labels" (Graphics Gems, 1990) for about `targetCount`
-// ticks, with at least three (or half of targetCount) when low < high (one, the value, when low ==
-// high).
+// ticks, with at least three (or half of targetCount) when low < high (one, the value, when the
+// range is one value: low == high, or no wider than float rounding, rangeIsOneValue).
 struct NiceTicks {
   std::vector<double> values;
   double step = 0;

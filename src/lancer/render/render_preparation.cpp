@@ -90,7 +90,8 @@ PreparedRender prepareRender(RenderRequest request) {
     meshes.push_back(std::move(*request.quickLookMesh));
     volumes.push_back(request.quickLookVolume);
   } else {
-    meshes = readSceneMeshes(description, request.threads, &stages, &volumes, request.givenMeshes);
+    meshes = readSceneMeshes(description, request.threads, &stages, &volumes, request.givenMeshes,
+                             request.givenVolumes);
   }
   {
     const Stopwatch renumber;  // locality for every pass that follows (mesh/morton_renumbering.hpp)

@@ -31,6 +31,9 @@ struct RenderRequest {
   // Meshes already in memory (Python's Scene.add_mesh): givenMeshes[i], when set, stands for
   // description.meshes[i] instead of its file (readSceneMeshes).
   std::vector<std::shared_ptr<const Mesh>> givenMeshes;
+  // givenVolumes[i], when set: the volume of the file givenMeshes[i] was read from, for a mesh made
+  // without one of its own (read once by the caller and kept with the mesh).
+  std::vector<std::shared_ptr<const VolumeMesh>> givenVolumes;
   RenderOverrides overrides;
   AccelKind accel = kDefaultAccel;
   int threads = 0;  // of the scene preparation and the accelerator build; 0: every core

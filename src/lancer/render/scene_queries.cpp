@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "lancer/render/optics.hpp"
 
@@ -31,10 +32,10 @@ bool liesOnPlane(const Scene& scene, std::uint32_t face, const ClipPlane& plane,
   return true;
 }
 
-// The hit filters of per-mesh planes (context: the Scene). A mesh's own planes treat a face lying in
-// one of them as the scene's planes do (SceneQueries::firstSighting, shadowQuery): a ray never meets
-// it in the plane it enters the mesh's kept region by, and a shadow ray stops the on-plane tolerance
-// short of the plane it leaves that region by. Otherwise FaceClipSets::keeps.
+// The hit filters of per-mesh planes (context: a MeshClipContext). A mesh's own planes treat a face
+// lying in one of them as the scene's planes do (SceneQueries::firstSighting, shadowQuery): a ray
+// never meets it in the plane it enters the mesh's kept region by, and a shadow ray stops the on-plane
+// tolerance short of the plane it leaves that region by. Otherwise FaceClipSets::keeps.
 // The part of `ray` that the own planes of `face`'s mesh keep (`kept`); null when that mesh has none.
 const FaceClipRange* keptByOwnPlanes(const Scene& scene, const Ray& ray, std::uint32_t face,
                                      ClipInterval& kept) {
@@ -45,23 +46,23 @@ const FaceClipRange* keptByOwnPlanes(const Scene& scene, const Ray& ray, std::ui
 }
 
 bool keepsOnOwnPlanes(const void* context, const Ray& ray, std::uint32_t face, float t) {
-  const Scene& scene = *static_cast<const Scene*>(context);
+  const auto& [scene, tolerance] = *static_cast<const MeshClipContext*>(context);
   ClipInterval kept;
-  const FaceClipRange* range = keptByOwnPlanes(scene, ray, face, kept);
+  const FaceClipRange* range = keptByOwnPlanes(*scene, ray, face, kept);
   if (!range) return true;
   if (!(t > kept.enter && t < kept.exit)) return false;
   if (kept.enterPlane < 0) return true;
   const ClipPlane& entered =
-      scene.clipping.perMesh.planes[range->planeBegin + static_cast<std::size_t>(kept.enterPlane)];
-  return !liesOnPlane(scene, face, entered, onPlaneTolerance(scene));
+      scene->clipping.perMesh.planes[range->planeBegin + static_cast<std::size_t>(kept.enterPlane)];
+  return !liesOnPlane(*scene, face, entered, tolerance);
 }
 
 bool keepsOnOwnPlanesForLight(const void* context, const Ray& ray, std::uint32_t face, float t) {
-  const Scene& scene = *static_cast<const Scene*>(context);
+  const auto& [scene, tolerance] = *static_cast<const MeshClipContext*>(context);
   ClipInterval kept;
-  if (!keptByOwnPlanes(scene, ray, face, kept)) return true;
+  if (!keptByOwnPlanes(*scene, ray, face, kept)) return true;
   if (!(t > kept.enter && t < kept.exit)) return false;
-  return !(kept.exitRate > 0.0f && t >= kept.exit - onPlaneTolerance(scene) / kept.exitRate);
+  return !(kept.exitRate > 0.0f && t >= kept.exit - tolerance / kept.exitRate);
 }
 
 }  // namespace
@@ -84,8 +85,11 @@ SceneQueries::SceneQueries(const Scene& scene, const Accelerator& accelerator)
     : scene_(scene),
       accelerator_(accelerator),
       anyMeshClips_(!scene.clipping.perMesh.empty()),
-      meshClipFilter_{&scene, &keepsOnOwnPlanes},
-      meshShadowClipFilter_{&scene, &keepsOnOwnPlanesForLight} {
+      meshClipContext_(anyMeshClips_ ? std::make_shared<const MeshClipContext>(
+                                           MeshClipContext{&scene, onPlaneTolerance(scene)})
+                                     : nullptr),
+      meshClipFilter_{meshClipContext_.get(), &keepsOnOwnPlanes},
+      meshShadowClipFilter_{meshClipContext_.get(), &keepsOnOwnPlanesForLight} {
   for (const Material& material : scene.appearance.materials) {
     anyTransparent_ = anyTransparent_ || material.transparency > 0;
     splits_.push_back(energySplit(material));

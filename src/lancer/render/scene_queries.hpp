@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -70,6 +71,13 @@ struct Sighting {
   Hit hit;                              // the face hit (for a cap: the face the ray leaves the solid by)
   const ClipPlane* capPlane = nullptr;  // kCap
   std::uint32_t capMaterial = 0;        // kCap: the cut solid's
+};
+
+// What the per-mesh clip filters read, their context: the scene, and its on-plane tolerance (a
+// square root of the bounds), computed once when the filters are set rather than per candidate hit.
+struct MeshClipContext {
+  const Scene* scene = nullptr;
+  float onPlaneTolerance = 0;
 };
 
 class SceneQueries {
@@ -169,6 +177,9 @@ class SceneQueries {
   const Accelerator& accelerator_;
   bool anyTransparent_ = false;
   bool anyMeshClips_ = false;  // some mesh has planes of its own: use the clipped queries
+  // The filters' context, set when some mesh has planes of its own; shared by copies of this
+  // object (an integrator moved into its variant), whose filters point at it.
+  std::shared_ptr<const MeshClipContext> meshClipContext_;
   // The hits those planes keep (FaceClipSets::keeps), past a face lying in the plane a ray enters
   // its mesh's kept region by; for shadow rays, short of the plane they leave it by.
   HitFilter meshClipFilter_, meshShadowClipFilter_;

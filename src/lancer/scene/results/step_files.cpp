@@ -198,19 +198,22 @@ Mesh readInstanceMesh(const MeshInstance& instance, int threads, std::shared_ptr
   return mesh;
 }
 
-// A mesh the caller holds in memory, in place of a file: its views added, and its volume when it
-// was made with one (lancer.Mesh from arrays of tetrahedra, ...); else its faces are all there is
+// A mesh the caller holds in memory, in place of a file: its views added, and its volume: the one it
+// was made with (lancer.Mesh from arrays of tetrahedra, ...), else `fileVolume`, the one its file
+// holds, which the caller read for it (lancer.read_msh's Mesh: an empty one when the file has no
+// volume elements, which addVolumeViews then says as for a file); else its faces are all there is
 // (coloured caps stay flat, volume views cannot be drawn).
 Mesh givenInstanceMesh(const MeshInstance& instance, const Mesh& given,
+                       const std::shared_ptr<const VolumeMesh>& fileVolume,
                        std::shared_ptr<const VolumeMesh>* volume) {
-  const bool hasVolume = given.volume && !given.volume->empty();
-  if (instance.volume.any() && !hasVolume)
+  const std::shared_ptr<const VolumeMesh>& own = given.volume ? given.volume : fileVolume;
+  if (instance.volume.any() && !fileVolume && !(given.volume && !given.volume->empty()))
     throw InputError(instance.where,
                      fmt::format("'{}' is a mesh in memory without volume elements: slices, isosurfaces and "
                                  "field lines are drawn inside volumes; give the mesh file instead, or make "
                                  "the mesh with its tetrahedra (or hexahedra, prisms, pyramids)",
                                  given.source.path));
-  MeshWithVolume read{given, given.volume};
+  MeshWithVolume read{given, own};
   addViewFiles(read, instance.views);
   read.mesh.volume = read.volume;
   if (volume) *volume = read.volume;
@@ -224,7 +227,8 @@ Mesh givenInstanceMesh(const MeshInstance& instance, const Mesh& given,
 
 std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threads, StageTimes* times,
                                   std::vector<std::shared_ptr<const VolumeMesh>>* volumes,
-                                  std::span<const std::shared_ptr<const Mesh>> given) {
+                                  std::span<const std::shared_ptr<const Mesh>> given,
+                                  std::span<const std::shared_ptr<const VolumeMesh>> givenVolumes) {
   const Stopwatch read;
   std::vector<Mesh> meshes;
   meshes.reserve(description.meshes.size());
@@ -232,7 +236,10 @@ std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threa
   for (std::size_t i = 0; i < description.meshes.size(); ++i) {
     const MeshInstance& instance = description.meshes[i];
     if (i < given.size() && given[i]) {
-      meshes.push_back(givenInstanceMesh(instance, *given[i], volumes ? &(*volumes)[i] : nullptr));
+      const std::shared_ptr<const VolumeMesh> none;
+      meshes.push_back(givenInstanceMesh(instance, *given[i],
+                                         i < givenVolumes.size() ? givenVolumes[i] : none,
+                                         volumes ? &(*volumes)[i] : nullptr));
       continue;
     }
     const bool withVolume = volumes && needsVolume(description, instance);

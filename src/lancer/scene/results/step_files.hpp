@@ -34,10 +34,13 @@ Mesh readStepFiles(const std::string& pattern, const std::vector<std::string>& f
                    const SourceLocation& where);
 
 // readSceneMeshes (scene.hpp) with meshes already in memory (Python's Scene.add_mesh): `given[i]`,
-// when set, is mesh i, copied instead of reading description.meshes[i].file, with its `views` added;
-// it has no volume (a [[mesh]] that draws inside one is an InputError).
+// when set, is mesh i, copied instead of reading description.meshes[i].file, with its `views` added.
+// Its volume is the one it was made with, else givenVolumes[i] when set (the volume of the file it
+// was read from, which the caller reads once and keeps); without either, a [[mesh]] that draws inside
+// a volume is an InputError.
 std::vector<Mesh> readSceneMeshes(const SceneDescription& description, int threads, StageTimes* times,
                                   std::vector<std::shared_ptr<const VolumeMesh>>* volumes,
-                                  std::span<const std::shared_ptr<const Mesh>> given);
+                                  std::span<const std::shared_ptr<const Mesh>> given,
+                                  std::span<const std::shared_ptr<const VolumeMesh>> givenVolumes = {});
 
 }  // namespace lancer

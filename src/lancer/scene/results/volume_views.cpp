@@ -289,6 +289,39 @@ double sideSeen(const CameraSettings& camera, const InstanceTransform& transform
   return dot(towards, domain.normal) < 0 ? -1.0 : 1.0;
 }
 
+// Field-line tubes whose radius is given in pixels, kept to be made again (fitPixelTubes).
+struct PixelTubes {
+  std::size_t mesh;  // their index in the meshes
+  std::shared_ptr<VolumeViewSource> source;
+  std::shared_ptr<const VolumeLocator> locator;
+  std::vector<FieldLine> lines;
+  double pixels;
+};
+
+// Tubes sized in pixels are first made for the camera that frames the meshes as read; the picture's
+// camera frames what the scene then holds (tubes past the skin, a hidden skin, slices, isosurfaces),
+// whose pixel may be several percent larger or smaller. Their radius is made again for the pixel of
+// the camera that frames the meshes as they now are, until the two agree to a thousandth (the tubes'
+// own radius moves the bounds a little).
+void fitPixelTubes(const SceneDescription& description, std::vector<Mesh>& meshes,
+                   std::vector<PixelTubes>& tubes, const CameraSettings& seenBy) {
+  constexpr int kMostRemakes = 3;
+  constexpr double kAgreement = 1e-3;
+  for (int remake = 0; remake < kMostRemakes && !tubes.empty(); ++remake) {
+    const double pixel = pixelSizeAtTarget(seenBy, warpedWorldBounds(description, meshes),
+                                           description.render.width, description.render.height);
+    bool changed = false;
+    for (PixelTubes& made : tubes) {
+      double& radius = *made.source->parent.volume.streamlines->radius;
+      if (std::abs(made.pixels * pixel - radius) <= kAgreement * radius) continue;
+      radius = made.pixels * pixel;
+      meshes[made.mesh] = sourceTubes(*made.source, *made.locator, made.lines);
+      changed = true;
+    }
+    if (!changed) return;
+  }
+}
+
 }  // namespace
 
 bool needsVolume(const SceneDescription& description, const MeshInstance& instance) {
@@ -304,6 +337,7 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
                     const std::vector<std::shared_ptr<const VolumeMesh>>& volumes) {
   const std::size_t original = std::min(description.meshes.size(), volumes.size());
   std::vector<std::size_t> hidden;
+  std::vector<PixelTubes> pixelTubes;
   // For field lines (radii in pixels, the side of a 2D domain they lie on): the meshes as read and the
   // camera that sees them (a flat scene's straight on, as the render turns it: flat_scene.hpp).
   Aabbd readBounds;
@@ -438,9 +472,9 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
         source->parent.volume.streamlines->radius =
             *spec->radiusPixels *
             pixelSizeAtTarget(seenBy, readBounds, description.render.width, description.render.height);
-      const VolumeLocator locator(volume);
-      const std::vector<Vec3d> seeds = streamlineSeeds(*spec, volume, locator, transform, planar.get());
-      const std::vector<FieldLine> lines = sourceFieldLines(*source, *field, locator, seeds);
+      const auto locator = std::make_shared<const VolumeLocator>(volume);
+      const std::vector<Vec3d> seeds = streamlineSeeds(*spec, volume, *locator, transform, planar.get());
+      std::vector<FieldLine> lines = sourceFieldLines(*source, *field, *locator, seeds);
       const auto outside = static_cast<std::size_t>(std::count_if(
           lines.begin(), lines.end(), [](const FieldLine& line) { return line.points.empty(); }));
       if (outside == lines.size())
@@ -448,15 +482,15 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
                          fmt::format("streamlines of '{}': none of the {} seeds is inside the {} of "
                                      "'{}' (its box: {:.6g} to {:.6g} along x)",
                                      spec->field, seeds.size(), planar ? "2D domain" : "volume",
-                                     instance.file, locator.bounds().lower.x + volume.origin.x,
-                                     locator.bounds().upper.x + volume.origin.x));
+                                     instance.file, locator->bounds().lower.x + volume.origin.x,
+                                     locator->bounds().upper.x + volume.origin.x));
       if (outside > 0 && spec->seeds != StreamlineSpec::Seeds::Automatic)
         description.notes.push_back(formatInputWarning(
             spec->where,
             fmt::format("streamlines of '{}': {} of the {} seeds are outside the {} and start no "
                         "line",
                         spec->field, outside, seeds.size(), planar ? "2D domain" : "volume")));
-      Mesh tubes = sourceTubes(*source, locator, lines);
+      Mesh tubes = sourceTubes(*source, *locator, lines);
       if (!tubes.faces.empty()) {
         // On a 2D domain painted in the colours they would take, tubes of those colours vanish into
         // it: they are white instead, lit, unless a colour or another field is asked for.
@@ -467,6 +501,8 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
                                            description.materials, "streamlines");
         if (!spec->step && volume.fieldSteps(spec->field).size() > 1) child.volumeSource = source;
         child.liesOnPlane = planar != nullptr;
+        if (spec->radiusPixels)
+          pixelTubes.push_back({meshes.size(), source, locator, std::move(lines), *spec->radiusPixels});
         description.meshes.push_back(child);
         meshes.push_back(std::move(tubes));
       }
@@ -491,6 +527,8 @@ void addVolumeViews(SceneDescription& description, std::vector<Mesh>& meshes,
     description.meshes.erase(description.meshes.begin() + static_cast<std::ptrdiff_t>(*it));
     meshes.erase(meshes.begin() + static_cast<std::ptrdiff_t>(*it));
   }
+  for (PixelTubes& made : pixelTubes) made.mesh -= hidden.size();  // appended after every hidden mesh
+  fitPixelTubes(description, meshes, pixelTubes, seenBy);
 }
 
 }  // namespace lancer
