@@ -235,6 +235,12 @@ void addSceneOutputOptions(CLI::App& command, SceneOverrides& overrides) {
       ->group(kQualityGroup);
   command
       .add_option(
+          "--adaptive-noise", overrides.adaptiveNoise,
+          "path, ao: sample in rounds, more where a pixel's displayed error is above this (a fraction "
+          "of white, 0 < E < 1), up to --samples; replaces --noise")
+      ->group(kQualityGroup);
+  command
+      .add_option(
           "--accel", overrides.accel,
           "Accelerator: bvh (default: the wide BVH), kdtree-sah (the kd-tree), kdtree-sah-exact (its slower "
           "build, the quality reference), kdtree-median or naive (brute force)")

@@ -451,6 +451,8 @@ PreparedRender prepareScene(const std::string& input, const SceneOverrides& over
   if (!overrides.integrator.empty())
     applied.integrator = enumFromName<IntegratorKind>(kIntegratorNames, overrides.integrator);
   if (overrides.noise) applied.noise = checkNoise(*overrides.noise, optionName("--noise"));
+  if (overrides.adaptiveNoise)
+    applied.adaptiveNoise = checkAdaptiveNoise(*overrides.adaptiveNoise, optionName("--adaptive-noise"));
   if (!overrides.look.empty()) applied.look = enumFromName<Look>(kLookNames, overrides.look);
   applyAnnotationOptions(overrides, applied);
   request.accel = parseAccelKind(overrides.accel);

@@ -54,9 +54,10 @@ struct SceneOverrides {
   std::string colorBy;
   std::string colorMap;
   std::string undeformed;
-  std::string integrator;       // --integrator whitted|path|ao
-  std::optional<double> noise;  // --noise: adaptive stop, in (0, 1)
-  std::string look;             // --look studio|sky|sun
+  std::string integrator;               // --integrator whitted|path|ao
+  std::optional<double> noise;          // --noise: adaptive stop, in (0, 1)
+  std::optional<double> adaptiveNoise;  // --adaptive-noise: adaptive rounds, in (0, 1)
+  std::string look;                     // --look studio|sky|sun
   // Annotations on every mesh (docs/annotations.md), as the scene keys name them:
   std::string range;               // --range MIN:MAX, the colour range
   bool log = false;                // --log: the colours on a log scale

@@ -27,7 +27,7 @@ Mesh.__init__ = _arrays.mesh_init
 
 def _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads, progress,
                sampler, max_depth, encoding=None, tonemap=None, exposure=None, denoise=None, integrator=None,
-               noise=None, look=None, results=None):
+               noise=None, look=None, results=None, adaptive_noise=None):
     arguments = _lancer._RenderArguments()
     for name, value in (results or {}).items():
         setattr(arguments, name, value)
@@ -48,6 +48,7 @@ def _arguments(width, height, samples, shading, srgb, transparent_background, ed
     arguments.denoise = denoise
     arguments.integrator = integrator
     arguments.noise = noise
+    arguments.adaptive_noise = adaptive_noise
     arguments.look = look
     return arguments
 
@@ -62,14 +63,15 @@ def _results(color_map, range, log, scale, legend, isolines, bands, arrows, clip
 def render(scene, width=None, height=None, samples=None, shading=None, srgb=None,
            transparent_background=None, edges=None, threads=0, progress=False, dtype="uint8",
            sampler=None, max_depth=None, encoding=None, tonemap=None, exposure=None, denoise=None,
-           integrator=None, noise=None, look=None, *, color_map=None, range=None, log=None, scale=None,
-           legend=None, isolines=None, bands=None, arrows=None, clip=None, slices=None, skin=None,
-           isosurfaces=None, streamlines=None):
+           integrator=None, noise=None, look=None, *, adaptive_noise=None, color_map=None, range=None,
+           log=None, scale=None, legend=None, isolines=None, bands=None, arrows=None, clip=None, slices=None,
+           skin=None, isosurfaces=None, streamlines=None):
     """Renders a lancer.Scene, or the quick look of a lancer.Mesh (as `lancer render part.msh`).
 
     integrator: "whitted" (the default), "path" (path tracing) or "ao" (ambient occlusion); noise:
-    stop a pixel's sampling once its relative error is below this; look: "studio", "sky" or "sun"
-    (docs/lighting.md).
+    stop a pixel's sampling once its relative error is below this; adaptive_noise: sample in rounds,
+    more where a pixel's displayed error (a fraction of white) is above this, up to samples (as
+    --adaptive-noise); look: "studio", "sky" or "sun" (docs/lighting.md).
 
     None keeps the scene file's own value (for a mesh, the quick look's), as the CLI's options do.
     Returns a lancer.Image: (H, W, 3) uint8, (H, W, 4) with transparent_background, sRGB-encoded by
@@ -100,7 +102,8 @@ def render(scene, width=None, height=None, samples=None, shading=None, srgb=None
     arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
                            progress, sampler, max_depth, encoding, tonemap, exposure, denoise, integrator,
                            noise, look, _results(color_map, range, log, scale, legend, isolines, bands,
-                                                 arrows, clip, slices, skin, isosurfaces, streamlines))
+                                                 arrows, clip, slices, skin, isosurfaces, streamlines),
+                           adaptive_noise)
     array, info = _lancer._render(scene, arguments, dtype == "float32")
     return Image._wrap(array, srgb=info["srgb"], stats=info, provenance=provenance)
 
@@ -109,8 +112,8 @@ def animate(scene, output, frames=None, fps=None, orbit=None, width=None, height
             shading=None, srgb=None, transparent_background=None, edges=None, threads=0, progress=False,
             loop=None, dither=None, palette=None, sampler=None, max_depth=None, encoding=None, tonemap=None,
             exposure=None, denoise=None, over=None, integrator=None, noise=None, look=None, label=None, *,
-            color_map=None, range=None, log=None, scale=None, legend=None, isolines=None, bands=None,
-            arrows=None, clip=None, slices=None, skin=None, isosurfaces=None, streamlines=None):
+            adaptive_noise=None, color_map=None, range=None, log=None, scale=None, legend=None, isolines=None,
+            bands=None, arrows=None, clip=None, slices=None, skin=None, isosurfaces=None, streamlines=None):
     """Writes an orbit of the camera (orbit="camera") or of light K (orbit="light:K") as `lancer
     animate` does: an animated .gif, an animated .png, an .mp4 (H.264) or .webm (VP9) video, or numbered
     frames ("frame_%04d.png").
@@ -119,12 +122,13 @@ def animate(scene, output, frames=None, fps=None, orbit=None, width=None, height
     times repeat or decrease). label="t = {time:.3g} s" writes each frame's time (the time the file
     gives its step) and {step} into a corner, as --label does.
     None keeps the scene's value (its [animation] table, else 36 frames at 12 fps, the camera).
-    color_map, range, log, scale, legend, isolines, bands, arrows, clip, slices, skin, isosurfaces and
-    streamlines: as render's."""
+    adaptive_noise, color_map, range, log, scale, legend, isolines, bands, arrows, clip, slices, skin,
+    isosurfaces and streamlines: as render's."""
     provenance = _image._call_text("lancer.animate", animate, locals())
     arguments = _arguments(width, height, samples, shading, srgb, transparent_background, edges, threads,
                            progress, sampler, max_depth, encoding, tonemap, exposure, denoise, integrator,
                            noise, look, _results(color_map, range, log, scale, legend, isolines, bands,
-                                                 arrows, clip, slices, skin, isosurfaces, streamlines))
+                                                 arrows, clip, slices, skin, isosurfaces, streamlines),
+                           adaptive_noise)
     _lancer._animate(scene, str(output), arguments, frames, fps, orbit, loop, dither, palette, over, label,
                      command=provenance)

@@ -90,6 +90,8 @@ RenderOverrides renderOverridesFromArguments(const RenderArguments& arguments) {
   overrides.integrator = choiceArgument<IntegratorKind>(arguments.integrator, "integrator", kIntegratorNames);
   overrides.look = choiceArgument<Look>(arguments.look, "look", kLookNames);
   if (arguments.noise) overrides.noise = checkNoise(*arguments.noise, argumentName("noise"));
+  if (arguments.adaptiveNoise)
+    overrides.adaptiveNoise = checkAdaptiveNoise(*arguments.adaptiveNoise, argumentName("adaptive_noise"));
   applyResultArguments(arguments, overrides);
   return overrides;
 }
@@ -193,6 +195,7 @@ void bindRender(py::module_& module) {
       .def_readwrite("integrator", &RenderArguments::integrator)
       .def_readwrite("look", &RenderArguments::look)
       .def_readwrite("noise", &RenderArguments::noise)
+      .def_readwrite("adaptive_noise", &RenderArguments::adaptiveNoise)
       .def_readwrite("srgb", &RenderArguments::srgb)
       .def_readwrite("encoding", &RenderArguments::encoding)
       .def_readwrite("tonemap", &RenderArguments::toneMap)

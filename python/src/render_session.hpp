@@ -25,7 +25,7 @@ struct RenderArguments {
   std::optional<std::string> encoding, toneMap;  // "srgb" | "linear"; "none" | "filmic" | "aces"
   std::optional<double> exposure;
   std::optional<std::string> integrator, look;
-  std::optional<double> noise;
+  std::optional<double> noise, adaptiveNoise;
   int threads = 0;
   bool progress = false;
   // The command line's result options on every field-coloured mesh (--color-map, --range, --log,

@@ -139,9 +139,22 @@ def test_path_integrator_and_look_are_the_cli_image(tmp_path):
     assert rendered_bytes(tmp_path, image) == picture_bytes(cli_path)
 
 
+def test_adaptive_noise_is_the_cli_image(tmp_path):
+    cli_path = tmp_path / "cli.png"
+    run_cli("render", BRACKET, "-o", cli_path, "--width", 48, "--height", 36, "--look", "studio", "--samples", 16,
+            "--adaptive-noise", 0.03, "--denoise", "--quiet")
+    image = lancer.render(lancer.read_msh(str(BRACKET)), width=48, height=36, look="studio", samples=16,
+                          adaptive_noise=0.03, denoise=True)
+    assert rendered_bytes(tmp_path, image) == picture_bytes(cli_path)
+    assert image.stats["samples_per_pixel"] < 16
+
+
 def test_bad_integrator_and_noise_are_value_errors():
     mesh = lancer.read_msh(str(BRACKET))
     with pytest.raises(ValueError, match="integrator='photon'"):
         lancer.render(mesh, width=8, height=8, integrator="photon")
     with pytest.raises(lancer.InputError, match="noise must be greater than 0 and less than 1"):
         lancer.render(mesh, width=8, height=8, integrator="path", noise=1.0)
+    for bad in (0.0, -0.1, float("nan"), 1e300):
+        with pytest.raises(lancer.InputError, match="adaptive_noise must be greater than 0 and less than 1"):
+            lancer.render(mesh, width=8, height=8, integrator="path", adaptive_noise=bad)

@@ -46,6 +46,22 @@ TEST(LightingCli, NoiseOutsideZeroToOneIsAnInputError) {
   }
 }
 
+TEST(LightingCli, AdaptiveNoiseOutsideZeroToOneIsAnInputError) {
+  const std::filesystem::path out = std::filesystem::temp_directory_path() / "lancer_adaptive_noise_bad.png";
+  std::filesystem::remove(out);
+  for (const char* noise : {"0", "1", "-0.5", "nan", "1e300"}) {
+    const test::CommandResult result =
+        test::runCli("render " + test::quoted(kMesh) + " -o " + test::quoted(out.string()) +
+                     " --integrator path --adaptive-noise " + noise + " 2>&1");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_TRUE(test::contains(result.output,
+                               "--adaptive-noise: error: --adaptive-noise must be greater than 0 "
+                               "and less than 1"))
+        << result.output;
+    EXPECT_FALSE(std::filesystem::exists(out)) << noise;
+  }
+}
+
 TEST(LightingCli, UnknownIntegratorAndLookNameTheChoices) {
   test::CommandResult result =
       test::runCli("render " + test::quoted(kMesh) + " -o /tmp/x.png --integrator photon 2>&1");

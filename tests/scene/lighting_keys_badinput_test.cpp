@@ -51,6 +51,14 @@ TEST(LightingKeys, NoiseOutsideZeroToOne) {
     test::expectSceneErrorContains(std::string("[render]\nnoise = ") + noise + "\n", "scene.toml:2");
 }
 
+TEST(LightingKeys, AdaptiveNoiseOutsideZeroToOne) {
+  for (const char* noise : {"0", "1", "-0.1", "nan", "1e40"})
+    test::expectSceneErrorContains(std::string("[render]\nadaptive_noise = ") + noise + "\n", "scene.toml:2");
+  test::expectSceneErrorContains("[render]\nadaptive_noise = 2\n",
+                                 "adaptive_noise must be greater than 0 and less than 1 (the error of the "
+                                 "displayed value, a fraction of white, e.g. 0.01), found 2");
+}
+
 TEST(LightingKeys, EnvironmentKindsAreExclusive) {
   test::expectSceneErrorContains("[environment]\ncolor = [1, 1, 1]\nmap = \"sky.hdr\"\n", "give one of");
 }

@@ -98,8 +98,9 @@ TEST(SceneLoaderBadInput, UnknownKeyWithNothingCloseListsTheKnownOnes) {
       sceneErrorOf("[render]\nwidth = 10\ncolour = [1, 0, 0]\n"),
       "scene.toml:3:1: error: unknown key 'colour' in [render]; expected one of: width, height, samples, "
       "max_depth, sampler, shading, background, output, srgb, encoding, tonemap, exposure, bit_depth, "
-      "denoise, adaptive_threshold, step, integrator, max_bounces, noise, ao_distance, quality, lossless, "
-      "dpi");
+      "denoise, adaptive_threshold, step, integrator, max_bounces, noise, adaptive_noise, ao_distance, "
+      "quality, "
+      "lossless, dpi");
   EXPECT_TRUE(
       failsAt("[[light]]\nposition = [0, 0, 0]\ncolor = [1, 1, 1]\n", "3:1",
               "unknown key 'color' in light[0]; expected one of: type, position, intensity, attenuation, "

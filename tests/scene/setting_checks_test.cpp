@@ -66,6 +66,11 @@ TEST(SettingChecks, OneWordingWhoeverNamesTheSetting) {
   EXPECT_EQ(
       test::messageOf([] { checkExposure(std::numeric_limits<double>::quiet_NaN(), named("exposure")); }),
       "exposure: error: exposure must be a number of stops between -20 and 20, found nan");
+  EXPECT_EQ(test::messageOf([] {
+              checkAdaptiveNoise(std::numeric_limits<double>::quiet_NaN(), named("--adaptive-noise"));
+            }),
+            "--adaptive-noise: error: --adaptive-noise must be greater than 0 and less than 1 (the error of "
+            "the displayed value, a fraction of white, e.g. 0.01), found nan");
   EXPECT_EQ(test::messageOf([] { checkNoise(1, named("--noise")); }),
             "--noise: error: --noise must be greater than 0 and less than 1 (a relative error, e.g. 0.01), "
             "found 1");

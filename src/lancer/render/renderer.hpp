@@ -17,11 +17,10 @@
 #include "lancer/render/camera.hpp"
 #include "lancer/render/feature_buffers.hpp"
 #include "lancer/render/path_integrator.hpp"
+#include "lancer/render/pixel_loop.hpp"  // kTileSize
 #include "lancer/render/tracer.hpp"
 
 namespace lancer {
-
-inline constexpr int kTileSize = 32;  // pixels on a tile's side; a band is kTileSize rows
 
 struct RenderProgress {
   double fraction = 0;     // of pixels done

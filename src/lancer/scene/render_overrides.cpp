@@ -183,6 +183,7 @@ void applyRenderOverrides(SceneDescription& description, const RenderOverrides& 
     placeQuickLookLights(description, *quickLookMesh, threads);
   if (overrides.integrator) settings.integrator = *overrides.integrator;
   if (overrides.noise) settings.noise = *overrides.noise;
+  if (overrides.adaptiveNoise) settings.adaptiveNoise = *overrides.adaptiveNoise;
   if (overrides.edges)
     for (MeshInstance& mesh : description.meshes)
       if (!mesh.edges) mesh.edges = EdgeSettings{};
@@ -203,6 +204,7 @@ void applyLookOverride(SceneDescription& description, const RenderOverrides& ove
   applyLook(description, *overrides.look);
   if (overrides.samples) settings.samples = *overrides.samples;
   if (overrides.noise) settings.noise = *overrides.noise;
+  if (overrides.adaptiveNoise) settings.adaptiveNoise = *overrides.adaptiveNoise;
   if (overrides.integrator) settings.integrator = *overrides.integrator;
 }
 

@@ -28,8 +28,9 @@ struct RenderOverrides {
   std::optional<bool> lossless;
   std::optional<double> dpi;  // checked here: above 0
   std::optional<IntegratorKind> integrator;
-  std::optional<float> noise;  // checked by the caller: in (0, 1)
-  std::optional<Look> look;    // applied last (applyLook); the overrides above win over its defaults
+  std::optional<float> noise;          // checked by the caller: in (0, 1)
+  std::optional<float> adaptiveNoise;  // checked by the caller: in (0, 1)
+  std::optional<Look> look;            // applied last (applyLook); the overrides above win over its defaults
   std::optional<bool> transparentBackground;
   // The background as the picture shows it (--background: a display colour in [0, 1]); decoded with the
   // output's curve, so that an sRGB picture without tone curve or exposure shows exactly this colour.

@@ -38,8 +38,11 @@ struct RenderSettings {
   int samples = 1;   // samples per pixel, a perfect square for the regular grid
   int maxDepth = 5;  // reflection/refraction recursion depth
   IntegratorKind integrator = IntegratorKind::Whitted;
-  int maxBounces = 8;    // path: scattering events after the camera ray
-  float noise = 0;       // path, ao: stop a pixel once its relative standard error is below this (0: off)
+  int maxBounces = 8;  // path: scattering events after the camera ray
+  float noise = 0;     // path, ao: stop a pixel once its relative standard error is below this (0: off)
+  // path, ao: sample in rounds, more where the standard error of the displayed value (a fraction of
+  // white) is above this, up to `samples` (0: off; when on, `noise` is not used). docs/lighting.md.
+  float adaptiveNoise = 0;
   float aoDistance = 0;  // ao: occluders farther than this do not count (0: a tenth of the scene's size)
   SamplerKind sampler = SamplerKind::Regular;
   // Adaptive sampler: a square of the pixel is split when two of its corner samples differ by more

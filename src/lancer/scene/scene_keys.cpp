@@ -7,12 +7,12 @@ namespace {
 
 constexpr std::array<std::string_view, 10> kDocumentKeys = {
     "render", "camera", "ambient", "light", "material", "mesh", "animation", "clip", "floor", "environment"};
-constexpr std::array<std::string_view, 23> kRenderKeys = {
-    "width",   "height",     "samples",     "max_depth", "sampler",
-    "shading", "background", "output",      "srgb",      "encoding",
-    "tonemap", "exposure",   "bit_depth",   "denoise",   "adaptive_threshold",
-    "step",    "integrator", "max_bounces", "noise",     "ao_distance",
-    "quality", "lossless",   "dpi"};
+constexpr std::array<std::string_view, 24> kRenderKeys = {
+    "width",       "height",     "samples",     "max_depth", "sampler",
+    "shading",     "background", "output",      "srgb",      "encoding",
+    "tonemap",     "exposure",   "bit_depth",   "denoise",   "adaptive_threshold",
+    "step",        "integrator", "max_bounces", "noise",     "adaptive_noise",
+    "ao_distance", "quality",    "lossless",    "dpi"};
 constexpr std::array<std::string_view, 8> kCameraKeys = {
     "projection", "position", "look_at", "up", "up_axis", "fov", "view_height", "gmsh_view"};
 constexpr std::array<std::string_view, 1> kAmbientKeys = {"intensity"};

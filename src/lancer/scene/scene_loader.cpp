@@ -159,6 +159,8 @@ RenderSettings readRender(const SceneFile& file, const toml::table& table) {
   if (auto bounces = reader.integer("max_bounces", 0, kMaxDepth))
     render.maxBounces = static_cast<int>(*bounces);
   if (auto noise = reader.number("noise")) render.noise = checkNoise(*noise, reader.settingName("noise"));
+  if (auto noise = reader.number("adaptive_noise"))
+    render.adaptiveNoise = checkAdaptiveNoise(*noise, reader.settingName("adaptive_noise"));
   if (auto distance = reader.number("ao_distance", NumberRange::above(0)))
     render.aoDistance = static_cast<float>(*distance);
   return render;

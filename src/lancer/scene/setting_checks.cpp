@@ -73,6 +73,15 @@ float checkNoise(double value, const SettingName& name) {
   return static_cast<float>(value);
 }
 
+float checkAdaptiveNoise(double value, const SettingName& name) {
+  if (!(value > 0 && value < 1))
+    throw InputError(name.where,
+                     fmt::format("{} must be greater than 0 and less than 1 (the error of the displayed "
+                                 "value, a fraction of white, e.g. 0.01), found {}",
+                                 name.name, value));
+  return static_cast<float>(value);
+}
+
 void checkSampleGrid(int samples, SamplerKind sampler, IntegratorKind integrator, const SettingName& name) {
   if (integrator != IntegratorKind::Whitted || sampler == SamplerKind::Adaptive) return;
   const auto below = static_cast<std::int64_t>(std::floor(std::sqrt(static_cast<double>(samples))));

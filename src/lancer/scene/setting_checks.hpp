@@ -30,9 +30,10 @@ int checkBitDepth(std::int64_t value, const SettingName& name);  // 8 or 16
 int checkLoop(std::int64_t value, const SettingName& name);      // -1 (play once), 0 (forever) to kMaxLoop
 
 // Numbers: finite and in range.
-float checkExposure(double stops, const SettingName& name);  // -kMaxExposureStops to kMaxExposureStops
-float checkNoise(double value, const SettingName& name);     // greater than 0 and less than 1
-double checkFps(double value, const SettingName& name);      // kMinFps to kMaxFps frames a second
+float checkExposure(double stops, const SettingName& name);       // -kMaxExposureStops to kMaxExposureStops
+float checkNoise(double value, const SettingName& name);          // greater than 0 and less than 1
+float checkAdaptiveNoise(double value, const SettingName& name);  // greater than 0 and less than 1
+double checkFps(double value, const SettingName& name);           // kMinFps to kMaxFps frames a second
 
 // The regular and stratified samplers lay an n x n grid over the pixel for the Whitted model: a
 // sample count that is no perfect square is refused there (path and AO, and the adaptive sampler,
