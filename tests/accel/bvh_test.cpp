@@ -393,7 +393,9 @@ TEST(Bvh, RaysInFlightAnswerAsSingleRays) {
         EXPECT_TRUE(test::sameBits(hits[i], found ? single : Hit{})) << "ray " << i;
       }
       EXPECT_EQ(hitCount, expected);
-      if (count == rays.size()) EXPECT_GT(expected, count / 4);
+      if (count == rays.size()) {
+        EXPECT_GT(expected, count / 4);
+      }
 
       // The any-hit query of the same span: blocked where the single ray is occluded.
       std::vector<std::uint8_t> blocked(count, 7);
@@ -407,7 +409,9 @@ TEST(Bvh, RaysInFlightAnswerAsSingleRays) {
         EXPECT_EQ(blocked[i], single ? 1 : 0) << "ray " << i;
       }
       EXPECT_EQ(blockedCount, expectedBlocked);
-      if (count == rays.size()) EXPECT_GT(expectedBlocked, count / 4);
+      if (count == rays.size()) {
+        EXPECT_GT(expectedBlocked, count / 4);
+      }
     }
   }
 }
