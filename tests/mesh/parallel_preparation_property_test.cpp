@@ -59,7 +59,12 @@ TEST(ParallelPreparation, FaceShellEdgesEqualAStableSortOfAllEdges) {
   // Some faces turned: the shells are walked over the sorted table (an agreeing one needs none).
   std::uint8_t unusedMask = kAllEdges;
   for (std::size_t f = 0; f < mesh.soup.faces.size(); f += 97) reverseWinding(mesh.soup.faces[f], unusedMask);
-  std::vector<FaceEdge> expected;
+  struct Edge {
+    std::uint64_t key;  // smaller vertex << 32 | larger
+    std::uint32_t face;
+    bool forward;
+  };
+  std::vector<Edge> expected;
   for (std::size_t f = 0; f < mesh.soup.faces.size(); ++f) {
     const MeshFace& face = mesh.soup.faces[f];
     const int n = face.cornerCount();
@@ -69,15 +74,19 @@ TEST(ParallelPreparation, FaceShellEdgesEqualAStableSortOfAllEdges) {
           {(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), static_cast<std::uint32_t>(f), a < b});
     }
   }
-  std::stable_sort(expected.begin(), expected.end());
+  std::stable_sort(expected.begin(), expected.end(),
+                   [](const Edge& x, const Edge& y) { return x.key < y.key; });
   const FaceShells one = findFaceShells(mesh.soup.faces, 1);
   for (const int threads : {1, 2, 5}) {
     const FaceShells shells = findFaceShells(mesh.soup.faces, threads);
     ASSERT_EQ(shells.edges.size(), expected.size());
+    ASSERT_EQ(shells.edgeStart.back(), expected.size());
+    std::uint64_t smaller = 0;  // the bucket of edge i
     for (std::size_t i = 0; i < expected.size(); ++i) {
-      ASSERT_EQ(shells.edges[i].key, expected[i].key) << i;
-      ASSERT_EQ(shells.edges[i].face, expected[i].face) << i;
-      ASSERT_EQ(shells.edges[i].forward, expected[i].forward) << i;
+      while (shells.edgeStart[smaller + 1] <= i) ++smaller;
+      ASSERT_EQ(smaller << 32 | shells.edges[i].larger, expected[i].key) << i;
+      ASSERT_EQ(shells.edges[i].face(), expected[i].face) << i;
+      ASSERT_EQ(shells.edges[i].forward(), expected[i].forward) << i;
     }
     EXPECT_TRUE(sameBytes(shells.shellOfFace, one.shellOfFace));
     EXPECT_TRUE(sameBytes(shells.flip, one.flip));

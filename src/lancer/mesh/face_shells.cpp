@@ -43,7 +43,7 @@ EdgeBuckets bucketFaceEdges(std::span<const MeshFace> faces, int threads) {
     }
   });
   for (std::size_t v = 0; v < vertexCount; ++v) bucketStart[v + 1] += bucketStart[v];
-  // 48 bytes per face, every one written below: no value-initialising pass before.
+  // 24 bytes per face, every one written below: no value-initialising pass before.
   buckets.edges = HugePageArray<FaceEdge>(bucketStart.back());
   FaceEdge* edges = buckets.edges.data();
   std::vector<std::uint32_t> fill(bucketStart.begin(), bucketStart.end() - 1);
@@ -54,19 +54,19 @@ EdgeBuckets bucketFaceEdges(std::span<const MeshFace> faces, int threads) {
       for (int c = 0; c < n; ++c) {
         const std::uint32_t a = face.vertex[c];
         const std::uint32_t b = face.vertex[(c + 1) % n];
-        const std::uint64_t lo = std::min(a, b), hi = std::max(a, b);
+        const std::uint32_t lo = std::min(a, b);
         if (lo >= firstVertex && lo < endVertex)
-          edges[fill[lo]++] = {(lo << 32) | hi, static_cast<std::uint32_t>(f), a < b};
+          edges[fill[lo]++] = {std::max(a, b), static_cast<std::uint32_t>(f) << 1 | (a < b ? 1u : 0u)};
       }
     }
   });
   return buckets;
 }
 
-// Each bucket ordered by key, equal keys in face order: then the table is grouped by key, in key
-// order, as a stable sort of every edge would leave it. A vertex has a handful of edges (insertion
-// sort); a fan centre with hundreds takes the library's stable sort. Two passes over the edges in
-// all where a radix sort on the 64-bit key took eight (Manifold pairs its half-edges the same way).
+// Each bucket ordered by larger vertex, equal ones in face order: then the table is grouped by edge,
+// in (smaller, larger) order, as a stable sort of every edge by both would leave it. A vertex has a handful
+// of edges (insertion sort); a fan centre with hundreds takes the library's stable sort. Two passes over the
+// edges in all where a radix sort on the 64-bit key took eight (Manifold pairs its half-edges the same way).
 void sortBuckets(EdgeBuckets& buckets, int threads) {
   parallelFor(buckets.vertexCount(), threads, kGrain, [&](std::size_t v) {
     FaceEdge* first = buckets.edges.data() + buckets.start[v];
@@ -78,7 +78,7 @@ void sortBuckets(EdgeBuckets& buckets, int threads) {
     for (FaceEdge* i = first + 1; i < last; ++i) {
       const FaceEdge e = *i;
       FaceEdge* j = i;
-      for (; j > first && e.key < (j - 1)->key; --j) *j = *(j - 1);
+      for (; j > first && e.larger < (j - 1)->larger; --j) *j = *(j - 1);
       *j = e;
     }
   });
@@ -153,13 +153,13 @@ bool findConsistentShells(std::size_t faceCount, EdgeBuckets& buckets, int threa
       if (paired >> i & 1u) continue;
       std::size_t partner = count;
       for (std::size_t j = i + 1; j < count; ++j) {
-        if (first[j].key != first[i].key) continue;
+        if (first[j].larger != first[i].larger) continue;
         if (partner != count) return false;  // three or more faces on the edge
         partner = j;
       }
-      if (partner == count || first[partner].forward == first[i].forward) return false;
+      if (partner == count || first[partner].forward() == first[i].forward()) return false;
       paired |= 1u << partner;
-      if (first[i].face != first[partner].face) sets.unite(first[i].face, first[partner].face);
+      if (first[i].face() != first[partner].face()) sets.unite(first[i].face(), first[partner].face());
     }
     return true;
   };
@@ -226,6 +226,7 @@ FaceShells findFaceShells(std::span<const MeshFace> faces, int threads) {
   if (findConsistentShells(faceCount, buckets, threads, result)) return result;  // no edge table kept
   sortBuckets(buckets, threads);
   result.edges = std::move(buckets.edges);
+  result.edgeStart = std::move(buckets.start);
 
   // Faces sharing an edge belong to one shell; an edge decides closedness and orientation. Two
   // faces on a manifold edge that traverse it the same way must be turned opposite ways for the
@@ -235,19 +236,22 @@ FaceShells findFaceShells(std::span<const MeshFace> faces, int threads) {
   // Per face, what its edges told about its shell (one byte for the four, written rarely).
   enum : std::uint8_t { kOpen = 1, kMisoriented = 2, kBorder = 4, kBranch = 8 };
   std::vector<std::uint8_t> edgeFlags(faceCount, 0);
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i + 1;
-    while (j < edges.size() && edges[j].key == edges[i].key) ++j;
-    if (j - i == 2) {
-      const bool sameDirection = edges[i].forward == edges[i + 1].forward;
-      if (edges[i].face != edges[i + 1].face)
-        sets.unite(edges[i].face, edges[i + 1].face, sameDirection ? 1 : 0);
-      if (sameDirection) edgeFlags[edges[i].face] |= kMisoriented;
-    } else {
-      for (std::size_t k = i + 1; k < j; ++k) sets.uniteFree(edges[i].face, edges[k].face);
-      edgeFlags[edges[i].face] |= j - i == 1 ? kOpen | kBorder : kOpen | kMisoriented | kBranch;
+  for (std::size_t v = 0; v + 1 < result.edgeStart.size(); ++v) {
+    const std::size_t bucketEnd = result.edgeStart[v + 1];
+    for (std::size_t i = result.edgeStart[v]; i < bucketEnd;) {
+      std::size_t j = i + 1;
+      while (j < bucketEnd && edges[j].larger == edges[i].larger) ++j;
+      const std::uint32_t face = edges[i].face();
+      if (j - i == 2) {
+        const bool sameDirection = edges[i].forward() == edges[i + 1].forward();
+        if (face != edges[i + 1].face()) sets.unite(face, edges[i + 1].face(), sameDirection ? 1 : 0);
+        if (sameDirection) edgeFlags[face] |= kMisoriented;
+      } else {
+        for (std::size_t k = i + 1; k < j; ++k) sets.uniteFree(face, edges[k].face());
+        edgeFlags[face] |= j - i == 1 ? kOpen | kBorder : kOpen | kMisoriented | kBranch;
+      }
+      i = j;
     }
-    i = j;
   }
   constexpr std::uint32_t kUnnumbered = 0xFFFFFFFFu;
   std::vector<std::uint32_t> shellOfRoot(faceCount, kUnnumbered);

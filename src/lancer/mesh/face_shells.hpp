@@ -11,21 +11,27 @@
 
 namespace lancer {
 
-// One directed edge of one face; sorting by key brings the faces that share an edge together.
+// One directed edge of one face, kept in the bucket of its smaller vertex (FaceShells::edgeStart):
+// the bucket implies half of the key, so an edge takes 8 bytes, and the table's scatter half the
+// writes. Sorting a bucket by the larger vertex brings the faces that share an edge together.
 struct FaceEdge {
-  std::uint64_t key;  // (smaller vertex << 32) | larger vertex
-  std::uint32_t face;
-  bool forward;  // traversed from the smaller vertex to the larger
-  bool operator<(const FaceEdge& other) const { return key < other.key; }
+  std::uint32_t larger;          // the larger vertex
+  std::uint32_t faceAndForward;  // face << 1 | traversed from the smaller vertex to the larger
+  std::uint32_t face() const { return faceAndForward >> 1; }
+  bool forward() const { return (faceAndForward & 1u) != 0; }
+  bool operator<(const FaceEdge& other) const { return larger < other.larger; }
 };
 
 // The shells of a face set, shared by the mesh statistics (mesh_stats.hpp), shell orientation
 // (shell_orientation.hpp), cavity finding (shell_nesting.hpp) and the regions of non-manifold shells
 // (shell_regions.hpp), which need the same edge table.
 struct FaceShells {
-  // Every face's edges, sorted by key; empty when every shell is closed and agrees (every edge of
-  // two faces traversed both ways), which is found without sorting them and needs nothing more.
+  // Every face's edges, by smaller vertex v in edges[edgeStart[v], edgeStart[v + 1]), each bucket
+  // sorted by larger vertex (equal edges in face order); both empty when every shell is closed and
+  // agrees (every edge of two faces traversed both ways), which is found without sorting them and
+  // needs nothing more.
   HugePageArray<FaceEdge> edges;
+  std::vector<std::uint32_t> edgeStart;
   std::vector<std::uint32_t> shellOfFace;  // shells numbered in order of their first face
   std::vector<std::uint8_t> closed;        // per shell: every edge shared by exactly two faces
   std::vector<std::uint8_t> consistent;    // per shell: shared edges traversed in opposite directions

@@ -36,22 +36,25 @@ ShellRegions findShellRegions(std::span<const Vec3> positions, const std::vector
     bool frontFacesForward;  // the face's front looks towards increasing angle
   };
   std::vector<Wing> wings;
+  // The edges of smaller vertex lo, one bucket of the table, grouped by larger vertex.
+  std::uint32_t lo = 0;
   for (std::size_t i = 0; i < edges.size();) {
+    while (shells.edgeStart[lo + 1] <= i) ++lo;
+    const std::size_t bucketEnd = shells.edgeStart[lo + 1];
     std::size_t j = i + 1;
-    while (j < edges.size() && edges[j].key == edges[i].key) ++j;
-    const std::uint32_t shell = shells.shellOfFace[edges[i].face];
+    while (j < bucketEnd && edges[j].larger == edges[i].larger) ++j;
+    const std::uint32_t shell = shells.shellOfFace[edges[i].face()];
     if (!candidate[shell] || rejected[shell]) {
       i = j;
       continue;
     }
-    const auto lo = static_cast<std::uint32_t>(edges[i].key >> 32),
-               hi = static_cast<std::uint32_t>(edges[i].key);
+    const std::uint32_t hi = edges[i].larger;
     const Vec3d origin = toDouble(positions[lo]);
     const Vec3d axis = normalize(toDouble(positions[hi]) - origin);
     wings.clear();
     Vec3d u{}, v{};
     for (std::size_t k = i; k < j; ++k) {
-      const MeshFace& face = faces[edges[k].face];
+      const MeshFace& face = faces[edges[k].face()];
       // The face leaves the edge towards the mean of its other corners, seen across the axis.
       Vec3d away{0, 0, 0};
       int others = 0;
@@ -66,7 +69,7 @@ ShellRegions findShellRegions(std::span<const Vec3> positions, const std::vector
       }
       const double angle = std::atan2(dot(away, v), dot(away, u));
       const Vec3d forward = cross(axis, away);  // the direction of increasing angle, at the face
-      wings.push_back({edges[k].face, angle, dot(twiceVectorArea(positions, face), forward) > 0});
+      wings.push_back({edges[k].face(), angle, dot(twiceVectorArea(positions, face), forward) > 0});
     }
     std::sort(wings.begin(), wings.end(), [](const Wing& a, const Wing& b) { return a.angle < b.angle; });
     for (std::size_t k = 0; k + 1 < wings.size(); ++k)
