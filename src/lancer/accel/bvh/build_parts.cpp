@@ -11,14 +11,15 @@
 #include <xmmintrin.h>
 #endif
 
+#include "lancer/accel/bvh/binning.hpp"
 #include "lancer/util/huge_pages.hpp"
+#include "lancer/util/isa.hpp"
 #include "lancer/util/parallel_for.hpp"
 
 namespace lancer::bvh {
 
 namespace {
 
-constexpr int kMaxBins = 32;
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
 // Four floats (x, y, z and a lane never read): a reference's corner, a box's corner, a bin index
@@ -226,18 +227,15 @@ struct Bins {
       for (int b = 0; b < grid.bins; ++b) box[a][b] = {F4::all(kInf), F4::all(-kInf)};
     }
     for (int b = 0; b < grid.bins; ++b) I4::all(0).store(triangles[b]);
-    for (std::size_t i = begin; i < end; ++i) {
-      const PrimRef& r = refs[i];
-      const F4 rlo = F4::load(r.lo), rhi = F4::load(r.hi);
-      alignas(16) int b[4];
-      grid.bin(r, b);
-      for (int a = 0; a < 3; ++a) {
-        Entry& e = box[a][b[a]];
-        e.lo = min(e.lo, rlo);
-        e.hi = max(e.hi, rhi);
-        triangles[b[a]][a] += r.triangles;
-      }
-    }
+    BinGrid g;
+    grid.origin.store(g.origin);
+    grid.scale.store(g.scale);
+    g.last = float(grid.bins - 1);
+    // Entries are two F4s (32 bytes, lo then hi), as fillBins reads them.
+    static_assert(sizeof(Entry) == 8 * sizeof(float));
+    float* boxes = reinterpret_cast<float*>(&box[0][0]);
+    std::uint32_t* counts = &triangles[0][0];
+    isa::dispatch([&](auto isa) { fillBins<decltype(isa)>(refs, begin, end, g, boxes, counts); });
   }
   const F4& lo(int axis, int b) const { return box[axis][b].lo; }
   const F4& hi(int axis, int b) const { return box[axis][b].hi; }
