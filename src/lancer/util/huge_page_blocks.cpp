@@ -40,17 +40,22 @@ Header* headerOf(const void* pointer) {
 // copying or clearing them (the page tables move; a 2 MiB page moves as one entry). Both ends
 // 2 MiB-aligned. The range may span several mappings (a kept block's advised pages and its last
 // one), which mremap moves one at a time on kernels before 6.17: then the 2 MiB pieces go one by
-// one, each within one mapping. A piece that cannot move is unmapped and its place mapped fresh.
-void movePages(char* from, char* to, std::size_t bytes) {
-  if (::mremap(from, bytes, bytes, MREMAP_MAYMOVE | MREMAP_FIXED, to) != MAP_FAILED) return;
+// one, each within one mapping. A piece that cannot move is unmapped and its place mapped fresh;
+// false when even that fails (the system is out of mappings or memory): the destination has a hole.
+bool movePages(char* from, char* to, std::size_t bytes) {
+  if (::mremap(from, bytes, bytes, MREMAP_MAYMOVE | MREMAP_FIXED, to) != MAP_FAILED) return true;
+  bool whole = true;
   for (std::size_t offset = 0; offset < bytes; offset += kHugePage) {
     if (::mremap(from + offset, kHugePage, kHugePage, MREMAP_MAYMOVE | MREMAP_FIXED, to + offset) !=
         MAP_FAILED)
       continue;
     // A failed move may already have unmapped its destination: map it again, blank.
     ::munmap(from + offset, kHugePage);
-    ::mmap(to + offset, kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1, 0);
+    if (::mmap(to + offset, kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1,
+               0) == MAP_FAILED)
+      whole = false;
   }
+  return whole;
 }
 
 // The whole huge pages of a block of `mapped` bytes that hold `used` bytes, and its last one when at
@@ -127,9 +132,13 @@ class Arena {
       stats_.retainedBytes -= size;
       auto* from = reinterpret_cast<char*>(kept);
       if (moved < size) ::munmap(from + moved, size - moved);
-      movePages(from, block + filled, moved);
+      const bool whole = movePages(from, block + filled, moved);
       filled += moved;
       ++stats_.movedBlocks;
+      if (!whole) {  // a hole in the block: give it all back, as a failed fresh mapping does
+        ::munmap(block, mapped);
+        return nullptr;
+      }
     }
     // The moved pages take the advice of the block they now belong to.
     if (filled > 0) {
