@@ -232,6 +232,13 @@ inline const char* const kRayKinds[] = {"primary", "shadow", "incoherent"};
 
 // Traces `set` with `intersect(ray, tMin, tMax) -> bool` on `threads` threads; reports Mrays/s
 // and the hit fraction (equal between accelerators: a cheap check that they trace the same thing).
+// The counters every trace row reports: speed over the timed iterations, the hit fraction, the set's size.
+inline void setRayCounters(benchmark::State& state, double raysPerIteration, double seconds, double hits) {
+  state.counters["Mrays_per_s"] = raysPerIteration * double(state.iterations()) / seconds * 1e-6;
+  state.counters["hit_fraction"] = hits / raysPerIteration;
+  state.counters["rays"] = raysPerIteration;
+}
+
 template <typename Query>
 void traceBenchmark(benchmark::State& state, const RaySet& set, int threads, Query&& query) {
   double seconds = 0;
@@ -250,10 +257,7 @@ void traceBenchmark(benchmark::State& state, const RaySet& set, int threads, Que
     state.SetIterationTime(s);
     seconds += s;
   }
-  const double rays = double(set.rays.size()) * double(state.iterations());
-  state.counters["Mrays_per_s"] = rays / seconds * 1e-6;
-  state.counters["hit_fraction"] = double(hits) / double(set.rays.size());
-  state.counters["rays"] = double(set.rays.size());
+  setRayCounters(state, double(set.rays.size()), seconds, double(hits));
 #ifdef LANCER_KD_COUNTERS
   const KdTraversalCounters& c = kdTraversalCounters();
   if (threads == 1 && c.rays > 0) {
@@ -308,10 +312,7 @@ void tracePacketBenchmark(benchmark::State& state, const PacketSet& set, int thr
     state.SetIterationTime(s);
     seconds += s;
   }
-  const double rays = double(set.rays) * double(state.iterations());
-  state.counters["Mrays_per_s"] = rays / seconds * 1e-6;
-  state.counters["hit_fraction"] = double(hits) / double(set.rays);
-  state.counters["rays"] = double(set.rays);
+  setRayCounters(state, double(set.rays), seconds, double(hits));
 }
 
 // The packet rows: `name`'s query on each ray set in packets, as "packet/<name>/<mesh>/<rays>/threads:N".
@@ -407,10 +408,7 @@ inline void registerLancerInFlight(const std::string& mesh) {
               state.SetIterationTime(s);
               seconds += s;
             }
-            const double rays = double(set.rays.size()) * double(state.iterations());
-            state.counters["Mrays_per_s"] = rays / seconds * 1e-6;
-            state.counters["hit_fraction"] = double(hits) / double(set.rays.size());
-            state.counters["rays"] = double(set.rays.size());
+            setRayCounters(state, double(set.rays.size()), seconds, double(hits));
           })
           ->UseManualTime()
           ->Iterations(1)

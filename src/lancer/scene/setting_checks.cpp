@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <string_view>
 
 #include "lancer/scene/render_limits.hpp"
 
@@ -64,22 +65,25 @@ double checkFps(double value, const SettingName& name) {
   return checkedNumber(value, kMinFps, kMaxFps, name, "a number of frames per second");
 }
 
-float checkNoise(double value, const SettingName& name) {
+namespace {
+
+// An error target strictly between 0 and 1 (NaN fails the test too); `what` says what it measures.
+float checkErrorTarget(double value, const SettingName& name, std::string_view what) {
   if (!(value > 0 && value < 1))
     throw InputError(name.where,
-                     fmt::format("{} must be greater than 0 and less than 1 (a relative error, e.g. "
-                                 "0.01), found {}",
-                                 name.name, value));
+                     fmt::format("{} must be greater than 0 and less than 1 ({}, e.g. 0.01), found {}",
+                                 name.name, what, value));
   return static_cast<float>(value);
 }
 
+}  // namespace
+
+float checkNoise(double value, const SettingName& name) {
+  return checkErrorTarget(value, name, "a relative error");
+}
+
 float checkAdaptiveNoise(double value, const SettingName& name) {
-  if (!(value > 0 && value < 1))
-    throw InputError(name.where,
-                     fmt::format("{} must be greater than 0 and less than 1 (the error of the displayed "
-                                 "value, a fraction of white, e.g. 0.01), found {}",
-                                 name.name, value));
-  return static_cast<float>(value);
+  return checkErrorTarget(value, name, "the error of the displayed value, a fraction of white");
 }
 
 void checkSampleGrid(int samples, SamplerKind sampler, IntegratorKind integrator, const SettingName& name) {
